@@ -1,0 +1,34 @@
+// Time and unit conventions shared by every model: SystemC-free, integer picoseconds,
+// so that 20 ns FPGA cycles and 62.5 ns AVR cycles are exact (DESIGN.md §3).
+#pragma once
+#include <cstdint>
+
+namespace cnc {
+
+using TimePs = std::int64_t;
+
+inline constexpr TimePs kPsPerNs = 1'000;
+inline constexpr TimePs kPsPerUs = 1'000'000;
+inline constexpr TimePs kPsPerMs = 1'000'000'000;
+inline constexpr TimePs kPsPerSec = 1'000'000'000'000;
+
+// Time of `cycles` ticks of a clock of `clk_hz`, rounded down to the picosecond. Exact for clocks whose
+// period is a whole number of ps (50 MHz -> 20 000 ps, 16 MHz -> 62 500 ps); for others (the CP2102's
+// 24 MHz) the multiplication comes first, so there is no cumulative drift over long runs.
+constexpr TimePs cycles_to_ps(std::int64_t cycles, std::int64_t clk_hz) {
+    const std::int64_t whole = cycles / clk_hz;
+    const std::int64_t part = cycles % clk_hz;
+    return whole * kPsPerSec + part * kPsPerSec / clk_hz;
+}
+
+// Index of the first clock edge strictly after `t_ps` (edges at n * period, n >= 0): the edge that
+// samples a level that changed at `t_ps` (a change exactly on an edge is seen by the next one).
+constexpr std::int64_t first_edge_after(TimePs t_ps, TimePs period_ps) {
+    return t_ps < 0 ? 0 : t_ps / period_ps + 1;
+}
+
+inline double ps_to_s(TimePs t) { return static_cast<double>(t) / static_cast<double>(kPsPerSec); }
+inline double ps_to_us(TimePs t) { return static_cast<double>(t) / static_cast<double>(kPsPerUs); }
+inline double ps_to_ns(TimePs t) { return static_cast<double>(t) / static_cast<double>(kPsPerNs); }
+
+}  // namespace cnc

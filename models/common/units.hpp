@@ -16,9 +16,10 @@ inline constexpr TimePs kPsPerSec = 1'000'000'000'000;
 // period is a whole number of ps (50 MHz -> 20 000 ps, 16 MHz -> 62 500 ps); for others (the CP2102's
 // 24 MHz) the multiplication comes first, so there is no cumulative drift over long runs.
 constexpr TimePs cycles_to_ps(std::int64_t cycles, std::int64_t clk_hz) {
+    // Split so that no product overflows int64 for clocks below 1 GHz: part * 1e6 < 1e15.
     const std::int64_t whole = cycles / clk_hz;
-    const std::int64_t part = cycles % clk_hz;
-    return whole * kPsPerSec + part * kPsPerSec / clk_hz;
+    const std::int64_t part_us = (cycles % clk_hz) * 1'000'000;
+    return whole * kPsPerSec + (part_us / clk_hz) * 1'000'000 + (part_us % clk_hz) * 1'000'000 / clk_hz;
 }
 
 // Index of the first clock edge strictly after `t_ps` (edges at n * period, n >= 0): the edge that

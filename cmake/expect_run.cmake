@@ -1,0 +1,16 @@
+# Runs CMD (a ;-list), then checks its exit code against EXIT and its stderr+stdout against each regex in MATCH
+# (a ;-list). Used for the CLI's bad-input contract: exit code 2 and a message naming the file, line or key.
+string(REPLACE "|" ";" cmd "${CMD}")
+execute_process(COMMAND ${cmd} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT "${rc}" STREQUAL "${EXIT}")
+  message(FATAL_ERROR "exit code ${rc}, expected ${EXIT}\nstdout:\n${out}\nstderr:\n${err}")
+endif()
+string(REPLACE "|" ";" patterns "${MATCH}")
+foreach(p IN LISTS patterns)
+  if(NOT "${out}${err}" MATCHES "${p}")
+    message(FATAL_ERROR "output does not match '${p}'\nstdout:\n${out}\nstderr:\n${err}")
+  endif()
+endforeach()
+if(DEFINED NO_FILE AND EXISTS "${NO_FILE}")
+  message(FATAL_ERROR "${NO_FILE} was written although the run failed")
+endif()

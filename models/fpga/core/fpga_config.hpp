@@ -1,0 +1,34 @@
+// Parameters of the seed 000 FPGA (DE1-SoC, Verilog of Π.1-Π.6): clock, UART bit counts, step_gen timing,
+// and the two switches for the seed's open questions (init packet wiring Q1, 32-bit period product Q3).
+#pragma once
+#include <cstdint>
+
+#include "common/units.hpp"
+
+namespace cnc::fpga {
+
+// seed 000 Q3: the text computes period_sub = (num/feed)*abs_dom/abs_sub without overflow; the appendix
+// evaluates the product at 32 bits and wraps.
+enum class PeriodArithmetic { Exact, Wrap32 };
+
+struct FpgaConfig {
+    std::uint32_t clk_hz = 50'000'000;               // seed 000 §5: DE1-SoC CLOCK_50
+    std::uint32_t uart_full_bit_cycles = 434;        // seed 000 §5.1 FULL_BIT; uart_tx CLK_FREQ/BAUD_RATE = 434 (§5.2)
+    std::uint32_t uart_half_bit_cycles = 217;        // seed 000 §5.1 HALF_BIT (mid-start-bit check)
+    std::uint32_t watchdog_cycles = 5'000'000;       // seed 000 §5.3 TIMEOUT_CYCLES: 100 ms inter-byte watchdog
+    std::uint32_t pulse_high_cycles = 100;           // seed 000 §5.4 PULSE_HIGH: 2 us STEP high
+    std::uint32_t dir_settle_cycles = 200;           // seed 000 §5.4 DIR_SETTLE: 4 us
+    std::uint32_t numerator_default = 18'750'000;    // seed 000 §5.3/§5.4 reset value of num_x/num_y (160 steps/mm)
+    std::uint32_t feed_zero_period_cycles = 62'500;  // seed 000 §5.4 / Q4: both periods when feed_rate == 0
+    bool init_packet_wired = true;                   // false = appendix top.v: cfg_valid/numerators unconnected (Q1)
+    PeriodArithmetic period_arithmetic = PeriodArithmetic::Exact;  // Exact = the text, Wrap32 = the appendix
+};
+
+// One clock period in ps; validate() guarantees it is exact (50 MHz -> 20 000 ps).
+[[nodiscard]] TimePs clock_period_ps(const FpgaConfig& cfg);
+
+// Rejects values the RTL registers cannot hold (cnc::BadInput naming the key): uart_rx's 10-bit count,
+// uart_tx's 9-bit clk_count, step_gen's 9-bit dir_cnt, packet_decoder's 23-bit timeout_cnt.
+void validate(const FpgaConfig& cfg);
+
+}  // namespace cnc::fpga

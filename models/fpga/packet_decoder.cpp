@@ -1,0 +1,72 @@
+#include "fpga/packet_decoder.hpp"
+
+namespace cnc::fpga {
+
+PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
+    : sc_module(name),
+      rx_data("rx_data"),
+      rx_valid("rx_valid"),
+      motion("motion"),
+      steps_x("steps_x"),
+      steps_y("steps_y"),
+      feed_rate("feed_rate"),
+      pkt_valid("pkt_valid"),
+      numerator_x("numerator_x"),
+      numerator_y("numerator_y"),
+      cfg_valid("cfg_valid"),
+      m_cfg(cfg),
+      m_period_ps(clock_period_ps(cfg)),
+      m_core(cfg.numerator_default),
+      m_writer("writer") {
+    SC_HAS_PROCESS(PacketDecoder);
+    numerator_x.initialize(cfg.numerator_default);  // seed 000 §5.3 reset value
+    numerator_y.initialize(cfg.numerator_default);
+    SC_METHOD(on_rx_valid);
+    sensitive << rx_valid;
+    dont_initialize();
+    SC_METHOD(on_watchdog);
+    sensitive << m_watchdog;
+    dont_initialize();
+}
+
+void PacketDecoder::on_rx_valid() {
+    ++m_activations;
+    if (!rx_valid.read()) return;
+    // rx_valid rose at edge n; the decoder's always block sees it (and rx_data) at edge n+1. A watchdog
+    // that expired at or before edge n has already run (timed event, delta 0 of its edge).
+    const std::int64_t edge = first_edge_after(now_ps(), m_period_ps);
+    const TimePs t = edge * m_period_ps;
+    const auto done = m_core.on_byte(rx_data.read());
+    if (done == PacketDecoderCore::Completed::Motion) {
+        const MotionFields f = m_core.motion();
+        m_motions.push_back({t, f});
+        m_writer.at(t, [this, f] {
+            motion.write(f.motion);
+            steps_x.write(f.steps_x);
+            steps_y.write(f.steps_y);
+            feed_rate.write(f.feed);
+            pkt_valid.write(true);
+        });
+        m_writer.at(t + m_period_ps, [this] { pkt_valid.write(false); });
+    } else if (done == PacketDecoderCore::Completed::Init) {
+        const InitFields f = m_core.init();
+        m_writer.at(t, [this, f] {
+            numerator_x.write(f.num_x);
+            numerator_y.write(f.num_y);
+            cfg_valid.write(true);
+        });
+        m_writer.at(t + m_period_ps, [this] { cfg_valid.write(false); });
+    }
+    // timeout_cnt restarts at this byte: with no byte on edges edge+1 .. edge+TIMEOUT_CYCLES, the edge
+    // edge+TIMEOUT_CYCLES sees timeout_cnt == TIMEOUT_CYCLES-1 and clears the partial packet.
+    m_watchdog.cancel();
+    if (m_core.timeout_active()) m_watchdog.notify(ps(t + std::int64_t{m_cfg.watchdog_cycles} * m_period_ps - now_ps()));
+}
+
+void PacketDecoder::on_watchdog() {
+    ++m_activations;
+    m_core.on_timeout();
+    ++m_watchdog_resets;
+}
+
+}  // namespace cnc::fpga

@@ -1,0 +1,52 @@
+// packet_decoder (seed 000 §5.3, Π.4): bytes from uart_rx -> registered motion/init fields with a one-clock
+// pkt_valid/cfg_valid, and the 100 ms inter-byte watchdog as one timed event instead of a counter.
+#pragma once
+#include <cstdint>
+#include <systemc>
+#include <vector>
+
+#include "fpga/core/fpga_config.hpp"
+#include "fpga/core/packet_decoder_core.hpp"
+#include "fpga/timed_writer.hpp"
+
+namespace cnc::fpga {
+
+class PacketDecoder : public sc_core::sc_module {
+public:
+    sc_core::sc_in<std::uint8_t> rx_data;
+    sc_core::sc_in<bool> rx_valid;
+    sc_core::sc_out<std::uint8_t> motion;
+    sc_core::sc_out<std::int32_t> steps_x;
+    sc_core::sc_out<std::int32_t> steps_y;
+    sc_core::sc_out<std::uint16_t> feed_rate;
+    sc_core::sc_out<bool> pkt_valid;
+    sc_core::sc_out<std::uint32_t> numerator_x;
+    sc_core::sc_out<std::uint32_t> numerator_y;
+    sc_core::sc_out<bool> cfg_valid;
+
+    PacketDecoder(const sc_core::sc_module_name& name, const FpgaConfig& cfg);
+
+    struct MotionOut {
+        TimePs t_pkt_valid_ps;
+        MotionFields fields;
+    };
+    // Every completed motion packet, in order (one per pkt_valid pulse).
+    [[nodiscard]] const std::vector<MotionOut>& motions() const { return m_motions; }
+    [[nodiscard]] std::uint64_t watchdog_resets() const { return m_watchdog_resets; }
+    [[nodiscard]] std::uint64_t activations() const { return m_activations + m_writer.activations(); }
+
+private:
+    void on_rx_valid();
+    void on_watchdog();
+
+    const FpgaConfig m_cfg;
+    const TimePs m_period_ps;
+    PacketDecoderCore m_core;
+    sc_core::sc_event m_watchdog;
+    TimedWriter m_writer;
+    std::vector<MotionOut> m_motions;
+    std::uint64_t m_watchdog_resets = 0;
+    std::uint64_t m_activations = 0;
+};
+
+}  // namespace cnc::fpga

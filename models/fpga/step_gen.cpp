@@ -1,0 +1,102 @@
+#include "fpga/step_gen.hpp"
+
+namespace cnc::fpga {
+
+StepGen::StepGen(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
+    : sc_module(name),
+      steps_x("steps_x"),
+      steps_y("steps_y"),
+      feed_rate("feed_rate"),
+      pkt_valid("pkt_valid"),
+      numerator_x("numerator_x"),
+      numerator_y("numerator_y"),
+      cfg_valid("cfg_valid"),
+      dir_x("dir_x"),
+      step_x("step_x"),
+      dir_y("dir_y"),
+      step_y("step_y"),
+      busy("busy"),
+      m_cfg(cfg),
+      m_period_ps(clock_period_ps(cfg)),
+      m_num_x(cfg.numerator_default),  // seed 000 §5.4 NUMERATOR_DEFAULT
+      m_num_y(cfg.numerator_default) {
+    SC_HAS_PROCESS(StepGen);
+    SC_METHOD(on_pkt_valid);
+    sensitive << pkt_valid;
+    dont_initialize();
+    SC_METHOD(on_cfg_valid);
+    sensitive << cfg_valid;
+    dont_initialize();
+    SC_METHOD(emit_edges);
+    sensitive << m_edge_due;
+    dont_initialize();
+}
+
+void StepGen::on_cfg_valid() {
+    ++m_activations;
+    if (!cfg_valid.read()) return;
+    // cfg_valid high at edge k is seen at k+1; latched only if the FSM is IDLE there (an init mid-move is lost).
+    if (idle_at_edge(first_edge_after(now_ps(), m_period_ps))) {
+        m_num_x = numerator_x.read();
+        m_num_y = numerator_y.read();
+    }
+}
+
+void StepGen::on_pkt_valid() {
+    ++m_activations;
+    if (!pkt_valid.read()) return;
+    const std::int64_t k = now_ps() / m_period_ps;
+    Move move;
+    move.t_pkt_valid_ps = k * m_period_ps;
+    if (!idle_at_edge(k + 1)) {  // SETUP/DIR_WAIT/RUN/DONE ignore pkt_valid: the packet is lost
+        m_moves.push_back(move);
+        return;
+    }
+    // The decoder's fields only change with pkt_valid, so the values SETUP (k+2) and DIR_WAIT (k+3) read are
+    // the ones present now; num_x/num_y cannot change outside IDLE.
+    const MoveInputs in{steps_x.read(), steps_y.read(), feed_rate.read(), m_num_x, m_num_y};
+    m_schedule.emplace(in, m_dir_x, m_dir_y, m_cfg);
+    m_move_edge = k;
+    m_dir_x = m_schedule->dir_x();
+    m_dir_y = m_schedule->dir_y();
+    m_idle_from = k + m_schedule->idle_from();
+    move.accepted = true;
+    move.periods = m_schedule->periods();
+    if (m_schedule->has_run()) move.t_run_start_ps = (k + m_schedule->run_start()) * m_period_ps;
+    move.t_busy_fall_ps = (k + m_schedule->busy_fall()) * m_period_ps;
+    m_moves.push_back(move);
+    fetch_next_edge();
+    notify_next_edge();
+}
+
+void StepGen::fetch_next_edge() {
+    PinEdge e;
+    if (m_schedule->next(e)) {
+        m_next = e;
+    } else {
+        m_next.reset();
+    }
+}
+
+void StepGen::notify_next_edge() {
+    if (m_next) m_edge_due.notify(ps((m_move_edge + m_next->cycle) * m_period_ps - now_ps()));
+}
+
+void StepGen::emit_edges() {
+    ++m_activations;
+    const std::int64_t edge = now_ps() / m_period_ps;
+    while (m_next && m_move_edge + m_next->cycle == edge) {
+        const bool level = m_next->level;
+        switch (m_next->pin) {
+            case StepPin::Busy: busy.write(level); break;
+            case StepPin::DirX: dir_x.write(level); break;
+            case StepPin::DirY: dir_y.write(level); break;
+            case StepPin::StepX: step_x.write(level); break;
+            case StepPin::StepY: step_y.write(level); break;
+        }
+        fetch_next_edge();
+    }
+    notify_next_edge();
+}
+
+}  // namespace cnc::fpga

@@ -1,0 +1,69 @@
+// step_gen (seed 000 §5.4, Π.5): IDLE/SETUP/DIR_WAIT/RUN/DONE STEP/DIR generator. On an accepted pkt_valid
+// it builds the move's edge schedule (core/step_schedule.hpp) and wakes once per edge time; pkt_valid while not
+// IDLE is logged as lost; cfg_valid latches the numerators only in IDLE.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <systemc>
+#include <vector>
+
+#include "fpga/core/fpga_config.hpp"
+#include "fpga/core/step_schedule.hpp"
+#include "fpga/timed_writer.hpp"
+
+namespace cnc::fpga {
+
+class StepGen : public sc_core::sc_module {
+public:
+    sc_core::sc_in<std::int32_t> steps_x;
+    sc_core::sc_in<std::int32_t> steps_y;
+    sc_core::sc_in<std::uint16_t> feed_rate;
+    sc_core::sc_in<bool> pkt_valid;
+    sc_core::sc_in<std::uint32_t> numerator_x;
+    sc_core::sc_in<std::uint32_t> numerator_y;
+    sc_core::sc_in<bool> cfg_valid;
+    sc_core::sc_out<bool> dir_x;
+    sc_core::sc_out<bool> step_x;
+    sc_core::sc_out<bool> dir_y;
+    sc_core::sc_out<bool> step_y;
+    sc_core::sc_out<bool> busy;
+
+    StepGen(const sc_core::sc_module_name& name, const FpgaConfig& cfg);
+
+    struct Move {                    // one pkt_valid seen by step_gen
+        TimePs t_pkt_valid_ps = -1;
+        bool accepted = false;
+        StepPeriods periods;
+        TimePs t_run_start_ps = -1;  // -1: ignored or zero-length
+        TimePs t_busy_fall_ps = -1;
+    };
+    [[nodiscard]] const std::vector<Move>& moves() const { return m_moves; }
+    // True if the FSM is IDLE at clock edge `edge` (so it would accept pkt_valid / cfg_valid there).
+    [[nodiscard]] bool idle_at_edge(std::int64_t edge) const { return edge >= m_idle_from; }
+    [[nodiscard]] std::uint32_t num_x() const { return m_num_x; }
+    [[nodiscard]] std::uint32_t num_y() const { return m_num_y; }
+    [[nodiscard]] std::uint64_t activations() const { return m_activations; }
+
+private:
+    void on_pkt_valid();
+    void on_cfg_valid();
+    void emit_edges();
+    void fetch_next_edge();
+    void notify_next_edge();
+
+    const FpgaConfig m_cfg;
+    const TimePs m_period_ps;
+    std::uint32_t m_num_x;
+    std::uint32_t m_num_y;
+    bool m_dir_x = false;  // reset values
+    bool m_dir_y = false;
+    std::int64_t m_idle_from = 0;
+    std::int64_t m_move_edge = 0;  // pkt_valid edge k of the running move
+    std::optional<StepSchedule> m_schedule;
+    std::optional<PinEdge> m_next;
+    sc_core::sc_event m_edge_due;
+    std::vector<Move> m_moves;
+    std::uint64_t m_activations = 0;
+};
+
+}  // namespace cnc::fpga

@@ -1,0 +1,166 @@
+#include "fpga/top.hpp"
+
+#include <stdexcept>
+
+namespace cnc::fpga {
+
+Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
+    : sc_module(name),
+      rx("rx"),
+      tx("tx"),
+      dir_x("dir_x"),
+      step_x("step_x"),
+      dir_y("dir_y"),
+      step_y("step_y"),
+      laser("laser"),
+      busy("busy"),
+      pkt_valid("pkt_valid"),
+      cfg_valid("cfg_valid"),
+      rx_valid("rx_valid"),
+      tx_start("tx_start"),
+      m_cfg((validate(cfg), cfg)),
+      m_period_ps(clock_period_ps(cfg)),
+      m_numerator_x("numerator_x", cfg.numerator_default),
+      m_numerator_y("numerator_y", cfg.numerator_default),
+      uart_rx_inst("uart_rx_inst", cfg),
+      pkt_dec_inst("pkt_dec_inst", cfg),
+      step_gen_inst("step_gen_inst", cfg),
+      laser_ctrl_inst("laser_ctrl_inst", cfg),
+      uart_tx_inst("uart_tx_inst", cfg),
+      m_writer("writer") {
+    SC_HAS_PROCESS(Top);
+
+    uart_rx_inst.rx(rx);
+    uart_rx_inst.rx_data(m_rx_data);
+    uart_rx_inst.rx_valid(rx_valid);
+
+    pkt_dec_inst.rx_data(m_rx_data);
+    pkt_dec_inst.rx_valid(rx_valid);
+    pkt_dec_inst.motion(m_motion);
+    pkt_dec_inst.steps_x(m_steps_x);
+    pkt_dec_inst.steps_y(m_steps_y);
+    pkt_dec_inst.feed_rate(m_feed_rate);
+    pkt_dec_inst.pkt_valid(pkt_valid);
+    pkt_dec_inst.numerator_x(m_numerator_x);
+    pkt_dec_inst.numerator_y(m_numerator_y);
+    pkt_dec_inst.cfg_valid(cfg_valid);
+
+    step_gen_inst.steps_x(m_steps_x);
+    step_gen_inst.steps_y(m_steps_y);
+    step_gen_inst.feed_rate(m_feed_rate);
+    step_gen_inst.pkt_valid(pkt_valid);
+    if (cfg.init_packet_wired) {  // §5.2.6: "must also be driven" to step_gen
+        step_gen_inst.numerator_x(m_numerator_x);
+        step_gen_inst.numerator_y(m_numerator_y);
+        step_gen_inst.cfg_valid(cfg_valid);
+    } else {
+        step_gen_inst.numerator_x(m_numerator_unconnected);
+        step_gen_inst.numerator_y(m_numerator_unconnected);
+        step_gen_inst.cfg_valid(m_cfg_valid_unconnected);
+    }
+    step_gen_inst.dir_x(dir_x);
+    step_gen_inst.step_x(step_x);
+    step_gen_inst.dir_y(dir_y);
+    step_gen_inst.step_y(step_y);
+    step_gen_inst.busy(busy);
+
+    laser_ctrl_inst.motion(m_motion);
+    laser_ctrl_inst.pkt_valid(pkt_valid);
+    laser_ctrl_inst.busy(busy);
+    laser_ctrl_inst.laser(laser);
+
+    uart_tx_inst.tx_data(m_ack_byte);
+    uart_tx_inst.tx_start(tx_start);
+    uart_tx_inst.tx_busy(m_tx_busy);
+    uart_tx_inst.tx(tx);
+
+    SC_METHOD(on_busy);
+    sensitive << busy;
+    dont_initialize();
+    SC_METHOD(on_cfg_valid);
+    sensitive << cfg_valid;
+    dont_initialize();
+}
+
+void Top::on_busy() {
+    ++m_activations;
+    if (busy.read()) return;
+    // busy fell at edge f: edge f+1 sees busy_prev && !busy and samples tx_busy as it was after edge f.
+    const std::int64_t f = now_ps() / m_period_ps;
+    const TimePs t_start = (f + 1) * m_period_ps;
+    ++m_pkt_count;
+    if (m_tx_busy.read()) {  // no pending flag: the ACK is lost (seed 000 §4.3)
+        ++m_acks_dropped;
+        m_ack_by_busy_fall[f * m_period_ps] = -1;
+        return;
+    }
+    ++m_acks_sent;
+    m_ack_by_busy_fall[f * m_period_ps] = t_start;
+    m_writer.at(t_start, [this] { tx_start.write(true); });
+    m_writer.at(t_start + m_period_ps, [this] { tx_start.write(false); });
+}
+
+void Top::on_cfg_valid() {
+    ++m_activations;
+    if (!cfg_valid.read()) return;
+    const std::int64_t k = now_ps() / m_period_ps;
+    m_inits.push_back({k * m_period_ps, m_numerator_x.read(), m_numerator_y.read(),
+                       m_cfg.init_packet_wired && step_gen_inst.idle_at_edge(k + 1)});
+}
+
+std::vector<PacketRecord> Top::packets() const {
+    const auto& motions = pkt_dec_inst.motions();
+    const auto& moves = step_gen_inst.moves();
+    if (motions.size() != moves.size()) throw std::logic_error("fpga top: pkt_valid seen by decoder and step_gen differ");
+    std::vector<PacketRecord> out;
+    out.reserve(moves.size());
+    for (std::size_t i = 0; i < moves.size(); ++i) {
+        const auto& m = motions[i];
+        const auto& s = moves[i];
+        PacketRecord r;
+        r.t_pkt_valid_ps = m.t_pkt_valid_ps;
+        r.motion = m.fields.motion;
+        r.steps_x = m.fields.steps_x;
+        r.steps_y = m.fields.steps_y;
+        r.feed = m.fields.feed;
+        r.accepted = s.accepted;
+        r.period_x_cycles = s.periods.x_cycles;
+        r.period_y_cycles = s.periods.y_cycles;
+        r.period_overflow = s.periods.overflow;
+        r.t_run_start_ps = s.t_run_start_ps;
+        r.t_busy_fall_ps = s.t_busy_fall_ps;
+        const auto ack = m_ack_by_busy_fall.find(s.t_busy_fall_ps);
+        if (s.accepted && ack != m_ack_by_busy_fall.end()) r.t_ack_start_ps = ack->second;
+        out.push_back(r);
+    }
+    return out;
+}
+
+FpgaStats Top::stats() const {
+    FpgaStats s;
+    s.bytes_received = uart_rx_inst.bytes_received();
+    s.framing_errors = uart_rx_inst.framing_errors();
+    s.watchdog_resets = pkt_dec_inst.watchdog_resets();
+    s.acks_sent = m_acks_sent;
+    s.acks_dropped = m_acks_dropped;
+    return s;
+}
+
+std::uint64_t Top::activations() const {
+    return m_activations + m_writer.activations() + uart_rx_inst.activations() + pkt_dec_inst.activations() +
+           step_gen_inst.activations() + laser_ctrl_inst.activations() + uart_tx_inst.activations();
+}
+
+void Top::add_traces(sc_core::sc_trace_file* tf) const {
+    sc_core::sc_trace(tf, m_rx_data, m_rx_data.name());
+    sc_core::sc_trace(tf, m_motion, m_motion.name());
+    sc_core::sc_trace(tf, m_steps_x, m_steps_x.name());
+    sc_core::sc_trace(tf, m_steps_y, m_steps_y.name());
+    sc_core::sc_trace(tf, m_feed_rate, m_feed_rate.name());
+    sc_core::sc_trace(tf, m_numerator_x, m_numerator_x.name());
+    sc_core::sc_trace(tf, m_numerator_y, m_numerator_y.name());
+    sc_core::sc_trace(tf, m_tx_busy, m_tx_busy.name());
+    laser_ctrl_inst.add_traces(tf);
+}
+
+}  // namespace cnc::fpga

@@ -1,0 +1,85 @@
+// top (seed 000 §5.6, Π.1): uart_rx -> packet_decoder -> step_gen + laser_ctrl, uart_tx sending the 0xAA ACK
+// when busy falls (only if uart_tx is idle then), wired as top.v. init_packet_wired = false keeps top.v's
+// unconnected numerator path (seed Q1). LEDR/HEX are not modelled. Besides the board pins, five internal nets
+// are exported for tracing; every output must be bound (tx to a signal that starts high: the line idles high).
+#pragma once
+#include <cstdint>
+#include <map>
+#include <systemc>
+#include <vector>
+
+#include "fpga/core/fpga_config.hpp"
+#include "fpga/core/fpga_records.hpp"
+#include "fpga/laser_ctrl.hpp"
+#include "fpga/packet_decoder.hpp"
+#include "fpga/step_gen.hpp"
+#include "fpga/timed_writer.hpp"
+#include "fpga/uart_rx.hpp"
+#include "fpga/uart_tx.hpp"
+
+namespace cnc::fpga {
+
+class Top : public sc_core::sc_module {
+public:
+    sc_core::sc_in<bool> rx;         // GPIO_0[0], from CP2102 TXD
+    sc_core::sc_out<bool> tx;        // GPIO_0[1], to CP2102 RXD
+    sc_core::sc_out<bool> dir_x;     // GPIO_0[2]
+    sc_core::sc_out<bool> step_x;    // GPIO_0[3]
+    sc_core::sc_out<bool> dir_y;     // GPIO_0[4]
+    sc_core::sc_out<bool> step_y;    // GPIO_0[5]
+    sc_core::sc_out<bool> laser;     // GPIO_0[6]
+    sc_core::sc_out<bool> busy;      // internal nets exported for tracing (one-clock pulses except busy)
+    sc_core::sc_out<bool> pkt_valid;
+    sc_core::sc_out<bool> cfg_valid;
+    sc_core::sc_out<bool> rx_valid;
+    sc_core::sc_out<bool> tx_start;
+
+    Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg);
+
+    // One record per pkt_valid, in order, with the ACK outcome of accepted moves.
+    [[nodiscard]] std::vector<PacketRecord> packets() const;
+    [[nodiscard]] const std::vector<InitRecord>& inits() const { return m_inits; }
+    [[nodiscard]] FpgaStats stats() const;
+    [[nodiscard]] std::uint8_t pkt_count() const { return m_pkt_count; }  // top.v's 8-bit completed-move count
+    [[nodiscard]] const FpgaConfig& config() const { return m_cfg; }
+    // Debug: process activations of all blocks (the model must wake per edge, never per clock).
+    [[nodiscard]] std::uint64_t activations() const;
+    void add_traces(sc_core::sc_trace_file* tf) const;
+
+private:
+    void on_busy();
+    void on_cfg_valid();
+
+    const FpgaConfig m_cfg;
+    const TimePs m_period_ps;
+    sc_core::sc_signal<std::uint8_t> m_rx_data{"rx_data", 0};
+    sc_core::sc_signal<std::uint8_t> m_motion{"motion", 0};
+    sc_core::sc_signal<std::int32_t> m_steps_x{"steps_x", 0};
+    sc_core::sc_signal<std::int32_t> m_steps_y{"steps_y", 0};
+    sc_core::sc_signal<std::uint16_t> m_feed_rate{"feed_rate", 0};
+    sc_core::sc_signal<std::uint32_t> m_numerator_x;
+    sc_core::sc_signal<std::uint32_t> m_numerator_y;
+    sc_core::sc_signal<bool> m_tx_busy{"tx_busy", false};
+    sc_core::sc_signal<std::uint8_t> m_ack_byte{"ack_byte", 0xAA};  // top.v: .tx_data(8'hAA), seed 000 §4.2
+    // top.v leaves step_gen's cfg_valid/numerator inputs unconnected; synthesis ties them low (Q1).
+    sc_core::sc_signal<bool> m_cfg_valid_unconnected{"cfg_valid_unconnected", false};
+    sc_core::sc_signal<std::uint32_t> m_numerator_unconnected{"numerator_unconnected", 0};
+
+public:  // instance names as in top.v
+    UartRx uart_rx_inst;
+    PacketDecoder pkt_dec_inst;
+    StepGen step_gen_inst;
+    LaserCtrl laser_ctrl_inst;
+    UartTx uart_tx_inst;
+
+private:
+    TimedWriter m_writer;
+    std::map<TimePs, TimePs> m_ack_by_busy_fall;  // busy fall -> tx_start edge, -1 if dropped
+    std::vector<InitRecord> m_inits;
+    std::uint8_t m_pkt_count = 0;
+    std::uint64_t m_acks_sent = 0;
+    std::uint64_t m_acks_dropped = 0;
+    std::uint64_t m_activations = 0;
+};
+
+}  // namespace cnc::fpga

@@ -1,0 +1,70 @@
+#include "host/core/machine.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "common/bad_input.hpp"
+
+namespace cnc::host {
+
+namespace {
+
+std::string number_text(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+void require_positive(double value, const std::string& where, const char* key) {
+    if (!(std::isfinite(value) && value > 0.0)) {
+        throw BadInput(where, std::string(key) + " " + number_text(value) + " must be a finite number > 0");
+    }
+}
+
+bool is_drv8825_microstep(int microsteps) {
+    for (int m : {1, 2, 4, 8, 16, 32}) {  // seed 000 §8: DRV8825 M0..M2 table
+        if (microsteps == m) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+double AxisMachine::travel_per_rev_mm() const {
+    return transmission == Transmission::Belt ? belt_pitch_mm * pulley_teeth : lead_mm * screw_starts;
+}
+
+double AxisMachine::steps_per_mm() const { return steps_per_rev() * gear_ratio / travel_per_rev_mm(); }
+
+void validate(const AxisMachine& axis, const std::string& where) {
+    require_positive(axis.step_angle_deg, where, "step_angle_deg");
+    if (axis.step_angle_deg > 360.0) {
+        throw BadInput(where, "step_angle_deg " + number_text(axis.step_angle_deg) + " must be <= 360");
+    }
+    if (!is_drv8825_microstep(axis.microsteps)) {
+        throw BadInput(where, "microsteps " + std::to_string(axis.microsteps) +
+                                  " not supported (DRV8825 allows 1, 2, 4, 8, 16, 32)");
+    }
+    if (axis.transmission == Transmission::Belt) {
+        if (axis.pulley_teeth <= 0) {
+            throw BadInput(where, "pulley_teeth " + std::to_string(axis.pulley_teeth) + " must be > 0");
+        }
+        require_positive(axis.belt_pitch_mm, where, "belt_pitch_mm");
+    } else {
+        require_positive(axis.lead_mm, where, "lead_mm");
+        if (axis.screw_starts <= 0) {
+            throw BadInput(where, "screw_starts " + std::to_string(axis.screw_starts) + " must be >= 1");
+        }
+    }
+    require_positive(axis.gear_ratio, where, "gear_ratio");
+    if (!(std::isfinite(axis.travel_mm) && axis.travel_mm >= 0.0)) {
+        throw BadInput(where, "travel_mm " + number_text(axis.travel_mm) + " must be >= 0 (0 = unlimited)");
+    }
+}
+
+void validate(const MachineModel& machine, const std::string& where) {
+    validate(machine.x, where + " x");
+    validate(machine.y, where + " y");
+}
+
+}  // namespace cnc::host

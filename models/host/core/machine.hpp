@@ -1,0 +1,39 @@
+// Machine model of seed 000 §2 (AddModel "Machine Model Configuration"): per-axis motor, driver and
+// transmission, and the steps/mm that the CAM and the NUMERATOR are derived from.
+#pragma once
+#include <string>
+
+namespace cnc::host {
+
+enum class Transmission { Belt, Leadscrew };
+
+struct AxisMachine {
+    double step_angle_deg = 1.8;   // seed 000 §2.2 T3.4: NEMA17 42BYGHW208, 200 full steps/rev
+    int microsteps = 32;           // seed 000 T3.4: DRV8825 at 1/32
+    Transmission transmission = Transmission::Belt;
+    int pulley_teeth = 20;         // seed 000 T3.4: GT2 20T pulley
+    double belt_pitch_mm = 2.0;    // seed 000 T3.4: GT2, 2 mm/tooth
+    double lead_mm = 8.0;          // leadscrew only; 8 mm is the common T8 screw (seed 000 gives no leadscrew values)
+    int screw_starts = 1;          // leadscrew only; seed 000 Q12: travel_per_rev = lead x starts
+    double gear_ratio = 1.0;       // motor revs per pulley/screw rev; seed 000 §2.2 uses it, the form has no field (Q12)
+    double travel_mm = 0.0;        // TravelDistance of seed 000 §2.1; 0 = unlimited
+
+    [[nodiscard]] double steps_per_rev() const { return 360.0 / step_angle_deg * microsteps; }
+    [[nodiscard]] double travel_per_rev_mm() const;
+    // seed 000 §2.2: steps_per_mm = steps_per_rev * gear_ratio / travel_per_rev (160 for the defaults).
+    [[nodiscard]] double steps_per_mm() const;
+    [[nodiscard]] double mm_per_step() const { return 1.0 / steps_per_mm(); }
+};
+
+struct MachineModel {
+    AxisMachine x;
+    AxisMachine y;
+};
+
+// Throws cnc::BadInput(where, ...) for a value no machine can have, naming what is allowed.
+// Microsteps must be one of the DRV8825 modes 1, 2, 4, 8, 16, 32 (seed 000 §8; the AddModel form offers
+// only 8, 16 and 32, Q12, but the driver supports all six).
+void validate(const AxisMachine& axis, const std::string& where);
+void validate(const MachineModel& machine, const std::string& where);
+
+}  // namespace cnc::host

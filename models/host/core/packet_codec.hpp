@@ -1,0 +1,45 @@
+// UART packets of seed 000 §4.2 (T3.6, T4.6-4.9): 9-byte init (0xFF, NUMERATOR_X, NUMERATOR_Y) and 11-byte
+// motion (motion, StepsX, StepsY, FeedRate), big-endian, two's complement, as Python's struct ">BII" / ">BiiH".
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "host/core/cam.hpp"
+
+namespace cnc::host {
+
+inline constexpr std::uint8_t kInitMarker = 0xFF;        // seed 000 §4.2: first byte 0xFF = init packet
+inline constexpr std::uint8_t kAckByte = 0xAA;           // seed 000 §4.2: sent when a move completes
+inline constexpr std::size_t kInitPacketBytes = 9;       // seed 000 T3.6
+inline constexpr std::size_t kMotionPacketBytes = 11;    // seed 000 T3.6
+
+using InitBytes = std::array<std::uint8_t, kInitPacketBytes>;
+using MotionBytes = std::array<std::uint8_t, kMotionPacketBytes>;
+
+struct InitPacket {
+    std::uint32_t num_x = 0;
+    std::uint32_t num_y = 0;
+};
+
+struct MotionPacket {
+    std::uint8_t motion = 0;  // 0..3 in practice; the FPGA uses bits [1:0]
+    std::int32_t steps_x = 0;
+    std::int32_t steps_y = 0;
+    std::uint16_t feed = 0;   // dominant-axis feed, mm/min
+};
+
+InitBytes encode_init(std::uint32_t num_x, std::uint32_t num_y);
+// std::invalid_argument for motion 0xFF: the decoder would take the packet for an init packet.
+MotionBytes encode_motion(std::uint8_t motion, std::int32_t steps_x, std::int32_t steps_y, std::uint16_t feed);
+MotionBytes encode_motion(const MotionPacket& packet);
+// std::invalid_argument if byte 0 is not the 0xFF marker.
+InitPacket decode_init(const InitBytes& bytes);
+// std::invalid_argument if byte 0 is 0xFF (that starts an init packet).
+MotionPacket decode_motion(const MotionBytes& bytes);
+
+// Range-checked conversion of a CAM / steps-file segment: cnc::BadInput("segment N", ...) if the motion is not
+// 0..3, a step count is outside int32 or the feed outside 0..65535.
+MotionPacket to_packet(const MotionSegment& segment);
+
+}  // namespace cnc::host

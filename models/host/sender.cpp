@@ -1,0 +1,81 @@
+#include "host/sender.hpp"
+
+#include <cstdio>
+
+#include "host/core/packet_codec.hpp"
+
+namespace cnc::host {
+
+namespace {
+TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
+void wait_ps(TimePs t) {
+    if (t > 0) sc_core::wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t)));
+}
+}  // namespace
+
+Sender::Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
+               std::array<std::uint8_t, 9> init_packet, std::vector<std::array<std::uint8_t, 11>> motion_packets)
+    : sc_module(name), m_cfg(cfg), m_port(port), m_init(init_packet), m_motion(std::move(motion_packets)) {
+    SC_HAS_PROCESS(Sender);
+    SC_THREAD(run);
+}
+
+void Sender::say(const std::string& text) { m_messages.push_back({now_ps(), text}); }
+
+void Sender::write(const std::uint8_t* data, std::size_t n) {
+    wait_ps(m_cfg.write_latency_ps);
+    m_port.usb_write(data, n);
+}
+
+bool Sender::wait_for_ack(int segment, TimePs deadline) {
+    for (;;) {
+        while (m_port.in_waiting() > 0) {
+            const std::uint8_t b = *m_port.read_byte();
+            if (b == kAckByte) return true;
+            char text[64];
+            std::snprintf(text, sizeof text, "[WARN] seg %d: unexpected byte 0x%02X", segment, b);
+            say(text);
+        }
+        const TimePs now = now_ps();
+        if (now >= deadline) return false;
+        sc_core::wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(deadline - now)), m_port.data_event());
+    }
+}
+
+void Sender::run() {
+    wait_ps(m_cfg.settle_ps);
+    m_port.reset_input_buffer();
+    m_t_init_write = now_ps();
+    write(m_init.data(), m_init.size());
+    wait_ps(m_cfg.init_gap_ps);
+    m_port.reset_input_buffer();
+
+    for (std::size_t i = 0; i < m_motion.size(); ++i) {
+        const int segment = static_cast<int>(i) + 1;
+        wait_ps(m_cfg.packet_processing_ps);
+        SentPacket sent{segment, now_ps(), -1, false};
+        write(m_motion[i].data(), m_motion[i].size());
+        const TimePs deadline = now_ps() + m_cfg.ack_timeout_ps;
+        if (wait_for_ack(segment, deadline)) {
+            sent.t_ack_ps = now_ps();
+            m_sent.push_back(sent);
+            continue;
+        }
+        sent.timed_out = true;
+        m_sent.push_back(sent);
+        ++m_errors;
+        char text[96];
+        std::snprintf(text, sizeof text, "[ERROR] seg %d: no ACK within %.1f s", segment,
+                      static_cast<double>(m_cfg.ack_timeout_ps) / static_cast<double>(kPsPerSec));
+        say(text);
+        if (!m_cfg.continue_on_timeout) {
+            say("Continue anyway? [y/N] N: aborted");
+            m_aborted = true;
+            break;
+        }
+    }
+    m_finished = true;
+    m_t_end = now_ps();
+}
+
+}  // namespace cnc::host

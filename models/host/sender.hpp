@@ -1,0 +1,72 @@
+// The Python sender of seed 000 appendix A.2 (send_steps.py) with a host timing model: open the port, settle,
+// flush, send the init packet, then one motion packet at a time, each followed by a wait for the ACK 0xAA
+// (stop-and-wait) with a timeout. The script's time goes into documented parameters (processing, OS write
+// latency); the USB and UART timing belongs to the CP2102 model it writes through.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <systemc>
+
+#include "common/units.hpp"
+#include "uart/cp2102.hpp"
+
+namespace cnc::host {
+
+struct SenderConfig {
+    TimePs settle_ps = 300 * kPsPerMs;        // send_steps.py: time.sleep(0.3) after opening the port
+    TimePs init_gap_ps = 50 * kPsPerMs;       // time.sleep(0.05) after the init packet (it is not ACKed)
+    TimePs ack_timeout_ps = 10 * kPsPerSec;   // ACK_TIMEOUT_SEC = 10.0
+    TimePs packet_processing_ps = 200 * kPsPerUs;  // CPython loop, struct.pack, progress print: typical 0.1-0.5 ms
+    TimePs write_latency_ps = 100 * kPsPerUs;      // write() through the VCP driver to the USB request
+    bool continue_on_timeout = false;  // the script asks "Continue anyway? [y/N]"; with no terminal: N, abort
+};
+
+struct SentPacket {
+    int segment = 0;             // 1-based, as the script counts
+    TimePs t_write_ps = 0;       // the script calls ser.write()
+    TimePs t_ack_ps = -1;        // the ACK was read (-1: never)
+    bool timed_out = false;
+};
+
+struct SenderMessage {
+    TimePs t_ps = 0;
+    std::string text;            // as the script would print it
+};
+
+class Sender : public sc_core::sc_module {
+public:
+    Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
+           std::array<std::uint8_t, 9> init_packet, std::vector<std::array<std::uint8_t, 11>> motion_packets);
+
+    [[nodiscard]] const std::vector<SentPacket>& packets() const { return m_sent; }
+    [[nodiscard]] const std::vector<SenderMessage>& messages() const { return m_messages; }
+    [[nodiscard]] bool finished() const { return m_finished; }
+    [[nodiscard]] bool aborted() const { return m_aborted; }
+    [[nodiscard]] int errors() const { return m_errors; }
+    [[nodiscard]] TimePs t_init_write_ps() const { return m_t_init_write; }
+    [[nodiscard]] TimePs t_end_ps() const { return m_t_end; }
+
+private:
+    void run();
+    void write(const std::uint8_t* data, std::size_t n);
+    // Waits for 0xAA until `deadline`; true if it came. Other bytes are reported and skipped (the script's loop).
+    bool wait_for_ack(int segment, TimePs deadline);
+    void say(const std::string& text);
+
+    const SenderConfig m_cfg;
+    uart::Cp2102& m_port;
+    const std::array<std::uint8_t, 9> m_init;
+    const std::vector<std::array<std::uint8_t, 11>> m_motion;
+    std::vector<SentPacket> m_sent;
+    std::vector<SenderMessage> m_messages;
+    TimePs m_t_init_write = -1;
+    TimePs m_t_end = -1;
+    int m_errors = 0;
+    bool m_finished = false;
+    bool m_aborted = false;
+};
+
+}  // namespace cnc::host

@@ -1,0 +1,52 @@
+// The XY carriage: each axis is a motor driving a transmission; the tool position is sampled at every step
+// of either axis (DESIGN.md §4: contour error is sampled at every step event).
+#pragma once
+#include <systemc>
+#include <vector>
+
+#include "common/geometry.hpp"
+#include "common/units.hpp"
+#include "mechanics/core/motor.hpp"
+#include "mechanics/core/transmission.hpp"
+
+namespace cnc::mech {
+
+struct CarriageAxis {
+    const sc_core::sc_event* step_event = nullptr;  // the axis driver's step_event()
+    const StepperMotor* motor = nullptr;
+    const Transmission* transmission = nullptr;
+};
+
+struct CarriageConfig {
+    CarriageAxis x;
+    CarriageAxis y;
+    geom::Vec2 origin{};  // tool position (machine mm) with both shafts at 0 deg
+};
+
+struct ToolSample {
+    TimePs t_ps = 0;
+    geom::Vec2 pos;
+};
+
+class Carriage : public sc_core::sc_module {
+public:
+    Carriage(const sc_core::sc_module_name& name, const CarriageConfig& cfg);
+
+    // Tool position now.
+    [[nodiscard]] geom::Vec2 position() const;
+    // One sample at t = 0, then one per time stamp at which either axis stepped: steps of X and Y at the
+    // same instant give one sample (the later one overwrites), so a diagonal step is not seen as an L.
+    [[nodiscard]] const std::vector<ToolSample>& samples() const { return m_samples; }
+    void add_traces(sc_core::sc_trace_file* tf) const;
+
+private:
+    void start_of_simulation() override;
+    void sample();
+
+    CarriageConfig m_cfg;
+    std::vector<ToolSample> m_samples;
+    double m_x_mm = 0.0;  // last sample, for VCD traces
+    double m_y_mm = 0.0;
+};
+
+}  // namespace cnc::mech

@@ -1,0 +1,127 @@
+// The CP2102 USB-to-UART bridge between the host program and the controller's serial pins
+// (seed 000 §4.1: 115200 8N1, 3.3 V TTL, no flow control).
+//
+// Host side (USB): bytes written by the host reach the chip at the next USB full-speed frame start, queue in
+// the 640-byte TX FIFO and are sent back to back on TXD. Bytes received on RXD enter the 576-byte RX FIFO,
+// leave the chip in the next USB frame (bulk IN transfers are collected at the frame start after the byte's
+// stop bit ends) and become visible to the host application after the driver latency:
+//     t_host_visible = next_frame_start(t_stop_end) + usb_latency.
+// The latency model is deterministic.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <systemc>
+#include <vector>
+
+#include "common/edge_log.hpp"
+#include "common/units.hpp"
+#include "uart/core/cp2102_baud.hpp"
+#include "uart/core/uart_frame.hpp"
+#include "uart/core/usb_timing.hpp"
+
+namespace cnc::uart {
+
+struct Cp2102Config {
+    std::uint32_t requested_baud = 115'200;  // seed 000 §4.1
+    bool ideal_baud = false;                 // true: the line runs at exactly the requested rate
+    FrameFormat format = kFormat8N1;         // seed 000 §4.1: 8N1
+    TimePs usb_frame_ps = kUsbFullSpeedFramePs;  // the CP2102 is full-speed only: SOF every 1 ms
+    TimePs usb_latency_ps = kPsPerMs;            // host driver latency for received data (link.usb_latency_ms)
+    std::size_t tx_fifo_bytes = 640;             // CP2102 data sheet: 640-byte transmit buffer
+    std::size_t rx_fifo_bytes = 576;             // CP2102 data sheet: 576-byte receive buffer
+};
+
+struct Cp2102Stats {
+    std::int64_t tx_overflow_bytes = 0;  // host bytes dropped because the TX FIFO was full
+    std::int64_t rx_overflow_bytes = 0;  // received bytes dropped because the RX FIFO was full
+    std::int64_t framing_errors = 0;     // frames dropped for a low stop bit (or a parity error)
+    std::int64_t false_starts = 0;       // start bits that were high again at their middle (glitches)
+};
+
+class Cp2102 : public sc_core::sc_module {
+public:
+    sc_core::sc_out<bool> txd;  // to the target's RX pin (idles high)
+    sc_core::sc_in<bool> rxd;   // from the target's TX pin
+
+    struct TxByte {
+        std::uint8_t byte;
+        TimePs t_write_ps;      // host called usb_write
+        TimePs t_usb_ps;        // the USB frame that carried it to the chip
+        TimePs t_start_bit_ps;  // start bit on TXD
+        TimePs t_stop_end_ps;   // end of the stop bit
+    };
+    struct RxByte {
+        std::uint8_t byte;
+        TimePs t_start_bit_ps;
+        TimePs t_stop_end_ps;
+        TimePs t_host_visible_ps;  // -1 when the byte never reaches the host (framing error, FIFO overflow)
+        bool framing_error;
+    };
+
+    Cp2102(const sc_core::sc_module_name& name, const Cp2102Config& cfg);
+
+    // Host (USB) side, called from a host SC_THREAD at the current simulation time.
+    // Bulk OUT: the bytes reach the chip at the next USB frame start (>= now) and queue in the TX FIFO. A byte
+    // that finds the FIFO full is dropped and counted: a real driver would block instead (the chip NAKs the
+    // OUT packet), but the senders modelled here never have more than one packet in flight, so a drop flags
+    // a sender bug rather than hiding it. One frame carries up to 19 x 64 bytes (USB 2.0 §5.8.4), more than
+    // the FIFO holds, so any write that fits arrives in a single frame.
+    void usb_write(const std::uint8_t* data, std::size_t n);
+    void usb_write(const std::vector<std::uint8_t>& data) { usb_write(data.data(), data.size()); }
+    [[nodiscard]] std::size_t in_waiting() const { return m_host_rx.size(); }  // bytes the host driver holds
+    std::optional<std::uint8_t> read_byte();
+    // pyserial reset_input_buffer(): drops what the host driver holds now. Bytes still in the chip or in
+    // transit (visible time in the future) arrive later, as on a real port.
+    void reset_input_buffer() { m_host_rx.clear(); }
+    [[nodiscard]] const sc_core::sc_event& data_event() const { return m_data_ev; }
+
+    [[nodiscard]] const std::vector<TxByte>& tx_log() const { return m_tx_log; }
+    [[nodiscard]] const std::vector<RxByte>& rx_log() const { return m_rx_log; }
+    [[nodiscard]] const Cp2102Baud& baud() const { return m_baud; }
+    [[nodiscard]] const Cp2102Stats& stats() const { return m_stats; }
+
+private:
+    struct UsbOutByte {
+        std::uint8_t byte;
+        TimePs t_write_ps;
+        TimePs t_usb_ps;
+    };
+    struct UsbInByte {
+        std::uint8_t byte;
+        TimePs t_usb_ps;      // leaves the chip's RX FIFO
+        TimePs t_visible_ps;  // reaches the host application
+    };
+
+    void usb_out_arrival();  // SC_METHOD: USB frame delivers host bytes into the TX FIFO
+    void tx_thread();        // SC_THREAD: serialises the TX FIFO on txd, one wake per line edge
+    void on_rxd();           // SC_METHOD: rxd transitions
+    void rx_decide();        // SC_METHOD: the receiver's decision at the last stop-bit sample
+    void rx_deliver();       // SC_METHOD: received bytes become visible to the host
+    void wait_until(TimePs t_ps);
+
+    Cp2102Config m_cfg;
+    Cp2102Baud m_baud;
+    BitClock m_clk;
+
+    std::deque<UsbOutByte> m_usb_out;  // written by the host, not yet at the chip
+    std::deque<UsbOutByte> m_tx_fifo;
+    sc_core::sc_event m_usb_out_ev;
+    sc_core::sc_event m_tx_fifo_ev;
+
+    bool m_rx_busy = false;
+    TimePs m_rx_fall_ps = 0;
+    EdgeLog m_rx_line;                // rxd transitions of the frame being received
+    std::deque<UsbInByte> m_usb_in;  // received, not yet visible to the host (in the chip or in transit)
+    std::deque<std::uint8_t> m_host_rx;
+    sc_core::sc_event m_rx_decide_ev;
+    sc_core::sc_event m_rx_deliver_ev;
+    sc_core::sc_event m_data_ev;
+
+    std::vector<TxByte> m_tx_log;
+    std::vector<RxByte> m_rx_log;
+    Cp2102Stats m_stats;
+};
+
+}  // namespace cnc::uart

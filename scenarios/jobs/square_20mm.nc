@@ -1,0 +1,11 @@
+(20 mm square engraved at F800 from 10,10: the shape of seed 000's sample program, sec. 2.2)
+G21 G90 G17 G94
+G0 X10.000 Y10.000
+M3 S255
+G1 X30.000 Y10.000 F800
+G1 X30.000 Y30.000 F800
+G1 X10.000 Y30.000 F800
+G1 X10.000 Y10.000 F800
+M5
+G0 X0 Y0
+M30

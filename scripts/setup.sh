@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# One-step set-up on a fresh Debian 12 machine: install the packages, build, run the default scenario.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(
+  build-essential cmake ninja-build pkg-config
+  libsystemc-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev
+)
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${PACKAGES[@]}" >/dev/null
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j2
+mkdir -p out
+./build/sim/cncsim run scenarios/fpga-uart/square_20mm.toml --vcd out/square.vcd --report out/square.json

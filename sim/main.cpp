@@ -1,0 +1,103 @@
+// cncsim: the command line (DESIGN.md §6). Exit codes: 0 ok, 1 run failed, 2 bad input.
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <systemc>
+
+#include "common/bad_input.hpp"
+#include "metrics/metrics.hpp"
+#include "metrics/vcd.hpp"
+#include "run/run.hpp"
+#include "scenario/scenario.hpp"
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitRunFailed = 1;
+constexpr int kExitBadInput = 2;
+
+void write_json(const std::string& path, const nlohmann::json& j) {
+    std::ofstream out(path);
+    if (!out) throw cnc::BadInput(path, "cannot write the report file");
+    out << j.dump(2) << '\n';
+}
+
+int cmd_run(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& vcd,
+            const std::string& report) {
+    cnc::sim::Scenario s = cnc::sim::load_scenario(scenario_path, sets);
+    if (!vcd.empty()) s.vcd_path = vcd;
+    if (!report.empty()) s.report_path = report;
+    const cnc::sim::RunOutcome out = cnc::sim::run_scenario(s);
+    std::cout << out.summary;
+    if (!s.report_path.empty()) write_json(s.report_path, out.report);
+    if (!out.ok) {
+        std::cerr << "cncsim: run failed: " << out.failure << '\n';
+        return kExitRunFailed;
+    }
+    return kExitOk;
+}
+
+int cmd_analyze(const std::string& vcd_path, const std::string& step, const std::string& dir, double steps_per_mm,
+                const std::string& report) {
+    std::ifstream in(vcd_path);
+    if (!in) throw cnc::BadInput(vcd_path, "cannot open the VCD file");
+    const auto logs = cnc::metrics::read_vcd(in, vcd_path);
+    const cnc::metrics::RunInput input = cnc::metrics::analyze_input(
+        logs, step, dir, steps_per_mm > 0 ? std::optional<double>(steps_per_mm) : std::nullopt);
+    const cnc::metrics::RunMetrics m = cnc::metrics::compute_metrics(input);
+    std::cout << cnc::metrics::summary_table(m);
+    if (!report.empty()) write_json(report, cnc::metrics::to_json(m));
+    return kExitOk;
+}
+
+int cmd_keys() {
+    std::cout << cnc::sim::keys_markdown(cnc::sim::scenario_keys());
+    return kExitOk;
+}
+
+}  // namespace
+
+int sc_main(int argc, char* argv[]) {
+    CLI::App app{"cncsim: co-simulation of CNC / laser motion-control architectures"};
+    app.require_subcommand(1);
+
+    std::string scenario, vcd, report, vcd_in, step, dir;
+    std::vector<std::string> sets;
+    double steps_per_mm = 0.0;
+
+    CLI::App* run = app.add_subcommand("run", "run one scenario, print the summary, write the JSON report");
+    run->add_option("scenario", scenario, "scenario file (TOML)")->required();
+    run->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
+    run->add_option("--vcd", vcd, "write a VCD trace to this file");
+    run->add_option("--report", report, "write the JSON report to this file");
+
+    CLI::App* analyze = app.add_subcommand("analyze", "pulse metrics of any VCD (simulated or captured)");
+    analyze->add_option("vcd", vcd_in, "VCD file")->required();
+    analyze->add_option("--step", step, "STEP signal name")->required();
+    analyze->add_option("--dir", dir, "DIR signal name")->required();
+    analyze->add_option("--steps-per-mm", steps_per_mm, "steps per mm, for distances and speeds")
+        ->check(CLI::PositiveNumber);
+    analyze->add_option("--report", report, "write the JSON report to this file");
+
+    app.add_subcommand("keys", "print every scenario key (type, default, range, meaning) as Markdown");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? kExitOk : kExitBadInput;
+    }
+    try {
+        if (run->parsed()) return cmd_run(scenario, sets, vcd, report);
+        if (analyze->parsed()) return cmd_analyze(vcd_in, step, dir, steps_per_mm, report);
+        return cmd_keys();
+    } catch (const cnc::BadInput& e) {
+        std::cerr << "cncsim: " << e.what() << '\n';
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "cncsim: internal error: " << e.what() << '\n';
+        return kExitRunFailed;
+    }
+}

@@ -1,0 +1,52 @@
+// DRV8825 STEP/DIR timing rules checked on recorded edges, so that any trace (simulated or captured
+// by a logic analyser) is judged against the same datasheet limits (TI SLVSA73, peers.md §4).
+#pragma once
+#include <array>
+#include <cstddef>
+#include <optional>
+
+#include "common/edge_log.hpp"
+#include "common/units.hpp"
+
+namespace cnc::metrics {
+
+struct DriverLimits {
+    TimePs step_high_min_ps = 1'900'000;  // DRV8825 t_WH(STEP) >= 1.9 us
+    TimePs step_low_min_ps = 1'900'000;   // DRV8825 t_WL(STEP) >= 1.9 us
+    TimePs dir_setup_min_ps = 650'000;    // DRV8825 t_SU (DIR before STEP rising) >= 650 ns
+    TimePs dir_hold_min_ps = 650'000;     // DRV8825 t_H (DIR kept after STEP rising) >= 650 ns
+    double step_rate_max_hz = 250'000;    // DRV8825 f_STEP <= 250 kHz
+};
+
+enum class DriverRule : std::size_t { StepHigh, StepLow, DirSetup, DirHold, Rate };
+inline constexpr std::size_t kDriverRuleCount = 5;
+inline constexpr std::array<DriverRule, kDriverRuleCount> kDriverRules{
+    DriverRule::StepHigh, DriverRule::StepLow, DriverRule::DirSetup, DriverRule::DirHold, DriverRule::Rate};
+
+// One rule on one axis. The measured quantity is a time (pulse width, setup, hold, or the interval
+// between consecutive rising edges for the rate rule); a violation is a measurement below the limit.
+struct RuleCheck {
+    std::size_t checked = 0;           // measurements taken
+    std::size_t violations = 0;
+    std::optional<TimePs> min_ps;      // smallest measurement: the worst case when violations > 0
+    std::optional<TimePs> first_violation_at_ps;  // time of the STEP/DIR edge that ended the first violation
+};
+
+struct DriverTimingReport {
+    std::array<RuleCheck, kDriverRuleCount> rules;
+
+    [[nodiscard]] const RuleCheck& operator[](DriverRule r) const { return rules[static_cast<std::size_t>(r)]; }
+    [[nodiscard]] RuleCheck& operator[](DriverRule r) { return rules[static_cast<std::size_t>(r)]; }
+    [[nodiscard]] std::size_t total_violations() const;
+};
+
+[[nodiscard]] const char* rule_name(DriverRule rule);  // step_high, step_low, dir_setup, dir_hold, rate
+// Limit as a time: the rate limit is the shortest allowed interval between rising edges (4 us at 250 kHz).
+[[nodiscard]] double rule_limit_ns(DriverRule rule, const DriverLimits& limits);
+
+// A DIR change at the very instant of a STEP rising edge is a setup violation of 0 ps for that step
+// (the driver may latch either direction); it is not also counted as a hold violation.
+[[nodiscard]] DriverTimingReport check_driver_timing(const EdgeLog& step, const EdgeLog& dir,
+                                                     const DriverLimits& limits);
+
+}  // namespace cnc::metrics

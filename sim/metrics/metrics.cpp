@@ -1,0 +1,95 @@
+#include "metrics/metrics.hpp"
+
+#include <utility>
+
+#include "metrics/edge_index.hpp"
+#include "metrics/stats.hpp"
+#include "metrics/sync_error.hpp"
+
+namespace cnc::metrics {
+
+namespace {
+
+AxisMetrics axis_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t a) {
+    const AxisTrace& trace = in.axes[a];
+    const AxisEdges& edges = idx.axes[a];
+    AxisMetrics am;
+    am.name = axis_label(in, a);
+    am.step_signal = trace.step.name;
+    am.dir_signal = trace.dir.name;
+    am.rising_edges = edges.rising.size();
+    am.falling_edges = edges.falling.size();
+    am.dir_changes = edges.dir_changes.size();
+    for (const int s : edges.rising_sign) am.net_steps += s;
+    if (trace.steps_per_mm > 0.0) {
+        am.travel_mm = static_cast<double>(am.rising_edges) / trace.steps_per_mm;
+        am.net_mm = static_cast<double>(am.net_steps) / trace.steps_per_mm;
+    }
+    am.unattributed_edges = idx.unattributed[a];
+    am.runs = axis_runs(in, idx, a);
+    am.pulse = summarise_runs(am.runs);
+    am.driver = check_driver_timing(trace.step, trace.dir, in.limits);
+    return am;
+}
+
+MoveMetrics move_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t m) {
+    const MoveSpec& spec = in.moves[m];
+    MoveMetrics mm;
+    mm.index = spec.index;
+    mm.line = spec.line;
+    mm.rapid = spec.rapid;
+    mm.feed_mm_per_min = spec.feed_mm_per_min;
+    mm.t_first_edge_ps = idx.move_first_edge_ps[m];
+    mm.t_last_edge_ps = idx.move_last_edge_ps[m];
+    for (std::size_t a = 0; a < idx.axes.size(); ++a) {
+        mm.steps_commanded.push_back(a < 2 ? spec.steps[a] : 0);
+        std::int64_t emitted = 0;
+        const EdgeRange r = idx.by_move[a][m];
+        for (std::size_t k = r.begin; k < r.end; ++k) emitted += idx.axes[a].rising_sign[k];
+        mm.steps_emitted.push_back(emitted);
+    }
+    return mm;
+}
+
+}  // namespace
+
+RunMetrics compute_metrics(const RunInput& in) {
+    const EdgeIndex idx = index_edges(in);
+    RunMetrics out;
+    out.with_moves = !in.moves.empty();
+    out.with_tool = !in.tool.empty();
+    out.limits = in.limits;
+    out.run_split_tolerance = in.run_split_tolerance;
+
+    const SyncResult sync = compute_sync(in, idx);
+    for (std::size_t a = 0; a < in.axes.size(); ++a) {
+        AxisMetrics am = axis_metrics(in, idx, a);
+        am.sync_max_abs_ns = sync.axis_max_abs_ns[a];
+        PulseTotals& t = out.pulse;
+        keep_max(t.jitter_std_max_ns, am.pulse.jitter_std_max_ns);
+        keep_max(t.jitter_pp_max_ns, am.pulse.jitter_pp_max_ns);
+        keep_max(t.tie_rms_max_ns, am.pulse.tie_rms_max_ns);
+        keep_max(t.tie_max_ns, am.pulse.tie_max_ns);
+        keep_max(t.tie_max_period_frac, am.pulse.tie_max_period_frac);
+        keep_worst_signed(t.rate_error_worst_pct, am.pulse.rate_error_worst_pct);
+        t.driver_violations += am.driver.total_violations();
+        out.axes.push_back(std::move(am));
+    }
+    out.pulse.sync_max_abs_ns = sync.max_abs_ns;
+
+    out.path = compute_path_accuracy(in, idx);
+    out.timing = compute_timing(in, idx);
+    out.laser = compute_laser(in, idx);
+    for (std::size_t m = 0; m < in.moves.size(); ++m) {
+        MoveMetrics mm = move_metrics(in, idx, m);
+        mm.sync_max_abs_ns = sync.move_axis_max_abs_ns[m];
+        mm.timing = std::move(out.timing.moves[m]);
+        mm.path = std::move(out.path.moves[m]);
+        out.moves.push_back(std::move(mm));
+    }
+    out.timing.moves.clear();
+    out.path.moves.clear();
+    return out;
+}
+
+}  // namespace cnc::metrics

@@ -1,0 +1,77 @@
+// The metrics of one run (DESIGN.md §4), computed the same way for every architecture and for any VCD:
+// compute_metrics() gathers the families, to_json() is the report, summary_table() is what the CLI prints.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "metrics/driver_timing.hpp"
+#include "metrics/laser.hpp"
+#include "metrics/move_timing.hpp"
+#include "metrics/path_accuracy.hpp"
+#include "metrics/pulse_runs.hpp"
+#include "metrics/run_input.hpp"
+
+namespace cnc::metrics {
+
+struct AxisMetrics {
+    std::string name;          // x, y, ...
+    std::string step_signal;   // EdgeLog names
+    std::string dir_signal;
+    std::size_t rising_edges = 0;
+    std::size_t falling_edges = 0;
+    std::size_t dir_changes = 0;
+    std::int64_t net_steps = 0;               // rising edges signed by DIR
+    std::optional<double> travel_mm, net_mm;  // steps_per_mm known
+    std::size_t unattributed_edges = 0;       // with moves: rising edges before the first move
+    std::vector<PulseRun> runs;
+    AxisPulseSummary pulse;
+    std::optional<double> sync_max_abs_ns;
+    DriverTimingReport driver;
+};
+
+struct MoveMetrics {
+    int index = 0;
+    int line = 0;
+    bool rapid = false;
+    double feed_mm_per_min = 0.0;
+    std::vector<std::int64_t> steps_commanded;  // [axis]
+    std::vector<std::int64_t> steps_emitted;    // [axis] rising edges signed by DIR
+    std::optional<TimePs> t_first_edge_ps, t_last_edge_ps;  // any axis
+    std::vector<std::optional<double>> sync_max_abs_ns;     // [axis]
+    MoveTiming timing;
+    MovePath path;
+};
+
+// Worst over all axes.
+struct PulseTotals {
+    std::optional<double> jitter_std_max_ns, jitter_pp_max_ns;
+    std::optional<double> tie_rms_max_ns, tie_max_ns, tie_max_period_frac;
+    std::optional<double> rate_error_worst_pct;
+    std::optional<double> sync_max_abs_ns;
+    std::size_t driver_violations = 0;
+};
+
+struct RunMetrics {
+    bool with_moves = false;
+    bool with_tool = false;
+    double run_split_tolerance = 0.0;  // the analyze-mode setting the runs were split with
+    std::vector<AxisMetrics> axes;
+    std::vector<MoveMetrics> moves;
+    PulseTotals pulse;
+    DriverLimits limits;
+    PathResult path;      // per-move parts moved into `moves`
+    TimingResult timing;  // per-move parts moved into `moves`
+    std::optional<LaserResult> laser;
+};
+
+// Throws std::invalid_argument on inconsistent input (edge logs, moves or tool samples out of time order).
+[[nodiscard]] RunMetrics compute_metrics(const RunInput& in);
+[[nodiscard]] nlohmann::json to_json(const RunMetrics& m);
+[[nodiscard]] std::string summary_table(const RunMetrics& m);
+
+}  // namespace cnc::metrics

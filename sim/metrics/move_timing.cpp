@@ -1,0 +1,86 @@
+#include "metrics/move_timing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "metrics/stats.hpp"
+
+namespace cnc::metrics {
+
+namespace {
+
+std::optional<double> motion_time_s(const MoveSpec& move, const EdgeIndex& idx, std::size_t m) {
+    std::optional<double> longest;
+    for (std::size_t a = 0; a < idx.axes.size(); ++a) {
+        const EdgeRange r = idx.by_move[a][m];
+        const std::size_t n = r.size();
+        if (n >= 2) {
+            const TimePs span = idx.axes[a].rising[r.end - 1] - idx.axes[a].rising[r.begin];
+            keep_max(longest, ps_to_s(span) * static_cast<double>(n) / static_cast<double>(n - 1));
+        } else if (n == 1 && a < 2 && move.rate_steps_per_s[a] > 0.0) {
+            keep_max(longest, 1.0 / move.rate_steps_per_s[a]);
+        }
+    }
+    return longest;
+}
+
+}  // namespace
+
+TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx) {
+    TimingResult out;
+    out.job_time_s = ps_to_s(in.t_job_end_ps - in.t_job_start_ps);
+    out.moves.resize(in.moves.size());
+
+    double feed_sum = 0.0;
+    double feed_abs_sum = 0.0;
+    for (std::size_t m = 0; m < in.moves.size(); ++m) {
+        const MoveSpec& move = in.moves[m];
+        MoveTiming& mt = out.moves[m];
+        mt.motion_time_s = motion_time_s(move, idx, m);
+        if (!mt.motion_time_s) continue;
+        out.motion_time_s = out.motion_time_s.value_or(0.0) + *mt.motion_time_s;
+        if (move.rapid || move.feed_mm_per_min <= 0.0 || *mt.motion_time_s <= 0.0) continue;
+        mt.achieved_feed_mm_per_min = geom::distance(move.from_mm, move.to_mm) / *mt.motion_time_s * 60.0;
+        mt.feed_error_pct = (*mt.achieved_feed_mm_per_min - move.feed_mm_per_min) / move.feed_mm_per_min * 100.0;
+        ++out.feed_moves;
+        feed_sum += *mt.feed_error_pct;
+        feed_abs_sum += std::fabs(*mt.feed_error_pct);
+        keep_max(out.feed_error_max_abs_pct, std::fabs(*mt.feed_error_pct));
+    }
+    if (out.feed_moves > 0) {
+        out.feed_error_mean_pct = feed_sum / static_cast<double>(out.feed_moves);
+        out.feed_error_mean_abs_pct = feed_abs_sum / static_cast<double>(out.feed_moves);
+    }
+
+    std::optional<std::size_t> previous;
+    TimePs dead_total_ps = 0;
+    for (std::size_t m = 0; m < in.moves.size(); ++m) {
+        if (!idx.move_first_edge_ps[m]) continue;
+        if (previous) {
+            const TimePs dead = *idx.move_first_edge_ps[m] - *idx.move_last_edge_ps[*previous];
+            out.gaps.push_back({*previous, m, dead});
+            dead_total_ps += dead;
+            keep_max(out.dead_max_ms, ps_to_s(dead) * 1e3);
+        }
+        previous = m;
+    }
+    if (!out.gaps.empty()) {
+        out.dead_total_ms = ps_to_s(dead_total_ps) * 1e3;
+        out.dead_mean_ms = *out.dead_total_ms / static_cast<double>(out.gaps.size());
+    }
+
+    std::optional<TimePs> first_edge;
+    std::optional<TimePs> last_edge;
+    for (const AxisEdges& a : idx.axes) {
+        if (a.rising.empty()) continue;
+        first_edge = first_edge ? std::min(*first_edge, a.rising.front()) : a.rising.front();
+        last_edge = last_edge ? std::max(*last_edge, a.rising.back()) : a.rising.back();
+    }
+    if (first_edge) {
+        out.lead_in_ms = ps_to_s(*first_edge - in.t_job_start_ps) * 1e3;
+        out.tail_ms = ps_to_s(in.t_job_end_ps - *last_edge) * 1e3;
+    }
+    return out;
+}
+
+}  // namespace cnc::metrics

@@ -1,0 +1,92 @@
+#include "metrics/path_accuracy.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "metrics/stats.hpp"
+
+namespace cnc::metrics {
+
+namespace {
+
+constexpr double kUmPerMm = 1000.0;
+
+bool same_point(geom::Vec2 a, geom::Vec2 b) { return a.x_mm == b.x_mm && a.y_mm == b.y_mm; }
+
+geom::Vec2 expected_position(const MoveSpec& m, TimePs t0_ps, TimePs t_ps) {
+    const double length_mm = geom::distance(m.from_mm, m.to_mm);
+    if (length_mm <= 0.0) return m.from_mm;
+    const double speed_mm_per_s = m.feed_mm_per_min / 60.0;
+    const double s_mm = std::clamp(speed_mm_per_s * ps_to_s(t_ps - t0_ps), 0.0, length_mm);
+    return m.from_mm + (m.to_mm - m.from_mm) * (s_mm / length_mm);
+}
+
+double contour_distance_mm(const std::vector<MoveSpec>& moves, std::size_t active, geom::Vec2 p) {
+    double d = moves[active].path.distance_to(p);
+    if (active > 0) d = std::min(d, moves[active - 1].path.distance_to(p));
+    if (active + 1 < moves.size()) d = std::min(d, moves[active + 1].path.distance_to(p));
+    return d;
+}
+
+}  // namespace
+
+bool same_program_segment(const MoveSpec& a, const MoveSpec& b) {
+    const geom::Segment& p = a.path;
+    const geom::Segment& q = b.path;
+    return p.is_arc == q.is_arc && same_point(p.start, q.start) && same_point(p.end, q.end) &&
+           (!p.is_arc || (same_point(p.center, q.center) && p.sweep_rad == q.sweep_rad));
+}
+
+PathResult compute_path_accuracy(const RunInput& in, const EdgeIndex& idx) {
+    PathResult out;
+    const std::vector<MoveSpec>& moves = in.moves;
+    out.moves.resize(moves.size());
+    if (moves.empty() || in.tool.empty()) return out;
+    const bool sorted = std::is_sorted(in.tool.begin(), in.tool.end(),
+                                       [](const ToolSample& a, const ToolSample& b) { return a.t_ps < b.t_ps; });
+    if (!sorted) throw std::invalid_argument("tool samples are not in time order");
+
+    const MoveTimeline timeline(moves);
+    std::vector<MaxRms> contour(moves.size());
+    std::vector<MaxRms> following(moves.size());
+    MaxRms contour_all;
+    MaxRms following_all;
+    for (const ToolSample& s : in.tool) {
+        const std::size_t m = timeline.active_at(s.t_ps).value_or(0);
+        const double c_um = contour_distance_mm(moves, m, s.pos) * kUmPerMm;
+        const TimePs t0 = idx.move_first_edge_ps[m].value_or(moves[m].t_begin_ps);
+        const double f_um = geom::distance(s.pos, expected_position(moves[m], t0, s.t_ps)) * kUmPerMm;
+        contour[m].add(c_um);
+        following[m].add(f_um);
+        contour_all.add(c_um);
+        following_all.add(f_um);
+    }
+    out.samples = in.tool.size();
+    out.contour_max_um = contour_all.max_abs();
+    out.contour_rms_um = contour_all.rms();
+    out.following_max_um = following_all.max_abs();
+    out.following_rms_um = following_all.rms();
+
+    for (std::size_t m = 0; m < moves.size(); ++m) {
+        MovePath& mp = out.moves[m];
+        mp.samples = contour[m].count();
+        mp.contour_max_um = contour[m].max_abs();
+        mp.following_max_um = following[m].max_abs();
+        mp.following_rms_um = following[m].rms();
+        const auto after_end = std::upper_bound(in.tool.begin(), in.tool.end(), moves[m].t_end_ps,
+                                                [](TimePs t, const ToolSample& s) { return t < s.t_ps; });
+        if (after_end == in.tool.begin()) continue;
+        const geom::Vec2 at_end = std::prev(after_end)->pos;
+        mp.endpoint_vs_command_um = geom::distance(at_end, moves[m].to_mm) * kUmPerMm;
+        keep_max(out.endpoint_vs_command_max_um, mp.endpoint_vs_command_um);
+        const bool segment_ends = m + 1 == moves.size() || !same_program_segment(moves[m], moves[m + 1]);
+        if (segment_ends) {
+            mp.endpoint_vs_program_um = geom::distance(at_end, moves[m].path.end) * kUmPerMm;
+            keep_max(out.endpoint_vs_program_max_um, mp.endpoint_vs_program_um);
+        }
+    }
+    out.job_end_um = geom::distance(in.tool.back().pos, moves.back().path.end) * kUmPerMm;
+    return out;
+}
+
+}  // namespace cnc::metrics

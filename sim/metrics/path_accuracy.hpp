@@ -1,0 +1,41 @@
+// Path accuracy: the tool position against the programmed path (contour error), against the move's
+// commanded end points (endpoint error) and against the programmed timed trajectory (following error).
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "metrics/edge_index.hpp"
+#include "metrics/run_input.hpp"
+
+namespace cnc::metrics {
+
+struct MovePath {
+    std::size_t samples = 0;  // tool samples attributed to the move
+    std::optional<double> contour_max_um;
+    std::optional<double> following_max_um, following_rms_um;
+    std::optional<double> endpoint_vs_command_um;  // tool at t_end vs the move's to_mm
+    std::optional<double> endpoint_vs_program_um;  // only on the last move of a programmed segment
+};
+
+struct PathResult {
+    std::vector<MovePath> moves;
+    std::size_t samples = 0;
+    std::optional<double> contour_max_um, contour_rms_um;
+    std::optional<double> following_max_um, following_rms_um;
+    std::optional<double> endpoint_vs_command_max_um, endpoint_vs_program_max_um;
+    std::optional<double> job_end_um;  // last tool sample vs the last move's programmed end
+};
+
+// Samples are attributed to moves with MoveTimeline; samples before the first move go to the first.
+// Contour error takes the nearest of the active move's path and its neighbours' (a sample near a
+// corner may be nearer the next segment). Following error runs along from_mm -> to_mm at the move's
+// F from its first step edge (t_begin if it has none), held at from_mm before and at to_mm after.
+// Rapid moves are included in every figure (their F is their own rapid feed); the per-move table
+// says which moves are rapid. Needs tool samples and moves; otherwise all figures are empty.
+[[nodiscard]] PathResult compute_path_accuracy(const RunInput& in, const EdgeIndex& idx);
+
+// True if moves i and i+1 are chords (or pieces) of the same programmed segment.
+[[nodiscard]] bool same_program_segment(const MoveSpec& a, const MoveSpec& b);
+
+}  // namespace cnc::metrics

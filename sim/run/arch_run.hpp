@@ -1,0 +1,22 @@
+// What an architecture's system hands back after its simulation: the measured traces for the metrics, and its
+// own report section (link, host, controller details) with its warnings.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "metrics/run_input.hpp"
+
+namespace cnc::sim {
+
+struct ArchRun {
+    metrics::RunInput input;
+    nlohmann::json details = nlohmann::json::object();  // architecture section of the JSON report
+    std::string details_text;                           // the same, for the summary
+    std::vector<std::string> warnings;
+    bool ok = true;
+    std::string failure;
+};
+
+}  // namespace cnc::sim

@@ -1,0 +1,22 @@
+#include "run/job.hpp"
+
+#include "host/core/steps_file.hpp"
+
+namespace cnc::sim {
+
+Job load_job(const Scenario& s) {
+    Job job;
+    if (s.job_format == JobFormat::Steps) {
+        job.segments = host::load_steps_file(s.job_path);
+        for (host::MotionSegment& seg : job.segments) {
+            seg.dx_mm = static_cast<double>(seg.steps_x) / s.machine.x.steps_per_mm();
+            seg.dy_mm = static_cast<double>(seg.steps_y) / s.machine.y.steps_per_mm();
+        }
+        return job;
+    }
+    job.program = host::interpret_file(s.job_path, s.interpreter);
+    job.segments = host::cam(*job.program, s.machine, s.cam);
+    return job;
+}
+
+}  // namespace cnc::sim

@@ -1,0 +1,50 @@
+#include "run/run.hpp"
+
+#include <sstream>
+
+#include "metrics/metrics.hpp"
+#include "run/job.hpp"
+#include "systems/fpga_uart_system.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+nlohmann::json scenario_json(const Scenario& s, const Job& job) {
+    return {{"name", s.name},
+            {"file", s.file},
+            {"architecture", s.architecture},
+            {"job", s.job_path},
+            {"seed", s.seed},
+            {"segments", job.segments.size()},
+            {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}}};
+}
+
+}  // namespace
+
+RunOutcome run_scenario(const Scenario& s) {
+    const Job job = load_job(s);
+    const ArchRun arch = run_fpga_uart(s, job);
+    const metrics::RunMetrics m = metrics::compute_metrics(arch.input);
+
+    RunOutcome out;
+    out.ok = arch.ok;
+    out.failure = arch.failure;
+    out.report = {{"scenario", scenario_json(s, job)},
+                  {"metrics", metrics::to_json(m)},
+                  {s.architecture, arch.details},
+                  {"warnings", arch.warnings},
+                  {"ok", arch.ok}};
+    if (!arch.ok) out.report["failure"] = arch.failure;
+
+    std::ostringstream text;
+    text << "cncsim run: " << s.name << " (" << s.architecture << "), job " << s.job_path << ", "
+         << job.segments.size() << " motion segments\n\n"
+         << metrics::summary_table(m) << '\n'
+         << arch.details_text;
+    for (const std::string& w : arch.warnings) text << "warning: " << w << '\n';
+    out.summary = text.str();
+    return out;
+}
+
+}  // namespace cnc::sim

@@ -1,0 +1,194 @@
+#include "scenario/key_reader.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <sstream>
+
+#include "common/bad_input.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+std::vector<std::string> split_key(const std::string& key) {
+    std::vector<std::string> parts;
+    std::stringstream ss(key);
+    std::string part;
+    while (std::getline(ss, part, '.')) parts.push_back(part);
+    return parts;
+}
+
+std::string number_text(double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
+
+std::string type_name(const toml::node& n) {
+    switch (n.type()) {
+        case toml::node_type::integer: return "integer";
+        case toml::node_type::floating_point: return "float";
+        case toml::node_type::string: return "string";
+        case toml::node_type::boolean: return "boolean";
+        case toml::node_type::table: return "table";
+        case toml::node_type::array: return "array";
+        default: return "date/time";
+    }
+}
+
+}  // namespace
+
+KeyReader::KeyReader(const toml::table& root, std::string file) : m_root(root), m_file(std::move(file)) {}
+
+const toml::node* KeyReader::find(const std::string& key) const {
+    const toml::node* node = &m_root;
+    for (const std::string& part : split_key(key)) {
+        const toml::table* t = node->as_table();
+        if (t == nullptr) return nullptr;
+        node = t->get(part);
+        if (node == nullptr) return nullptr;
+    }
+    return node;
+}
+
+bool KeyReader::has(const std::string& key) const { return find(key) != nullptr; }
+
+std::string KeyReader::where(const std::string& key) const {
+    const toml::node* n = find(key);
+    if (n != nullptr && n->source().begin.line > 0) {
+        return m_file + ":" + std::to_string(n->source().begin.line) + ": " + key;
+    }
+    return m_file + ": " + key;
+}
+
+void KeyReader::fail(const std::string& key, const std::string& what) const { throw BadInput(where(key), what); }
+
+void KeyReader::record(KeyDoc doc) {
+    const auto same = [&](const KeyDoc& d) { return d.key == doc.key; };
+    if (std::none_of(m_docs.begin(), m_docs.end(), same)) m_docs.push_back(std::move(doc));
+}
+
+double KeyReader::get_float(const std::string& key, double def, double min, double max, const std::string& doc) {
+    record({key, "float", number_text(def), number_text(min) + " .. " + number_text(max), doc});
+    const toml::node* n = find(key);
+    if (n == nullptr) return def;
+    if (!n->is_number()) fail(key, "expected a number, got " + type_name(*n));
+    const double v = n->is_integer() ? static_cast<double>(n->as_integer()->get()) : n->as_floating_point()->get();
+    if (!(v >= min && v <= max)) fail(key, number_text(v) + " is out of range (allowed " + number_text(min) +
+                                                   " .. " + number_text(max) + ")");
+    return v;
+}
+
+std::int64_t KeyReader::get_int(const std::string& key, std::int64_t def, std::int64_t min, std::int64_t max,
+                                const std::string& doc) {
+    record({key, "integer", std::to_string(def), std::to_string(min) + " .. " + std::to_string(max), doc});
+    const toml::node* n = find(key);
+    if (n == nullptr) return def;
+    if (!n->is_integer()) fail(key, "expected an integer, got " + type_name(*n));
+    const std::int64_t v = n->as_integer()->get();
+    if (v < min || v > max) fail(key, std::to_string(v) + " is out of range (allowed " + std::to_string(min) +
+                                          " .. " + std::to_string(max) + ")");
+    return v;
+}
+
+bool KeyReader::get_bool(const std::string& key, bool def, const std::string& doc) {
+    record({key, "boolean", def ? "true" : "false", "true | false", doc});
+    const toml::node* n = find(key);
+    if (n == nullptr) return def;
+    if (!n->is_boolean()) fail(key, "expected true or false, got " + type_name(*n));
+    return n->as_boolean()->get();
+}
+
+std::string KeyReader::get_string(const std::string& key, const std::string& def, const std::string& doc) {
+    record({key, "string", def.empty() ? "\"\"" : "\"" + def + "\"", "", doc});
+    const toml::node* n = find(key);
+    if (n == nullptr) return def;
+    if (!n->is_string()) fail(key, "expected a string, got " + type_name(*n));
+    return n->as_string()->get();
+}
+
+std::string KeyReader::get_choice(const std::string& key, const std::string& def,
+                                  const std::vector<std::string>& choices, const std::string& doc) {
+    std::string allowed;
+    for (const std::string& c : choices) allowed += (allowed.empty() ? "" : " | ") + c;
+    record({key, "string", "\"" + def + "\"", allowed, doc});
+    const toml::node* n = find(key);
+    if (n == nullptr) return def;
+    if (!n->is_string()) fail(key, "expected a string (" + allowed + "), got " + type_name(*n));
+    const std::string v = n->as_string()->get();
+    if (std::find(choices.begin(), choices.end(), v) == choices.end()) {
+        fail(key, "'" + v + "' is not allowed (allowed: " + allowed + ")");
+    }
+    return v;
+}
+
+void KeyReader::reject_unknown_keys() const {
+    std::function<void(const toml::table&, const std::string&)> walk = [&](const toml::table& t,
+                                                                            const std::string& prefix) {
+        for (const auto& [k, node] : t) {
+            const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+            const auto known = [&](const KeyDoc& d) { return d.key == key; };
+            const auto inside = [&](const KeyDoc& d) { return d.key.rfind(key + ".", 0) == 0; };
+            if (std::any_of(m_docs.begin(), m_docs.end(), known)) continue;
+            if (node.is_table() && std::any_of(m_docs.begin(), m_docs.end(), inside)) {
+                walk(*node.as_table(), key);
+                continue;
+            }
+            std::vector<std::string> siblings;
+            const std::string parent = prefix.empty() ? "" : prefix + ".";
+            for (const KeyDoc& d : m_docs) {
+                if (d.key.rfind(parent, 0) != 0) continue;
+                const std::string rest = d.key.substr(parent.size());
+                const std::string child = rest.substr(0, rest.find('.'));
+                if (std::find(siblings.begin(), siblings.end(), child) == siblings.end()) siblings.push_back(child);
+            }
+            std::string allowed;
+            for (const std::string& c : siblings) allowed += (allowed.empty() ? " " : ", ") + c;
+            const std::string scope = prefix.empty() ? "at the top level" : "in [" + prefix + "]";
+            const int line = node.source().begin.line;
+            throw BadInput(m_file + (line > 0 ? ":" + std::to_string(line) : "") + ": " + key,
+                           "unknown key (allowed " + scope + ":" + allowed + ")");
+        }
+    };
+    walk(m_root, "");
+}
+
+void apply_override(toml::table& root, const std::string& assignment) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0) {
+        throw BadInput("--set " + assignment, "expected key=value (e.g. link.baud=57600)");
+    }
+    const std::string key = assignment.substr(0, eq);
+    const std::string value = assignment.substr(eq + 1);
+    std::vector<std::string> parts = split_key(key);
+    toml::table* t = &root;
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+        toml::node* child = t->get(parts[i]);
+        if (child == nullptr) {
+            t->insert(parts[i], toml::table{});
+            child = t->get(parts[i]);
+        }
+        if (!child->is_table()) throw BadInput("--set " + key, "'" + parts[i] + "' is not a table");
+        t = child->as_table();
+    }
+    toml::table parsed;
+    try {
+        parsed = toml::parse("v = " + value);
+    } catch (const toml::parse_error&) {
+        t->insert_or_assign(parts.back(), value);
+        return;
+    }
+    t->insert_or_assign(parts.back(), *parsed.get("v"));
+}
+
+std::string keys_markdown(const std::vector<KeyDoc>& docs) {
+    std::ostringstream os;
+    os << "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
+    for (const KeyDoc& d : docs) {
+        os << "| `" << d.key << "` | " << d.type << " | `" << d.default_text << "` | " << d.allowed << " | " << d.doc
+           << " |\n";
+    }
+    return os.str();
+}
+
+}  // namespace cnc::sim

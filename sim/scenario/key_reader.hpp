@@ -1,0 +1,61 @@
+// Typed, documented, validated access to a scenario's TOML tables. Every getter registers its key (type,
+// default, range, unit, doc) so that one code path both validates a scenario and generates the README's
+// scenario reference; keys a scenario sets that no getter read are reported as unknown.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace cnc::sim {
+
+struct KeyDoc {
+    std::string key;      // dotted path: link.baud
+    std::string type;     // integer | float | string | boolean
+    std::string default_text;
+    std::string allowed;  // "1 .. 65535", "belt | leadscrew"
+    std::string doc;      // one line, unit included
+};
+
+class KeyReader {
+public:
+    // `file` names the scenario in messages; `root` is the whole document (after --set overrides).
+    KeyReader(const toml::table& root, std::string file);
+
+    double get_float(const std::string& key, double def, double min, double max, const std::string& doc);
+    std::int64_t get_int(const std::string& key, std::int64_t def, std::int64_t min, std::int64_t max,
+                         const std::string& doc);
+    bool get_bool(const std::string& key, bool def, const std::string& doc);
+    std::string get_string(const std::string& key, const std::string& def, const std::string& doc);
+    // A string from a fixed set of choices.
+    std::string get_choice(const std::string& key, const std::string& def, const std::vector<std::string>& choices,
+                           const std::string& doc);
+
+    // Throws BadInput naming the first key the document holds that no getter asked for.
+    void reject_unknown_keys() const;
+    // BadInput for `key` with the key's line when the document has it.
+    [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+
+    [[nodiscard]] const std::vector<KeyDoc>& docs() const { return m_docs; }
+    [[nodiscard]] bool has(const std::string& key) const;
+
+private:
+    const toml::node* find(const std::string& key) const;
+    void record(KeyDoc doc);
+    std::string where(const std::string& key) const;
+
+    const toml::table& m_root;
+    std::string m_file;
+    std::vector<KeyDoc> m_docs;
+};
+
+// Applies `--set key=value`: the value is parsed as a TOML value (42, 1.5, true, "text"); anything that is not a
+// TOML value is taken as a bare string (paths). Creates intermediate tables.
+void apply_override(toml::table& root, const std::string& assignment);
+
+// Markdown table of the keys (the README's scenario reference).
+std::string keys_markdown(const std::vector<KeyDoc>& docs);
+
+}  // namespace cnc::sim

@@ -1,0 +1,168 @@
+#include "scenario/scenario.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "common/bad_input.hpp"
+#include "common/units.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+TimePs seconds_to_ps(double s) { return static_cast<TimePs>(s * static_cast<double>(kPsPerSec) + 0.5); }
+
+void read_axis(KeyReader& r, const std::string& axis, host::AxisMachine& m) {
+    const std::string p = "machine." + axis + ".";
+    m.step_angle_deg = r.get_float(p + "step_angle_deg", m.step_angle_deg, 0.01, 90.0,
+                                   "motor full-step angle, degrees (42BYGHW208: 1.8)");
+    m.microsteps = static_cast<int>(r.get_int(p + "microsteps", m.microsteps, 1, 32,
+                                              "DRV8825 microstep mode: 1, 2, 4, 8, 16 or 32 (MODE pins)"));
+    const std::string tr = r.get_choice(p + "transmission", "belt", {"belt", "leadscrew"},
+                                        "belt and pulley, or leadscrew");
+    m.transmission = tr == "belt" ? host::Transmission::Belt : host::Transmission::Leadscrew;
+    m.pulley_teeth = static_cast<int>(r.get_int(p + "pulley_teeth", m.pulley_teeth, 1, 1000,
+                                                "pulley teeth (belt; seed 000: GT2 20T)"));
+    m.belt_pitch_mm = r.get_float(p + "belt_pitch_mm", m.belt_pitch_mm, 0.001, 100.0, "belt pitch, mm (GT2: 2.0)");
+    m.lead_mm = r.get_float(p + "lead_mm", m.lead_mm, 0.001, 1000.0, "leadscrew pitch per start, mm");
+    m.screw_starts = static_cast<int>(r.get_int(p + "screw_starts", m.screw_starts, 1, 16, "leadscrew starts"));
+    m.gear_ratio = r.get_float(p + "gear_ratio", m.gear_ratio, 0.001, 1000.0,
+                               "motor revolutions per pulley/screw revolution");
+    m.travel_mm = r.get_float(p + "travel_mm", m.travel_mm, 0.0, 1e6, "axis travel, mm (0 = unlimited)");
+    try {
+        host::validate(m, r.has(p + "microsteps") ? p + "microsteps" : p.substr(0, p.size() - 1));
+    } catch (const BadInput& e) {
+        r.fail(p.substr(0, p.size() - 1), e.what());
+    }
+}
+
+// Reads every key (registering its documentation); `base` resolves relative paths.
+Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
+    Scenario s;
+    s.file = file;
+    s.name = r.get_string("scenario.name", fs::path(file).stem().string(), "name shown in reports");
+    s.architecture = r.get_choice("scenario.architecture", "fpga-uart", {"fpga-uart"},
+                                  "controller architecture (atmega and spi-fpga: later issues)");
+    const std::string job = r.get_string("scenario.job", "",
+                                         "job file, relative to the scenario: G-code, or a seed 000 steps file");
+    const std::string format = r.get_choice("scenario.job_format", "auto", {"auto", "gcode", "steps"},
+                                            "job format; auto: .steps and .csv are steps files, the rest G-code");
+    s.seed = static_cast<std::uint64_t>(r.get_int("scenario.seed", 1, 0, INT64_MAX, "seed of every random source"));
+    s.max_sim_s = r.get_float("scenario.max_sim_s", s.max_sim_s, 0.001, 1e6,
+                              "simulated-time limit, s: a run that needs longer fails");
+    s.interpreter.start_mm.x_mm = r.get_float("scenario.start_x_mm", 0.0, -1e6, 1e6, "tool X at job start, mm");
+    s.interpreter.start_mm.y_mm = r.get_float("scenario.start_y_mm", 0.0, -1e6, 1e6, "tool Y at job start, mm");
+
+    read_axis(r, "x", s.machine.x);
+    read_axis(r, "y", s.machine.y);
+
+    s.driver.strict = r.get_bool("driver.strict", s.driver.strict,
+                                 "DRV8825 drops STEP pulses that break tWH/tWL (false: counts every rising edge)");
+
+    s.link.requested_baud = static_cast<std::uint32_t>(
+        r.get_int("link.baud", s.link.requested_baud, 300, 921'600, "baud rate the host asks the CP2102 for"));
+    s.link.ideal_baud = r.get_bool("link.ideal_baud", s.link.ideal_baud,
+                                   "line at exactly the requested rate (false: the CP2102's 24 MHz divider rate)");
+    s.link.usb_latency_ps = seconds_to_ps(1e-3 * r.get_float("link.usb_latency_ms", 1.0, 0.0, 1000.0,
+                                                              "host driver latency for received bytes, ms"));
+    s.link.usb_frame_ps = seconds_to_ps(1e-6 * r.get_float("link.usb_frame_us", 1000.0, 1.0, 100000.0,
+                                                           "USB frame interval, us (full speed: 1000)"));
+
+    s.sender.settle_ps = seconds_to_ps(r.get_float("host.settle_s", 0.3, 0.0, 60.0,
+                                                   "wait after opening the port, s (send_steps.py: 0.3)"));
+    s.sender.init_gap_ps = seconds_to_ps(r.get_float("host.init_gap_s", 0.05, 0.0, 60.0,
+                                                     "wait after the init packet, s (send_steps.py: 0.05)"));
+    s.sender.ack_timeout_ps = seconds_to_ps(r.get_float("host.ack_timeout_s", 10.0, 0.001, 1e5,
+                                                        "ACK timeout per motion packet, s (send_steps.py: 10)"));
+    s.sender.packet_processing_ps = seconds_to_ps(1e-6 * r.get_float(
+        "host.packet_processing_us", 200.0, 0.0, 1e6, "host work between an ACK and the next write, us"));
+    s.sender.write_latency_ps = seconds_to_ps(1e-6 * r.get_float(
+        "host.write_latency_us", 100.0, 0.0, 1e6, "OS latency from write() to the USB request, us"));
+    s.sender.continue_on_timeout =
+        r.get_choice("host.on_timeout", "abort", {"abort", "continue"},
+                     "after an ACK timeout: abort (the script's prompt answered N) or continue") == "continue";
+    s.numerator_from_machine =
+        r.get_choice("host.numerator", "machine", {"machine", "seed-constant"},
+                     "init packet NUMERATOR: from the machine model, or send_steps.py's constant 18750000") ==
+        "machine";
+    s.cam.chord_tolerance_mm = r.get_float("host.chord_tolerance_mm", s.cam.chord_tolerance_mm, 1e-6, 10.0,
+                                           "max distance of an arc chord from the arc, mm");
+    s.cam.feed_rounding = r.get_choice("host.feed_rounding", "round", {"round", "truncate"},
+                                       "packet feed from the dominant-axis feed") == "round"
+                              ? host::FeedRounding::Round
+                              : host::FeedRounding::Truncate;
+    s.cam.correct_rapid_feed = r.get_bool("host.correct_rapid_feed", s.cam.correct_rapid_feed,
+                                          "G0 feed reduced to the dominant axis like G1");
+    s.interpreter.rapid_feed_mm_per_min = r.get_float(
+        "host.rapid_feed_mm_per_min", s.interpreter.rapid_feed_mm_per_min, 1.0, 65535.0,
+        "feed of G0 moves, mm/min (seed 000 test log: 1200)");
+    s.interpreter.feed_unit = r.get_choice("host.feed_unit", "mm/min", {"mm/min", "mm/s"},
+                                           "unit of F in the job (seed 003 used mm/s)") == "mm/min"
+                                  ? host::FeedUnit::MmPerMinute
+                                  : host::FeedUnit::MmPerSecond;
+
+    s.fpga.clk_hz = static_cast<std::uint32_t>(
+        r.get_int("fpga.clock_hz", s.fpga.clk_hz, 1'000'000, 500'000'000, "FPGA clock, Hz (CLOCK_50)"));
+    const auto fpga_baud = r.get_int("fpga.uart_baud", 115'200, 300, 10'000'000,
+                                     "baud rate the FPGA UART was built for (bit = clock/baud cycles)");
+    s.fpga.uart_full_bit_cycles = static_cast<std::uint32_t>(s.fpga.clk_hz / fpga_baud);
+    s.fpga.uart_half_bit_cycles = s.fpga.uart_full_bit_cycles / 2;
+    s.fpga.watchdog_cycles = static_cast<std::uint32_t>(
+        r.get_float("fpga.watchdog_ms", 100.0, 0.001, 10000.0, "packet_decoder inter-byte watchdog, ms") * 1e-3 *
+        s.fpga.clk_hz);
+    s.fpga.pulse_high_cycles = static_cast<std::uint32_t>(
+        r.get_int("fpga.pulse_high_cycles", s.fpga.pulse_high_cycles, 1, 1'000'000, "STEP high time, clocks"));
+    s.fpga.dir_settle_cycles = static_cast<std::uint32_t>(
+        r.get_int("fpga.dir_settle_cycles", s.fpga.dir_settle_cycles, 1, 511, "DIR to first STEP wait, clocks"));
+    s.fpga.init_packet_wired = r.get_bool("fpga.init_packet_wired", s.fpga.init_packet_wired,
+                                          "init packet reaches step_gen (false: appendix top.v leaves it open)");
+    s.fpga.period_arithmetic = r.get_choice("fpga.period_arithmetic", "exact", {"exact", "wrap32"},
+                                            "subordinate period product: exact, or the appendix's 32-bit wrap") ==
+                                       "exact"
+                                   ? fpga::PeriodArithmetic::Exact
+                                   : fpga::PeriodArithmetic::Wrap32;
+
+    s.vcd_path = r.get_string("trace.vcd", "", "VCD file to write (relative to the working directory); empty: none");
+    s.report_path = r.get_string("trace.report", "", "JSON report to write; empty: none");
+
+    if (!job.empty()) {
+        s.job_path = (base / job).lexically_normal().string();
+        const std::string ext = fs::path(job).extension().string();
+        const bool steps = format == "steps" || (format == "auto" && (ext == ".steps" || ext == ".csv"));
+        s.job_format = steps ? JobFormat::Steps : JobFormat::GCode;
+    }
+    return s;
+}
+
+}  // namespace
+
+Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides) {
+    std::ifstream in(path);
+    if (!in) throw BadInput(path, "cannot open the scenario file");
+    std::stringstream text;
+    text << in.rdbuf();
+    toml::table root;
+    try {
+        root = toml::parse(text.str(), path);
+    } catch (const toml::parse_error& e) {
+        throw BadInput(path + ":" + std::to_string(e.source().begin.line), std::string(e.description()));
+    }
+    for (const std::string& o : overrides) apply_override(root, o);
+    KeyReader reader(root, path);
+    Scenario s = read(reader, path, fs::path(path).parent_path());
+    reader.reject_unknown_keys();
+    if (s.job_path.empty()) reader.fail("scenario.job", "missing: the job file to run is required");
+    return s;
+}
+
+std::vector<KeyDoc> scenario_keys() {
+    const toml::table empty;
+    KeyReader reader(empty, "defaults");
+    read(reader, "defaults", fs::path("."));
+    return reader.docs();
+}
+
+}  // namespace cnc::sim

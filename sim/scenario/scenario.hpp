@@ -1,0 +1,50 @@
+// A scenario: one job on one machine through one controller architecture, with every model parameter.
+// Loaded from TOML (DESIGN.md §5), overridden by --set, validated in one place (scenario.cpp).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/geometry.hpp"
+#include "fpga/core/fpga_config.hpp"
+#include "host/core/cam.hpp"
+#include "host/core/gcode.hpp"
+#include "host/core/machine.hpp"
+#include "host/sender.hpp"
+#include "mechanics/drv8825.hpp"
+#include "scenario/key_reader.hpp"
+#include "uart/cp2102.hpp"
+
+namespace cnc::sim {
+
+enum class JobFormat { GCode, Steps };
+
+struct Scenario {
+    std::string file;           // the scenario file as given
+    std::string name;
+    std::string architecture;   // fpga-uart
+    std::string job_path;       // resolved against the scenario's folder
+    JobFormat job_format = JobFormat::GCode;
+    std::uint64_t seed = 1;
+    double max_sim_s = 3600.0;
+
+    host::MachineModel machine;
+    host::InterpreterOptions interpreter;
+    host::CamOptions cam;
+    host::SenderConfig sender;
+    bool numerator_from_machine = true;
+    uart::Cp2102Config link;
+    fpga::FpgaConfig fpga;
+    mech::Drv8825Config driver;
+
+    std::string vcd_path;       // empty: no VCD
+    std::string report_path;    // empty: no JSON file
+};
+
+// Reads and validates; throws BadInput naming the file, line and key.
+Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides);
+
+// Every scenario key with its type, default, range and meaning, in reading order.
+std::vector<KeyDoc> scenario_keys();
+
+}  // namespace cnc::sim

@@ -1,0 +1,124 @@
+#include "systems/dead_time.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+
+#include "host/core/packet_codec.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+// First and last rising STEP edge of any axis inside [t0, t1].
+std::pair<TimePs, TimePs> step_span(const metrics::RunInput& run, TimePs t0, TimePs t1) {
+    TimePs first = std::numeric_limits<TimePs>::max();
+    TimePs last = -1;
+    for (const metrics::AxisTrace& axis : run.axes) {
+        for (TimePs t : axis.step.rising()) {
+            if (t < t0 || t > t1) continue;
+            first = std::min(first, t);
+            last = std::max(last, t);
+        }
+    }
+    return {first, last};
+}
+
+double mean_ms(const std::vector<GapBreakdown>& gaps, TimePs GapBreakdown::*part) {
+    if (gaps.empty()) return 0.0;
+    double sum = 0.0;
+    for (const GapBreakdown& g : gaps) sum += static_cast<double>(g.*part);
+    return sum / static_cast<double>(gaps.size()) / static_cast<double>(kPsPerMs);
+}
+
+double max_ms(const std::vector<GapBreakdown>& gaps, TimePs GapBreakdown::*part) {
+    TimePs m = 0;
+    for (const GapBreakdown& g : gaps) m = std::max(m, g.*part);
+    return static_cast<double>(m) / static_cast<double>(kPsPerMs);
+}
+
+struct Part {
+    const char* name;
+    TimePs GapBreakdown::*field;
+};
+
+constexpr Part kParts[] = {{"step_tail", &GapBreakdown::step_tail_ps},     {"ack_wire", &GapBreakdown::ack_wire_ps},
+                           {"usb_in", &GapBreakdown::usb_in_ps},           {"host", &GapBreakdown::host_ps},
+                           {"usb_out", &GapBreakdown::usb_out_ps},         {"packet_wire", &GapBreakdown::packet_wire_ps},
+                           {"fpga_setup", &GapBreakdown::fpga_setup_ps},   {"total", &GapBreakdown::total_ps}};
+
+}  // namespace
+
+DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::vector<fpga::PacketRecord>& records,
+                                      const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102) {
+    DeadTimeBreakdown d;
+    const auto& tx = cp2102.tx_log();
+    const auto& rx = cp2102.rx_log();
+    const std::size_t moves = run.moves.size();
+    for (std::size_t i = 0; i + 1 < moves && i + 1 < sent.size() && i + 1 < records.size(); ++i) {
+        const fpga::PacketRecord& done = records[i];
+        const std::size_t next_first = host::kInitPacketBytes + (i + 1) * host::kMotionPacketBytes;
+        const std::size_t next_last = next_first + host::kMotionPacketBytes - 1;
+        if (done.t_ack_start_ps < 0 || next_last >= tx.size() || sent[i + 1].t_write_ps < 0) continue;
+        const auto ack = std::find_if(rx.begin(), rx.end(), [&](const uart::Cp2102::RxByte& b) {
+            return b.t_start_bit_ps >= done.t_ack_start_ps;
+        });
+        if (ack == rx.end()) continue;
+        const auto [first_a, last_a] = step_span(run, run.moves[i].t_begin_ps, run.moves[i].t_end_ps);
+        const auto [first_b, last_b] = step_span(run, run.moves[i + 1].t_begin_ps, run.moves[i + 1].t_end_ps);
+        if (last_a < 0 || last_b < 0) continue;
+        GapBreakdown g;
+        g.after_move = static_cast<int>(i) + 1;
+        g.step_tail_ps = done.t_busy_fall_ps - last_a;
+        g.ack_wire_ps = ack->t_stop_end_ps - done.t_busy_fall_ps;
+        g.usb_in_ps = ack->t_host_visible_ps - ack->t_stop_end_ps;
+        g.host_ps = sent[i + 1].t_write_ps - ack->t_host_visible_ps;
+        g.usb_out_ps = tx[next_first].t_start_bit_ps - sent[i + 1].t_write_ps;
+        g.packet_wire_ps = tx[next_last].t_stop_end_ps - tx[next_first].t_start_bit_ps;
+        g.fpga_setup_ps = first_b - tx[next_last].t_stop_end_ps;
+        g.total_ps = first_b - last_a;
+        d.gaps.push_back(g);
+    }
+    const TimePs job = run.t_job_end_ps - run.t_job_start_ps;
+    if (job > 0) {
+        TimePs busy_to = 0;
+        TimePs busy_from = 0;
+        for (const auto& b : tx) busy_to += b.t_stop_end_ps - b.t_start_bit_ps;
+        for (const auto& b : rx) busy_from += b.t_stop_end_ps - b.t_start_bit_ps;
+        d.utilisation_to_fpga_pct = 100.0 * static_cast<double>(busy_to) / static_cast<double>(job);
+        d.utilisation_from_fpga_pct = 100.0 * static_cast<double>(busy_from) / static_cast<double>(job);
+    }
+    return d;
+}
+
+nlohmann::json to_json(const DeadTimeBreakdown& d) {
+    nlohmann::json mean = nlohmann::json::object();
+    nlohmann::json max = nlohmann::json::object();
+    for (const Part& p : kParts) {
+        mean[std::string(p.name) + "_ms"] = mean_ms(d.gaps, p.field);
+        max[std::string(p.name) + "_ms"] = max_ms(d.gaps, p.field);
+    }
+    nlohmann::json gaps = nlohmann::json::array();
+    for (const GapBreakdown& g : d.gaps) {
+        nlohmann::json row = {{"after_move", g.after_move}};
+        for (const Part& p : kParts) row[std::string(p.name) + "_us"] = static_cast<double>(g.*p.field) / kPsPerUs;
+        gaps.push_back(row);
+    }
+    return {{"gaps", d.gaps.size()}, {"mean", mean}, {"max", max}, {"per_gap", gaps}};
+}
+
+std::string summary_text(const DeadTimeBreakdown& d) {
+    std::string out = "  dead time between moves (" + std::to_string(d.gaps.size()) + " gaps), ms:   mean      max\n";
+    for (const Part& p : kParts) {
+        char line[96];
+        std::snprintf(line, sizeof line, "    %-12s %28.4f %8.4f\n", p.name, mean_ms(d.gaps, p.field),
+                      max_ms(d.gaps, p.field));
+        out += line;
+    }
+    char util[96];
+    std::snprintf(util, sizeof util, "  line utilisation: host->FPGA %.3f %%, FPGA->host %.3f %%\n",
+                  d.utilisation_to_fpga_pct, d.utilisation_from_fpga_pct);
+    return out + util;
+}
+
+}  // namespace cnc::sim

@@ -1,0 +1,39 @@
+// Where the dead time between two fpga-uart moves goes: from the last STEP of one move to the first STEP of
+// the next, split at every hand-over of the stop-and-wait loop (seed 000 §4.4). The parts add up exactly.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "fpga/core/fpga_records.hpp"
+#include "host/sender.hpp"
+#include "metrics/run_input.hpp"
+#include "uart/cp2102.hpp"
+
+namespace cnc::sim {
+
+struct GapBreakdown {
+    int after_move = 0;        // 1-based move the gap follows
+    TimePs step_tail_ps = 0;   // last STEP rise -> busy falls (rest of the last period + DONE)
+    TimePs ack_wire_ps = 0;    // busy falls -> ACK stop bit ends at the CP2102 (tx_start + 10 bits)
+    TimePs usb_in_ps = 0;      // ACK received -> the host sees it (USB frame + driver latency)
+    TimePs host_ps = 0;        // the host sees the ACK -> calls write() for the next packet (processing)
+    TimePs usb_out_ps = 0;     // write() -> the packet reaches the CP2102 (OS latency + USB frame)
+    TimePs packet_wire_ps = 0; // first start bit -> 11th stop bit (11 x 10 bits)
+    TimePs fpga_setup_ps = 0;  // last stop bit -> first STEP (uart_rx, decoder, SETUP, DIR settle)
+    TimePs total_ps = 0;       // = first STEP of the next move - last STEP of this one
+};
+
+struct DeadTimeBreakdown {
+    std::vector<GapBreakdown> gaps;
+    double utilisation_to_fpga_pct = 0.0;    // host -> FPGA line busy time over the job time
+    double utilisation_from_fpga_pct = 0.0;
+};
+
+DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::vector<fpga::PacketRecord>& records,
+                                      const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102);
+nlohmann::json to_json(const DeadTimeBreakdown& d);
+std::string summary_text(const DeadTimeBreakdown& d);
+
+}  // namespace cnc::sim

@@ -1,0 +1,244 @@
+#include "systems/fpga_uart_system.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+#include "fpga/top.hpp"
+#include "host/core/packet_codec.hpp"
+#include "host/sender.hpp"
+#include "probes/edge_recorder.hpp"
+#include "run/moves.hpp"
+#include "systems/dead_time.hpp"
+#include "systems/machine.hpp"
+#include "probes/vcd_trace.hpp"
+#include "uart/cp2102.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+// send_steps.py hard-codes NUMERATOR_X = NUMERATOR_Y = 18_750_000 (seed 000 §6).
+constexpr std::uint32_t kSeedScriptNumerator = 18'750'000;
+
+// Every wire of the system, named as the pins are in every architecture (VCD and analyze scripts rely on it).
+struct Wires {
+    sc_core::sc_signal<bool> uart_rx{"uart_rx", true};  // CP2102 TXD -> FPGA rx (GPIO_0[0]); idles high
+    sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // FPGA tx (GPIO_0[1]) -> CP2102 RXD
+    sc_core::sc_signal<bool> step_x{"step_x", false}, dir_x{"dir_x", false};
+    sc_core::sc_signal<bool> step_y{"step_y", false}, dir_y{"dir_y", false};
+    sc_core::sc_signal<bool> laser{"laser", false}, busy{"busy", false};
+    sc_core::sc_signal<bool> pkt_valid{"pkt_valid", false}, cfg_valid{"cfg_valid", false};
+    sc_core::sc_signal<bool> rx_valid{"rx_valid", false}, ack{"ack", false};
+    sc_core::sc_signal<bool> n_enbl{"n_enbl", false};   // the FPGA drives no EN pin: drivers always enabled
+};
+
+struct Packets {
+    host::InitBytes init;
+    std::vector<host::MotionBytes> motion;
+};
+
+Packets encode(const Scenario& s, const Job& job) {
+    Packets p;
+    const std::uint32_t nx =
+        s.numerator_from_machine ? host::numerator(s.machine.x.steps_per_mm(), s.fpga.clk_hz) : kSeedScriptNumerator;
+    const std::uint32_t ny =
+        s.numerator_from_machine ? host::numerator(s.machine.y.steps_per_mm(), s.fpga.clk_hz) : kSeedScriptNumerator;
+    p.init = host::encode_init(nx, ny);
+    for (const host::MotionSegment& seg : job.segments) p.motion.push_back(host::encode_motion(host::to_packet(seg)));
+    return p;
+}
+
+void trace_wires(VcdTrace& vcd, const Wires& w) {
+    for (const sc_core::sc_signal<bool>* sig : {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser, &w.busy,
+                                               &w.uart_rx, &w.uart_tx, &w.pkt_valid, &w.cfg_valid, &w.rx_valid,
+                                               &w.ack}) {
+        vcd.trace(*sig);
+    }
+}
+
+void record_wires(EdgeRecorder& rec, const Wires& w) {
+    for (const sc_core::sc_signal<bool>* sig : {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser, &w.busy}) {
+        rec.watch(*sig, sig->basename());
+    }
+}
+
+std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
+    char text[256];
+    std::snprintf(text, sizeof text, fmt, a, b, c);
+    return text;
+}
+
+// FPGA-side warnings: the period product the RTL cannot hold, packets lost while busy, line faults.
+void fpga_warnings(const fpga::Top& top, const Scenario& s, std::vector<std::string>& warnings) {
+    int n = 0;
+    for (const fpga::PacketRecord& r : top.packets()) {
+        ++n;
+        if (r.period_overflow) {
+            warnings.push_back(
+                "segment " + std::to_string(n) +
+                ": (NUMERATOR/feed) x dominant steps exceeds 32 bits; step_gen as printed in the appendix wraps it" +
+                (s.fpga.period_arithmetic == fpga::PeriodArithmetic::Wrap32
+                     ? " (fpga.period_arithmetic = wrap32: this run used the wrapped period)"
+                     : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)"));
+        }
+        if (!r.accepted) warnings.push_back("segment " + std::to_string(n) + ": arrived while step_gen was busy: lost");
+    }
+    for (const fpga::InitRecord& i : top.inits()) {
+        if (!i.applied) {
+            warnings.push_back("init packet (NUMERATOR " + std::to_string(i.num_x) + "/" + std::to_string(i.num_y) +
+                               ") did not reach step_gen" +
+                               (s.fpga.init_packet_wired ? " (step_gen was busy)"
+                                                         : " (fpga.init_packet_wired = false, as appendix top.v)"));
+        }
+    }
+    const fpga::FpgaStats st = top.stats();
+    if (st.framing_errors > 0) warnings.push_back(std::to_string(st.framing_errors) + " UART framing errors at the FPGA");
+    if (st.watchdog_resets > 0) warnings.push_back(std::to_string(st.watchdog_resets) + " packet_decoder watchdog resets");
+    if (st.acks_dropped > 0) warnings.push_back(std::to_string(st.acks_dropped) + " ACKs dropped (uart_tx busy)");
+}
+
+nlohmann::json packet_json(const fpga::PacketRecord& r) {
+    return {{"t_pkt_valid_s", ps_to_s(r.t_pkt_valid_ps)},
+            {"motion", r.motion},
+            {"steps", {r.steps_x, r.steps_y}},
+            {"feed", r.feed},
+            {"accepted", r.accepted},
+            {"period_cycles", {r.period_x_cycles, r.period_y_cycles}},
+            {"period_overflow", r.period_overflow},
+            {"t_run_start_s", ps_to_s(r.t_run_start_ps)},
+            {"t_busy_fall_s", ps_to_s(r.t_busy_fall_ps)},
+            {"t_ack_start_s", r.t_ack_start_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(r.t_ack_start_ps))}};
+}
+
+}  // namespace
+
+ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
+    const Packets packets = encode(s, job);
+
+    Wires w;
+    uart::Cp2102 cp2102("cp2102", s.link);
+    cp2102.txd(w.uart_rx);
+    cp2102.rxd(w.uart_tx);
+    host::Sender sender("host", s.sender, cp2102, packets.init, packets.motion);
+    fpga::Top fpga("fpga", s.fpga);
+    fpga.rx(w.uart_rx);
+    fpga.tx(w.uart_tx);
+    fpga.dir_x(w.dir_x);
+    fpga.step_x(w.step_x);
+    fpga.dir_y(w.dir_y);
+    fpga.step_y(w.step_y);
+    fpga.laser(w.laser);
+    fpga.busy(w.busy);
+    fpga.pkt_valid(w.pkt_valid);
+    fpga.cfg_valid(w.cfg_valid);
+    fpga.rx_valid(w.rx_valid);
+    fpga.tx_start(w.ack);
+    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);
+    machine.step_x(w.step_x);
+    machine.dir_x(w.dir_x);
+    machine.n_enbl_x(w.n_enbl);
+    machine.step_y(w.step_y);
+    machine.dir_y(w.dir_y);
+    machine.n_enbl_y(w.n_enbl);
+    machine.laser(w.laser);
+    EdgeRecorder rec("probes");
+    record_wires(rec, w);
+    std::unique_ptr<VcdTrace> vcd;
+    if (!s.vcd_path.empty()) {
+        vcd = std::make_unique<VcdTrace>(s.vcd_path);
+        trace_wires(*vcd, w);
+    }
+
+    const sc_core::sc_time limit = sc_core::sc_time::from_value(
+        static_cast<sc_dt::uint64>(s.max_sim_s * static_cast<double>(kPsPerSec)));
+    sc_core::sc_start(limit, sc_core::SC_EXIT_ON_STARVATION);
+    vcd.reset();
+
+    ArchRun run;
+    const std::vector<fpga::PacketRecord> records = fpga.packets();
+    std::vector<metrics::MoveSpec> moves = commanded_moves(job, s.machine, s.interpreter.start_mm);
+    std::size_t executed = 0;
+    for (const fpga::PacketRecord& r : records) {
+        if (!r.accepted || executed >= moves.size()) continue;
+        moves[executed].t_begin_ps = r.t_pkt_valid_ps + clock_period_ps(s.fpga);  // SETUP: busy rises
+        moves[executed].t_end_ps = r.t_busy_fall_ps;
+        ++executed;
+    }
+    moves.resize(executed);
+
+    metrics::RunInput& in = run.input;
+    in.axes = {metrics::AxisTrace{"x", rec.log("step_x"), rec.log("dir_x"), s.machine.x.steps_per_mm(), true},
+               metrics::AxisTrace{"y", rec.log("step_y"), rec.log("dir_y"), s.machine.y.steps_per_mm(), true}};
+    in.moves = moves;
+    for (const mech::ToolSample& t : machine.carriage().samples()) in.tool.push_back({t.t_ps, t.pos});
+    in.laser = rec.log("laser");
+    in.t_job_start_ps = 0;
+    in.t_job_end_ps = sender.finished() ? sender.t_end_ps() : static_cast<TimePs>(sc_core::sc_time_stamp().value());
+
+    const DeadTimeBreakdown dead = dead_time_breakdown(in, records, sender.packets(), cp2102);
+
+    fpga_warnings(fpga, s, run.warnings);
+    const fpga::FpgaStats st = fpga.stats();
+    const uart::Cp2102Baud& baud = cp2102.baud();
+    nlohmann::json pk = nlohmann::json::array();
+    for (const fpga::PacketRecord& r : records) pk.push_back(packet_json(r));
+    nlohmann::json msgs = nlohmann::json::array();
+    for (const host::SenderMessage& m : sender.messages()) msgs.push_back({{"t_s", ps_to_s(m.t_ps)}, {"text", m.text}});
+    nlohmann::json sent = nlohmann::json::array();
+    for (const host::SentPacket& p : sender.packets()) {
+        sent.push_back({{"segment", p.segment},
+                        {"t_write_s", ps_to_s(p.t_write_ps)},
+                        {"t_ack_s", p.t_ack_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(p.t_ack_ps))},
+                        {"timed_out", p.timed_out}});
+    }
+    run.details = {
+        {"link",
+         {{"requested_baud", s.link.requested_baud},
+          {"line_baud", baud.actual_bd},
+          {"line_baud_error_pct", baud.error_pct},
+          {"fpga_bit_cycles", s.fpga.uart_full_bit_cycles},
+          {"bytes_to_fpga", cp2102.tx_log().size()},
+          {"bytes_from_fpga", cp2102.rx_log().size()},
+          {"utilisation_to_fpga_pct", dead.utilisation_to_fpga_pct},
+          {"utilisation_from_fpga_pct", dead.utilisation_from_fpga_pct}}},
+        {"sender",
+         {{"packets_sent", sender.packets().size()},
+          {"errors", sender.errors()},
+          {"aborted", sender.aborted()},
+          {"finished", sender.finished()},
+          {"t_end_s", ps_to_s(sender.t_end_ps())},
+          {"messages", msgs},
+          {"packets", sent}}},
+        {"fpga",
+         {{"bytes_received", st.bytes_received},
+          {"framing_errors", st.framing_errors},
+          {"watchdog_resets", st.watchdog_resets},
+          {"acks_sent", st.acks_sent},
+          {"acks_dropped", st.acks_dropped},
+          {"packets", pk}}},
+        {"dead_time", to_json(dead)}};
+
+    std::ostringstream text;
+    text << "fpga-uart link and host\n"
+         << format("  line %.1f Bd (%+.3f %% vs requested), FPGA bit %.0f clocks\n", baud.actual_bd, baud.error_pct,
+                   s.fpga.uart_full_bit_cycles)
+         << "  packets sent " << sender.packets().size() << ", ACK timeouts " << sender.errors() << ", FPGA ACKs "
+         << st.acks_sent << " (dropped " << st.acks_dropped << ")\n"
+         << summary_text(dead);
+    for (const host::SenderMessage& m : sender.messages()) {
+        text << format("  host at %.6f s: ", ps_to_s(m.t_ps)) << m.text << '\n';
+    }
+    run.details_text = text.str();
+
+    if (sender.aborted()) {
+        run.ok = false;
+        run.failure = "ACK timeout: send_steps.py stops here (host.on_timeout = abort)";
+    } else if (!sender.finished()) {
+        run.ok = false;
+        run.failure = "the job did not finish within scenario.max_sim_s";
+    }
+    return run;
+}
+
+}  // namespace cnc::sim

@@ -1,0 +1,56 @@
+#include "systems/machine.hpp"
+
+#include "mechanics/core/drv8825_modes.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+std::unique_ptr<mech::Transmission> transmission_for(const host::AxisMachine& a) {
+    if (a.transmission == host::Transmission::Belt) {
+        return std::make_unique<mech::Belt>(a.pulley_teeth, a.belt_pitch_mm, a.gear_ratio);
+    }
+    return std::make_unique<mech::Leadscrew>(a.lead_mm, a.screw_starts, a.gear_ratio);
+}
+
+}  // namespace
+
+ModeStraps::ModeStraps(int microsteps, const std::string& axis)
+    : m0(("mode0_" + axis).c_str(), mech::mode_pins_for(microsteps).m0),
+      m1(("mode1_" + axis).c_str(), mech::mode_pins_for(microsteps).m1),
+      m2(("mode2_" + axis).c_str(), mech::mode_pins_for(microsteps).m2) {}
+
+Machine::Machine(const sc_core::sc_module_name& name, const host::MachineModel& model,
+                 const mech::Drv8825Config& driver, geom::Vec2 origin_mm)
+    : sc_module(name),
+      step_x("step_x"), dir_x("dir_x"), n_enbl_x("n_enbl_x"),
+      step_y("step_y"), dir_y("dir_y"), n_enbl_y("n_enbl_y"),
+      laser("laser"),
+      m_modes_x(model.x.microsteps, "x"),
+      m_modes_y(model.y.microsteps, "y"),
+      m_motor_x(model.x.step_angle_deg),
+      m_motor_y(model.y.step_angle_deg),
+      m_drive_x(transmission_for(model.x)),
+      m_drive_y(transmission_for(model.y)),
+      m_drv_x("drv8825_x", driver, m_motor_x),
+      m_drv_y("drv8825_y", driver, m_motor_y),
+      m_carriage("carriage", mech::CarriageConfig{{&m_drv_x.step_event(), &m_motor_x, m_drive_x.get()},
+                                                  {&m_drv_y.step_event(), &m_motor_y, m_drive_y.get()},
+                                                  origin_mm}),
+      m_head("laser_head") {
+    m_drv_x.step(step_x);
+    m_drv_x.dir(dir_x);
+    m_drv_x.n_enbl(n_enbl_x);
+    m_drv_x.m0(m_modes_x.m0);
+    m_drv_x.m1(m_modes_x.m1);
+    m_drv_x.m2(m_modes_x.m2);
+    m_drv_y.step(step_y);
+    m_drv_y.dir(dir_y);
+    m_drv_y.n_enbl(n_enbl_y);
+    m_drv_y.m0(m_modes_y.m0);
+    m_drv_y.m1(m_modes_y.m1);
+    m_drv_y.m2(m_modes_y.m2);
+    m_head.laser(laser);
+}
+
+}  // namespace cnc::sim

@@ -1,0 +1,111 @@
+// packet_decoder byte state machine, uart_rx/uart_tx cycle offsets, and the rx line history.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "fpga/core/line_history.hpp"
+#include "fpga/core/packet_decoder_core.hpp"
+#include "fpga/core/uart_timing.hpp"
+#include "uart_wave.hpp"
+
+namespace cnc::fpga {
+namespace {
+
+using Completed = PacketDecoderCore::Completed;
+
+std::vector<Completed> feed_bytes(PacketDecoderCore& d, const std::vector<std::uint8_t>& bytes) {
+    std::vector<Completed> out;
+    for (const std::uint8_t b : bytes) out.push_back(d.on_byte(b));
+    return out;
+}
+
+TEST(PacketDecoderCore, InitAndMotionPacketsComplete) {
+    PacketDecoderCore d(18'750'000);
+    const auto init = feed_bytes(d, test::init_packet(9'375'000, 1'000));
+    EXPECT_EQ(init.back(), Completed::Init);
+    EXPECT_EQ(std::count(init.begin(), init.end(), Completed::None), 8);
+    EXPECT_EQ(d.init().num_x, 9'375'000U);
+    EXPECT_EQ(d.init().num_y, 1'000U);
+    EXPECT_FALSE(d.timeout_active());
+    const auto motion = feed_bytes(d, test::motion_packet(3, -7, 123'456, 65'535));
+    EXPECT_EQ(motion.back(), Completed::Motion);
+    EXPECT_EQ(d.motion().motion, 3);
+    EXPECT_EQ(d.motion().steps_x, -7);
+    EXPECT_EQ(d.motion().steps_y, 123'456);
+    EXPECT_EQ(d.motion().feed, 65'535);
+    EXPECT_EQ(d.byte_count(), 0);
+}
+
+TEST(PacketDecoderCore, MotionUsesOnlyTheLowTwoBitsOfByteZero) {
+    PacketDecoderCore d(18'750'000);
+    feed_bytes(d, {0xFE, 0, 0, 0, 1, 0, 0, 0, 1, 0, 10});  // 0xFE (manual laser, Q2) starts a motion packet
+    EXPECT_EQ(d.motion().motion, 2);
+}
+
+TEST(PacketDecoderCore, TimeoutClearsAPartialPacketAndKeepsOutputs) {
+    PacketDecoderCore d(18'750'000);
+    feed_bytes(d, test::motion_packet(1, 5, 6, 7));
+    feed_bytes(d, {0xFF, 1, 2});
+    EXPECT_TRUE(d.timeout_active());
+    EXPECT_EQ(d.byte_count(), 3);
+    d.on_timeout();
+    EXPECT_EQ(d.byte_count(), 0);
+    EXPECT_FALSE(d.timeout_active());
+    EXPECT_EQ(d.motion().steps_y, 6);  // fields keep their last values
+    EXPECT_EQ(feed_bytes(d, test::motion_packet(0, 1, 1, 1)).back(), Completed::Motion);
+}
+
+TEST(PacketDecoderCore, WithoutTheWatchdogALeftoverByteShiftsTheNextPacket) {
+    // Seed 000 Q18: no sync marker for motion packets. 3 stale bytes + a new packet complete after 8 new bytes.
+    PacketDecoderCore d(18'750'000);
+    feed_bytes(d, {0x01, 0x00, 0x00});
+    const auto r = feed_bytes(d, test::motion_packet(1, 5, 3, 3000));
+    EXPECT_EQ(r[7], Completed::Motion);
+    EXPECT_EQ(d.motion().steps_x, 0x0000'0100);  // 00 00 | 01 00: the new motion byte lands in StepsX
+    EXPECT_EQ(d.motion().steps_y, 0x0000'0500);
+    EXPECT_EQ(d.motion().feed, 0);
+    EXPECT_EQ(d.byte_count(), 3);
+}
+
+TEST(UartTiming, ReceiverSamplesMidBitFromTheStartDetection) {
+    const UartRxTiming t{FpgaConfig{}};
+    EXPECT_EQ(t.start_check, 217);
+    EXPECT_EQ(t.bit(0), 217 + 434);
+    EXPECT_EQ(t.bit(7), 217 + 8 * 434);
+    EXPECT_EQ(t.stop, 217 + 9 * 434);  // 4123: rx_valid edge
+    EXPECT_EQ(t.idle_after_stop(), 4124);
+    EXPECT_EQ(t.idle_after_glitch(), 218);
+}
+
+TEST(UartTiming, TransmitterFrameOfTheAck) {
+    const UartTxFrame f = uart_tx_frame(0xAA, FpgaConfig{});
+    EXPECT_EQ(f.busy_rise, 1);
+    const std::vector<std::int64_t> cycles{2, 870, 1304, 1738, 2172, 2606, 3040, 3474};
+    ASSERT_EQ(f.tx_changes.size(), cycles.size());
+    for (std::size_t i = 0; i < cycles.size(); ++i) {
+        EXPECT_EQ(f.tx_changes[i].cycle, cycles[i]);
+        EXPECT_EQ(f.tx_changes[i].level, i % 2 == 1);  // 0xAA = 0,1,0,1,... LSB first after the start bit
+    }
+    EXPECT_EQ(f.busy_fall, 4341);
+    EXPECT_EQ(f.idle_from, 4342);
+}
+
+TEST(LineHistory, AnEdgeSamplesTheLevelStrictlyBeforeIt) {
+    LineHistory h(true);
+    h.add(40'000, false);
+    h.add(40'000, false);  // no change
+    h.add(50'000, true);
+    EXPECT_TRUE(h.level_before(40'000));
+    EXPECT_FALSE(h.level_before(40'001));
+    EXPECT_FALSE(h.level_before(50'000));
+    EXPECT_TRUE(h.level_before(50'001));
+    EXPECT_EQ(h.first_change_at_or_after(40'001).value(), 50'000);
+    EXPECT_FALSE(h.first_change_at_or_after(50'001).has_value());
+    h.forget_before(45'000);
+    EXPECT_FALSE(h.level_before(45'000));
+    EXPECT_TRUE(h.level_before(60'000));
+}
+
+}  // namespace
+}  // namespace cnc::fpga

@@ -1,0 +1,41 @@
+// Helpers for the host core tests: run G-code text through the interpreter and check BadInput messages.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <initializer_list>
+#include <sstream>
+#include <string>
+
+#include "common/bad_input.hpp"
+#include "host/core/gcode.hpp"
+
+namespace cnc::host::test {
+
+inline Program run_gcode(const std::string& text, const InterpreterOptions& opt = {}) {
+    std::istringstream in(text);
+    return interpret(in, "t.nc", opt);
+}
+
+// The message of the BadInput that `fn` throws ("" and a test failure if it throws none).
+inline std::string bad_input_message(const std::function<void()>& fn) {
+    try {
+        fn();
+    } catch (const BadInput& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no BadInput thrown";
+    return {};
+}
+
+// Expects BadInput whose message contains every one of `parts`.
+inline void expect_bad_input(const std::function<void()>& fn, std::initializer_list<std::string> parts) {
+    const std::string msg = bad_input_message(fn);
+    for (const std::string& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
+}
+
+inline void expect_gcode_error(const std::string& text, std::initializer_list<std::string> parts) {
+    expect_bad_input([&] { run_gcode(text); }, parts);
+}
+
+}  // namespace cnc::host::test

@@ -1,0 +1,83 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "metrics/metrics.hpp"
+#include "metrics_test_util.hpp"
+
+namespace cnc::metrics {
+namespace {
+
+using test::grid;
+using test::kFpgaClockPs;
+
+TEST(MetricsMoveTiming, FeedErrorOfTheSeedWorkedExample) {
+    // Seed 000: (0,0) -> (10,5) at F1000 on 160 steps/mm: X 1600 steps every 20,973 clocks, Y 800 every
+    // 41,946 clocks. Motion time = 1600 * 20,973 * 20 ns = 0.671136 s; 11.1803 mm in it = 999.5 mm/min.
+    const TimePs t0 = 3 * kPsPerMs;
+    RunInput in;
+    in.axes.push_back(test::axis(grid(t0, 20'973 * kFpgaClockPs, 1600), "x"));
+    in.axes.push_back(test::axis(grid(t0, 41'946 * kFpgaClockPs, 800), "y"));
+    MoveSpec move = test::line_move(0, {0, 0}, {10, 5}, 1000.0, 0, 700 * kPsPerMs);
+    move.steps = {1600, 800};
+    in.moves.push_back(move);
+    const RunMetrics m = compute_metrics(in);
+    const MoveTiming& t = m.moves[0].timing;
+    EXPECT_NEAR(*t.motion_time_s, 0.671136, 1e-12);
+    const double achieved = std::sqrt(125.0) / 0.671136 * 60.0;
+    EXPECT_NEAR(*t.achieved_feed_mm_per_min, achieved, 1e-9);
+    EXPECT_NEAR(*t.achieved_feed_mm_per_min, 999.5, 0.05);
+    EXPECT_NEAR(*t.feed_error_pct, (achieved - 1000.0) / 10.0, 1e-9);
+    EXPECT_NEAR(*t.feed_error_pct, -0.05, 0.005);
+    EXPECT_EQ(m.timing.feed_moves, 1U);
+    EXPECT_DOUBLE_EQ(*m.timing.feed_error_max_abs_pct, -*t.feed_error_pct);
+    EXPECT_DOUBLE_EQ(*m.timing.feed_error_mean_pct, *t.feed_error_pct);
+    EXPECT_NEAR(*m.timing.motion_time_s, 0.671136, 1e-12);
+    EXPECT_EQ(m.moves[0].steps_emitted, (std::vector<std::int64_t>{1600, 800}));
+}
+
+TEST(MetricsMoveTiming, SingleStepAxisUsesItsCommandedRateAndRapidsHaveNoFeedError) {
+    RunInput in;
+    in.axes.push_back(test::axis({kPsPerMs}, "x"));
+    MoveSpec move = test::line_move(0, {0, 0}, {1.0 / 160, 0}, 600.0, 0, 2 * kPsPerMs);
+    move.rate_steps_per_s = {1'600.0, 0.0};
+    move.rapid = true;
+    in.moves.push_back(move);
+    const RunMetrics m = compute_metrics(in);
+    EXPECT_NEAR(*m.moves[0].timing.motion_time_s, 1.0 / 1600.0, 1e-15);
+    EXPECT_FALSE(m.moves[0].timing.feed_error_pct.has_value());
+    EXPECT_EQ(m.timing.feed_moves, 0U);
+}
+
+TEST(MetricsMoveTiming, DeadTimeBetweenMovesAndJobTotals) {
+    // Move 0 steps at 1..10 ms, move 1 (no steps) in between, move 2 from 12.5 ms: one gap of 2.5 ms.
+    RunInput in;
+    std::vector<TimePs> x = grid(kPsPerMs, kPsPerMs, 10);
+    const std::vector<TimePs> x2 = grid(12'500 * kPsPerUs, kPsPerMs, 5);
+    x.insert(x.end(), x2.begin(), x2.end());
+    in.axes.push_back(test::axis(x, "x"));
+    in.moves.push_back(test::line_move(0, {0, 0}, {10.0 / 160, 0}, 375.0, 0, 10 * kPsPerMs));
+    in.moves.push_back(test::line_move(1, {10.0 / 160, 0}, {10.0 / 160, 0}, 375.0, 11 * kPsPerMs, 11 * kPsPerMs));
+    in.moves.push_back(test::line_move(2, {10.0 / 160, 0}, {15.0 / 160, 0}, 375.0, 12 * kPsPerMs, 20 * kPsPerMs));
+    in.t_job_start_ps = 0;
+    in.t_job_end_ps = 20 * kPsPerMs;
+    const RunMetrics m = compute_metrics(in);
+    ASSERT_EQ(m.timing.gaps.size(), 1U);
+    EXPECT_EQ(m.timing.gaps[0].after_move, 0U);
+    EXPECT_EQ(m.timing.gaps[0].before_move, 2U);
+    EXPECT_EQ(m.timing.gaps[0].dead_ps, 2'500 * kPsPerUs);
+    EXPECT_DOUBLE_EQ(*m.timing.dead_total_ms, 2.5);
+    EXPECT_DOUBLE_EQ(*m.timing.dead_mean_ms, 2.5);
+    EXPECT_DOUBLE_EQ(*m.timing.dead_max_ms, 2.5);
+    EXPECT_DOUBLE_EQ(m.timing.job_time_s, 0.020);
+    EXPECT_DOUBLE_EQ(*m.timing.lead_in_ms, 1.0);
+    EXPECT_DOUBLE_EQ(*m.timing.tail_ms, 3.5);  // last step at 16.5 ms
+    // Motion: 10 and 5 periods of 1 ms; the step-less move adds nothing.
+    EXPECT_NEAR(*m.timing.motion_time_s, 0.015, 1e-12);
+    EXPECT_FALSE(m.moves[1].timing.motion_time_s.has_value());
+    // Both stepping moves run at exactly their F (1/160 mm per ms = 375 mm/min).
+    EXPECT_NEAR(*m.timing.feed_error_mean_abs_pct, 0.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace cnc::metrics

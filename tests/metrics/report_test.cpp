@@ -1,0 +1,126 @@
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "common/bad_input.hpp"
+#include "metrics/analyze_input.hpp"
+#include "metrics/metrics.hpp"
+#include "metrics/vcd.hpp"
+#include "metrics_test_util.hpp"
+
+namespace cnc::metrics {
+namespace {
+
+using test::grid;
+
+RunMetrics seed_example_metrics() {
+    // The seed 000 worked example plus a laser that is on only while cutting.
+    const TimePs t0 = 3 * kPsPerMs;
+    RunInput in;
+    in.axes.push_back(test::axis(grid(t0, 20'973 * test::kFpgaClockPs, 1600), "x"));
+    in.axes.push_back(test::axis(grid(t0, 41'946 * test::kFpgaClockPs, 800), "y"));
+    in.axes[0].steps_per_mm = 160.0;
+    in.axes[1].steps_per_mm = 160.0;
+    MoveSpec move = test::line_move(0, {0, 0}, {10, 5}, 1000.0, 0, 700 * kPsPerMs);
+    move.steps = {1600, 800};
+    move.rate_steps_per_s = {1600.0 / 0.67082039325, 800.0 / 0.67082039325};
+    in.moves.push_back(move);
+    in.laser = EdgeLog{"laser", false, {{t0, true}, {t0 + 671 * kPsPerMs, false}}};
+    in.t_job_end_ps = 700 * kPsPerMs;
+    return compute_metrics(in);
+}
+
+TEST(MetricsReport, JsonKeysCarryUnitsAndAbsentFiguresAreNull) {
+    const nlohmann::json j = to_json(seed_example_metrics());
+    EXPECT_EQ(j["limits"]["step_high_min_ns"], 1900.0);
+    EXPECT_EQ(j["limits"]["step_rate_max_hz"], 250000.0);
+    EXPECT_TRUE(j["run_split_tolerance"].is_null());  // runs come from the moves
+    ASSERT_EQ(j["axes"].size(), 2U);
+    const nlohmann::json& x = j["axes"][0];
+    EXPECT_EQ(x["axis"], "x");
+    EXPECT_EQ(x["step_signal"], "step_x");
+    EXPECT_EQ(x["rising_edges"], 1600);
+    EXPECT_EQ(x["net_steps"], 1600);  // DIR stayed high, and high is positive
+    EXPECT_DOUBLE_EQ(x["travel_mm"].get<double>(), 10.0);
+    EXPECT_EQ(x["driver_timing"]["step_high"]["violations"], 0);
+    EXPECT_EQ(x["driver_timing"]["step_high"]["min_ns"], 2000.0);
+    EXPECT_TRUE(x["driver_timing"]["dir_setup"]["min_ns"].is_null());  // DIR never changed
+    EXPECT_EQ(x["runs"].size(), 1U);
+    EXPECT_EQ(x["runs"][0]["move"], 0);
+    EXPECT_EQ(x["runs"][0]["jitter_std_ns"], 0.0);
+    EXPECT_NEAR(x["runs"][0]["speed_mm_per_min"].get<double>(), 1600.0 / 0.671136 / 160.0 * 60.0, 1e-9);
+    ASSERT_EQ(j["moves"].size(), 1U);
+    EXPECT_NEAR(j["moves"][0]["feed_error_pct"].get<double>(), -0.047, 0.001);
+    EXPECT_EQ(j["moves"][0]["steps_commanded"], (std::vector<int>{1600, 800}));
+    EXPECT_TRUE(j["moves"][0]["contour_max_um"].is_null());  // no tool samples
+    EXPECT_TRUE(j["path"]["contour_max_um"].is_null());
+    EXPECT_EQ(j["feed"]["cutting_moves_measured"], 1);
+    EXPECT_DOUBLE_EQ(j["job"]["job_time_s"].get<double>(), 0.7);
+    EXPECT_EQ(j["job"]["dead_gaps"], 0);
+    EXPECT_NEAR(j["laser"]["on_ms"].get<double>(), 671.0, 1e-9);
+    EXPECT_EQ(j["laser"]["on_in_rapid_ms"], 0.0);
+    EXPECT_TRUE(j["laser"]["dwell_ms"].is_null());  // no tool samples
+    EXPECT_EQ(j["pulse"]["driver_violations"], 0);
+    EXPECT_NEAR(j["pulse"]["sync_max_us"].get<double>(), j["pulse"]["sync_max_ns"].get<double>() / 1000.0, 1e-12);
+}
+
+TEST(MetricsReport, SummaryTableHasOneSectionPerFamilyWithUnitsInHeads) {
+    const std::string s = summary_table(seed_example_metrics());
+    for (const char* title : {"Edges\n", "Pulse timing (one run per move and axis)\n",
+                              "Driver timing (DRV8825), total violations 0\n", "Feed (cutting moves)\n",
+                              "Job timing\n", "Laser\n"}) {
+        EXPECT_NE(s.find(title), std::string::npos) << title;
+    }
+    EXPECT_EQ(s.find("Path accuracy"), std::string::npos);  // no tool samples
+    EXPECT_NE(s.find("TIE max [ns]"), std::string::npos);
+    EXPECT_NE(s.find("feed error max abs [%]"), std::string::npos);
+    // Driver rows: axis, rule, limit, min seen, checked, violations.
+    EXPECT_NE(s.find("x     step_high      1900.0         2000.0     1600           0\n"), std::string::npos) << s;
+    EXPECT_NE(s.find("            1              -0.0470                   0.0470                  0.0470\n"),
+              std::string::npos)
+        << s;
+}
+
+TEST(MetricsAnalyze, InputFromVcdSignalsAndMissingNames) {
+    std::ostringstream vcd;
+    write_vcd(vcd, {test::step_log(grid(10'000'000, 312'500'000, 50)), EdgeLog{"dir_x", true, {}}});
+    std::istringstream in(vcd.str());
+    const auto logs = read_vcd(in, "cap.vcd");
+    const RunInput run = analyze_input(logs, "step_x", "dir_x", 160.0);
+    ASSERT_EQ(run.axes.size(), 1U);
+    EXPECT_EQ(run.axes[0].steps_per_mm, 160.0);
+    EXPECT_TRUE(run.moves.empty());
+    EXPECT_EQ(run.t_job_start_ps, 10'000'000);
+    EXPECT_EQ(run.t_job_end_ps, TimePs{10'000'000} + 49 * TimePs{312'500'000} + 2'000'000);
+    const RunMetrics m = compute_metrics(run);
+    EXPECT_EQ(m.axes[0].net_steps, 50);
+    EXPECT_DOUBLE_EQ(*m.axes[0].net_mm, 50.0 / 160.0);
+    ASSERT_EQ(m.axes[0].runs.size(), 1U);
+    EXPECT_NEAR(*m.axes[0].runs[0].speed_mm_per_min, 3200.0 / 160.0 * 60.0, 1e-9);
+    EXPECT_NE(summary_table(m).find("Pulse timing (runs split by period change)"), std::string::npos);
+    EXPECT_EQ(to_json(m)["run_split_tolerance"], 0.005);
+
+    try {
+        (void)analyze_input(logs, "step_y", "dir_x");
+        FAIL() << "missing signal accepted";
+    } catch (const BadInput& e) {
+        EXPECT_STREQ(e.what(), "--step: no 1-bit signal 'step_y' in the trace; available: dir_x, step_x");
+    }
+    EXPECT_THROW((void)analyze_input(logs, "step_x", "dir_q"), BadInput);
+    EXPECT_THROW((void)analyze_input(logs, "step_x", "dir_x", 0.0), BadInput);
+    EXPECT_EQ(analyze_input(logs, "step_x", "").axes[0].dir.edges.size(), 0U);
+}
+
+TEST(MetricsReport, OutOfOrderInputIsAProgrammingError) {
+    RunInput in;
+    in.axes.push_back(test::axis({}));
+    in.axes[0].step.edges = {{10, true}, {5, false}};
+    EXPECT_THROW((void)compute_metrics(in), std::invalid_argument);
+    RunInput moves;
+    moves.moves.push_back(test::line_move(0, {}, {}, 600.0, 10, 20));
+    moves.moves.push_back(test::line_move(1, {}, {}, 600.0, 5, 20));
+    EXPECT_THROW((void)compute_metrics(moves), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cnc::metrics

@@ -7,6 +7,7 @@
 #include <systemc>
 
 #include "common/bad_input.hpp"
+#include "metrics/analyze_input.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/vcd.hpp"
 #include "run/run.hpp"
@@ -60,6 +61,8 @@ int cmd_keys() {
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
+    // The kernel's tracing notes would only clutter stderr.
+    sc_core::sc_report_handler::set_actions("tracing timescale unit set", sc_core::SC_DO_NOTHING);
     CLI::App app{"cncsim: co-simulation of CNC / laser motion-control architectures"};
     app.require_subcommand(1);
 
@@ -100,4 +103,10 @@ int sc_main(int argc, char* argv[]) {
         std::cerr << "cncsim: internal error: " << e.what() << '\n';
         return kExitRunFailed;
     }
+}
+
+// Our own main, so that the SystemC banner can be switched off before the kernel reads the environment.
+int main(int argc, char* argv[]) {
+    setenv("SC_COPYRIGHT_MESSAGE", "DISABLE", 0);
+    return sc_core::sc_elab_and_sim(argc, argv);
 }

@@ -58,8 +58,8 @@ DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::v
     for (std::size_t i = 0; i + 1 < moves && i + 1 < sent.size() && i + 1 < records.size(); ++i) {
         const fpga::PacketRecord& done = records[i];
         const std::size_t next_first = host::kInitPacketBytes + (i + 1) * host::kMotionPacketBytes;
-        const std::size_t next_last = next_first + host::kMotionPacketBytes - 1;
-        if (done.t_ack_start_ps < 0 || next_last >= tx.size() || sent[i + 1].t_write_ps < 0) continue;
+        const fpga::PacketRecord& next = records[i + 1];
+        if (done.t_ack_start_ps < 0 || next_first >= tx.size() || sent[i + 1].t_write_ps < 0) continue;
         const auto ack = std::find_if(rx.begin(), rx.end(), [&](const uart::Cp2102::RxByte& b) {
             return b.t_start_bit_ps >= done.t_ack_start_ps;
         });
@@ -74,8 +74,8 @@ DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::v
         g.usb_in_ps = ack->t_host_visible_ps - ack->t_stop_end_ps;
         g.host_ps = sent[i + 1].t_write_ps - ack->t_host_visible_ps;
         g.usb_out_ps = tx[next_first].t_start_bit_ps - sent[i + 1].t_write_ps;
-        g.packet_wire_ps = tx[next_last].t_stop_end_ps - tx[next_first].t_start_bit_ps;
-        g.fpga_setup_ps = first_b - tx[next_last].t_stop_end_ps;
+        g.packet_wire_ps = next.t_pkt_valid_ps - tx[next_first].t_start_bit_ps;
+        g.fpga_setup_ps = first_b - next.t_pkt_valid_ps;
         g.total_ps = first_b - last_a;
         d.gaps.push_back(g);
     }

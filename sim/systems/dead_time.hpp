@@ -20,8 +20,8 @@ struct GapBreakdown {
     TimePs usb_in_ps = 0;      // ACK received -> the host sees it (USB frame + driver latency)
     TimePs host_ps = 0;        // the host sees the ACK -> calls write() for the next packet (processing)
     TimePs usb_out_ps = 0;     // write() -> the packet reaches the CP2102 (OS latency + USB frame)
-    TimePs packet_wire_ps = 0; // first start bit -> 11th stop bit (11 x 10 bits)
-    TimePs fpga_setup_ps = 0;  // last stop bit -> first STEP (uart_rx, decoder, SETUP, DIR settle)
+    TimePs packet_wire_ps = 0; // first start bit -> pkt_valid (11 frames; uart_rx takes the stop bit mid-bit)
+    TimePs fpga_setup_ps = 0;  // pkt_valid -> first STEP (SETUP, DIR settle: 203 clocks)
     TimePs total_ps = 0;       // = first STEP of the next move - last STEP of this one
 };
 

@@ -1,0 +1,128 @@
+// The event-driven SystemC top against the cycle-ticked reference: the same rx waveform must give identical
+// edge times on every output pin (and on the exported internal pulses).
+#include <gtest/gtest.h>
+
+#include "fpga_test_support.hpp"
+#include "reference_fpga.hpp"
+
+namespace cnc::fpga::test {
+namespace {
+
+// Builds the bench, runs model and reference to `last_edge` and checks the pin edges are identical.
+void compare(FpgaBench& bench, const FpgaConfig& cfg, const UartWave& wave, std::int64_t last_edge) {
+    bench.run_to_edge(last_edge);
+    const auto reference = ref::run_reference(cfg, wave.changes(), last_edge);
+    expect_same_edges(reference, bench.logs());
+    // The scenario must have moved something, or the comparison proves nothing.
+    EXPECT_GT(reference.at("step_x").edges.size(), 10U);
+}
+
+// Init, every kind of motion packet, a packet and an init while busy, a dropped ACK, glitches, a framing
+// error and a truncated packet (each cleared by the 100 ms watchdog).
+std::int64_t mixed_stream(UartWave& w) {
+    w.bytes(10 * kUs, init_packet(300'000, 200'000));
+    w.bytes(2 * kMs, motion_packet(1, 20, -10, 1000));   // X dominant: 300 / 600 cycles
+    w.bytes(4 * kMs, motion_packet(0, -7, 12, 2000));    // Y dominant at 100 cycles: STEP_Y one long pulse
+    w.bytes(6 * kMs, motion_packet(1, 0, 0, 500));       // zero length, still ACKed
+    w.bytes(8 * kMs, motion_packet(2, 15, 0, 1500));     // X only
+    w.bytes(10 * kMs, motion_packet(3, 0, -9, 1000));    // Y only, negative
+    w.bytes(12 * kMs, motion_packet(1, 4, 3, 2970));     // period 101: one low cycle between pulses
+    w.bytes(14 * kMs, motion_packet(1, 2, -1, 0));       // feed 0: both 62,500
+    TimePs t = w.bytes(18 * kMs, motion_packet(1, 3, 0, 0));  // 3.75 ms move ...
+    t = w.bytes(t, motion_packet(0, 1, 1, 1000));        // ... this one is lost, and turns the laser off
+    w.bytes(t, init_packet(150'000, 150'000));           // ... and this init is not applied
+    w.bytes(24 * kMs, motion_packet(1, 5, 5, 1000));     // still the first numerators
+    t = w.bytes(26 * kMs, motion_packet(1, 230, 0, 1500));  // N = 46,000: ends just before the next arrives
+    w.bytes(t, motion_packet(1, 0, 0, 100));             // accepted; its busy falls during the ACK: dropped
+    w.glitch(30 * kMs + 5 * kPsPerNs, 5 * kPsPerNs);     // between two edges: invisible
+    w.glitch(30'100 * kUs - 2 * kPsPerNs, 5 * kPsPerNs); // across an edge: S_START, then back to S_IDLE
+    w.glitch(30'200 * kUs, 1 * kUs);                     // shorter than HALF_BIT
+    w.bytes(31 * kMs, motion_packet(1, -3, -4, 1000));
+    const std::vector<std::uint8_t> p = motion_packet(1, 7, 7, 1000);
+    t = w.bytes(33 * kMs, {p.begin(), p.begin() + 5});
+    t = w.byte(t, p[5], false) + 10 * kUs;               // bad stop bit: byte dropped, packet incomplete
+    w.bytes(t, {p.begin() + 6, p.end()});
+    w.bytes(140 * kMs, motion_packet(1, 6, -6, 1000));   // after the watchdog
+    w.bytes(142 * kMs, {p.begin(), p.begin() + 5});      // truncated packet
+    w.bytes(250 * kMs, motion_packet(1, 1, 2, 1000));
+    return edge_of(253 * kMs);
+}
+
+void expect_mixed_stream_records(const Top& top) {
+    const FpgaStats s = top.stats();
+    EXPECT_EQ(s.framing_errors, 1U);
+    EXPECT_EQ(s.watchdog_resets, 2U);
+    EXPECT_EQ(s.acks_dropped, 1U);
+    EXPECT_EQ(s.acks_sent, 13U);
+    EXPECT_EQ(s.bytes_received, 2U * 9 + 15U * 11 + 10 + 5);
+    const auto packets = top.packets();
+    ASSERT_EQ(packets.size(), 15U);
+    for (std::size_t i = 0; i < packets.size(); ++i) EXPECT_EQ(packets[i].accepted, i != 8) << i;
+    EXPECT_EQ(packets[0].period_x_cycles, 300U);
+    EXPECT_EQ(packets[0].period_y_cycles, 600U);
+    EXPECT_EQ(packets[9].period_x_cycles, 300U);  // the init sent during a move was not latched
+    EXPECT_EQ(packets[11].t_ack_start_ps, -1);    // dropped
+    EXPECT_GT(packets[10].t_ack_start_ps, 0);
+    EXPECT_GE(packets[11].t_pkt_valid_ps, packets[10].t_busy_fall_ps);  // accepted right after the busy fall
+    ASSERT_EQ(top.inits().size(), 2U);
+    EXPECT_TRUE(top.inits()[0].applied);
+    EXPECT_FALSE(top.inits()[1].applied);
+    EXPECT_EQ(top.inits()[1].num_x, 150'000U);
+}
+
+TEST(FpgaVsReference, MixedStreamFromA50MHzSender) {
+    const FpgaConfig cfg;
+    UartWave w = sync_sender();
+    const std::int64_t last = mixed_stream(w);
+    FpgaBench bench("bench", cfg, w.changes());
+    compare(bench, cfg, w, last);
+    expect_mixed_stream_records(bench.top);
+}
+
+TEST(FpgaVsReference, MixedStreamFromTheCp2102) {
+    const FpgaConfig cfg;
+    UartWave w = cp2102_sender();
+    const std::int64_t last = mixed_stream(w);
+    FpgaBench bench("bench", cfg, w.changes());
+    compare(bench, cfg, w, last);
+    expect_mixed_stream_records(bench.top);
+}
+
+TEST(FpgaVsReference, ShortAndZeroPeriods) {
+    const FpgaConfig cfg;
+    UartWave w = cp2102_sender();
+    w.bytes(10 * kUs, init_packet(1'000, 1'000));
+    w.bytes(2 * kMs, motion_packet(1, 5, 0, 2000));   // num/feed = 0: never steps, RUN 1 cycle
+    w.bytes(4 * kMs, motion_packet(1, 4, 3, 20));     // 50 / 66 cycles: one long pulse per axis
+    w.bytes(6 * kMs, motion_packet(1, 1, 0, 1000));   // period 1, one step: STEP never rises
+    w.bytes(8 * kMs, motion_packet(1, 3, -2, 1000));  // period 1 on both axes
+    w.bytes(10 * kMs, motion_packet(1, 40, 30, 5));   // 200 / 266 cycles
+    FpgaBench bench("bench", cfg, w.changes());
+    compare(bench, cfg, w, edge_of(12 * kMs));
+    const auto packets = bench.top.packets();
+    ASSERT_EQ(packets.size(), 5U);
+    EXPECT_EQ(packets[0].period_x_cycles, 0U);
+    EXPECT_EQ(packets[0].t_busy_fall_ps - packets[0].t_pkt_valid_ps, 204 * kCyclePs);
+    EXPECT_EQ(packets[1].period_y_cycles, 66U);
+}
+
+TEST(FpgaVsReference, UnwiredInitPacketAndWrap32) {
+    FpgaConfig cfg;
+    cfg.init_packet_wired = false;
+    cfg.period_arithmetic = PeriodArithmetic::Wrap32;
+    UartWave w = cp2102_sender();
+    w.bytes(10 * kUs, init_packet(9'375'000, 9'375'000));
+    w.bytes(2 * kMs, motion_packet(1, 40, -20, 6000));  // 3,125 / 6,250 cycles with the default numerators
+    w.bytes(6 * kMs, motion_packet(0, -3, 1, 60'000));
+    FpgaBench bench("bench", cfg, w.changes());
+    compare(bench, cfg, w, edge_of(9 * kMs));
+    const auto packets = bench.top.packets();
+    ASSERT_EQ(packets.size(), 2U);
+    EXPECT_EQ(packets[0].period_x_cycles, 3'125U);
+    EXPECT_EQ(packets[0].period_y_cycles, 6'250U);
+    ASSERT_EQ(bench.top.inits().size(), 1U);
+    EXPECT_FALSE(bench.top.inits()[0].applied);
+}
+
+}  // namespace
+}  // namespace cnc::fpga::test

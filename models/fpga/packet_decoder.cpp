@@ -60,7 +60,9 @@ void PacketDecoder::on_rx_valid() {
     // timeout_cnt restarts at this byte: with no byte on edges edge+1 .. edge+TIMEOUT_CYCLES, the edge
     // edge+TIMEOUT_CYCLES sees timeout_cnt == TIMEOUT_CYCLES-1 and clears the partial packet.
     m_watchdog.cancel();
-    if (m_core.timeout_active()) m_watchdog.notify(ps(t + std::int64_t{m_cfg.watchdog_cycles} * m_period_ps - now_ps()));
+    if (m_core.timeout_active()) {
+        m_watchdog.notify(ps(t + std::int64_t{m_cfg.watchdog_cycles} * m_period_ps - now_ps()));
+    }
 }
 
 void PacketDecoder::on_watchdog() {

@@ -40,8 +40,6 @@ public:
     [[nodiscard]] const std::vector<Move>& moves() const { return m_moves; }
     // True if the FSM is IDLE at clock edge `edge` (so it would accept pkt_valid / cfg_valid there).
     [[nodiscard]] bool idle_at_edge(std::int64_t edge) const { return edge >= m_idle_from; }
-    [[nodiscard]] std::uint32_t num_x() const { return m_num_x; }
-    [[nodiscard]] std::uint32_t num_y() const { return m_num_y; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations; }
 
 private:

@@ -32,7 +32,6 @@ void UartTx::on_tx_start() {
     }
     m_writer.at(at(frame.busy_fall), [this] { tx_busy.write(false); });
     m_idle_from = s + frame.idle_from;
-    ++m_bytes_sent;
 }
 
 }  // namespace cnc::fpga

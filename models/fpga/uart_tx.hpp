@@ -18,7 +18,6 @@ public:
     sc_core::sc_out<bool> tx;
 
     UartTx(const sc_core::sc_module_name& name, const FpgaConfig& cfg);
-    [[nodiscard]] std::uint64_t bytes_sent() const { return m_bytes_sent; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations + m_writer.activations(); }
 
 private:
@@ -28,7 +27,6 @@ private:
     const TimePs m_period_ps;
     std::int64_t m_idle_from = 0;  // first edge at which the FSM is IDLE again
     TimedWriter m_writer;
-    std::uint64_t m_bytes_sent = 0;
     std::uint64_t m_activations = 0;
 };
 

@@ -1,6 +1,7 @@
 // What an architecture's system hands back after its simulation: the measured traces for the metrics, and its
 // own report section (link, host, controller details) with its warnings.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@ namespace cnc::sim {
 
 struct ArchRun {
     metrics::RunInput input;
+    std::map<std::string, EdgeLog> lines;               // other recorded pins (busy, UART lines), by name
     nlohmann::json details = nlohmann::json::object();  // architecture section of the JSON report
     std::string details_text;                           // the same, for the summary
     std::vector<std::string> warnings;

@@ -24,10 +24,12 @@ nlohmann::json scenario_json(const Scenario& s, const Job& job) {
 
 RunOutcome run_scenario(const Scenario& s) {
     const Job job = load_job(s);
-    const ArchRun arch = run_fpga_uart(s, job);
-    const metrics::RunMetrics m = metrics::compute_metrics(arch.input);
-
     RunOutcome out;
+    out.arch = run_fpga_uart(s, job);
+    out.metrics = metrics::compute_metrics(out.arch.input);
+    const ArchRun& arch = out.arch;
+    const metrics::RunMetrics& m = out.metrics;
+
     out.ok = arch.ok;
     out.failure = arch.failure;
     out.report = {{"scenario", scenario_json(s, job)},

@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "metrics/metrics.hpp"
+#include "run/arch_run.hpp"
 #include "scenario/scenario.hpp"
 
 namespace cnc::sim {
@@ -13,6 +15,8 @@ struct RunOutcome {
     std::string failure;      // why the run failed (the job did not complete as the host intended)
     std::string summary;      // the text the CLI prints
     nlohmann::json report;    // the JSON report (same numbers)
+    ArchRun arch;             // the measured traces and the architecture's own section
+    metrics::RunMetrics metrics;
 };
 
 RunOutcome run_scenario(const Scenario& scenario);

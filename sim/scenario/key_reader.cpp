@@ -185,7 +185,11 @@ std::string keys_markdown(const std::vector<KeyDoc>& docs) {
     std::ostringstream os;
     os << "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
     for (const KeyDoc& d : docs) {
-        os << "| `" << d.key << "` | " << d.type << " | `" << d.default_text << "` | " << d.allowed << " | " << d.doc
+        std::string allowed = d.allowed;
+        for (auto at = allowed.find('|'); at != std::string::npos; at = allowed.find('|', at + 2)) {
+            allowed.replace(at, 1, "\\|");  // a bare | would end the Markdown cell
+        }
+        os << "| `" << d.key << "` | " << d.type << " | `" << d.default_text << "` | " << allowed << " | " << d.doc
            << " |\n";
     }
     return os.str();

@@ -84,6 +84,9 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.sender.continue_on_timeout =
         r.get_choice("host.on_timeout", "abort", {"abort", "continue"},
                      "after an ACK timeout: abort (the script's prompt answered N) or continue") == "continue";
+    s.allow_feed_zero = r.get_bool("host.allow_feed_zero", false,
+                                   "send FeedRate 0 from a steps file as the appendix allows (step_gen then uses "
+                                   "62500 clocks per step on both axes); false: refused, as the text requires");
     s.numerator_from_machine =
         r.get_choice("host.numerator", "machine", {"machine", "seed-constant"},
                      "init packet NUMERATOR: from the machine model, or send_steps.py's constant 18750000") ==
@@ -161,7 +164,7 @@ Scenario load_scenario(const std::string& path, const std::vector<std::string>& 
 std::vector<KeyDoc> scenario_keys() {
     const toml::table empty;
     KeyReader reader(empty, "defaults");
-    read(reader, "defaults", fs::path("."));
+    read(reader, "<scenario file name>", fs::path("."));
     return reader.docs();
 }
 

@@ -33,6 +33,7 @@ struct Scenario {
     host::CamOptions cam;
     host::SenderConfig sender;
     bool numerator_from_machine = true;
+    bool allow_feed_zero = false;
     uart::Cp2102Config link;
     fpga::FpgaConfig fpga;
     mech::Drv8825Config driver;

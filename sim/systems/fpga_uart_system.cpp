@@ -58,7 +58,8 @@ void trace_wires(VcdTrace& vcd, const Wires& w) {
 }
 
 void record_wires(EdgeRecorder& rec, const Wires& w) {
-    for (const sc_core::sc_signal<bool>* sig : {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser, &w.busy}) {
+    for (const sc_core::sc_signal<bool>* sig :
+         {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser, &w.busy, &w.uart_rx, &w.uart_tx}) {
         rec.watch(*sig, sig->basename());
     }
 }
@@ -173,6 +174,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     in.moves = moves;
     for (const mech::ToolSample& t : machine.carriage().samples()) in.tool.push_back({t.t_ps, t.pos});
     in.laser = rec.log("laser");
+    for (const char* pin : {"busy", "uart_rx", "uart_tx"}) run.lines[pin] = rec.log(pin);
     in.t_job_start_ps = 0;
     in.t_job_end_ps = sender.finished() ? sender.t_end_ps() : static_cast<TimePs>(sc_core::sc_time_stamp().value());
 

@@ -106,6 +106,51 @@ TEST(FpgaVsReference, ShortAndZeroPeriods) {
     EXPECT_EQ(packets[1].period_y_cycles, 66U);
 }
 
+TEST(FpgaVsReference, PacketOnTheBusyFallEdgeIsAcceptedOneEdgeEarlierIsLost) {
+    // 50 MHz sender, back-to-back packets: pkt_valid comes 11 frames = 47,740 edges after the previous one, and
+    // busy falls 203 + N edges after it. N = 47,537 puts the second pkt_valid on the busy-fall edge, N = 47,538
+    // one edge before it.
+    const FpgaConfig cfg;
+    UartWave w = sync_sender();
+    w.bytes(10 * kUs, init_packet(6'791'000, 47'538'000));
+    TimePs t = w.bytes(2 * kMs, motion_packet(1, 7, 0, 1000));  // 7 x 6,791 = 47,537
+    w.bytes(t, motion_packet(0, 0, 0, 100));
+    t = w.bytes(6 * kMs, motion_packet(1, 0, 1, 1000));         // 1 x 47,538
+    w.bytes(t, motion_packet(0, 0, 0, 100));
+    FpgaBench bench("bench", cfg, w.changes());
+    compare(bench, cfg, w, edge_of(9 * kMs));
+    const auto packets = bench.top.packets();
+    ASSERT_EQ(packets.size(), 4U);
+    EXPECT_EQ(packets[1].t_pkt_valid_ps, packets[0].t_busy_fall_ps);
+    EXPECT_TRUE(packets[1].accepted);
+    EXPECT_EQ(packets[1].t_ack_start_ps, -1);  // its busy falls 203 edges later, during the first ACK
+    EXPECT_EQ(packets[3].t_pkt_valid_ps, packets[2].t_busy_fall_ps - kCyclePs);
+    EXPECT_FALSE(packets[3].accepted);
+    EXPECT_EQ(bench.top.stats().acks_dropped, 1U);
+}
+
+TEST(FpgaVsReference, GlitchJustBeforeAStartBitMovesTheSamplingPoints) {
+    // A 5 ns glitch across an edge puts uart_rx in S_START; the real start bit comes 100 cycles later and is
+    // still low at the HALF_BIT check, so the byte is sampled from the glitch (117 cycles into each bit) and
+    // pkt_valid comes 100 edges early.
+    const FpgaConfig cfg;
+    UartWave w = sync_sender();
+    const std::vector<std::uint8_t> p = motion_packet(1, 9, 4, 3000);
+    w.bytes(2 * kMs, {p.begin(), p.end() - 1});
+    const TimePs last_start = 3 * kMs;
+    // Sampled by edge 149,901; the start bit by edge 150,001.
+    const TimePs glitch = last_start - 99 * kCyclePs - 2 * kPsPerNs;
+    w.glitch(glitch, 5 * kPsPerNs);
+    w.byte(last_start, p.back());
+    FpgaBench bench("bench", cfg, w.changes());
+    compare(bench, cfg, w, edge_of(4 * kMs));
+    const auto packets = bench.top.packets();
+    ASSERT_EQ(packets.size(), 1U);
+    EXPECT_EQ(packets[0].feed, 3000);
+    EXPECT_EQ(packets[0].t_pkt_valid_ps / kCyclePs, first_edge_after(glitch, kCyclePs) + 2 + 4'124);
+    EXPECT_EQ(packets[0].t_pkt_valid_ps / kCyclePs, first_edge_after(last_start, kCyclePs) + 2 + 4'124 - 100);
+}
+
 TEST(FpgaVsReference, UnwiredInitPacketAndWrap32) {
     FpgaConfig cfg;
     cfg.init_packet_wired = false;

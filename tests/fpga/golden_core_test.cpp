@@ -17,7 +17,9 @@ TEST(Seed000Golden, WorkedEncodingsDecode) {
     const std::vector<std::uint8_t> motion{0x01, 0x00, 0x00, 0x01, 0x40, 0xFF, 0xFF, 0xFF, 0x60, 0x04, 0xB0};
     EXPECT_EQ(test::motion_packet(1, 320, -160, 1200), motion);
     PacketDecoderCore d(18'750'000);
-    for (std::size_t i = 0; i + 1 < motion.size(); ++i) EXPECT_EQ(d.on_byte(motion[i]), PacketDecoderCore::Completed::None);
+    for (std::size_t i = 0; i + 1 < motion.size(); ++i) {
+        EXPECT_EQ(d.on_byte(motion[i]), PacketDecoderCore::Completed::None);
+    }
     EXPECT_EQ(d.on_byte(motion.back()), PacketDecoderCore::Completed::Motion);
     EXPECT_EQ(d.motion().motion, 1);
     EXPECT_EQ(d.motion().steps_x, 320);

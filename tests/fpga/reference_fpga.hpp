@@ -77,8 +77,6 @@ public:
     void tick(bool rx);
     [[nodiscard]] std::int64_t edge() const { return m_edge; }
     [[nodiscard]] const std::map<std::string, EdgeLog>& logs() const { return m_logs; }
-    [[nodiscard]] const StepGenRegs& step_gen() const { return m_sg; }
-    [[nodiscard]] const TopRegs& top() const { return m_top; }
 
 private:
     UartRxRegs uart_rx_next(bool rx) const;

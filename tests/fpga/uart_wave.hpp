@@ -22,7 +22,6 @@ public:
     // Start-bit time of every frame sent so far.
     [[nodiscard]] const std::vector<TimePs>& frame_starts() const { return m_frame_starts; }
     [[nodiscard]] const std::vector<Edge>& changes() const { return m_changes; }
-    [[nodiscard]] TimePs frame_ps() const { return bit_boundary(0, 10); }
 
 private:
     [[nodiscard]] TimePs bit_boundary(TimePs t0, std::int64_t bit) const {

@@ -13,7 +13,7 @@ enum class PeriodArithmetic { Exact, Wrap32 };
 
 struct FpgaConfig {
     std::uint32_t clk_hz = 50'000'000;               // seed 000 §5: DE1-SoC CLOCK_50
-    std::uint32_t uart_full_bit_cycles = 434;        // seed 000 §5.1 FULL_BIT; uart_tx CLK_FREQ/BAUD_RATE = 434 (§5.2)
+    std::uint32_t uart_full_bit_cycles = 434;        // seed 000 §5.1 FULL_BIT; uart_tx CLK_FREQ/BAUD_RATE (§5.2)
     std::uint32_t uart_half_bit_cycles = 217;        // seed 000 §5.1 HALF_BIT (mid-start-bit check)
     std::uint32_t watchdog_cycles = 5'000'000;       // seed 000 §5.3 TIMEOUT_CYCLES: 100 ms inter-byte watchdog
     std::uint32_t pulse_high_cycles = 100;           // seed 000 §5.4 PULSE_HIGH: 2 us STEP high

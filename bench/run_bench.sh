@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Speed of the whole cncsim process (issue 2 target: the six-segment job >= 100x faster than real time, VCD off).
+# Usage: bench/run_bench.sh [build dir] [repetitions]. Prints one Markdown row per configuration: simulated
+# seconds per wall second and STEP edges per wall second (median of the repetitions), and peak memory.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${1:-build}
+REPS=${2:-7}
+CNCSIM=$BUILD/sim/cncsim
+OUT=$(mktemp -d)
+trap 'rm -rf "$OUT"' EXIT
+
+bench() {  # name scenario [extra args...]
+    local name=$1 scenario=$2
+    shift 2
+    local walls=() mem=0
+    for _ in $(seq "$REPS"); do
+        local t0 t1 kb
+        t0=$(date +%s%N)
+        kb=$( { /usr/bin/time -f "%M" "$CNCSIM" run "$scenario" --report "$OUT/r.json" "$@" > /dev/null; } 2>&1 | tail -1)
+        t1=$(date +%s%N)
+        walls+=($(( t1 - t0 )))
+        (( kb > mem )) && mem=$kb
+    done
+    local median
+    median=$(printf '%s\n' "${walls[@]}" | sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
+    # simulated time = the job time; STEP edges = rising + falling edges of every axis
+    local sim edges
+    sim=$(grep -o '"job_time_s": [0-9.e+-]*' "$OUT/r.json" | head -1 | awk '{print $2}')
+    edges=$(grep -o '"\(rising\|falling\)_edges": [0-9]*' "$OUT/r.json" | awk '{s += $2} END {print s}')
+    awk -v n="$name" -v w="$median" -v s="$sim" -v e="$edges" -v m="$mem" 'BEGIN {
+        ws = w / 1e9;
+        printf "| %s | %.3f | %.4f | %.0fx | %.2f M | %.1f |\n", n, s, ws, s / ws, e / ws / 1e6, m / 1024 }'
+}
+
+echo "| configuration | simulated [s] | wall [s] | sim/wall | STEP edges/s | peak RSS [MiB] |"
+echo "|---|---|---|---|---|---|"
+bench "six-segment, VCD off" scenarios/fpga-uart/six_segment.toml
+bench "six-segment, VCD on" scenarios/fpga-uart/six_segment.toml --vcd "$OUT/six.vcd"
+bench "square 20 mm, VCD off" scenarios/fpga-uart/square_20mm.toml
+bench "circle r10 (159 chords), VCD off" scenarios/fpga-uart/circle_r10.toml

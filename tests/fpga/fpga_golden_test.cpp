@@ -1,0 +1,209 @@
+// Seed 000 numbers through the event-driven SystemC top, driven by a bit-level UART waveform at 115200 Bd:
+// the worked packet, the §5.4 cycle timeline, §3.4.7, the Q3 overflow, the Q1 init wiring, and the
+// process-activation budget (the model wakes per edge, never per clock).
+#include <gtest/gtest.h>
+
+#include "fpga_test_support.hpp"
+
+namespace cnc::fpga::test {
+namespace {
+
+const std::vector<std::uint8_t> kWorkedInit{0xFF, 0x01, 0x1E, 0x1A, 0x30, 0x01, 0x1E, 0x1A, 0x30};
+const std::vector<std::uint8_t> kWorkedMotion{0x01, 0x00, 0x00, 0x01, 0x40, 0xFF, 0xFF, 0xFF, 0x60, 0x04, 0xB0};
+constexpr std::int64_t kRunCycles = 320LL * 15'625;  // N = abs_dom * period_dom = 5,000,000
+
+// rx_valid of a byte whose start bit is first seen by rx_s1 at edge e comes at e + 2 (synchroniser) + 4123;
+// the decoder registers pkt_valid one edge later.
+std::int64_t pkt_valid_edge_for_last_start_bit(TimePs t_start_bit) {
+    return first_edge_after(t_start_bit, kCyclePs) + 2 + 4'123 + 1;
+}
+
+// Samples a UART frame on a logged line at mid-bit; returns the byte, or -1 for a low stop bit.
+int decode_frame(const EdgeLog& line, TimePs t_start_bit, TimePs bit_ps) {
+    int byte = 0;
+    for (int i = 0; i < 8; ++i) {
+        if (line.level_at(t_start_bit + bit_ps * (i + 1) + bit_ps / 2)) byte |= 1 << i;
+    }
+    return line.level_at(t_start_bit + bit_ps * 9 + bit_ps / 2) ? byte : -1;
+}
+
+std::vector<std::int64_t> edges_in_cycles(const std::vector<TimePs>& times) {
+    std::vector<std::int64_t> out;
+    for (const TimePs t : times) out.push_back(t / kCyclePs);
+    return out;
+}
+
+std::vector<std::int64_t> pulse_train(std::int64_t first, std::int64_t period, std::int64_t count) {
+    std::vector<std::int64_t> out;
+    for (std::int64_t m = 0; m < count; ++m) out.push_back(first + m * period);
+    return out;
+}
+
+// The worked example end to end; `w` decides the sender clock.
+void check_worked_example(UartWave w) {
+    w.bytes(20 * kUs, kWorkedInit);
+    w.bytes(2 * kMs, kWorkedMotion);
+    const std::int64_t k = pkt_valid_edge_for_last_start_bit(w.frame_starts().back());
+    FpgaBench bench("bench", FpgaConfig{}, w.changes());
+    bench.run_to_edge(k + kRunCycles + 10'000);
+    const auto logs = bench.logs();
+
+    EXPECT_EQ(edges_in_cycles(logs.at("pkt_valid").rising()), std::vector<std::int64_t>{k});
+    // §5.4 timeline: k+1 busy, k+2 DIR and laser, k+203 first STEP, k+203+N busy falls, k+204+N tx_start.
+    EXPECT_EQ(edges_in_cycles(logs.at("busy").rising()), std::vector<std::int64_t>{k + 1});
+    EXPECT_EQ(edges_in_cycles(logs.at("busy").falling()), std::vector<std::int64_t>{k + 203 + kRunCycles});
+    EXPECT_EQ(edges_in_cycles(logs.at("dir_x").rising()), std::vector<std::int64_t>{k + 2});
+    EXPECT_TRUE(logs.at("dir_y").edges.empty());  // StepsY < 0: DIR_Y = 0, its reset level
+    EXPECT_EQ(edges_in_cycles(logs.at("step_x").rising()), pulse_train(k + 203, 15'625, 320));  // 312.5 us
+    EXPECT_EQ(edges_in_cycles(logs.at("step_x").falling()), pulse_train(k + 303, 15'625, 320));
+    EXPECT_EQ(edges_in_cycles(logs.at("step_y").rising()), pulse_train(k + 203, 31'250, 160));  // 625 us
+    EXPECT_EQ(edges_in_cycles(logs.at("step_y").falling()), pulse_train(k + 303, 31'250, 160));
+    EXPECT_EQ(logs.at("step_x").falling()[0] - logs.at("step_x").rising()[0], 2 * kPsPerUs);  // STEP high 2.000 us
+    const TimePs dir_setup_ps = logs.at("step_x").rising()[0] - logs.at("dir_x").rising()[0];
+    EXPECT_EQ(dir_setup_ps, 201 * kCyclePs);  // 4.02 us >= DIR_SETTLE 4 us
+    // laser <= engrave & busy: one clock behind busy on both edges.
+    EXPECT_EQ(edges_in_cycles(logs.at("laser").rising()), std::vector<std::int64_t>{k + 2});
+    EXPECT_EQ(edges_in_cycles(logs.at("laser").falling()), std::vector<std::int64_t>{k + 204 + kRunCycles});
+    // ACK: tx_start one edge after the busy fall, start bit two edges later, 0xAA at 434 cycles per bit.
+    const std::int64_t busy_fall = k + 203 + kRunCycles;
+    EXPECT_EQ(edges_in_cycles(logs.at("tx_start").rising()), std::vector<std::int64_t>{busy_fall + 1});
+    const std::vector<TimePs> tx_falls = logs.at("tx").falling();
+    ASSERT_FALSE(tx_falls.empty());
+    EXPECT_EQ(tx_falls[0] / kCyclePs, busy_fall + 3);
+    EXPECT_EQ(decode_frame(logs.at("tx"), tx_falls[0], 434 * kCyclePs), 0xAA);
+    EXPECT_EQ(logs.at("tx").edges.back().t_ps / kCyclePs, busy_fall + 3 + 8 * 434);  // last edge: bit 7 = 1
+
+    const auto packets = bench.top.packets();
+    ASSERT_EQ(packets.size(), 1U);
+    const PacketRecord& p = packets[0];
+    EXPECT_EQ(p.t_pkt_valid_ps, k * kCyclePs);
+    EXPECT_EQ(p.motion, 1);
+    EXPECT_EQ(p.steps_x, 320);
+    EXPECT_EQ(p.steps_y, -160);
+    EXPECT_EQ(p.feed, 1200);
+    EXPECT_TRUE(p.accepted);
+    EXPECT_EQ(p.period_x_cycles, 15'625U);
+    EXPECT_EQ(p.period_y_cycles, 31'250U);
+    EXPECT_FALSE(p.period_overflow);
+    EXPECT_EQ(p.t_run_start_ps, (k + 203) * kCyclePs);
+    EXPECT_EQ(p.t_busy_fall_ps, busy_fall * kCyclePs);
+    EXPECT_EQ(p.t_ack_start_ps, (busy_fall + 1) * kCyclePs);
+    ASSERT_EQ(bench.top.inits().size(), 1U);
+    EXPECT_EQ(bench.top.inits()[0].num_x, 18'750'000U);
+    EXPECT_TRUE(bench.top.inits()[0].applied);
+    const FpgaStats s = bench.top.stats();
+    EXPECT_EQ(s.bytes_received, 20U);
+    EXPECT_EQ(s.acks_sent, 1U);
+    EXPECT_EQ(bench.top.pkt_count(), 1);
+}
+
+TEST(FpgaGolden, WorkedExampleFrom50MHzSender) {
+    UartWave w = sync_sender();
+    // Frames start on edges: the last one at 2 ms + 10 frames = cycle 143,400, so pkt_valid is at 147,527.
+    EXPECT_EQ(pkt_valid_edge_for_last_start_bit(2 * kMs + 10 * 4'340 * kCyclePs), 147'527);
+    check_worked_example(w);
+}
+
+TEST(FpgaGolden, WorkedExampleFromTheCp2102) { check_worked_example(cp2102_sender()); }
+
+// One motion packet (after an optional init) from the 50 MHz sender, run to its end.
+struct OneMoveStimulus {
+    std::vector<Edge> rx_changes;
+    std::int64_t k = 0;  // pkt_valid edge
+};
+
+OneMoveStimulus one_move(const std::vector<std::uint8_t>& init, const std::vector<std::uint8_t>& motion) {
+    UartWave w = sync_sender();
+    if (!init.empty()) w.bytes(20 * kUs, init);
+    w.bytes(2 * kMs, motion);
+    return {w.changes(), pkt_valid_edge_for_last_start_bit(w.frame_starts().back())};
+}
+
+struct OneMove {
+    OneMoveStimulus stimulus;
+    FpgaBench bench;
+    std::int64_t k;
+    OneMove(const FpgaConfig& cfg, const std::vector<std::uint8_t>& init, const std::vector<std::uint8_t>& motion,
+            std::int64_t run_cycles)
+        : stimulus(one_move(init, motion)), bench("bench", cfg, stimulus.rx_changes), k(stimulus.k) {
+        bench.run_to_edge(k + 210 + run_cycles + 5'000);
+    }
+};
+
+TEST(FpgaGolden, Section347RunTime) {
+    constexpr std::int64_t kRun = 1600LL * 20'973;  // 33,556,800 cycles
+    OneMove m(FpgaConfig{}, {}, motion_packet(1, 1600, 800, 894), kRun);
+    const PacketRecord p = m.bench.top.packets().at(0);
+    EXPECT_EQ(p.period_x_cycles, 20'973U);
+    EXPECT_EQ(p.period_y_cycles, 41'946U);
+    EXPECT_EQ((p.t_busy_fall_ps - p.t_run_start_ps) / kCyclePs, kRun);
+    const auto logs = m.bench.logs();
+    const auto x = edges_in_cycles(logs.at("step_x").rising());
+    const auto y = edges_in_cycles(logs.at("step_y").rising());
+    ASSERT_EQ(x.size(), 1600U);
+    ASSERT_EQ(y.size(), 800U);
+    EXPECT_EQ(x.back(), m.k + 203 + 1599LL * 20'973);
+    EXPECT_EQ(y.back(), m.k + 203 + 799LL * 41'946);
+}
+
+// Q3: feed 100 mm/min, 73,600 x 36,800 steps (460 mm x 230 mm at 160 steps/mm), the whole 276 s move.
+void check_overflow_move(PeriodArithmetic arithmetic, std::uint32_t expected_period_y) {
+    constexpr std::int64_t kRun = 73'600LL * 187'500;  // 13.8e9 cycles: the product that overflows
+    FpgaConfig cfg;
+    cfg.period_arithmetic = arithmetic;
+    OneMove m(cfg, {}, motion_packet(1, 73'600, 36'800, 100), kRun);
+    const PacketRecord p = m.bench.top.packets().at(0);
+    EXPECT_TRUE(p.period_overflow);
+    EXPECT_EQ(p.period_x_cycles, 187'500U);
+    EXPECT_EQ(p.period_y_cycles, expected_period_y);
+    EXPECT_EQ(p.t_busy_fall_ps / kCyclePs, m.k + 203 + kRun);
+    const auto logs = m.bench.logs();
+    const auto x = edges_in_cycles(logs.at("step_x").rising());
+    const auto y = edges_in_cycles(logs.at("step_y").rising());
+    ASSERT_EQ(x.size(), 73'600U);
+    ASSERT_EQ(y.size(), 36'800U);
+    EXPECT_EQ(y.back(), m.k + 203 + 36'799LL * expected_period_y);
+}
+
+TEST(FpgaGolden, OverflowMoveExact) { check_overflow_move(PeriodArithmetic::Exact, 375'000); }
+
+TEST(FpgaGolden, OverflowMoveWrap32FinishesYAfter18Seconds) {
+    check_overflow_move(PeriodArithmetic::Wrap32, 24'866);  // Y done at 36,800 * 24,866 cycles = 18.3 s
+}
+
+void check_init_wiring(bool wired, std::uint32_t period_x, std::uint32_t period_y) {
+    FpgaConfig cfg;
+    cfg.init_packet_wired = wired;
+    OneMove m(cfg, init_packet(9'375'000, 9'375'000), kWorkedMotion, 320LL * period_x);
+    const PacketRecord p = m.bench.top.packets().at(0);
+    EXPECT_EQ(p.period_x_cycles, period_x);
+    EXPECT_EQ(p.period_y_cycles, period_y);
+    const auto x = edges_in_cycles(m.bench.logs().at("step_x").rising());
+    ASSERT_EQ(x.size(), 320U);
+    EXPECT_EQ(x[1] - x[0], period_x);
+    ASSERT_EQ(m.bench.top.inits().size(), 1U);
+    EXPECT_EQ(m.bench.top.inits()[0].num_x, 9'375'000U);
+    EXPECT_EQ(m.bench.top.inits()[0].applied, wired);
+}
+
+TEST(FpgaGolden, InitPacketWiredAppliesTheNumerator) { check_init_wiring(true, 7'812, 15'624); }
+
+TEST(FpgaGolden, InitPacketUnwiredLikeTheAppendixHasNoEffect) { check_init_wiring(false, 15'625, 31'250); }
+
+TEST(FpgaGolden, ProcessActivationsScaleWithEdgesNotClocks) {
+    UartWave w = sync_sender();
+    w.bytes(2 * kMs, kWorkedMotion);
+    const std::int64_t k = pkt_valid_edge_for_last_start_bit(w.frame_starts().back());
+    FpgaBench bench("bench", FpgaConfig{}, w.changes());
+    bench.run_to_edge(k);
+    const std::uint64_t before = bench.top.activations();
+    bench.run_to_edge(k + 203 + kRunCycles + 5'000);  // the move and its ACK: 5 million clocks
+    const std::uint64_t during = bench.top.activations() - before;
+    const auto logs = bench.logs();
+    const std::uint64_t step_edges = logs.at("step_x").edges.size() + logs.at("step_y").edges.size();
+    EXPECT_EQ(step_edges, 960U);
+    EXPECT_LT(during, step_edges + 50);  // 666 here: one wake-up per distinct edge time
+}
+
+}  // namespace
+}  // namespace cnc::fpga::test

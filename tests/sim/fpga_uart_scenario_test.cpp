@@ -1,0 +1,179 @@
+// Whole fpga-uart runs against the seed 000 numbers (issue checks 2 to 7).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "fpga_uart_test_util.hpp"
+#include "uart/core/line_receiver.hpp"
+
+using cnc::TimePs;
+using cnc::test::diffs;
+using cnc::test::run_shipped;
+
+namespace {
+constexpr TimePs kClockPs = 20'000;  // 50 MHz
+}
+
+// Check 2: the packet 01 00 00 01 40 FF FF FF 60 04 B0 on the real chain.
+TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
+    const auto out = run_shipped("worked_example");
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& x = out.arch.input.axes[0];
+    const auto& y = out.arch.input.axes[1];
+    const auto xr = x.step.rising();
+    const auto yr = y.step.rising();
+    ASSERT_EQ(xr.size(), 320U);
+    ASSERT_EQ(yr.size(), 160U);
+    for (TimePs d : diffs(xr)) ASSERT_EQ(d, 15'625 * kClockPs);  // 312.5 us
+    for (TimePs d : diffs(yr)) ASSERT_EQ(d, 31'250 * kClockPs);
+    EXPECT_EQ(xr.front(), yr.front());                         // both axes fire on the first RUN cycle
+    for (const auto* axis : {&x, &y}) {
+        const auto r = axis->step.rising();
+        const auto f = axis->step.falling();
+        ASSERT_EQ(r.size(), f.size());
+        for (std::size_t i = 0; i < r.size(); ++i) ASSERT_EQ(f[i] - r[i], 100 * kClockPs);  // 2.000 us high
+    }
+    // DIR: X positive (DIR=1) set in SETUP, 201 clocks (4.02 us) before the first STEP; Y negative stays 0.
+    ASSERT_EQ(x.dir.edges.size(), 1U);
+    EXPECT_TRUE(x.dir.edges[0].level);
+    EXPECT_EQ(xr.front() - x.dir.edges[0].t_ps, 201 * kClockPs);
+    EXPECT_GE(xr.front() - x.dir.edges[0].t_ps, 4 * cnc::kPsPerUs);
+    EXPECT_TRUE(y.dir.edges.empty());
+    EXPECT_FALSE(y.dir.level_at(yr.front()));
+
+    // busy and laser: the laser follows busy one clock later, and is on only while busy.
+    const auto& busy = out.arch.lines.at("busy");
+    ASSERT_EQ(busy.rising().size(), 1U);
+    ASSERT_EQ(busy.falling().size(), 1U);
+    const TimePs busy_rise = busy.rising()[0];
+    const TimePs busy_fall = busy.falling()[0];
+    const TimePs last_period_end = xr.back() + 15'625 * kClockPs;
+    EXPECT_EQ(busy_fall, last_period_end);  // DONE: the edge after the last RUN cycle (seed §5.4: k+203+N)
+    const auto& laser = *out.arch.input.laser;
+    ASSERT_EQ(laser.rising().size(), 1U);
+    ASSERT_EQ(laser.falling().size(), 1U);
+    EXPECT_EQ(laser.rising()[0], busy_rise + kClockPs);
+    EXPECT_EQ(laser.falling()[0], busy_fall + kClockPs);
+
+    // The ACK byte on the FPGA's tx line, decoded at the FPGA's 434-clock bit, after the last period.
+    const auto& tx = out.arch.lines.at("uart_tx");
+    const auto starts = tx.falling();
+    ASSERT_FALSE(starts.empty());
+    EXPECT_GT(starts.front(), last_period_end);
+    const cnc::uart::BitClock fpga_bit{434, 50'000'000};
+    const auto frame = cnc::uart::receive_frame(tx, starts.front(), fpga_bit, cnc::uart::kFormat8N1);
+    EXPECT_EQ(frame.status, cnc::uart::RxStatus::Ok);
+    EXPECT_EQ(frame.byte, 0xAA);
+    EXPECT_EQ(frame.t_stop_end_ps, starts.front() + 4'340 * kClockPs);  // 10 bits of 434 clocks: 86.8 us
+    EXPECT_EQ(tx.edges.back().t_ps, starts.front() + 8 * 434 * kClockPs);  // d7 = 1: high from bit 8 on
+    EXPECT_EQ(starts.size(), 4U);  // 0xAA LSB first: the start bit and three 1->0 data transitions: one byte
+}
+
+// Check 3: the six segments of the thesis's log: motion time from the cycle model, and the dead time parts.
+TEST(FpgaUartSixSegment, MotionTimeAndDeadTimeBreakdown) {
+    const auto out = run_shipped("six_segment");
+    ASSERT_TRUE(out.ok) << out.failure;
+    // sum of dominant steps x NUMERATOR/feed clocks: 17.171694 s (seed 000 §7.3 [derived] 17.17 s)
+    const double expected_s = (15889.0 * 15625 + 8000.0 * 23437 + 5034.0 * 15625 + 4132.0 * 23437 +
+                                6829.0 * 15625 + 6000.0 * 23437) * 20e-9;
+    ASSERT_TRUE(out.metrics.timing.motion_time_s.has_value());
+    EXPECT_NEAR(*out.metrics.timing.motion_time_s, 17.1717, 17.1717 * 1e-4);
+    EXPECT_NEAR(*out.metrics.timing.motion_time_s, expected_s, 1e-9);
+    const auto& dead = out.report.at("fpga-uart").at("dead_time");
+    EXPECT_EQ(dead.at("gaps"), 5);
+    const auto& mean = dead.at("mean");
+    // 11 frames of 10 bits at the CP2102's 115 384.6 Bd, less the half stop bit uart_rx does not wait for
+    EXPECT_NEAR(mean.at("packet_wire_ms").get<double>(), 0.955, 0.01);
+    // tx_start one clock after the busy fall, then 10 bits of 434 clocks: 86.8 us
+    EXPECT_NEAR(mean.at("ack_wire_ms").get<double>(), 0.0868, 0.0001);
+    EXPECT_GE(mean.at("usb_in_ms").get<double>(), 1.0);   // link.usb_latency_ms plus the wait for a USB frame
+    EXPECT_LE(mean.at("usb_in_ms").get<double>(), 2.0);
+    EXPECT_DOUBLE_EQ(mean.at("host_ms").get<double>(), 0.2);  // host.packet_processing_us
+    double parts = 0.0;
+    for (const char* p : {"step_tail_ms", "ack_wire_ms", "usb_in_ms", "host_ms", "usb_out_ms", "packet_wire_ms",
+                          "fpga_setup_ms"}) {
+        parts += mean.at(p).get<double>();
+    }
+    EXPECT_NEAR(parts, mean.at("total_ms").get<double>(), 1e-9);
+    EXPECT_NEAR(mean.at("total_ms").get<double>(), *out.metrics.timing.dead_mean_ms, 1e-9);
+}
+
+// Check 4: a period counter on a 50 MHz clock scores at most one clock of TIE on every constant-rate run.
+class FpgaUartTie : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FpgaUartTie, TieMaxWithinOneClock) {
+    const auto out = run_shipped(GetParam());
+    ASSERT_TRUE(out.ok) << out.failure;
+    ASSERT_TRUE(out.metrics.pulse.tie_max_ns.has_value());
+    EXPECT_LE(*out.metrics.pulse.tie_max_ns, 20.0);
+    EXPECT_GT(out.metrics.axes[0].runs.size() + out.metrics.axes[1].runs.size(), 0U);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenarios, FpgaUartTie,
+                         ::testing::Values("worked_example", "worked_347", "six_segment", "square_20mm",
+                                           "diagonal_45", "circle_r10"));
+
+// Check 5: seed 000 §3.4.7, G1 X10 Y5 F1000 from the origin at 160 steps/mm.
+TEST(FpgaUartWorked347, StepsFeedPeriodsMoveTimeAndResultantFeed) {
+    const auto out = run_shipped("worked_347");
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& p = out.report.at("fpga-uart").at("fpga").at("packets").at(0);
+    EXPECT_EQ(p.at("steps"), nlohmann::json({1600, 800}));
+    EXPECT_EQ(p.at("feed"), 894);
+    EXPECT_EQ(p.at("period_cycles"), nlohmann::json({20'973, 41'946}));
+    const auto& move = out.metrics.moves.at(0);
+    ASSERT_TRUE(move.timing.motion_time_s.has_value());
+    EXPECT_DOUBLE_EQ(*move.timing.motion_time_s, 1600.0 * 20'973 * 20e-9);  // 0.671136 s
+    EXPECT_NEAR(*move.timing.motion_time_s, 0.6711, 5e-5);
+    ASSERT_TRUE(move.timing.achieved_feed_mm_per_min.has_value());
+    EXPECT_NEAR(*move.timing.achieved_feed_mm_per_min, 999.5, 0.05);
+    EXPECT_NEAR(*move.timing.feed_error_pct, (std::sqrt(125.0) / 0.671136 * 60 / 1000 - 1) * 100, 1e-9);
+}
+
+// Check 5, second half: on the 45° diagonal the packet feed 1000/sqrt(2) = 707.1 -> 707 and the period
+// 18,750,000 / 707 = 26,520.5 -> 26,520 clocks leave a feed error the metrics must show.
+TEST(FpgaUartDiagonal, FeedErrorOfTheIntegerFeedAndTruncatedPeriod) {
+    const auto out = run_shipped("diagonal_45");
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& p = out.report.at("fpga-uart").at("fpga").at("packets").at(0);
+    EXPECT_EQ(p.at("feed"), 707);
+    EXPECT_EQ(p.at("period_cycles"), nlohmann::json({26'520, 26'520}));
+    const double time_s = 3200.0 * 26'520 * 20e-9;
+    const double achieved = std::hypot(20.0, 20.0) / time_s * 60.0;
+    const auto& move = out.metrics.moves.at(0);
+    EXPECT_NEAR(*move.timing.achieved_feed_mm_per_min, achieved, 1e-6);
+    EXPECT_NEAR(*move.timing.feed_error_pct, (achieved / 1000.0 - 1.0) * 100.0, 1e-6);
+    EXPECT_LT(*move.timing.feed_error_pct, 0.0);  // 707 < 707.1: slower than programmed
+}
+
+// Check 6: the circle's contour error stays within the chord tolerance plus one step.
+TEST(FpgaUartCircle, ContourErrorWithinChordTolerancePlusOneStep) {
+    const auto out = run_shipped("circle_r10");
+    ASSERT_TRUE(out.ok) << out.failure;
+    ASSERT_TRUE(out.metrics.path.contour_max_um.has_value());
+    ASSERT_TRUE(out.metrics.path.contour_rms_um.has_value());
+    EXPECT_LE(*out.metrics.path.contour_max_um, 2.0 + 6.25);
+    EXPECT_GT(*out.metrics.path.contour_rms_um, 0.0);
+    EXPECT_LT(*out.metrics.path.contour_rms_um, *out.metrics.path.contour_max_um);
+    EXPECT_GT(out.metrics.moves.size(), 100U);  // the circle went as chords
+}
+
+// Check 7: a 12 s move against send_steps.py's 10 s ACK timeout.
+TEST(FpgaUartLongMove, SeedFaithfulSenderReportsAckTimeout) {
+    const auto out = run_shipped("long_move_timeout");
+    EXPECT_FALSE(out.ok);
+    const auto& sender = out.report.at("fpga-uart").at("sender");
+    EXPECT_EQ(sender.at("errors"), 1);
+    EXPECT_TRUE(sender.at("aborted").get<bool>());
+    const auto& sent = sender.at("packets").at(0);
+    EXPECT_TRUE(sent.at("timed_out").get<bool>());
+    const auto& msg = sender.at("messages").at(0);
+    EXPECT_EQ(msg.at("text"), "[ERROR] seg 1: no ACK within 10.0 s");
+    // the deadline starts when write() returns (after host.write_latency_us)
+    EXPECT_NEAR(msg.at("t_s").get<double>(), sent.at("t_write_s").get<double>() + 100e-6 + 10.0, 1e-9);
+    // the FPGA still finishes the 12 s move and sends its ACK, which nobody reads
+    const auto& fpga = out.report.at("fpga-uart").at("fpga");
+    EXPECT_EQ(fpga.at("acks_sent"), 1);
+    EXPECT_NEAR(*out.metrics.moves.at(0).timing.motion_time_s, 16'000 * 37'500 * 20e-9, 1e-9);  // F500: 12 s
+}

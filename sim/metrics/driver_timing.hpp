@@ -7,16 +7,12 @@
 
 #include "common/edge_log.hpp"
 #include "common/units.hpp"
+#include "mechanics/core/drv8825_timing.hpp"
 
 namespace cnc::metrics {
 
-struct DriverLimits {
-    TimePs step_high_min_ps = 1'900'000;  // DRV8825 t_WH(STEP) >= 1.9 us
-    TimePs step_low_min_ps = 1'900'000;   // DRV8825 t_WL(STEP) >= 1.9 us
-    TimePs dir_setup_min_ps = 650'000;    // DRV8825 t_SU (DIR before STEP rising) >= 650 ns
-    TimePs dir_hold_min_ps = 650'000;     // DRV8825 t_H (DIR kept after STEP rising) >= 650 ns
-    double step_rate_max_hz = 250'000;    // DRV8825 f_STEP <= 250 kHz
-};
+// The limits are the DRV8825 model's own (one definition of the data-sheet numbers).
+using DriverLimits = mech::DriverLimits;
 
 enum class DriverRule : std::size_t { StepHigh, StepLow, DirSetup, DirHold, Rate };
 inline constexpr std::size_t kDriverRuleCount = 5;
@@ -44,8 +40,9 @@ struct DriverTimingReport {
 // Limit as a time: the rate limit is the shortest allowed interval between rising edges (4 us at 250 kHz).
 [[nodiscard]] double rule_limit_ns(DriverRule rule, const DriverLimits& limits);
 
-// A DIR change at the very instant of a STEP rising edge is a setup violation of 0 ps for that step
-// (the driver may latch either direction); it is not also counted as a hold violation.
+// Runs the DRV8825 model's checker (mech::Drv8825TimingChecker) over the recorded edges, so a trace is judged
+// exactly as the simulated driver judged it. A DIR change at the very instant of a STEP rising edge is a
+// setup violation of 0 ps for that step (the driver may latch either direction), not also a hold violation.
 [[nodiscard]] DriverTimingReport check_driver_timing(const EdgeLog& step, const EdgeLog& dir,
                                                      const DriverLimits& limits);
 

@@ -61,6 +61,7 @@ TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
     const auto starts = tx.falling();
     ASSERT_FALSE(starts.empty());
     EXPECT_GT(starts.front(), last_period_end);
+    EXPECT_EQ(starts.front(), busy_fall + 3 * kClockPs);  // top: tx_start +1, uart_tx: busy +2, start bit +3
     const cnc::uart::BitClock fpga_bit{434, 50'000'000};
     const auto frame = cnc::uart::receive_frame(tx, starts.front(), fpga_bit, cnc::uart::kFormat8N1);
     EXPECT_EQ(frame.status, cnc::uart::RxStatus::Ok);

@@ -1,8 +1,11 @@
 #include "host/core/cam.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "common/bad_input.hpp"
 
@@ -43,23 +46,146 @@ void check_int32(std::int64_t steps, const std::string& where, const char* name)
     }
 }
 
-// Chord end points of an arc, ON the arc; the last is the programmed end point. A line is one "chord".
-std::vector<geom::Vec2> chord_ends(const geom::Segment& path, double tolerance_mm, const std::string& where) {
-    if (!path.is_arc) return {path.end};
-    const std::int64_t n = chord_count(path.radius_mm(), path.sweep_rad, tolerance_mm);
-    if (n > kMaxChordsPerArc) {
-        throw BadInput(where, "arc needs " + std::to_string(n) + " chords at a chord tolerance of " +
-                                  number_text(tolerance_mm) + " mm (at most 1000000)");
+struct StepPos {
+    std::int64_t x = 0;
+    std::int64_t y = 0;
+};
+
+// The machine's step grid: absolute step positions and machine mm, each axis with its own steps/mm.
+struct StepGrid {
+    double spm_x;
+    double spm_y;
+
+    [[nodiscard]] geom::Vec2 mm(std::int64_t x, std::int64_t y) const {
+        return {static_cast<double>(x) / spm_x, static_cast<double>(y) / spm_y};
     }
-    const double r = path.radius_mm();
-    const double a0 = std::atan2(path.start.y_mm - path.center.y_mm, path.start.x_mm - path.center.x_mm);
-    std::vector<geom::Vec2> ends;
-    ends.reserve(static_cast<std::size_t>(n));
-    for (std::int64_t k = 1; k < n; ++k) {
-        const double a = a0 + path.sweep_rad * static_cast<double>(k) / static_cast<double>(n);
-        ends.push_back(path.center + geom::Vec2{std::cos(a) * r, std::sin(a) * r});
+    [[nodiscard]] StepPos round(geom::Vec2 p, const std::string& where) const {
+        return {absolute_steps(p.x_mm, spm_x, where, "X"), absolute_steps(p.y_mm, spm_y, where, "Y")};
     }
-    ends.push_back(path.end);
+};
+
+// Largest angle a chord may span with its sagitta within tolerance_mm.
+double max_chord_rad(double radius_mm, double tolerance_mm) {
+    // Sagitta of a chord spanning angle a: R (1 - cos(a/2)) <= tol  <=>  a <= 2 acos(1 - tol/R)
+    // = 4 asin(sqrt(tol / 2R)) (same value, no cancellation for R >> tol). The sagitta formula holds up to
+    // a = pi (sagitta R), so when tol >= R each chord spans at most half a turn.
+    return tolerance_mm >= radius_mm ? kPi : 4.0 * std::asin(std::sqrt(tolerance_mm / (2.0 * radius_mm)));
+}
+
+// An arc's chording: the inscribed polygon of n chords of equal angle (seed 000 §3.4).
+struct ArcChords {
+    geom::Vec2 center;
+    double r_mm;
+    double a0_rad;     // angle of the start point about the centre
+    double sweep_rad;  // signed, as geom::Segment
+    std::int64_t n;
+
+    // Angle travelled from the start to ideal end k (0..n), in the arc's direction.
+    [[nodiscard]] double ideal_rad(std::int64_t k) const {
+        return std::fabs(sweep_rad) * static_cast<double>(k) / static_cast<double>(n);
+    }
+    [[nodiscard]] geom::Vec2 ideal_end(std::int64_t k) const {
+        const double a = a0_rad + sweep_rad * static_cast<double>(k) / static_cast<double>(n);
+        return center + geom::Vec2{std::cos(a) * r_mm, std::sin(a) * r_mm};
+    }
+    // Angle travelled from the start to p, in the arc's direction; of the values 2 pi apart, the one nearest
+    // near_rad. NaN for the centre, which has no angle (so it is never "in order").
+    [[nodiscard]] double travelled_rad(geom::Vec2 p, double near_rad) const {
+        const geom::Vec2 d = p - center;
+        if (d.x_mm == 0.0 && d.y_mm == 0.0) return std::nan("");
+        const double dir = sweep_rad < 0.0 ? -1.0 : 1.0;
+        return near_rad + dir * std::remainder(std::atan2(d.y_mm, d.x_mm) - (a0_rad + dir * near_rad), 2.0 * kPi);
+    }
+};
+
+// ChordEnds::OnArc search window per axis (see CamOptions::chord_ends): 5 % of the longest chord's arc
+// length, so that snapping changes a chord's span by ~10 % at most, and at most 3 steps, which already
+// offers ~7 grid points along the arc to choose from.
+int window_steps(double longest_chord_mm, double steps_per_mm) {
+    return static_cast<int>(std::min(3.0, std::floor(0.05 * longest_chord_mm * steps_per_mm)));
+}
+
+// Candidate steps on one axis: the floor and ceiling of the ideal position when w is 0, else the rounded
+// position +-w.
+std::pair<std::int64_t, std::int64_t> candidate_steps(double pos_mm, double steps_per_mm, int w,
+                                                      const std::string& where, const char* axis) {
+    const std::int64_t rounded = absolute_steps(pos_mm, steps_per_mm, where, axis);  // checks the 2^53 range
+    if (w > 0) return {rounded - w, rounded + w};
+    const double steps = pos_mm * steps_per_mm;
+    return {static_cast<std::int64_t>(std::floor(steps)), static_cast<std::int64_t>(std::ceil(steps))};
+}
+
+struct SnappedEnd {
+    StepPos pos;
+    double travelled_rad;
+    double residual_mm;  // |distance to centre - R|
+    double offset_mm;    // distance to the ideal end
+};
+
+// Residuals or offsets closer than 1 pm count as equal, so that floating-point noise does not decide
+// between mirror-image candidates.
+constexpr double kTieMm = 1e-9;
+
+// ChordEnds::OnArc: the grid point for interior end k, strictly between after_rad and before_rad in the
+// arc's direction (none if no candidate lies there).
+std::optional<SnappedEnd> snap_end(const ArcChords& arc, std::int64_t k, double after_rad, double before_rad,
+                                   const StepGrid& grid, int w_x, int w_y, const std::string& where) {
+    const geom::Vec2 ideal = arc.ideal_end(k);
+    const auto [x_lo, x_hi] = candidate_steps(ideal.x_mm, grid.spm_x, w_x, where, "X");
+    const auto [y_lo, y_hi] = candidate_steps(ideal.y_mm, grid.spm_y, w_y, where, "Y");
+    std::optional<SnappedEnd> best;
+    for (std::int64_t x = x_lo; x <= x_hi; ++x) {
+        for (std::int64_t y = y_lo; y <= y_hi; ++y) {
+            const geom::Vec2 p = grid.mm(x, y);
+            const double travelled = arc.travelled_rad(p, arc.ideal_rad(k));
+            if (!(travelled > after_rad && travelled < before_rad)) continue;
+            const SnappedEnd c{{x, y}, travelled, std::fabs(geom::distance(p, arc.center) - arc.r_mm),
+                               geom::distance(p, ideal)};
+            const bool better = !best || c.residual_mm < best->residual_mm - kTieMm ||
+                                (c.residual_mm <= best->residual_mm + kTieMm && c.offset_mm < best->offset_mm - kTieMm);
+            if (better) best = c;  // scanning X then Y upwards: on a full tie the smaller X, then Y, stays
+        }
+    }
+    return best;
+}
+
+// Chord end points of a move in absolute steps, starting from the machine's position `from`; the last is the
+// programmed end point. A line is one "chord".
+std::vector<StepPos> chord_ends(const geom::Segment& path, StepPos from, const StepGrid& grid, const CamOptions& opt,
+                                const std::string& where) {
+    const StepPos end = grid.round(path.end, where);
+    if (!path.is_arc) return {end};
+    const bool on_arc = opt.chord_ends == ChordEnds::OnArc;
+    const double count_tolerance_mm = on_arc ? kOnArcSagittaShare * opt.chord_tolerance_mm : opt.chord_tolerance_mm;
+    const ArcChords arc{path.center, path.radius_mm(),
+                        std::atan2(path.start.y_mm - path.center.y_mm, path.start.x_mm - path.center.x_mm),
+                        path.sweep_rad, chord_count(path.radius_mm(), path.sweep_rad, count_tolerance_mm)};
+    if (arc.n > kMaxChordsPerArc) {
+        throw BadInput(where, "arc needs " + std::to_string(arc.n) + " chords at a chord tolerance of " +
+                                  number_text(opt.chord_tolerance_mm) + " mm (at most 1000000)");
+    }
+    std::vector<StepPos> ends;
+    ends.reserve(static_cast<std::size_t>(arc.n));
+    if (!on_arc) {
+        for (std::int64_t k = 1; k < arc.n; ++k) ends.push_back(grid.round(arc.ideal_end(k), where));
+        ends.push_back(end);
+        return ends;
+    }
+    const double longest_chord_mm = max_chord_rad(arc.r_mm, count_tolerance_mm) * arc.r_mm;
+    const int w_x = window_steps(longest_chord_mm, grid.spm_x);
+    const int w_y = window_steps(longest_chord_mm, grid.spm_y);
+    const double start_rad = arc.travelled_rad(grid.mm(from.x, from.y), 0.0);
+    double after_rad = std::isnan(start_rad) ? 0.0 : start_rad;
+    // The end point is fixed, so the last interior end must come before it, not before the ideal end.
+    const double end_rad = arc.travelled_rad(grid.mm(end.x, end.y), arc.ideal_rad(arc.n));
+    for (std::int64_t k = 1; k < arc.n; ++k) {
+        const double before_rad = k + 1 < arc.n ? arc.ideal_rad(k + 1) : end_rad;
+        if (const auto s = snap_end(arc, k, after_rad, before_rad, grid, w_x, w_y, where)) {
+            ends.push_back(s->pos);
+            after_rad = s->travelled_rad;
+        }
+    }
+    ends.push_back(end);
     return ends;
 }
 
@@ -89,11 +215,7 @@ std::int64_t packet_feed(const ProgrammedMove& move, const MotionSegment& seg, c
 }  // namespace
 
 std::int64_t chord_count(double radius_mm, double sweep_rad, double tolerance_mm) {
-    // Sagitta of a chord spanning angle a: R (1 - cos(a/2)) <= tol  <=>  a <= 2 acos(1 - tol/R)
-    // = 4 asin(sqrt(tol / 2R)) (same value, no cancellation for R >> tol). The sagitta formula holds up to
-    // a = pi (sagitta R), so when tol >= R each chord spans at most half a turn.
-    const double max_chord_rad = tolerance_mm >= radius_mm ? kPi : 4.0 * std::asin(std::sqrt(tolerance_mm / (2.0 * radius_mm)));
-    const double n = std::ceil(std::fabs(sweep_rad) / max_chord_rad);
+    const double n = std::ceil(std::fabs(sweep_rad) / max_chord_rad(radius_mm, tolerance_mm));
     return n < 1.0 ? 1 : (n > 9.0e18 ? INT64_MAX : static_cast<std::int64_t>(n));
 }
 
@@ -102,23 +224,19 @@ std::vector<MotionSegment> cam(const Program& program, const MachineModel& machi
     if (!(std::isfinite(opt.chord_tolerance_mm) && opt.chord_tolerance_mm > 0.0)) {
         throw BadInput("cam", "chord_tolerance_mm must be > 0");
     }
-    const double spm_x = machine.x.steps_per_mm();
-    const double spm_y = machine.y.steps_per_mm();
+    const StepGrid grid{machine.x.steps_per_mm(), machine.y.steps_per_mm()};
     std::vector<MotionSegment> segments;
     if (program.moves.empty()) return segments;
 
     const std::string file_where = program.filename + ":" + std::to_string(program.moves.front().line);
-    std::int64_t cur_x = absolute_steps(program.moves.front().path.start.x_mm, spm_x, file_where, "X");
-    std::int64_t cur_y = absolute_steps(program.moves.front().path.start.y_mm, spm_y, file_where, "Y");
+    StepPos cur = grid.round(program.moves.front().path.start, file_where);
     for (std::size_t m = 0; m < program.moves.size(); ++m) {
         const ProgrammedMove& move = program.moves[m];
         const std::string where = program.filename + ":" + std::to_string(move.line);
-        for (const geom::Vec2& p : chord_ends(move.path, opt.chord_tolerance_mm, where)) {
-            const std::int64_t x = absolute_steps(p.x_mm, spm_x, where, "X");
-            const std::int64_t y = absolute_steps(p.y_mm, spm_y, where, "Y");
+        for (const StepPos& p : chord_ends(move.path, cur, grid, opt, where)) {
             MotionSegment seg;
-            seg.steps_x = x - cur_x;
-            seg.steps_y = y - cur_y;
+            seg.steps_x = p.x - cur.x;
+            seg.steps_y = p.y - cur.y;
             if (seg.steps_x == 0 && seg.steps_y == 0) continue;  // the next chord carries the remainder
             check_int32(seg.steps_x, where, "steps_x");
             check_int32(seg.steps_y, where, "steps_y");
@@ -127,12 +245,11 @@ std::vector<MotionSegment> cam(const Program& program, const MachineModel& machi
             seg.path_feed_mm_per_min = move.feed_mm_per_min;
             seg.move = static_cast<int>(m);
             seg.line = move.line;
-            seg.dx_mm = static_cast<double>(seg.steps_x) / spm_x;
-            seg.dy_mm = static_cast<double>(seg.steps_y) / spm_y;
+            seg.dx_mm = static_cast<double>(seg.steps_x) / grid.spm_x;
+            seg.dy_mm = static_cast<double>(seg.steps_y) / grid.spm_y;
             seg.feed = packet_feed(move, seg, opt, where);
             segments.push_back(seg);
-            cur_x = x;
-            cur_y = y;
+            cur = p;
         }
     }
     return segments;

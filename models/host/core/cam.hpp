@@ -11,6 +11,34 @@ namespace cnc::host {
 
 enum class FeedRounding { Round, Truncate };  // seed 000 Q6: the host's rounding of axisFeed is unstated
 
+// Where the interior chord ends of an arc land on the step grid (the programmed end point of the arc is always
+// its own per-axis rounding, so the next move starts where the program says).
+// - Round: the seed's literal rule (seed 000 §3.4.4, "each intermediate point goes through the same mm->steps
+//   rounding"): llround of the ideal end point per axis. The rounded point lies up to 0.71 step off the circle.
+// - OnArc: the grid point nearest the circle (smallest |distance to centre - R|, compared in mm) among the
+//   grid points within +-W steps per axis of the rounded ideal end whose angle lies strictly between the
+//   previous chosen end and the next ideal end (so chords stay in order and none is empty); ties go to the
+//   point nearer the ideal end, then to the smaller X, then the smaller Y. W = min(3, floor(5 % of the
+//   longest chord's arc length in steps)) per axis, so that a chord's span changes by ~10 % at most; when
+//   W = 0 the four floor/ceil corners round the ideal end are the candidates. An end with no candidate is
+//   left out (the next chord carries it, as an empty chord would be). Chords are counted for a sagitta of
+//   kOnArcSagittaShare x the tolerance, so that the longer spans snapping can give stay within it.
+// Why OnArc is the default: the FPGA's reference-word step generator (seed 000 §5.4) steps the subordinate
+// axis at the start of its period, a staircase that adds up to one step to the path. With chord ends on the
+// circle the contour error stays within the chord tolerance plus one step; with Round the end's own up to
+// 0.71 step comes on top (9.6 um against 8.25 um on a radius-10 mm circle at 160 steps/mm, tolerance 0.002 mm).
+enum class ChordEnds { OnArc, Round };
+
+// Margin of ChordEnds::OnArc. The sagitta of a chord spanning angle a is R (1 - cos(a/2)) ~ R a^2 / 8, so
+// counting chords for 0.8 x tol lets every span grow by 1/sqrt(0.8) - 1 = 11.8 % before its sagitta reaches
+// tol. Snapping moves an end along the arc by at most its window's reach: the ideal end's rounding
+// (<= 0.5 step per axis) plus W (<= 5 % of the longest chord's arc length) per axis. Where the tangent runs
+// along an axis a chord therefore grows by <= 10 % + 1 step; along a diagonal the reach is sqrt(2) larger
+// (<= 14 % + 1.4 steps), but only when both ends land in opposite window corners, and the rounding share
+// is Round's as well. Measured at R = 10 mm, 160 steps/mm, tol 0.002 mm: the longest snapped chord spans
+// 0.956 of the tolerance's span (sagitta 0.91 x tol).
+inline constexpr double kOnArcSagittaShare = 0.8;
+
 struct CamOptions {
     // Largest distance between a chord and its arc (sagitta). seed 000 Q9 gives no value; 0.002 mm is grbl's
     // $12 arc tolerance default (peers.md §1), a third of one 6.25 um microstep.
@@ -19,6 +47,7 @@ struct CamOptions {
     // seed 000 Q10: whether G0 feed is corrected to the dominant axis is unclear; true treats G0 like G1
     // (coordinated straight line at the rapid path speed), false sends the rapid feed unchanged.
     bool correct_rapid_feed = true;
+    ChordEnds chord_ends = ChordEnds::OnArc;
 };
 
 struct MotionSegment {                // one motion packet = one steps-file row

@@ -24,6 +24,7 @@ struct RuleStats {
     std::int64_t checks = 0;
     std::int64_t violations = 0;
     std::optional<TimePs> worst_ps;  // smallest measured value (a time, or the rise-to-rise period for StepRate)
+    std::optional<TimePs> first_violation_ps;  // time of the edge that completed the first violation
 };
 
 struct TimingStats {
@@ -56,7 +57,7 @@ public:
     [[nodiscard]] const DriverLimits& limits() const { return m_limits; }
 
 private:
-    void measure(TimingRule rule, TimePs value_ps, bool violated);
+    void measure(TimingRule rule, TimePs t_ps, TimePs value_ps, bool violated);
 
     DriverLimits m_limits;
     TimingStats m_stats;

@@ -39,6 +39,23 @@ void read_axis(KeyReader& r, const std::string& axis, host::AxisMachine& m) {
     }
 }
 
+// The FPGA model refuses values its RTL registers cannot hold; name the scenario key that set them.
+void check_fpga(const KeyReader& r, const fpga::FpgaConfig& cfg) {
+    try {
+        fpga::validate(cfg);
+    } catch (const BadInput& e) {
+        const std::string what = e.what();
+        const std::pair<const char*, const char*> keys[] = {
+            {"clk_hz", "fpga.clock_hz"},          {"uart_full_bit_cycles", "fpga.uart_baud"},
+            {"uart_half_bit_cycles", "fpga.uart_baud"}, {"watchdog_cycles", "fpga.watchdog_ms"},
+            {"pulse_high_cycles", "fpga.pulse_high_cycles"}, {"dir_settle_cycles", "fpga.dir_settle_cycles"}};
+        for (const auto& [field, key] : keys) {
+            if (what.find(field) != std::string::npos) r.fail(key, what);
+        }
+        throw;
+    }
+}
+
 // Reads every key (registering its documentation); `base` resolves relative paths.
 Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     Scenario s;
@@ -127,6 +144,8 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                                        "exact"
                                    ? fpga::PeriodArithmetic::Exact
                                    : fpga::PeriodArithmetic::Wrap32;
+
+    check_fpga(r, s.fpga);
 
     s.vcd_path = r.get_string("trace.vcd", "", "VCD file to write (relative to the working directory); empty: none");
     s.report_path = r.get_string("trace.report", "", "JSON report to write; empty: none");

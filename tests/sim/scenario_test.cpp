@@ -88,6 +88,15 @@ TEST(Scenario, ImpossibleMachineAndMissingJob) {
               std::string::npos);
 }
 
+TEST(Scenario, FpgaValuesTheRtlCannotHoldNameTheScenarioKey) {
+    const std::string err = load_error(write_scenario("fpga", std::string(kJob) + "[fpga]\nuart_baud = 9600\n"));
+    EXPECT_NE(err.find("fpga.uart_baud"), std::string::npos) << err;
+    EXPECT_NE(err.find("2..512"), std::string::npos) << err;
+    EXPECT_NE(load_error(write_scenario("clock", std::string(kJob) + "[fpga]\nclock_hz = 48000000\n"))
+                  .find("fpga.clock_hz"),
+              std::string::npos);
+}
+
 TEST(Scenario, TomlSyntaxErrorNamesTheLine) {
     const std::string path = write_scenario("syntax", "[scenario]\njob = \"a.nc\"\nseed = = 3\n");
     EXPECT_NE(load_error(path).find(path + ":3"), std::string::npos) << load_error(path);

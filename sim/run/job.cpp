@@ -8,8 +8,8 @@ namespace cnc::sim {
 Job load_job(const Scenario& s) {
     Job job;
     if (s.job_format == JobFormat::Steps) {
-        job.segments = host::load_steps_file(s.job_path);
-        for (host::MotionSegment& seg : job.segments) {
+        job.steps_file = host::load_steps_file(s.job_path);
+        for (host::MotionSegment& seg : job.steps_file) {
             if (seg.feed == 0 && !s.allow_feed_zero) {
                 throw BadInput(s.job_path + ": segment " + std::to_string(seg.index),
                                "FeedRate 0 (allowed 1 .. 65535; host.allow_feed_zero = true sends it as the appendix "
@@ -21,7 +21,6 @@ Job load_job(const Scenario& s) {
         return job;
     }
     job.program = host::interpret_file(s.job_path, s.interpreter);
-    job.segments = host::cam(*job.program, s.machine, s.cam);
     return job;
 }
 

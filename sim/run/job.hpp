@@ -1,5 +1,5 @@
-// The job as the host holds it: the programmed moves (G-code jobs) and the motion segments the CAM made of
-// them, or the segments of a seed 000 steps file (which has no programmed geometry).
+// The job as the host reads it: the programmed moves of a G-code job, or the packet list of a seed 000 steps
+// file (which has no programmed geometry). What each architecture's host makes of it is its own business.
 #pragma once
 #include <optional>
 #include <vector>
@@ -11,8 +11,8 @@
 namespace cnc::sim {
 
 struct Job {
-    std::optional<host::Program> program;
-    std::vector<host::MotionSegment> segments;
+    std::optional<host::Program> program;         // G-code job
+    std::vector<host::MotionSegment> steps_file;   // steps-file job (fpga-uart only)
 };
 
 Job load_job(const Scenario& scenario);

@@ -5,14 +5,15 @@
 
 namespace cnc::sim {
 
-std::vector<metrics::MoveSpec> commanded_moves(const Job& job, const host::MachineModel& machine,
-                                               geom::Vec2 start_mm) {
+std::vector<metrics::MoveSpec> commanded_moves(const host::Program* program,
+                                               const std::vector<host::MotionSegment>& segments,
+                                               const host::MachineModel& machine, geom::Vec2 start_mm) {
     const double mm_x = machine.x.mm_per_step();
     const double mm_y = machine.y.mm_per_step();
     std::vector<metrics::MoveSpec> moves;
     std::int64_t at_x = 0;
     std::int64_t at_y = 0;
-    for (const host::MotionSegment& seg : job.segments) {
+    for (const host::MotionSegment& seg : segments) {
         metrics::MoveSpec m;
         m.index = seg.index;
         m.line = seg.line;
@@ -20,8 +21,8 @@ std::vector<metrics::MoveSpec> commanded_moves(const Job& job, const host::Machi
         at_x += seg.steps_x;
         at_y += seg.steps_y;
         m.to_mm = start_mm + geom::Vec2{static_cast<double>(at_x) * mm_x, static_cast<double>(at_y) * mm_y};
-        const bool programmed = job.program.has_value() && seg.move >= 0;
-        m.path = programmed ? job.program->moves[static_cast<std::size_t>(seg.move)].path
+        const bool programmed = program != nullptr && seg.move >= 0;
+        m.path = programmed ? program->moves[static_cast<std::size_t>(seg.move)].path
                             : geom::Segment::line(m.from_mm, m.to_mm);
         m.feed_mm_per_min = seg.path_feed_mm_per_min;
         m.rapid = seg.motion == host::MotionKind::Rapid;

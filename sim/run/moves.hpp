@@ -9,7 +9,9 @@
 
 namespace cnc::sim {
 
-std::vector<metrics::MoveSpec> commanded_moves(const Job& job, const host::MachineModel& machine,
-                                               geom::Vec2 start_mm);
+// `program` is null for a steps-file job: each segment's path is then its own straight line.
+std::vector<metrics::MoveSpec> commanded_moves(const host::Program* program,
+                                               const std::vector<host::MotionSegment>& segments,
+                                               const host::MachineModel& machine, geom::Vec2 start_mm);
 
 }  // namespace cnc::sim

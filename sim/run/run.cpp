@@ -10,13 +10,12 @@ namespace cnc::sim {
 
 namespace {
 
-nlohmann::json scenario_json(const Scenario& s, const Job& job) {
+nlohmann::json scenario_json(const Scenario& s) {
     return {{"name", s.name},
             {"file", s.file},
             {"architecture", s.architecture},
             {"job", s.job_path},
             {"seed", s.seed},
-            {"segments", job.segments.size()},
             {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}}};
 }
 
@@ -32,7 +31,7 @@ RunOutcome run_scenario(const Scenario& s) {
 
     out.ok = arch.ok;
     out.failure = arch.failure;
-    out.report = {{"scenario", scenario_json(s, job)},
+    out.report = {{"scenario", scenario_json(s)},
                   {"metrics", metrics::to_json(m)},
                   {s.architecture, arch.details},
                   {"warnings", arch.warnings},
@@ -40,8 +39,7 @@ RunOutcome run_scenario(const Scenario& s) {
     if (!arch.ok) out.report["failure"] = arch.failure;
 
     std::ostringstream text;
-    text << "cncsim run: " << s.name << " (" << s.architecture << "), job " << s.job_path << ", "
-         << job.segments.size() << " motion segments\n\n"
+    text << "cncsim run: " << s.name << " (" << s.architecture << "), job " << s.job_path << "\n\n"
          << metrics::summary_table(m) << '\n'
          << arch.details_text;
     for (const std::string& w : arch.warnings) text << "warning: " << w << '\n';

@@ -38,14 +38,14 @@ struct Packets {
     std::vector<host::MotionBytes> motion;
 };
 
-Packets encode(const Scenario& s, const Job& job) {
+Packets encode(const Scenario& s, const std::vector<host::MotionSegment>& segments) {
     Packets p;
     const std::uint32_t nx =
         s.numerator_from_machine ? host::numerator(s.machine.x.steps_per_mm(), s.fpga.clk_hz) : kSeedScriptNumerator;
     const std::uint32_t ny =
         s.numerator_from_machine ? host::numerator(s.machine.y.steps_per_mm(), s.fpga.clk_hz) : kSeedScriptNumerator;
     p.init = host::encode_init(nx, ny);
-    for (const host::MotionSegment& seg : job.segments) p.motion.push_back(host::encode_motion(host::to_packet(seg)));
+    for (const host::MotionSegment& seg : segments) p.motion.push_back(host::encode_motion(host::to_packet(seg)));
     return p;
 }
 
@@ -115,7 +115,10 @@ nlohmann::json packet_json(const fpga::PacketRecord& r) {
 }  // namespace
 
 ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
-    const Packets packets = encode(s, job);
+    // The seed 000 CAM (GCODE2STEPS) on the host, or the steps file it wrote.
+    const std::vector<host::MotionSegment> segments =
+        job.program ? host::cam(*job.program, s.machine, s.cam) : job.steps_file;
+    const Packets packets = encode(s, segments);
 
     Wires w;
     uart::Cp2102 cp2102("cp2102", s.link);
@@ -158,7 +161,8 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
 
     ArchRun run;
     const std::vector<fpga::PacketRecord> records = fpga.packets();
-    std::vector<metrics::MoveSpec> moves = commanded_moves(job, s.machine, s.interpreter.start_mm);
+    const host::Program* program = job.program ? &*job.program : nullptr;
+    std::vector<metrics::MoveSpec> moves = commanded_moves(program, segments, s.machine, s.interpreter.start_mm);
     std::size_t executed = 0;
     for (const fpga::PacketRecord& r : records) {
         if (!r.accepted || executed >= moves.size()) continue;
@@ -195,6 +199,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
                         {"timed_out", p.timed_out}});
     }
     run.details = {
+        {"segments", segments.size()},
         {"link",
          {{"requested_baud", s.link.requested_baud},
           {"line_baud", baud.actual_bd},

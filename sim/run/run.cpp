@@ -4,7 +4,9 @@
 
 #include "metrics/metrics.hpp"
 #include "run/job.hpp"
+#include "systems/atmega/atmega_system.hpp"
 #include "systems/fpga_uart_system.hpp"
+#include "systems/spi_fpga/spi_fpga_system.hpp"
 
 namespace cnc::sim {
 
@@ -24,7 +26,13 @@ nlohmann::json scenario_json(const Scenario& s) {
 RunOutcome run_scenario(const Scenario& s) {
     const Job job = load_job(s);
     RunOutcome out;
-    out.arch = run_fpga_uart(s, job);
+    if (s.architecture == "atmega") {
+        out.arch = run_atmega(s, job);
+    } else if (s.architecture == "spi-fpga") {
+        out.arch = run_spi_fpga(s, job);
+    } else {
+        out.arch = run_fpga_uart(s, job);
+    }
     out.metrics = metrics::compute_metrics(out.arch.input);
     const ArchRun& arch = out.arch;
     const metrics::RunMetrics& m = out.metrics;

@@ -61,8 +61,8 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     Scenario s;
     s.file = file;
     s.name = r.get_string("scenario.name", fs::path(file).stem().string(), "name shown in reports");
-    s.architecture = r.get_choice("scenario.architecture", "fpga-uart", {"fpga-uart"},
-                                  "controller architecture (atmega and spi-fpga: later issues)");
+    s.architecture = r.get_choice("scenario.architecture", "fpga-uart", {"fpga-uart", "atmega", "spi-fpga"},
+                                  "controller architecture (DESIGN.md §1)");
     const std::string job = r.get_string("scenario.job", "",
                                          "job file, relative to the scenario: G-code, or a seed 000 steps file");
     const std::string format = r.get_choice("scenario.job_format", "auto", {"auto", "gcode", "steps"},
@@ -146,6 +146,8 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                                    : fpga::PeriodArithmetic::Wrap32;
 
     check_fpga(r, s.fpga);
+    read_atmega_settings(r, s.atmega, base);
+    read_spi_fpga_settings(r, s.spi_fpga, base);
 
     s.vcd_path = r.get_string("trace.vcd", "", "VCD file to write (relative to the working directory); empty: none");
     s.report_path = r.get_string("trace.report", "", "JSON report to write; empty: none");

@@ -12,7 +12,9 @@
 #include "host/core/machine.hpp"
 #include "host/sender.hpp"
 #include "mechanics/drv8825.hpp"
+#include "scenario/atmega_settings.hpp"
 #include "scenario/key_reader.hpp"
+#include "scenario/spi_fpga_settings.hpp"
 #include "uart/cp2102.hpp"
 
 namespace cnc::sim {
@@ -37,6 +39,8 @@ struct Scenario {
     uart::Cp2102Config link;
     fpga::FpgaConfig fpga;
     mech::Drv8825Config driver;
+    AtmegaSettings atmega;
+    SpiFpgaSettings spi_fpga;
 
     std::string vcd_path;       // empty: no VCD
     std::string report_path;    // empty: no JSON file

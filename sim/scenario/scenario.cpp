@@ -110,6 +110,11 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
         "machine";
     s.cam.chord_tolerance_mm = r.get_float("host.chord_tolerance_mm", s.cam.chord_tolerance_mm, 1e-6, 10.0,
                                            "max distance of an arc chord from the arc, mm");
+    s.cam.chord_ends = r.get_choice("host.chord_ends", "on-arc", {"on-arc", "round"},
+                                    "chord end points: the grid point nearest the arc, or each axis rounded "
+                                    "(seed 000 sec. 3.4.4)") == "on-arc"
+                           ? host::ChordEnds::OnArc
+                           : host::ChordEnds::Round;
     s.cam.feed_rounding = r.get_choice("host.feed_rounding", "round", {"round", "truncate"},
                                        "packet feed from the dominant-axis feed") == "round"
                               ? host::FeedRounding::Round

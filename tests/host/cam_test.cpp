@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -83,21 +84,88 @@ TEST(HostCam, ChordCountIsTheSmallestWithinTolerance) {
     EXPECT_EQ(chord_count(0.001, 2 * M_PI, tol), 2);
 }
 
-// Step positions (in mm) reached after each segment, starting from `start_steps`.
-std::vector<geom::Vec2> reached_mm(const std::vector<MotionSegment>& segs, std::int64_t x0, std::int64_t y0) {
+// Step positions reached after each segment, starting from (x0, y0) steps, in mm (per-axis steps/mm).
+std::vector<geom::Vec2> reached_mm(const std::vector<MotionSegment>& segs, std::int64_t x0, std::int64_t y0,
+                                   double spm_x = kSpm, double spm_y = kSpm) {
     std::vector<geom::Vec2> pts;
     for (const auto& s : segs) {
         x0 += s.steps_x;
         y0 += s.steps_y;
-        pts.push_back({static_cast<double>(x0) / kSpm, static_cast<double>(y0) / kSpm});
+        pts.push_back({static_cast<double>(x0) / spm_x, static_cast<double>(y0) / spm_y});
     }
     return pts;
 }
 
-TEST(HostCam, FullCircleChordEndsLieOnTheArc) {
+// Largest distance between the arc (radius r about c, from a's angle to b's angle the short way) and chord a-b:
+// the chord's contour error measured from its actual grid end points.
+double chord_error_mm(geom::Vec2 a, geom::Vec2 b, geom::Vec2 c, double r) {
+    const double t0 = std::atan2(a.y_mm - c.y_mm, a.x_mm - c.x_mm);
+    const double dt = std::remainder(std::atan2(b.y_mm - c.y_mm, b.x_mm - c.x_mm) - t0, 2 * M_PI);
+    const geom::Segment chord = geom::Segment::line(a, b);
+    double worst = 0.0;
+    constexpr int kSamples = 200;  // at most R (span/200)^2 / 8 below the true maximum: < 1e-7 mm here
+    for (int i = 0; i <= kSamples; ++i) {
+        const double t = t0 + dt * i / kSamples;
+        worst = std::max(worst, chord.distance_to(c + geom::Vec2{r * std::cos(t), r * std::sin(t)}));
+    }
+    return worst;
+}
+
+double residual_mm(geom::Vec2 p, geom::Vec2 c, double r) { return std::fabs(geom::distance(p, c) - r); }
+
+struct ArcChording {
+    double max_residual_mm = 0;  // interior chord ends only
+    double max_chord_error_mm = 0;
+    double max_span_rad = 0;
+    double travelled_rad = 0;    // signed, summed over the chords
+};
+
+// Checks the chords of one arc (ends[0] = the start, then every chord end) and measures them: every chord
+// advances strictly in the arc's direction and no further than `max_span_rad`, and its contour error is at
+// most the tolerance plus the residuals of its two ends.
+ArcChording check_chords(const std::vector<geom::Vec2>& ends, geom::Vec2 c, double r, bool ccw, double tol,
+                         double max_span_rad) {
+    ArcChording m;
+    for (std::size_t i = 1; i < ends.size(); ++i) {
+        const double a0 = std::atan2(ends[i - 1].y_mm - c.y_mm, ends[i - 1].x_mm - c.x_mm);
+        const double a1 = std::atan2(ends[i].y_mm - c.y_mm, ends[i].x_mm - c.x_mm);
+        const double step = std::remainder(a1 - a0, 2 * M_PI);
+        EXPECT_GT(ccw ? step : -step, 0.0) << "chord " << i << " goes backwards or is empty";
+        EXPECT_LE(std::fabs(step), max_span_rad) << i;
+        m.max_span_rad = std::max(m.max_span_rad, std::fabs(step));
+        m.travelled_rad += step;
+        const double err = chord_error_mm(ends[i - 1], ends[i], c, r);
+        EXPECT_LE(err, tol + residual_mm(ends[i - 1], c, r) + residual_mm(ends[i], c, r) + 1e-12) << i;
+        m.max_chord_error_mm = std::max(m.max_chord_error_mm, err);
+        if (i + 1 < ends.size()) m.max_residual_mm = std::max(m.max_residual_mm, residual_mm(ends[i], c, r));
+    }
+    return m;
+}
+
+// The chord ends of arc move 1 (after a G0 to its start) as positions in mm, ends[0] = the start.
+std::vector<geom::Vec2> arc_ends(const std::vector<MotionSegment>& segs, double spm_x = kSpm, double spm_y = kSpm) {
+    const auto pts = reached_mm(segs, 0, 0, spm_x, spm_y);
+    std::vector<geom::Vec2> ends{pts.front()};
+    for (std::size_t i = 1; i < segs.size(); ++i) {
+        EXPECT_EQ(segs[i].move, 1);
+        EXPECT_TRUE(segs[i].steps_x != 0 || segs[i].steps_y != 0) << "empty chord " << i;
+        ends.push_back(pts[i]);
+    }
+    return ends;
+}
+
+double max_chord_rad(double r, double tol) { return 4.0 * std::asin(std::sqrt(tol / (2.0 * r))); }
+
+CamOptions round_ends() {
+    CamOptions opt;
+    opt.chord_ends = ChordEnds::Round;
+    return opt;
+}
+
+TEST(HostCam, RoundChordEndsAreWithinHalfAStepOfTheArc) {
     const Program prog = run_gcode("G0 X10 Y0\nG2 I-10 F600\n");
     const geom::Segment arc = prog.moves[1].path;
-    const auto segs = cam(prog, {}, {});
+    const auto segs = cam(prog, {}, round_ends());
     ASSERT_EQ(segs.size(), 1u + 158u);  // the rapid + every chord (each moves at least one step at R = 10)
     const auto pts = reached_mm(segs, 0, 0);
     const double half_step_diag = 0.5 * std::sqrt(2.0) / kSpm;
@@ -112,19 +180,161 @@ TEST(HostCam, FullCircleChordEndsLieOnTheArc) {
     EXPECT_EQ(std::llround(pts.back().y_mm * kSpm), 0);
     // Between chord ends the arc stays within the chord tolerance plus the quantisation of the ends.
     for (std::size_t i = 1; i < pts.size(); ++i) {
-        const geom::Segment chord = geom::Segment::line(pts[i - 1], pts[i]);
-        const double a0 = std::atan2(pts[i - 1].y_mm, pts[i - 1].x_mm);
-        const double a1 = std::atan2(pts[i].y_mm, pts[i].x_mm);
-        const double mid = a0 + std::remainder(a1 - a0, 2 * M_PI) / 2;
-        const geom::Vec2 on_arc{10.0 * std::cos(mid), 10.0 * std::sin(mid)};
-        EXPECT_LE(chord.distance_to(on_arc), CamOptions{}.chord_tolerance_mm + half_step_diag) << i;
+        const double err = chord_error_mm(pts[i - 1], pts[i], arc.center, 10.0);
+        EXPECT_LE(err, CamOptions{}.chord_tolerance_mm + half_step_diag) << i;
     }
+}
+
+TEST(HostCam, RoundIsPerAxisRoundingOfTheIdealChordEnds) {
+    // Off-grid centre and radius, different steps/mm per axis, a partial CCW arc: every chord end is llround of
+    // the inscribed polygon's vertex per axis (seed 000 §3.4.4), as before ChordEnds existed.
+    MachineModel m;
+    m.y.microsteps = 16;  // 80 steps/mm
+    const double spm_y = 80.0;
+    const Program prog = run_gcode("G0 X3.0031 Y-1.2347\nG3 X-3.3484 Y3.1443 I-3.0002 J2.4441 F600\n");
+    const geom::Segment arc = prog.moves[1].path;
+    const auto segs = cam(prog, m, round_ends());
+    const std::int64_t n = chord_count(arc.radius_mm(), arc.sweep_rad, 0.002);
+    ASSERT_EQ(segs.size(), 1u + static_cast<std::size_t>(n));
+    const double a0 = std::atan2(arc.start.y_mm - arc.center.y_mm, arc.start.x_mm - arc.center.x_mm);
+    std::int64_t x = 0, y = 0;
+    for (std::int64_t k = 1; k <= n; ++k) {
+        const double a = a0 + arc.sweep_rad * static_cast<double>(k) / static_cast<double>(n);
+        const double r = arc.radius_mm();
+        const geom::Vec2 p = k < n ? arc.center + geom::Vec2{std::cos(a) * r, std::sin(a) * r} : arc.end;
+        x += segs[static_cast<std::size_t>(k)].steps_x;
+        y += segs[static_cast<std::size_t>(k)].steps_y;
+        EXPECT_EQ(segs[0].steps_x + x, std::llround(p.x_mm * kSpm)) << k;
+        EXPECT_EQ(segs[0].steps_y + y, std::llround(p.y_mm * spm_y)) << k;
+    }
+}
+
+TEST(HostCam, OnArcFullCircleR10) {
+    // seed 000 reference machine, grbl's tolerance: the case whose contour error motivated ChordEnds::OnArc.
+    const double tol = CamOptions{}.chord_tolerance_mm;
+    const Program prog = run_gcode("G0 X10 Y0\nG2 I-10 F600\n");
+    const auto segs = cam(prog, {}, {});
+    // Counted for 0.8 x tol: 176 chords (158 at tol), none dropped as empty.
+    EXPECT_EQ(chord_count(10.0, 2 * M_PI, kOnArcSagittaShare * tol), 176);
+    ASSERT_EQ(segs.size(), 1u + 176u);
+    for (std::size_t i = 1; i < segs.size(); ++i) EXPECT_EQ(segs[i].motion, MotionKind::ArcCW);
+    const auto ends = arc_ends(segs);
+    const ArcChording m = check_chords(ends, {0, 0}, 10.0, false, tol, max_chord_rad(10.0, tol));
+    // Every interior end within 0.25 step of the circle; the largest measured is 0.183 step (1.14 um), where
+    // Round's bound is 0.71 step.
+    EXPECT_LT(m.max_residual_mm * kSpm, 0.25);
+    EXPECT_NEAR(m.max_residual_mm * kSpm, 0.1828, 0.0005);
+    // Snapping lengthened the longest chord to 0.956 of the tolerance's span; its contour error is 2.03 um.
+    EXPECT_NEAR(m.max_span_rad / max_chord_rad(10.0, tol), 0.9561, 0.0005);
+    EXPECT_NEAR(m.max_chord_error_mm * 1000.0, 2.025, 0.001);
+    EXPECT_NEAR(m.travelled_rad, -2 * M_PI, 1e-12);
+    // The last end is the rounded programmed end: the start again.
+    EXPECT_DOUBLE_EQ(ends.back().x_mm, 10.0);
+    EXPECT_DOUBLE_EQ(ends.back().y_mm, 0.0);
+}
+
+TEST(HostCam, OnArcBeatsRoundOnAnOffGridCircle) {
+    // Centre off the grid. Where the tangent runs along an axis, the grid points within a few steps
+    // along the arc are all about as far from the circle as the rounded one, so the largest residual is close
+    // to half a step there; it is still below Round's, and so is the largest chord error.
+    const double tol = CamOptions{}.chord_tolerance_mm;
+    const geom::Vec2 c{0.0031, 0.0007};
+    const std::string g = "G0 X10.0031 Y0.0007\nG3 I-10 J0 F600\n";
+    const auto on_arc = check_chords(arc_ends(cam_of(g)), c, 10.0, true, tol, max_chord_rad(10.0, tol));
+    // Round's count is for the full tolerance, so its rounded ends make some chords a little longer.
+    const auto round =
+        check_chords(arc_ends(cam_of(g, round_ends())), c, 10.0, true, tol, 1.05 * max_chord_rad(10.0, tol));
+    EXPECT_NEAR(on_arc.max_span_rad / max_chord_rad(10.0, tol), 0.9849, 0.0005);
+    EXPECT_NEAR(on_arc.max_residual_mm * kSpm, 0.4960, 0.0005);
+    EXPECT_NEAR(round.max_residual_mm * kSpm, 0.6498, 0.0005);
+    EXPECT_NEAR(on_arc.max_chord_error_mm * 1000.0, 4.547, 0.001);
+    EXPECT_NEAR(round.max_chord_error_mm * 1000.0, 4.944, 0.001);
+    EXPECT_NEAR(on_arc.travelled_rad, 2 * M_PI, 1e-12);
+}
+
+TEST(HostCam, OnArcWithDifferentStepsPerMmPerAxis) {
+    MachineModel mm;
+    mm.y.microsteps = 16;  // 80 steps/mm: a Y step is 12.5 um, and residuals are compared in mm
+    const double tol = CamOptions{}.chord_tolerance_mm;
+    const std::string g = "G0 X10 Y0\nG2 I-10 F600\n";
+    const auto segs = cam_of(g, {}, mm);
+    ASSERT_EQ(segs.size(), 1u + 176u);
+    const auto ends = arc_ends(segs, kSpm, 80.0);
+    const auto m = check_chords(ends, {0, 0}, 10.0, false, tol, max_chord_rad(10.0, tol));
+    const auto r = check_chords(arc_ends(cam_of(g, round_ends(), mm), kSpm, 80.0), {0, 0}, 10.0, false, tol,
+                                1.05 * max_chord_rad(10.0, tol));
+    EXPECT_NEAR(m.max_span_rad / max_chord_rad(10.0, tol), 0.9729, 0.0005);
+    // Near +-Y the residual is along Y, where half a step is 6.25 um.
+    EXPECT_NEAR(m.max_residual_mm * 1000.0, 5.695, 0.001);
+    EXPECT_NEAR(r.max_residual_mm * 1000.0, 5.861, 0.001);
+    EXPECT_NEAR(m.max_chord_error_mm * 1000.0, 5.741, 0.001);
+    EXPECT_NEAR(r.max_chord_error_mm * 1000.0, 6.365, 0.001);
+    EXPECT_NEAR(m.travelled_rad, -2 * M_PI, 1e-12);
+    EXPECT_DOUBLE_EQ(ends.back().x_mm, 10.0);
+    EXPECT_DOUBLE_EQ(ends.back().y_mm, 0.0);
+}
+
+TEST(HostCam, OnArcTinyRadiusSearchesTheFourCorners) {
+    // R = 0.05 mm = 8 steps: W = floor(0.05 x 0.507 rad x 8 steps) = 0, so each interior end is a corner of the
+    // grid cell holding its ideal end (13 chords for 0.8 x tol).
+    const double tol = CamOptions{}.chord_tolerance_mm;
+    const auto segs = cam_of("G0 X0.05 Y0\nG3 I-0.05 F600\n");
+    const std::int64_t n = chord_count(0.05, 2 * M_PI, kOnArcSagittaShare * tol);
+    EXPECT_EQ(n, 13);
+    ASSERT_EQ(segs.size(), 1u + 13u);
+    const auto ends = arc_ends(segs);
+    for (std::int64_t k = 1; k < n; ++k) {
+        const double a = 2 * M_PI * static_cast<double>(k) / static_cast<double>(n);
+        const geom::Vec2 e = ends[static_cast<std::size_t>(k)];
+        EXPECT_LT(std::fabs(e.x_mm - 0.05 * std::cos(a)) * kSpm, 1.0) << k;
+        EXPECT_LT(std::fabs(e.y_mm - 0.05 * std::sin(a)) * kSpm, 1.0) << k;
+    }
+    // On so coarse a grid a chord spans up to 1.11 x the tolerance's span (its error 2.50 um).
+    const auto m = check_chords(ends, {0, 0}, 0.05, true, tol, 1.12 * max_chord_rad(0.05, tol));
+    EXPECT_NEAR(m.max_span_rad / max_chord_rad(0.05, tol), 1.1119, 0.0005);
+    EXPECT_NEAR(m.max_residual_mm * kSpm, 0.2462, 0.0005);
+    EXPECT_NEAR(m.max_chord_error_mm * 1000.0, 2.500, 0.001);
+    EXPECT_NEAR(m.travelled_rad, 2 * M_PI, 1e-12);
+    EXPECT_DOUBLE_EQ(ends.back().x_mm, 0.05);
+    EXPECT_DOUBLE_EQ(ends.back().y_mm, 0.0);
+}
+
+TEST(HostCam, OnArcChordsShorterThanAStepAreLeftOut) {
+    // R = 1.6 steps about an off-grid centre with 25 chords: most ideal ends share a grid cell with their
+    // neighbours, and the in-order corners of a cell may lie far off the circle. Such ends are left out rather
+    // than zig-zag across the circle: what remains runs round once, never backwards, every end within half a
+    // cell diagonal (Round's bound) of the circle.
+    CamOptions opt;
+    opt.chord_tolerance_mm = 0.0001;
+    const auto segs = cam_of("G0 X0.016 Y0.01\nG2 I-0.01 J0 F600\n", opt);
+    EXPECT_EQ(chord_count(0.01, 2 * M_PI, kOnArcSagittaShare * 0.0001), 25);
+    ASSERT_EQ(segs.size(), 1u + 12u);
+    const auto m = check_chords(arc_ends(segs), {0.006, 0.01}, 0.01, false, 1.0, M_PI);
+    EXPECT_LE(m.max_residual_mm * kSpm, 0.5 * std::sqrt(2.0));
+    EXPECT_NEAR(m.travelled_rad, -2 * M_PI, 1e-12);
+}
+
+TEST(HostCam, OnArcLargeRadius) {
+    // R = 500 mm: W = 3 (the cap); 1242 chords.
+    const double tol = CamOptions{}.chord_tolerance_mm;
+    const auto segs = cam_of("G0 X500 Y0\nG2 I-500 F6000\n");
+    EXPECT_EQ(chord_count(500.0, 2 * M_PI, kOnArcSagittaShare * tol), 1242);
+    ASSERT_EQ(segs.size(), 1u + 1242u);
+    const auto ends = arc_ends(segs);
+    const auto m = check_chords(ends, {0, 0}, 500.0, false, tol, max_chord_rad(500.0, tol));
+    EXPECT_NEAR(m.max_residual_mm * kSpm, 0.4142, 0.0005);
+    EXPECT_NEAR(m.max_span_rad / max_chord_rad(500.0, tol), 0.9141, 0.0005);
+    EXPECT_NEAR(m.travelled_rad, -2 * M_PI, 1e-12);
+    EXPECT_DOUBLE_EQ(ends.back().x_mm, 500.0);
+    EXPECT_DOUBLE_EQ(ends.back().y_mm, 0.0);
 }
 
 TEST(HostCam, CcwArcKeepsMotionCodeThree) {
     const auto segs = cam_of("G0 X10\nG3 X0 Y10 I-10 F600\n");
-    ASSERT_EQ(segs.size(), 1u + 40u);
+    ASSERT_EQ(segs.size(), 1u + 44u);  // chord_count(10, pi/2, 0.8 x 0.002)
     for (std::size_t i = 1; i < segs.size(); ++i) EXPECT_EQ(segs[i].motion, MotionKind::ArcCCW);
+    const auto m = check_chords(arc_ends(segs), {0, 0}, 10.0, true, 0.002, max_chord_rad(10.0, 0.002));
+    EXPECT_NEAR(m.travelled_rad, M_PI / 2, 1e-12);
     std::int64_t x = 0, y = 0;
     for (const auto& s : segs) {
         x += s.steps_x;
@@ -137,8 +347,12 @@ TEST(HostCam, CcwArcKeepsMotionCodeThree) {
 TEST(HostCam, CoarseToleranceGivesFewerChords) {
     CamOptions opt;
     opt.chord_tolerance_mm = 0.1;
-    const auto segs = cam_of("G0 X10\nG3 X0 Y10 I-10 F600\n", opt);
-    EXPECT_EQ(static_cast<std::int64_t>(segs.size()), 1 + chord_count(10.0, M_PI / 2, 0.1));
+    EXPECT_EQ(static_cast<std::int64_t>(cam_of("G0 X10\nG3 X0 Y10 I-10 F600\n", opt).size()),
+              1 + chord_count(10.0, M_PI / 2, 0.08));
+    EXPECT_EQ(chord_count(10.0, M_PI / 2, 0.08), 7);
+    opt.chord_ends = ChordEnds::Round;
+    EXPECT_EQ(static_cast<std::int64_t>(cam_of("G0 X10\nG3 X0 Y10 I-10 F600\n", opt).size()),
+              1 + chord_count(10.0, M_PI / 2, 0.1));
     EXPECT_EQ(chord_count(10.0, M_PI / 2, 0.1), 6);
 }
 

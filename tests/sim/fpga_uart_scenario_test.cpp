@@ -155,9 +155,20 @@ TEST(FpgaUartCircle, ContourErrorWithinChordTolerancePlusOneStep) {
     ASSERT_TRUE(out.metrics.path.contour_max_um.has_value());
     ASSERT_TRUE(out.metrics.path.contour_rms_um.has_value());
     EXPECT_LE(*out.metrics.path.contour_max_um, 2.0 + 6.25);
+    EXPECT_NEAR(*out.metrics.path.contour_max_um, 7.796, 0.001);  // regression: chord ends on the arc
     EXPECT_GT(*out.metrics.path.contour_rms_um, 0.0);
     EXPECT_LT(*out.metrics.path.contour_rms_um, *out.metrics.path.contour_max_um);
     EXPECT_GT(out.metrics.moves.size(), 100U);  // the circle went as chords
+}
+
+// The seed's literal chord-end rounding (each axis rounded, §3.4.4) leaves the chord ends up to 0.71 step off the
+// circle: with the step_gen staircase the contour error then exceeds tolerance + one step. Regression numbers.
+TEST(FpgaUartCircle, SeedRoundingOfChordEndsExceedsTheBound) {
+    const auto out = run_shipped("circle_r10", {"host.chord_ends=round"});
+    ASSERT_TRUE(out.ok) << out.failure;
+    EXPECT_NEAR(*out.metrics.path.contour_max_um, 9.641, 0.001);
+    EXPECT_GT(*out.metrics.path.contour_max_um, 2.0 + 6.25);
+    EXPECT_EQ(out.report.at("fpga-uart").at("segments"), 159);
 }
 
 // Check 7: a 12 s move against send_steps.py's 10 s ACK timeout.

@@ -98,18 +98,28 @@ struct ArcChords {
     }
 };
 
-// ChordEnds::OnArc search window per axis (see CamOptions::chord_ends): 5 % of the longest chord's arc
-// length, so that snapping changes a chord's span by ~10 % at most, and at most 3 steps, which already
-// offers ~7 grid points along the arc to choose from.
+// ChordEnds::OnArc. Interior end k is the grid point nearest the circle (smallest |distance to centre - R|, in
+// mm, so axes with different steps/mm compare fairly) among the points within +-W steps per axis of the rounded
+// ideal end (the four floor/ceil corners round it when W = 0) whose angle lies strictly between the previous
+// chosen end and ideal end k+1 (for the last interior end: the rounded programmed end) in the arc's direction,
+// so that chords stay in order and none is empty. Ties: nearer the ideal end, then smaller X, then smaller Y.
+// Margin. The sagitta of a chord spanning angle a is R (1 - cos(a/2)) ~ R a^2 / 8, so counting chords for
+// kOnArcSagittaShare = 0.8 of the tolerance lets a span grow by 1/sqrt(0.8) - 1 = 11.8 % before its sagitta
+// reaches the tolerance. Snapping moves an end along the arc by at most its window's reach: the ideal end's
+// rounding (<= 0.5 step per axis) plus W <= 5 % of the longest chord's arc length per axis. A chord whose
+// tangent runs along an axis thus grows by <= 10 % + 1 step. Along a diagonal the reach is sqrt(2) larger
+// (<= 14 % + 1.4 steps), but only if both ends land in opposite window corners; the rounding share is
+// Round's too. Measured at R = 10 mm, 160 steps/mm, tol 0.002 mm: the
+// longest chord spans 0.956 of the tolerance's span (sagitta 0.91 x tol); at R = 500 mm 0.914.
+// W is capped at 3 steps, which already offers ~7 grid points along the arc to choose from.
 int window_steps(double longest_chord_mm, double steps_per_mm) {
     return static_cast<int>(std::min(3.0, std::floor(0.05 * longest_chord_mm * steps_per_mm)));
 }
 
 // Candidate steps on one axis: the floor and ceiling of the ideal position when w is 0, else the rounded
 // position +-w.
-std::pair<std::int64_t, std::int64_t> candidate_steps(double pos_mm, double steps_per_mm, int w,
-                                                      const std::string& where, const char* axis) {
-    const std::int64_t rounded = absolute_steps(pos_mm, steps_per_mm, where, axis);  // checks the 2^53 range
+std::pair<std::int64_t, std::int64_t> candidate_steps(double pos_mm, double steps_per_mm, std::int64_t rounded,
+                                                      int w) {
     if (w > 0) return {rounded - w, rounded + w};
     const double steps = pos_mm * steps_per_mm;
     return {static_cast<std::int64_t>(std::floor(steps)), static_cast<std::int64_t>(std::ceil(steps))};
@@ -127,12 +137,15 @@ struct SnappedEnd {
 constexpr double kTieMm = 1e-9;
 
 // ChordEnds::OnArc: the grid point for interior end k, strictly between after_rad and before_rad in the
-// arc's direction (none if no candidate lies there).
+// arc's direction. None if no candidate lies there, or if the best one lies further from the circle than the
+// rounded ideal end (Round's choice), which happens only where chords are shorter than a step: a worse point
+// would zig-zag across the circle, so the end is left out and the next chord carries it.
 std::optional<SnappedEnd> snap_end(const ArcChords& arc, std::int64_t k, double after_rad, double before_rad,
                                    const StepGrid& grid, int w_x, int w_y, const std::string& where) {
     const geom::Vec2 ideal = arc.ideal_end(k);
-    const auto [x_lo, x_hi] = candidate_steps(ideal.x_mm, grid.spm_x, w_x, where, "X");
-    const auto [y_lo, y_hi] = candidate_steps(ideal.y_mm, grid.spm_y, w_y, where, "Y");
+    const StepPos rounded = grid.round(ideal, where);  // also checks the 2^53 range
+    const auto [x_lo, x_hi] = candidate_steps(ideal.x_mm, grid.spm_x, rounded.x, w_x);
+    const auto [y_lo, y_hi] = candidate_steps(ideal.y_mm, grid.spm_y, rounded.y, w_y);
     std::optional<SnappedEnd> best;
     for (std::int64_t x = x_lo; x <= x_hi; ++x) {
         for (std::int64_t y = y_lo; y <= y_hi; ++y) {
@@ -141,11 +154,14 @@ std::optional<SnappedEnd> snap_end(const ArcChords& arc, std::int64_t k, double 
             if (!(travelled > after_rad && travelled < before_rad)) continue;
             const SnappedEnd c{{x, y}, travelled, std::fabs(geom::distance(p, arc.center) - arc.r_mm),
                                geom::distance(p, ideal)};
-            const bool better = !best || c.residual_mm < best->residual_mm - kTieMm ||
-                                (c.residual_mm <= best->residual_mm + kTieMm && c.offset_mm < best->offset_mm - kTieMm);
+            const bool better =
+                !best || c.residual_mm < best->residual_mm - kTieMm ||
+                (c.residual_mm <= best->residual_mm + kTieMm && c.offset_mm < best->offset_mm - kTieMm);
             if (better) best = c;  // scanning X then Y upwards: on a full tie the smaller X, then Y, stays
         }
     }
+    const double rounded_residual_mm = std::fabs(geom::distance(grid.mm(rounded.x, rounded.y), arc.center) - arc.r_mm);
+    if (best && best->residual_mm > rounded_residual_mm + kTieMm) return {};
     return best;
 }
 

@@ -11,32 +11,23 @@ namespace cnc::host {
 
 enum class FeedRounding { Round, Truncate };  // seed 000 Q6: the host's rounding of axisFeed is unstated
 
-// Where the interior chord ends of an arc land on the step grid (the programmed end point of the arc is always
-// its own per-axis rounding, so the next move starts where the program says).
-// - Round: the seed's literal rule (seed 000 §3.4.4, "each intermediate point goes through the same mm->steps
-//   rounding"): llround of the ideal end point per axis. The rounded point lies up to 0.71 step off the circle.
-// - OnArc: the grid point nearest the circle (smallest |distance to centre - R|, compared in mm) among the
-//   grid points within +-W steps per axis of the rounded ideal end whose angle lies strictly between the
-//   previous chosen end and the next ideal end (so chords stay in order and none is empty); ties go to the
-//   point nearer the ideal end, then to the smaller X, then the smaller Y. W = min(3, floor(5 % of the
-//   longest chord's arc length in steps)) per axis, so that a chord's span changes by ~10 % at most; when
-//   W = 0 the four floor/ceil corners round the ideal end are the candidates. An end with no candidate is
-//   left out (the next chord carries it, as an empty chord would be). Chords are counted for a sagitta of
-//   kOnArcSagittaShare x the tolerance, so that the longer spans snapping can give stay within it.
+// Where the interior chord ends of an arc go on the step grid. The arc's programmed end point is always rounded
+// per axis, so that the next move starts where the program says.
+// - Round: seed 000 §3.4.4 literally ("each intermediate point goes through the same mm->steps rounding"):
+//   llround per axis of each vertex of the inscribed polygon, up to 0.71 step off the circle.
+// - OnArc: the grid point nearest the circle among those within a few steps of the vertex that keep the chords
+//   in order and non-empty (rule and margin in cam.cpp).
 // Why OnArc is the default: the FPGA's reference-word step generator (seed 000 §5.4) steps the subordinate
-// axis at the start of its period, a staircase that adds up to one step to the path. With chord ends on the
-// circle the contour error stays within the chord tolerance plus one step; with Round the end's own up to
-// 0.71 step comes on top (9.6 um against 8.25 um on a radius-10 mm circle at 160 steps/mm, tolerance 0.002 mm).
+// axis at the start of its period, a staircase that adds up to one step to the path; with the chord ends on the
+// circle the path can stay within the chord tolerance plus one step, while Round adds the end's own 0.71 step.
+// Measured with the fpga-uart model, radius 10 mm, 160 steps/mm, tolerance 0.002 mm (limit 8.25 um): centre
+// on the grid 7.8 um (Round 9.6 um; OnArc's ends lie within 0.18 step of that circle). Limit: where the tangent
+// runs along an axis and the circle misses the grid points, none within reach is much nearer than the rounded
+// one (up to half a step), so off-grid centres still reach 8.1-9.7 um (Round 10.4-10.6 um).
 enum class ChordEnds { OnArc, Round };
 
-// Margin of ChordEnds::OnArc. The sagitta of a chord spanning angle a is R (1 - cos(a/2)) ~ R a^2 / 8, so
-// counting chords for 0.8 x tol lets every span grow by 1/sqrt(0.8) - 1 = 11.8 % before its sagitta reaches
-// tol. Snapping moves an end along the arc by at most its window's reach: the ideal end's rounding
-// (<= 0.5 step per axis) plus W (<= 5 % of the longest chord's arc length) per axis. Where the tangent runs
-// along an axis a chord therefore grows by <= 10 % + 1 step; along a diagonal the reach is sqrt(2) larger
-// (<= 14 % + 1.4 steps), but only when both ends land in opposite window corners, and the rounding share
-// is Round's as well. Measured at R = 10 mm, 160 steps/mm, tol 0.002 mm: the longest snapped chord spans
-// 0.956 of the tolerance's span (sagitta 0.91 x tol).
+// ChordEnds::OnArc counts chords for this share of the chord tolerance, so that snapping the ends may lengthen
+// a chord by 1/sqrt(0.8) - 1 = 11.8 % before its sagitta reaches the tolerance (derivation in cam.cpp).
 inline constexpr double kOnArcSagittaShare = 0.8;
 
 struct CamOptions {
@@ -47,7 +38,7 @@ struct CamOptions {
     // seed 000 Q10: whether G0 feed is corrected to the dominant axis is unclear; true treats G0 like G1
     // (coordinated straight line at the rapid path speed), false sends the rapid feed unchanged.
     bool correct_rapid_feed = true;
-    ChordEnds chord_ends = ChordEnds::OnArc;
+    ChordEnds chord_ends = ChordEnds::OnArc;  // see ChordEnds
 };
 
 struct MotionSegment {                // one motion packet = one steps-file row

@@ -38,4 +38,4 @@ echo "|---|---|---|---|---|---|"
 bench "six-segment, VCD off" scenarios/fpga-uart/six_segment.toml
 bench "six-segment, VCD on" scenarios/fpga-uart/six_segment.toml --vcd "$OUT/six.vcd"
 bench "square 20 mm, VCD off" scenarios/fpga-uart/square_20mm.toml
-bench "circle r10 (159 chords), VCD off" scenarios/fpga-uart/circle_r10.toml
+bench "circle r10 (177 chords), VCD off" scenarios/fpga-uart/circle_r10.toml

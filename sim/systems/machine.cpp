@@ -13,6 +13,16 @@ std::unique_ptr<mech::Transmission> transmission_for(const host::AxisMachine& a)
     return std::make_unique<mech::Leadscrew>(a.lead_mm, a.screw_starts, a.gear_ratio);
 }
 
+void wire(mech::Drv8825& drv, sc_core::sc_in<bool>& step, sc_core::sc_in<bool>& dir, sc_core::sc_in<bool>& n_enbl,
+          ModeStraps& modes) {
+    drv.step(step);
+    drv.dir(dir);
+    drv.n_enbl(n_enbl);
+    drv.m0(modes.m0);
+    drv.m1(modes.m1);
+    drv.m2(modes.m2);
+}
+
 }  // namespace
 
 ModeStraps::ModeStraps(int microsteps, const std::string& axis)
@@ -38,18 +48,8 @@ Machine::Machine(const sc_core::sc_module_name& name, const host::MachineModel& 
                                                   {&m_drv_y.step_event(), &m_motor_y, m_drive_y.get()},
                                                   origin_mm}),
       m_head("laser_head") {
-    m_drv_x.step(step_x);
-    m_drv_x.dir(dir_x);
-    m_drv_x.n_enbl(n_enbl_x);
-    m_drv_x.m0(m_modes_x.m0);
-    m_drv_x.m1(m_modes_x.m1);
-    m_drv_x.m2(m_modes_x.m2);
-    m_drv_y.step(step_y);
-    m_drv_y.dir(dir_y);
-    m_drv_y.n_enbl(n_enbl_y);
-    m_drv_y.m0(m_modes_y.m0);
-    m_drv_y.m1(m_modes_y.m1);
-    m_drv_y.m2(m_modes_y.m2);
+    wire(m_drv_x, step_x, dir_x, n_enbl_x, m_modes_x);
+    wire(m_drv_y, step_y, dir_y, n_enbl_y, m_modes_y);
     m_head.laser(laser);
 }
 

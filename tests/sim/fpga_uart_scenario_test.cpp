@@ -171,6 +171,28 @@ TEST(FpgaUartCircle, SeedRoundingOfChordEndsExceedsTheBound) {
     EXPECT_EQ(out.report.at("fpga-uart").at("segments"), 159);
 }
 
+// The 32-bit period product (seed 000 §5.4, Q3): 187,500 clocks x 73,600 steps = 1.38e10 does not fit.
+TEST(FpgaUartOverflow, ExactPeriodByDefaultAndAWarning) {
+    const auto out = run_shipped("overflow_slow_diagonal");
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& p = out.report.at("fpga-uart").at("fpga").at("packets").at(0);
+    EXPECT_EQ(p.at("period_cycles"), nlohmann::json({187'500, 8'625'000}));  // 187,500 x 73,600 / 1,600
+    EXPECT_TRUE(p.at("period_overflow").get<bool>());
+    ASSERT_EQ(out.arch.warnings.size(), 1U);
+    EXPECT_NE(out.arch.warnings[0].find("exceeds 32 bits"), std::string::npos);
+    EXPECT_LE(*out.metrics.path.contour_max_um, 6.25);
+}
+
+TEST(FpgaUartOverflow, Wrap32ReproducesTheAppendixRtl) {
+    const auto out = run_shipped("overflow_slow_diagonal", {"fpga.period_arithmetic=wrap32"});
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& p = out.report.at("fpga-uart").at("fpga").at("packets").at(0);
+    // (13,800,000,000 mod 2^32) / 1,600 = 915,098,112 / 1,600 -> 571,936: Y finishes after 0.9 s of 276 s
+    EXPECT_EQ(p.at("period_cycles"), nlohmann::json({187'500, 571'936}));
+    EXPECT_GT(*out.metrics.path.contour_max_um, 9'000.0);  // the tool leaves the line by 9 mm
+    EXPECT_NE(out.arch.warnings.at(0).find("used the wrapped period"), std::string::npos);
+}
+
 // Check 7: a 12 s move against send_steps.py's 10 s ACK timeout.
 TEST(FpgaUartLongMove, SeedFaithfulSenderReportsAckTimeout) {
     const auto out = run_shipped("long_move_timeout");

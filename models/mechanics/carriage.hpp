@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/geometry.hpp"
+#include "common/tool_sample.hpp"
 #include "common/units.hpp"
 #include "mechanics/core/motor.hpp"
 #include "mechanics/core/transmission.hpp"
@@ -23,10 +24,7 @@ struct CarriageConfig {
     geom::Vec2 origin{};  // tool position (machine mm) with both shafts at 0 deg
 };
 
-struct ToolSample {
-    TimePs t_ps = 0;
-    geom::Vec2 pos;
-};
+using ToolSample = cnc::ToolSample;
 
 class Carriage : public sc_core::sc_module {
 public:

@@ -9,6 +9,7 @@
 
 #include "common/edge_log.hpp"
 #include "common/geometry.hpp"
+#include "common/tool_sample.hpp"
 #include "common/units.hpp"
 #include "metrics/driver_timing.hpp"
 
@@ -22,11 +23,7 @@ struct AxisTrace {
     bool dir_high_is_positive = true;
 };
 
-// Carriage/tool position, one sample per step event.
-struct ToolSample {
-    TimePs t_ps = 0;
-    geom::Vec2 pos;
-};
+using ToolSample = cnc::ToolSample;
 
 // One executed motion command (packet, chord or planner segment).
 struct MoveSpec {

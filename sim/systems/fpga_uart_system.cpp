@@ -176,7 +176,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     in.axes = {metrics::AxisTrace{"x", rec.log("step_x"), rec.log("dir_x"), s.machine.x.steps_per_mm(), true},
                metrics::AxisTrace{"y", rec.log("step_y"), rec.log("dir_y"), s.machine.y.steps_per_mm(), true}};
     in.moves = moves;
-    for (const mech::ToolSample& t : machine.carriage().samples()) in.tool.push_back({t.t_ps, t.pos});
+    in.tool = machine.carriage().samples();
     in.laser = rec.log("laser");
     for (const char* pin : {"busy", "uart_rx", "uart_tx"}) run.lines[pin] = rec.log(pin);
     in.t_job_start_ps = 0;

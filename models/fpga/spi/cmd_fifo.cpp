@@ -1,0 +1,23 @@
+#include "fpga/spi/cmd_fifo.hpp"
+
+namespace cnc::fpga {
+
+CmdFifo::CmdFifo(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg, std::size_t n_axes)
+    : sc_module(name), m_core(cfg.fifo_depth, n_axes) {}
+
+bool CmdFifo::push(std::int64_t edge, std::uint64_t seq, const std::vector<spi::AxisRate>& rates) {
+    const bool accepted = m_core.push(edge, seq, rates);
+    if (accepted) m_pushed.notify(sc_core::SC_ZERO_TIME);
+    return accepted;
+}
+
+FifoStatus CmdFifo::status_at(std::int64_t edge) const {
+    const std::uint32_t level = m_core.level_at(edge);
+    return {level, level >= m_core.depth(), m_core.drops_before(edge)};
+}
+
+bool CmdFifo::readable(std::size_t axis, std::int64_t edge) const { return m_core.readable(axis, edge); }
+
+std::optional<FifoRead> CmdFifo::read(std::size_t axis, std::int64_t edge) { return m_core.read(axis, edge); }
+
+}  // namespace cnc::fpga

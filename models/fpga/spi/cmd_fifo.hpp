@@ -1,0 +1,52 @@
+// cmd_fifo (seed 004 §2 FIFO bus): frames of rate words from spi_slave to the per-axis pulse generators, as a
+// hierarchical channel over core/cmd_fifo_core.hpp (register timing, full and empty behaviour documented there).
+// Its default event fires one delta after a frame is accepted, so a generator can be `sensitive << fifo`.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <systemc>
+#include <vector>
+
+#include "fpga/spi/core/cmd_fifo_core.hpp"
+#include "fpga/spi/core/spi_fpga_config.hpp"
+
+namespace cnc::fpga {
+
+struct FifoStatus {
+    std::uint32_t level = 0;
+    bool full = false;
+    std::uint64_t drops_before = 0;  // frames dropped at edges before the queried one
+};
+
+class CmdFifoWriteIf : public virtual sc_core::sc_interface {
+public:
+    // Called at edge `edge`'s time; false when the frame was dropped (full).
+    virtual bool push(std::int64_t edge, std::uint64_t seq, const std::vector<spi::AxisRate>& rates) = 0;
+    [[nodiscard]] virtual FifoStatus status_at(std::int64_t edge) const = 0;
+};
+
+class CmdFifoReadIf : public virtual sc_core::sc_interface {
+public:
+    [[nodiscard]] virtual bool readable(std::size_t axis, std::int64_t edge) const = 0;
+    virtual std::optional<FifoRead> read(std::size_t axis, std::int64_t edge) = 0;
+};
+
+class CmdFifo : public sc_core::sc_module, public CmdFifoWriteIf, public CmdFifoReadIf {
+public:
+    CmdFifo(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg, std::size_t n_axes);
+
+    bool push(std::int64_t edge, std::uint64_t seq, const std::vector<spi::AxisRate>& rates) override;
+    [[nodiscard]] FifoStatus status_at(std::int64_t edge) const override;
+    [[nodiscard]] bool readable(std::size_t axis, std::int64_t edge) const override;
+    std::optional<FifoRead> read(std::size_t axis, std::int64_t edge) override;
+    [[nodiscard]] const sc_core::sc_event& default_event() const override { return m_pushed; }
+
+    [[nodiscard]] const CmdFifoCore& core() const { return m_core; }
+
+private:
+    CmdFifoCore m_core;
+    sc_core::sc_event m_pushed;
+};
+
+}  // namespace cnc::fpga

@@ -1,0 +1,30 @@
+// What the spi-fpga FPGA logs for reports: frames seen by the SPI slave and rate words applied per axis.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "common/units.hpp"
+#include "spi/core/spi_frame.hpp"
+
+namespace cnc::fpga {
+
+struct SlaveFrameRecord {
+    std::uint64_t seq = 0;          // index in SpiSlave::frames()
+    TimePs t_snapshot_ps = 0;       // FrameStart edge: counters and status captured for the reply
+    TimePs t_end_ps = 0;            // FrameEnd edge: pushed to the FIFO (or rejected) here
+    std::size_t mosi_bits = 0;
+    bool accepted = false;          // whole frame with the kCmdRates header
+    bool dropped = false;           // accepted but the FIFO was full
+    std::vector<std::uint8_t> reply;  // bytes loaded for MISO (the words are in the generators' applied logs)
+};
+
+struct AppliedRate {
+    std::int64_t edge = 0;  // the word governs from this edge
+    TimePs t_ps = 0;
+    std::uint64_t seq = 0;  // frame it came from
+    spi::AxisRate rate;
+    bool stretched = false;  // period below pulse + 1, raised to it
+};
+
+}  // namespace cnc::fpga

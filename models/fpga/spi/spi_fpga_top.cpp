@@ -1,0 +1,69 @@
+#include "fpga/spi/spi_fpga_top.hpp"
+
+namespace cnc::fpga {
+
+namespace {
+const SpiFpgaConfig& validated(const SpiFpgaConfig& cfg) {
+    validate(cfg);
+    return cfg;
+}
+}  // namespace
+
+SpiFpgaTop::SpiFpgaTop(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg)
+    : sc_module(name),
+      sclk("sclk"),
+      mosi("mosi"),
+      ss("ss"),
+      miso("miso"),
+      step_x("step_x"),
+      dir_x("dir_x"),
+      step_y("step_y"),
+      dir_y("dir_y"),
+      spi_target("spi_target"),
+      m_cfg(validated(cfg)),
+      slave("spi_slave", m_cfg, kAxes),
+      fifo("cmd_fifo", m_cfg, kAxes),
+      pulse_gen_x("pulse_gen_x", m_cfg, 0),
+      pulse_gen_y("pulse_gen_y", m_cfg, 1),
+      step_counter_x("step_counter_x", m_cfg),
+      step_counter_y("step_counter_y", m_cfg) {
+    slave.sclk(sclk);
+    slave.mosi(mosi);
+    slave.ss(ss);
+    slave.miso(miso);
+    slave.fifo(fifo);
+    slave.counters(step_counter_x);
+    slave.counters(step_counter_y);
+    spi_target(slave);
+    pulse_gen_x.fifo(fifo);
+    pulse_gen_x.step(step_x);
+    pulse_gen_x.dir(dir_x);
+    pulse_gen_y.fifo(fifo);
+    pulse_gen_y.step(step_y);
+    pulse_gen_y.dir(dir_y);
+    // The counters read the generators' output pins back, as the RTL reads its own STEP/DIR registers.
+    step_counter_x.step(step_x);
+    step_counter_x.dir(dir_x);
+    step_counter_y.step(step_y);
+    step_counter_y.dir(dir_y);
+}
+
+const std::vector<AppliedRate>& SpiFpgaTop::applied(std::size_t axis) const {
+    return (axis == 0 ? pulse_gen_x : pulse_gen_y).applied();
+}
+
+std::int32_t SpiFpgaTop::count(std::size_t axis) const {
+    return (axis == 0 ? step_counter_x : step_counter_y).count();
+}
+
+std::uint64_t SpiFpgaTop::activations() const {
+    return slave.activations() + pulse_gen_x.activations() + pulse_gen_y.activations() +
+           step_counter_x.activations() + step_counter_y.activations();
+}
+
+void SpiFpgaTop::add_traces(sc_core::sc_trace_file* tf) const {
+    for (const auto* pin : {&sclk, &mosi, &ss}) sc_core::sc_trace(tf, *pin, pin->name());
+    for (const auto* pin : {&miso, &step_x, &dir_x, &step_y, &dir_y}) sc_core::sc_trace(tf, *pin, pin->name());
+}
+
+}  // namespace cnc::fpga

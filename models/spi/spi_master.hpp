@@ -1,0 +1,58 @@
+// SPI mode 0 master (a Raspberry-Pi-class host, seed 004 §1): transfer() is called from the host's SC_THREAD and
+// blocks for the transfer time of core/spi_timing.hpp while it drives SS low, toggles SCLK (one wake per SCLK
+// edge), shifts MOSI on falling edges and samples MISO on rising edges, MSB first. MISO is sampled as it was
+// just before the rising edge (a change at the same picosecond is not seen, the FPGA's clock convention).
+// With trace_wires = false the pins stay idle and the bytes are exchanged through the `target` port at the
+// SS fall and SS rise times instead; the slave then behaves exactly as over the wires.
+// Only one thread may call transfer() (the pins have one writer). Bind ss to a signal that starts high.
+#pragma once
+#include <cstdint>
+#include <systemc>
+#include <vector>
+
+#include "common/units.hpp"
+#include "spi/core/spi_timing.hpp"
+#include "spi/spi_slave_if.hpp"
+
+namespace cnc::spi {
+
+class SpiMaster : public sc_core::sc_module {
+public:
+    sc_core::sc_out<bool> sclk;
+    sc_core::sc_out<bool> mosi;
+    sc_core::sc_out<bool> ss;  // active low
+    sc_core::sc_in<bool> miso;
+    // Needed only when trace_wires is false.
+    sc_core::sc_port<SpiSlaveIf, 1, sc_core::SC_ZERO_OR_MORE_BOUND> target;
+
+    SpiMaster(const sc_core::sc_module_name& name, const SpiConfig& cfg);
+
+    // Full duplex: shifts `out` and returns as many bytes in `in`. Waits first if the previous SS rise was less
+    // than ss_idle_min ago. Returns at the SS rise.
+    void transfer(const std::vector<std::uint8_t>& out, std::vector<std::uint8_t>& in);
+
+    struct Transfer {
+        TimePs t_ss_fall_ps = 0;
+        TimePs t_ss_rise_ps = 0;
+        std::size_t bits = 0;
+    };
+    [[nodiscard]] const std::vector<Transfer>& transfers() const { return m_transfers; }
+    [[nodiscard]] TimePs ss_low_total_ps() const { return m_ss_low_total_ps; }  // link busy time
+    [[nodiscard]] const SpiConfig& config() const { return m_cfg; }
+    [[nodiscard]] std::uint64_t activations() const { return m_activations; }
+    void add_traces(sc_core::sc_trace_file* tf) const;
+
+private:
+    void end_of_elaboration() override;
+    void wait_until(TimePs t_ps);
+    void shift_on_wires(const std::vector<std::uint8_t>& out, std::vector<std::uint8_t>& in, TimePs t0);
+
+    const SpiConfig m_cfg;
+    TimePs m_idle_from_ps = 0;  // earliest next SS fall
+    bool m_busy = false;
+    std::vector<Transfer> m_transfers;
+    TimePs m_ss_low_total_ps = 0;
+    std::uint64_t m_activations = 0;
+};
+
+}  // namespace cnc::spi

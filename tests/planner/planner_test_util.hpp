@@ -1,0 +1,55 @@
+// Helpers for the planner tests: G-code text to a Program, dense sampling, distance to the programmed path.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "common/bad_input.hpp"
+#include "host/core/gcode.hpp"
+#include "host/core/planner/planner.hpp"
+
+namespace cnc::host::planner::test {
+
+inline Program gcode(const std::string& text) {
+    std::istringstream in(text);
+    return interpret(in, "t.nc", InterpreterOptions{});
+}
+
+inline PlannerConfig config(BlendMode mode, Profile profile = Profile::Trapezoidal) {
+    PlannerConfig cfg;
+    cfg.mode = mode;
+    cfg.profile = profile;
+    return cfg;
+}
+
+// Calls fn on samples every dt_s from 0 to the end (the end included).
+inline void for_each_sample(const Trajectory& traj, double dt_s, const std::function<void(const Sample&)>& fn) {
+    const double end = traj.duration_s();
+    const long n = static_cast<long>(std::ceil(end / dt_s));
+    for (long i = 0; i <= n; ++i) fn(traj.at(std::min(end, static_cast<double>(i) * dt_s)));
+}
+
+// Distance from p to the nearest programmed move (the contour error of a tool at p).
+inline double contour_error(const Program& program, geom::Vec2 p) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const ProgrammedMove& m : program.moves) best = std::min(best, m.path.distance_to(p));
+    return best;
+}
+
+// The message of the BadInput that fn throws ("" and a failure if none).
+inline std::string bad_input_message(const std::function<void()>& fn) {
+    try {
+        fn();
+    } catch (const BadInput& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no BadInput thrown";
+    return {};
+}
+
+}  // namespace cnc::host::planner::test

@@ -9,9 +9,9 @@
 
 namespace {
 
-// A scenario file under the test's working directory (ctest runs each test in its own process).
+// A scenario file in GoogleTest's temporary directory.
 std::string write_scenario(const std::string& name, const std::string& text) {
-    const std::string path = "scenario_test_" + name + ".toml";
+    const std::string path = ::testing::TempDir() + "scenario_test_" + name + ".toml";
     std::ofstream(path) << text;
     return path;
 }
@@ -40,7 +40,7 @@ TEST(Scenario, DefaultsAreTheSeed000ReferenceMachine) {
     EXPECT_EQ(s.fpga.watchdog_cycles, 5'000'000U);
     EXPECT_EQ(s.sender.ack_timeout_ps, 10 * cnc::kPsPerSec);
     EXPECT_EQ(s.job_format, cnc::sim::JobFormat::GCode);
-    EXPECT_EQ(s.job_path, "square.nc");
+    EXPECT_EQ(s.job_path, ::testing::TempDir() + "square.nc");  // relative to the scenario's folder
 }
 
 TEST(Scenario, SetOverridesTypedValuesAndBareStrings) {

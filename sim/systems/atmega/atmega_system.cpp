@@ -1,11 +1,170 @@
 #include "systems/atmega/atmega_system.hpp"
 
+#include <algorithm>
+#include <array>
+#include <memory>
+
+#include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
+#include "host/pc_program.hpp"
+#include "probes/edge_recorder.hpp"
+#include "probes/vcd_trace.hpp"
+#include "run/moves.hpp"
+#include "systems/atmega/atmega_report.hpp"
+#include "systems/atmega/enabled_steps.hpp"
+#include "systems/atmega/motion_windows.hpp"
+#include "systems/machine.hpp"
+#include "uart/cp2102.hpp"
 
 namespace cnc::sim {
 
-ArchRun run_atmega(const Scenario& scenario, const Job&) {
-    throw BadInput(scenario.file + ": scenario.architecture", "'atmega' is not implemented yet (issue 3)");
+namespace {
+
+namespace s3 = host::seed003;
+
+// The chip's timers run on after M30 (cli; sleep): the run ends when the firmware has stopped, checked this often.
+constexpr TimePs kStopCheckPs = 10 * kPsPerMs;
+
+// Every wire of the system, named as the pins are in every architecture (VCD and analyze scripts rely on it).
+struct Wires {
+    sc_core::sc_signal<bool> uart_rx{"uart_rx", true};  // CP2102 TXD -> PD0 RXD; idles high
+    sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // PD1 TXD -> CP2102 RXD
+    sc_core::sc_signal<bool> step_x{"step_x", false}, dir_x{"dir_x", false}, n_enbl_x{"n_enbl_x", false};
+    sc_core::sc_signal<bool> step_y{"step_y", false}, dir_y{"dir_y", false}, n_enbl_y{"n_enbl_y", false};
+    sc_core::sc_signal<bool> laser{"laser", false};  // PB1, the HEADER bit of the start byte
+
+    [[nodiscard]] std::array<const sc_core::sc_signal<bool>*, 9> all() const {
+        return {&step_x, &dir_x, &n_enbl_x, &step_y, &dir_y, &n_enbl_y, &laser, &uart_rx, &uart_tx};
+    }
+};
+
+std::string firmware_path(const Scenario& s) {
+    if (!s.atmega.firmware.empty()) return s.atmega.firmware;
+    return s.atmega.g01_timer2_prescaler == 256 ? CNC_SEED003_T2CS110_ELF : CNC_SEED003_ELF;
+}
+
+avr::AvrCoreConfig avr_config(const Scenario& s) {
+    avr::AvrCoreConfig cfg;
+    cfg.firmware_elf = firmware_path(s);
+    cfg.pins = avr::parse_pin_map(s.atmega.pins, s.file + ": avr.pins");
+    cfg.where = s.file + ": avr.firmware";
+    cfg.quantum_cycles = s.atmega.quantum_cycles;
+    return cfg;
+}
+
+uart::Cp2102Config link_config(const Scenario& s) {
+    uart::Cp2102Config link = s.link;
+    if (!s.atmega.link_baud_set) link.requested_baud = s3::kSeedBaud;  // seed 003 §3.4: CBR_57600
+    return link;
+}
+
+// The metrics' moves: one per motion that ran, its window from the PORTB pins. A G00 runs each axis at v_max
+// on its own (the seed's dog-leg), so its commanded per-axis rates are v_max, not the path feed split.
+std::vector<metrics::MoveSpec> executed_moves(const Scenario& s, const Job& job, const s3::Plan& plan,
+                                              const std::vector<MotionWindow>& windows) {
+    std::vector<metrics::MoveSpec> moves = commanded_moves(&*job.program, s3::motion_segments(plan, s.machine),
+                                                           s.machine, s.interpreter.start_mm);
+    moves.resize(windows.size());
+    for (std::size_t i = 0; i < windows.size(); ++i) {
+        metrics::MoveSpec& m = moves[i];
+        m.t_begin_ps = windows[i].t_begin_ps;
+        m.t_end_ps = windows[i].t_end_ps;
+        if (m.rapid) {
+            const double v_mm_per_s = m.feed_mm_per_min / 60.0;
+            m.rate_steps_per_s = {m.steps[0] != 0 ? v_mm_per_s * s.machine.x.steps_per_mm() : 0.0,
+                                  m.steps[1] != 0 ? v_mm_per_s * s.machine.y.steps_per_mm() : 0.0};
+        }
+    }
+    return moves;
+}
+
+}  // namespace
+
+ArchRun run_atmega(const Scenario& s, const Job& job) {
+    if (!job.program) {
+        throw BadInput(s.file + ": scenario.job",
+                       "a steps file is seed 000's format, run only by fpga-uart; the atmega PC program reads G-code");
+    }
+    const s3::Plan plan = s3::plan_program(*job.program, s.machine, s.atmega.pc);
+    const avr::AvrCoreConfig avr_cfg = avr_config(s);
+
+    Wires w;
+    uart::Cp2102 cp2102("cp2102", link_config(s));
+    cp2102.txd(w.uart_rx);
+    cp2102.rxd(w.uart_tx);
+    host::PcProgram pc("host", s.sender, cp2102, s3::transfers(plan));
+    avr::AvrCore mcu("atmega328p", avr_cfg);
+    mcu.step_x(w.step_x);
+    mcu.dir_x(w.dir_x);
+    mcu.en_x(w.n_enbl_x);
+    mcu.step_y(w.step_y);
+    mcu.dir_y(w.dir_y);
+    mcu.en_y(w.n_enbl_y);
+    mcu.head(w.laser);
+    mcu.txd(w.uart_tx);
+    mcu.rxd(w.uart_rx);
+    mech::Drv8825Config driver = s.driver;
+    driver.dir_high_is_positive = false;  // seed 003 §2.2: DIR 0 = CW = +X / +Y
+    Machine machine("machine", s.machine, driver, s.interpreter.start_mm);
+    machine.step_x(w.step_x);
+    machine.dir_x(w.dir_x);
+    machine.n_enbl_x(w.n_enbl_x);
+    machine.step_y(w.step_y);
+    machine.dir_y(w.dir_y);
+    machine.n_enbl_y(w.n_enbl_y);
+    machine.laser(w.laser);
+    EdgeRecorder rec("probes");
+    for (const sc_core::sc_signal<bool>* sig : w.all()) rec.watch(*sig, sig->basename());
+    std::unique_ptr<VcdTrace> vcd;
+    if (!s.vcd_path.empty()) {
+        vcd = std::make_unique<VcdTrace>(s.vcd_path);
+        for (const sc_core::sc_signal<bool>* sig : w.all()) vcd->trace(*sig);
+    }
+
+    const auto limit_ps = static_cast<TimePs>(s.max_sim_s * static_cast<double>(kPsPerSec));
+    auto t_now = static_cast<TimePs>(sc_core::sc_time_stamp().value());
+    while (!mcu.stopped() && t_now < limit_ps) {
+        const TimePs step_ps = std::min(kStopCheckPs, limit_ps - t_now);
+        sc_core::sc_start(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(step_ps)));
+        t_now = static_cast<TimePs>(sc_core::sc_time_stamp().value());
+    }
+    vcd.reset();
+
+    ArchRun run;
+    const std::vector<MotionWindow> windows = motion_windows(
+        plan, {rec.log("n_enbl_x"), rec.log("n_enbl_y"), rec.log("dir_x"), rec.log("dir_y"), rec.log("laser")},
+        t_now);
+    metrics::RunInput& in = run.input;
+    in.axes = {metrics::AxisTrace{"x", enabled_steps(rec.log("step_x"), rec.log("n_enbl_x")), rec.log("dir_x"),
+                                  s.machine.x.steps_per_mm(), false},
+               metrics::AxisTrace{"y", enabled_steps(rec.log("step_y"), rec.log("n_enbl_y")), rec.log("dir_y"),
+                                  s.machine.y.steps_per_mm(), false}};
+    in.moves = executed_moves(s, job, plan, windows);
+    for (const mech::ToolSample& t : machine.carriage().samples()) in.tool.push_back({t.t_ps, t.pos});
+    in.laser = rec.log("laser");
+    in.t_job_start_ps = 0;
+    in.t_job_end_ps = mcu.chip().stop_cycle() ? mcu.cycle_ps(*mcu.chip().stop_cycle()) : t_now;
+    for (const char* pin : {"uart_rx", "uart_tx", "n_enbl_x", "n_enbl_y"}) run.lines[pin] = rec.log(pin);
+    run.lines["step_x_pin"] = rec.log("step_x");  // the raw pins: the timers toggle them while EN is high too
+    run.lines["step_y_pin"] = rec.log("step_y");
+
+    run.warnings = plan.warnings;
+    const AtmegaFacts facts{plan, s.machine, pc, cp2102, mcu, windows, in.axes[1].step, avr_cfg.firmware_elf,
+                            mcu.chip().rx_clock().baud()};
+    for (std::string& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
+    run.details = details_json(facts);
+    run.details_text = details_text(facts);
+
+    if (!pc.finished()) {
+        run.ok = false;
+        run.failure = mcu.stopped() ? "the firmware stopped before the PC program had sent the job"
+                                    : "the job did not finish within scenario.max_sim_s (CAD2G waits for a confirm "
+                                      "byte without a timeout)";
+    } else if (!mcu.stopped()) {
+        run.ok = false;
+        run.failure = "the firmware did not reach M30 within scenario.max_sim_s";
+    }
+    return run;
 }
 
 }  // namespace cnc::sim

@@ -1,0 +1,356 @@
+#include "avr/avr_chip.hpp"
+
+#include <algorithm>
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
+#include "avr/atmega328p_regs.hpp"
+#include "avr/core/elf_check.hpp"
+#include "common/bad_input.hpp"
+
+#include <avr_ioport.h>
+#include <avr_timer.h>
+#include <avr_uart.h>
+#include <sim_avr.h>
+#include <sim_cycle_timers.h>
+#include <sim_elf.h>
+#include <sim_interrupts.h>
+#include <sim_io.h>
+#include <sim_regbit.h>
+
+namespace cnc::avr {
+
+namespace {
+
+// ATmega328P interrupt vector numbers (datasheet "Interrupt Vectors in ATmega328P").
+constexpr int kVecTimer2CompA = 7;  // the first timer vector
+constexpr int kVecUsartRx = 18;
+constexpr int kVecUsartUdre = 19;
+constexpr int kVecUsartTx = 20;
+constexpr std::uint16_t kFirstPortAddr = reg::kPinb;
+
+void quiet_logger(avr_t*, const int level, const char* format, va_list ap) {
+    if (level <= LOG_ERROR) std::vfprintf(stderr, format, ap);  // toolchain.md §3: errors only, to stderr
+}
+
+void no_sleep(avr_t*, avr_cycle_count_t) {}  // toolchain.md pitfall 1: the default usleep()s to wall time
+
+avr_cycle_count_t no_op_timer(avr_t*, avr_cycle_count_t, void*) { return 0; }
+
+}  // namespace
+
+struct AvrChip::PortHooks {
+    std::array<avr_io_write_t, 9> write{};
+    std::array<void*, 9> write_param{};
+    std::array<avr_io_read_t, 9> read{};
+    std::array<void*, 9> read_param{};
+};
+
+struct AvrChip::Bridge {
+    static void write(avr_t*, avr_io_addr_t addr, std::uint8_t v, void* chip) {
+        static_cast<AvrChip*>(chip)->io_write(addr, v);
+    }
+    static std::uint8_t read(avr_t*, avr_io_addr_t addr, void* chip) {
+        return static_cast<AvrChip*>(chip)->io_read(addr);
+    }
+    static avr_cycle_count_t scheduler(avr_t* avr, avr_cycle_count_t, void* chip) {
+        const auto next = static_cast<AvrChip*>(chip)->process_events(static_cast<Cycle>(avr->cycle));
+        return next ? static_cast<avr_cycle_count_t>(*next) : 0;
+    }
+    static void pending(avr_irq_t* irq, std::uint32_t value, void* chip) {
+        if (value != 0) return;
+        auto* self = static_cast<AvrChip*>(chip);
+        self->vector_cleared(self->m_vectors.at(irq->irq / 256));  // sim_interrupts.c: irq base = vector * 256
+    }
+    static void running(avr_irq_t* irq, std::uint32_t value, void* chip) {
+        if (value == 0) return;
+        auto* self = static_cast<AvrChip*>(chip);
+        self->vector_entered(self->m_vectors.at(irq->irq / 256));
+    }
+};
+
+AvrChip::AvrChip(const AvrCoreConfig& cfg)
+    : m_f_cpu_hz(cfg.f_cpu_hz), m_usart(static_cast<UsartSink&>(*this)), m_port_hooks(std::make_unique<PortHooks>()) {
+    if (cfg.mcu != "atmega328p")
+        throw BadInput(cfg.where, "MCU '" + cfg.mcu + "' is not modelled (only atmega328p is)");
+    if (cfg.f_cpu_hz == 0) throw BadInput(cfg.where, "the AVR clock frequency must be above 0 Hz");
+    validate(cfg.pins, cfg.where);
+    for (std::size_t i = 0; i < kPinSignals.size(); ++i) m_line_pins[i] = cfg.pins.at(kPinSignals[i]);
+    (void)check_avr_elf(cfg.firmware_elf, cfg.mcu, cfg.f_cpu_hz, cfg.where);
+
+    avr_global_logger_set(quiet_logger);
+    elf_firmware_t fw;
+    std::memset(&fw, 0, sizeof fw);
+    if (elf_read_firmware(cfg.firmware_elf.c_str(), &fw) != 0)
+        throw BadInput(cfg.where, "libsimavr could not load the firmware ELF '" + cfg.firmware_elf + "'");
+    m_avr = avr_make_mcu_by_name(cfg.mcu.c_str());
+    if (m_avr == nullptr) throw BadInput(cfg.where, "libsimavr has no MCU '" + cfg.mcu + "'");
+    avr_init(m_avr);
+    fw.frequency = cfg.f_cpu_hz;
+    avr_load_firmware(m_avr, &fw);
+    std::free(fw.flash);
+    std::free(fw.eeprom);
+    m_avr->frequency = cfg.f_cpu_hz;
+    m_avr->sleep = no_sleep;
+    std::uint32_t flags = 0;  // toolchain.md pitfall 2 (simavr's UART is bypassed, but keep it quiet anyway)
+    avr_ioctl(m_avr, AVR_IOCTL_UART_SET_FLAGS('0'), &flags);
+
+    TimerSink& sink = *this;
+    m_timers[0] = std::make_unique<TimerUnit>(kTimer0, m_prescaler01, sink);
+    m_timers[1] = std::make_unique<TimerUnit>(kTimer1, m_prescaler01, sink);
+    m_timers[2] = std::make_unique<TimerUnit>(kTimer2, m_prescaler2, sink);
+    install_hooks();
+    m_initial[kTxdLine] = true;  // the USART line idles high
+    m_level = m_initial;
+}
+
+AvrChip::~AvrChip() {
+    if (m_avr == nullptr) return;
+    avr_terminate(m_avr);
+    std::free(m_avr);
+}
+
+void AvrChip::install_hooks() {
+    avr_t* avr = m_avr;
+    for (int i = 0; i < avr->interrupts.vector_count; ++i) {
+        avr_int_vector_t* v = avr->interrupts.vector[i];
+        if (v->vector < m_vectors.size()) m_vectors[v->vector] = v;
+    }
+    for (int n = kVecTimer2CompA; n <= kVecUsartTx; ++n)
+        if (m_vectors[static_cast<std::size_t>(n)] == nullptr)
+            throw std::runtime_error("libsimavr's atmega328p lacks interrupt vector " + std::to_string(n));
+    // RXC0 and UDRE0 stay set while their condition holds (sticky); they are re-raised after their vector runs.
+    for (const int n : {kVecUsartRx, kVecUsartUdre}) {
+        avr_int_vector_t* v = m_vectors[static_cast<std::size_t>(n)];
+        v->raise_sticky = 1;
+        avr_irq_register_notify(v->irq + AVR_INT_IRQ_PENDING, Bridge::pending, this);
+    }
+    avr_irq_register_notify(m_vectors[kVecUsartTx]->irq + AVR_INT_IRQ_RUNNING, Bridge::running, this);
+
+    // simavr's Timer1 connects PB0 (ICP1) to its input capture; capture is not modelled here, and simavr's
+    // version would capture a TCNT1 of 0 from its idle timer on every DIR_X edge.
+    avr_irq_t* icp_pin = avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('B'), IOPORT_IRQ_PIN0);
+    avr_irq_t* icp_in = avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('1'), TIMER_IRQ_IN_ICP);
+    if (icp_pin != nullptr && icp_in != nullptr) avr_unconnect_irq(icp_pin, icp_in);
+
+    const auto take_write = [&](std::uint16_t addr) {
+        auto& io = avr->io[AVR_DATA_TO_IO(addr)];
+        io.w.c = Bridge::write;
+        io.w.param = this;
+    };
+    const auto take_read = [&](std::uint16_t addr) {
+        auto& io = avr->io[AVR_DATA_TO_IO(addr)];
+        io.r.c = Bridge::read;
+        io.r.param = this;
+    };
+    for (std::uint16_t a = kFirstPortAddr; a < kFirstPortAddr + 9; ++a) {
+        const std::size_t i = a - kFirstPortAddr;
+        auto& io = avr->io[AVR_DATA_TO_IO(a)];
+        m_port_hooks->write[i] = io.w.c;
+        m_port_hooks->write_param[i] = io.w.param;
+        m_port_hooks->read[i] = io.r.c;
+        m_port_hooks->read_param[i] = io.r.param;
+        take_write(a);
+        if (i % 3 == 0) take_read(a);  // PINx
+    }
+    using namespace reg;
+    for (const std::uint16_t a : {kTifr0,  kTifr1,  kTifr2,  kGtccr,  kTccr0a, kTccr0b, kTcnt0,  kOcr0a,  kOcr0b,
+                                  kTimsk0, kTimsk1, kTimsk2, kTccr1a, kTccr1b, kTccr1c, kTcnt1l, kTcnt1h, kIcr1l,
+                                  kIcr1h,  kOcr1al, kOcr1ah, kOcr1bl, kOcr1bh, kTccr2a, kTccr2b, kTcnt2,  kOcr2a,
+                                  kOcr2b,  kAssr,   kUcsr0a, kUcsr0b, kUcsr0c, kUbrr0l, kUbrr0h, kUdr0})
+        take_write(a);
+    // Registers whose value is computed when read: TCNTn, Timer1's TEMP pairs, UCSR0A, UDR0.
+    for (const std::uint16_t a : {kTcnt0, kTcnt1l, kTcnt1h, kIcr1l, kIcr1h, kTcnt2, kUcsr0a, kUdr0}) take_read(a);
+    // Datasheet §20.11 reset values (simavr's UART reset sets TXEN0 "to allow printf").
+    avr->data[kUcsr0a] = m_usart.ucsra();
+    avr->data[kUcsr0b] = m_usart.ucsrb();
+    avr->data[kUcsr0c] = m_usart.ucsrc();
+}
+
+Cycle AvrChip::now() const { return static_cast<Cycle>(m_avr->cycle); }
+Cycle AvrChip::cycle() const { return now(); }
+
+ChipState AvrChip::run_until(Cycle limit) {
+    if (m_state == ChipState::Running && limit > now()) {
+        // Bounds a sleep: a sleeping simavr core jumps straight to its next cycle timer.
+        avr_cycle_timer_register(m_avr, static_cast<avr_cycle_count_t>(limit - now()), no_op_timer, this);
+        while (now() < limit) {
+            const int st = avr_run(m_avr);
+            if (st != cpu_Done && st != cpu_Crashed && st != cpu_Stopped) continue;
+            m_state = st == cpu_Done ? ChipState::Done : ChipState::Crashed;
+            m_stop_cycle = now();
+            if (m_state == ChipState::Crashed)
+                std::fprintf(stderr, "avr: the firmware crashed at cycle %lld (pc 0x%x)\n",
+                             static_cast<long long>(now()), static_cast<unsigned>(m_avr->pc));
+            break;
+        }
+        avr_cycle_timer_cancel(m_avr, no_op_timer, this);
+    }
+    if (m_state != ChipState::Running && limit > now()) {
+        // The CPU has stopped (cli; sleep) but the timers and the USART run on, as on silicon: jump to `limit`
+        // and let the cycle timers catch up (each is called with its exact cycle).
+        m_avr->cycle = static_cast<avr_cycle_count_t>(limit);
+        avr_cycle_timer_process(m_avr);
+    }
+    return m_state;
+}
+
+std::vector<LineEvent> AvrChip::take_events(Cycle upto) {
+    std::stable_sort(m_events.begin(), m_events.end(),
+                     [](const LineEvent& a, const LineEvent& b) { return a.cycle < b.cycle; });
+    const auto split =
+        std::find_if(m_events.begin(), m_events.end(), [upto](const LineEvent& e) { return e.cycle > upto; });
+    std::vector<LineEvent> out(m_events.begin(), split);
+    m_events.erase(m_events.begin(), split);
+    return out;
+}
+
+void AvrChip::deliver_rx(Cycle start, Cycle decision, const uart::RxFrame& frame) {
+    m_usart.receive(start, decision, frame);
+    reschedule();
+}
+
+// ---- scheduler ----
+
+std::optional<Cycle> AvrChip::next_event() const {
+    std::optional<Cycle> best = m_usart.next_event();
+    for (const auto& t : m_timers) {
+        const auto e = t->next_event();
+        if (e && (!best || *e < *best)) best = e;
+    }
+    return best;
+}
+
+std::optional<Cycle> AvrChip::process_events(Cycle c) {
+    m_in_scheduler = true;
+    for (auto t = next_event(); t && *t <= c; t = next_event()) {
+        for (auto& timer : m_timers) timer->advance_to(*t);
+        m_usart.advance_to(*t);
+    }
+    m_in_scheduler = false;
+    return next_event();
+}
+
+void AvrChip::reschedule() {
+    if (m_in_scheduler) return;  // the scheduler returns its next time to simavr itself
+    const auto next = next_event();
+    if (!next) {
+        avr_cycle_timer_cancel(m_avr, Bridge::scheduler, this);
+        return;
+    }
+    const Cycle in = std::max<Cycle>(0, *next - now());
+    avr_cycle_timer_register(m_avr, static_cast<avr_cycle_count_t>(in), Bridge::scheduler, this);
+}
+
+// ---- interrupts ----
+
+void AvrChip::raise(int vector_number) {
+    avr_raise_interrupt(m_avr, m_vectors.at(static_cast<std::size_t>(vector_number)));
+}
+
+void AvrChip::sync_level_vector(int vector_number, bool flag) {
+    avr_int_vector_t* v = m_vectors.at(static_cast<std::size_t>(vector_number));
+    if (flag) {
+        if (v->pending == 0) avr_raise_interrupt(m_avr, v);
+        return;
+    }
+    if (v->pending != 0) avr_clear_interrupt(m_avr, v);
+    avr_regbit_clear(m_avr, v->raised);
+}
+
+void AvrChip::vector_cleared(avr_int_vector_t* v) {
+    // A level interrupt whose vector was just taken (or cleared) fires again while its condition holds.
+    const bool holds = v->vector == kVecUsartRx ? m_usart.rxc() : m_usart.udre();
+    if (holds && avr_regbit_get(m_avr, v->enable) != 0) avr_raise_interrupt(m_avr, v);
+}
+
+void AvrChip::vector_entered(avr_int_vector_t* v) {
+    if (v->vector == kVecUsartTx) m_usart.clear_txc(now());  // §20.6.3: TXC0 clears when its vector runs
+}
+
+void AvrChip::usart_flags(Cycle) {
+    sync_level_vector(kVecUsartRx, m_usart.rxc());
+    sync_level_vector(kVecUsartUdre, m_usart.udre());
+    sync_level_vector(kVecUsartTx, m_usart.txc());
+}
+
+void AvrChip::usart_txd(Cycle c, bool level) { record(c, kTxdLine, level); }
+
+void AvrChip::timer_flag(char timer, TimerFlag flag, Cycle) { raise(timer_vector(timer, flag)); }
+
+void AvrChip::timer_output(char, Cycle c) { update_lines(c); }
+
+// ---- ports and output lines ----
+
+void AvrChip::port_write(std::uint16_t addr, std::uint8_t v) {
+    const std::size_t i = addr - kFirstPortAddr;
+    if (i % 3 == 0) {  // PINx: writing a one toggles the PORTx bit (SBI: only the addressed bit; CBI: nothing)
+        bool set = false;
+        if (const auto bit = single_bit_instruction(addr, &set)) v = set ? static_cast<std::uint8_t>(1U << *bit) : 0;
+    }
+    if (m_port_hooks->write[i] != nullptr)
+        m_port_hooks->write[i](m_avr, addr, v, m_port_hooks->write_param[i]);
+    else
+        m_avr->data[addr] = v;
+    update_lines(now());
+}
+
+std::uint8_t AvrChip::port_read(std::uint16_t addr) {  // PINx only
+    const std::size_t i = addr - kFirstPortAddr;
+    std::uint8_t v = m_port_hooks->read[i] != nullptr ? m_port_hooks->read[i](m_avr, addr, m_port_hooks->read_param[i])
+                                                      : m_avr->data[addr];
+    // An output pin reads its level, which a connected compare output drives.
+    const char port = static_cast<char>('B' + i / 3);
+    const std::uint8_t ddr = m_avr->data[addr + 1];
+    for (int bit = 0; bit < 8; ++bit) {
+        if (((ddr >> bit) & 1U) == 0) continue;
+        v = static_cast<std::uint8_t>(pin_level(Pin{port, bit}) ? (v | (1U << bit)) : (v & ~(1U << bit)));
+    }
+    return v;
+}
+
+bool AvrChip::pin_level(const Pin& p) const {
+    const std::uint16_t base = static_cast<std::uint16_t>(kFirstPortAddr + 3 * (p.port - 'B'));
+    const bool output = ((m_avr->data[base + 1] >> p.bit) & 1U) != 0;
+    const bool port = ((m_avr->data[base + 2] >> p.bit) & 1U) != 0;
+    // Compare outputs (datasheet pin alternate functions): OC0A PD6, OC0B PD5, OC1A PB1, OC1B PB2, OC2A PB3,
+    // OC2B PD3. They override the port value while their COM bits connect them and the DDR bit is set.
+    struct Oc {
+        char port;
+        int bit;
+        int timer;
+        Channel ch;
+    };
+    static constexpr std::array<Oc, 6> kOc{{{'D', 6, 0, Channel::A},
+                                            {'D', 5, 0, Channel::B},
+                                            {'B', 1, 1, Channel::A},
+                                            {'B', 2, 1, Channel::B},
+                                            {'B', 3, 2, Channel::A},
+                                            {'D', 3, 2, Channel::B}}};
+    if (output) {
+        for (const Oc& oc : kOc) {
+            if (oc.port != p.port || oc.bit != p.bit) continue;
+            const TimerUnit& t = *m_timers[static_cast<std::size_t>(oc.timer)];
+            if (t.output_connected(oc.ch)) return t.output_level(oc.ch);
+        }
+    }
+    // An input pin reads its pull-up (PORT bit set) or floats; the DRV8825's STEP, DIR and nENBL inputs have
+    // internal pull-downs (DRV8825 datasheet §7.5), so a floating pin is low.
+    return port;
+}
+
+void AvrChip::update_lines(Cycle c) {
+    for (std::size_t i = 0; i < m_line_pins.size(); ++i) record(c, static_cast<int>(i), pin_level(m_line_pins[i]));
+}
+
+void AvrChip::record(Cycle c, int line, bool level) {
+    auto& cur = m_level[static_cast<std::size_t>(line)];
+    if (cur == level) return;
+    cur = level;
+    m_events.push_back({c, line, level});
+}
+
+}  // namespace cnc::avr

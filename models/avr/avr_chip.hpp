@@ -1,0 +1,142 @@
+// The ATmega328P as libsimavr runs it, made to behave as the datasheet where libsimavr 1.6 does not, with its
+// outputs time-stamped by clock cycle. No SystemC here: AvrCore (avr_core.hpp) is the SystemC shell.
+//
+// What runs where:
+//   * libsimavr executes the instructions, the interrupt controller, the I/O ports and the other peripherals.
+//   * Timer0, Timer1, Timer2 and USART0 are NOT simavr's: their I/O registers are re-routed (avr->io[] read and
+//     write handlers replaced after avr_init) to TimerUnit / UsartUnit, which are driven by one simavr cycle
+//     timer at their next event. simavr 1.6's own timer model registers no timer when prescaler*(OCR+1) <= 1
+//     (no compare match with OCR = 0 at /1), drops a TCNT written while the clock is stopped when the clock
+//     starts (peers.md §7), ignores the free-running prescaler and compare match blocking, mishandles an OCR
+//     written below TCNT in CTC mode and reads a stopped timer's TCNT as 0; its USART sends a byte in 11 bit
+//     times (toolchain.md pitfall 4), clears UDRE0 for a whole byte time, latches the baud rate at the UBRR0L
+//     write, raises RXC0 one such byte time after a byte is injected on UART_IRQ_INPUT, and has no line level
+//     at all. Replacing the units is simpler and more exact than patching them.
+//   * Interrupt flags still go through simavr's vectors (avr_raise_interrupt / avr_clear_interrupt). simavr only
+//     queues an interrupt whose enable bit is set at the moment it is raised, so writes to TIMSKn and UCSR0B
+//     re-raise flags that are already set, and RXC0 / UDRE0 (level interrupts on silicon) are re-raised after
+//     the CPU takes their vector while the condition holds.
+//   * Port writes are wrapped so that the model knows every output pin level, including the OCnx overrides.
+//     Two more silicon details are restored there: SBI/CBI on PINx toggle only the addressed bit (simavr 1.6
+//     writes the whole read-modify-written byte, toggling every other pin that reads 1), and SBI/CBI on TIFRn
+//     clear only the addressed flag (datasheet "I/O Memory": on the ATmega328P SBI and CBI work on the one bit).
+//
+// Time convention: cycle n is the n-th clock since reset (n * 62.5 ns at 16 MHz). An instruction starting at
+// cycle n does its I/O reads and writes at cycle n (simavr executes it whole), so a pin written by it changes at
+// n * 62.5 ns; timer and USART events happen at their exact cycles, also inside multi-cycle instructions.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "avr/core/avr_config.hpp"
+#include "avr/core/prescaler.hpp"
+#include "avr/core/timer_unit.hpp"
+#include "avr/core/usart_unit.hpp"
+#include "uart/core/line_receiver.hpp"
+
+struct avr_t;
+struct avr_int_vector_t;
+
+namespace cnc::avr {
+
+enum class ChipState { Running, Done, Crashed };
+
+// Output lines: 0..6 = kPinSignals (step_x ... head), 7 = TXD.
+inline constexpr int kTxdLine = 7;
+inline constexpr int kLineCount = 8;
+
+struct LineEvent {
+    Cycle cycle = 0;
+    int line = 0;
+    bool level = false;
+};
+
+class AvrChip : private TimerSink, private UsartSink {
+public:
+    // Loads and checks the ELF; throws BadInput for a missing, non-AVR or wrong-MCU ELF.
+    explicit AvrChip(const AvrCoreConfig& cfg);
+    ~AvrChip() override;
+    AvrChip(const AvrChip&) = delete;
+    AvrChip& operator=(const AvrChip&) = delete;
+
+    [[nodiscard]] Cycle cycle() const;
+    // Runs until the cycle count reaches `limit` (instructions are atomic, so it may end a few cycles later, or
+    // one cycle later when waking from sleep). After the firmware has stopped (cli; sleep) or crashed the CPU
+    // executes nothing, but the timers and the USART keep running to `limit`, as on silicon.
+    ChipState run_until(Cycle limit);
+    [[nodiscard]] ChipState state() const { return m_state; }
+    [[nodiscard]] std::optional<Cycle> stop_cycle() const { return m_stop_cycle; }
+
+    // Output level changes with cycle <= upto, in time order, removed from the record.
+    [[nodiscard]] std::vector<LineEvent> take_events(Cycle upto);
+    [[nodiscard]] bool initial_level(int line) const { return m_initial[static_cast<std::size_t>(line)]; }
+
+    // The receiver's bit clock and frame format now (for decoding the RXD line).
+    [[nodiscard]] uart::BitClock rx_clock() const { return m_usart.bit_clock(m_f_cpu_hz); }
+    [[nodiscard]] uart::FrameFormat rx_format() const { return m_usart.format(); }
+    // A frame decoded from RXD, started at cycle `start`, decided at cycle `decision` (<= cycle()): the byte is
+    // in the receive buffer from `decision` on.
+    void deliver_rx(Cycle start, Cycle decision, const uart::RxFrame& frame);
+
+    // Cycle of the next timer or USART event, if any is scheduled.
+    [[nodiscard]] std::optional<Cycle> next_event() const;
+
+    [[nodiscard]] const UsartUnit& usart() const { return m_usart; }
+    [[nodiscard]] const TimerUnit& timer(int n) const { return *m_timers.at(static_cast<std::size_t>(n)); }
+    [[nodiscard]] std::int64_t f_cpu_hz() const { return m_f_cpu_hz; }
+
+private:
+    struct Bridge;     // the C callbacks handed to libsimavr (avr_chip.cpp)
+    struct PortHooks;  // simavr's own PINx/DDRx/PORTx handlers, called from the wrappers
+
+    // I/O bus (chip_io.cpp), called from the simavr read/write hooks at the current cycle.
+    void io_write(std::uint16_t addr, std::uint8_t v);
+    [[nodiscard]] std::uint8_t io_read(std::uint16_t addr);
+    // Scheduler: processes every timer/USART event at cycles <= c; returns the next event cycle.
+    std::optional<Cycle> process_events(Cycle c);
+    void vector_cleared(avr_int_vector_t* v);
+    void vector_entered(avr_int_vector_t* v);
+
+    void timer_flag(char timer, TimerFlag flag, Cycle c) override;
+    void timer_output(char timer, Cycle c) override;
+    void usart_flags(Cycle c) override;
+    void usart_txd(Cycle c, bool level) override;
+
+    void install_hooks();
+    void reschedule();
+    [[nodiscard]] Cycle now() const;
+    void raise(int vector_number);
+    void sync_level_vector(int vector_number, bool flag);
+    void port_write(std::uint16_t addr, std::uint8_t v);
+    [[nodiscard]] std::uint8_t port_read(std::uint16_t pin_addr);
+    [[nodiscard]] bool pin_level(const Pin& p) const;
+    void update_lines(Cycle c);
+    void record(Cycle c, int line, bool level);
+    [[nodiscard]] static int timer_vector(char timer, TimerFlag flag);
+    void write_timer_flags(std::uint16_t addr, std::uint8_t v);
+    void write_timsk(std::uint16_t addr, std::uint8_t v);
+    void write_gtccr(std::uint8_t v);
+    [[nodiscard]] std::optional<int> single_bit_instruction(std::uint16_t addr, bool* set) const;
+
+    const std::int64_t m_f_cpu_hz;
+    std::array<Pin, kPinSignals.size()> m_line_pins{};  // kPinSignals order
+    Prescaler m_prescaler01;                            // Timer0 and Timer1 (§17)
+    Prescaler m_prescaler2;                             // Timer2 (§18.10)
+    std::array<std::unique_ptr<TimerUnit>, 3> m_timers;
+    UsartUnit m_usart;
+    std::uint8_t m_temp16 = 0;  // Timer1's TEMP register for 16-bit accesses (§16.3)
+    avr_t* m_avr = nullptr;
+    std::unique_ptr<PortHooks> m_port_hooks;
+    std::array<avr_int_vector_t*, 26> m_vectors{};  // simavr's interrupt vectors by number (0 = none)
+    ChipState m_state = ChipState::Running;
+    std::optional<Cycle> m_stop_cycle;
+    bool m_in_scheduler = false;
+    std::array<bool, kLineCount> m_initial{};
+    std::array<bool, kLineCount> m_level{};
+    std::vector<LineEvent> m_events;
+};
+
+}  // namespace cnc::avr

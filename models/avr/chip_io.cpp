@@ -1,0 +1,243 @@
+// The I/O registers of Timer0/1/2, the prescalers, USART0 and the ports, as the AVR core reads and writes them.
+#include <cstdio>
+
+#include "avr/atmega328p_regs.hpp"
+#include "avr/avr_chip.hpp"
+
+#include <sim_avr.h>
+#include <sim_interrupts.h>
+#include <sim_regbit.h>
+
+namespace cnc::avr {
+
+using namespace reg;
+
+namespace {
+
+// TIFRn / TIMSKn bit -> timer flag: TOVn (bit 0), OCFnA (1), OCFnB (2), ICF1 (5, Timer1 only).
+std::optional<TimerFlag> flag_of_bit(int bit) {
+    switch (bit) {
+        case 0: return TimerFlag::Overflow;
+        case 1: return TimerFlag::CompareA;
+        case 2: return TimerFlag::CompareB;
+        case 5: return TimerFlag::Capture;
+        default: return std::nullopt;
+    }
+}
+
+// TIFR0..2 and TIMSK0..2 are consecutive: the timer a flag or mask register belongs to.
+char timer_of(std::uint16_t flag_or_mask_reg) {
+    return static_cast<char>('0' +
+                             (flag_or_mask_reg >= kTimsk0 ? flag_or_mask_reg - kTimsk0 : flag_or_mask_reg - kTifr0));
+}
+
+}  // namespace
+
+int AvrChip::timer_vector(char timer, TimerFlag flag) {
+    // "Interrupt Vectors in ATmega328P": Timer2 COMPA 7, COMPB 8, OVF 9; Timer1 CAPT 10, COMPA 11, COMPB 12,
+    // OVF 13; Timer0 COMPA 14, COMPB 15, OVF 16. No capture unit on Timer0/2.
+    const int compa = timer == '0' ? 14 : timer == '1' ? 11 : 7;
+    switch (flag) {
+        case TimerFlag::CompareA: return compa;
+        case TimerFlag::CompareB: return compa + 1;
+        case TimerFlag::Overflow: return compa + 2;
+        case TimerFlag::Capture: return timer == '1' ? 10 : 0;
+    }
+    return 0;
+}
+
+std::optional<int> AvrChip::single_bit_instruction(std::uint16_t addr, bool* set) const {
+    // SBI A,b = 1001 1010 AAAA Abbb, CBI A,b = 1001 1000 AAAA Abbb (AVR instruction set manual).
+    const std::uint32_t pc = m_avr->pc;
+    const std::uint16_t op = static_cast<std::uint16_t>(m_avr->flash[pc] | (m_avr->flash[pc + 1] << 8));
+    const std::uint16_t kind = op & 0xFF00;
+    if (kind != 0x9A00 && kind != 0x9800) return std::nullopt;
+    if (((op >> 3) & 0x1F) + 0x20 != addr) return std::nullopt;
+    *set = kind == 0x9A00;
+    return op & 7;
+}
+
+void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
+    const Cycle c = now();
+    std::uint8_t* data = m_avr->data;
+    TimerUnit& t0 = *m_timers[0];
+    TimerUnit& t1 = *m_timers[1];
+    TimerUnit& t2 = *m_timers[2];
+    const auto word = [&](std::uint8_t low) { return static_cast<std::uint16_t>((m_temp16 << 8) | low); };
+    switch (addr) {
+        case kTifr0:
+        case kTifr1:
+        case kTifr2: write_timer_flags(addr, v); break;
+        case kTimsk0:
+        case kTimsk1:
+        case kTimsk2: write_timsk(addr, v); break;
+        case kGtccr: write_gtccr(v); break;
+        case kTccr0a:
+            t0.write_tccra(c, v);
+            data[addr] = v;
+            break;
+        case kTccr0b:
+            t0.write_tccrb(c, v);
+            data[addr] = t0.tccrb();
+            break;
+        case kTcnt0: t0.write_tcnt(c, v); break;
+        case kOcr0a:
+            t0.write_ocr(c, Channel::A, v);
+            data[addr] = v;
+            break;
+        case kOcr0b:
+            t0.write_ocr(c, Channel::B, v);
+            data[addr] = v;
+            break;
+        case kTccr1a:
+            t1.write_tccra(c, v);
+            data[addr] = v;
+            break;
+        case kTccr1b:
+            t1.write_tccrb(c, v);
+            data[addr] = t1.tccrb();
+            break;
+        case kTccr1c:
+            t1.write_tccrc(c, v);
+            data[addr] = 0;
+            break;
+        // §16.3: a high byte write goes to TEMP; the low byte write moves TEMP:low into the register at once.
+        case kTcnt1h:
+        case kIcr1h:
+        case kOcr1ah:
+        case kOcr1bh: m_temp16 = v; break;
+        case kTcnt1l: t1.write_tcnt(c, word(v)); break;
+        case kIcr1l: t1.write_icr(c, word(v)); break;
+        case kOcr1al:
+            t1.write_ocr(c, Channel::A, word(v));
+            data[kOcr1al] = v;
+            data[kOcr1ah] = m_temp16;
+            break;
+        case kOcr1bl:
+            t1.write_ocr(c, Channel::B, word(v));
+            data[kOcr1bl] = v;
+            data[kOcr1bh] = m_temp16;
+            break;
+        case kTccr2a:
+            t2.write_tccra(c, v);
+            data[addr] = v;
+            break;
+        case kTccr2b:
+            t2.write_tccrb(c, v);
+            data[addr] = t2.tccrb();
+            break;
+        case kTcnt2: t2.write_tcnt(c, v); break;
+        case kOcr2a:
+            t2.write_ocr(c, Channel::A, v);
+            data[addr] = v;
+            break;
+        case kOcr2b:
+            t2.write_ocr(c, Channel::B, v);
+            data[addr] = v;
+            break;
+        case kAssr:
+            if ((v & kAs2) != 0 && (data[addr] & kAs2) == 0)
+                std::fprintf(stderr,
+                             "avr: ASSR.AS2 set: Timer2's asynchronous mode is not modelled (it keeps "
+                             "counting the I/O clock)\n");
+            data[addr] = static_cast<std::uint8_t>(v & 0x60);
+            break;
+        case kUdr0: m_usart.write_udr(c, v); break;
+        case kUcsr0a: m_usart.write_ucsra(c, v); break;
+        case kUcsr0b:  // the interrupt enables must be in place when the unit re-raises its flags
+            data[addr] = v;
+            m_usart.write_ucsrb(c, v);
+            data[addr] = m_usart.ucsrb();
+            break;
+        case kUcsr0c:
+            m_usart.write_ucsrc(c, v);
+            data[addr] = v;
+            break;
+        case kUbrr0l:
+            m_usart.write_ubrrl(c, v);
+            data[addr] = v;
+            break;
+        case kUbrr0h:
+            m_usart.write_ubrrh(c, v);
+            data[addr] = m_usart.ubrrh();
+            break;
+        default:
+            if (addr >= kPinb && addr <= kPortd) port_write(addr, v);
+            break;
+    }
+    reschedule();
+}
+
+std::uint8_t AvrChip::io_read(std::uint16_t addr) {
+    const Cycle c = now();
+    switch (addr) {
+        case kTcnt0: return static_cast<std::uint8_t>(m_timers[0]->read_tcnt(c));
+        case kTcnt2: return static_cast<std::uint8_t>(m_timers[2]->read_tcnt(c));
+        // §16.3: reading the low byte copies the high byte into TEMP, which the high byte read returns.
+        case kTcnt1l: {
+            const std::uint16_t v = m_timers[1]->read_tcnt(c);
+            m_temp16 = static_cast<std::uint8_t>(v >> 8);
+            return static_cast<std::uint8_t>(v);
+        }
+        case kIcr1l: {
+            const std::uint16_t v = m_timers[1]->icr();
+            m_temp16 = static_cast<std::uint8_t>(v >> 8);
+            return static_cast<std::uint8_t>(v);
+        }
+        case kTcnt1h:
+        case kIcr1h: return m_temp16;
+        case kUcsr0a: m_usart.advance_to(c); return m_usart.ucsra();
+        case kUdr0: {
+            const std::uint8_t v = m_usart.read_udr(c);
+            reschedule();
+            return v;
+        }
+        default: return port_read(addr);
+    }
+}
+
+void AvrChip::write_timer_flags(std::uint16_t addr, std::uint8_t v) {
+    // A flag is cleared by writing a one to it; SBI/CBI act on their one bit only.
+    bool set = false;
+    if (const auto bit = single_bit_instruction(addr, &set)) v = set ? static_cast<std::uint8_t>(1U << *bit) : 0;
+    for (int bit = 0; bit < 8; ++bit) {
+        const auto flag = flag_of_bit(bit);
+        const int n = flag ? timer_vector(timer_of(addr), *flag) : 0;
+        if (((v >> bit) & 1U) == 0 || n == 0) continue;
+        avr_int_vector_t* vec = m_vectors[static_cast<std::size_t>(n)];
+        if (avr_regbit_get(m_avr, vec->raised) != 0) avr_clear_interrupt(m_avr, vec);
+    }
+}
+
+void AvrChip::write_timsk(std::uint16_t addr, std::uint8_t v) {
+    m_avr->data[addr] = v;
+    // simavr queues an interrupt only when its flag is raised while enabled: enabling one whose flag is already
+    // set must fire it now, as on silicon.
+    for (int bit = 0; bit < 8; ++bit) {
+        const auto flag = flag_of_bit(bit);
+        const int n = flag ? timer_vector(timer_of(addr), *flag) : 0;
+        if (((v >> bit) & 1U) == 0 || n == 0) continue;
+        avr_int_vector_t* vec = m_vectors[static_cast<std::size_t>(n)];
+        if (avr_regbit_get(m_avr, vec->raised) != 0 && vec->pending == 0) avr_raise_interrupt(m_avr, vec);
+    }
+}
+
+void AvrChip::write_gtccr(std::uint8_t v) {
+    const Cycle c = now();
+    for (auto& t : m_timers) t->advance_to(c);
+    const bool tsm = (v & kTsm) != 0;
+    const auto apply = [&](Prescaler& p, bool reset_bit) {
+        if (reset_bit && tsm)
+            p.hold(c);  // §17.4.1: TSM keeps the written PSR bit, holding the reset
+        else if (reset_bit)
+            p.restart(c);
+        else
+            p.release(c);
+    };
+    apply(m_prescaler01, (v & kPsrsync) != 0);
+    apply(m_prescaler2, (v & kPsrasy) != 0);
+    // Without TSM the PSR bits clear at once; with it they read back as written.
+    m_avr->data[kGtccr] = tsm ? static_cast<std::uint8_t>(v & (kTsm | kPsrasy | kPsrsync)) : 0;
+}
+
+}  // namespace cnc::avr

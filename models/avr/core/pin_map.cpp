@@ -1,0 +1,99 @@
+#include "avr/core/pin_map.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+#include "common/bad_input.hpp"
+
+namespace cnc::avr {
+
+namespace {
+
+constexpr std::string_view kPinsThatExist = "PB0..PB7, PC0..PC6, PD2..PD7";
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front())) != 0) s.remove_prefix(1);
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back())) != 0) s.remove_suffix(1);
+    return s;
+}
+
+std::string lower(std::string_view s) {
+    std::string out(s);
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return out;
+}
+
+std::string signal_list() {
+    std::string out;
+    for (const auto s : kPinSignals) out += (out.empty() ? "" : ", ") + std::string(s);
+    return out;
+}
+
+}  // namespace
+
+Pin parse_pin(std::string_view text, const std::string& where) {
+    const std::string_view t = trim(text);
+    const auto bad = [&](const std::string& why) {
+        return BadInput(
+            where, "pin '" + std::string(t) + "' " + why + " (ATmega328P pins: " + std::string(kPinsThatExist) + ")");
+    };
+    if (t.size() != 3 || std::toupper(static_cast<unsigned char>(t[0])) != 'P' ||
+        std::isdigit(static_cast<unsigned char>(t[2])) == 0)
+        throw bad("is not a port pin name like PD6");
+    const char port = static_cast<char>(std::toupper(static_cast<unsigned char>(t[1])));
+    const int bit = t[2] - '0';
+    if (port != 'B' && port != 'C' && port != 'D') throw bad("names a port the ATmega328P does not have");
+    // datasheet §1.1: PORTC has 7 pins (PC6 = RESET); every port bit number is 0..7
+    if (bit > 7 || (port == 'C' && bit > 6)) throw bad("does not exist");
+    if (port == 'D' && bit < 2) throw bad("is the USART's " + std::string(bit == 0 ? "RXD" : "TXD") + " pin");
+    return Pin{port, bit};
+}
+
+std::string PinMap::to_string() const {
+    std::string out;
+    for (const auto s : kPinSignals) out += (out.empty() ? "" : ",") + std::string(s) + "=" + at(s).name();
+    return out;
+}
+
+PinMap default_pin_map() {
+    PinMap m;
+    m.pins = {{"step_x", {'D', 6}}, {"dir_x", {'B', 0}}, {"en_x", {'B', 2}}, {"step_y", {'B', 3}},
+              {"dir_y", {'B', 5}},  {"en_y", {'B', 4}},  {"head", {'B', 1}}};
+    return m;
+}
+
+PinMap parse_pin_map(std::string_view text, const std::string& where) {
+    PinMap m = default_pin_map();
+    std::set<std::string> named;
+    std::string_view rest = text;
+    while (!trim(rest).empty()) {
+        const std::size_t comma = rest.find(',');
+        const std::string_view entry = trim(rest.substr(0, comma));
+        rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+        const std::size_t eq = entry.find('=');
+        if (eq == std::string_view::npos)
+            throw BadInput(where, "pin map entry '" + std::string(entry) + "' is not signal=pin");
+        const std::string signal = lower(trim(entry.substr(0, eq)));
+        if (std::find(kPinSignals.begin(), kPinSignals.end(), signal) == kPinSignals.end())
+            throw BadInput(where, "unknown signal '" + signal + "' in the pin map (signals: " + signal_list() + ")");
+        if (!named.insert(signal).second) throw BadInput(where, "signal '" + signal + "' is mapped twice");
+        m.pins[signal] = parse_pin(entry.substr(eq + 1), where);
+    }
+    validate(m, where);
+    return m;
+}
+
+void validate(const PinMap& map, const std::string& where) {
+    for (const auto s : kPinSignals)
+        if (map.pins.count(std::string(s)) == 0) throw BadInput(where, "the pin map has no '" + std::string(s) + "'");
+    if (map.pins.size() != kPinSignals.size()) throw BadInput(where, "the pin map names unknown signals");
+    for (const auto& [signal, pin] : map.pins) (void)parse_pin(pin.name(), where);
+    for (const auto& [a, pa] : map.pins)
+        for (const auto& [b, pb] : map.pins)
+            if (a < b && pa == pb)
+                throw BadInput(where, "signals '" + a + "' and '" + b + "' are both on " + pa.name());
+}
+
+}  // namespace cnc::avr

@@ -1,0 +1,49 @@
+// Which ATmega328P port pins carry the machine's signals (STEP/DIR/EN per axis, the tool head), so that any
+// firmware, not only seed 003's, can drive the modelled machine. Scenario syntax (`avr.pins`):
+//     "step_x=PD6, dir_x=PB0, en_x=PB2, step_y=PB3, dir_y=PB5, en_y=PB4, head=PB1"
+// Entries not named keep seed 003's default; names are case-insensitive ("pd6" = "PD6").
+#pragma once
+#include <array>
+#include <map>
+#include <string>
+#include <string_view>
+
+namespace cnc::avr {
+
+struct Pin {
+    char port = 'B';  // 'B', 'C' or 'D'
+    int bit = 0;      // 0..7
+
+    [[nodiscard]] std::string name() const { return std::string{'P', port, static_cast<char>('0' + bit)}; }
+    friend bool operator==(const Pin& a, const Pin& b) { return a.port == b.port && a.bit == b.bit; }
+    friend bool operator!=(const Pin& a, const Pin& b) { return !(a == b); }
+};
+
+// The signals a pin map assigns, in the order AvrCore exposes them as ports.
+inline constexpr std::array<std::string_view, 7> kPinSignals{"step_x", "dir_x", "en_x", "step_y",
+                                                             "dir_y",  "en_y",  "head"};
+
+// "PD6" -> {D, 6}. The ATmega328P has PB0..PB7, PC0..PC6 and PD0..PD7 (datasheet §1.1 pin configurations;
+// PB6/PB7 are the crystal pins and PC6 is RESET on an Arduino board, but they are port bits all the same).
+// PD0/PD1 are RXD/TXD, reserved for the USART link. Anything else throws BadInput(where, ...) naming the text.
+[[nodiscard]] Pin parse_pin(std::string_view text, const std::string& where);
+
+struct PinMap {
+    std::map<std::string, Pin> pins;  // signal (one of kPinSignals) -> pin; always holds all seven
+
+    [[nodiscard]] const Pin& at(std::string_view signal) const { return pins.at(std::string(signal)); }
+    [[nodiscard]] std::string to_string() const;  // in the `avr.pins` syntax, signals in kPinSignals order
+};
+
+// Seed 003 §2.2: STEP_X PD6 (OC0A), DIR_X PB0, EN_X PB2 (active low), STEP_Y PB3 (OC2A), DIR_Y PB5,
+// EN_Y PB4 (active low), head PB1 (OC1A, the servo / "HEADER" bit).
+[[nodiscard]] PinMap default_pin_map();
+
+// Checks a map built in code: all seven signals, each on an existing pin, no pin twice. Throws BadInput.
+void validate(const PinMap& map, const std::string& where);
+
+// Overrides the default map with "signal=pin" entries separated by commas. Unknown signals, bad pins, a signal
+// named twice or two signals on one pin throw BadInput(where, ...).
+[[nodiscard]] PinMap parse_pin_map(std::string_view text, const std::string& where);
+
+}  // namespace cnc::avr

@@ -1,0 +1,75 @@
+#include "commands.h"
+
+#include <avr/interrupt.h>
+#include <avr/io.h>
+#include <avr/sleep.h>
+
+#include "axes.h"
+#include "pins.h"
+#include "usart.h"
+
+/* App. A3 as listed writes TCCR2B = 0b110: /256 on Timer2 (the comment says 128), while the PC program computes
+ * OCR2A with 1024. The default build uses /1024 so that Y runs at the speed the PC asked for; the seed003_t2cs110
+ * build keeps the listing's value (README.md). */
+#ifdef SEED003_T2_CS110
+#define T2_CS_G01 T2_CS_256
+#else
+#define T2_CS_G01 T2_CS_1024
+#endif
+
+void cmd_g00(void) {
+    const uint16_t count_x = usart_confirm_receive_u16();
+    const uint16_t count_y = usart_confirm_receive_u16();
+    const uint8_t ocr = usart_confirm_receive();  /* v_max for both axes (eq. 4.73) */
+    const uint8_t portb = usart_confirm_receive(); /* "//6th PORTB" */
+    axes_prepare(ocr, ocr);
+    axes_arm_x_interrupt(count_x);
+    axes_start(portb, T2_CS_1024);
+    sei();
+    axes_count_y_polling(count_y);
+    while (axes_x_running()) {  /* App. A2 Decrease_x: the longer axis finishes last (dog-leg) */
+    }
+    cli();
+    axes_finish();
+}
+
+void cmd_g01(void) {
+    const uint16_t count_x = usart_confirm_receive_u16();
+    const uint8_t ocr_x = usart_confirm_receive();
+    const uint8_t ocr_y = usart_confirm_receive();
+    const uint8_t portb = usart_confirm_receive();
+    axes_prepare(ocr_x, ocr_y);
+    axes_start(portb, T2_CS_G01);
+    axes_count_x_polling(count_x);
+    axes_finish();  /* the listing does not show the end of G01 (spec Q6): both axes stop with X */
+}
+
+void cmd_arc(void) {
+    uint8_t first = 1;
+    for (;;) {
+        /* Received while the previous chord runs ("Store Data to memory not to working registers"). */
+        const uint8_t dxl = usart_confirm_receive();
+        const uint8_t ocr_x = usart_confirm_receive();
+        const uint8_t ocr_y = usart_confirm_receive();
+        const uint8_t portb = usart_confirm_receive();
+        while (axes_x_running()) {  /* App. A4 "loop: CPI STEPL,0; BRNE loop"; Y keeps stepping meanwhile */
+        }
+        cli();
+        if (first) axes_prepare(ocr_x, ocr_y);
+        axes_load_chord(dxl, ocr_x, ocr_y, portb);
+        if (first) axes_run_timers(T2_CS_1024);
+        first = 0;
+        sei();
+        if ((portb & PORTB_EN_BOTH) == PORTB_EN_BOTH) break;  /* App. A4: SBIC PORTB,PB4; SBIS PORTB,PB2 */
+    }
+    cli();
+    axes_finish();
+}
+
+void cmd_m30(void) {
+    axes_finish();
+    PORTB &= ~_BV(SEED003_PB_HEADER);
+    set_sleep_mode(SLEEP_MODE_PWR_DOWN);  /* the seed's SLEEP mode is unspecified */
+    sleep_enable();
+    sleep_cpu();  /* interrupts are off: the MCU sleeps until reset */
+}

@@ -1,0 +1,58 @@
+#include "host/core/seed003/commands.hpp"
+
+namespace cnc::host::seed003 {
+
+namespace {
+
+std::uint8_t bit(int n) { return static_cast<std::uint8_t>(1U << n); }
+std::uint8_t low(std::uint16_t v) { return static_cast<std::uint8_t>(v & 0xFFU); }
+std::uint8_t high(std::uint16_t v) { return static_cast<std::uint8_t>(v >> 8); }
+
+}  // namespace
+
+std::uint8_t start_byte(std::int64_t steps_x, bool enable_x, std::int64_t steps_y, bool enable_y, bool header) {
+    std::uint8_t b = SEED003_PORTB_INPUTS;
+    if (steps_x < 0) b |= bit(SEED003_PB_DIR_X);
+    if (!enable_x) b |= bit(SEED003_PB_EN_X);
+    if (steps_y < 0) b |= bit(SEED003_PB_DIR_Y);
+    if (!enable_y) b |= bit(SEED003_PB_EN_Y);
+    if (header) b |= bit(SEED003_PB_HEADER);
+    return b;
+}
+
+bool enabled_x(std::uint8_t portb) { return (portb & bit(SEED003_PB_EN_X)) == 0; }
+bool enabled_y(std::uint8_t portb) { return (portb & bit(SEED003_PB_EN_Y)) == 0; }
+
+std::vector<std::uint8_t> motion_bytes(CommandId id, const Motion& m) {
+    switch (id) {
+        case CommandId::G00:
+            return {low(m.count_x), high(m.count_x), low(m.count_y), high(m.count_y), m.ocr_x.value, m.portb};
+        case CommandId::G01:
+            return {low(m.count_x), high(m.count_x), m.ocr_x.value, m.ocr_y.value, m.portb};
+        case CommandId::G02:
+        case CommandId::G03:
+            return {low(m.count_x), m.ocr_x.value, m.ocr_y.value, m.portb};
+        case CommandId::M30:
+            break;
+    }
+    return {};
+}
+
+std::vector<std::uint8_t> arc_terminator(bool header) {
+    return {0x00, 0xFF, 0xFF, start_byte(0, false, 0, false, header)};
+}
+
+std::vector<std::uint8_t> command_bytes(const Command& c) {
+    std::vector<std::uint8_t> bytes{static_cast<std::uint8_t>(c.id)};
+    for (const Motion& m : c.motions) {
+        const std::vector<std::uint8_t> b = motion_bytes(c.id, m);
+        bytes.insert(bytes.end(), b.begin(), b.end());
+    }
+    if (c.id == CommandId::G02 || c.id == CommandId::G03) {
+        const std::vector<std::uint8_t> t = arc_terminator(true);
+        bytes.insert(bytes.end(), t.begin(), t.end());
+    }
+    return bytes;
+}
+
+}  // namespace cnc::host::seed003

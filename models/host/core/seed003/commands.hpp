@@ -1,0 +1,63 @@
+// The commands the seed 003 PC program (CAD2G V42) sends to the ATmega328P firmware, and their bytes.
+// The wire layout is defined once, in the firmware's protocol.h (byte order, confirm value, PORTB bits).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "avr/firmware/seed003/protocol.h"
+#include "host/core/gcode.hpp"
+#include "host/core/seed003/speed.hpp"
+
+namespace cnc::host::seed003 {
+
+enum class CommandId : std::uint8_t {
+    G00 = SEED003_CMD_G00,
+    G01 = SEED003_CMD_G01,
+    G02 = SEED003_CMD_G02,
+    G03 = SEED003_CMD_G03,
+    M30 = SEED003_CMD_M30,
+};
+
+inline constexpr std::uint8_t kConfirmByte = SEED003_CONFIRM;
+inline constexpr std::uint32_t kSeedBaud = SEED003_BAUD;
+
+// One start byte: a G00, a G01, or one chord of an arc.
+struct Motion {
+    int move = -1;                 // index into Program::moves
+    int line = 0;                  // G-code line
+    MotionKind kind = MotionKind::Rapid;
+    int chord = -1;                // 0-based chord of its arc; -1 for G00 / G01
+    std::int64_t steps_x = 0;      // signed displacement on the step grid the PC intends
+    std::int64_t steps_y = 0;
+    std::uint16_t count_x = 0;     // X count sent (G01 and chords: |dx|, or |dy| as a timebase when dx = 0)
+    std::uint16_t count_y = 0;     // G00 only: Y count sent
+    bool x_timebase = false;       // dx = 0: X's timer times |dy| steps with driver X disabled (seed §4.4 note 1)
+    bool wrapped = false;          // a count above 16 bits, sent modulo 65536 (atmega.long_moves = wrap)
+    double path_feed_mm_per_min = 0.0;  // programmed F (G00: the rapid feed, v_max)
+    double speed_x_mm_per_s = 0.0; // asked per-axis speeds (eqs. 4.76; G00: v_max on both)
+    double speed_y_mm_per_s = 0.0;
+    Ocr ocr_x;                     // OCR0A
+    Ocr ocr_y;                     // OCR2A
+    std::uint8_t portb = 0;        // start byte
+};
+
+struct Command {
+    CommandId id = CommandId::M30;
+    std::vector<Motion> motions;   // G00 / G01: one; G02 / G03: the chords; M30: none
+};
+
+// PORTB start byte: DIR 1 = negative, EN 1 = disabled (seed 003 §2.2); HEADER = head on.
+[[nodiscard]] std::uint8_t start_byte(std::int64_t steps_x, bool enable_x, std::int64_t steps_y, bool enable_y,
+                                      bool header);
+[[nodiscard]] bool enabled_x(std::uint8_t portb);
+[[nodiscard]] bool enabled_y(std::uint8_t portb);
+
+// The bytes of one motion after the command's ID (protocol.h): G00 7 - 1, G01 6 - 1, chord 4.
+[[nodiscard]] std::vector<std::uint8_t> motion_bytes(CommandId id, const Motion& m);
+// The record that ends an arc: DXL 0, both OCRs 255, PORTB with both EN bits high and the head left as it was.
+[[nodiscard]] std::vector<std::uint8_t> arc_terminator(bool header);
+// Every byte of a command, ID first.
+[[nodiscard]] std::vector<std::uint8_t> command_bytes(const Command& c);
+
+}  // namespace cnc::host::seed003

@@ -1,0 +1,306 @@
+#include "host/core/seed003/plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "common/bad_input.hpp"
+
+namespace cnc::host::seed003 {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr std::int64_t kCountMax = 0xFFFF;  // STEPH:STEPL and STEPY:STEPVL are 16 bits (seed 003 §5.5)
+// App. A4 MOV STEPL,DXL: a chord's count is 8 bits. Chords are cut for 254 steps of path, so that rounding both
+// ends to the grid (half a step each) keeps every axis within 255.
+constexpr double kChordStepsMax = 254.0;
+
+struct GridPos {
+    std::int64_t x = 0;
+    std::int64_t y = 0;
+};
+
+CommandId command_id(MotionKind k) {
+    switch (k) {
+        case MotionKind::Rapid: return CommandId::G00;
+        case MotionKind::Linear: return CommandId::G01;
+        case MotionKind::ArcCW: return CommandId::G02;
+        case MotionKind::ArcCCW: return CommandId::G03;
+    }
+    return CommandId::G01;
+}
+
+const char* g_name(CommandId id) {
+    switch (id) {
+        case CommandId::G00: return "G00";
+        case CommandId::G01: return "G01";
+        case CommandId::G02: return "G02";
+        case CommandId::G03: return "G03";
+        case CommandId::M30: return "M30";
+    }
+    return "?";
+}
+
+std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
+    char text[160];
+    std::snprintf(text, sizeof text, f, a, b, c, d);
+    return text;
+}
+
+// Speeds outside the 8-bit range on one axis of one programmed move.
+struct Clamps {
+    int fast = 0;
+    int slow = 0;
+    double min_asked = INFINITY;
+    double max_asked = 0.0;
+
+    void add(const Ocr& o, double asked) {
+        if (!o.too_fast && !o.too_slow) return;
+        (o.too_fast ? fast : slow) += 1;
+        min_asked = std::min(min_asked, asked);
+        max_asked = std::max(max_asked, asked);
+    }
+};
+
+class Planner {
+public:
+    Planner(const Program& program, const MachineModel& machine, const PcOptions& opt)
+        : m_program(program), m_machine(machine), m_opt(opt) {}
+
+    Plan run() {
+        if (!m_program.moves.empty()) m_cur = grid(m_program.moves.front().path.start);
+        for (std::size_t i = 0; i < m_program.moves.size(); ++i) {
+            const ProgrammedMove& move = m_program.moves[i];
+            std::vector<Command> cmds =
+                move.path.is_arc ? arc(static_cast<int>(i), move) : line(static_cast<int>(i), move);
+            clamp_warnings(move, cmds);
+            for (Command& c : cmds) m_plan.commands.push_back(std::move(c));
+        }
+        m_plan.commands.push_back(Command{CommandId::M30, {}});
+        return std::move(m_plan);
+    }
+
+private:
+    [[nodiscard]] GridPos grid(geom::Vec2 p) const {
+        return {std::llround(p.x_mm * m_machine.x.steps_per_mm()), std::llround(p.y_mm * m_machine.y.steps_per_mm())};
+    }
+
+    [[nodiscard]] std::uint16_t count(std::int64_t steps, bool& wrapped) const {
+        const std::int64_t n = std::llabs(steps);
+        wrapped = wrapped || n > kCountMax;
+        return static_cast<std::uint16_t>(n & kCountMax);
+    }
+
+    // G01 and chords (eqs. 4.74-4.77): v_x = |dx| / dz v0, v_y = |dy| / dz v0, only X counted.
+    [[nodiscard]] Motion feed_motion(std::int64_t sx, std::int64_t sy, const ProgrammedMove& move) const {
+        Motion m;
+        m.steps_x = sx;
+        m.steps_y = sy;
+        m.path_feed_mm_per_min = move.feed_mm_per_min;
+        const double dx_mm = static_cast<double>(sx) * m_machine.x.mm_per_step();
+        const double dy_mm = static_cast<double>(sy) * m_machine.y.mm_per_step();
+        const double dz_mm = std::hypot(dx_mm, dy_mm);
+        const double v0 = move.feed_mm_per_min / 60.0;
+        m.speed_x_mm_per_s = std::fabs(dx_mm) / dz_mm * v0;
+        m.speed_y_mm_per_s = std::fabs(dy_mm) / dz_mm * v0;
+        m.ocr_y = ocr_for_speed(m.speed_y_mm_per_s, m_machine.y.mm_per_step(), m_opt.timer);
+        if (sx == 0) {
+            m.x_timebase = true;  // seed 003 §4.4 note 1: stepx = stepy and v_x = v_y, X disabled
+            m.ocr_x = m.ocr_y;
+            m.count_x = count(sy, m.wrapped);
+        } else {
+            m.ocr_x = ocr_for_speed(m.speed_x_mm_per_s, m_machine.x.mm_per_step(), m_opt.timer);
+            m.count_x = count(sx, m.wrapped);
+        }
+        m.portb = start_byte(sx, sx != 0, sy, sy != 0, true);
+        return m;
+    }
+
+    // G00 (eq. 4.73): both axes at v_max with one OCR (for X's microstep), both counted.
+    [[nodiscard]] Motion rapid_motion(std::int64_t sx, std::int64_t sy, const ProgrammedMove& move) const {
+        Motion m;
+        m.steps_x = sx;
+        m.steps_y = sy;
+        m.path_feed_mm_per_min = move.feed_mm_per_min;
+        m.speed_x_mm_per_s = m.speed_y_mm_per_s = move.feed_mm_per_min / 60.0;
+        m.ocr_x = m.ocr_y = ocr_for_speed(m.speed_x_mm_per_s, m_machine.x.mm_per_step(), m_opt.timer);
+        m.count_x = count(sx, m.wrapped);
+        m.count_y = count(sy, m.wrapped);
+        m.portb = start_byte(sx, sx != 0, sy, sy != 0, false);
+        return m;
+    }
+
+    void add(Command& c, int move_index, const ProgrammedMove& move, GridPos to, int chord) {
+        const std::int64_t sx = to.x - m_cur.x;
+        const std::int64_t sy = to.y - m_cur.y;
+        if (sx == 0 && sy == 0) return;  // the next chord carries the remainder
+        Motion m = c.id == CommandId::G00 ? rapid_motion(sx, sy, move) : feed_motion(sx, sy, move);
+        m.move = move_index;
+        m.line = move.line;
+        m.kind = move.kind;
+        m.chord = chord;
+        c.motions.push_back(m);
+        m_cur = to;
+    }
+
+    // One command, or several when a count exceeds 16 bits and LongMoves::Split cuts it.
+    std::vector<Command> line(int index, const ProgrammedMove& move) {
+        const CommandId id = command_id(move.kind);
+        const GridPos to = grid(move.path.end);
+        const GridPos from = m_cur;
+        const std::int64_t dx = to.x - from.x;
+        const std::int64_t dy = to.y - from.y;
+        const std::int64_t longest = std::max(std::llabs(dx), std::llabs(dy));
+        if (longest > kCountMax) long_move_warning(move, id, longest);
+        const std::int64_t pieces =
+            m_opt.long_moves == LongMoves::Split ? std::max<std::int64_t>(1, (longest + kCountMax - 1) / kCountMax) : 1;
+        std::vector<Command> cmds;
+        for (std::int64_t i = 1; i <= pieces; ++i) {
+            const double f = static_cast<double>(i) / static_cast<double>(pieces);
+            const GridPos p{from.x + std::llround(static_cast<double>(dx) * f),
+                            from.y + std::llround(static_cast<double>(dy) * f)};
+            Command c{id, {}};
+            add(c, index, move, p, -1);
+            if (!c.motions.empty()) cmds.push_back(std::move(c));
+        }
+        return cmds;
+    }
+
+    std::vector<Command> arc(int index, const ProgrammedMove& move) {
+        Command c{command_id(move.kind), {}};
+        const geom::Segment& path = move.path;
+        const double length_mm = path.length_mm();
+        const double spm = std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm());
+        // A sweep within 1e-6 of a whole number of steps (end points printed to a few decimals) takes that number.
+        const double by_angle = std::ceil(std::fabs(path.sweep_rad) * 180.0 / kPi / m_opt.arc_step_deg - 1e-6);
+        const double by_count = std::ceil(length_mm * spm / kChordStepsMax);
+        const auto chords = static_cast<std::int64_t>(std::max({1.0, by_angle, by_count}));
+        int chord = 0;
+        for (std::int64_t k = 1; k <= chords; ++k) {
+            const double s_mm = length_mm * static_cast<double>(k) / static_cast<double>(chords);
+            const geom::Vec2 p = k == chords ? path.end : path.point_at(s_mm);
+            const std::size_t before = c.motions.size();
+            add(c, index, move, grid(p), chord);
+            if (c.motions.size() == before) continue;
+            ++chord;
+            Motion& m = c.motions.back();
+            if (m.x_timebase && c.motions.size() > 1) {
+                // X is disabled, so its DIR is free: flipped, it marks where this chord starts (motion_windows).
+                const std::uint8_t dir_x = 1U << SEED003_PB_DIR_X;
+                m.portb = static_cast<std::uint8_t>((m.portb & ~dir_x) | (~c.motions[before - 1].portb & dir_x));
+            }
+        }
+        if (c.motions.empty()) return {};
+        return {c};
+    }
+
+    void long_move_warning(const ProgrammedMove& move, CommandId id, std::int64_t longest) {
+        const double limit_mm = static_cast<double>(kCountMax + 1) /
+                                std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm());
+        std::string text = m_program.filename + ":" + std::to_string(move.line) + ": " + g_name(id) + " count " +
+                           std::to_string(longest) + " exceeds the 16-bit step counter" +
+                           fmt(" (%.1f mm at %.0f steps/mm): ", limit_mm,
+                               std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm()));
+        if (m_opt.long_moves == LongMoves::Split) {
+            text += "sent as " + std::to_string((longest + kCountMax - 1) / kCountMax) +
+                    " commands (atmega.long_moves = split)";
+        } else {
+            text += "sent modulo 65536 as " + std::to_string(longest & kCountMax) +
+                    ", as the seed's registers take it (atmega.long_moves = wrap)";
+        }
+        m_plan.warnings.push_back(text);
+    }
+
+    void clamp_warnings(const ProgrammedMove& move, const std::vector<Command>& cmds) {
+        Clamps x;
+        Clamps y;
+        std::size_t motions = 0;
+        for (const Command& c : cmds) {
+            for (const Motion& m : c.motions) {
+                if (m.steps_x != 0) x.add(m.ocr_x, m.speed_x_mm_per_s);
+                if (m.steps_y != 0) y.add(m.ocr_y, m.speed_y_mm_per_s);
+                ++motions;
+            }
+        }
+        const std::string where =
+            m_program.filename + ":" + std::to_string(move.line) + ": " + g_name(command_id(move.kind));
+        const auto report = [&](const Clamps& k, const char* reg, const char* axis, double mm_per_step) {
+            if (k.fast + k.slow == 0) return;
+            const double fastest = speed_mm_per_s(0, mm_per_step, m_opt.timer);
+            const double slowest = speed_mm_per_s(255, mm_per_step, m_opt.timer);
+            m_plan.warnings.push_back(
+                where + ": " + reg + " outside 0..255 in " + std::to_string(k.fast + k.slow) + " of " +
+                std::to_string(motions) + (move.path.is_arc ? " chords (" : " commands (") + std::to_string(k.slow) +
+                " held to 255, " + std::to_string(k.fast) + " to 0): " + axis +
+                fmt(" asked %.4g..%.4g mm/s, the 8-bit range is %.4g..%.4g mm/s", k.min_asked, k.max_asked, slowest,
+                    fastest));
+        };
+        report(x, "OCR0A", "X", m_machine.x.mm_per_step());
+        report(y, "OCR2A", "Y", m_machine.y.mm_per_step());
+    }
+
+    const Program& m_program;
+    const MachineModel& m_machine;
+    const PcOptions& m_opt;
+    Plan m_plan;
+    GridPos m_cur;
+};
+
+}  // namespace
+
+Plan plan_program(const Program& program, const MachineModel& machine, const PcOptions& opt) {
+    validate(machine, "machine");
+    if (!(std::isfinite(opt.arc_step_deg) && opt.arc_step_deg > 0.0)) {
+        throw BadInput("atmega.arc_step_deg", "must be > 0");
+    }
+    if (!(opt.timer.f_cpu_hz > 0.0) || opt.timer.prescaler <= 0) {
+        throw BadInput("atmega", "timer clock and prescaler must be > 0");
+    }
+    return Planner(program, machine, opt).run();
+}
+
+std::vector<Transfer> transfers(const Plan& plan) {
+    std::vector<Transfer> out;
+    for (std::size_t i = 0; i < plan.commands.size(); ++i) {
+        const Command& c = plan.commands[i];
+        const auto id = static_cast<std::uint8_t>(c.id);
+        if (c.motions.empty()) {
+            out.push_back({i, -1, {id}});
+            continue;
+        }
+        for (std::size_t k = 0; k < c.motions.size(); ++k) {
+            Transfer t{i, static_cast<int>(k), {}};
+            if (k == 0) t.bytes.push_back(id);
+            const std::vector<std::uint8_t> b = motion_bytes(c.id, c.motions[k]);
+            t.bytes.insert(t.bytes.end(), b.begin(), b.end());
+            out.push_back(std::move(t));
+        }
+        if (c.id == CommandId::G02 || c.id == CommandId::G03) out.push_back({i, -1, arc_terminator(true)});
+    }
+    return out;
+}
+
+std::vector<MotionSegment> motion_segments(const Plan& plan, const MachineModel& machine) {
+    std::vector<MotionSegment> segs;
+    for (const Command& c : plan.commands) {
+        for (const Motion& m : c.motions) {
+            MotionSegment s;
+            s.index = static_cast<int>(segs.size()) + 1;
+            s.motion = m.kind;
+            s.steps_x = m.steps_x;
+            s.steps_y = m.steps_y;
+            s.feed = std::llround(m.path_feed_mm_per_min);
+            s.path_feed_mm_per_min = m.path_feed_mm_per_min;
+            s.move = m.move;
+            s.line = m.line;
+            s.dx_mm = static_cast<double>(m.steps_x) * machine.x.mm_per_step();
+            s.dy_mm = static_cast<double>(m.steps_y) * machine.y.mm_per_step();
+            segs.push_back(s);
+        }
+    }
+    return segs;
+}
+
+}  // namespace cnc::host::seed003

@@ -1,0 +1,199 @@
+#include "systems/atmega/atmega_report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "uart/core/line_receiver.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+namespace s3 = host::seed003;
+
+std::string hex(std::uint8_t b) {
+    char text[8];
+    std::snprintf(text, sizeof text, "0x%02X", b);
+    return text;
+}
+
+std::string id_name(s3::CommandId id) {
+    switch (id) {
+        case s3::CommandId::G00: return "G00";
+        case s3::CommandId::G01: return "G01";
+        case s3::CommandId::G02: return "G02";
+        case s3::CommandId::G03: return "G03";
+        case s3::CommandId::M30: return "M30";
+    }
+    return "?";
+}
+
+std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
+    char text[256];
+    std::snprintf(text, sizeof text, fmt, a, b, c);
+    return text;
+}
+
+// When the MCU's receiver had the last byte of each transfer (the middle of its stop bit at the MCU's bit
+// clock), by transfer index.
+std::vector<TimePs> transfer_arrivals(const AtmegaFacts& f) {
+    std::vector<TimePs> at(f.pc.transfers().size(), -1);
+    const auto& tx = f.cp2102.tx_log();
+    const auto& writes = f.pc.writes();
+    const TimePs decision_ps = uart::decision_offset_ps(f.mcu.chip().rx_clock(), f.mcu.chip().rx_format());
+    for (std::size_t j = 0; j < writes.size() && j < tx.size(); ++j) {
+        at[writes[j].transfer] = tx[j].t_start_bit_ps + decision_ps;
+    }
+    return at;
+}
+
+std::int64_t steps_in(const EdgeLog& steps, TimePs from_ps, TimePs to_ps) {
+    std::int64_t n = 0;
+    for (const Edge& e : steps.edges) n += e.level && e.t_ps > from_ps && e.t_ps < to_ps;
+    return n;
+}
+
+nlohmann::json motion_json(const AtmegaFacts& f, s3::CommandId id, const s3::Motion& m, const MotionWindow* w) {
+    const s3::TimerClock clk;
+    nlohmann::json j = {{"line", m.line},
+                        {"steps", {m.steps_x, m.steps_y}},
+                        {"count_x", m.count_x},
+                        {"ocr", {m.ocr_x.value, m.ocr_y.value}},
+                        {"ocr_exact", {m.ocr_x.exact, m.ocr_y.exact}},
+                        {"portb", hex(m.portb)},
+                        {"speed_asked_mm_per_s", {m.speed_x_mm_per_s, m.speed_y_mm_per_s}},
+                        {"speed_of_words_mm_per_s",
+                         {s3::speed_mm_per_s(m.ocr_x.value, f.machine.x.mm_per_step(), clk),
+                          s3::speed_mm_per_s(m.ocr_y.value, f.machine.y.mm_per_step(), clk)}},
+                        {"x_timebase", m.x_timebase},
+                        {"wrapped", m.wrapped}};
+    if (id == s3::CommandId::G00) j["count_y"] = m.count_y;
+    if (m.chord >= 0) j["chord"] = m.chord;
+    if (w != nullptr) {
+        j["t_begin_s"] = ps_to_s(w->t_begin_ps);
+        j["t_end_s"] = ps_to_s(w->t_end_ps);
+        j["complete"] = w->complete;
+    }
+    return j;
+}
+
+}  // namespace
+
+ChordGaps chord_gaps(const AtmegaFacts& f) {
+    ChordGaps g;
+    const std::vector<TimePs> arrival = transfer_arrivals(f);
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> transfer_of;
+    const auto& tr = f.pc.transfers();
+    for (std::size_t i = 0; i < tr.size(); ++i) {
+        if (tr[i].motion >= 0) transfer_of[{tr[i].command, static_cast<std::size_t>(tr[i].motion)}] = i;
+    }
+    for (std::size_t k = 1; k < f.windows.size(); ++k) {
+        const MotionWindow& prev = f.windows[k - 1];
+        const MotionWindow& w = f.windows[k];
+        if (w.command != prev.command || w.motion == 0) continue;
+        const TimePs ready = arrival[transfer_of.at({w.command, w.motion})];
+        if (ready <= prev.t_end_ps) continue;
+        ++g.late;
+        g.wait_max_ps = std::max(g.wait_max_ps, w.t_begin_ps - prev.t_end_ps);
+        g.y_steps_waiting += steps_in(f.y_steps, prev.t_end_ps, w.t_begin_ps);
+    }
+    return g;
+}
+
+std::vector<std::string> link_warnings(const AtmegaFacts& f) {
+    std::vector<std::string> w;
+    const avr::AvrCoreStats st = f.mcu.stats();
+    if (st.usart.rx_framing_errors > 0) {
+        w.push_back(std::to_string(st.usart.rx_framing_errors) + " UART framing errors at the MCU");
+    }
+    if (f.cp2102.stats().framing_errors > 0) {
+        w.push_back(std::to_string(f.cp2102.stats().framing_errors) + " UART framing errors at the CP2102");
+    }
+    if (f.pc.unexpected_confirms() > 0) {
+        w.push_back(std::to_string(f.pc.unexpected_confirms()) +
+                    " confirm bytes other than 0x06 (CAD2G takes any byte as a confirm)");
+    }
+    const ChordGaps gaps = chord_gaps(f);
+    if (gaps.late > 0) {
+        w.push_back(std::to_string(gaps.late) + " chords started late (their bytes came after the chord before had "
+                    "ended): Y took " + std::to_string(gaps.y_steps_waiting) + " steps meanwhile");
+    }
+    return w;
+}
+
+nlohmann::json details_json(const AtmegaFacts& f) {
+    const uart::Cp2102Baud& baud = f.cp2102.baud();
+    const avr::AvrCoreStats st = f.mcu.stats();
+    const ChordGaps gaps = chord_gaps(f);
+    std::map<std::pair<std::size_t, std::size_t>, const MotionWindow*> window_of;
+    for (const MotionWindow& w : f.windows) window_of[{w.command, w.motion}] = &w;
+
+    nlohmann::json commands = nlohmann::json::array();
+    for (std::size_t c = 0; c < f.plan.commands.size(); ++c) {
+        const s3::Command& cmd = f.plan.commands[c];
+        nlohmann::json motions = nlohmann::json::array();
+        for (std::size_t m = 0; m < cmd.motions.size(); ++m) {
+            const auto w = window_of.find({c, m});
+            motions.push_back(motion_json(f, cmd.id, cmd.motions[m], w == window_of.end() ? nullptr : w->second));
+        }
+        commands.push_back({{"id", id_name(cmd.id)}, {"bytes", s3::command_bytes(cmd).size()}, {"motions", motions}});
+    }
+    return {{"firmware", f.firmware},
+            {"link",
+             {{"requested_baud", baud.requested},
+              {"line_baud", baud.actual_bd},
+              {"line_baud_error_pct", baud.error_pct},
+              {"mcu_baud", f.mcu_baud},
+              {"mcu_vs_line_pct", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0},
+              {"bytes_to_mcu", f.cp2102.tx_log().size()},
+              {"bytes_from_mcu", f.cp2102.rx_log().size()},
+              {"framing_errors_at_mcu", st.usart.rx_framing_errors},
+              {"framing_errors_at_host", f.cp2102.stats().framing_errors},
+              {"frames_lost_at_mcu", st.usart.rx_lost_disabled + st.usart.rx_overruns}}},
+            {"pc",
+             {{"transfers", f.pc.transfers().size()},
+              {"bytes_written", f.pc.writes().size()},
+              {"unexpected_confirms", f.pc.unexpected_confirms()},
+              {"finished", f.pc.finished()},
+              {"t_end_s", f.pc.finished() ? nlohmann::json(ps_to_s(f.pc.t_end_ps())) : nlohmann::json(nullptr)}}},
+            {"mcu", {{"cycles", st.cycles}, {"stopped", f.mcu.stopped()}}},
+            {"chords",
+             {{"late", gaps.late},
+              {"wait_max_ms", static_cast<double>(gaps.wait_max_ps) / static_cast<double>(kPsPerMs)},
+              {"y_steps_waiting", gaps.y_steps_waiting}}},
+            {"commands", commands}};
+}
+
+std::string details_text(const AtmegaFacts& f) {
+    const uart::Cp2102Baud& baud = f.cp2102.baud();
+    const avr::AvrCoreStats st = f.mcu.stats();
+    const ChordGaps gaps = chord_gaps(f);
+    std::map<std::string, std::pair<int, std::size_t>> per_id;  // commands, motions
+    for (const s3::Command& c : f.plan.commands) {
+        auto& n = per_id[id_name(c.id)];
+        ++n.first;
+        n.second += c.motions.size();
+    }
+    std::ostringstream t;
+    t << "atmega link and host\n"
+      << format("  line %.2f Bd (%+.3f %% vs requested), MCU USART %.1f Bd: ", baud.actual_bd, baud.error_pct,
+                f.mcu_baud)
+      << format("%+.3f %% against the line\n", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0)
+      << "  PC wrote " << f.pc.writes().size() << " bytes, one per confirm (" << f.pc.unexpected_confirms()
+      << " unexpected confirm values); framing errors at the MCU " << st.usart.rx_framing_errors
+      << ", at the CP2102 " << f.cp2102.stats().framing_errors << '\n'
+      << "  commands:";
+    for (const auto& [id, n] : per_id) {
+        t << ' ' << id << " x" << n.first;
+        if (id == "G02" || id == "G03") t << " (" << n.second << " chords)";
+    }
+    t << '\n'
+      << "  chords with late data " << gaps.late
+      << format(", longest wait %.3f ms, Y steps while waiting ", static_cast<double>(gaps.wait_max_ps) / 1e9)
+      << gaps.y_steps_waiting << '\n';
+    return t.str();
+}
+
+}  // namespace cnc::sim

@@ -1,0 +1,42 @@
+// The atmega section of the run report: the link at both ends (the CP2102's rate and the MCU's 58 823.5 Bd),
+// the PC program's bytes and confirms, every command with its words and windows, and what happened between
+// chords (late data: Y keeps stepping, seed 003 §5.4.3).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "avr/avr_core.hpp"
+#include "host/core/seed003/plan.hpp"
+#include "host/pc_program.hpp"
+#include "systems/atmega/motion_windows.hpp"
+#include "uart/cp2102.hpp"
+
+namespace cnc::sim {
+
+struct ChordGaps {
+    int late = 0;             // chords whose last byte the MCU received after the chord before had ended
+    TimePs wait_max_ps = 0;   // longest end-of-chord to reload gap
+    std::int64_t y_steps_waiting = 0;  // Y steps the driver took in those gaps
+};
+
+struct AtmegaFacts {
+    const host::seed003::Plan& plan;
+    const host::MachineModel& machine;
+    const host::PcProgram& pc;
+    const uart::Cp2102& cp2102;
+    const avr::AvrCore& mcu;
+    const std::vector<MotionWindow>& windows;
+    const EdgeLog& y_steps;  // Y steps the driver took (enabled)
+    std::string firmware;
+    double mcu_baud = 0.0;   // f_cpu / (16 (UBRR0 + 1))
+};
+
+[[nodiscard]] ChordGaps chord_gaps(const AtmegaFacts& f);
+// Framing errors at either end, confirm values other than 0x06, chords that started late.
+[[nodiscard]] std::vector<std::string> link_warnings(const AtmegaFacts& f);
+[[nodiscard]] nlohmann::json details_json(const AtmegaFacts& f);
+[[nodiscard]] std::string details_text(const AtmegaFacts& f);
+
+}  // namespace cnc::sim

@@ -1,0 +1,196 @@
+// Whole atmega runs (PC program -> CP2102 -> ATmega328P running the seed 003 firmware -> DRV8825 -> belts)
+// against the seed 003 numbers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "atmega_test_util.hpp"
+#include "uart/core/line_receiver.hpp"
+
+using cnc::TimePs;
+using cnc::test::has_warning;
+using cnc::test::kAvrCyclePs;
+using cnc::test::periods;
+using cnc::test::run_atmega;
+using cnc::test::step_period_ps;
+
+// Check 1 (thesis eqs. 5.1-5.2): 10.45 mm/s at 1/32 -> OCR0A 3 -> 12.207 mm/s measured from the STEP edges.
+// The rate error is 1953.125 / 1672 - 1 = +16.81 % (the thesis's rounded 12.20 mm/s gives +16.7 %).
+TEST(AtmegaSpeed, ThesisOcr3MeasuredFromTheStepEdges) {
+    const auto out = run_atmega("speed_10_45");
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& motion = out.report.at("atmega").at("commands").at(0).at("motions").at(0);
+    EXPECT_EQ(motion.at("ocr").at(0), 3);
+    EXPECT_NEAR(motion.at("ocr_exact").at(0).get<double>(), 3.6725, 1e-4);
+    const auto& x = out.metrics.axes.at(0);
+    ASSERT_EQ(x.rising_edges, 3200U);
+    ASSERT_EQ(x.runs.size(), 1U);
+    const auto& run = x.runs[0];
+    EXPECT_DOUBLE_EQ(*run.rate_achieved_steps_per_s, 1953.125);
+    EXPECT_NEAR(*run.speed_mm_per_min / 60.0, 12.207, 5e-4);
+    EXPECT_NEAR(*run.rate_commanded_steps_per_s, 10.45 * 160.0, 1e-9);
+    EXPECT_NEAR(*run.rate_error_pct, (1953.125 / 1672.0 - 1.0) * 100.0, 1e-9);
+    EXPECT_NEAR(*run.rate_error_pct, 16.81, 0.005);
+    EXPECT_NEAR(*out.metrics.moves.at(0).timing.feed_error_pct, 16.81, 0.005);
+}
+
+
+
+// Check 3: G1 X20 Y7 at 10 mm/s: OCR0A 4 (X 1562.5 steps/s), OCR2A 13 (Y 558.04 steps/s). Only X is counted
+// (3200 steps, 2.048 s); Y runs for that time: its edges at 7 + 14 k timer periods of 1024 cycles that fall
+// inside, 1143 against the 1120 commanded: 23 steps (143.75 um) past the end point.
+TEST(AtmegaDiagonal, RatesFollowTheEightBitWordsNotTheCommandedRatio) {
+    const auto out = run_atmega("diagonal_20x7");
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& motion = out.report.at("atmega").at("commands").at(0).at("motions").at(0);
+    EXPECT_EQ(motion.at("ocr"), nlohmann::json({4, 13}));
+    const auto xr = out.arch.input.axes[0].step.rising();
+    const auto yr = out.arch.input.axes[1].step.rising();
+    ASSERT_EQ(xr.size(), 3200U);
+    for (const TimePs d : periods(xr)) ASSERT_EQ(d, step_period_ps(4));
+    for (const TimePs d : periods(yr)) ASSERT_EQ(d, step_period_ps(13));
+    // Both timers start on the same cycle (GTCCR.TSM): the first rises after one match each.
+    EXPECT_EQ(yr.front() - xr.front(), (14 - 5) * 1024 * kAvrCyclePs);
+    const TimePs x_time = 3200 * step_period_ps(4);
+    const auto expected_y = static_cast<std::size_t>((x_time - step_period_ps(13) / 2) / step_period_ps(13) + 1);
+    EXPECT_EQ(expected_y, 1143U);
+    EXPECT_EQ(yr.size(), expected_y);
+    const auto& x = out.metrics.axes[0].runs.at(0);
+    const auto& y = out.metrics.axes[1].runs.at(0);
+    const double ratio = *x.rate_achieved_steps_per_s / *y.rate_achieved_steps_per_s;
+    EXPECT_NEAR(ratio, 14.0 / 5.0, 1e-12);  // (OCR2A + 1) / (OCR0A + 1)
+    EXPECT_NEAR(ratio / (20.0 / 7.0) - 1.0, -0.02, 1e-12);  // 2 % off the commanded ratio
+    const auto& move = out.metrics.moves.at(0);
+    EXPECT_EQ(move.steps_emitted, (std::vector<std::int64_t>{3200, 1143}));
+    EXPECT_NEAR(*move.path.endpoint_vs_command_um, 23 * 6.25, 1e-6);
+    EXPECT_NEAR(*out.metrics.path.contour_max_um, 143.886, 1e-3);  // the end point, 23 steps up from the line
+    EXPECT_EQ(*out.metrics.pulse.tie_max_ns, 0.0);
+}
+
+// The 45 degree diagonal: both axes get OCR 3, so the ratio is exact and the path straight, but the speed is
+// the OCR 3 speed on each axis (12.207 mm/s), 3.6 % above the commanded 11.785 mm/s.
+TEST(AtmegaDiagonal, FortyFiveDegreesKeepsTheRatio) {
+    const auto out = run_atmega("diagonal_45");
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& move = out.metrics.moves.at(0);
+    EXPECT_EQ(move.steps_emitted, (std::vector<std::int64_t>{3200, 3200}));
+    EXPECT_LT(*out.metrics.path.contour_max_um, 1e-6);
+    EXPECT_NEAR(*move.timing.feed_error_pct, (1953.125 / (1000.0 / 60.0 / std::sqrt(2.0) * 160.0) - 1.0) * 100.0,
+                1e-6);
+}
+
+// Check 3, circle: 180 chords of 2 degrees, Y never counted: each chord's Y error stays in the machine. The
+// contour error is reported on the chords (the G00 before it is a dog-leg and has its own).
+TEST(AtmegaCircle, ChordsRunAndContourErrorIsReported) {
+    const auto out = run_atmega("circle_r10");
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& chords = out.report.at("atmega").at("chords");
+    EXPECT_EQ(chords.at("late"), 0);  // F600: a 2-degree chord takes 35 ms, its 4 bytes 12 ms
+    ASSERT_EQ(out.metrics.moves.size(), 181U);
+    double chord_contour_max = 0.0;
+    for (std::size_t i = 1; i < out.metrics.moves.size(); ++i) {
+        const auto& m = out.metrics.moves[i];
+        ASSERT_EQ(m.steps_emitted[0], m.steps_commanded[0]) << "chord " << i;  // X is counted
+        chord_contour_max = std::max(chord_contour_max, *m.path.contour_max_um);
+    }
+    EXPECT_GT(chord_contour_max, 6.25);   // well beyond one step: Y's speed words decide its distance
+    EXPECT_LT(chord_contour_max, 1000.0);
+    // the G00 dog-leg from 0,0 to 20,10: X and Y at v_max until Y arrives at 10,10, 4.47 mm off the line
+    EXPECT_NEAR(*out.metrics.moves[0].path.contour_max_um, 5.0 / std::sqrt(1.25) * 1000.0, 1e-6);
+    EXPECT_EQ(*out.metrics.laser->on_in_rapid_ms, 0.0);
+}
+
+// Seed 003 §5.4.3: "the communication must finish before the displacement": 0.5-degree chords at F600 take
+// 8.7 ms, their 4 confirmed bytes about 12 ms, so the MCU waits with X stopped while Y keeps stepping.
+TEST(AtmegaCircle, ShortChordsStarveAndYKeepsStepping) {
+    const auto out = run_atmega("circle_r10", {"atmega.arc_step_deg=0.5"});
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& chords = out.report.at("atmega").at("chords");
+    EXPECT_GT(chords.at("late").get<int>(), 600);
+    EXPECT_GT(chords.at("y_steps_waiting").get<int>(), 0);
+    EXPECT_GT(chords.at("wait_max_ms").get<double>(), 2.0);
+    EXPECT_TRUE(has_warning(out, "chords started late"));
+}
+
+// Check 2: 420 mm = 67200 steps does not fit the 16-bit counter: split into two commands, with a warning.
+TEST(AtmegaLongMove, SplitAndReported) {
+    const auto out = run_atmega("long_move");
+    ASSERT_TRUE(out.ok) << out.failure;
+    EXPECT_TRUE(has_warning(out, "G00 count 67200 exceeds the 16-bit step counter (409.6 mm at 160 steps/mm)"));
+    EXPECT_EQ(out.metrics.axes[0].net_steps, 67200);
+    EXPECT_EQ(out.metrics.moves.size(), 2U);
+    EXPECT_EQ(*out.metrics.path.job_end_um, 0.0);
+}
+
+// Check 2, as the seed's registers would take it: 67200 mod 65536 = 1664 steps, and the metrics show the miss.
+TEST(AtmegaLongMove, WrappedAsTheSeedWouldIsReported) {
+    const auto out = run_atmega("long_move", {"atmega.long_moves=wrap"});
+    ASSERT_TRUE(out.ok) << out.failure;
+    EXPECT_TRUE(has_warning(out, "sent modulo 65536 as 1664"));
+    EXPECT_EQ(out.metrics.axes[0].net_steps, 1664);
+    EXPECT_NEAR(*out.metrics.path.job_end_um, 65536 * 6.25, 1e-6);  // 409.6 mm short
+}
+
+// Check 4: the MCU transmits at UBRR0 = 16: 272 cycles (17 us) a bit, 58 823.5 Bd. The confirm is 0x06.
+TEST(AtmegaLink, UsartRunsAt58823BaudAndDeliversEveryByte) {
+    const auto out = run_atmega("square_20mm");
+    ASSERT_TRUE(out.ok) << out.failure;
+    const auto& tx = out.arch.lines.at("uart_tx");
+    const auto starts = tx.falling();
+    ASSERT_FALSE(starts.empty());
+    const cnc::uart::BitClock avr_bit{272, 16'000'000};
+    EXPECT_NEAR(avr_bit.baud(), 58823.53, 0.01);
+    const auto frame = cnc::uart::receive_frame(tx, starts.front(), avr_bit, cnc::uart::kFormat8N1);
+    EXPECT_EQ(frame.status, cnc::uart::RxStatus::Ok);
+    EXPECT_EQ(frame.byte, 0x06);
+    for (const auto& e : tx.edges) {  // every edge of the frame on the 272-cycle bit grid of its start bit
+        if (e.t_ps > starts.front() + 10 * 272 * kAvrCyclePs) break;
+        EXPECT_EQ((e.t_ps - starts.front()) % (272 * kAvrCyclePs), 0);
+    }
+    const auto& link = out.report.at("atmega").at("link");
+    EXPECT_NEAR(link.at("mcu_baud").get<double>(), 16e6 / 272.0, 1e-6);
+    EXPECT_NEAR(link.at("line_baud").get<double>(), 24e6 / 417.0, 1e-6);  // CP2102 at 57600: 57 553.96 Bd
+    EXPECT_NEAR(link.at("mcu_vs_line_pct").get<double>(), 2.206, 0.001);
+    EXPECT_EQ(link.at("framing_errors_at_mcu"), 0);
+    EXPECT_EQ(link.at("framing_errors_at_host"), 0);
+    const auto& pc = out.report.at("atmega").at("pc");
+    EXPECT_EQ(pc.at("bytes_written"), 39);  // 2 G00 x 7, 4 G01 x 6, M30
+    EXPECT_EQ(link.at("bytes_to_mcu"), 39);
+    EXPECT_EQ(link.at("bytes_from_mcu"), 39);  // one confirm per byte
+    EXPECT_EQ(pc.at("unexpected_confirms"), 0);
+}
+
+// Check 4, the other side: the link at 51200 Bd against the MCU's 58 823.5 (+14.95 %): framing errors, garbled
+// confirms, and CAD2G, which has no timeout, never finishes.
+TEST(AtmegaLink, LargeBaudMismatchShowsFramingErrors) {
+    const auto out = run_atmega("baud_mismatch");
+    EXPECT_FALSE(out.ok);
+    const auto& link = out.report.at("atmega").at("link");
+    EXPECT_NEAR(link.at("mcu_vs_line_pct").get<double>(), 14.95, 0.01);
+    EXPECT_GT(link.at("framing_errors_at_mcu").get<int>(), 0);
+    EXPECT_GT(out.report.at("atmega").at("pc").at("unexpected_confirms").get<int>(), 0);
+    EXPECT_TRUE(has_warning(out, "UART framing errors at the MCU"));
+}
+
+// The link baud: 57600 unless the scenario sets link.baud (the fpga-uart default is 115200).
+TEST(AtmegaLink, DefaultLinkBaudIs57600) {
+    const auto out = run_atmega("diagonal_45", {});
+    EXPECT_EQ(out.report.at("atmega").at("link").at("requested_baud"), 57600);
+}
+
+
+// Seed 000's six moves through seed 003: G00 counts both axes (dog-leg at v_max), G01 counts X only. Move 2
+// (dx = 0) is timed by X's timer at Y's OCR, so Y is exact too; move 4 asks v_x 13.33 and v_y 12.47 mm/s, both
+// truncate to OCR 2, so Y makes as many steps as X: 4132 for 3864, 1.675 mm past the end point.
+TEST(AtmegaJobs, SixSegmentCountsWhatTheFirmwareCounts) {
+    const auto out = run_atmega("six_segment");
+    ASSERT_TRUE(out.ok) << out.failure;
+    const std::vector<std::vector<std::int64_t>> emitted = {{4257, 15889}, {0, 8000}, {2317, -5034},
+                                                            {4132, 4132},  {-3807, -6829}, {6000, 0}};
+    ASSERT_EQ(out.metrics.moves.size(), emitted.size());
+    for (std::size_t i = 0; i < emitted.size(); ++i) EXPECT_EQ(out.metrics.moves[i].steps_emitted, emitted[i]) << i;
+    const auto& m4 = out.report.at("atmega").at("commands").at(3).at("motions").at(0);
+    EXPECT_EQ(m4.at("ocr"), nlohmann::json({2, 2}));
+    EXPECT_NEAR(*out.metrics.moves[3].path.endpoint_vs_command_um, (4132 - 3864) * 6.25, 1e-6);
+    EXPECT_EQ(*out.metrics.laser->on_in_rapid_ms, 0.0);
+}

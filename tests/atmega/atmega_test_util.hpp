@@ -1,0 +1,34 @@
+// Runs a shipped atmega scenario in this test process (one SystemC elaboration per process).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "run/run.hpp"
+#include "scenario/scenario.hpp"
+
+namespace cnc::test {
+
+inline constexpr TimePs kAvrCyclePs = 62'500;  // 16 MHz
+
+// STEP period of a CTC toggle timer at N = 1024: two matches of 1024 (OCR + 1) cycles.
+constexpr TimePs step_period_ps(int ocr) { return 2 * 1024 * (ocr + 1) * kAvrCyclePs; }
+
+inline sim::RunOutcome run_atmega(const std::string& name, const std::vector<std::string>& sets = {}) {
+    const std::string path = std::string(CNC_SOURCE_DIR) + "/scenarios/atmega/" + name + ".toml";
+    return sim::run_scenario(sim::load_scenario(path, sets));
+}
+
+inline std::vector<TimePs> periods(const std::vector<TimePs>& t) {
+    std::vector<TimePs> d;
+    for (std::size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
+    return d;
+}
+
+inline bool has_warning(const sim::RunOutcome& out, const std::string& part) {
+    for (const std::string& w : out.arch.warnings) {
+        if (w.find(part) != std::string::npos) return true;
+    }
+    return false;
+}
+
+}  // namespace cnc::test

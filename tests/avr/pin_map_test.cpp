@@ -1,0 +1,64 @@
+// Pin map parsing (avr.pins): ATmega328P port pins and the machine signals they carry.
+#include <gtest/gtest.h>
+
+#include "avr/core/pin_map.hpp"
+#include "common/bad_input.hpp"
+
+using namespace cnc::avr;
+
+namespace {
+
+std::string error_of(const std::string& text) {
+    try {
+        (void)parse_pin_map(text, "s.toml: avr.pins");
+    } catch (const cnc::BadInput& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(AvrPinMap, DefaultIsSeed003) {
+    const PinMap m = default_pin_map();
+    EXPECT_EQ(m.to_string(), "step_x=PD6,dir_x=PB0,en_x=PB2,step_y=PB3,dir_y=PB5,en_y=PB4,head=PB1");
+    EXPECT_EQ(m.pins.size(), 7U);
+}
+
+TEST(AvrPinMap, ParsesPinNames) {
+    EXPECT_EQ(parse_pin("PD6", ""), (Pin{'D', 6}));
+    EXPECT_EQ(parse_pin(" pb3 ", ""), (Pin{'B', 3}));
+    EXPECT_EQ(parse_pin("PC6", ""), (Pin{'C', 6}));
+    EXPECT_EQ(parse_pin("PB7", ""), (Pin{'B', 7}));
+    EXPECT_EQ(parse_pin("PD2", "").name(), "PD2");
+}
+
+TEST(AvrPinMap, EntriesOverrideTheDefault) {
+    const PinMap m = parse_pin_map("step_x = PD5, DIR_X=pc0", "w");
+    EXPECT_EQ(m.at("step_x"), (Pin{'D', 5}));
+    EXPECT_EQ(m.at("dir_x"), (Pin{'C', 0}));
+    EXPECT_EQ(m.at("head"), (Pin{'B', 1}));
+    EXPECT_EQ(parse_pin_map("", "w").to_string(), default_pin_map().to_string());
+}
+
+TEST(AvrPinMap, RejectsPinsThatDoNotExist) {
+    const std::string e9 = error_of("step_x=PE9");
+    EXPECT_NE(e9.find("s.toml: avr.pins"), std::string::npos);
+    EXPECT_NE(e9.find("'PE9'"), std::string::npos);
+    EXPECT_NE(e9.find("PB0..PB7, PC0..PC6, PD2..PD7"), std::string::npos);
+    EXPECT_NE(error_of("step_x=PB8").find("'PB8' does not exist"), std::string::npos);
+    EXPECT_NE(error_of("step_x=PC7").find("'PC7' does not exist"), std::string::npos);
+    EXPECT_NE(error_of("step_x=PD1").find("TXD"), std::string::npos);
+    EXPECT_NE(error_of("step_x=PD0").find("RXD"), std::string::npos);
+    EXPECT_NE(error_of("step_x=D6").find("not a port pin name"), std::string::npos);
+    EXPECT_NE(error_of("step_x=PB10").find("not a port pin name"), std::string::npos);
+}
+
+TEST(AvrPinMap, RejectsUnknownSignalsAndClashes) {
+    const std::string unknown = error_of("spindle=PB1");
+    EXPECT_NE(unknown.find("unknown signal 'spindle'"), std::string::npos);
+    EXPECT_NE(unknown.find("step_x, dir_x, en_x, step_y, dir_y, en_y, head"), std::string::npos);
+    EXPECT_NE(error_of("step_x").find("not signal=pin"), std::string::npos);
+    EXPECT_NE(error_of("step_x=PD5,step_x=PD4").find("mapped twice"), std::string::npos);
+    EXPECT_NE(error_of("step_x=PB1").find("'head' and 'step_x' are both on PB1"), std::string::npos);
+}

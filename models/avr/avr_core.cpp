@@ -1,4 +1,5 @@
 #include "avr/avr_core.hpp"
+#include "common/sc_time.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,6 @@ namespace cnc::avr {
 
 namespace {
 
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
 
 // Cycles the AVR keeps away from a frame decision it has not been told about: the longest AVR instruction
 // takes 4 cycles (CALL, RET) and waking from sleep overshoots by 1.

@@ -7,6 +7,7 @@
 #include <map>
 #include <systemc>
 
+#include "common/sc_time.hpp"
 #include "common/units.hpp"
 
 namespace cnc::fpga {
@@ -27,7 +28,6 @@ private:
 };
 
 // Current simulation time in ps (the kernel runs at the default 1 ps resolution).
-[[nodiscard]] inline TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
 [[nodiscard]] inline sc_core::sc_time ps(TimePs t) {
     return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t));
 }

@@ -1,13 +1,7 @@
 #include "host/pc_program.hpp"
+#include "common/sc_time.hpp"
 
 namespace cnc::host {
-
-namespace {
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
-void wait_ps(TimePs t) {
-    if (t > 0) sc_core::wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t)));
-}
-}  // namespace
 
 PcProgram::PcProgram(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
                      std::vector<seed003::Transfer> transfers)

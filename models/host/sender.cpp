@@ -1,17 +1,11 @@
 #include "host/sender.hpp"
+#include "common/sc_time.hpp"
 
 #include <cstdio>
 
 #include "host/core/packet_codec.hpp"
 
 namespace cnc::host {
-
-namespace {
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
-void wait_ps(TimePs t) {
-    if (t > 0) sc_core::wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t)));
-}
-}  // namespace
 
 Sender::Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
                std::array<std::uint8_t, 9> init_packet, std::vector<std::array<std::uint8_t, 11>> motion_packets)

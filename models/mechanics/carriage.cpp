@@ -1,4 +1,5 @@
 #include "mechanics/carriage.hpp"
+#include "common/sc_time.hpp"
 
 #include <string>
 
@@ -8,7 +9,6 @@ namespace cnc::mech {
 
 namespace {
 
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
 
 void require_complete(const CarriageAxis& a, const char* axis) {
     if (a.step_event == nullptr || a.motor == nullptr || a.transmission == nullptr)

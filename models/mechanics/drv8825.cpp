@@ -1,4 +1,5 @@
 #include "mechanics/drv8825.hpp"
+#include "common/sc_time.hpp"
 
 #include <string>
 
@@ -6,7 +7,6 @@ namespace cnc::mech {
 
 namespace {
 
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
 
 }  // namespace
 

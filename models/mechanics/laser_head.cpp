@@ -1,10 +1,10 @@
 #include "mechanics/laser_head.hpp"
+#include "common/sc_time.hpp"
 
 namespace cnc::mech {
 
 namespace {
 
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
 
 }  // namespace
 

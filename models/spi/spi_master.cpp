@@ -1,4 +1,5 @@
 #include "spi/spi_master.hpp"
+#include "common/sc_time.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -6,7 +7,6 @@
 namespace cnc::spi {
 
 namespace {
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
 bool bit_of(const std::vector<std::uint8_t>& bytes, std::size_t k) {
     return ((bytes[k / 8] >> (7 - k % 8)) & 1U) != 0;  // MSB first
 }

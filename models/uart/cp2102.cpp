@@ -1,4 +1,5 @@
 #include "uart/cp2102.hpp"
+#include "common/sc_time.hpp"
 
 #include <algorithm>
 #include <iterator>
@@ -10,7 +11,6 @@ namespace cnc::uart {
 
 namespace {
 
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
 sc_core::sc_time ps(TimePs t) { return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t)); }
 
 }  // namespace

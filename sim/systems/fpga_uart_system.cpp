@@ -139,13 +139,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     fpga.rx_valid(w.rx_valid);
     fpga.tx_start(w.ack);
     Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);
-    machine.step_x(w.step_x);
-    machine.dir_x(w.dir_x);
-    machine.n_enbl_x(w.n_enbl);
-    machine.step_y(w.step_y);
-    machine.dir_y(w.dir_y);
-    machine.n_enbl_y(w.n_enbl);
-    machine.laser(w.laser);
+    machine.bind(w.step_x, w.dir_x, w.n_enbl, w.step_y, w.dir_y, w.n_enbl, w.laser);
     EdgeRecorder rec("probes");
     record_wires(rec, w);
     std::unique_ptr<VcdTrace> vcd;

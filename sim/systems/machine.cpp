@@ -53,4 +53,17 @@ Machine::Machine(const sc_core::sc_module_name& name, const host::MachineModel& 
     m_head.laser(laser);
 }
 
+void Machine::bind(sc_core::sc_signal<bool>& step_x_wire, sc_core::sc_signal<bool>& dir_x_wire,
+                   sc_core::sc_signal<bool>& n_enbl_x_wire, sc_core::sc_signal<bool>& step_y_wire,
+                   sc_core::sc_signal<bool>& dir_y_wire, sc_core::sc_signal<bool>& n_enbl_y_wire,
+                   sc_core::sc_signal<bool>& laser_wire) {
+    step_x(step_x_wire);
+    dir_x(dir_x_wire);
+    n_enbl_x(n_enbl_x_wire);
+    step_y(step_y_wire);
+    dir_y(dir_y_wire);
+    n_enbl_y(n_enbl_y_wire);
+    laser(laser_wire);
+}
+
 }  // namespace cnc::sim

@@ -30,6 +30,12 @@ public:
     Machine(const sc_core::sc_module_name& name, const host::MachineModel& model, const mech::Drv8825Config& driver,
             geom::Vec2 origin_mm);
 
+    // Binds every input pin to the controller's wires (the same names in every architecture).
+    void bind(sc_core::sc_signal<bool>& step_x_wire, sc_core::sc_signal<bool>& dir_x_wire,
+              sc_core::sc_signal<bool>& n_enbl_x_wire, sc_core::sc_signal<bool>& step_y_wire,
+              sc_core::sc_signal<bool>& dir_y_wire, sc_core::sc_signal<bool>& n_enbl_y_wire,
+              sc_core::sc_signal<bool>& laser_wire);
+
     [[nodiscard]] const mech::Carriage& carriage() const { return m_carriage; }
     [[nodiscard]] const mech::Drv8825& driver_x() const { return m_drv_x; }
     [[nodiscard]] const mech::Drv8825& driver_y() const { return m_drv_y; }

@@ -58,6 +58,9 @@ RunMetrics compute_metrics(const RunInput& in) {
     RunMetrics out;
     out.with_moves = !in.moves.empty();
     out.with_tool = !in.tool.empty();
+    for (const std::vector<RateSegment>& segments : in.rate_segments) {
+        out.runs_per_rate_segment = out.runs_per_rate_segment || !segments.empty();
+    }
     out.limits = in.limits;
     out.run_split_tolerance = in.run_split_tolerance;
 
@@ -65,6 +68,7 @@ RunMetrics compute_metrics(const RunInput& in) {
     for (std::size_t a = 0; a < in.axes.size(); ++a) {
         AxisMetrics am = axis_metrics(in, idx, a);
         am.sync_max_abs_ns = sync.axis_max_abs_ns[a];
+        if (a < sync.axis_unmatched_edges.size()) am.sync_unmatched_edges = sync.axis_unmatched_edges[a];
         PulseTotals& t = out.pulse;
         keep_max(t.jitter_std_max_ns, am.pulse.jitter_std_max_ns);
         keep_max(t.jitter_pp_max_ns, am.pulse.jitter_pp_max_ns);

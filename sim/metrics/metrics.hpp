@@ -31,6 +31,7 @@ struct AxisMetrics {
     std::vector<PulseRun> runs;
     AxisPulseSummary pulse;
     std::optional<double> sync_max_abs_ns;
+    std::optional<std::size_t> sync_unmatched_edges;  // with a commanded trajectory (sync_error.hpp)
     DriverTimingReport driver;
 };
 
@@ -59,6 +60,7 @@ struct PulseTotals {
 struct RunMetrics {
     bool with_moves = false;
     bool with_tool = false;
+    bool runs_per_rate_segment = false;  // RunInput::rate_segments given: runs are its segments, not moves
     double run_split_tolerance = 0.0;  // the analyze-mode setting the runs were split with
     std::vector<AxisMetrics> axes;
     std::vector<MoveMetrics> moves;

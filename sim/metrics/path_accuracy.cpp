@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "metrics/commanded.hpp"
 #include "metrics/stats.hpp"
 
 namespace cnc::metrics {
@@ -51,11 +52,19 @@ PathResult compute_path_accuracy(const RunInput& in, const EdgeIndex& idx) {
     std::vector<MaxRms> following(moves.size());
     MaxRms contour_all;
     MaxRms following_all;
-    for (const ToolSample& s : in.tool) {
+    for (std::size_t i = 0; i < in.tool.size(); ++i) {
+        const ToolSample& s = in.tool[i];
         const std::size_t m = timeline.active_at(s.t_ps).value_or(0);
         const double c_um = contour_distance_mm(moves, m, s.pos) * kUmPerMm;
-        const TimePs t0 = idx.move_first_edge_ps[m].value_or(moves[m].t_begin_ps);
-        const double f_um = geom::distance(s.pos, expected_position(moves[m], t0, s.t_ps)) * kUmPerMm;
+        double f_um = 0.0;
+        if (in.commanded) {
+            const geom::Vec2 cmd = commanded_at(*in.commanded, s.t_ps).pos_mm;
+            f_um = geom::distance(s.pos, cmd) * kUmPerMm;
+            if (i > 0) f_um = std::max(f_um, geom::distance(in.tool[i - 1].pos, cmd) * kUmPerMm);
+        } else {
+            const TimePs t0 = idx.move_first_edge_ps[m].value_or(moves[m].t_begin_ps);
+            f_um = geom::distance(s.pos, expected_position(moves[m], t0, s.t_ps)) * kUmPerMm;
+        }
         contour[m].add(c_um);
         following[m].add(f_um);
         contour_all.add(c_um);

@@ -30,7 +30,10 @@ struct PathResult {
 // Samples are attributed to moves with MoveTimeline; samples before the first move go to the first.
 // Contour error takes the nearest of the active move's path and its neighbours' (a sample near a
 // corner may be nearer the next segment). Following error runs along from_mm -> to_mm at the move's
-// F from its first step edge (t_begin if it has none), held at from_mm before and at to_mm after.
+// F from its first step edge (t_begin if it has none), held at from_mm before and at to_mm after; with a
+// commanded trajectory (RunInput::commanded) it is the distance to that trajectory at the sample's time, taken
+// for the tool both just before and just after the step: the tool stands still between samples, so over a
+// sample interval the distance to a straight commanded path is largest at one of the interval's ends.
 // Rapid moves are included in every figure (their F is their own rapid feed); the per-move table
 // says which moves are rapid. Needs tool samples and moves; otherwise all figures are empty.
 [[nodiscard]] PathResult compute_path_accuracy(const RunInput& in, const EdgeIndex& idx);

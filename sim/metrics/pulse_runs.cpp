@@ -18,7 +18,7 @@ double rate_steps_per_s(TimePs t_first, TimePs t_last, std::size_t n) {
 }
 
 PulseRun measure(const RunInput& in, const AxisEdges& edges, std::size_t axis, EdgeRange r,
-                 std::optional<std::size_t> move) {
+                 std::optional<std::size_t> move, std::optional<double> commanded) {
     PulseRun run;
     run.move = move;
     run.edges_range = r;
@@ -33,16 +33,37 @@ PulseRun measure(const RunInput& in, const AxisEdges& edges, std::size_t axis, E
         const double steps_per_mm = in.axes[axis].steps_per_mm;
         if (steps_per_mm > 0.0) run.speed_mm_per_min = *run.rate_achieved_steps_per_s / steps_per_mm * 60.0;
     }
-    if (move && axis < 2) {
-        const double commanded = in.moves[*move].rate_steps_per_s[axis];
-        if (commanded > 0.0) {
-            run.rate_commanded_steps_per_s = commanded;
-            if (run.rate_achieved_steps_per_s) {
-                run.rate_error_pct = (*run.rate_achieved_steps_per_s - commanded) / commanded * 100.0;
-            }
+    if (commanded && *commanded > 0.0) {
+        run.rate_commanded_steps_per_s = commanded;
+        if (run.rate_achieved_steps_per_s) {
+            run.rate_error_pct = (*run.rate_achieved_steps_per_s - *commanded) / *commanded * 100.0;
         }
     }
     return run;
+}
+
+std::optional<double> move_rate(const RunInput& in, std::size_t axis, std::optional<std::size_t> move) {
+    if (!move || axis >= 2) return std::nullopt;
+    return in.moves[*move].rate_steps_per_s[axis];
+}
+
+// One run per rate segment holding edges: [t_k, t_k+1) (a rise at a segment's start is governed by it).
+std::vector<PulseRun> segment_runs(const RunInput& in, const AxisEdges& edges, std::size_t axis) {
+    const std::vector<RateSegment>& segments = in.rate_segments[axis];
+    const MoveTimeline timeline(in.moves);
+    std::vector<PulseRun> runs;
+    auto first = edges.rising.begin();
+    for (std::size_t k = 0; k < segments.size(); ++k) {
+        first = std::lower_bound(first, edges.rising.end(), segments[k].t_ps);
+        const auto last = k + 1 < segments.size() ? std::lower_bound(first, edges.rising.end(), segments[k + 1].t_ps)
+                                                  : edges.rising.end();
+        if (first == last) continue;
+        const EdgeRange r{static_cast<std::size_t>(first - edges.rising.begin()),
+                          static_cast<std::size_t>(last - edges.rising.begin())};
+        const std::optional<std::size_t> move = in.moves.empty() ? std::nullopt : timeline.active_at(*first);
+        runs.push_back(measure(in, edges, axis, r, move, segments[k].steps_per_s));
+    }
+    return runs;
 }
 
 }  // namespace
@@ -130,16 +151,17 @@ std::vector<EdgeRange> split_runs(const std::vector<TimePs>& rising, const std::
 
 std::vector<PulseRun> axis_runs(const RunInput& in, const EdgeIndex& idx, std::size_t axis) {
     const AxisEdges& edges = idx.axes[axis];
+    if (axis < in.rate_segments.size() && !in.rate_segments[axis].empty()) return segment_runs(in, edges, axis);
     std::vector<PulseRun> runs;
     if (in.moves.empty()) {
         for (const EdgeRange& r : split_runs(edges.rising, edges.dir_changes, in.run_split_tolerance)) {
-            runs.push_back(measure(in, edges, axis, r, std::nullopt));
+            runs.push_back(measure(in, edges, axis, r, std::nullopt, std::nullopt));
         }
         return runs;
     }
     const std::vector<EdgeRange>& by_move = idx.by_move[axis];
     for (std::size_t m = 0; m < by_move.size(); ++m) {
-        if (!by_move[m].empty()) runs.push_back(measure(in, edges, axis, by_move[m], m));
+        if (!by_move[m].empty()) runs.push_back(measure(in, edges, axis, by_move[m], m, move_rate(in, axis, m)));
     }
     return runs;
 }

@@ -59,7 +59,9 @@ struct AxisPulseSummary {
     std::optional<std::size_t> worst_jitter_run, worst_tie_run;  // indices into the run list
 };
 
-// Runs of one axis: one per move with edges (with moves), else split by period (split_runs).
+// Runs of one axis: one per commanded rate segment with edges (RunInput::rate_segments: the commanded rate is the
+// segment's, the move the one active at the run's first edge), else one per move with edges (with moves), else
+// split by period (split_runs).
 [[nodiscard]] std::vector<PulseRun> axis_runs(const RunInput& in, const EdgeIndex& idx, std::size_t axis);
 [[nodiscard]] AxisPulseSummary summarise_runs(const std::vector<PulseRun>& runs);
 

@@ -98,6 +98,7 @@ json axis_json(const AxisMetrics& a, const DriverLimits& limits) {
             {"worst_tie_run", opt(a.pulse.worst_tie_run)},
             {"rate_error_worst_pct", opt(a.pulse.rate_error_worst_pct)},
             {"sync_max_ns", opt(a.sync_max_abs_ns)},
+            {"sync_unmatched_edges", opt(a.sync_unmatched_edges)},
             {"driver_timing", driver_json(a.driver, limits)},
             {"runs", runs}};
 }

@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,36 @@ struct MoveSpec {
     TimePs t_end_ps = 0;
 };
 
+// The commanded timed trajectory of a controller with a trajectory planner (DESIGN.md §4: "the planner's continuous
+// profile where there is acceleration"): where the tool should be at each time, as the controller's own clock runs
+// it. With it, following error is measured against it and sync error of every STEP edge against the time it
+// crosses that step (sync_error.hpp), instead of the uniform motion at F from each move's first step.
+struct CommandedState {
+    geom::Vec2 pos_mm;
+    geom::Vec2 vel_mm_per_s;  // d pos / dt (0 while the trajectory is held)
+};
+
+struct CommandedTrajectory {
+    // Defined on [t_begin_ps, t_end_ps], continuous in position and velocity; held constant outside.
+    std::function<CommandedState(TimePs)> state_at;
+    TimePs t_begin_ps = 0;
+    TimePs t_end_ps = 0;
+    geom::Vec2 origin_mm;  // machine position at step count 0 on every axis (the counts start at 0 at t = 0)
+    // Scan step for the step crossings: every axis velocity may change sign at most once between two scan points
+    // (a controller that samples its planner once per servo period passes that period).
+    TimePs scan_step_ps = kPsPerMs;
+    // An edge farther than this from every crossing of its step is one the commanded motion does not make near
+    // then (a loop's overshoot and its correction): counted as unmatched instead of a sync error.
+    TimePs sync_window_ps = 100 * kPsPerMs;
+};
+
+// The step rate an axis was commanded from t_ps on (0 = stopped), for a controller that changes rates on its
+// own schedule (e.g. a rate word per servo period): pulse runs are then split at every change, not per move.
+struct RateSegment {
+    TimePs t_ps = 0;
+    double steps_per_s = 0.0;
+};
+
 struct RunInput {
     std::vector<AxisTrace> axes;    // x, y (analyze may give one)
     std::vector<MoveSpec> moves;    // sorted by t_begin_ps; empty for analyze
@@ -48,6 +79,8 @@ struct RunInput {
     TimePs t_job_end_ps = 0;
     DriverLimits limits;
     double run_split_tolerance = 0.005;  // analyze only: relative period change that starts a new run
+    std::optional<CommandedTrajectory> commanded;   // controllers with a planner
+    std::vector<std::vector<RateSegment>> rate_segments;  // [axis], sorted by t_ps; empty: runs per move
 };
 
 }  // namespace cnc::metrics

@@ -43,6 +43,7 @@ std::string pulse_section(const RunMetrics& m) {
     const PulseTotals& p = m.pulse;
     row("all", runs, p.jitter_std_max_ns, p.jitter_pp_max_ns, p.tie_rms_max_ns, p.tie_max_ns, p.tie_max_period_frac,
         p.rate_error_worst_pct, p.sync_max_abs_ns);
+    if (m.runs_per_rate_segment) return t.render("Pulse timing (one run per commanded rate word and axis)");
     return t.render(m.with_moves ? "Pulse timing (one run per move and axis)"
                                  : "Pulse timing (runs split by period change)");
 }

@@ -1,11 +1,130 @@
 #include "systems/spi_fpga/spi_fpga_system.hpp"
 
+#include <memory>
+
 #include "common/bad_input.hpp"
+#include "fpga/spi/spi_fpga_top.hpp"
+#include "host/core/planner/planner.hpp"
+#include "host/servo/servo_thread.hpp"
+#include "probes/edge_recorder.hpp"
+#include "probes/vcd_trace.hpp"
+#include "spi/spi_master.hpp"
+#include "systems/machine.hpp"
+#include "systems/spi_fpga/planned_moves.hpp"
+#include "systems/spi_fpga/spi_fpga_report.hpp"
 
 namespace cnc::sim {
 
-ArchRun run_spi_fpga(const Scenario& scenario, const Job&) {
-    throw BadInput(scenario.file + ": scenario.architecture", "'spi-fpga' is not implemented yet (issue 4)");
+namespace {
+
+// Every wire of the system, named as the pins are in every architecture (VCD and analyze scripts rely on it).
+struct Wires {
+    sc_core::sc_signal<bool> sclk{"sclk", false};  // mode 0: idles low
+    sc_core::sc_signal<bool> mosi{"mosi", false};
+    sc_core::sc_signal<bool> miso{"miso", false};
+    sc_core::sc_signal<bool> ss{"ss", true};       // active low
+    sc_core::sc_signal<bool> step_x{"step_x", false}, dir_x{"dir_x", false};
+    sc_core::sc_signal<bool> step_y{"step_y", false}, dir_y{"dir_y", false};
+    sc_core::sc_signal<bool> n_enbl{"n_enbl", false};  // the FPGA drives no EN pin: drivers always enabled
+    sc_core::sc_signal<bool> laser{"laser", false};    // seed 004's FPGA has no laser output
+};
+
+host::servo::ServoConfig servo_config(const Scenario& s) {
+    host::servo::ServoConfig c = s.spi_fpga.servo;
+    c.seed = s.seed;
+    c.origin_mm = s.interpreter.start_mm;
+    const host::AxisMachine* machine[] = {&s.machine.x, &s.machine.y};
+    const host::planner::AxisLimits* limits[] = {&s.spi_fpga.planner.x, &s.spi_fpga.planner.y};
+    for (std::size_t a = 0; a < host::servo::kAxes; ++a) {
+        c.axes[a] = {machine[a]->steps_per_mm(), limits[a]->max_velocity_mm_per_s, limits[a]->max_accel_mm_per_s2};
+    }
+    return c;
+}
+
+}  // namespace
+
+ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
+    if (!job.program) {
+        throw BadInput(s.file + ": scenario.job",
+                       "spi-fpga needs a G-code job: its host plans the programmed moves (a seed 000 steps file "
+                       "holds only the fpga-uart packets)");
+    }
+    check_rate_limits(s.spi_fpga, s.machine, s.file);
+    const auto trajectory =
+        std::make_shared<const host::planner::Trajectory>(host::planner::plan(*job.program, s.spi_fpga.planner));
+
+    spi::SpiConfig link = s.spi_fpga.link;
+    link.trace_wires = link.trace_wires || !s.vcd_path.empty();
+
+    Wires w;
+    spi::SpiMaster master("spi_master", link);
+    master.sclk(w.sclk);
+    master.mosi(w.mosi);
+    master.ss(w.ss);
+    master.miso(w.miso);
+    fpga::SpiFpgaTop fpga("fpga", s.spi_fpga.fpga);
+    fpga.sclk(w.sclk);
+    fpga.mosi(w.mosi);
+    fpga.ss(w.ss);
+    fpga.miso(w.miso);
+    fpga.step_x(w.step_x);
+    fpga.dir_x(w.dir_x);
+    fpga.step_y(w.step_y);
+    fpga.dir_y(w.dir_y);
+    master.target(fpga.spi_target);
+    host::servo::ServoThread host("host", servo_config(s), *trajectory, master);
+    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);
+    machine.step_x(w.step_x);
+    machine.dir_x(w.dir_x);
+    machine.n_enbl_x(w.n_enbl);
+    machine.step_y(w.step_y);
+    machine.dir_y(w.dir_y);
+    machine.n_enbl_y(w.n_enbl);
+    machine.laser(w.laser);
+
+    EdgeRecorder rec("probes");
+    for (const sc_core::sc_signal<bool>* sig : {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y}) rec.watch(*sig, sig->basename());
+    if (link.trace_wires) {
+        for (const sc_core::sc_signal<bool>* sig : {&w.sclk, &w.mosi, &w.miso, &w.ss}) rec.watch(*sig, sig->basename());
+    }
+    std::unique_ptr<VcdTrace> vcd;
+    if (!s.vcd_path.empty()) {
+        vcd = std::make_unique<VcdTrace>(s.vcd_path);
+        for (const sc_core::sc_signal<bool>* sig :
+             {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.sclk, &w.mosi, &w.miso, &w.ss}) {
+            vcd->trace(*sig);
+        }
+    }
+
+    const sc_core::sc_time limit = sc_core::sc_time::from_value(
+        static_cast<sc_dt::uint64>(s.max_sim_s * static_cast<double>(kPsPerSec)));
+    sc_core::sc_start(limit, sc_core::SC_EXIT_ON_STARVATION);
+    vcd.reset();
+
+    ArchRun run;
+    const host::servo::ServoCore& core = host.core();
+    metrics::RunInput& in = run.input;
+    in.axes = {metrics::AxisTrace{"x", rec.log("step_x"), rec.log("dir_x"), s.machine.x.steps_per_mm(), true},
+               metrics::AxisTrace{"y", rec.log("step_y"), rec.log("dir_y"), s.machine.y.steps_per_mm(), true}};
+    in.moves = planned_moves(*job.program, *trajectory, core);
+    in.tool = machine.carriage().samples();
+    in.t_job_start_ps = 0;
+    in.t_job_end_ps = host.t_done_ps().value_or(static_cast<TimePs>(sc_core::sc_time_stamp().value()));
+    in.commanded = commanded_trajectory(trajectory, core);
+    in.rate_segments = rate_segments(fpga, core);
+    if (link.trace_wires) {
+        for (const char* pin : {"sclk", "mosi", "miso", "ss"}) run.lines[pin] = rec.log(pin);
+    }
+
+    SpiFpgaReport report = spi_fpga_report(host, master, fpga, in.t_job_end_ps);
+    run.details = std::move(report.details);
+    run.details_text = std::move(report.text);
+    run.warnings = std::move(report.warnings);
+    if (!host.finished()) {
+        run.ok = false;
+        run.failure = "the job did not finish within scenario.max_sim_s (the axes had not landed)";
+    }
+    return run;
 }
 
 }  // namespace cnc::sim

@@ -1,0 +1,34 @@
+#include "host/servo/servo_thread.hpp"
+
+namespace cnc::host::servo {
+
+ServoThread::ServoThread(const sc_core::sc_module_name& name, const ServoConfig& cfg,
+                         const planner::Trajectory& trajectory, spi::SpiMaster& master)
+    : sc_module(name), m_cfg(cfg), m_core(m_cfg, trajectory), m_latency(cfg.latency, cfg.seed), m_master(master) {
+    SC_HAS_PROCESS(ServoThread);
+    SC_THREAD(run);
+}
+
+void ServoThread::run() {
+    std::optional<spi::Feedback> feedback;
+    std::vector<std::uint8_t> reply;
+    for (std::int64_t n = 0;; ++n) {
+        const TimePs latency = m_latency.next();
+        const TimePs wake = n * m_cfg.period_ps + latency;
+        const auto now = static_cast<TimePs>(sc_core::sc_time_stamp().value());
+        if (wake > now) sc_core::wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(wake - now)));
+        ++m_activations;
+        m_wakeups.push_back({static_cast<TimePs>(sc_core::sc_time_stamp().value()), latency});
+        const PeriodRecord& rec = m_core.step(feedback);
+        if (rec.mode == PeriodMode::Done) {
+            m_t_done_ps = m_wakeups.back().t_ps;
+            return;
+        }
+        std::vector<spi::AxisRate> words;
+        for (const AxisPeriod& a : rec.axes) words.push_back(a.word);
+        m_master.transfer(spi::encode_command(words, m_cfg.min_period_cycles), reply);
+        feedback = spi::decode_feedback(reply, kAxes);
+    }
+}
+
+}  // namespace cnc::host::servo

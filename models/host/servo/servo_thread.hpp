@@ -1,0 +1,48 @@
+// The spi-fpga host's servo thread (seed 004 §4: `addf motion-controller servo-thread` and the SPI driver's
+// functions on one real-time thread): wakes at n * period + latency_n (core/latency.hpp), runs one period of
+// core/servo_core.hpp with the reply of the previous transfer, and makes this period's full-duplex transfer
+// through the SPI master. The host's computation takes no simulated time. Stops after the period in which
+// the core reports the job done (no transfer then).
+#pragma once
+#include <optional>
+#include <systemc>
+#include <vector>
+
+#include "common/units.hpp"
+#include "host/core/planner/trajectory.hpp"
+#include "host/servo/core/latency.hpp"
+#include "host/servo/core/servo_core.hpp"
+#include "spi/spi_master.hpp"
+
+namespace cnc::host::servo {
+
+struct Wakeup {
+    TimePs t_ps = 0;        // actual wake-up
+    TimePs latency_ps = 0;  // after the nominal n * period
+};
+
+class ServoThread : public sc_core::sc_module {
+public:
+    // `trajectory` and `master` must outlive the simulation.
+    ServoThread(const sc_core::sc_module_name& name, const ServoConfig& cfg, const planner::Trajectory& trajectory,
+                spi::SpiMaster& master);
+
+    [[nodiscard]] const ServoCore& core() const { return m_core; }
+    [[nodiscard]] const std::vector<Wakeup>& wakeups() const { return m_wakeups; }  // one per log record
+    [[nodiscard]] bool finished() const { return m_t_done_ps.has_value(); }
+    [[nodiscard]] std::optional<TimePs> t_done_ps() const { return m_t_done_ps; }
+    [[nodiscard]] std::uint64_t activations() const { return m_activations; }
+
+private:
+    void run();
+
+    const ServoConfig m_cfg;
+    ServoCore m_core;
+    LatencyGenerator m_latency;
+    spi::SpiMaster& m_master;
+    std::vector<Wakeup> m_wakeups;
+    std::optional<TimePs> m_t_done_ps;
+    std::uint64_t m_activations = 0;
+};
+
+}  // namespace cnc::host::servo

@@ -1,0 +1,33 @@
+// What the spi-fpga run should have done, for the metrics: one MoveSpec per programmed move over the planner's
+// move windows, the commanded timed trajectory (the planner's profile as the host's trajectory clock ran it), and
+// the commanded step rate of every rate word the FPGA applied.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "fpga/spi/spi_fpga_top.hpp"
+#include "host/core/gcode.hpp"
+#include "host/core/planner/trajectory.hpp"
+#include "host/servo/core/servo_core.hpp"
+#include "metrics/run_input.hpp"
+
+namespace cnc::sim {
+
+// Windows: [depart(tau_begin), depart(tau_end)] of each move's planner window on the trajectory clock, so a hold
+// at a rest point (the host landing the axes) belongs to the move that ends there. Corner blends lie between
+// windows and count with the move before them (metrics MoveTimeline). End points are the programmed ones on the
+// step grid (origin + round(steps)), the targets the host lands on; a rapid's feed is its planned peak speed.
+std::vector<metrics::MoveSpec> planned_moves(const host::Program& program, const host::planner::Trajectory& traj,
+                                             const host::servo::ServoCore& servo);
+
+// The planner's state at tau(t) (velocity scaled by d tau/dt). The trajectory is shared with the closure.
+metrics::CommandedTrajectory commanded_trajectory(std::shared_ptr<const host::planner::Trajectory> traj,
+                                                  const host::servo::ServoCore& servo);
+
+// Per axis: one segment per stretch of one applied word (the host resends an unchanged word every period), from
+// the edge it governs from, with the mean of the host's requested |rate| over the stretch (0 for a stop word): the
+// metrics' runs, whose rate error is then the period rounding.
+std::vector<std::vector<metrics::RateSegment>> rate_segments(const fpga::SpiFpgaTop& fpga,
+                                                             const host::servo::ServoCore& servo);
+
+}  // namespace cnc::sim

@@ -1,0 +1,199 @@
+// The servo thread's period logic (models/host/servo/core/servo_core.hpp) against an ideal stand-in for the FPGA:
+// trajectory clock, rest points, one-period-late feedback, landing exactly on the targets.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "host/core/gcode.hpp"
+#include "host/core/planner/planner.hpp"
+#include "host/servo/core/rate_word.hpp"
+#include "host/servo/core/servo_core.hpp"
+#include "host/servo/core/trajectory_clock.hpp"
+
+using cnc::kPsPerMs;
+using cnc::kPsPerUs;
+using cnc::TimePs;
+using namespace cnc::host;
+using namespace cnc::host::servo;
+
+TEST(TrajectoryClock, LinearBetweenKnotsHeldInHoldsDepartsAtTheHoldsEnd) {
+    TrajectoryClock c;
+    c.add(0, 0.0);
+    c.add(kPsPerMs, 1e-3);
+    c.add(2 * kPsPerMs, 1.5e-3);  // clamped at a rest point
+    c.add(3 * kPsPerMs, 1.5e-3);  // hold
+    c.add(4 * kPsPerMs, 2.5e-3);
+    EXPECT_DOUBLE_EQ(c.tau_at(500 * kPsPerUs), 0.5e-3);
+    EXPECT_DOUBLE_EQ(c.tau_at(2500 * kPsPerUs), 1.5e-3);
+    EXPECT_DOUBLE_EQ(c.tau_at(9 * kPsPerMs), 2.5e-3);
+    EXPECT_DOUBLE_EQ(c.rate_at(500 * kPsPerUs), 1.0);
+    EXPECT_DOUBLE_EQ(c.rate_at(1500 * kPsPerUs), 0.5);
+    EXPECT_DOUBLE_EQ(c.rate_at(2500 * kPsPerUs), 0.0);
+    EXPECT_EQ(c.depart_time(0.75e-3), 750 * kPsPerUs);
+    EXPECT_EQ(c.depart_time(1.5e-3), 3 * kPsPerMs);
+    EXPECT_EQ(c.depart_time(2.0e-3), 3500 * kPsPerUs);
+    EXPECT_EQ(c.depart_time(5.0e-3), 4 * kPsPerMs);
+    EXPECT_THROW(c.add(5 * kPsPerMs, 1e-3), std::logic_error);
+}
+
+namespace {
+
+Program program(const std::string& text) {
+    std::istringstream in(text);
+    return interpret(in, "test.nc", InterpreterOptions{});
+}
+
+ServoConfig config() {
+    ServoConfig c;
+    for (AxisServoConfig& a : c.axes) a = {160.0, 100.0, 1000.0};
+    return c;
+}
+
+// Stand-in for the FPGA and the link: a word governs the whole next period; a generator keeps its phase while
+// running, steps at once when a word starts it (as the seed's pulsegen, whose counter starts with the output
+// high) and stops dead on a stop word. The host sees the count at the end of the previous period. `gain` scales
+// the rate the generator really runs at (1 = exact).
+struct IdealPlant {
+    explicit IdealPlant(double gain = 1.0) : m_gain(gain) {}
+    std::optional<cnc::spi::Feedback> feedback() const {
+        if (!m_started) return std::nullopt;
+        return cnc::spi::Feedback{{}, {static_cast<std::int32_t>(m_count[0]), static_cast<std::int32_t>(m_count[1])}};
+    }
+    void run(const PeriodRecord& rec, double period_s) {
+        m_started = true;
+        for (std::size_t a = 0; a < kAxes; ++a) {
+            const double rate = signed_rate(rec.axes[a].word, 50'000'000) * m_gain;
+            const bool was_running = m_running[a];
+            m_running[a] = rate != 0.0;
+            if (rate == 0.0) {
+                m_phase[a] = 0.0;
+                continue;
+            }
+            if (!was_running) m_phase[a] = rate > 0.0 ? 1.0 : -1.0;
+            m_phase[a] += rate * period_s;
+            const double whole = std::trunc(m_phase[a]);
+            m_count[a] += static_cast<std::int64_t>(whole);
+            m_phase[a] -= whole;
+        }
+    }
+    std::array<std::int64_t, kAxes> m_count{};
+    std::array<double, kAxes> m_phase{};
+    std::array<bool, kAxes> m_running{};
+    bool m_started = false;
+    double m_gain;
+};
+
+// Runs the core to completion (or a period limit); returns the number of periods.
+std::size_t run(ServoCore& core, IdealPlant& plant, std::size_t limit = 100'000) {
+    std::size_t n = 0;
+    while (!core.done() && n < limit) {
+        const PeriodRecord& rec = core.step(plant.feedback());
+        plant.run(rec, 1e-3);
+        ++n;
+    }
+    return n;
+}
+
+}  // namespace
+
+TEST(RestPoints, EveryStopOfThePlanAndItsEnd) {
+    planner::PlannerConfig pc;
+    pc.mode = planner::BlendMode::ExactStop;
+    const planner::Trajectory t = planner::plan(program("G1 X10 F1200\nG1 X10 Y10\nG1 X0 Y10\n"), pc);
+    const std::vector<double> r = rest_points(t);
+    ASSERT_EQ(r.size(), 3U);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(r[i], t.move_windows()[i].second);
+    pc.mode = planner::BlendMode::Continuous;
+    const planner::Trajectory c = planner::plan(program("G1 X10 F1200\nG1 X20\nG1 X10\n"), pc);
+    const std::vector<double> rc = rest_points(c);  // colinear: no stop; reversal: stop; end
+    ASSERT_EQ(rc.size(), 2U);
+    EXPECT_DOUBLE_EQ(rc[0], c.move_windows()[1].second);
+    EXPECT_DOUBLE_EQ(rc[1], c.duration_s());
+    EXPECT_EQ(rest_points(planner::plan(program(""), pc)), std::vector<double>{0.0});
+}
+
+TEST(ServoCore, FollowsOnePeriodBehindAndLandsExactlyAtEveryRestPoint) {
+    planner::PlannerConfig pc;
+    pc.mode = planner::BlendMode::ExactStop;
+    const planner::Trajectory t = planner::plan(program("G1 X10.003 Y-2 F1200\nG1 X0 Y5.0031\n"), pc);
+    ServoCore core(config(), t);
+    IdealPlant plant;
+    run(core, plant);
+    ASSERT_TRUE(core.done());
+    EXPECT_EQ(core.stats().rest_points, 2U);
+    EXPECT_EQ(core.stats().rest_points_landed, 2U);
+    // targets: round(10.003 x 160) = 1600 (1600.48), -320; 0, round(5.0031 x 160) = 800 (800.496)
+    EXPECT_EQ(core.target(0), (std::array<std::int64_t, 2>{1600, -320}));
+    EXPECT_EQ(core.target(1), (std::array<std::int64_t, 2>{0, 800}));
+    EXPECT_EQ(plant.m_count, (std::array<std::int64_t, 2>{0, 800}));
+    // The hold: tau stays at the first rest point until the first record that tracks again.
+    const std::vector<PeriodRecord>& log = core.log();
+    const double r0 = core.rest_points_s()[0];
+    std::size_t first_land = 0;
+    while (log[first_land].mode != PeriodMode::Land) ++first_land;
+    EXPECT_DOUBLE_EQ(log[first_land - 1].tau_s, r0);  // the period that reached it still tracked
+    std::size_t release = first_land;
+    while (log[release].mode == PeriodMode::Land) {
+        EXPECT_DOUBLE_EQ(log[release].tau_s, r0);
+        EXPECT_EQ(log[release].path_speed_mm_per_s, 0.0);
+        ++release;
+    }
+    EXPECT_EQ(log[release].mode, PeriodMode::Track);
+    EXPECT_DOUBLE_EQ(log[release].tau_s, r0 + 1e-3);
+    // The count that released the hold was the target.
+    EXPECT_EQ(log[release].axes[0].count, 1600);
+    EXPECT_EQ(log[release].axes[1].count, -320);
+    EXPECT_EQ(log.back().mode, PeriodMode::Done);
+    // The clock has one knot per period at n ms.
+    EXPECT_EQ(core.clock().size(), log.size());
+    EXPECT_EQ(core.clock().t_end_ps(), static_cast<TimePs>(log.size() - 1) * kPsPerMs);
+}
+
+TEST(ServoCore, LandingPulsesAreSingleAndSeparatedByTwoStops) {
+    // A generator running 3 % slow leaves the axes short at every stop: landing pulses make up the difference.
+    planner::PlannerConfig pc;
+    pc.mode = planner::BlendMode::ExactStop;
+    const planner::Trajectory t = planner::plan(program("G1 X20 Y10 F3000\n"), pc);
+    ServoCore core(config(), t);
+    IdealPlant plant(0.97);
+    run(core, plant);
+    ASSERT_TRUE(core.done());
+    EXPECT_EQ(plant.m_count, (std::array<std::int64_t, 2>{3200, 1600}));
+    EXPECT_GT(core.stats().landing_pulses, 0U);
+    const std::vector<PeriodRecord>& log = core.log();
+    const std::uint32_t land_period = landing_period_cycles(core.config());
+    EXPECT_EQ(land_period, 100'000U);  // 2 ms at 50 MHz
+    for (std::size_t i = 0; i < log.size(); ++i) {
+        if (log[i].mode != PeriodMode::Land) continue;
+        for (std::size_t a = 0; a < kAxes; ++a) {
+            const cnc::spi::AxisRate& w = log[i].axes[a].word;
+            if (w.period_cycles == 0) continue;
+            EXPECT_EQ(w.period_cycles, land_period);
+            ASSERT_LT(i + 2, log.size());
+            EXPECT_EQ(log[i + 1].axes[a].word.period_cycles, 0U) << "period " << i;
+            EXPECT_EQ(log[i + 2].axes[a].word.period_cycles, 0U) << "period " << i;
+        }
+    }
+}
+
+TEST(ServoCore, AStandingAxisCorrectsAnyErrorPastHalfAStep) {
+    // Y must stay at 0 while X moves; a plant that once loses... here: Y starts 1 step off (count -1 injected).
+    planner::PlannerConfig pc;
+    const planner::Trajectory t = planner::plan(program("G1 X20 F600\n"), pc);
+    ServoCore core(config(), t);
+    IdealPlant plant;
+    plant.m_count[1] = -1;
+    std::size_t n = 0;
+    std::optional<std::size_t> fixed;
+    while (!core.done() && n < 100'000) {
+        const PeriodRecord& rec = core.step(plant.feedback());
+        plant.run(rec, 1e-3);
+        if (!fixed && plant.m_count[1] == 0) fixed = n;
+        ++n;
+    }
+    ASSERT_TRUE(fixed.has_value());
+    EXPECT_LE(*fixed, 10U);  // long before the move's end (2 s): not left to landing
+    EXPECT_EQ(plant.m_count, (std::array<std::int64_t, 2>{3200, 0}));
+}

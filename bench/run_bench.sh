@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Speed of the whole cncsim process. Targets: fpga-uart six-segment job >= 100x real time (issue 2) and the
-# atmega square job >= 5x (issue 3), VCD off.
+# atmega square job >= 5x (issue 3) and spi-fpga square >= 100x (issue 4), VCD off.
 # Usage: bench/run_bench.sh [build dir] [repetitions]. Prints one Markdown row per configuration: simulated
 # seconds per wall second and STEP edges per wall second (median of the repetitions), and peak memory.
 set -euo pipefail
@@ -40,6 +40,8 @@ bench "six-segment, VCD off" scenarios/fpga-uart/six_segment.toml
 bench "six-segment, VCD on" scenarios/fpga-uart/six_segment.toml --vcd "$OUT/six.vcd"
 bench "square 20 mm, VCD off" scenarios/fpga-uart/square_20mm.toml
 bench "circle r10 (177 chords), VCD off" scenarios/fpga-uart/circle_r10.toml
+bench "spi-fpga square 20 mm, VCD off" scenarios/spi-fpga/square_20mm.toml
+bench "spi-fpga six-segment, VCD off" scenarios/spi-fpga/six_segment.toml
 if grep -q "CNC_WITH_AVR:BOOL=ON" "$BUILD/CMakeCache.txt"; then
     bench "atmega square 20 mm, VCD off" scenarios/atmega/square_20mm.toml
     bench "atmega square 20 mm, VCD on" scenarios/atmega/square_20mm.toml --vcd "$OUT/atmega.vcd"

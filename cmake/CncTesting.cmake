@@ -12,6 +12,7 @@ function(cnc_add_gtest NAME)
   else()
     target_link_libraries(${NAME} PRIVATE GTest::gtest_main)
   endif()
+  target_include_directories(${NAME} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
   target_compile_definitions(${NAME} PRIVATE CNC_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(${NAME}
     TEST_PREFIX "${T_LABEL}/"

@@ -4,6 +4,7 @@
 #include <memory>
 #include <sstream>
 
+#include "common/text_format.hpp"
 #include "fpga/top.hpp"
 #include "host/core/packet_codec.hpp"
 #include "host/sender.hpp"
@@ -62,12 +63,6 @@ void record_wires(EdgeRecorder& rec, const Wires& w) {
          {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser, &w.busy, &w.uart_rx, &w.uart_tx}) {
         rec.watch(*sig, sig->basename());
     }
-}
-
-std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
-    char text[256];
-    std::snprintf(text, sizeof text, fmt, a, b, c);
-    return text;
 }
 
 // FPGA-side warnings: the period product the RTL cannot hold, packets lost while busy, line faults.

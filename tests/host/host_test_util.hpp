@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "support/bad_input_message.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/gcode.hpp"
 
@@ -17,16 +18,7 @@ inline Program run_gcode(const std::string& text, const InterpreterOptions& opt 
     return interpret(in, "t.nc", opt);
 }
 
-// The message of the BadInput that `fn` throws ("" and a test failure if it throws none).
-inline std::string bad_input_message(const std::function<void()>& fn) {
-    try {
-        fn();
-    } catch (const BadInput& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no BadInput thrown";
-    return {};
-}
+using cnc::test::bad_input_message;
 
 // Expects BadInput whose message contains every one of `parts`.
 inline void expect_bad_input(const std::function<void()>& fn, std::initializer_list<std::string> parts) {

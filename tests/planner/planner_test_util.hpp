@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "support/bad_input_message.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/gcode.hpp"
 #include "host/core/planner/planner.hpp"
@@ -41,15 +42,6 @@ inline double contour_error(const Program& program, geom::Vec2 p) {
     return best;
 }
 
-// The message of the BadInput that fn throws ("" and a failure if none).
-inline std::string bad_input_message(const std::function<void()>& fn) {
-    try {
-        fn();
-    } catch (const BadInput& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no BadInput thrown";
-    return {};
-}
+using cnc::test::bad_input_message;
 
 }  // namespace cnc::host::planner::test

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/bad_input.hpp"
+#include "support/bad_input_message.hpp"
 #include "spi/core/spi_frame.hpp"
 
 namespace cnc::spi {
@@ -15,14 +16,7 @@ namespace {
 
 using Bytes = std::vector<std::uint8_t>;
 
-std::string bad_input_message(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const BadInput& e) {
-        return e.what();
-    }
-    return "(no BadInput)";
-}
+using cnc::test::bad_input_message;
 
 TEST(SpiFrame, SizesForOneToEightAxes) {
     EXPECT_EQ(frame_bytes(1), 5U);

@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "common/text_format.hpp"
 #include "uart/core/line_receiver.hpp"
 
 namespace cnc::sim {
@@ -28,12 +29,6 @@ std::string id_name(s3::CommandId id) {
         case s3::CommandId::M30: return "M30";
     }
     return "?";
-}
-
-std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
-    char text[256];
-    std::snprintf(text, sizeof text, fmt, a, b, c);
-    return text;
 }
 
 // When the MCU's receiver had the last byte of each transfer (the middle of its stop bit at the MCU's bit

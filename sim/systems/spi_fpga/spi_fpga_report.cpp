@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/text_format.hpp"
 #include "spi/core/spi_frame.hpp"
 #include "spi/core/spi_timing.hpp"
 
@@ -30,12 +31,6 @@ double seconds_ns(TimePs t) { return rounded(ps_to_s(t), 1e9); }
 // The period word signed by the direction bit (0 = stopped), as the rate log and the text show it.
 std::int64_t signed_period(const spi::AxisRate& w) {
     return w.forward ? static_cast<std::int64_t>(w.period_cycles) : -static_cast<std::int64_t>(w.period_cycles);
-}
-
-std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-    char text[256];
-    std::snprintf(text, sizeof text, fmt, a, b, c, d);
-    return text;
 }
 
 struct LatencyStats {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "common/text_format.hpp"
 #include "common/bad_input.hpp"
 
 namespace cnc::host::seed003 {
@@ -41,12 +42,6 @@ const char* g_name(CommandId id) {
         case CommandId::M30: return "M30";
     }
     return "?";
-}
-
-std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-    char text[160];
-    std::snprintf(text, sizeof text, f, a, b, c, d);
-    return text;
 }
 
 // Speeds outside the 8-bit range on one axis of one programmed move.
@@ -201,7 +196,7 @@ private:
                                 std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm());
         std::string text = m_program.filename + ":" + std::to_string(move.line) + ": " + g_name(id) + " count " +
                            std::to_string(longest) + " exceeds the 16-bit step counter" +
-                           fmt(" (%.1f mm at %.0f steps/mm): ", limit_mm,
+                           format(" (%.1f mm at %.0f steps/mm): ", limit_mm,
                                std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm()));
         if (m_opt.long_moves == LongMoves::Split) {
             text += "sent as " + std::to_string((longest + kCountMax - 1) / kCountMax) +
@@ -234,7 +229,7 @@ private:
                 where + ": " + reg + " outside 0..255 in " + std::to_string(k.fast + k.slow) + " of " +
                 std::to_string(motions) + (move.path.is_arc ? " chords (" : " commands (") + std::to_string(k.slow) +
                 " held to 255, " + std::to_string(k.fast) + " to 0): " + axis +
-                fmt(" asked %.4g..%.4g mm/s, the 8-bit range is %.4g..%.4g mm/s", k.min_asked, k.max_asked, slowest,
+                format(" asked %.4g..%.4g mm/s, the 8-bit range is %.4g..%.4g mm/s", k.min_asked, k.max_asked, slowest,
                     fastest));
         };
         report(x, "OCR0A", "X", m_machine.x.mm_per_step());

@@ -1,12 +1,15 @@
 // cncsim: the command line (DESIGN.md §6). Exit codes: 0 ok, 1 run failed, 2 bad input.
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 #include <systemc>
 
 #include "common/bad_input.hpp"
+#include "compare/compare.hpp"
 #include "metrics/analyze_input.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/vcd.hpp"
@@ -53,6 +56,30 @@ int cmd_analyze(const std::string& vcd_path, const std::string& step, const std:
     return kExitOk;
 }
 
+int cmd_compare(const std::string& scenario_path, const std::string& archs, const std::vector<std::string>& sets,
+                const std::string& format_name, const std::string& report) {
+    std::vector<std::string> list;
+    std::stringstream ss(archs);
+    for (std::string a; std::getline(ss, a, ',');) {
+        if (a != "fpga-uart" && a != "atmega" && a != "spi-fpga") {
+            throw cnc::BadInput("--arch " + a, "unknown architecture (allowed: fpga-uart, atmega, spi-fpga)");
+        }
+        list.push_back(a);
+    }
+    cnc::sim::load_scenario(scenario_path, sets);  // bad input is reported once, here, not once per child
+    const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+    const auto columns = cnc::sim::run_compare(self, scenario_path, list, sets);
+    const cnc::sim::TableFormat format = format_name == "markdown" ? cnc::sim::TableFormat::Markdown
+                                         : format_name == "csv"    ? cnc::sim::TableFormat::Csv
+                                         : format_name == "json"   ? cnc::sim::TableFormat::Json
+                                                                   : cnc::sim::TableFormat::Text;
+    std::cout << cnc::sim::compare_table(columns, format);
+    if (!report.empty()) write_json(report, cnc::sim::compare_json(columns));
+    int worst = kExitOk;
+    for (const auto& c : columns) worst = std::max(worst, c.exit_code == kExitBadInput ? kExitBadInput : c.exit_code);
+    return worst;
+}
+
 int cmd_keys() {
     std::cout << cnc::sim::keys_markdown(cnc::sim::scenario_keys());
     return kExitOk;
@@ -84,6 +111,17 @@ int sc_main(int argc, char* argv[]) {
         ->check(CLI::PositiveNumber);
     analyze->add_option("--report", report, "write the JSON report to this file");
 
+    std::string archs = "fpga-uart,atmega,spi-fpga";
+    std::string table_format = "text";
+    CLI::App* compare = app.add_subcommand("compare", "the same job and machine on several architectures, side by side");
+    compare->add_option("scenario", scenario, "scenario file (TOML); its architecture is overridden")->required();
+    compare->add_option("--arch", archs, "architectures, comma-separated")->capture_default_str();
+    compare->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
+    compare->add_option("--format", table_format, "table format")
+        ->check(CLI::IsMember({"text", "markdown", "csv", "json"}))
+        ->capture_default_str();
+    compare->add_option("--report", report, "write the comparison as JSON to this file");
+
     app.add_subcommand("keys", "print every scenario key (type, default, range, meaning) as Markdown");
 
     try {
@@ -94,6 +132,7 @@ int sc_main(int argc, char* argv[]) {
     }
     try {
         if (run->parsed()) return cmd_run(scenario, sets, vcd, report);
+        if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report);
         if (analyze->parsed()) return cmd_analyze(vcd_in, step, dir, steps_per_mm, report);
         return cmd_keys();
     } catch (const cnc::BadInput& e) {

@@ -1,0 +1,60 @@
+// cncsim compare: the three architectures on the same square and machine, each in its own process.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/compare.hpp"
+
+namespace {
+
+nlohmann::json run_compare_json(const std::string& args) {
+    const std::string cmd = std::string(CNCSIM_EXE) + " compare " + args + " --format json";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
+    EXPECT_EQ(pclose(pipe), 0);
+    return nlohmann::json::parse(out);
+}
+
+double metric(const nlohmann::json& column, const char* key) { return column.at("metrics").at(key).get<double>(); }
+
+}  // namespace
+
+// What each architecture costs on one job: dead time (stop-and-wait vs one byte per confirm vs a servo loop),
+// feed accuracy (packet feed vs 8-bit OCR vs period word) and following error (the servo loop's lag).
+TEST(CompareSquare, EachArchitectureShowsItsOwnCost) {
+    const auto cols = run_compare_json(std::string(CNC_SOURCE_DIR) + "/scenarios/fpga-uart/square_20mm.toml");
+    ASSERT_EQ(cols.size(), 3U);
+    const auto& fpga = cols.at(0);
+    const auto& avr = cols.at(1);
+    const auto& spi = cols.at(2);
+    EXPECT_EQ(fpga.at("architecture"), "fpga-uart");
+    EXPECT_EQ(avr.at("architecture"), "atmega");
+    EXPECT_EQ(spi.at("architecture"), "spi-fpga");
+    for (const auto& c : cols) {
+        EXPECT_EQ(c.at("status"), "ok");
+        EXPECT_LE(metric(c, "metrics/pulse/tie_max_ns"), 20.0);  // every controller's edges sit on its clock
+        EXPECT_EQ(metric(c, "metrics/path/job_end_um"), 0.0);
+        EXPECT_EQ(metric(c, "metrics/pulse/driver_violations"), 0.0);
+    }
+    EXPECT_GT(metric(avr, "metrics/job/dead_mean_ms"), 3 * metric(fpga, "metrics/job/dead_mean_ms"));
+    EXPECT_LT(metric(spi, "metrics/job/dead_total_ms"), metric(fpga, "metrics/job/dead_total_ms"));
+    EXPECT_GT(metric(avr, "metrics/feed/feed_error_max_abs_pct"), 20.0);  // F800 -> OCR 2.66 truncated to 2
+    EXPECT_LT(metric(fpga, "metrics/feed/feed_error_max_abs_pct"), 0.01);
+    EXPECT_GT(metric(spi, "metrics/path/following_max_um"), 5 * metric(fpga, "metrics/path/following_max_um"));
+}
+
+TEST(CompareTable, MarkdownHasAColumnPerArchitectureAndDashesForMissingValues) {
+    cnc::sim::CompareColumn a{"fpga-uart", 0, {{"metrics", {{"job", {{"job_time_s", 1.5}}}}}}};
+    cnc::sim::CompareColumn b{"atmega", 2, nullptr};
+    const std::string md = cnc::sim::compare_table({a, b}, cnc::sim::TableFormat::Markdown);
+    EXPECT_NE(md.find("| metric                     | fpga-uart |    atmega |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| status                     |        ok | bad input |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| job time [s]               |    1.5000 |         - |"), std::string::npos) << md;
+    EXPECT_NE(cnc::sim::compare_table({a}, cnc::sim::TableFormat::Csv).find("\"job time [s]\",\"1.5000\""),
+              std::string::npos);
+}

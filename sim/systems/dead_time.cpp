@@ -10,18 +10,23 @@ namespace cnc::sim {
 
 namespace {
 
-// First and last rising STEP edge of any axis inside [t0, t1].
-std::pair<TimePs, TimePs> step_span(const metrics::RunInput& run, TimePs t0, TimePs t1) {
-    TimePs first = std::numeric_limits<TimePs>::max();
-    TimePs last = -1;
+// Rising STEP edges of every axis, merged in time order (computed once: the gaps only look them up).
+std::vector<TimePs> all_rises(const metrics::RunInput& run) {
+    std::vector<TimePs> rises;
     for (const metrics::AxisTrace& axis : run.axes) {
-        for (TimePs t : axis.step.rising()) {
-            if (t < t0 || t > t1) continue;
-            first = std::min(first, t);
-            last = std::max(last, t);
-        }
+        const std::vector<TimePs> r = axis.step.rising();
+        rises.insert(rises.end(), r.begin(), r.end());
     }
-    return {first, last};
+    std::sort(rises.begin(), rises.end());
+    return rises;
+}
+
+// First and last rising STEP edge inside [t0, t1]; last is -1 when there is none.
+std::pair<TimePs, TimePs> step_span(const std::vector<TimePs>& rises, TimePs t0, TimePs t1) {
+    const auto b = std::lower_bound(rises.begin(), rises.end(), t0);
+    const auto e = std::upper_bound(b, rises.end(), t1);
+    if (b == e) return {std::numeric_limits<TimePs>::max(), -1};
+    return {*b, *std::prev(e)};
 }
 
 double mean_ms(const std::vector<GapBreakdown>& gaps, TimePs GapBreakdown::*part) {
@@ -55,6 +60,7 @@ DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::v
     const auto& tx = cp2102.tx_log();
     const auto& rx = cp2102.rx_log();
     const std::size_t moves = run.moves.size();
+    const std::vector<TimePs> rises = all_rises(run);
     for (std::size_t i = 0; i + 1 < moves && i + 1 < sent.size() && i + 1 < records.size(); ++i) {
         const fpga::PacketRecord& done = records[i];
         const std::size_t next_first = host::kInitPacketBytes + (i + 1) * host::kMotionPacketBytes;
@@ -64,8 +70,8 @@ DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::v
             return b.t_start_bit_ps >= done.t_ack_start_ps;
         });
         if (ack == rx.end()) continue;
-        const auto [first_a, last_a] = step_span(run, run.moves[i].t_begin_ps, run.moves[i].t_end_ps);
-        const auto [first_b, last_b] = step_span(run, run.moves[i + 1].t_begin_ps, run.moves[i + 1].t_end_ps);
+        const auto [first_a, last_a] = step_span(rises, run.moves[i].t_begin_ps, run.moves[i].t_end_ps);
+        const auto [first_b, last_b] = step_span(rises, run.moves[i + 1].t_begin_ps, run.moves[i + 1].t_end_ps);
         if (last_a < 0 || last_b < 0) continue;
         GapBreakdown g;
         g.after_move = static_cast<int>(i) + 1;

@@ -66,9 +66,10 @@ void record_wires(EdgeRecorder& rec, const Wires& w) {
 }
 
 // FPGA-side warnings: the period product the RTL cannot hold, packets lost while busy, line faults.
-void fpga_warnings(const fpga::Top& top, const Scenario& s, std::vector<std::string>& warnings) {
+void fpga_warnings(const fpga::Top& top, const std::vector<fpga::PacketRecord>& records, const Scenario& s,
+                   std::vector<std::string>& warnings) {
     int n = 0;
-    for (const fpga::PacketRecord& r : top.packets()) {
+    for (const fpga::PacketRecord& r : records) {
         ++n;
         if (r.period_overflow) {
             warnings.push_back(
@@ -173,7 +174,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
 
     const DeadTimeBreakdown dead = dead_time_breakdown(in, records, sender.packets(), cp2102);
 
-    fpga_warnings(fpga, s, run.warnings);
+    fpga_warnings(fpga, records, s, run.warnings);
     const fpga::FpgaStats st = fpga.stats();
     const uart::Cp2102Baud& baud = cp2102.baud();
     nlohmann::json pk = nlohmann::json::array();

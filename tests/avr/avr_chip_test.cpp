@@ -7,16 +7,6 @@ using namespace cnc::avr;
 using namespace cnc::avr::test;
 using cnc::TimePs;
 
-namespace {
-
-std::vector<Cycle> edge_cycles(const AvrBench& b, std::string_view line) {
-    std::vector<Cycle> out;
-    for (const TimePs t : b.edges(line)) out.push_back(cycle_of(t));
-    return out;
-}
-
-}  // namespace
-
 TEST(AvrChip, SbiOnPinxTogglesOnlyTheAddressedPin) {
     // PORTB = PB0 at M, then `sbi PINB, 5` twice (2 cycles each): PB5 toggles at M + 1 and M + 3 and PB0, which
     // reads 1, stays high (stock libsimavr 1.6 writes PINB | 1 << 5 and toggles PB0 too: low at M + 1).

@@ -8,6 +8,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <systemc>
 #include <vector>
 
@@ -79,6 +80,20 @@ public:
 inline Cycle cycle_of(TimePs t) {
     EXPECT_EQ(t % kCyclePs, 0) << "edge at " << t << " ps is not on a 62.5 ns cycle boundary";
     return t / kCyclePs;
+}
+
+// Cycle of the first rising edge of a marker line (-1 and a test failure when it never rose).
+inline Cycle first_rise(const AvrBench& b, std::string_view line) {
+    const auto r = b.log(line).rising();
+    EXPECT_FALSE(r.empty()) << line;
+    return r.empty() ? -1 : cycle_of(r.front());
+}
+
+// Cycles of every edge of a line.
+inline std::vector<Cycle> edge_cycles(const AvrBench& b, std::string_view line) {
+    std::vector<Cycle> out;
+    for (const TimePs t : b.edges(line)) out.push_back(cycle_of(t));
+    return out;
 }
 
 }  // namespace cnc::avr::test

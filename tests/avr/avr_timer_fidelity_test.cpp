@@ -12,19 +12,6 @@ using cnc::TimePs;
 
 namespace {
 
-// Cycle of the first rising edge of a marker line.
-Cycle first_rise(const AvrBench& b, std::string_view line) {
-    const auto r = b.log(line).rising();
-    EXPECT_FALSE(r.empty()) << line;
-    return r.empty() ? -1 : cycle_of(r.front());
-}
-
-std::vector<Cycle> edge_cycles(const AvrBench& b, std::string_view line) {
-    std::vector<Cycle> out;
-    for (const TimePs t : b.edges(line)) out.push_back(cycle_of(t));
-    return out;
-}
-
 // CTC toggle edges expected at first, first + period, ... up to `end` (the last one may fall at the run's end).
 void expect_periodic(const std::vector<Cycle>& edges, Cycle first, Cycle period, Cycle end) {
     const auto expected_count = static_cast<std::size_t>((end - first) / period + 1);

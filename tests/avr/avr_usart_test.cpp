@@ -18,18 +18,6 @@ const cnc::uart::BitClock kAvrClock{kBitCycles, 16'000'000};
 // The receiver decides at the middle of the stop bit: 9.5 bits = 2584 cycles after the start edge.
 constexpr Cycle kDecisionCycles = 2584;
 
-Cycle first_rise(const AvrBench& b, std::string_view line) {
-    const auto r = b.log(line).rising();
-    EXPECT_FALSE(r.empty()) << line;
-    return r.empty() ? -1 : cycle_of(r.front());
-}
-
-std::vector<Cycle> edge_cycles(const AvrBench& b, std::string_view line) {
-    std::vector<Cycle> out;
-    for (const TimePs t : b.edges(line)) out.push_back(cycle_of(t));
-    return out;
-}
-
 // The firmware's poll loop (lds 2 + sbrs 1 + rjmp 2 cycles) reads the flag 0..4 cycles after it is set, then
 // lds + skipping sbrs take 4 more cycles before its marker `out`.
 void expect_seen_after(Cycle marker, Cycle flag_set) {

@@ -11,23 +11,50 @@ using test::expect_bad_input;
 using test::expect_gcode_error;
 using test::run_gcode;
 
-TEST(HostGcodeErrors, UnsupportedWordExactMessage) {
-    EXPECT_EQ(bad_input_message([] { run_gcode("G1 X1 F100\nG41 X2\n"); }),
-              "t.nc:2: unsupported word 'G41' (supported: G0 G1 G2 G3 G17 G20 G21 G90 G91 G92 G94 M2 M3 M5 M30 "
-              "F I J R S N X Y)");
+TEST(HostGcodeErrors, UnsupportedWordNamesTheLineAndTheWordTable) {
+    const std::string msg = bad_input_message([] { run_gcode("G1 X1 F100\nG33 X2 K1\n"); });
+    EXPECT_EQ(msg.rfind("t.nc:2: unsupported word 'G33'\n", 0), 0u) << msg;
+    EXPECT_NE(msg.find("t.nc:2: unsupported word 'K1'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("docs/gcode.md"), std::string::npos) << msg;
 }
 
 TEST(HostGcodeErrors, UnsupportedWords) {
-    expect_gcode_error("G4 P1\n", {"t.nc:1:", "'G4'"});
-    expect_gcode_error("M6\n", {"t.nc:1:", "'M6'"});
-    expect_gcode_error("G0 X1\nT1\n", {"t.nc:2:", "'T1'"});
-    expect_gcode_error("G1 X1 Z5 F100\n", {"t.nc:1:", "'Z5'"});
-    expect_gcode_error("G0 A1\n", {"'A1'"});
+    expect_gcode_error("G33 X1\n", {"t.nc:1:", "'G33'"});
+    expect_gcode_error("G0 X1\nG81 X1 Y1 Z-1 R1\n", {"t.nc:2:", "'G81'"});
     expect_gcode_error("G0 K1\n", {"'K1'"});
-    expect_gcode_error("G91.1\n", {"'G91.1'"});
-    expect_gcode_error("G18\n", {"'G18'"});
-    expect_gcode_error("M4\n", {"'M4'"});
+    expect_gcode_error("G0 B1\n", {"'B1'"});
+    expect_gcode_error("M84\n", {"'M84'"});
+    expect_gcode_error("M200\n", {"'M200'"});
+    expect_gcode_error("G95\n", {"'G95'"});
     expect_gcode_error("G-1\n", {"'G-1'"});
+    expect_gcode_error("G1.25\n", {"'G1.25'"});
+    expect_gcode_error("o100 sub\n", {"t.nc:1:", "'O100SUB'"});
+    expect_gcode_error("#1 = 10\nG1 X#1 F1\n", {"t.nc:1:", "unsupported word '#'", "2 lines: 1, 2"});
+    expect_gcode_error("G1 X[1+2] F1\n", {"t.nc:1:", "unsupported word '[...]'"});
+}
+
+TEST(HostGcodeErrors, EveryUnsupportedWordOfTheFileAtOnce) {
+    const std::string msg = bad_input_message([] { run_gcode("G33 X1\nG1 X2 F10\nG33 X3\nM84\nG2 X1\nG81\n"); });
+    EXPECT_NE(msg.find("t.nc:1: unsupported word 'G33' (2 lines: 1, 3)"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("t.nc:4: unsupported word 'M84'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("t.nc:6: unsupported word 'G81'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("t.nc:5: G2 needs I/J"), std::string::npos) << msg;
+}
+
+TEST(HostGcodeErrors, StrictPolicyRefusesEveryIgnoredWordWithItsLines) {
+    InterpreterOptions opt;
+    opt.policy = GcodePolicy::Strict;
+    const std::string msg = bad_input_message([&] { run_gcode("%\nT1 M6\nG40 G1 X1 F10\nT1\n/G1 X5\n%\n", opt); });
+    EXPECT_EQ(msg.rfind("t.nc:1: not executed by this machine", 0), 0u) << msg;
+    EXPECT_NE(msg.find("'%'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("t.nc:2: not executed by this machine (strict policy; tool select: the machine has one tool) "
+                       "'T1' (2 lines: 2, 4)"),
+              std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("'M6'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("t.nc:3:"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("'G40'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("t.nc:5:"), std::string::npos) << msg;
 }
 
 TEST(HostGcodeErrors, MalformedWords) {
@@ -37,10 +64,11 @@ TEST(HostGcodeErrors, MalformedWords) {
     expect_gcode_error("G1 10\n", {"'G110'"});
     expect_gcode_error("G1 X1.2.3 F1\n", {"word 'X1.2.3' has a malformed number"});
     expect_gcode_error("G1 X--1 F1\n", {"word 'X--1' has a malformed number"});
-    expect_gcode_error("G1 X1 # F1\n", {"t.nc:1:", "unexpected character '#'"});
-    expect_gcode_error("%\n", {"unexpected character '%'"});
+    expect_gcode_error("G1 X1 $ F1\n", {"t.nc:1:", "unexpected character '$'"});
+    expect_gcode_error("G1 X1 F1 %\n", {"unexpected character '%'"});
     expect_gcode_error("G1 X1 F1 )\n", {"unexpected character ')'"});
     expect_gcode_error("G0 X1\nG1 X2 (no end F100\n", {"t.nc:2:", "unterminated comment"});
+    expect_gcode_error("G0 X1 (outer (inner) )\n", {"t.nc:1:", "nested comment"});
 }
 
 TEST(HostGcodeErrors, ConflictingAndRepeatedWords) {
@@ -72,8 +100,8 @@ TEST(HostGcodeErrors, ArcProblems) {
 }
 
 TEST(HostGcodeErrors, MotionAndOriginProblems) {
-    expect_gcode_error("G21\nX10\n", {"t.nc:2:", "X/Y without a motion mode"});
-    expect_gcode_error("G92\n", {"t.nc:1:", "G92 needs X and/or Y"});
+    expect_gcode_error("G21\nX10\n", {"t.nc:2:", "axis words without a motion mode"});
+    expect_gcode_error("G92\n", {"t.nc:1:", "G92 needs X, Y and/or Z"});
     expect_gcode_error("G92 G1 X1 F100\n", {"G92 and G1 on the same line"});
     expect_gcode_error("G92 X1 I1\n", {"I, J and R are allowed only with G2/G3"});
 }

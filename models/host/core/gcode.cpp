@@ -1,18 +1,24 @@
 #include "host/core/gcode.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <optional>
+#include <map>
+#include <sstream>
 
 #include "common/bad_input.hpp"
 #include "host/core/gcode_lexer.hpp"
+#include "host/core/gcode_words.hpp"
+#include "host/core/text_number.hpp"
 
 namespace cnc::host {
 
 namespace {
 
 constexpr double kMmPerInch = 25.4;
+constexpr double kSecondsPerMinute = 60.0;
 // Largest allowed difference between the start and end radius of an I/J arc, and largest shortfall of |R|
 // below half the chord for an R arc. LinuxCNC's rs274ngc makes the same radius-difference check (interp_internal.hh:
 // CENTER_ARC_RADIUS_TOLERANCE_MM = 0.02*sqrt(2) mm, RADIUS_TOLERANCE_MM = 0.00127 mm for R); a single 0.01 mm,
@@ -20,8 +26,19 @@ constexpr double kMmPerInch = 25.4;
 constexpr double kArcToleranceMm = 0.01;
 // Distance under which two machine positions are the same point (far below one 6.25 um microstep).
 constexpr double kSamePointMm = 1e-9;
-constexpr const char* kSupported =
-    "(supported: G0 G1 G2 G3 G17 G20 G21 G90 G91 G92 G94 M2 M3 M5 M30 F I J R S N X Y)";
+// RS274/NGC has nine work coordinate systems, G54 .. G59.3 (P1 .. P9 of G10).
+constexpr std::size_t kCoordSystems = 9;
+// Problems listed in one message before the rest are only counted.
+constexpr std::size_t kMaxListedProblems = 40;
+constexpr const char* kWordTable =
+    "executed: G0-G3 G4 G10 L2/L20 G17 G20 G21 G28 G28.1 G30 G30.1 G53 G54-G59.3 G61 G61.1 G64 G90 G91 G90.1 "
+    "G91.1 G92 G92.1-G92.3 G93 G94 M0 M1 M2 M3 M4 M5 M30 M60 F S X Y Z A E I J R P Q L N % /; ignored unless "
+    "strict: T D H O M6 M7-M9 M100-M199 G40-G42 G43 G49 G80 G97 G18 G19; table: docs/gcode.md";
+
+// X Y Z of a position or offset, machine mm.
+struct Xyz {
+    double x = 0.0, y = 0.0, z = 0.0;
+};
 
 std::string mm_text(double v) {
     char buf[40];
@@ -29,168 +46,353 @@ std::string mm_text(double v) {
     return buf;
 }
 
-// The words of one line, grouped as RS274/NGC modal groups; at most one word per group and per letter.
-struct LineWords {
-    std::optional<int> motion;    // 0..3
-    std::optional<int> distance;  // 90 / 91
-    std::optional<int> units;     // 20 / 21
-    std::optional<int> laser;     // 3 / 5
-    bool set_origin = false;      // G92
-    bool stop = false;            // M2 / M30
-    std::optional<double> x, y, i, j, r, f;
-};
+// Every problem of a file: the unsupported words with all their lines, and the other errors in line order.
+class Problems {
+public:
+    explicit Problems(std::string filename) : m_file(std::move(filename)) {}
 
-[[noreturn]] void unsupported(const GcodeWord& w, const std::string& where) {
-    throw BadInput(where, "unsupported word '" + w.text + "' " + kSupported);
-}
-
-// G and M numbers we know are small non-negative integers ("G01" = G1); anything else is unsupported.
-int code_of(const GcodeWord& w, const std::string& where) {
-    if (w.value < 0.0 || w.value > 999.0 || w.value != std::floor(w.value)) unsupported(w, where);
-    return static_cast<int>(w.value);
-}
-
-void set_once(std::optional<int>& slot, int code, const GcodeWord& w, const char* group, const std::string& where) {
-    if (slot) throw BadInput(where, "'" + w.text + "' conflicts with another " + group + " word on the same line");
-    slot = code;
-}
-
-void set_value(std::optional<double>& slot, const GcodeWord& w, const std::string& where) {
-    if (slot) throw BadInput(where, std::string("word '") + w.letter + "' appears twice on the same line");
-    slot = w.value;
-}
-
-LineWords group_words(const std::vector<GcodeWord>& words, const std::string& where) {
-    LineWords lw;
-    for (const GcodeWord& w : words) {
-        switch (w.letter) {
-            case 'G': {
-                const int code = code_of(w, where);
-                if (code <= 3) {
-                    set_once(lw.motion, code, w, "motion (G0 G1 G2 G3)", where);
-                } else if (code == 20 || code == 21) {
-                    set_once(lw.units, code, w, "units (G20 G21)", where);
-                } else if (code == 90 || code == 91) {
-                    set_once(lw.distance, code, w, "distance mode (G90 G91)", where);
-                } else if (code == 92) {
-                    lw.set_origin = true;
-                } else if (code != 17 && code != 94) {  // seed 000 T2.1: XY plane and mm/min are the only modes
-                    unsupported(w, where);
-                }
-                break;
-            }
-            case 'M': {
-                const int code = code_of(w, where);
-                if (code == 3 || code == 5) {
-                    set_once(lw.laser, code, w, "laser (M3 M5)", where);
-                } else if (code == 2 || code == 30) {
-                    if (lw.stop) throw BadInput(where, "'" + w.text + "' conflicts with another program end word");
-                    lw.stop = true;
-                } else {
-                    unsupported(w, where);
-                }
-                break;
-            }
-            case 'X': set_value(lw.x, w, where); break;
-            case 'Y': set_value(lw.y, w, where); break;
-            case 'I': set_value(lw.i, w, where); break;
-            case 'J': set_value(lw.j, w, where); break;
-            case 'R': set_value(lw.r, w, where); break;
-            case 'F':
-                if (w.value <= 0.0) throw BadInput(where, "feed must be > 0 ('" + w.text + "')");
-                set_value(lw.f, w, where);
-                break;
-            case 'N':  // block number
-            case 'S':  // spindle speed / laser power: the laser is on/off only (seed 000 Q8)
-                break;
-            default: unsupported(w, where);
+    void unsupported(const std::string& word, int line, const std::string& why) {
+        auto [it, fresh] = m_words.try_emplace(word);
+        if (fresh) {
+            m_order.push_back(word);
+            it->second.why = why;
         }
+        it->second.lines.push_back(line);
     }
-    return lw;
-}
+    void error(const std::string& message) { m_errors.push_back(message); }
+    [[nodiscard]] bool any() const { return !m_order.empty() || !m_errors.empty(); }
+
+    // One message: the first problem as "file:line: ...", each further one on a line of its own.
+    [[noreturn]] void raise() const {
+        std::vector<std::string> items;
+        for (const std::string& w : m_order) {
+            const Entry& e = m_words.at(w);
+            std::string text = m_file + ":" + std::to_string(e.lines.front()) + ": " + e.why + " '" + w + "'";
+            if (e.lines.size() > 1) text += " (" + lines_text(e.lines) + ")";
+            items.push_back(text);
+        }
+        items.insert(items.end(), m_errors.begin(), m_errors.end());
+        std::string msg = items.front();
+        for (std::size_t k = 1; k < items.size() && k < kMaxListedProblems; ++k) msg += "\n  " + items[k];
+        if (items.size() > kMaxListedProblems) {
+            msg += "\n  ... and " + std::to_string(items.size() - kMaxListedProblems) + " more problems";
+        }
+        if (!m_order.empty()) msg += "\n  (" + std::string(kWordTable) + ")";
+        throw BadInput("", msg);
+    }
+
+private:
+    struct Entry {
+        std::string why;
+        std::vector<int> lines;
+    };
+    static std::string lines_text(const std::vector<int>& lines) {
+        std::string t = std::to_string(lines.size()) + " lines: ";
+        for (std::size_t k = 0; k < lines.size() && k < 10; ++k) t += (k ? ", " : "") + std::to_string(lines[k]);
+        if (lines.size() > 10) t += ", ...";
+        return t;
+    }
+    std::string m_file;
+    std::map<std::string, Entry> m_words;
+    std::vector<std::string> m_order;
+    std::vector<std::string> m_errors;
+};
 
 class Interpreter {
 public:
     Interpreter(std::string filename, const InterpreterOptions& opt)
-        : m_opt(opt), m_pos(opt.start_mm) {
+        : m_opt(opt), m_problems(filename), m_pos(opt.start_mm) {
         m_program.filename = std::move(filename);
         if (!(std::isfinite(opt.rapid_feed_mm_per_min) && opt.rapid_feed_mm_per_min > 0.0)) {
             throw BadInput(m_program.filename, "rapid feed must be > 0 mm/min");
         }
     }
 
-    // Executes one source line; returns false once the program has ended (M2/M30).
-    bool execute(const std::string& text, int line) {
+    // Reads one source line; returns false once the program has ended (M2/M30, or the closing '%').
+    bool line(const std::string& text, int line) {
+        m_program.lines = line;
+        m_line = line;
         m_where = m_program.filename + ":" + std::to_string(line);
-        const LineWords lw = group_words(lex_gcode_line(text, m_where), m_where);
-        // RS274/NGC order of execution: modes first, so G20 and G91 apply to the coordinates on their own line.
-        if (lw.units) m_scale = *lw.units == 20 ? kMmPerInch : 1.0;
-        if (lw.distance) m_absolute = *lw.distance == 90;
-        if (lw.f) set_feed(*lw.f);
-        if (lw.laser) m_laser_on = *lw.laser == 3;
-        if (lw.set_origin) {
-            set_origin(lw);
-        } else {
-            move(lw, line);
+        const std::string_view body = trim(text);
+        if (body == "%") return tape_mark();
+        if (!body.empty() && body.front() == '/') {
+            ignore({"/", "block delete: the line is skipped (block delete switch on)"});
+            return true;
         }
-        return !lw.stop;
+        try {
+            const BlockWords b = group_words(lex_gcode_line(text, m_where), m_where);
+            for (const std::string& w : b.unsupported) m_problems.unsupported(w, line, "unsupported word");
+            for (const IgnoredUse& use : b.ignored) ignore(use);
+            if (!b.unsupported.empty()) return true;
+            return execute(b);
+        } catch (const BadInput& e) {
+            m_problems.error(e.what());
+            return true;
+        }
     }
 
-    Program take() { return std::move(m_program); }
+    Program take() {
+        if (m_problems.any()) m_problems.raise();
+        return std::move(m_program);
+    }
 
 private:
+    // LinuxCNC: a '%' line opens the program and the next one ends it (the rest of the file is not read).
+    bool tape_mark() {
+        ignore({"%", "tape mark: the program lies between two '%' lines"});
+        return ++m_tape_marks < 2;
+    }
+
+    void ignore(const IgnoredUse& use) {
+        if (m_opt.policy == GcodePolicy::Strict) {
+            m_problems.unsupported(use.word, m_line, "not executed by this machine (strict policy; " + use.reason + ")");
+            return;
+        }
+        auto it = std::find_if(m_program.ignored.begin(), m_program.ignored.end(),
+                               [&](const IgnoredWord& w) { return w.word == use.word; });
+        if (it == m_program.ignored.end()) {
+            m_program.ignored.push_back(IgnoredWord{use.word, use.reason, {}});
+            it = std::prev(m_program.ignored.end());
+        }
+        if (it->lines.empty() || it->lines.back() != m_line) it->lines.push_back(m_line);
+    }
+
+    // RS274/NGC order of execution (LinuxCNC's "Order of Execution" table), the parts this machine has.
+    bool execute(const BlockWords& b) {
+        if (b.feed_mode) m_inverse_time = *b.feed_mode == 930;
+        // Units before F (unlike RS274/NGC's table), so that "F10 G20" is 10 in/min as the line reads.
+        if (b.units) m_scale = *b.units == 200 ? kMmPerInch : 1.0;
+        if (b.f) set_feed(*b.f);
+        const bool dwell = b.non_modal == 40;
+        if (b.s && !(dwell && !b.p)) m_power_s = *b.s;
+        if (b.laser) m_laser = *b.laser == 30 ? LaserMode::Constant : *b.laser == 40 ? LaserMode::Dynamic : LaserMode::Off;
+        if (dwell) do_dwell(b);
+        if (b.plane) set_plane(*b.plane);
+        if (b.coord_system) m_cs = coord_index(*b.coord_system);
+        if (b.path_mode) set_path_mode(b);
+        if (b.distance) m_absolute = *b.distance == 900;
+        if (b.arc_distance) m_arc_absolute = *b.arc_distance == 901;
+        if (b.non_modal && !dwell) {
+            non_modal(b);
+        } else {
+            check_unused(b);
+            motion(b, false);
+        }
+        if (b.stop) return stop(*b.stop);
+        return true;
+    }
+
     void set_feed(double f) {
+        if (!(f > 0.0)) throw BadInput(m_where, "feed must be > 0 ('F" + format_double(f) + "')");
+        m_f_word = f;
         // Stored in mm/min, so a later G20/G21 does not change the physical feed.
-        m_feed_mm_per_min = f * m_scale * (m_opt.feed_unit == FeedUnit::MmPerSecond ? 60.0 : 1.0);
+        m_feed_mm_per_min = f * m_scale * (m_opt.feed_unit == FeedUnit::MmPerSecond ? kSecondsPerMinute : 1.0);
     }
 
-    // G92: the current machine position gets the given program coordinates; later program coordinates are
-    // shifted by the difference, while the moves stay in machine coordinates. G92 values are absolute even in G91.
-    void set_origin(const LineWords& lw) {
-        if (lw.motion) throw BadInput(m_where, "G92 and G" + std::to_string(*lw.motion) + " on the same line both use X/Y");
-        if (!lw.x && !lw.y) throw BadInput(m_where, "G92 needs X and/or Y");
-        if (lw.i || lw.j || lw.r) throw BadInput(m_where, "I, J and R are allowed only with G2/G3");
-        if (lw.x) m_offset.x_mm = m_pos.x_mm - *lw.x * m_scale;
-        if (lw.y) m_offset.y_mm = m_pos.y_mm - *lw.y * m_scale;
+    // G4: P in seconds (RS274/NGC and grbl); S in seconds (Marlin's seconds form) when there is no P.
+    void do_dwell(const BlockWords& b) {
+        if (b.p && b.s) throw BadInput(m_where, "G4 takes P (seconds) or S (seconds), not both");
+        const std::optional<double> t = b.p ? b.p : b.s;
+        if (!t) throw BadInput(m_where, "G4 needs P (dwell time in seconds)");
+        if (!(*t >= 0.0)) throw BadInput(m_where, "G4 dwell time must be >= 0 s");
+        if (b.motion) throw BadInput(m_where, "G4 and a motion word on the same line");
+        wait(*t, WaitCause::Dwell);
     }
 
-    double target_axis(const std::optional<double>& word, double pos_mm, double offset_mm) const {
-        if (!word) return pos_mm;
-        return m_absolute ? *word * m_scale + offset_mm : pos_mm + *word * m_scale;
+    void set_plane(Code10 plane) {
+        m_plane = plane;
+        if (plane != 170) ignore({plane == 180 ? "G18" : "G19", "plane select: arcs are cut in the XY plane only"});
     }
 
-    void move(const LineWords& lw, int line) {
-        if (lw.motion) m_motion = static_cast<MotionKind>(*lw.motion);
-        const bool has_axes = lw.x || lw.y;
-        const bool has_arc_words = lw.i || lw.j || lw.r;
+    static std::size_t coord_index(Code10 c) {
+        static constexpr std::array<Code10, kCoordSystems> kCodes{540, 550, 560, 570, 580, 590, 591, 592, 593};
+        return static_cast<std::size_t>(std::find(kCodes.begin(), kCodes.end(), c) - kCodes.begin());
+    }
+
+    void set_path_mode(const BlockWords& b) {
+        PathControl pc;
+        pc.mode = *b.path_mode == 610 ? PathMode::ExactStop : *b.path_mode == 611 ? PathMode::ExactPath : PathMode::Blend;
+        if (b.p) {
+            if (pc.mode != PathMode::Blend) throw BadInput(m_where, "P is the G64 blend tolerance: not with G61");
+            if (!(*b.p >= 0.0)) throw BadInput(m_where, "G64 P (path tolerance) must be >= 0");
+            pc.tolerance_mm = *b.p * m_scale;
+        }
+        m_path_control = pc;
+    }
+
+    // Words that only G4, G10 and G64 use, left over on a line without them.
+    void check_unused(const BlockWords& b) const {
+        if (b.l) throw BadInput(m_where, "L is used only with G10");
+        if (b.p && !b.path_mode && !b.non_modal) throw BadInput(m_where, "P is used only with G4, G10 and G64");
+        if (b.q && !b.path_mode) throw BadInput(m_where, "Q is used only with G64");
+    }
+
+    void non_modal(const BlockWords& b) {
+        const Code10 c = *b.non_modal;
+        if (c == 530) return motion(b, true);
+        if (b.motion) {
+            throw BadInput(m_where, "G" + std::to_string(c / 10) + (c % 10 ? "." + std::to_string(c % 10) : "") +
+                                        " and G" + std::to_string(*b.motion / 10) +
+                                        " on the same line both use the axis words");
+        }
+        if (b.i || b.j || b.r) throw BadInput(m_where, "I, J and R are allowed only with G2/G3");
+        switch (c) {
+            case 100: return set_work_offset(b);
+            case 280: return go_home(b, m_home28);
+            case 300: return go_home(b, m_home30);
+            case 281: m_home28 = machine_now(); return;
+            case 301: m_home30 = machine_now(); return;
+            case 920: return set_g92(b);
+            case 921: m_g92 = m_g92_saved = Xyz{}; return;
+            case 922: m_g92 = Xyz{}; return;
+            case 923: m_g92 = m_g92_saved; return;
+            default: return;
+        }
+    }
+
+    Xyz machine_now() const { return {m_pos.x_mm, m_pos.y_mm, m_z}; }
+
+    // G10 L2 Pn: coordinate system n's origin in machine coordinates; L20: set so that the tool is at the given
+    // coordinates in system n. P0 is the active system.
+    void set_work_offset(const BlockWords& b) {
+        if (!b.l || (*b.l != 2.0 && *b.l != 20.0)) throw BadInput(m_where, "G10 needs L2 or L20 (work offsets)");
+        if (!b.p || *b.p < 0.0 || *b.p > static_cast<double>(kCoordSystems) || *b.p != std::floor(*b.p)) {
+            throw BadInput(m_where, "G10 needs P0 .. P9 (coordinate system; 0 = the active one)");
+        }
+        const std::size_t n = *b.p == 0.0 ? m_cs : static_cast<std::size_t>(*b.p) - 1;
+        Xyz& cs = m_cs_offset[n];
+        const Xyz now = machine_now();
+        const bool l20 = *b.l == 20.0;
+        auto apply = [&](const std::optional<double>& w, double& off, double pos, double g92) {
+            if (w) off = l20 ? pos - g92 - *w * m_scale : *w * m_scale;
+        };
+        apply(b.x, cs.x, now.x, m_g92.x);
+        apply(b.y, cs.y, now.y, m_g92.y);
+        apply(b.z, cs.z, now.z, m_g92.z);
+    }
+
+    // G92: the tool's current position gets the given coordinates (values absolute even in G91).
+    void set_g92(const BlockWords& b) {
+        if (!b.x && !b.y && !b.z) throw BadInput(m_where, "G92 needs X, Y and/or Z");
+        const Xyz now = machine_now();
+        const Xyz& cs = m_cs_offset[m_cs];
+        if (b.x) m_g92.x = now.x - cs.x - *b.x * m_scale;
+        if (b.y) m_g92.y = now.y - cs.y - *b.y * m_scale;
+        if (b.z) m_g92.z = now.z - cs.z - *b.z * m_scale;
+        m_g92_saved = m_g92;
+    }
+
+    // G28/G30 (LinuxCNC): with axis words, a rapid through that point (program coordinates) and then those axes
+    // to the stored home; without, every axis to the home. The homes are machine 0 until G28.1/G30.1 set them.
+    void go_home(const BlockWords& b, const Xyz& home) {
+        const bool named = b.x || b.y || b.z;
+        if (named) rapid_to(target(b, false));
+        Xyz to = machine_now();
+        if (!named || b.x) to.x = home.x;
+        if (!named || b.y) to.y = home.y;
+        if (!named || b.z) to.z = home.z;
+        rapid_to(to);
+    }
+
+    void rapid_to(const Xyz& to) {
+        emit(MotionKind::Rapid, geom::Segment::line(m_pos, {to.x, to.y}), to.z, 0.0);
+    }
+
+    double axis_target(const std::optional<double>& word, double pos, double offset, bool machine_coords) const {
+        if (!word) return pos;
+        if (machine_coords) return *word * m_scale;
+        return m_absolute ? *word * m_scale + offset : pos + *word * m_scale;
+    }
+
+    Xyz target(const BlockWords& b, bool machine_coords) const {
+        const Xyz& cs = m_cs_offset[m_cs];
+        return {axis_target(b.x, m_pos.x_mm, cs.x + m_g92.x, machine_coords),
+                axis_target(b.y, m_pos.y_mm, cs.y + m_g92.y, machine_coords),
+                axis_target(b.z, m_z, cs.z + m_g92.z, machine_coords)};
+    }
+
+    void motion(const BlockWords& b, bool machine_coords) {
+        if (b.motion) m_motion = static_cast<MotionKind>(*b.motion / 10);
+        const bool has_axes = b.x || b.y || b.z || b.a || b.e;
+        const bool has_arc_words = b.i || b.j || b.r;
         if (!has_axes && !has_arc_words) return;
-        if (!m_motion) throw BadInput(m_where, "X/Y without a motion mode: program G0, G1, G2 or G3 first");
+        if (!m_motion) throw BadInput(m_where, "axis words without a motion mode: program G0, G1, G2 or G3 first");
         const MotionKind kind = *m_motion;
         const std::string g = "G" + std::to_string(static_cast<int>(kind));
         const bool is_arc = kind == MotionKind::ArcCW || kind == MotionKind::ArcCCW;
         if (!is_arc && has_arc_words) throw BadInput(m_where, "I, J and R are allowed only with G2/G3 (motion is " + g + ")");
+        if (machine_coords && (is_arc || m_absolute == false)) {
+            throw BadInput(m_where, "G53 needs G0 or G1 in absolute mode (G90)");
+        }
+        if (is_arc && m_plane != 170) {
+            throw BadInput(m_where, g + " in the " + (m_plane == 180 ? "G18 (XZ)" : "G19 (YZ)") +
+                                        " plane: this machine cuts arcs in the XY plane (G17) only");
+        }
+        if (kind != MotionKind::Rapid && m_inverse_time && !b.f) {
+            throw BadInput(m_where, g + " in inverse-time mode (G93) needs F on its own line");
+        }
         if (kind != MotionKind::Rapid && !m_feed_mm_per_min) {
             throw BadInput(m_where, g + " needs a feed rate but no F has been programmed");
         }
-        const geom::Vec2 target{target_axis(lw.x, m_pos.x_mm, m_offset.x_mm),
-                                target_axis(lw.y, m_pos.y_mm, m_offset.y_mm)};
-        geom::Segment path = is_arc ? arc(lw, target, kind == MotionKind::ArcCCW, g)
-                                    : geom::Segment::line(m_pos, target);
-        if (path.length_mm() > kSamePointMm) {
-            const double feed = kind == MotionKind::Rapid ? m_opt.rapid_feed_mm_per_min : *m_feed_mm_per_min;
-            m_program.moves.push_back(ProgrammedMove{kind, path, feed, m_laser_on, line});
-        }
-        m_pos = target;
+        const Xyz to = target(b, machine_coords);
+        const geom::Segment path = is_arc ? arc(b, {to.x, to.y}, kind == MotionKind::ArcCCW, g)
+                                          : geom::Segment::line(m_pos, {to.x, to.y});
+        const double other = std::max(b.a ? std::fabs(axis_target(b.a, m_a, 0.0, false) - m_a) : 0.0,
+                                      b.e ? std::fabs(axis_target(b.e, m_e, 0.0, false) - m_e) : 0.0);
+        if (b.a) m_a = axis_target(b.a, m_a, 0.0, false);
+        if (b.e) m_e = axis_target(b.e, m_e, 0.0, false);
+        emit(kind, path, to.z, other);
     }
 
-    geom::Segment arc(const LineWords& lw, geom::Vec2 target, bool ccw, const std::string& g) const {
-        if (lw.r && (lw.i || lw.j)) throw BadInput(m_where, g + " takes either I/J or R, not both");
-        if (!lw.r && !lw.i && !lw.j) throw BadInput(m_where, g + " needs I/J (centre offset) or R (radius)");
-        const geom::Vec2 center = lw.r ? center_from_radius(*lw.r * m_scale, target, ccw, g)
-                                       : m_pos + geom::Vec2{lw.i.value_or(0.0), lw.j.value_or(0.0)} * m_scale;
+    // One programmed move: the XY path goes to the architecture, the time of a Z (or A/E) component that the XY
+    // hardware has no STEP pins for is kept. A move with XY and Z runs its XY path at the XY share of F, so that
+    // it takes as long as the whole move at F (RS274/NGC feeds the XYZ length; A/E alone are timed at F).
+    void emit(MotionKind kind, const geom::Segment& path, double z_to, double other_axes) {
+        const double xy_mm = path.length_mm();
+        const double dz_mm = std::fabs(z_to - m_z);
+        const double linear_mm = std::hypot(xy_mm, dz_mm);
+        const double length_mm = linear_mm > kSamePointMm ? linear_mm : other_axes;
+        const double feed = kind == MotionKind::Rapid ? m_opt.rapid_feed_mm_per_min : *m_feed_mm_per_min;
+        const bool inverse_time = kind != MotionKind::Rapid && m_inverse_time;
+        const double minutes = inverse_time ? 1.0 / *m_f_word : length_mm / feed;
+        m_program.z_travel_mm += dz_mm;
+        if (xy_mm > kSamePointMm) {
+            // A plain XY move keeps F exactly (the CAM's packet feed rounds it).
+            const double xy_feed = dz_mm == 0.0 && !inverse_time ? feed : xy_mm / minutes;
+            m_program.moves.push_back(ProgrammedMove{kind, path, xy_feed, m_laser != LaserMode::Off, m_line, m_laser,
+                                                     m_power_s, m_path_control, m_z, z_to});
+        } else if (length_mm > kSamePointMm) {
+            wait(minutes * kSecondsPerMinute, WaitCause::OtherAxes);
+        }
+        m_pos = path.end;
+        m_z = z_to;
+    }
+
+    void wait(double seconds, WaitCause cause) {
+        if (seconds > 0.0) m_program.waits.push_back(HostWait{m_program.moves.size(), seconds, cause, m_line});
+    }
+
+    bool stop(Code10 code) {
+        if (code == 20 || code == 300) return false;
+        wait(m_opt.operator_pause_s, WaitCause::OperatorPause);
+        return true;
+    }
+
+    geom::Segment arc(const BlockWords& b, geom::Vec2 target, bool ccw, const std::string& g) const {
+        if (b.r && (b.i || b.j)) throw BadInput(m_where, g + " takes either I/J or R, not both");
+        if (!b.r && !b.i && !b.j) throw BadInput(m_where, g + " needs I/J (centre offset) or R (radius)");
+        geom::Vec2 center;
+        if (b.r) {
+            center = center_from_radius(*b.r * m_scale, target, ccw, g);
+        } else if (m_arc_absolute) {
+            const Xyz& cs = m_cs_offset[m_cs];
+            center = {b.i ? *b.i * m_scale + cs.x + m_g92.x : m_pos.x_mm, b.j ? *b.j * m_scale + cs.y + m_g92.y : m_pos.y_mm};
+        } else {
+            center = m_pos + geom::Vec2{b.i.value_or(0.0), b.j.value_or(0.0)} * m_scale;
+        }
         const double r_start = geom::distance(m_pos, center);
         const double r_end = geom::distance(target, center);
-        if (r_start <= kSamePointMm) throw BadInput(m_where, g + " arc radius is zero (I and J are both 0)");
+        if (r_start <= kSamePointMm) throw BadInput(m_where, g + " arc radius is zero (the centre is the start point)");
         if (std::fabs(r_end - r_start) > kArcToleranceMm) {
             throw BadInput(m_where, g + " end point is not on the arc: start radius " + mm_text(r_start) +
                                         ", end radius " + mm_text(r_end) + " (allowed difference " +
@@ -222,26 +424,81 @@ private:
 
     InterpreterOptions m_opt;
     Program m_program;
+    Problems m_problems;
     std::string m_where;
-    geom::Vec2 m_pos;          // machine mm
-    geom::Vec2 m_offset{};     // G92: machine = program + offset
-    double m_scale = 1.0;      // mm per program unit (G21 default)
-    bool m_absolute = true;    // G90 default
-    bool m_laser_on = false;   // M5 until the program says M3
+    int m_line = 0;
+    int m_tape_marks = 0;
+    geom::Vec2 m_pos;                          // machine mm
+    double m_z = 0.0;                          // machine mm
+    double m_a = 0.0, m_e = 0.0;               // program units of the A and E axes
+    std::array<Xyz, kCoordSystems> m_cs_offset{};  // G54 .. G59.3 origins, machine mm
+    std::size_t m_cs = 0;                      // G54
+    Xyz m_g92{}, m_g92_saved{};
+    Xyz m_home28{}, m_home30{};                // G28/G30 homes: machine 0 until G28.1/G30.1
+    double m_scale = 1.0;                      // mm per program unit (G21 default)
+    bool m_absolute = true;                    // G90 default
+    bool m_arc_absolute = false;               // G91.1 default: I/J relative to the start
+    bool m_inverse_time = false;               // G94 default
+    Code10 m_plane = 170;                      // G17
+    LaserMode m_laser = LaserMode::Off;        // M5 until the program says M3/M4
+    std::optional<double> m_power_s;
+    std::optional<PathControl> m_path_control;
     std::optional<MotionKind> m_motion;
     std::optional<double> m_feed_mm_per_min;
+    std::optional<double> m_f_word;            // F as written (G93: 1 / minutes)
 };
+
+// Lines end in LF, CR LF or a lone CR (classic Mac files); a UTF-8 byte-order mark at the start is skipped.
+std::vector<std::string> split_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+    for (std::size_t i = start; i < text.size(); ++i) {
+        if (text[i] == '\n' || text[i] == '\r') {
+            lines.push_back(text.substr(start, i - start));
+            if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+            start = i + 1;
+        }
+    }
+    if (start < text.size()) lines.push_back(text.substr(start));
+    return lines;
+}
 
 }  // namespace
 
-Program interpret(std::istream& in, const std::string& filename, const InterpreterOptions& opt) {
-    Interpreter interp(filename, opt);
-    std::string text;
-    int line = 0;
-    while (std::getline(in, text)) {
-        if (!interp.execute(text, ++line)) break;
+const char* to_string(WaitCause cause) {
+    switch (cause) {
+        case WaitCause::Dwell: return "dwell";
+        case WaitCause::OperatorPause: return "operator_pause";
+        case WaitCause::OtherAxes: return "z_axis";
     }
-    if (in.bad()) throw BadInput(filename, "read error after line " + std::to_string(line));
+    return "?";
+}
+
+double Program::wait_s(WaitCause cause) const {
+    double s = 0.0;
+    for (const HostWait& w : waits) {
+        if (w.cause == cause) s += w.seconds;
+    }
+    return s;
+}
+
+double Program::wait_s_between(std::size_t first, std::size_t last) const {
+    double s = 0.0;
+    for (const HostWait& w : waits) {
+        if (w.before_move >= first && w.before_move < last) s += w.seconds;
+    }
+    return s;
+}
+
+Program interpret(std::istream& in, const std::string& filename, const InterpreterOptions& opt) {
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw BadInput(filename, "read error");
+    Interpreter interp(filename, opt);
+    int line = 0;
+    for (const std::string& l : split_lines(text.str())) {
+        if (!interp.line(l, ++line)) break;
+    }
     return interp.take();
 }
 

@@ -1,8 +1,12 @@
-// G-code interpreter for the words the seed 000 CAM emits (T2.1) plus G91, G20, G92 and the R arc form:
-// turns a program into moves in machine millimetres. Anything else is rejected with the file and line.
+// G-code interpreter for what RS274/NGC (LinuxCNC), grbl and laser tools emit: turns a program into the moves
+// of the modelled XY machine (machine millimetres), the host waits between them (dwells, operator pauses, moves
+// of axes the machine has no STEP pins for) and the list of words this machine ignores. The table of every word
+// and its effect is docs/gcode.md; each decision is at the code that makes it (gcode.cpp, gcode_words.cpp).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <istream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,30 +20,85 @@ enum class MotionKind : std::uint8_t { Rapid = 0, Linear = 1, ArcCW = 2, ArcCCW 
 // Unit of the F word: seed 000 uses mm/min (G94); seed 003's PC program takes mm/s.
 enum class FeedUnit { MmPerMinute, MmPerSecond };
 
+// lenient: run what the machine can do and list what it ignores; strict: every word the machine does not
+// execute is an error. Either way every unsupported word of the file is reported at once.
+enum class GcodePolicy { Lenient, Strict };
+
+// M5 off, M3 constant power, M4 grbl's dynamic power (scaled with the speed).
+enum class LaserMode { Off, Constant, Dynamic };
+
+// G61 exact stop, G61.1 exact path, G64 blending (P: the path tolerance).
+enum class PathMode { ExactStop, ExactPath, Blend };
+
+struct PathControl {
+    PathMode mode = PathMode::Blend;
+    std::optional<double> tolerance_mm;  // G64 P, machine mm; none: the planner's own tolerance
+};
+
 struct ProgrammedMove {
     MotionKind kind;
     // Machine mm. For an arc, `end` is the programmed end point exactly: it may lie up to the 0.01 mm arc
     // tolerance off the circle through the start, and the CAM's last chord goes there (as grbl's arcs do).
     geom::Segment path;
-    double feed_mm_per_min;  // programmed F (path speed); rapids carry InterpreterOptions::rapid_feed_mm_per_min
-    bool laser_on;           // M3 in force (programmed state; the FPGA switches the laser by motion code)
+    // XY path speed, mm/min: the programmed F (rapids: InterpreterOptions::rapid_feed_mm_per_min), less the
+    // share of a simultaneous Z move, so that the XY path takes the time the whole move takes at F.
+    double feed_mm_per_min;
+    bool laser_on;           // M3 or M4 in force (programmed state; the FPGA switches the laser by motion code)
     int line;                // 1-based source line
+    LaserMode laser_mode = LaserMode::Off;
+    std::optional<double> power_s;              // S in force (none: never programmed)
+    std::optional<PathControl> path_control;    // G61/G61.1/G64 in force (none: the planner's default)
+    double z_start_mm = 0.0;                    // machine Z, mm (no XY architecture has Z STEP pins)
+    double z_end_mm = 0.0;
+    // The job's intent for the laser on this move: M3/M4 with S > 0 (or no S programmed) on a cutting move.
+    [[nodiscard]] bool laser_intended() const {
+        return kind != MotionKind::Rapid && laser_mode != LaserMode::Off && (!power_s || *power_s > 0.0);
+    }
+};
+
+// Time the host spends between two moves with the XY axes at rest.
+enum class WaitCause { Dwell, OperatorPause, OtherAxes };
+
+struct HostWait {
+    std::size_t before_move;  // index into Program::moves; moves.size(): after the last move
+    double seconds;
+    WaitCause cause;
+    int line;
+};
+
+// A word the machine accepts and does nothing with, with every line it stood on.
+struct IgnoredWord {
+    std::string word;     // "T1", "M6", "G40", "/" (block delete)
+    std::string reason;   // why it has no effect here
+    std::vector<int> lines;
 };
 
 struct InterpreterOptions {
     FeedUnit feed_unit = FeedUnit::MmPerMinute;
     double rapid_feed_mm_per_min = 1200.0;  // seed 000 §7.3 test log: G0 packets carry F=1200
     geom::Vec2 start_mm{};                  // machine position when the program starts
+    GcodePolicy policy = GcodePolicy::Lenient;
+    double operator_pause_s = 5.0;          // M0/M1/M60: the time an operator takes to press cycle start
 };
 
 struct Program {
     std::string filename;
     std::vector<ProgrammedMove> moves;
+    std::vector<HostWait> waits;            // in program order
+    std::vector<IgnoredWord> ignored;       // in order of first appearance
+    double z_travel_mm = 0.0;               // Z travel, which the XY machines time as host waits
+    int lines = 0;                          // source lines read (up to the program end)
+
+    // Total seconds of the waits of one cause.
+    [[nodiscard]] double wait_s(WaitCause cause) const;
+    // Seconds of every wait with before_move in [first, last).
+    [[nodiscard]] double wait_s_between(std::size_t first, std::size_t last) const;
 };
 
-// Supported: G0 G1 G2 G3 (I/J centre offsets from the start, or R: R>0 the arc <= 180 deg, R<0 the longer one),
-// G17 G94 (no-ops), G20/G21, G90/G91, G92, F, M3/M5 (S ignored), M2/M30 (rest of the file ignored), N,
-// comments. Zero-length moves are dropped. Throws cnc::BadInput("file:line", ...) on anything else.
+const char* to_string(WaitCause cause);
+
+// Throws cnc::BadInput naming the file and line(s): one message for every problem of the file (unsupported
+// words with all their lines, malformed or impossible blocks), nothing executed.
 Program interpret(std::istream& in, const std::string& filename, const InterpreterOptions& opt);
 // BadInput if the file cannot be read.
 Program interpret_file(const std::string& path, const InterpreterOptions& opt);

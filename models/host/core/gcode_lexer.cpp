@@ -1,6 +1,7 @@
 #include "host/core/gcode_lexer.hpp"
 
 #include <cctype>
+#include <limits>
 
 #include "common/bad_input.hpp"
 #include "host/core/text_number.hpp"
@@ -9,9 +10,14 @@ namespace cnc::host {
 
 namespace {
 
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+
 bool is_number_char(char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-'; }
+bool is_alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
+char upper(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
 
 // Line text with the comments and spaces removed, so that numbers may contain spaces as RS274/NGC allows.
+// RS274/NGC comments do not nest: a '(' inside one is an error rather than a guess at what was meant.
 std::string strip_comments_and_spaces(const std::string& line, const std::string& where) {
     std::string out;
     for (std::size_t i = 0; i < line.size(); ++i) {
@@ -19,6 +25,10 @@ std::string strip_comments_and_spaces(const std::string& line, const std::string
         if (c == ';') break;
         if (c == '(') {
             const auto close = line.find(')', i);
+            const auto inner = line.find('(', i + 1);
+            if (inner != std::string::npos && (close == std::string::npos || inner < close)) {
+                throw BadInput(where, "nested comment: '(' inside a comment (G-code comments do not nest)");
+            }
             if (close == std::string::npos) throw BadInput(where, "unterminated comment: '(' without ')'");
             i = close;
         } else if (!std::isspace(static_cast<unsigned char>(c))) {
@@ -53,17 +63,32 @@ std::vector<GcodeWord> lex_gcode_line(const std::string& line, const std::string
     std::size_t i = 0;
     while (i < text.size()) {
         const char c = text[i];
+        if (c == kParameterWord || c == kExpressionWord) {
+            words.push_back(GcodeWord{c, kNoValue, text.substr(i)});
+            break;
+        }
         std::size_t end = i + 1;
         while (end < text.size() && is_number_char(text[end])) ++end;
-        if (std::isalpha(static_cast<unsigned char>(c))) {
-            const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        if (is_alpha(c)) {
+            const char letter = upper(c);
             const std::string number = text.substr(i + 1, end - i - 1);
+            if (number.empty() && end < text.size() && (text[end] == kParameterWord || text[end] == kExpressionWord)) {
+                words.push_back(GcodeWord{text[end], kNoValue, text.substr(i)});  // "X#1", "F[100+200]"
+                break;
+            }
             if (number.empty()) throw BadInput(where, std::string("word '") + letter + "' has no number");
             const auto value = parse_double(number);
             if (!is_gcode_number(number) || !value) {
                 throw BadInput(where, std::string("word '") + letter + number + "' has a malformed number");
             }
-            words.push_back(GcodeWord{letter, *value, letter + number});
+            std::string word = letter + number;
+            if (letter == 'O' && end < text.size() && is_alpha(text[end])) {
+                // LinuxCNC O-word flow control ("o100 sub", "o101 if [...]"): the keyword joins the word.
+                while (end < text.size() && is_alpha(text[end])) word.push_back(upper(text[end++]));
+                words.push_back(GcodeWord{letter, kNoValue, word});
+                break;
+            }
+            words.push_back(GcodeWord{letter, *value, word});
         } else if (is_number_char(c)) {
             end = i;
             while (end < text.size() && is_number_char(text[end])) ++end;

@@ -13,6 +13,7 @@
 #include <systemc>
 
 #include "common/units.hpp"
+#include "host/core/host_waits.hpp"
 #include "host/core/seed003/plan.hpp"
 #include "host/sender.hpp"
 #include "uart/cp2102.hpp"
@@ -33,6 +34,10 @@ public:
     PcProgram(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
               std::vector<seed003::Transfer> transfers);
 
+    // Host waits of the job (G4 dwells, M0 pauses, Z moves), one per transfer: slept after the confirm that
+    // asks for its first byte (the firmware sends it once the previous motion has ended) and before the write.
+    void set_waits(const UnitWaits& waits);
+
     [[nodiscard]] const std::vector<seed003::Transfer>& transfers() const { return m_transfers; }
     [[nodiscard]] const std::vector<PcWrite>& writes() const { return m_writes; }
     [[nodiscard]] std::int64_t unexpected_confirms() const { return m_unexpected; }
@@ -46,6 +51,7 @@ private:
     const SenderConfig m_cfg;
     uart::Cp2102& m_port;
     const std::vector<seed003::Transfer> m_transfers;
+    UnitWaits m_waits;
     std::vector<PcWrite> m_writes;
     std::int64_t m_unexpected = 0;
     bool m_finished = false;

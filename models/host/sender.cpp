@@ -14,6 +14,8 @@ Sender::Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uar
     SC_THREAD(run);
 }
 
+void Sender::set_waits(const UnitWaits& waits) { m_waits = waits; }
+
 void Sender::say(const std::string& text) { m_messages.push_back({now_ps(), text}); }
 
 void Sender::write(const std::uint8_t* data, std::size_t n) {
@@ -46,6 +48,7 @@ void Sender::run() {
 
     for (std::size_t i = 0; i < m_motion.size(); ++i) {
         const int segment = static_cast<int>(i) + 1;
+        if (i < m_waits.before_s.size()) wait_ps(s_to_ps(m_waits.before_s[i]));
         wait_ps(m_cfg.packet_processing_ps);
         SentPacket sent{segment, now_ps(), -1, false};
         write(m_motion[i].data(), m_motion[i].size());
@@ -68,6 +71,7 @@ void Sender::run() {
             break;
         }
     }
+    if (!m_aborted) wait_ps(s_to_ps(m_waits.after_last_s));
     m_finished = true;
     m_t_end = now_ps();
 }

@@ -11,6 +11,7 @@
 #include <systemc>
 
 #include "common/units.hpp"
+#include "host/core/host_waits.hpp"
 #include "uart/cp2102.hpp"
 
 namespace cnc::host {
@@ -41,6 +42,10 @@ public:
     Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
            std::array<std::uint8_t, 9> init_packet, std::vector<std::array<std::uint8_t, 11>> motion_packets);
 
+    // Host waits of the job (G4 dwells, M0 pauses, Z moves), one per motion packet: slept before the packet is
+    // written (after the previous ACK: the host sleeps once the machine has finished), and after the last ACK.
+    void set_waits(const UnitWaits& waits);
+
     [[nodiscard]] const std::vector<SentPacket>& packets() const { return m_sent; }
     [[nodiscard]] const std::vector<SenderMessage>& messages() const { return m_messages; }
     [[nodiscard]] bool finished() const { return m_finished; }
@@ -60,6 +65,7 @@ private:
     uart::Cp2102& m_port;
     const std::array<std::uint8_t, 9> m_init;
     const std::vector<std::array<std::uint8_t, 11>> m_motion;
+    UnitWaits m_waits;
     std::vector<SentPacket> m_sent;
     std::vector<SenderMessage> m_messages;
     TimePs m_t_init_write = -1;

@@ -121,6 +121,11 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     cp2102.txd(w.uart_rx);
     cp2102.rxd(w.uart_tx);
     host::Sender sender("host", s.sender, cp2102, packets.init, packets.motion);
+    if (job.program) {
+        std::vector<std::size_t> packet_moves;
+        for (const host::MotionSegment& seg : segments) packet_moves.push_back(static_cast<std::size_t>(seg.move));
+        sender.set_waits(host::waits_per_unit(*job.program, packet_moves));
+    }
     fpga::Top fpga("fpga", s.fpga);
     fpga.rx(w.uart_rx);
     fpga.tx(w.uart_tx);

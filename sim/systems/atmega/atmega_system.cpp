@@ -78,6 +78,17 @@ std::vector<metrics::MoveSpec> executed_moves(const Scenario& s, const Job& job,
     return moves;
 }
 
+// The programmed move of each transfer; M30 belongs to none (the waits after the last move come before it).
+std::vector<std::size_t> transfer_moves(const s3::Plan& plan, const std::vector<s3::Transfer>& transfers,
+                                        std::size_t n_moves) {
+    std::vector<std::size_t> out;
+    for (const s3::Transfer& t : transfers) {
+        const std::vector<s3::Motion>& motions = plan.commands[t.command].motions;
+        out.push_back(motions.empty() ? n_moves : static_cast<std::size_t>(motions.front().move));
+    }
+    return out;
+}
+
 }  // namespace
 
 ArchRun run_atmega(const Scenario& s, const Job& job) {
@@ -92,7 +103,9 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     uart::Cp2102 cp2102("cp2102", link_config(s));
     cp2102.txd(w.uart_rx);
     cp2102.rxd(w.uart_tx);
-    host::PcProgram pc("host", s.sender, cp2102, s3::transfers(plan));
+    const std::vector<s3::Transfer> transfers = s3::transfers(plan);
+    host::PcProgram pc("host", s.sender, cp2102, transfers);
+    pc.set_waits(host::waits_per_unit(*job.program, transfer_moves(plan, transfers, job.program->moves.size())));
     avr::AvrCore mcu("atmega328p", avr_cfg);
     mcu.step_x(w.step_x);
     mcu.dir_x(w.dir_x);

@@ -28,6 +28,7 @@ struct KeptMove {
     int move;
     Curve curve;
     double feed_mm_per_s;
+    double wait_before_s;  // host waits (dwell, pause, Z move) since the kept move before: the tool rests
 };
 
 // What happens where kept move j meets kept move j + 1.
@@ -43,6 +44,7 @@ struct Draft {
     double feed_mm_per_s;
     bool stop_before;
     int last_move_needed;
+    double wait_before_s;
 };
 
 // Where a move's window comes from: its own piece, or (no piece) the start of piece `piece`.
@@ -67,21 +69,40 @@ double feed_of(const ProgrammedMove& m, const PlannerConfig& cfg, const std::str
 
 std::vector<KeptMove> kept_moves(const Program& program, const PlannerConfig& cfg) {
     std::vector<KeptMove> kept;
+    std::size_t waits_from = 0;
     for (std::size_t i = 0; i < program.moves.size(); ++i) {
         const ProgrammedMove& m = program.moves[i];
         const double feed = feed_of(m, cfg, program.filename);
         const Curve c = Curve::from_segment(m.path);
-        if (c.length_mm() >= kMinPieceMm) kept.push_back(KeptMove{static_cast<int>(i), c, feed});
+        if (c.length_mm() >= kMinPieceMm) {
+            kept.push_back(KeptMove{static_cast<int>(i), c, feed, program.wait_s_between(waits_from, i + 1)});
+            waits_from = i + 1;
+        }
     }
     return kept;
 }
 
-Join join(const Curve& a, const Curve& b, const PlannerConfig& cfg) {
-    if (cfg.mode == BlendMode::ExactStop) return Join{true, std::nullopt};
+// The path control in force at the end of a programmed move: the program's G61/G61.1/G64 when it has one,
+// the scenario's planner.mode and path_tolerance_mm otherwise. G61.1 (exact path) blends nothing but, unlike
+// G61, crosses tangent joins without stopping; G64 without P (or P0) keeps the scenario's tolerance.
+std::pair<BlendMode, double> path_control(const ProgrammedMove& m, const PlannerConfig& cfg) {
+    if (!m.path_control) return {cfg.mode, cfg.path_tolerance_mm};
+    switch (m.path_control->mode) {
+        case PathMode::ExactStop: return {BlendMode::ExactStop, 0.0};
+        case PathMode::ExactPath: return {BlendMode::Continuous, 0.0};
+        case PathMode::Blend: break;
+    }
+    const double p = m.path_control->tolerance_mm.value_or(0.0);
+    return {BlendMode::Continuous, p > 0.0 ? p : cfg.path_tolerance_mm};
+}
+
+Join join(const Curve& a, const Curve& b, std::pair<BlendMode, double> control) {
+    const auto [mode, tolerance_mm] = control;
+    if (mode == BlendMode::ExactStop) return Join{true, std::nullopt};
     const geom::Vec2 u1 = a.unit_tangent_at(a.length_mm());
     const geom::Vec2 u2 = b.unit_tangent_at(0.0);
     if (std::fabs(cross(u1, u2)) <= kSameDirection) return Join{geom::dot(u1, u2) < 0.0, std::nullopt};
-    std::optional<Curve> blend = corner_blend(a, b, cfg.path_tolerance_mm);
+    std::optional<Curve> blend = corner_blend(a, b, tolerance_mm);
     return Join{!blend, blend};
 }
 
@@ -103,12 +124,13 @@ Layout lay_out(const std::vector<KeptMove>& kept, const std::vector<Join>& joins
         out.windows[move] = {out.drafts.size(), has_piece};
         next_unassigned = move + 1;
         if (has_piece) {
-            out.drafts.push_back(Draft{c, kept[j].move, kept[j].feed_mm_per_s, stop_pending, kept[j].move});
+            out.drafts.push_back(
+                Draft{c, kept[j].move, kept[j].feed_mm_per_s, stop_pending, kept[j].move, kept[j].wait_before_s});
             stop_pending = false;
         }
         if (after) {
             const double feed = std::min(kept[j].feed_mm_per_s, kept[j + 1].feed_mm_per_s);
-            out.drafts.push_back(Draft{*after, -1, feed, stop_pending, kept[j + 1].move});
+            out.drafts.push_back(Draft{*after, -1, feed, stop_pending, kept[j + 1].move, 0.0});
             stop_pending = false;
         } else {
             stop_pending = stop_pending || j + 1 == kept.size() || joins[j].stop;
@@ -134,6 +156,7 @@ std::vector<PlannedPiece> schedule(const std::vector<Draft>& drafts, const Plann
     for (std::size_t k = 0; k < drafts.size(); ++k) {
         const SpeedProfile sp =
             make_speed_profile(cfg.profile, look[k].length_mm, speeds[k], speeds[k + 1], look[k].limits);
+        t += drafts[k].wait_before_s;
         pieces.push_back(PlannedPiece{drafts[k].path, drafts[k].move, t, t + sp.duration_s(), sp});
         t = pieces.back().t_end_s;
     }
@@ -146,7 +169,13 @@ Trajectory plan(const Program& program, const PlannerConfig& cfg) {
     validate(cfg, "planner");
     const std::vector<KeptMove> kept = kept_moves(program, cfg);
     std::vector<Join> joins;
-    for (std::size_t j = 0; j + 1 < kept.size(); ++j) joins.push_back(join(kept[j].curve, kept[j + 1].curve, cfg));
+    for (std::size_t j = 0; j + 1 < kept.size(); ++j) {
+        // A host wait between two moves is a rest: the tool stops, waits, starts again.
+        joins.push_back(kept[j + 1].wait_before_s > 0.0
+                            ? Join{true, std::nullopt}
+                            : join(kept[j].curve, kept[j + 1].curve,
+                                   path_control(program.moves[static_cast<std::size_t>(kept[j].move)], cfg)));
+    }
     const Layout layout = lay_out(kept, joins, program.moves.size());
     std::vector<PlannedPiece> pieces = schedule(layout.drafts, cfg);
 
@@ -162,7 +191,9 @@ Trajectory plan(const Program& program, const PlannerConfig& cfg) {
     }
     geom::Vec2 rest{};
     if (!program.moves.empty()) rest = kept.empty() ? program.moves.front().path.start : kept.front().curve.start;
-    return Trajectory(std::move(pieces), std::move(windows), rest);
+    const std::size_t after_last = kept.empty() ? 0 : static_cast<std::size_t>(kept.back().move) + 1;
+    const double hold_s = program.wait_s_between(kept.empty() ? 0 : after_last, program.moves.size() + 1);
+    return Trajectory(std::move(pieces), std::move(windows), rest, hold_s);
 }
 
 }  // namespace cnc::host::planner

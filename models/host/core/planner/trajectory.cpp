@@ -6,12 +6,15 @@
 namespace cnc::host::planner {
 
 Trajectory::Trajectory(std::vector<PlannedPiece> pieces, std::vector<std::pair<double, double>> move_windows,
-                       geom::Vec2 rest_mm)
-    : m_pieces(std::move(pieces)), m_move_windows(std::move(move_windows)), m_rest_mm(rest_mm) {}
+                       geom::Vec2 rest_mm, double end_hold_s)
+    : m_pieces(std::move(pieces)),
+      m_move_windows(std::move(move_windows)),
+      m_rest_mm(rest_mm),
+      m_end_hold_s(end_hold_s) {}
 
 Sample Trajectory::at(double t_s) const {
     const double t = std::clamp(t_s, 0.0, duration_s());
-    if (m_pieces.empty()) return Sample{t, m_rest_mm, {}, {}, 0.0, -1};
+    if (m_pieces.empty() || t < m_pieces.front().t_begin_s) return Sample{t, m_rest_mm, {}, {}, 0.0, -1};
     auto it = std::upper_bound(m_pieces.begin(), m_pieces.end(), t,
                                [](double time, const PlannedPiece& p) { return time < p.t_begin_s; });
     const PlannedPiece& piece = *std::prev(it);

@@ -30,11 +30,14 @@ struct PlannedPiece {
 class Trajectory {
 public:
     // `move_windows` has one [t_begin, t_end] per programmed move; `rest_mm` is where the tool stands when
-    // there are no pieces.
+    // there are no pieces; `end_hold_s` the host's waits after the last piece (the tool rests). Pieces may
+    // leave gaps between them (host waits): the tool rests at the end of the piece before.
     Trajectory(std::vector<PlannedPiece> pieces, std::vector<std::pair<double, double>> move_windows,
-               geom::Vec2 rest_mm);
+               geom::Vec2 rest_mm, double end_hold_s = 0.0);
 
-    [[nodiscard]] double duration_s() const { return m_pieces.empty() ? 0.0 : m_pieces.back().t_end_s; }
+    [[nodiscard]] double duration_s() const {
+        return (m_pieces.empty() ? 0.0 : m_pieces.back().t_end_s) + m_end_hold_s;
+    }
     // State at t, clamped to [0, duration]; O(log pieces). At a boundary time the later piece is used.
     [[nodiscard]] Sample at(double t_s) const;
     [[nodiscard]] const std::vector<PlannedPiece>& pieces() const { return m_pieces; }
@@ -46,6 +49,7 @@ private:
     std::vector<PlannedPiece> m_pieces;
     std::vector<std::pair<double, double>> m_move_windows;
     geom::Vec2 m_rest_mm;
+    double m_end_hold_s;
 };
 
 }  // namespace cnc::host::planner

@@ -48,9 +48,10 @@ void Sender::run() {
 
     for (std::size_t i = 0; i < m_motion.size(); ++i) {
         const int segment = static_cast<int>(i) + 1;
-        if (i < m_waits.before_s.size()) wait_ps(s_to_ps(m_waits.before_s[i]));
+        const TimePs job_wait_ps = i < m_waits.before_s.size() ? s_to_ps(m_waits.before_s[i]) : 0;
+        wait_ps(job_wait_ps);
         wait_ps(m_cfg.packet_processing_ps);
-        SentPacket sent{segment, now_ps(), -1, false};
+        SentPacket sent{segment, now_ps(), job_wait_ps, -1, false};
         write(m_motion[i].data(), m_motion[i].size());
         const TimePs deadline = now_ps() + m_cfg.ack_timeout_ps;
         if (wait_for_ack(segment, deadline)) {

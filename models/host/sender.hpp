@@ -28,6 +28,7 @@ struct SenderConfig {
 struct SentPacket {
     int segment = 0;             // 1-based, as the script counts
     TimePs t_write_ps = 0;       // the script calls ser.write()
+    TimePs wait_before_ps = 0;   // the job's host wait slept before it (dwell, pause, Z move)
     TimePs t_ack_ps = -1;        // the ACK was read (-1: never)
     bool timed_out = false;
 };

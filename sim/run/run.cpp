@@ -4,6 +4,7 @@
 
 #include "metrics/metrics.hpp"
 #include "run/job.hpp"
+#include "run/program_report.hpp"
 #include "systems/atmega/atmega_system.hpp"
 #include "systems/fpga_uart_system.hpp"
 #include "systems/spi_fpga/spi_fpga_system.hpp"
@@ -33,6 +34,11 @@ RunOutcome run_scenario(const Scenario& s) {
     } else {
         out.arch = run_fpga_uart(s, job);
     }
+    if (job.program) {
+        // The seed 000 FPGA and the seed 003 head switch by motion code; the spi-fpga frame has no laser yet.
+        const LaserSwitching switching = LaserSwitching::ByMotionKind;
+        for (std::string& w : laser_warnings(*job.program, switching)) out.arch.warnings.push_back(std::move(w));
+    }
     out.metrics = metrics::compute_metrics(out.arch.input);
     const ArchRun& arch = out.arch;
     const metrics::RunMetrics& m = out.metrics;
@@ -43,12 +49,14 @@ RunOutcome run_scenario(const Scenario& s) {
                   {"metrics", metrics::to_json(m)},
                   {s.architecture, arch.details},
                   {"warnings", arch.warnings},
+                  {"gcode", job.program ? program_json(*job.program) : nlohmann::json(nullptr)},
                   {"ok", arch.ok}};
     if (!arch.ok) out.report["failure"] = arch.failure;
 
     std::ostringstream text;
     text << "cncsim run: " << s.name << " (" << s.architecture << "), job " << s.job_path << "\n\n"
          << metrics::summary_table(m) << '\n'
+         << (job.program ? program_text(*job.program) : std::string()) << '\n'
          << arch.details_text;
     for (const std::string& w : arch.warnings) text << "warning: " << w << '\n';
     out.summary = text.str();

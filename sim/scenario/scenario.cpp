@@ -60,7 +60,7 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.file = file;
     s.name = r.get_string("scenario.name", fs::path(file).stem().string(), "name shown in reports");
     s.architecture = r.get_choice("scenario.architecture", "fpga-uart", {"fpga-uart", "atmega", "spi-fpga"},
-                                  "controller architecture (DESIGN.md §1)");
+                                  "controller architecture (docs/architectures.md)");
     const std::string job = r.get_string("scenario.job", "",
                                          "job file, relative to the scenario: G-code, or a seed 000 steps file");
     const std::string format = r.get_choice("scenario.job_format", "auto", {"auto", "gcode", "steps"},
@@ -68,6 +68,12 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.seed = static_cast<std::uint64_t>(r.get_int("scenario.seed", 1, 0, INT64_MAX, "seed of every random source"));
     s.max_sim_s = r.get_float("scenario.max_sim_s", s.max_sim_s, 0.001, 1e6,
                               "simulated-time limit, s: a run that needs longer fails");
+    s.interpreter.policy =
+        r.get_choice("scenario.gcode_policy", "lenient", {"lenient", "strict"},
+                     "lenient: run what the machine can do and list the words it ignores; strict: every word the "
+                     "machine does not execute is an error (docs/gcode.md)") == "strict"
+            ? host::GcodePolicy::Strict
+            : host::GcodePolicy::Lenient;
     s.interpreter.start_mm.x_mm = r.get_float("scenario.start_x_mm", 0.0, -1e6, 1e6, "tool X at job start, mm");
     s.interpreter.start_mm.y_mm = r.get_float("scenario.start_y_mm", 0.0, -1e6, 1e6, "tool Y at job start, mm");
 
@@ -122,6 +128,9 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.interpreter.rapid_feed_mm_per_min = r.get_float(
         "host.rapid_feed_mm_per_min", s.interpreter.rapid_feed_mm_per_min, 1.0, 65535.0,
         "feed of G0 moves, mm/min (seed 000 test log: 1200)");
+    s.interpreter.operator_pause_s = r.get_float(
+        "host.operator_pause_s", s.interpreter.operator_pause_s, 0.0, 1e6,
+        "time an operator takes to resume after M0/M1/M60 (the job pauses that long), s");
     s.interpreter.feed_unit = r.get_choice("host.feed_unit", "mm/min", {"mm/min", "mm/s"},
                                            "unit of F in the job (seed 003 used mm/s)") == "mm/min"
                                   ? host::FeedUnit::MmPerMinute

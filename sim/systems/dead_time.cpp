@@ -48,7 +48,8 @@ struct Part {
 };
 
 constexpr Part kParts[] = {{"step_tail", &GapBreakdown::step_tail_ps},     {"ack_wire", &GapBreakdown::ack_wire_ps},
-                           {"usb_in", &GapBreakdown::usb_in_ps},           {"host", &GapBreakdown::host_ps},
+                           {"usb_in", &GapBreakdown::usb_in_ps},           {"job_wait", &GapBreakdown::job_wait_ps},
+                           {"host", &GapBreakdown::host_ps},
                            {"usb_out", &GapBreakdown::usb_out_ps},         {"packet_wire", &GapBreakdown::packet_wire_ps},
                            {"fpga_setup", &GapBreakdown::fpga_setup_ps},   {"total", &GapBreakdown::total_ps}};
 
@@ -78,7 +79,8 @@ DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::v
         g.step_tail_ps = done.t_busy_fall_ps - last_a;
         g.ack_wire_ps = ack->t_stop_end_ps - done.t_busy_fall_ps;
         g.usb_in_ps = ack->t_host_visible_ps - ack->t_stop_end_ps;
-        g.host_ps = sent[i + 1].t_write_ps - ack->t_host_visible_ps;
+        g.job_wait_ps = sent[i + 1].wait_before_ps;
+        g.host_ps = sent[i + 1].t_write_ps - ack->t_host_visible_ps - g.job_wait_ps;
         g.usb_out_ps = tx[next_first].t_start_bit_ps - sent[i + 1].t_write_ps;
         g.packet_wire_ps = next.t_pkt_valid_ps - tx[next_first].t_start_bit_ps;
         g.fpga_setup_ps = first_b - next.t_pkt_valid_ps;

@@ -18,7 +18,8 @@ struct GapBreakdown {
     TimePs step_tail_ps = 0;   // last STEP rise -> busy falls (rest of the last period + DONE)
     TimePs ack_wire_ps = 0;    // busy falls -> ACK stop bit ends at the CP2102 (tx_start + 10 bits)
     TimePs usb_in_ps = 0;      // ACK received -> the host sees it (USB frame + driver latency)
-    TimePs host_ps = 0;        // the host sees the ACK -> calls write() for the next packet (processing)
+    TimePs job_wait_ps = 0;    // the job's own waits slept by the host: G4 dwell, M0 pause, Z moves
+    TimePs host_ps = 0;        // the rest until the host calls write() for the next packet (processing)
     TimePs usb_out_ps = 0;     // write() -> the packet reaches the CP2102 (OS latency + USB frame)
     TimePs packet_wire_ps = 0; // first start bit -> pkt_valid (11 frames; uart_rx takes the stop bit mid-bit)
     TimePs fpga_setup_ps = 0;  // pkt_valid -> first STEP (SETUP, DIR settle: 203 clocks)

@@ -469,7 +469,7 @@ const char* to_string(WaitCause cause) {
     switch (cause) {
         case WaitCause::Dwell: return "dwell";
         case WaitCause::OperatorPause: return "operator_pause";
-        case WaitCause::OtherAxes: return "z_axis";
+        case WaitCause::OtherAxes: return "z_moves";
     }
     return "?";
 }

@@ -1,0 +1,26 @@
+// What the G-code job asked for beyond the XY moves, for the report: the words this machine ignored (with their
+// lines), the host waits (dwells, operator pauses, Z moves timed as host dead time), and where the laser the
+// architecture switches differs from the job's intent.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "host/core/gcode.hpp"
+
+namespace cnc::sim {
+
+// How an architecture's hardware switches the laser.
+enum class LaserSwitching {
+    ByMotionKind,  // on in every cutting move, off in rapids, whatever M3/M5/S say (seed 000 FPGA, seed 003 head)
+    FollowsJob,    // on when the job's M3/M4 and S say so, off in rapids (the spi-fpga frame's laser bit)
+};
+
+nlohmann::json program_json(const host::Program& program);
+std::string program_text(const host::Program& program);
+
+// One warning per kind of difference, with its count and first lines.
+std::vector<std::string> laser_warnings(const host::Program& program, LaserSwitching switching);
+
+}  // namespace cnc::sim

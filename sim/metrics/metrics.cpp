@@ -42,7 +42,7 @@ MoveMetrics move_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t m
     mm.t_first_edge_ps = idx.move_first_edge_ps[m];
     mm.t_last_edge_ps = idx.move_last_edge_ps[m];
     for (std::size_t a = 0; a < idx.axes.size(); ++a) {
-        mm.steps_commanded.push_back(a < 2 ? spec.steps[a] : 0);
+        mm.steps_commanded.push_back(a < spec.steps.size() ? spec.steps[a] : 0);
         std::int64_t emitted = 0;
         const EdgeRange r = idx.by_move[a][m];
         for (std::size_t k = r.begin; k < r.end; ++k) emitted += idx.axes[a].rising_sign[k];

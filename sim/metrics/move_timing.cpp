@@ -17,7 +17,7 @@ std::optional<double> motion_time_s(const MoveSpec& move, const EdgeIndex& idx, 
         if (n >= 2) {
             const TimePs span = idx.axes[a].rising[r.end - 1] - idx.axes[a].rising[r.begin];
             keep_max(longest, ps_to_s(span) * static_cast<double>(n) / static_cast<double>(n - 1));
-        } else if (n == 1 && a < 2 && move.rate_steps_per_s[a] > 0.0) {
+        } else if (n == 1 && a < move.rate_steps_per_s.size() && move.rate_steps_per_s[a] > 0.0) {
             keep_max(longest, 1.0 / move.rate_steps_per_s[a]);
         }
     }

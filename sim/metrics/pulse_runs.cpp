@@ -43,7 +43,7 @@ PulseRun measure(const RunInput& in, const AxisEdges& edges, std::size_t axis, E
 }
 
 std::optional<double> move_rate(const RunInput& in, std::size_t axis, std::optional<std::size_t> move) {
-    if (!move || axis >= 2) return std::nullopt;
+    if (!move || axis >= in.moves[*move].rate_steps_per_s.size()) return std::nullopt;
     return in.moves[*move].rate_steps_per_s[axis];
 }
 

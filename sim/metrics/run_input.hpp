@@ -26,6 +26,9 @@ struct AxisTrace {
 
 using ToolSample = cnc::ToolSample;
 
+// The programmed path and a planner's commanded trajectory are in the XY plane: axes 0 and 1 of RunInput::axes.
+inline constexpr std::size_t kPathAxes = 2;
+
 // One executed motion command (packet, chord or planner segment).
 struct MoveSpec {
     int index = 0;
@@ -34,8 +37,9 @@ struct MoveSpec {
     geom::Vec2 from_mm, to_mm;    // this move's own commanded end points (chord ends, step-quantised)
     double feed_mm_per_min = 0.0; // programmed path feed F
     bool rapid = false;           // G0
-    std::array<std::int64_t, 2> steps{};       // commanded signed microsteps per axis (x, y)
-    std::array<double, 2> rate_steps_per_s{};  // commanded per-axis step rate (what the programmed F implies)
+    // Per axis, in the order of RunInput::axes (an axis with no entry is commanded to stand still):
+    std::vector<std::int64_t> steps;       // commanded signed microsteps
+    std::vector<double> rate_steps_per_s;  // commanded step rate (what the programmed F implies)
     TimePs t_begin_ps = 0;        // execution window as the controller reports it (e.g. busy)
     TimePs t_end_ps = 0;
 };

@@ -16,7 +16,7 @@ SyncResult sync_to_trajectory(const RunInput& in, const EdgeIndex& idx) {
     out.axis_max_abs_ns.assign(n_axes, std::nullopt);
     out.move_axis_max_abs_ns.assign(in.moves.size(), std::vector<std::optional<double>>(n_axes));
     out.axis_unmatched_edges.assign(n_axes, std::nullopt);
-    for (std::size_t a = 0; a < n_axes && a < 2; ++a) {
+    for (std::size_t a = 0; a < n_axes && a < kPathAxes; ++a) {
         const double steps_per_mm = in.axes[a].steps_per_mm;
         if (steps_per_mm <= 0.0) continue;
         std::size_t& unmatched = out.axis_unmatched_edges[a].emplace(0);
@@ -58,7 +58,7 @@ SyncResult compute_sync(const RunInput& in, const EdgeIndex& idx) {
     for (std::size_t m = 0; m < in.moves.size(); ++m) {
         if (!idx.move_first_edge_ps[m]) continue;
         const TimePs t0 = *idx.move_first_edge_ps[m];
-        for (std::size_t a = 0; a < n_axes && a < 2; ++a) {
+        for (std::size_t a = 0; a < n_axes && a < in.moves[m].rate_steps_per_s.size(); ++a) {
             const double rate = in.moves[m].rate_steps_per_s[a];
             const EdgeRange r = idx.by_move[a][m];
             if (rate <= 0.0 || r.empty()) continue;

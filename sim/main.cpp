@@ -25,7 +25,7 @@ constexpr int kExitBadInput = 2;
 void write_json(const std::string& path, const nlohmann::json& j) {
     std::ofstream out(path);
     if (!out) throw cnc::BadInput(path, "cannot write the report file");
-    out << j.dump(2) << '\n';
+    out << cnc::metrics::report_text(j);
 }
 
 int cmd_run(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& vcd,

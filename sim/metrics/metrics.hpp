@@ -75,5 +75,7 @@ struct RunMetrics {
 [[nodiscard]] RunMetrics compute_metrics(const RunInput& in);
 [[nodiscard]] nlohmann::json to_json(const RunMetrics& m);
 [[nodiscard]] std::string summary_table(const RunMetrics& m);
+// The JSON report as the file holds it: indented, with each array of plain values on one line.
+[[nodiscard]] std::string report_text(const nlohmann::json& report);
 
 }  // namespace cnc::metrics

@@ -40,7 +40,7 @@ RunOutcome run_scenario(const Scenario& s) {
     out.ok = arch.ok;
     out.failure = arch.failure;
     out.report = {{"scenario", scenario_json(s)},
-                  {"metrics", metrics::to_json(m)},
+                  {"metrics", metrics::to_json(m, s.detail)},
                   {s.architecture, arch.details},
                   {"warnings", arch.warnings},
                   {"ok", arch.ok}};

@@ -108,6 +108,13 @@ nlohmann::json packet_json(const fpga::PacketRecord& r) {
             {"t_ack_start_s", r.t_ack_start_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(r.t_ack_start_ps))}};
 }
 
+nlohmann::json sent_json(const host::SentPacket& p) {
+    return {{"segment", p.segment},
+            {"t_write_s", ps_to_s(p.t_write_ps)},
+            {"t_ack_s", p.t_ack_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(p.t_ack_ps))},
+            {"timed_out", p.timed_out}};
+}
+
 }  // namespace
 
 ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
@@ -177,17 +184,8 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     fpga_warnings(fpga, records, s, run.warnings);
     const fpga::FpgaStats st = fpga.stats();
     const uart::Cp2102Baud& baud = cp2102.baud();
-    nlohmann::json pk = nlohmann::json::array();
-    for (const fpga::PacketRecord& r : records) pk.push_back(packet_json(r));
     nlohmann::json msgs = nlohmann::json::array();
     for (const host::SenderMessage& m : sender.messages()) msgs.push_back({{"t_s", ps_to_s(m.t_ps)}, {"text", m.text}});
-    nlohmann::json sent = nlohmann::json::array();
-    for (const host::SentPacket& p : sender.packets()) {
-        sent.push_back({{"segment", p.segment},
-                        {"t_write_s", ps_to_s(p.t_write_ps)},
-                        {"t_ack_s", p.t_ack_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(p.t_ack_ps))},
-                        {"timed_out", p.timed_out}});
-    }
     run.details = {
         {"segments", segments.size()},
         {"link",
@@ -205,16 +203,20 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
           {"aborted", sender.aborted()},
           {"finished", sender.finished()},
           {"t_end_s", ps_to_s(sender.t_end_ps())},
-          {"messages", msgs},
-          {"packets", sent}}},
+          {"messages", msgs}}},
         {"fpga",
          {{"bytes_received", st.bytes_received},
           {"framing_errors", st.framing_errors},
           {"watchdog_resets", st.watchdog_resets},
           {"acks_sent", st.acks_sent},
-          {"acks_dropped", st.acks_dropped},
-          {"packets", pk}}},
-        {"dead_time", to_json(dead)}};
+          {"acks_dropped", st.acks_dropped}}},
+        {"dead_time", to_json(dead, s.detail)}};
+    if (s.detail) {  // one record per packet: they grow with the job
+        nlohmann::json& sent = run.details["sender"]["packets"] = nlohmann::json::array();
+        for (const host::SentPacket& p : sender.packets()) sent.push_back(sent_json(p));
+        nlohmann::json& received = run.details["fpga"]["packets"] = nlohmann::json::array();
+        for (const fpga::PacketRecord& r : records) received.push_back(packet_json(r));
+    }
 
     std::ostringstream text;
     text << "fpga-uart link and host\n"

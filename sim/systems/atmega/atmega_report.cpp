@@ -74,6 +74,22 @@ nlohmann::json motion_json(const AtmegaFacts& f, s3::CommandId id, const s3::Mot
     return j;
 }
 
+nlohmann::json commands_json(const AtmegaFacts& f) {
+    std::map<std::pair<std::size_t, std::size_t>, const MotionWindow*> window_of;
+    for (const MotionWindow& w : f.windows) window_of[{w.command, w.motion}] = &w;
+    nlohmann::json commands = nlohmann::json::array();
+    for (std::size_t c = 0; c < f.plan.commands.size(); ++c) {
+        const s3::Command& cmd = f.plan.commands[c];
+        nlohmann::json motions = nlohmann::json::array();
+        for (std::size_t m = 0; m < cmd.motions.size(); ++m) {
+            const auto w = window_of.find({c, m});
+            motions.push_back(motion_json(f, cmd.id, cmd.motions[m], w == window_of.end() ? nullptr : w->second));
+        }
+        commands.push_back({{"id", id_name(cmd.id)}, {"bytes", s3::command_bytes(cmd).size()}, {"motions", motions}});
+    }
+    return commands;
+}
+
 }  // namespace
 
 ChordGaps chord_gaps(const AtmegaFacts& f) {
@@ -118,24 +134,11 @@ std::vector<std::string> link_warnings(const AtmegaFacts& f) {
     return w;
 }
 
-nlohmann::json details_json(const AtmegaFacts& f) {
+nlohmann::json details_json(const AtmegaFacts& f, bool detail) {
     const uart::Cp2102Baud& baud = f.cp2102.baud();
     const avr::AvrCoreStats st = f.mcu.stats();
     const ChordGaps gaps = chord_gaps(f);
-    std::map<std::pair<std::size_t, std::size_t>, const MotionWindow*> window_of;
-    for (const MotionWindow& w : f.windows) window_of[{w.command, w.motion}] = &w;
-
-    nlohmann::json commands = nlohmann::json::array();
-    for (std::size_t c = 0; c < f.plan.commands.size(); ++c) {
-        const s3::Command& cmd = f.plan.commands[c];
-        nlohmann::json motions = nlohmann::json::array();
-        for (std::size_t m = 0; m < cmd.motions.size(); ++m) {
-            const auto w = window_of.find({c, m});
-            motions.push_back(motion_json(f, cmd.id, cmd.motions[m], w == window_of.end() ? nullptr : w->second));
-        }
-        commands.push_back({{"id", id_name(cmd.id)}, {"bytes", s3::command_bytes(cmd).size()}, {"motions", motions}});
-    }
-    return {{"firmware", f.firmware},
+    nlohmann::json j = {{"firmware", f.firmware},
             {"link",
              {{"requested_baud", baud.requested},
               {"line_baud", baud.actual_bd},
@@ -157,8 +160,9 @@ nlohmann::json details_json(const AtmegaFacts& f) {
             {"chords",
              {{"late", gaps.late},
               {"wait_max_ms", static_cast<double>(gaps.wait_max_ps) / static_cast<double>(kPsPerMs)},
-              {"y_steps_waiting", gaps.y_steps_waiting}}},
-            {"commands", commands}};
+              {"y_steps_waiting", gaps.y_steps_waiting}}}};
+    if (detail) j["commands"] = commands_json(f);  // one record per command and chord: they grow with the job
+    return j;
 }
 
 std::string details_text(const AtmegaFacts& f) {

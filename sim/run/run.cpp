@@ -21,6 +21,20 @@ nlohmann::json scenario_json(const Scenario& s) {
             {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}}};
 }
 
+// One entry per kind (common/warning.hpp); with `detail` also every warning of the kind, as worded one by one.
+nlohmann::json warnings_json(const std::vector<Warning>& warnings, bool detail) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const WarningGroup& g : group_warnings(warnings)) {
+        nlohmann::json j = {{"kind", g.kind}, {"count", g.count}, {"first", g.first}, {"message", g.message}};
+        if (detail) {
+            nlohmann::json& all = j["all"] = nlohmann::json::array();
+            for (const std::size_t i : g.members) all.push_back(to_string(warnings[i]));
+        }
+        out.push_back(std::move(j));
+    }
+    return out;
+}
+
 }  // namespace
 
 RunOutcome run_scenario(const Scenario& s) {
@@ -42,7 +56,7 @@ RunOutcome run_scenario(const Scenario& s) {
     out.report = {{"scenario", scenario_json(s)},
                   {"metrics", metrics::to_json(m, s.detail)},
                   {s.architecture, arch.details},
-                  {"warnings", arch.warnings},
+                  {"warnings", warnings_json(arch.warnings, s.detail)},
                   {"ok", arch.ok}};
     if (!arch.ok) out.report["failure"] = arch.failure;
 
@@ -50,7 +64,7 @@ RunOutcome run_scenario(const Scenario& s) {
     text << "cncsim run: " << s.name << " (" << s.architecture << "), job " << s.job_path << "\n\n"
          << metrics::summary_table(m) << '\n'
          << arch.details_text;
-    for (const std::string& w : arch.warnings) text << "warning: " << w << '\n';
+    for (const WarningGroup& g : group_warnings(arch.warnings)) text << "warning: " << summary_line(g) << '\n';
     out.summary = text.str();
     return out;
 }

@@ -179,7 +179,9 @@ TEST(FpgaUartOverflow, ExactPeriodByDefaultAndAWarning) {
     EXPECT_EQ(p.at("period_cycles"), nlohmann::json({187'500, 8'625'000}));  // 187,500 x 73,600 / 1,600
     EXPECT_TRUE(p.at("period_overflow").get<bool>());
     ASSERT_EQ(out.arch.warnings.size(), 1U);
-    EXPECT_NE(out.arch.warnings[0].find("exceeds 32 bits"), std::string::npos);
+    EXPECT_EQ(out.arch.warnings[0].kind, "period_overflow");
+    EXPECT_EQ(out.arch.warnings[0].where, "segment 1 (line 5)");
+    EXPECT_NE(out.arch.warnings[0].text.find("exceeds 32 bits"), std::string::npos);
     EXPECT_LE(*out.metrics.path.contour_max_um, 6.25);
 }
 
@@ -190,7 +192,7 @@ TEST(FpgaUartOverflow, Wrap32ReproducesTheAppendixRtl) {
     // (13,800,000,000 mod 2^32) / 1,600 = 915,098,112 / 1,600 -> 571,936: Y finishes after 0.9 s of 276 s
     EXPECT_EQ(p.at("period_cycles"), nlohmann::json({187'500, 571'936}));
     EXPECT_GT(*out.metrics.path.contour_max_um, 9'000.0);  // the tool leaves the line by 9 mm
-    EXPECT_NE(out.arch.warnings.at(0).find("used the wrapped period"), std::string::npos);
+    EXPECT_NE(out.arch.warnings.at(0).text.find("used the wrapped period"), std::string::npos);
 }
 
 // Check 7: a 12 s move against send_steps.py's 10 s ACK timeout.

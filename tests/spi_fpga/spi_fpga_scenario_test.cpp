@@ -237,6 +237,7 @@ TEST(SpiFpgaAtNextPulse, FramesDropButTheJobStillEndsOnTheTarget) {
     EXPECT_GT(out.report["spi-fpga"]["fpga"]["fifo_drops"].get<int>(), 100);
     EXPECT_EQ(out.report["spi-fpga"]["fpga"]["fifo_max_level"].get<int>(), 4);
     ASSERT_FALSE(out.arch.warnings.empty());
-    EXPECT_NE(out.arch.warnings.front().find("rate frames dropped by the full FIFO"), std::string::npos);
+    EXPECT_EQ(out.arch.warnings.front().kind, "fifo_drops");
+    EXPECT_NE(out.arch.warnings.front().text.find("rate frames dropped by the full FIFO"), std::string::npos);
     EXPECT_EQ(*out.metrics.path.job_end_um, 0.0);
 }

@@ -113,23 +113,27 @@ ChordGaps chord_gaps(const AtmegaFacts& f) {
     return g;
 }
 
-std::vector<std::string> link_warnings(const AtmegaFacts& f) {
-    std::vector<std::string> w;
+std::vector<Warning> link_warnings(const AtmegaFacts& f) {
+    std::vector<Warning> w;
     const avr::AvrCoreStats st = f.mcu.stats();
     if (st.usart.rx_framing_errors > 0) {
-        w.push_back(std::to_string(st.usart.rx_framing_errors) + " UART framing errors at the MCU");
+        w.push_back({"mcu_framing_errors", "",
+                     std::to_string(st.usart.rx_framing_errors) + " UART framing errors at the MCU"});
     }
     if (f.cp2102.stats().framing_errors > 0) {
-        w.push_back(std::to_string(f.cp2102.stats().framing_errors) + " UART framing errors at the CP2102");
+        w.push_back({"cp2102_framing_errors", "",
+                     std::to_string(f.cp2102.stats().framing_errors) + " UART framing errors at the CP2102"});
     }
     if (f.pc.unexpected_confirms() > 0) {
-        w.push_back(std::to_string(f.pc.unexpected_confirms()) +
-                    " confirm bytes other than 0x06 (CAD2G takes any byte as a confirm)");
+        w.push_back({"unexpected_confirms", "",
+                     std::to_string(f.pc.unexpected_confirms()) +
+                         " confirm bytes other than 0x06 (CAD2G takes any byte as a confirm)"});
     }
     const ChordGaps gaps = chord_gaps(f);
     if (gaps.late > 0) {
-        w.push_back(std::to_string(gaps.late) + " chords started late (their bytes came after the chord before had "
-                    "ended): Y took " + std::to_string(gaps.y_steps_waiting) + " steps meanwhile");
+        w.push_back({"late_chords", "",
+                     std::to_string(gaps.late) + " chords started late (their bytes came after the chord before "
+                     "had ended): Y took " + std::to_string(gaps.y_steps_waiting) + " steps meanwhile"});
     }
     return w;
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "avr/avr_core.hpp"
+#include "common/warning.hpp"
 #include "host/core/seed003/plan.hpp"
 #include "host/pc_program.hpp"
 #include "systems/atmega/motion_windows.hpp"
@@ -35,7 +36,7 @@ struct AtmegaFacts {
 
 [[nodiscard]] ChordGaps chord_gaps(const AtmegaFacts& f);
 // Framing errors at either end, confirm values other than 0x06, chords that started late.
-[[nodiscard]] std::vector<std::string> link_warnings(const AtmegaFacts& f);
+[[nodiscard]] std::vector<Warning> link_warnings(const AtmegaFacts& f);
 [[nodiscard]] nlohmann::json details_json(const AtmegaFacts& f, bool detail);
 [[nodiscard]] std::string details_text(const AtmegaFacts& f);
 

@@ -240,13 +240,19 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
     out.text = text.str();
 
     if (drops > 0) {
-        out.warnings.push_back(std::to_string(drops) +
-                               " rate frames dropped by the full FIFO: with rate_apply = at-next-pulse a generator "
-                               "reads one frame per STEP, so frames queue while an axis steps slower than once per "
-                               "servo period, and the axis runs on stale rates");
+        out.warnings.push_back({"fifo_drops", "",
+                                std::to_string(drops) +
+                                    " rate frames dropped by the full FIFO: with rate_apply = at-next-pulse a "
+                                    "generator reads one frame per STEP, so frames queue while an axis steps slower "
+                                    "than once per servo period, and the axis runs on stale rates"});
     }
-    if (rejected > 0) out.warnings.push_back(std::to_string(rejected) + " SPI frames rejected by the FPGA");
-    if (stretched > 0) out.warnings.push_back(std::to_string(stretched) + " rate words stretched to the minimum period");
+    if (rejected > 0) {
+        out.warnings.push_back({"frames_rejected", "", std::to_string(rejected) + " SPI frames rejected by the FPGA"});
+    }
+    if (stretched > 0) {
+        out.warnings.push_back(
+            {"words_stretched", "", std::to_string(stretched) + " rate words stretched to the minimum period"});
+    }
     return out;
 }
 

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/warning.hpp"
 #include "fpga/spi/spi_fpga_top.hpp"
 #include "host/servo/servo_thread.hpp"
 #include "spi/spi_master.hpp"
@@ -19,7 +20,7 @@ namespace cnc::sim {
 struct SpiFpgaReport {
     nlohmann::json details;
     std::string text;
-    std::vector<std::string> warnings;
+    std::vector<Warning> warnings;
 };
 
 SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::SpiMaster& master,

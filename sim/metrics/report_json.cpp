@@ -5,6 +5,7 @@
 
 #include "common/text_format.hpp"
 #include "metrics/metrics.hpp"
+#include "metrics/worst_moves.hpp"
 
 namespace cnc::metrics {
 
@@ -185,6 +186,28 @@ json moves_json(const RunMetrics& m, bool detail) {
     return cols;
 }
 
+// Each figure's worst moves (worst_moves.hpp): index, G-code line and the figure, rounded as in the moves.
+json worst_json(const RunMetrics& m) {
+    const WorstMoves w = worst_moves(m.moves);
+    const struct {
+        const char* key;
+        const std::vector<RankedMove>& list;
+        double per_unit;
+    } figures[] = {{"contour_max_um", w.contour, kToTheNm},
+                   {"following_max_um", w.following, kToTheNm},
+                   {"feed_error_pct", w.feed, kToPartsPerMillion}};
+    json out = json::object();
+    for (const auto& f : figures) {
+        json list = json::array();
+        for (const RankedMove& r : f.list) {
+            const MoveMetrics& mv = m.moves[r.move];
+            list.push_back({{"move", mv.index}, {"line", mv.line}, {f.key, rounded(r.value, f.per_unit)}});
+        }
+        out[f.key] = std::move(list);
+    }
+    return out;
+}
+
 json job_json(const RunMetrics& m, bool detail) {
     const TimingResult& t = m.timing;
     json j = {{"job_time_s", t.job_time_s},
@@ -239,6 +262,7 @@ nlohmann::json to_json(const RunMetrics& m, bool detail) {
             {"run_split_tolerance", m.with_moves ? json(nullptr) : json(m.run_split_tolerance)},
             {"axes", axes},
             {"moves", moves_json(m, detail)},
+            {"worst_moves", worst_json(m)},
             {"path",
              {{"tool_samples", path.samples},
               {"contour_max_um", opt(path.contour_max_um)},

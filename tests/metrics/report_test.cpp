@@ -58,6 +58,10 @@ TEST(MetricsReport, JsonKeysCarryUnitsAndAbsentFiguresAreNull) {
     EXPECT_TRUE(j["moves"]["contour_max_um"][0].is_null());  // no tool samples
     EXPECT_EQ(j["moves"]["sync_max_ns"]["x"].size(), 1U);
     EXPECT_TRUE(j["job"]["dead_times"].empty());
+    EXPECT_TRUE(j["worst_moves"]["contour_max_um"].empty());
+    ASSERT_EQ(j["worst_moves"]["feed_error_pct"].size(), 1U);
+    EXPECT_EQ(j["worst_moves"]["feed_error_pct"][0]["move"], 0);
+    EXPECT_EQ(j["worst_moves"]["feed_error_pct"][0]["feed_error_pct"], j["moves"]["feed_error_pct"][0]);
     EXPECT_TRUE(j["path"]["contour_max_um"].is_null());
     EXPECT_EQ(j["feed"]["cutting_moves_measured"], 1);
     EXPECT_DOUBLE_EQ(j["job"]["job_time_s"].get<double>(), 0.7);
@@ -105,6 +109,10 @@ TEST(MetricsReport, SummaryTableHasOneSectionPerFamilyWithUnitsInHeads) {
     // Driver rows: axis, rule, limit, min seen, checked, violations.
     EXPECT_NE(s.find("x     step_high      1900.0         2000.0     1600           0\n"), std::string::npos) << s;
     EXPECT_NE(s.find("            1              -0.0470                   0.0470                  0.0470\n"),
+              std::string::npos)
+        << s;    // One move (index 0, line 1) without tool samples: no contour or following figure; its feed error is first.
+    EXPECT_NE(s.find("Worst moves (move index, G-code line)\n"), std::string::npos);
+    EXPECT_NE(s.find("   1                 -     -     -                   -     -     -         -0.0470     0     1\n"),
               std::string::npos)
         << s;
 }

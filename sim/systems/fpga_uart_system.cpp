@@ -76,28 +76,25 @@ std::string segment_place(const std::vector<host::MotionSegment>& segments, std:
 void fpga_warnings(const fpga::Top& top, const std::vector<fpga::PacketRecord>& records,
                    const std::vector<host::MotionSegment>& segments, const Scenario& s,
                    std::vector<Warning>& warnings) {
+    const std::string overflow =
+        std::string("(NUMERATOR/feed) x dominant steps exceeds 32 bits; step_gen as printed in the appendix wraps it") +
+        (s.fpga.period_arithmetic == fpga::PeriodArithmetic::Wrap32
+             ? " (fpga.period_arithmetic = wrap32: this run used the wrapped period)"
+             : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)");
     for (std::size_t k = 0; k < records.size(); ++k) {
         const fpga::PacketRecord& r = records[k];
-        if (r.period_overflow) {
-            warnings.push_back(
-                {"period_overflow", segment_place(segments, k),
-                 std::string("(NUMERATOR/feed) x dominant steps exceeds 32 bits; step_gen as printed in the "
-                             "appendix wraps it") +
-                     (s.fpga.period_arithmetic == fpga::PeriodArithmetic::Wrap32
-                          ? " (fpga.period_arithmetic = wrap32: this run used the wrapped period)"
-                          : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)")});
-        }
+        if (r.period_overflow) warnings.push_back({"period_overflow", segment_place(segments, k), overflow});
         if (!r.accepted) {
             warnings.push_back({"packet_lost", segment_place(segments, k), "arrived while step_gen was busy: lost"});
         }
     }
     for (const fpga::InitRecord& i : top.inits()) {
         if (!i.applied) {
+            const char* why =
+                s.fpga.init_packet_wired ? " (step_gen was busy)" : " (fpga.init_packet_wired = false, as appendix top.v)";
             warnings.push_back({"init_not_applied", "",
                                 "init packet (NUMERATOR " + std::to_string(i.num_x) + "/" + std::to_string(i.num_y) +
-                                    ") did not reach step_gen" +
-                                    (s.fpga.init_packet_wired ? " (step_gen was busy)"
-                                                              : " (fpga.init_packet_wired = false, as appendix top.v)")});
+                                    ") did not reach step_gen" + why});
         }
     }
     const fpga::FpgaStats st = top.stats();

@@ -110,10 +110,12 @@ TEST(MetricsReport, SummaryTableHasOneSectionPerFamilyWithUnitsInHeads) {
     EXPECT_NE(s.find("x     step_high      1900.0         2000.0     1600           0\n"), std::string::npos) << s;
     EXPECT_NE(s.find("            1              -0.0470                   0.0470                  0.0470\n"),
               std::string::npos)
-        << s;    // One move (index 0, line 1) without tool samples: no contour or following figure; its feed error is first.
+        << s;
+    // One move (index 0, line 1) without tool samples: no contour or following figure; its feed error is first.
     EXPECT_NE(s.find("Worst moves (move index, G-code line)\n"), std::string::npos);
-    EXPECT_NE(s.find("   1                 -     -     -                   -     -     -         -0.0470     0     1\n"),
-              std::string::npos)
+    EXPECT_NE(
+        s.find("   1                 -     -     -                   -     -     -         -0.0470     0     1\n"),
+        std::string::npos)
         << s;
 }
 

@@ -80,28 +80,28 @@ json run_json(const PulseRun& r) {
 
 json axis_json(const AxisMetrics& a, const DriverLimits& limits, bool detail) {
     json j = {{"axis", a.name},
-            {"step_signal", a.step_signal},
-            {"dir_signal", a.dir_signal},
-            {"rising_edges", a.rising_edges},
-            {"falling_edges", a.falling_edges},
-            {"dir_changes", a.dir_changes},
-            {"net_steps", a.net_steps},
-            {"travel_mm", opt(a.travel_mm)},
-            {"net_mm", opt(a.net_mm)},
-            {"unattributed_edges", a.unattributed_edges},
-            {"runs_count", a.pulse.runs},
-            {"runs_measured", a.pulse.runs_measured},
-            {"jitter_std_max_ns", opt(a.pulse.jitter_std_max_ns)},
-            {"jitter_pp_max_ns", opt(a.pulse.jitter_pp_max_ns)},
-            {"worst_jitter_run", opt(a.pulse.worst_jitter_run)},
-            {"tie_rms_max_ns", opt(a.pulse.tie_rms_max_ns)},
-            {"tie_max_ns", opt(a.pulse.tie_max_ns)},
-            {"tie_max_period_frac", opt(a.pulse.tie_max_period_frac)},
-            {"worst_tie_run", opt(a.pulse.worst_tie_run)},
-            {"rate_error_worst_pct", opt(a.pulse.rate_error_worst_pct)},
-            {"sync_max_ns", opt(a.sync_max_abs_ns)},
-            {"sync_unmatched_edges", opt(a.sync_unmatched_edges)},
-            {"driver_timing", driver_json(a.driver, limits)}};
+              {"step_signal", a.step_signal},
+              {"dir_signal", a.dir_signal},
+              {"rising_edges", a.rising_edges},
+              {"falling_edges", a.falling_edges},
+              {"dir_changes", a.dir_changes},
+              {"net_steps", a.net_steps},
+              {"travel_mm", opt(a.travel_mm)},
+              {"net_mm", opt(a.net_mm)},
+              {"unattributed_edges", a.unattributed_edges},
+              {"runs_count", a.pulse.runs},
+              {"runs_measured", a.pulse.runs_measured},
+              {"jitter_std_max_ns", opt(a.pulse.jitter_std_max_ns)},
+              {"jitter_pp_max_ns", opt(a.pulse.jitter_pp_max_ns)},
+              {"worst_jitter_run", opt(a.pulse.worst_jitter_run)},
+              {"tie_rms_max_ns", opt(a.pulse.tie_rms_max_ns)},
+              {"tie_max_ns", opt(a.pulse.tie_max_ns)},
+              {"tie_max_period_frac", opt(a.pulse.tie_max_period_frac)},
+              {"worst_tie_run", opt(a.pulse.worst_tie_run)},
+              {"rate_error_worst_pct", opt(a.pulse.rate_error_worst_pct)},
+              {"sync_max_ns", opt(a.sync_max_abs_ns)},
+              {"sync_unmatched_edges", opt(a.sync_unmatched_edges)},
+              {"driver_timing", driver_json(a.driver, limits)}};
     if (detail) {
         json runs = json::array();
         for (const PulseRun& r : a.runs) runs.push_back(run_json(r));
@@ -115,10 +115,10 @@ json rounded_opt(const std::optional<double>& v, double per_unit) {
 }
 
 // Per-unit resolutions of the per-move figures (text_format.hpp rounded()).
-constexpr double kToTheNm = 1e3;     // um
-constexpr double kToThePs = 1e3;     // ns
-constexpr double kToTheNs = 1e9;     // s
-constexpr double kToThousandths = 1e3;   // mm/min
+constexpr double kToTheNm = 1e3;            // um
+constexpr double kToThePs = 1e3;            // ns
+constexpr double kToTheNs = 1e9;            // s
+constexpr double kToThousandths = 1e3;      // mm/min
 constexpr double kToPartsPerMillion = 1e4;  // %
 
 // A per-move field; per-axis fields take the axis too. `detail`: written only with --detail.
@@ -211,13 +211,13 @@ json worst_json(const RunMetrics& m) {
 json job_json(const RunMetrics& m, bool detail) {
     const TimingResult& t = m.timing;
     json j = {{"job_time_s", t.job_time_s},
-            {"motion_time_s", opt(t.motion_time_s)},
-            {"lead_in_ms", opt(t.lead_in_ms)},
-            {"tail_ms", opt(t.tail_ms)},
-            {"dead_gaps", t.gaps.size()},
-            {"dead_total_ms", opt(t.dead_total_ms)},
-            {"dead_mean_ms", opt(t.dead_mean_ms)},
-            {"dead_max_ms", opt(t.dead_max_ms)}};
+              {"motion_time_s", opt(t.motion_time_s)},
+              {"lead_in_ms", opt(t.lead_in_ms)},
+              {"tail_ms", opt(t.tail_ms)},
+              {"dead_gaps", t.gaps.size()},
+              {"dead_total_ms", opt(t.dead_total_ms)},
+              {"dead_mean_ms", opt(t.dead_mean_ms)},
+              {"dead_max_ms", opt(t.dead_max_ms)}};
     if (detail) {
         json gaps = json::array();
         for (const DeadGap& g : t.gaps) {

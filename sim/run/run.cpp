@@ -18,7 +18,8 @@ nlohmann::json scenario_json(const Scenario& s) {
             {"architecture", s.architecture},
             {"job", s.job_path},
             {"seed", s.seed},
-            {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}}};
+            {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}},
+            {"detail", s.detail}};
 }
 
 // One entry per kind (common/warning.hpp); with `detail` also every warning of the kind, as worded one by one.

@@ -25,12 +25,13 @@ constexpr int kExitBadInput = 2;
 void write_json(const std::string& path, const nlohmann::json& j) {
     std::ofstream out(path);
     if (!out) throw cnc::BadInput(path, "cannot write the report file");
-    out << j.dump(2) << '\n';
+    out << cnc::metrics::report_text(j);
 }
 
 int cmd_run(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& vcd,
-            const std::string& report) {
+            const std::string& report, bool detail) {
     cnc::sim::Scenario s = cnc::sim::load_scenario(scenario_path, sets);
+    if (detail) s.detail = true;
     if (!vcd.empty()) s.vcd_path = vcd;
     if (!report.empty()) s.report_path = report;
     const cnc::sim::RunOutcome out = cnc::sim::run_scenario(s);
@@ -96,12 +97,14 @@ int sc_main(int argc, char* argv[]) {
     std::string scenario, vcd, report, vcd_in, step, dir;
     std::vector<std::string> sets;
     double steps_per_mm = 0.0;
+    bool detail = false;
 
     CLI::App* run = app.add_subcommand("run", "run one scenario, print the summary, write the JSON report");
     run->add_option("scenario", scenario, "scenario file (TOML)")->required();
     run->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
     run->add_option("--vcd", vcd, "write a VCD trace to this file");
     run->add_option("--report", report, "write the JSON report to this file");
+    run->add_flag("--detail", detail, "the report also holds the per-period, per-packet and per-run logs");
 
     CLI::App* analyze = app.add_subcommand("analyze", "pulse metrics of any VCD (simulated or captured)");
     analyze->add_option("vcd", vcd_in, "VCD file")->required();
@@ -131,7 +134,7 @@ int sc_main(int argc, char* argv[]) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
     try {
-        if (run->parsed()) return cmd_run(scenario, sets, vcd, report);
+        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail);
         if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report);
         if (analyze->parsed()) return cmd_analyze(vcd_in, step, dir, steps_per_mm, report);
         return cmd_keys();

@@ -1,5 +1,6 @@
 #include "common/text_format.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace cnc {
@@ -10,5 +11,7 @@ std::string format(const char* fmt, double a, double b, double c, double d) {
     std::snprintf(text.data(), text.size() + 1, fmt, a, b, c, d);
     return text;
 }
+
+double rounded(double v, double per_unit) { return std::round(v * per_unit) / per_unit; }
 
 }  // namespace cnc

@@ -73,7 +73,10 @@ struct RunMetrics {
 
 // Throws std::invalid_argument on inconsistent input (edge logs, moves or tool samples out of time order).
 [[nodiscard]] RunMetrics compute_metrics(const RunInput& in);
-[[nodiscard]] nlohmann::json to_json(const RunMetrics& m);
+// `detail` false: without the pulse runs and the dead-time gaps (cncsim run without --detail); analyze writes all.
+[[nodiscard]] nlohmann::json to_json(const RunMetrics& m, bool detail = true);
 [[nodiscard]] std::string summary_table(const RunMetrics& m);
+// The JSON report as the file holds it: indented, with each array of plain values on one line.
+[[nodiscard]] std::string report_text(const nlohmann::json& report);
 
 }  // namespace cnc::metrics

@@ -1,7 +1,11 @@
-// JSON report of a run: every number carries its unit in its key; absent figures are null.
+// JSON report of a run: every number carries its unit in its key; absent figures are null. The default report
+// grows with the moves only; the pulse runs (one per move and axis, or per rate word: per servo period) and the
+// dead-time gaps come with `detail`.
 #include <cstddef>
 
+#include "common/text_format.hpp"
 #include "metrics/metrics.hpp"
+#include "metrics/worst_moves.hpp"
 
 namespace cnc::metrics {
 
@@ -74,75 +78,156 @@ json run_json(const PulseRun& r) {
     return j;
 }
 
-json axis_json(const AxisMetrics& a, const DriverLimits& limits) {
-    json runs = json::array();
-    for (const PulseRun& r : a.runs) runs.push_back(run_json(r));
-    return {{"axis", a.name},
-            {"step_signal", a.step_signal},
-            {"dir_signal", a.dir_signal},
-            {"rising_edges", a.rising_edges},
-            {"falling_edges", a.falling_edges},
-            {"dir_changes", a.dir_changes},
-            {"net_steps", a.net_steps},
-            {"travel_mm", opt(a.travel_mm)},
-            {"net_mm", opt(a.net_mm)},
-            {"unattributed_edges", a.unattributed_edges},
-            {"runs_count", a.pulse.runs},
-            {"runs_measured", a.pulse.runs_measured},
-            {"jitter_std_max_ns", opt(a.pulse.jitter_std_max_ns)},
-            {"jitter_pp_max_ns", opt(a.pulse.jitter_pp_max_ns)},
-            {"worst_jitter_run", opt(a.pulse.worst_jitter_run)},
-            {"tie_rms_max_ns", opt(a.pulse.tie_rms_max_ns)},
-            {"tie_max_ns", opt(a.pulse.tie_max_ns)},
-            {"tie_max_period_frac", opt(a.pulse.tie_max_period_frac)},
-            {"worst_tie_run", opt(a.pulse.worst_tie_run)},
-            {"rate_error_worst_pct", opt(a.pulse.rate_error_worst_pct)},
-            {"sync_max_ns", opt(a.sync_max_abs_ns)},
-            {"sync_unmatched_edges", opt(a.sync_unmatched_edges)},
-            {"driver_timing", driver_json(a.driver, limits)},
-            {"runs", runs}};
-}
-
-json move_json(const MoveMetrics& m) {
-    json sync = json::array();
-    for (const auto& s : m.sync_max_abs_ns) sync.push_back(opt(s));
-    return {{"index", m.index},
-            {"line", m.line},
-            {"rapid", m.rapid},
-            {"feed_mm_per_min", m.feed_mm_per_min},
-            {"steps_commanded", m.steps_commanded},
-            {"steps_emitted", m.steps_emitted},
-            {"t_first_edge_ps", opt(m.t_first_edge_ps)},
-            {"t_last_edge_ps", opt(m.t_last_edge_ps)},
-            {"sync_max_ns", sync},
-            {"motion_time_s", opt(m.timing.motion_time_s)},
-            {"achieved_feed_mm_per_min", opt(m.timing.achieved_feed_mm_per_min)},
-            {"feed_error_pct", opt(m.timing.feed_error_pct)},
-            {"tool_samples", m.path.samples},
-            {"contour_max_um", opt(m.path.contour_max_um)},
-            {"following_max_um", opt(m.path.following_max_um)},
-            {"following_rms_um", opt(m.path.following_rms_um)},
-            {"endpoint_vs_command_um", opt(m.path.endpoint_vs_command_um)},
-            {"endpoint_vs_program_um", opt(m.path.endpoint_vs_program_um)}};
-}
-
-json job_json(const RunMetrics& m) {
-    const TimingResult& t = m.timing;
-    json gaps = json::array();
-    for (const DeadGap& g : t.gaps) {
-        gaps.push_back({{"after_move", m.moves[g.after_move].index},
-                        {"before_move", m.moves[g.before_move].index},
-                        {"dead_ms", ps_to_s(g.dead_ps) * 1e3}});
+json axis_json(const AxisMetrics& a, const DriverLimits& limits, bool detail) {
+    json j = {{"axis", a.name},
+              {"step_signal", a.step_signal},
+              {"dir_signal", a.dir_signal},
+              {"rising_edges", a.rising_edges},
+              {"falling_edges", a.falling_edges},
+              {"dir_changes", a.dir_changes},
+              {"net_steps", a.net_steps},
+              {"travel_mm", opt(a.travel_mm)},
+              {"net_mm", opt(a.net_mm)},
+              {"unattributed_edges", a.unattributed_edges},
+              {"runs_count", a.pulse.runs},
+              {"runs_measured", a.pulse.runs_measured},
+              {"jitter_std_max_ns", opt(a.pulse.jitter_std_max_ns)},
+              {"jitter_pp_max_ns", opt(a.pulse.jitter_pp_max_ns)},
+              {"worst_jitter_run", opt(a.pulse.worst_jitter_run)},
+              {"tie_rms_max_ns", opt(a.pulse.tie_rms_max_ns)},
+              {"tie_max_ns", opt(a.pulse.tie_max_ns)},
+              {"tie_max_period_frac", opt(a.pulse.tie_max_period_frac)},
+              {"worst_tie_run", opt(a.pulse.worst_tie_run)},
+              {"rate_error_worst_pct", opt(a.pulse.rate_error_worst_pct)},
+              {"sync_max_ns", opt(a.sync_max_abs_ns)},
+              {"sync_unmatched_edges", opt(a.sync_unmatched_edges)},
+              {"driver_timing", driver_json(a.driver, limits)}};
+    if (detail) {
+        json runs = json::array();
+        for (const PulseRun& r : a.runs) runs.push_back(run_json(r));
+        j["runs"] = std::move(runs);
     }
-    return {{"job_time_s", t.job_time_s},
-            {"motion_time_s", opt(t.motion_time_s)},
-            {"lead_in_ms", opt(t.lead_in_ms)},
-            {"tail_ms", opt(t.tail_ms)},
-            {"dead_gaps", t.gaps.size()},
-            {"dead_total_ms", opt(t.dead_total_ms)},
-            {"dead_mean_ms", opt(t.dead_mean_ms)},
-            {"dead_max_ms", opt(t.dead_max_ms)},
-            {"dead_times", gaps}};
+    return j;
+}
+
+json rounded_opt(const std::optional<double>& v, double per_unit) {
+    return v ? json(rounded(*v, per_unit)) : json(nullptr);
+}
+
+// Per-unit resolutions of the per-move figures (text_format.hpp rounded()).
+constexpr double kToTheNm = 1e3;            // um
+constexpr double kToThePs = 1e3;            // ns
+constexpr double kToTheNs = 1e9;            // s
+constexpr double kToThousandths = 1e3;      // mm/min
+constexpr double kToPartsPerMillion = 1e4;  // %
+
+// A per-move field; per-axis fields take the axis too. `detail`: written only with --detail.
+struct MoveColumn {
+    const char* key;
+    bool detail;
+    json (*value)(const MoveMetrics&);
+};
+struct AxisColumn {
+    const char* key;
+    bool detail;
+    json (*value)(const MoveMetrics&, std::size_t axis);
+};
+
+// The default keeps what a move is looked up for (where it is in the program and in time, its steps, and the
+// figures the worst-moves lists rank by); --detail adds the rest.
+const MoveColumn kMoveColumns[] = {
+    {"index", false, [](const MoveMetrics& m) { return json(m.index); }},
+    {"line", false, [](const MoveMetrics& m) { return json(m.line); }},
+    {"rapid", false, [](const MoveMetrics& m) { return json(m.rapid); }},
+    {"feed_mm_per_min", false, [](const MoveMetrics& m) { return json(rounded(m.feed_mm_per_min, kToThousandths)); }},
+    {"t_first_edge_ps", false, [](const MoveMetrics& m) { return opt(m.t_first_edge_ps); }},
+    {"t_last_edge_ps", true, [](const MoveMetrics& m) { return opt(m.t_last_edge_ps); }},
+    {"motion_time_s", false, [](const MoveMetrics& m) { return rounded_opt(m.timing.motion_time_s, kToTheNs); }},
+    {"achieved_feed_mm_per_min", true,
+     [](const MoveMetrics& m) { return rounded_opt(m.timing.achieved_feed_mm_per_min, kToThousandths); }},
+    {"feed_error_pct", false,
+     [](const MoveMetrics& m) { return rounded_opt(m.timing.feed_error_pct, kToPartsPerMillion); }},
+    {"tool_samples", true, [](const MoveMetrics& m) { return json(m.path.samples); }},
+    {"contour_max_um", false, [](const MoveMetrics& m) { return rounded_opt(m.path.contour_max_um, kToTheNm); }},
+    {"following_max_um", false, [](const MoveMetrics& m) { return rounded_opt(m.path.following_max_um, kToTheNm); }},
+    {"following_rms_um", true, [](const MoveMetrics& m) { return rounded_opt(m.path.following_rms_um, kToTheNm); }},
+    {"endpoint_vs_command_um", true,
+     [](const MoveMetrics& m) { return rounded_opt(m.path.endpoint_vs_command_um, kToTheNm); }},
+    {"endpoint_vs_program_um", true,
+     [](const MoveMetrics& m) { return rounded_opt(m.path.endpoint_vs_program_um, kToTheNm); }},
+};
+const AxisColumn kAxisColumns[] = {
+    {"steps_commanded", false, [](const MoveMetrics& m, std::size_t a) { return json(m.steps_commanded[a]); }},
+    {"steps_emitted", false, [](const MoveMetrics& m, std::size_t a) { return json(m.steps_emitted[a]); }},
+    {"sync_max_ns", true,
+     [](const MoveMetrics& m, std::size_t a) { return rounded_opt(m.sync_max_abs_ns[a], kToThePs); }},
+};
+
+// The moves as columns, one array per field in move order (per axis: one per axis name), so that a long job's
+// moves are a few lines of the report file (report_text.cpp) instead of one record of 20 keys per move.
+json moves_json(const RunMetrics& m, bool detail) {
+    json cols = json::object();
+    for (const MoveColumn& c : kMoveColumns) {
+        if (c.detail && !detail) continue;
+        json values = json::array();
+        for (const MoveMetrics& mv : m.moves) values.push_back(c.value(mv));
+        cols[c.key] = std::move(values);
+    }
+    for (const AxisColumn& c : kAxisColumns) {
+        if (c.detail && !detail) continue;
+        json per_axis = json::object();
+        for (std::size_t a = 0; a < m.axes.size(); ++a) {
+            json values = json::array();
+            for (const MoveMetrics& mv : m.moves) values.push_back(c.value(mv, a));
+            per_axis[m.axes[a].name] = std::move(values);
+        }
+        cols[c.key] = std::move(per_axis);
+    }
+    return cols;
+}
+
+// Each figure's worst moves (worst_moves.hpp): index, G-code line and the figure, rounded as in the moves.
+json worst_json(const RunMetrics& m) {
+    const WorstMoves w = worst_moves(m.moves);
+    const struct {
+        const char* key;
+        const std::vector<RankedMove>& list;
+        double per_unit;
+    } figures[] = {{"contour_max_um", w.contour, kToTheNm},
+                   {"following_max_um", w.following, kToTheNm},
+                   {"feed_error_pct", w.feed, kToPartsPerMillion}};
+    json out = json::object();
+    for (const auto& f : figures) {
+        json list = json::array();
+        for (const RankedMove& r : f.list) {
+            const MoveMetrics& mv = m.moves[r.move];
+            list.push_back({{"move", mv.index}, {"line", mv.line}, {f.key, rounded(r.value, f.per_unit)}});
+        }
+        out[f.key] = std::move(list);
+    }
+    return out;
+}
+
+json job_json(const RunMetrics& m, bool detail) {
+    const TimingResult& t = m.timing;
+    json j = {{"job_time_s", t.job_time_s},
+              {"motion_time_s", opt(t.motion_time_s)},
+              {"lead_in_ms", opt(t.lead_in_ms)},
+              {"tail_ms", opt(t.tail_ms)},
+              {"dead_gaps", t.gaps.size()},
+              {"dead_total_ms", opt(t.dead_total_ms)},
+              {"dead_mean_ms", opt(t.dead_mean_ms)},
+              {"dead_max_ms", opt(t.dead_max_ms)}};
+    if (detail) {
+        json gaps = json::array();
+        for (const DeadGap& g : t.gaps) {
+            gaps.push_back({{"after_move", m.moves[g.after_move].index},
+                            {"before_move", m.moves[g.before_move].index},
+                            {"dead_ms", ps_to_s(g.dead_ps) * 1e3}});
+        }
+        j["dead_times"] = std::move(gaps);
+    }
+    return j;
 }
 
 json laser_json(const std::optional<LaserResult>& l) {
@@ -157,11 +242,9 @@ json laser_json(const std::optional<LaserResult>& l) {
 
 }  // namespace
 
-nlohmann::json to_json(const RunMetrics& m) {
+nlohmann::json to_json(const RunMetrics& m, bool detail) {
     json axes = json::array();
-    for (const AxisMetrics& a : m.axes) axes.push_back(axis_json(a, m.limits));
-    json moves = json::array();
-    for (const MoveMetrics& mv : m.moves) moves.push_back(move_json(mv));
+    for (const AxisMetrics& a : m.axes) axes.push_back(axis_json(a, m.limits, detail));
     const PulseTotals& p = m.pulse;
     const PathResult& path = m.path;
     const TimingResult& t = m.timing;
@@ -178,7 +261,8 @@ nlohmann::json to_json(const RunMetrics& m) {
               {"driver_violations", p.driver_violations}}},
             {"run_split_tolerance", m.with_moves ? json(nullptr) : json(m.run_split_tolerance)},
             {"axes", axes},
-            {"moves", moves},
+            {"moves", moves_json(m, detail)},
+            {"worst_moves", worst_json(m)},
             {"path",
              {{"tool_samples", path.samples},
               {"contour_max_um", opt(path.contour_max_um)},
@@ -193,7 +277,7 @@ nlohmann::json to_json(const RunMetrics& m) {
               {"feed_error_mean_pct", opt(t.feed_error_mean_pct)},
               {"feed_error_mean_abs_pct", opt(t.feed_error_mean_abs_pct)},
               {"feed_error_max_abs_pct", opt(t.feed_error_max_abs_pct)}}},
-            {"job", job_json(m)},
+            {"job", job_json(m, detail)},
             {"laser", laser_json(m.laser)}};
 }
 

@@ -1,9 +1,11 @@
-// The text summary the CLI prints: totals and worst cases per metric family, per axis where it matters.
-// The per-move and per-run detail is in the JSON report.
+// The text summary the CLI prints: totals and worst cases per metric family, per axis where it matters, and the
+// worst moves. The per-move records are in the JSON report (the per-run ones with --detail).
+#include <algorithm>
 #include <string>
 
 #include "metrics/metrics.hpp"
 #include "metrics/text_table.hpp"
+#include "metrics/worst_moves.hpp"
 
 namespace cnc::metrics {
 
@@ -79,6 +81,31 @@ std::string feed_section(const RunMetrics& m) {
     return t.render("Feed (cutting moves)");
 }
 
+// The worst moves of each figure side by side, one rank per row; "-" where a figure has fewer moves (or none).
+std::string worst_section(const RunMetrics& m) {
+    const WorstMoves w = worst_moves(m.moves);
+    TextTable t({"rank", "contour max [um]", "move", "line", "following max [um]", "move", "line", "feed error [%]",
+                 "move", "line"});
+    const auto add = [&](std::vector<std::string>& row, const std::vector<RankedMove>& list, std::size_t rank,
+                         int decimals) {
+        if (rank >= list.size()) {
+            row.insert(row.end(), {"-", "-", "-"});
+            return;
+        }
+        const MoveMetrics& mv = m.moves[list[rank].move];
+        row.insert(row.end(), {fixed(list[rank].value, decimals), std::to_string(mv.index), std::to_string(mv.line)});
+    };
+    const std::size_t rows = std::max({w.contour.size(), w.following.size(), w.feed.size(), std::size_t{1}});
+    for (std::size_t rank = 0; rank < rows; ++rank) {
+        std::vector<std::string> row = {count(rank + 1)};
+        add(row, w.contour, rank, 3);
+        add(row, w.following, rank, 3);
+        add(row, w.feed, rank, 4);
+        t.add_row(std::move(row));
+    }
+    return t.render("Worst moves (move index, G-code line)");
+}
+
 std::string job_section(const RunMetrics& m) {
     const TimingResult& j = m.timing;
     TextTable t({"job [s]", "motion [s]", "lead-in [ms]", "tail [ms]", "gaps", "dead total [ms]", "dead mean [ms]",
@@ -101,7 +128,7 @@ std::string laser_section(const LaserResult& l) {
 std::string summary_table(const RunMetrics& m) {
     std::string out = edges_section(m) + '\n' + pulse_section(m) + '\n' + driver_section(m);
     if (m.with_moves && m.with_tool) out += '\n' + path_section(m);
-    if (m.with_moves) out += '\n' + feed_section(m);
+    if (m.with_moves) out += '\n' + feed_section(m) + '\n' + worst_section(m);
     out += '\n' + job_section(m);
     if (m.laser) out += '\n' + laser_section(*m.laser);
     return out;

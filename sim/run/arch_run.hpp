@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/warning.hpp"
 #include "metrics/run_input.hpp"
 
 namespace cnc::sim {
@@ -16,7 +17,7 @@ struct ArchRun {
     std::map<std::string, EdgeLog> lines;               // other recorded pins (busy, UART lines), by name
     nlohmann::json details = nlohmann::json::object();  // architecture section of the JSON report
     std::string details_text;                           // the same, for the summary
-    std::vector<std::string> warnings;
+    std::vector<Warning> warnings;  // grouped by kind in the reports (run.cpp)
     bool ok = true;
     std::string failure;
 };

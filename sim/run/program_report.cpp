@@ -25,10 +25,6 @@ std::size_t wait_count(const host::Program& p, host::WaitCause cause) {
     return n;
 }
 
-void add_warning(std::vector<std::string>& out, const std::vector<int>& lines, const std::string& text) {
-    if (!lines.empty()) out.push_back(std::to_string(lines.size()) + " moves, " + lines_text(lines) + ": " + text);
-}
-
 }  // namespace
 
 nlohmann::json program_json(const host::Program& program) {
@@ -72,24 +68,28 @@ std::string program_text(const host::Program& program) {
     return t.str();
 }
 
-std::vector<std::string> laser_warnings(const host::Program& program, LaserSwitching switching) {
-    std::vector<int> burns_unasked, rapids_with_power, dynamic;
+std::vector<Warning> laser_warnings(const host::Program& program, LaserSwitching switching) {
+    std::vector<Warning> out;
     for (const host::ProgrammedMove& m : program.moves) {
+        const std::string where = program.filename + ":" + std::to_string(m.line);
         const bool cutting = m.kind != host::MotionKind::Rapid;
         const bool power_on = m.laser_mode != host::LaserMode::Off && (!m.power_s || *m.power_s > 0.0);
-        if (switching == LaserSwitching::ByMotionKind && cutting && !m.laser_intended()) burns_unasked.push_back(m.line);
-        if (switching == LaserSwitching::ByMotionKind && !cutting && power_on) rapids_with_power.push_back(m.line);
-        if (m.laser_mode == host::LaserMode::Dynamic && cutting) dynamic.push_back(m.line);
+        if (switching == LaserSwitching::ByMotionKind && cutting && !m.laser_intended()) {
+            out.push_back({"laser_on_unasked", where,
+                           "the laser burns where the job asked it off (M5 or S0 during G1/G2/G3): this hardware "
+                           "switches it on in every cutting move"});
+        }
+        if (switching == LaserSwitching::ByMotionKind && !cutting && power_on) {
+            out.push_back({"laser_power_in_rapid", where,
+                           "the job has M3/M4 with power in force during G0: this hardware switches the laser off in "
+                           "rapids (as grbl's laser mode does)"});
+        }
+        if (m.laser_mode == host::LaserMode::Dynamic && cutting) {
+            out.push_back({"laser_m4_on_off", where,
+                           "M4 (power scaled with speed) runs as plain on/off: this architecture's link carries no "
+                           "power value"});
+        }
     }
-    std::vector<std::string> out;
-    add_warning(out, burns_unasked,
-                "the laser burns where the job asked it off (M5 or S0 during G1/G2/G3): this hardware switches it "
-                "on in every cutting move");
-    add_warning(out, rapids_with_power,
-                "the job has M3/M4 with power in force during G0: this hardware switches the laser off in rapids "
-                "(as grbl's laser mode does)");
-    add_warning(out, dynamic,
-                "M4 (power scaled with speed) runs as plain on/off: this architecture's link carries no power value");
     return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/warning.hpp"
 #include "host/core/gcode.hpp"
 
 namespace cnc::sim {
@@ -20,7 +21,7 @@ enum class LaserSwitching {
 nlohmann::json program_json(const host::Program& program);
 std::string program_text(const host::Program& program);
 
-// One warning per kind of difference, with its count and first lines.
-std::vector<std::string> laser_warnings(const host::Program& program, LaserSwitching switching);
+// One warning per move where the laser differs from the job's intent, placed at its G-code line.
+std::vector<Warning> laser_warnings(const host::Program& program, LaserSwitching switching);
 
 }  // namespace cnc::sim

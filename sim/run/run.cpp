@@ -19,7 +19,22 @@ nlohmann::json scenario_json(const Scenario& s) {
             {"architecture", s.architecture},
             {"job", s.job_path},
             {"seed", s.seed},
-            {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}}};
+            {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}},
+            {"detail", s.detail}};
+}
+
+// One entry per kind (common/warning.hpp); with `detail` also every warning of the kind, as worded one by one.
+nlohmann::json warnings_json(const std::vector<Warning>& warnings, bool detail) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const WarningGroup& g : group_warnings(warnings)) {
+        nlohmann::json j = {{"kind", g.kind}, {"count", g.count}, {"first", g.first}, {"message", g.message}};
+        if (detail) {
+            nlohmann::json& all = j["all"] = nlohmann::json::array();
+            for (const std::size_t i : g.members) all.push_back(to_string(warnings[i]));
+        }
+        out.push_back(std::move(j));
+    }
+    return out;
 }
 
 }  // namespace
@@ -37,7 +52,7 @@ RunOutcome run_scenario(const Scenario& s) {
     if (job.program) {
         // The seed 000 FPGA and the seed 003 head switch by motion code; the spi-fpga frame has no laser yet.
         const LaserSwitching switching = LaserSwitching::ByMotionKind;
-        for (std::string& w : laser_warnings(*job.program, switching)) out.arch.warnings.push_back(std::move(w));
+        for (Warning& w : laser_warnings(*job.program, switching)) out.arch.warnings.push_back(std::move(w));
     }
     out.metrics = metrics::compute_metrics(out.arch.input);
     const ArchRun& arch = out.arch;
@@ -46,9 +61,9 @@ RunOutcome run_scenario(const Scenario& s) {
     out.ok = arch.ok;
     out.failure = arch.failure;
     out.report = {{"scenario", scenario_json(s)},
-                  {"metrics", metrics::to_json(m)},
+                  {"metrics", metrics::to_json(m, s.detail)},
                   {s.architecture, arch.details},
-                  {"warnings", arch.warnings},
+                  {"warnings", warnings_json(arch.warnings, s.detail)},
                   {"gcode", job.program ? program_json(*job.program) : nlohmann::json(nullptr)},
                   {"ok", arch.ok}};
     if (!arch.ok) out.report["failure"] = arch.failure;
@@ -58,7 +73,7 @@ RunOutcome run_scenario(const Scenario& s) {
          << metrics::summary_table(m) << '\n'
          << (job.program ? program_text(*job.program) : std::string()) << '\n'
          << arch.details_text;
-    for (const std::string& w : arch.warnings) text << "warning: " << w << '\n';
+    for (const WarningGroup& g : group_warnings(arch.warnings)) text << "warning: " << summary_line(g) << '\n';
     out.summary = text.str();
     return out;
 }

@@ -163,6 +163,10 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
 
     s.vcd_path = r.get_string("trace.vcd", "", "VCD file to write (relative to the working directory); empty: none");
     s.report_path = r.get_string("trace.report", "", "JSON report to write; empty: none");
+    s.detail = r.get_bool("trace.detail", false,
+                          "the JSON report also holds the logs that grow with steps, servo periods and packets "
+                          "(pulse runs, rate and velocity logs, packets, dead-time gaps); false: per-move records "
+                          "and summaries");
 
     if (!job.empty()) {
         s.job_path = (base / job).lexically_normal().string();

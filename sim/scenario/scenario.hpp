@@ -44,6 +44,7 @@ struct Scenario {
 
     std::string vcd_path;       // empty: no VCD
     std::string report_path;    // empty: no JSON file
+    bool detail = false;        // the report also holds the logs that grow with steps, periods and packets
 };
 
 // Reads and validates; throws BadInput naming the file, line and key.

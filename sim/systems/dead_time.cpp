@@ -99,20 +99,23 @@ DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::v
     return d;
 }
 
-nlohmann::json to_json(const DeadTimeBreakdown& d) {
+nlohmann::json to_json(const DeadTimeBreakdown& d, bool detail) {
     nlohmann::json mean = nlohmann::json::object();
     nlohmann::json max = nlohmann::json::object();
     for (const Part& p : kParts) {
         mean[std::string(p.name) + "_ms"] = mean_ms(d.gaps, p.field);
         max[std::string(p.name) + "_ms"] = max_ms(d.gaps, p.field);
     }
+    nlohmann::json j = {{"gaps", d.gaps.size()}, {"mean", mean}, {"max", max}};
+    if (!detail) return j;
     nlohmann::json gaps = nlohmann::json::array();
     for (const GapBreakdown& g : d.gaps) {
         nlohmann::json row = {{"after_move", g.after_move}};
         for (const Part& p : kParts) row[std::string(p.name) + "_us"] = static_cast<double>(g.*p.field) / kPsPerUs;
         gaps.push_back(row);
     }
-    return {{"gaps", d.gaps.size()}, {"mean", mean}, {"max", max}, {"per_gap", gaps}};
+    j["per_gap"] = std::move(gaps);
+    return j;
 }
 
 std::string summary_text(const DeadTimeBreakdown& d) {

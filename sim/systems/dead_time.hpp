@@ -34,7 +34,8 @@ struct DeadTimeBreakdown {
 
 DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::vector<fpga::PacketRecord>& records,
                                       const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102);
-nlohmann::json to_json(const DeadTimeBreakdown& d);
+// `detail`: with every gap's breakdown (per_gap); without, the mean and the max of each part.
+nlohmann::json to_json(const DeadTimeBreakdown& d, bool detail);
 std::string summary_text(const DeadTimeBreakdown& d);
 
 }  // namespace cnc::sim

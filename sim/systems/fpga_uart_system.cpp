@@ -65,34 +65,50 @@ void record_wires(EdgeRecorder& rec, const Wires& w) {
     }
 }
 
+// "segment 17 (line 20)": the packet's number, and its G-code line when the job was G-code.
+std::string segment_place(const std::vector<host::MotionSegment>& segments, std::size_t k) {
+    std::string where = "segment " + std::to_string(k + 1);
+    if (k < segments.size() && segments[k].line > 0) where += " (line " + std::to_string(segments[k].line) + ")";
+    return where;
+}
+
 // FPGA-side warnings: the period product the RTL cannot hold, packets lost while busy, line faults.
-void fpga_warnings(const fpga::Top& top, const std::vector<fpga::PacketRecord>& records, const Scenario& s,
-                   std::vector<std::string>& warnings) {
-    int n = 0;
-    for (const fpga::PacketRecord& r : records) {
-        ++n;
-        if (r.period_overflow) {
-            warnings.push_back(
-                "segment " + std::to_string(n) +
-                ": (NUMERATOR/feed) x dominant steps exceeds 32 bits; step_gen as printed in the appendix wraps it" +
-                (s.fpga.period_arithmetic == fpga::PeriodArithmetic::Wrap32
-                     ? " (fpga.period_arithmetic = wrap32: this run used the wrapped period)"
-                     : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)"));
+void fpga_warnings(const fpga::Top& top, const std::vector<fpga::PacketRecord>& records,
+                   const std::vector<host::MotionSegment>& segments, const Scenario& s,
+                   std::vector<Warning>& warnings) {
+    const std::string overflow =
+        std::string("(NUMERATOR/feed) x dominant steps exceeds 32 bits; step_gen as printed in the appendix wraps it") +
+        (s.fpga.period_arithmetic == fpga::PeriodArithmetic::Wrap32
+             ? " (fpga.period_arithmetic = wrap32: this run used the wrapped period)"
+             : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)");
+    for (std::size_t k = 0; k < records.size(); ++k) {
+        const fpga::PacketRecord& r = records[k];
+        if (r.period_overflow) warnings.push_back({"period_overflow", segment_place(segments, k), overflow});
+        if (!r.accepted) {
+            warnings.push_back({"packet_lost", segment_place(segments, k), "arrived while step_gen was busy: lost"});
         }
-        if (!r.accepted) warnings.push_back("segment " + std::to_string(n) + ": arrived while step_gen was busy: lost");
     }
     for (const fpga::InitRecord& i : top.inits()) {
         if (!i.applied) {
-            warnings.push_back("init packet (NUMERATOR " + std::to_string(i.num_x) + "/" + std::to_string(i.num_y) +
-                               ") did not reach step_gen" +
-                               (s.fpga.init_packet_wired ? " (step_gen was busy)"
-                                                         : " (fpga.init_packet_wired = false, as appendix top.v)"));
+            const char* why =
+                s.fpga.init_packet_wired ? " (step_gen was busy)" : " (fpga.init_packet_wired = false, as appendix top.v)";
+            warnings.push_back({"init_not_applied", "",
+                                "init packet (NUMERATOR " + std::to_string(i.num_x) + "/" + std::to_string(i.num_y) +
+                                    ") did not reach step_gen" + why});
         }
     }
     const fpga::FpgaStats st = top.stats();
-    if (st.framing_errors > 0) warnings.push_back(std::to_string(st.framing_errors) + " UART framing errors at the FPGA");
-    if (st.watchdog_resets > 0) warnings.push_back(std::to_string(st.watchdog_resets) + " packet_decoder watchdog resets");
-    if (st.acks_dropped > 0) warnings.push_back(std::to_string(st.acks_dropped) + " ACKs dropped (uart_tx busy)");
+    if (st.framing_errors > 0) {
+        warnings.push_back(
+            {"fpga_framing_errors", "", std::to_string(st.framing_errors) + " UART framing errors at the FPGA"});
+    }
+    if (st.watchdog_resets > 0) {
+        warnings.push_back(
+            {"watchdog_resets", "", std::to_string(st.watchdog_resets) + " packet_decoder watchdog resets"});
+    }
+    if (st.acks_dropped > 0) {
+        warnings.push_back({"acks_dropped", "", std::to_string(st.acks_dropped) + " ACKs dropped (uart_tx busy)"});
+    }
 }
 
 nlohmann::json packet_json(const fpga::PacketRecord& r) {
@@ -106,6 +122,13 @@ nlohmann::json packet_json(const fpga::PacketRecord& r) {
             {"t_run_start_s", ps_to_s(r.t_run_start_ps)},
             {"t_busy_fall_s", ps_to_s(r.t_busy_fall_ps)},
             {"t_ack_start_s", r.t_ack_start_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(r.t_ack_start_ps))}};
+}
+
+nlohmann::json sent_json(const host::SentPacket& p) {
+    return {{"segment", p.segment},
+            {"t_write_s", ps_to_s(p.t_write_ps)},
+            {"t_ack_s", p.t_ack_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(p.t_ack_ps))},
+            {"timed_out", p.timed_out}};
 }
 
 }  // namespace
@@ -179,20 +202,11 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
 
     const DeadTimeBreakdown dead = dead_time_breakdown(in, records, sender.packets(), cp2102);
 
-    fpga_warnings(fpga, records, s, run.warnings);
+    fpga_warnings(fpga, records, segments, s, run.warnings);
     const fpga::FpgaStats st = fpga.stats();
     const uart::Cp2102Baud& baud = cp2102.baud();
-    nlohmann::json pk = nlohmann::json::array();
-    for (const fpga::PacketRecord& r : records) pk.push_back(packet_json(r));
     nlohmann::json msgs = nlohmann::json::array();
     for (const host::SenderMessage& m : sender.messages()) msgs.push_back({{"t_s", ps_to_s(m.t_ps)}, {"text", m.text}});
-    nlohmann::json sent = nlohmann::json::array();
-    for (const host::SentPacket& p : sender.packets()) {
-        sent.push_back({{"segment", p.segment},
-                        {"t_write_s", ps_to_s(p.t_write_ps)},
-                        {"t_ack_s", p.t_ack_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(p.t_ack_ps))},
-                        {"timed_out", p.timed_out}});
-    }
     run.details = {
         {"segments", segments.size()},
         {"link",
@@ -210,16 +224,20 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
           {"aborted", sender.aborted()},
           {"finished", sender.finished()},
           {"t_end_s", ps_to_s(sender.t_end_ps())},
-          {"messages", msgs},
-          {"packets", sent}}},
+          {"messages", msgs}}},
         {"fpga",
          {{"bytes_received", st.bytes_received},
           {"framing_errors", st.framing_errors},
           {"watchdog_resets", st.watchdog_resets},
           {"acks_sent", st.acks_sent},
-          {"acks_dropped", st.acks_dropped},
-          {"packets", pk}}},
-        {"dead_time", to_json(dead)}};
+          {"acks_dropped", st.acks_dropped}}},
+        {"dead_time", to_json(dead, s.detail)}};
+    if (s.detail) {  // one record per packet: they grow with the job
+        nlohmann::json& sent = run.details["sender"]["packets"] = nlohmann::json::array();
+        for (const host::SentPacket& p : sender.packets()) sent.push_back(sent_json(p));
+        nlohmann::json& received = run.details["fpga"]["packets"] = nlohmann::json::array();
+        for (const fpga::PacketRecord& r : records) received.push_back(packet_json(r));
+    }
 
     std::ostringstream text;
     text << "fpga-uart link and host\n"

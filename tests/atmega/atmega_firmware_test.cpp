@@ -69,7 +69,7 @@ TEST(AtmegaFirmware, ListedTimer2PrescalerRunsY4xFast) {
 // run on with no gap, each chord's 2 DXL toggles 1024 (OCR0A + 1) cycles apart, also through chords whose X is
 // disabled (dx = 0: X's timer times |dy|).
 TEST(AtmegaFirmware, ChordReloadKeepsTheXTimerRunning) {
-    const auto out = run_atmega("circle_r10");
+    const auto out = run_atmega("circle_r10", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     ASSERT_EQ(out.report.at("atmega").at("chords").at("late"), 0);
     const auto& arc = out.report.at("atmega").at("commands").at(1).at("motions");

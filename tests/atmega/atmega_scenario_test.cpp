@@ -17,7 +17,7 @@ using cnc::test::step_period_ps;
 // Check 1 (thesis eqs. 5.1-5.2): 10.45 mm/s at 1/32 -> OCR0A 3 -> 12.207 mm/s measured from the STEP edges.
 // The rate error is 1953.125 / 1672 - 1 = +16.81 % (the thesis's rounded 12.20 mm/s gives +16.7 %).
 TEST(AtmegaSpeed, ThesisOcr3MeasuredFromTheStepEdges) {
-    const auto out = run_atmega("speed_10_45");
+    const auto out = run_atmega("speed_10_45", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& motion = out.report.at("atmega").at("commands").at(0).at("motions").at(0);
     EXPECT_EQ(motion.at("ocr").at(0), 3);
@@ -40,7 +40,7 @@ TEST(AtmegaSpeed, ThesisOcr3MeasuredFromTheStepEdges) {
 // (3200 steps, 2.048 s); Y runs for that time: its edges at 7 + 14 k timer periods of 1024 cycles that fall
 // inside, 1143 against the 1120 commanded: 23 steps (143.75 um) past the end point.
 TEST(AtmegaDiagonal, RatesFollowTheEightBitWordsNotTheCommandedRatio) {
-    const auto out = run_atmega("diagonal_20x7");
+    const auto out = run_atmega("diagonal_20x7", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& motion = out.report.at("atmega").at("commands").at(0).at("motions").at(0);
     EXPECT_EQ(motion.at("ocr"), nlohmann::json({4, 13}));
@@ -183,7 +183,7 @@ TEST(AtmegaLink, DefaultLinkBaudIs57600) {
 // (dx = 0) is timed by X's timer at Y's OCR, so Y is exact too; move 4 asks v_x 13.33 and v_y 12.47 mm/s, both
 // truncate to OCR 2, so Y makes as many steps as X: 4132 for 3864, 1.675 mm past the end point.
 TEST(AtmegaJobs, SixSegmentCountsWhatTheFirmwareCounts) {
-    const auto out = run_atmega("six_segment");
+    const auto out = run_atmega("six_segment", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const std::vector<std::vector<std::int64_t>> emitted = {{4257, 15889}, {0, 8000}, {2317, -5034},
                                                             {4132, 4132},  {-3807, -6829}, {6000, 0}};

@@ -25,8 +25,8 @@ inline std::vector<TimePs> periods(const std::vector<TimePs>& t) {
 }
 
 inline bool has_warning(const sim::RunOutcome& out, const std::string& part) {
-    for (const std::string& w : out.arch.warnings) {
-        if (w.find(part) != std::string::npos) return true;
+    for (const Warning& w : out.arch.warnings) {
+        if (to_string(w).find(part) != std::string::npos) return true;
     }
     return false;
 }

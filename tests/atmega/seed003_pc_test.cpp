@@ -125,8 +125,10 @@ TEST(Seed003Plan, SixteenBitLimitSplitsAndWarns) {
     EXPECT_EQ(p.commands[0].motions.at(0).count_x, 33600);
     EXPECT_EQ(p.commands[1].motions.at(0).count_x, 33600);
     ASSERT_EQ(p.warnings.size(), 1U);
-    EXPECT_TRUE(contains(p.warnings[0], "t.nc:1: G01 count 67200 exceeds the 16-bit step counter (409.6 mm"));
-    EXPECT_TRUE(contains(p.warnings[0], "sent as 2 commands"));
+    EXPECT_EQ(p.warnings[0].kind, "long_move");
+    EXPECT_EQ(p.warnings[0].where, "t.nc:1");
+    EXPECT_TRUE(contains(p.warnings[0].text, "G01 count 67200 exceeds the 16-bit step counter (409.6 mm"));
+    EXPECT_TRUE(contains(p.warnings[0].text, "sent as 2 commands"));
 }
 
 TEST(Seed003Plan, SixteenBitLimitWrapsWhenAsked) {
@@ -139,7 +141,7 @@ TEST(Seed003Plan, SixteenBitLimitWrapsWhenAsked) {
     EXPECT_EQ(m.steps_x, 67200);
     EXPECT_EQ(m.count_x, 67200 - 65536);
     ASSERT_EQ(p.warnings.size(), 1U);
-    EXPECT_TRUE(contains(p.warnings[0], "sent modulo 65536 as 1664"));
+    EXPECT_TRUE(contains(p.warnings[0].text, "sent modulo 65536 as 1664"));
 }
 
 // Speeds outside the 8-bit range are held and reported with the line.
@@ -149,7 +151,9 @@ TEST(Seed003Plan, OcrOutsideEightBitsIsReported) {
     EXPECT_TRUE(m.ocr_x.too_slow);
     EXPECT_EQ(m.ocr_x.value, 255);
     ASSERT_EQ(p.warnings.size(), 1U);
-    EXPECT_TRUE(contains(p.warnings[0], "t.nc:1: G01: OCR0A outside 0..255 in 1 of 1 commands (1 held to 255"));
+    EXPECT_EQ(p.warnings[0].kind, "ocr0a_range");
+    EXPECT_TRUE(
+        contains(to_string(p.warnings[0]), "t.nc:1: G01: OCR0A outside 0..255 in 1 of 1 commands (1 held to 255"));
 }
 
 // App. A4: chords of at most arc_step_deg with 8-bit counts, then a record with both EN bits high.

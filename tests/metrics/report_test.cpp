@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "common/bad_input.hpp"
@@ -49,10 +50,18 @@ TEST(MetricsReport, JsonKeysCarryUnitsAndAbsentFiguresAreNull) {
     EXPECT_EQ(x["runs"][0]["move"], 0);
     EXPECT_EQ(x["runs"][0]["jitter_std_ns"], 0.0);
     EXPECT_NEAR(x["runs"][0]["speed_mm_per_min"].get<double>(), 1600.0 / 0.671136 / 160.0 * 60.0, 1e-9);
-    ASSERT_EQ(j["moves"].size(), 1U);
-    EXPECT_NEAR(j["moves"][0]["feed_error_pct"].get<double>(), -0.047, 0.001);
-    EXPECT_EQ(j["moves"][0]["steps_commanded"], (std::vector<int>{1600, 800}));
-    EXPECT_TRUE(j["moves"][0]["contour_max_um"].is_null());  // no tool samples
+    // The moves as columns, per-axis ones by axis name.
+    ASSERT_EQ(j["moves"]["index"], (std::vector<int>{0}));
+    EXPECT_NEAR(j["moves"]["feed_error_pct"][0].get<double>(), -0.047, 0.001);
+    EXPECT_EQ(j["moves"]["steps_commanded"]["x"], (std::vector<int>{1600}));
+    EXPECT_EQ(j["moves"]["steps_commanded"]["y"], (std::vector<int>{800}));
+    EXPECT_TRUE(j["moves"]["contour_max_um"][0].is_null());  // no tool samples
+    EXPECT_EQ(j["moves"]["sync_max_ns"]["x"].size(), 1U);
+    EXPECT_TRUE(j["job"]["dead_times"].empty());
+    EXPECT_TRUE(j["worst_moves"]["contour_max_um"].empty());
+    ASSERT_EQ(j["worst_moves"]["feed_error_pct"].size(), 1U);
+    EXPECT_EQ(j["worst_moves"]["feed_error_pct"][0]["move"], 0);
+    EXPECT_EQ(j["worst_moves"]["feed_error_pct"][0]["feed_error_pct"], j["moves"]["feed_error_pct"][0]);
     EXPECT_TRUE(j["path"]["contour_max_um"].is_null());
     EXPECT_EQ(j["feed"]["cutting_moves_measured"], 1);
     EXPECT_DOUBLE_EQ(j["job"]["job_time_s"].get<double>(), 0.7);
@@ -62,6 +71,29 @@ TEST(MetricsReport, JsonKeysCarryUnitsAndAbsentFiguresAreNull) {
     EXPECT_TRUE(j["laser"]["dwell_ms"].is_null());  // no tool samples
     EXPECT_EQ(j["pulse"]["driver_violations"], 0);
     EXPECT_NEAR(j["pulse"]["sync_max_us"].get<double>(), j["pulse"]["sync_max_ns"].get<double>() / 1000.0, 1e-12);
+}
+
+// Without detail: no pulse runs, no dead-time gaps, and only the default per-move columns, rounded.
+TEST(MetricsReport, DefaultReportLeavesOutWhatGrowsWithStepsAndGaps) {
+    const nlohmann::json j = to_json(seed_example_metrics(), false);
+    EXPECT_FALSE(j["axes"][0].contains("runs"));
+    EXPECT_EQ(j["axes"][0]["runs_count"], 1);
+    EXPECT_FALSE(j["job"].contains("dead_times"));
+    const nlohmann::json& moves = j["moves"];
+    for (const char* key : {"index", "line", "rapid", "feed_mm_per_min", "t_first_edge_ps", "motion_time_s",
+                            "feed_error_pct", "contour_max_um", "following_max_um", "steps_commanded",
+                            "steps_emitted"}) {
+        EXPECT_TRUE(moves.contains(key)) << key;
+    }
+    for (const char* key : {"t_last_edge_ps", "achieved_feed_mm_per_min", "tool_samples", "following_rms_um",
+                            "endpoint_vs_command_um", "endpoint_vs_program_um", "sync_max_ns"}) {
+        EXPECT_FALSE(moves.contains(key)) << key;
+    }
+    // 1600 steps at 20,973 clocks of 20 ns: 0.671136 s for sqrt(125) mm at F1000; the error to 1e-4 %.
+    const double error_pct = (std::sqrt(125.0) / 0.671136 * 60.0 / 1000.0 - 1.0) * 100.0;
+    EXPECT_EQ(moves["feed_error_pct"][0].get<double>(), std::round(error_pct * 1e4) / 1e4);
+    EXPECT_EQ(moves["motion_time_s"][0].get<double>(), 0.671136);
+    EXPECT_EQ(moves["t_first_edge_ps"][0], 3 * kPsPerMs);
 }
 
 TEST(MetricsReport, SummaryTableHasOneSectionPerFamilyWithUnitsInHeads) {
@@ -78,6 +110,12 @@ TEST(MetricsReport, SummaryTableHasOneSectionPerFamilyWithUnitsInHeads) {
     EXPECT_NE(s.find("x     step_high      1900.0         2000.0     1600           0\n"), std::string::npos) << s;
     EXPECT_NE(s.find("            1              -0.0470                   0.0470                  0.0470\n"),
               std::string::npos)
+        << s;
+    // One move (index 0, line 1) without tool samples: no contour or following figure; its feed error is first.
+    EXPECT_NE(s.find("Worst moves (move index, G-code line)\n"), std::string::npos);
+    EXPECT_NE(
+        s.find("   1                 -     -     -                   -     -     -         -0.0470     0     1\n"),
+        std::string::npos)
         << s;
 }
 

@@ -117,7 +117,7 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, FpgaUartTie,
 
 // Check 5: seed 000 §3.4.7, G1 X10 Y5 F1000 from the origin at 160 steps/mm.
 TEST(FpgaUartWorked347, StepsFeedPeriodsMoveTimeAndResultantFeed) {
-    const auto out = run_shipped("worked_347");
+    const auto out = run_shipped("worked_347", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& p = out.report.at("fpga-uart").at("fpga").at("packets").at(0);
     EXPECT_EQ(p.at("steps"), nlohmann::json({1600, 800}));
@@ -135,7 +135,7 @@ TEST(FpgaUartWorked347, StepsFeedPeriodsMoveTimeAndResultantFeed) {
 // Check 5, second half: on the 45° diagonal the packet feed 1000/sqrt(2) = 707.1 -> 707 and the period
 // 18,750,000 / 707 = 26,520.5 -> 26,520 clocks leave a feed error the metrics must show.
 TEST(FpgaUartDiagonal, FeedErrorOfTheIntegerFeedAndTruncatedPeriod) {
-    const auto out = run_shipped("diagonal_45");
+    const auto out = run_shipped("diagonal_45", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& p = out.report.at("fpga-uart").at("fpga").at("packets").at(0);
     EXPECT_EQ(p.at("feed"), 707);
@@ -173,29 +173,31 @@ TEST(FpgaUartCircle, SeedRoundingOfChordEndsExceedsTheBound) {
 
 // The 32-bit period product (seed 000 §5.4, Q3): 187,500 clocks x 73,600 steps = 1.38e10 does not fit.
 TEST(FpgaUartOverflow, ExactPeriodByDefaultAndAWarning) {
-    const auto out = run_shipped("overflow_slow_diagonal");
+    const auto out = run_shipped("overflow_slow_diagonal", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& p = out.report.at("fpga-uart").at("fpga").at("packets").at(0);
     EXPECT_EQ(p.at("period_cycles"), nlohmann::json({187'500, 8'625'000}));  // 187,500 x 73,600 / 1,600
     EXPECT_TRUE(p.at("period_overflow").get<bool>());
     ASSERT_EQ(out.arch.warnings.size(), 1U);
-    EXPECT_NE(out.arch.warnings[0].find("exceeds 32 bits"), std::string::npos);
+    EXPECT_EQ(out.arch.warnings[0].kind, "period_overflow");
+    EXPECT_EQ(out.arch.warnings[0].where, "segment 1 (line 5)");
+    EXPECT_NE(out.arch.warnings[0].text.find("exceeds 32 bits"), std::string::npos);
     EXPECT_LE(*out.metrics.path.contour_max_um, 6.25);
 }
 
 TEST(FpgaUartOverflow, Wrap32ReproducesTheAppendixRtl) {
-    const auto out = run_shipped("overflow_slow_diagonal", {"fpga.period_arithmetic=wrap32"});
+    const auto out = run_shipped("overflow_slow_diagonal", {"fpga.period_arithmetic=wrap32", "trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& p = out.report.at("fpga-uart").at("fpga").at("packets").at(0);
     // (13,800,000,000 mod 2^32) / 1,600 = 915,098,112 / 1,600 -> 571,936: Y finishes after 0.9 s of 276 s
     EXPECT_EQ(p.at("period_cycles"), nlohmann::json({187'500, 571'936}));
     EXPECT_GT(*out.metrics.path.contour_max_um, 9'000.0);  // the tool leaves the line by 9 mm
-    EXPECT_NE(out.arch.warnings.at(0).find("used the wrapped period"), std::string::npos);
+    EXPECT_NE(out.arch.warnings.at(0).text.find("used the wrapped period"), std::string::npos);
 }
 
 // Check 7: a 12 s move against send_steps.py's 10 s ACK timeout.
 TEST(FpgaUartLongMove, SeedFaithfulSenderReportsAckTimeout) {
-    const auto out = run_shipped("long_move_timeout");
+    const auto out = run_shipped("long_move_timeout", {"trace.detail=true"});
     EXPECT_FALSE(out.ok);
     const auto& sender = out.report.at("fpga-uart").at("sender");
     EXPECT_EQ(sender.at("errors"), 1);

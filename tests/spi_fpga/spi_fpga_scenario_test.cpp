@@ -26,7 +26,7 @@ TimePs apply_time(TimePs t_ss_rise) { return (t_ss_rise / kClockPs + 1 + 2 + 1) 
 // Check 1: within each servo period the STEP train is the rate word's period exactly; words change only when a
 // frame arrives (once per servo period); the cruise of a 3200 steps/s move is one word, 15,625 clocks.
 TEST(SpiFpgaConstantRate, StepPeriodIsTheWordsPeriodAndChangesOnlyAtFrames) {
-    const auto out = run_spi("long_x");
+    const auto out = run_spi("long_x", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& x = out.arch.input.axes[0];
     const std::vector<TimePs> rises = x.step.rising();
@@ -83,7 +83,7 @@ TEST(SpiFpgaConstantRate, StepPeriodIsTheWordsPeriodAndChangesOnlyAtFrames) {
 // Check 4: every transfer holds SS low for 72 bits / SCLK + cs_setup + cs_hold = 14.4 + 2 = 16.4 us, starting at
 // the servo thread's wake-up; the report gives the same and its share of the period.
 TEST(SpiFpgaTransfer, SsLowIsFrameBitsOverSclkPlusTheChipSelectGaps) {
-    const auto out = run_spi("long_x");
+    const auto out = run_spi("long_x", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& ss = out.arch.lines.at("ss");
     const auto falls = ss.falling();
@@ -116,7 +116,7 @@ TEST(SpiFpgaTransfer, SlowerClockLongerTransfer) {
 // Check 5: continuous mode crosses colinear joins at speed: no period at path speed 0 between start and end, and
 // the gaps between moves are one STEP period; exact-stop comes to rest at each join.
 TEST(SpiFpgaBlending, ContinuousHasNoDeadTimeBetweenColinearMoves) {
-    const auto out = run_spi("colinear_x");
+    const auto out = run_spi("colinear_x", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& v = out.report["spi-fpga"]["velocity_log"]["path_speed_mm_per_s"];
     std::size_t first = 0;
@@ -130,7 +130,7 @@ TEST(SpiFpgaBlending, ContinuousHasNoDeadTimeBetweenColinearMoves) {
 }
 
 TEST(SpiFpgaBlending, ExactStopRestsAtEveryJoin) {
-    const auto out = run_spi("colinear_x", {"planner.mode=\"exact-stop\""});
+    const auto out = run_spi("colinear_x", {"planner.mode=\"exact-stop\"", "trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& holds = out.report["spi-fpga"]["servo"]["holds"];
     ASSERT_EQ(holds.size(), 3U);
@@ -237,6 +237,7 @@ TEST(SpiFpgaAtNextPulse, FramesDropButTheJobStillEndsOnTheTarget) {
     EXPECT_GT(out.report["spi-fpga"]["fpga"]["fifo_drops"].get<int>(), 100);
     EXPECT_EQ(out.report["spi-fpga"]["fpga"]["fifo_max_level"].get<int>(), 4);
     ASSERT_FALSE(out.arch.warnings.empty());
-    EXPECT_NE(out.arch.warnings.front().find("rate frames dropped by the full FIFO"), std::string::npos);
+    EXPECT_EQ(out.arch.warnings.front().kind, "fifo_drops");
+    EXPECT_NE(out.arch.warnings.front().text.find("rate frames dropped by the full FIFO"), std::string::npos);
     EXPECT_EQ(*out.metrics.path.job_end_um, 0.0);
 }

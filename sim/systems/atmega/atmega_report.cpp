@@ -74,6 +74,22 @@ nlohmann::json motion_json(const AtmegaFacts& f, s3::CommandId id, const s3::Mot
     return j;
 }
 
+nlohmann::json commands_json(const AtmegaFacts& f) {
+    std::map<std::pair<std::size_t, std::size_t>, const MotionWindow*> window_of;
+    for (const MotionWindow& w : f.windows) window_of[{w.command, w.motion}] = &w;
+    nlohmann::json commands = nlohmann::json::array();
+    for (std::size_t c = 0; c < f.plan.commands.size(); ++c) {
+        const s3::Command& cmd = f.plan.commands[c];
+        nlohmann::json motions = nlohmann::json::array();
+        for (std::size_t m = 0; m < cmd.motions.size(); ++m) {
+            const auto w = window_of.find({c, m});
+            motions.push_back(motion_json(f, cmd.id, cmd.motions[m], w == window_of.end() ? nullptr : w->second));
+        }
+        commands.push_back({{"id", id_name(cmd.id)}, {"bytes", s3::command_bytes(cmd).size()}, {"motions", motions}});
+    }
+    return commands;
+}
+
 }  // namespace
 
 ChordGaps chord_gaps(const AtmegaFacts& f) {
@@ -97,68 +113,61 @@ ChordGaps chord_gaps(const AtmegaFacts& f) {
     return g;
 }
 
-std::vector<std::string> link_warnings(const AtmegaFacts& f) {
-    std::vector<std::string> w;
+std::vector<Warning> link_warnings(const AtmegaFacts& f) {
+    std::vector<Warning> w;
     const avr::AvrCoreStats st = f.mcu.stats();
     if (st.usart.rx_framing_errors > 0) {
-        w.push_back(std::to_string(st.usart.rx_framing_errors) + " UART framing errors at the MCU");
+        w.push_back({"mcu_framing_errors", "",
+                     std::to_string(st.usart.rx_framing_errors) + " UART framing errors at the MCU"});
     }
     if (f.cp2102.stats().framing_errors > 0) {
-        w.push_back(std::to_string(f.cp2102.stats().framing_errors) + " UART framing errors at the CP2102");
+        w.push_back({"cp2102_framing_errors", "",
+                     std::to_string(f.cp2102.stats().framing_errors) + " UART framing errors at the CP2102"});
     }
     if (f.pc.unexpected_confirms() > 0) {
-        w.push_back(std::to_string(f.pc.unexpected_confirms()) +
-                    " confirm bytes other than 0x06 (CAD2G takes any byte as a confirm)");
+        w.push_back({"unexpected_confirms", "",
+                     std::to_string(f.pc.unexpected_confirms()) +
+                         " confirm bytes other than 0x06 (CAD2G takes any byte as a confirm)"});
     }
     const ChordGaps gaps = chord_gaps(f);
     if (gaps.late > 0) {
-        w.push_back(std::to_string(gaps.late) + " chords started late (their bytes came after the chord before had "
-                    "ended): Y took " + std::to_string(gaps.y_steps_waiting) + " steps meanwhile");
+        w.push_back({"late_chords", "",
+                     std::to_string(gaps.late) + " chords started late (their bytes came after the chord before "
+                     "had ended): Y took " + std::to_string(gaps.y_steps_waiting) + " steps meanwhile"});
     }
     return w;
 }
 
-nlohmann::json details_json(const AtmegaFacts& f) {
+nlohmann::json details_json(const AtmegaFacts& f, bool detail) {
     const uart::Cp2102Baud& baud = f.cp2102.baud();
     const avr::AvrCoreStats st = f.mcu.stats();
     const ChordGaps gaps = chord_gaps(f);
-    std::map<std::pair<std::size_t, std::size_t>, const MotionWindow*> window_of;
-    for (const MotionWindow& w : f.windows) window_of[{w.command, w.motion}] = &w;
-
-    nlohmann::json commands = nlohmann::json::array();
-    for (std::size_t c = 0; c < f.plan.commands.size(); ++c) {
-        const s3::Command& cmd = f.plan.commands[c];
-        nlohmann::json motions = nlohmann::json::array();
-        for (std::size_t m = 0; m < cmd.motions.size(); ++m) {
-            const auto w = window_of.find({c, m});
-            motions.push_back(motion_json(f, cmd.id, cmd.motions[m], w == window_of.end() ? nullptr : w->second));
-        }
-        commands.push_back({{"id", id_name(cmd.id)}, {"bytes", s3::command_bytes(cmd).size()}, {"motions", motions}});
-    }
-    return {{"firmware", f.firmware},
-            {"link",
-             {{"requested_baud", baud.requested},
-              {"line_baud", baud.actual_bd},
-              {"line_baud_error_pct", baud.error_pct},
-              {"mcu_baud", f.mcu_baud},
-              {"mcu_vs_line_pct", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0},
-              {"bytes_to_mcu", f.cp2102.tx_log().size()},
-              {"bytes_from_mcu", f.cp2102.rx_log().size()},
-              {"framing_errors_at_mcu", st.usart.rx_framing_errors},
-              {"framing_errors_at_host", f.cp2102.stats().framing_errors},
-              {"frames_lost_at_mcu", st.usart.rx_lost_disabled + st.usart.rx_overruns}}},
-            {"pc",
-             {{"transfers", f.pc.transfers().size()},
-              {"bytes_written", f.pc.writes().size()},
-              {"unexpected_confirms", f.pc.unexpected_confirms()},
-              {"finished", f.pc.finished()},
-              {"t_end_s", f.pc.finished() ? nlohmann::json(ps_to_s(f.pc.t_end_ps())) : nlohmann::json(nullptr)}}},
-            {"mcu", {{"cycles", st.cycles}, {"stopped", f.mcu.stopped()}}},
-            {"chords",
-             {{"late", gaps.late},
-              {"wait_max_ms", static_cast<double>(gaps.wait_max_ps) / static_cast<double>(kPsPerMs)},
-              {"y_steps_waiting", gaps.y_steps_waiting}}},
-            {"commands", commands}};
+    nlohmann::json j = {{"firmware", f.firmware},
+                        {"link",
+                         {{"requested_baud", baud.requested},
+                          {"line_baud", baud.actual_bd},
+                          {"line_baud_error_pct", baud.error_pct},
+                          {"mcu_baud", f.mcu_baud},
+                          {"mcu_vs_line_pct", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0},
+                          {"bytes_to_mcu", f.cp2102.tx_log().size()},
+                          {"bytes_from_mcu", f.cp2102.rx_log().size()},
+                          {"framing_errors_at_mcu", st.usart.rx_framing_errors},
+                          {"framing_errors_at_host", f.cp2102.stats().framing_errors},
+                          {"frames_lost_at_mcu", st.usart.rx_lost_disabled + st.usart.rx_overruns}}},
+                        {"pc",
+                         {{"transfers", f.pc.transfers().size()},
+                          {"bytes_written", f.pc.writes().size()},
+                          {"unexpected_confirms", f.pc.unexpected_confirms()},
+                          {"finished", f.pc.finished()},
+                          {"t_end_s",
+                           f.pc.finished() ? nlohmann::json(ps_to_s(f.pc.t_end_ps())) : nlohmann::json(nullptr)}}},
+                        {"mcu", {{"cycles", st.cycles}, {"stopped", f.mcu.stopped()}}},
+                        {"chords",
+                         {{"late", gaps.late},
+                          {"wait_max_ms", static_cast<double>(gaps.wait_max_ps) / static_cast<double>(kPsPerMs)},
+                          {"y_steps_waiting", gaps.y_steps_waiting}}}};
+    if (detail) j["commands"] = commands_json(f);  // one record per command and chord: they grow with the job
+    return j;
 }
 
 std::string details_text(const AtmegaFacts& f) {

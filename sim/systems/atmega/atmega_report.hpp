@@ -1,6 +1,6 @@
 // The atmega section of the run report: the link at both ends (the CP2102's rate and the MCU's 58 823.5 Bd),
-// the PC program's bytes and confirms, every command with its words and windows, and what happened between
-// chords (late data: Y keeps stepping, seed 003 §5.4.3).
+// the PC program's bytes and confirms, what happened between chords (late data: Y keeps stepping, seed 003
+// §5.4.3), and with `detail` every command with its words and windows.
 #pragma once
 #include <string>
 #include <vector>
@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "avr/avr_core.hpp"
+#include "common/warning.hpp"
 #include "host/core/seed003/plan.hpp"
 #include "host/pc_program.hpp"
 #include "systems/atmega/motion_windows.hpp"
@@ -35,8 +36,8 @@ struct AtmegaFacts {
 
 [[nodiscard]] ChordGaps chord_gaps(const AtmegaFacts& f);
 // Framing errors at either end, confirm values other than 0x06, chords that started late.
-[[nodiscard]] std::vector<std::string> link_warnings(const AtmegaFacts& f);
-[[nodiscard]] nlohmann::json details_json(const AtmegaFacts& f);
+[[nodiscard]] std::vector<Warning> link_warnings(const AtmegaFacts& f);
+[[nodiscard]] nlohmann::json details_json(const AtmegaFacts& f, bool detail);
 [[nodiscard]] std::string details_text(const AtmegaFacts& f);
 
 }  // namespace cnc::sim

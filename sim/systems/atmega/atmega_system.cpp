@@ -158,8 +158,8 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     run.warnings = plan.warnings;
     const AtmegaFacts facts{plan, s.machine, pc, cp2102, mcu, windows, in.axes[1].step, avr_cfg.firmware_elf,
                             mcu.chip().rx_clock().baud()};
-    for (std::string& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
-    run.details = details_json(facts);
+    for (Warning& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
+    run.details = details_json(facts, s.detail);
     run.details_text = details_text(facts);
 
     if (!pc.finished()) {

@@ -1,7 +1,6 @@
 #include "systems/spi_fpga/spi_fpga_report.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -22,10 +21,7 @@ constexpr const char* kAxisNames[] = {"x", "y"};
 // Periods of the rate-log excerpt in the text summary (the JSON has every period).
 constexpr std::size_t kTextLogRows = 12;
 
-// Log values to the resolution they carry (times to the ns, rates to 1e-3 steps/s, speeds to 1e-6 mm/s), so that
-// the JSON writer prints a short decimal (about half the characters of a full double): v rounded to 1 / per_unit;
-// dividing by the exact integer per_unit gives the double nearest that decimal.
-double rounded(double v, double per_unit) { return std::round(v * per_unit) / per_unit; }
+// Log values to the resolution they carry: times to the ns, rates to 1e-3 steps/s, speeds to 1e-6 mm/s.
 double seconds_ns(TimePs t) { return rounded(ps_to_s(t), 1e9); }
 
 // The period word signed by the direction bit (0 = stopped), as the rate log and the text show it.
@@ -70,6 +66,19 @@ std::vector<Hold> holds(const std::vector<PeriodRecord>& log) {
         if (out.empty() || out.back().release != i) out.push_back({i, i, 0});
         for (const AxisPeriod& a : log[i].axes) out.back().pulses += a.word.period_cycles != 0 ? 1 : 0;
         out.back().release = i + 1;
+    }
+    return out;
+}
+
+json holds_json(const std::vector<PeriodRecord>& log, const std::vector<host::servo::Wakeup>& wakeups) {
+    json out = json::array();
+    for (const Hold& h : holds(log)) {
+        const std::size_t rel = std::min(h.release, log.size() - 1);
+        out.push_back({{"tau_s", log[h.first].tau_s},
+                       {"t_first_s", ps_to_s(wakeups[h.first].t_ps)},
+                       {"t_release_s", ps_to_s(wakeups[rel].t_ps)},
+                       {"periods", h.release - h.first},
+                       {"landing_pulses", h.pulses}});
     }
     return out;
 }
@@ -129,7 +138,7 @@ std::string staircase_text(const std::vector<PeriodRecord>& log, const std::vect
 }  // namespace
 
 SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::SpiMaster& master,
-                              const fpga::SpiFpgaTop& fpga, TimePs t_job_end_ps) {
+                              const fpga::SpiFpgaTop& fpga, TimePs t_job_end_ps, bool detail) {
     const host::servo::ServoCore& core = host.core();
     const host::servo::ServoConfig& cfg = core.config();
     const std::vector<PeriodRecord>& log = core.log();
@@ -140,7 +149,6 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
     const TimePs transfer = spi::transfer_time_ps(link, bits);
     const TimePs slot = spi::transfer_slot_ps(link, bits);
     const LatencyStats lat = latency_stats(host.wakeups());
-    const std::vector<Hold> hs = holds(log);
 
     std::size_t track = 0;
     std::size_t land = 0;
@@ -155,16 +163,6 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
     const double job_s = ps_to_s(t_job_end_ps);
     const double busy_pct = t_job_end_ps > 0 ? 100.0 * ps_to_s(master.ss_low_total_ps()) / job_s : 0.0;
     const double share_pct = 100.0 * static_cast<double>(transfer) / static_cast<double>(cfg.period_ps);
-
-    json hold_list = json::array();
-    for (const Hold& h : hs) {
-        const std::size_t rel = std::min(h.release, log.size() - 1);
-        hold_list.push_back({{"tau_s", log[h.first].tau_s},
-                             {"t_first_s", ps_to_s(host.wakeups()[h.first].t_ps)},
-                             {"t_release_s", ps_to_s(host.wakeups()[rel].t_ps)},
-                             {"periods", h.release - h.first},
-                             {"landing_pulses", h.pulses}});
-    }
 
     SpiFpgaReport out;
     out.details = {
@@ -186,7 +184,6 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
           {"rest_points", st.rest_points},
           {"rest_points_landed", st.rest_points_landed},
           {"landing_pulses", st.landing_pulses},
-          {"holds", hold_list},
           {"finished", host.finished()},
           {"t_done_s", host.t_done_ps() ? json(ps_to_s(*host.t_done_ps())) : json(nullptr)}}},
         {"spi",
@@ -212,9 +209,12 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
           {"replies_with_drop_flag", st.replies_dropped_flag},
           {"stretched_words", stretched},
           {"words_applied", {fpga.applied(0).size(), fpga.applied(1).size()}},
-          {"final_counts", {fpga.count(0), fpga.count(1)}}}},
-        {"rate_log", rate_log(log, host.wakeups())},
-        {"velocity_log", velocity_log(log, host.wakeups())}};
+          {"final_counts", {fpga.count(0), fpga.count(1)}}}}};
+    if (detail) {  // one entry per servo period, or per rest point
+        out.details["servo"]["holds"] = holds_json(log, host.wakeups());
+        out.details["rate_log"] = rate_log(log, host.wakeups());
+        out.details["velocity_log"] = velocity_log(log, host.wakeups());
+    }
 
     std::ostringstream text;
     text << "spi-fpga host, link and FPGA\n"
@@ -240,13 +240,19 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
     out.text = text.str();
 
     if (drops > 0) {
-        out.warnings.push_back(std::to_string(drops) +
-                               " rate frames dropped by the full FIFO: with rate_apply = at-next-pulse a generator "
-                               "reads one frame per STEP, so frames queue while an axis steps slower than once per "
-                               "servo period, and the axis runs on stale rates");
+        out.warnings.push_back({"fifo_drops", "",
+                                std::to_string(drops) +
+                                    " rate frames dropped by the full FIFO: with rate_apply = at-next-pulse a "
+                                    "generator reads one frame per STEP, so frames queue while an axis steps slower "
+                                    "than once per servo period, and the axis runs on stale rates"});
     }
-    if (rejected > 0) out.warnings.push_back(std::to_string(rejected) + " SPI frames rejected by the FPGA");
-    if (stretched > 0) out.warnings.push_back(std::to_string(stretched) + " rate words stretched to the minimum period");
+    if (rejected > 0) {
+        out.warnings.push_back({"frames_rejected", "", std::to_string(rejected) + " SPI frames rejected by the FPGA"});
+    }
+    if (stretched > 0) {
+        out.warnings.push_back(
+            {"words_stretched", "", std::to_string(stretched) + " rate words stretched to the minimum period"});
+    }
     return out;
 }
 

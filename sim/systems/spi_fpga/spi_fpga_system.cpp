@@ -116,7 +116,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
         for (const char* pin : {"sclk", "mosi", "miso", "ss"}) run.lines[pin] = rec.log(pin);
     }
 
-    SpiFpgaReport report = spi_fpga_report(host, master, fpga, in.t_job_end_ps);
+    SpiFpgaReport report = spi_fpga_report(host, master, fpga, in.t_job_end_ps, s.detail);
     run.details = std::move(report.details);
     run.details_text = std::move(report.text);
     run.warnings = std::move(report.warnings);

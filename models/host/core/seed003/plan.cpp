@@ -191,11 +191,15 @@ private:
         return {c};
     }
 
+    std::string source_line(const ProgrammedMove& move) const {
+        return m_program.filename + ":" + std::to_string(move.line);
+    }
+
     void long_move_warning(const ProgrammedMove& move, CommandId id, std::int64_t longest) {
         const double limit_mm = static_cast<double>(kCountMax + 1) /
                                 std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm());
-        std::string text = m_program.filename + ":" + std::to_string(move.line) + ": " + g_name(id) + " count " +
-                           std::to_string(longest) + " exceeds the 16-bit step counter" +
+        std::string text = std::string(g_name(id)) + " count " + std::to_string(longest) +
+                           " exceeds the 16-bit step counter" +
                            format(" (%.1f mm at %.0f steps/mm): ", limit_mm,
                                std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm()));
         if (m_opt.long_moves == LongMoves::Split) {
@@ -205,7 +209,7 @@ private:
             text += "sent modulo 65536 as " + std::to_string(longest & kCountMax) +
                     ", as the seed's registers take it (atmega.long_moves = wrap)";
         }
-        m_plan.warnings.push_back(text);
+        m_plan.warnings.push_back({"long_move", source_line(move), text});
     }
 
     void clamp_warnings(const ProgrammedMove& move, const std::vector<Command>& cmds) {
@@ -219,21 +223,22 @@ private:
                 ++motions;
             }
         }
-        const std::string where =
-            m_program.filename + ":" + std::to_string(move.line) + ": " + g_name(command_id(move.kind));
-        const auto report = [&](const Clamps& k, const char* reg, const char* axis, double mm_per_step) {
+        const auto report = [&](const Clamps& k, const char* kind, const char* reg, const char* axis,
+                                double mm_per_step) {
             if (k.fast + k.slow == 0) return;
             const double fastest = speed_mm_per_s(0, mm_per_step, m_opt.timer);
             const double slowest = speed_mm_per_s(255, mm_per_step, m_opt.timer);
             m_plan.warnings.push_back(
-                where + ": " + reg + " outside 0..255 in " + std::to_string(k.fast + k.slow) + " of " +
-                std::to_string(motions) + (move.path.is_arc ? " chords (" : " commands (") + std::to_string(k.slow) +
-                " held to 255, " + std::to_string(k.fast) + " to 0): " + axis +
-                format(" asked %.4g..%.4g mm/s, the 8-bit range is %.4g..%.4g mm/s", k.min_asked, k.max_asked, slowest,
-                    fastest));
+                {kind, source_line(move),
+                 std::string(g_name(command_id(move.kind))) + ": " + reg + " outside 0..255 in " +
+                     std::to_string(k.fast + k.slow) + " of " + std::to_string(motions) +
+                     (move.path.is_arc ? " chords (" : " commands (") + std::to_string(k.slow) + " held to 255, " +
+                     std::to_string(k.fast) + " to 0): " + axis +
+                     format(" asked %.4g..%.4g mm/s, the 8-bit range is %.4g..%.4g mm/s", k.min_asked, k.max_asked,
+                            slowest, fastest)});
         };
-        report(x, "OCR0A", "X", m_machine.x.mm_per_step());
-        report(y, "OCR2A", "Y", m_machine.y.mm_per_step());
+        report(x, "ocr0a_range", "OCR0A", "X", m_machine.x.mm_per_step());
+        report(y, "ocr2a_range", "OCR2A", "Y", m_machine.y.mm_per_step());
     }
 
     const Program& m_program;

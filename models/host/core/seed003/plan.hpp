@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "common/warning.hpp"
 #include "host/core/cam.hpp"
 #include "host/core/gcode.hpp"
 #include "host/core/machine.hpp"
@@ -39,7 +40,7 @@ struct PcOptions {
 
 struct Plan {
     std::vector<Command> commands;  // the program's moves, then M30
-    std::vector<std::string> warnings;
+    std::vector<Warning> warnings;  // kinds long_move, ocr0a_range, ocr2a_range; where: the G-code line
 };
 
 // Throws cnc::BadInput for an invalid machine or option.

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Speed of the whole cncsim process. Targets: fpga-uart six-segment job >= 100x real time (issue 2) and the
-# atmega square job >= 5x (issue 3) and spi-fpga square >= 100x (issue 4), VCD off.
+# atmega square job >= 5x (issue 3) and spi-fpga square >= 100x (issue 4), VCD off; the 41,289-line laser pocket
+# of the G-code corpus >= 100x on fpga-uart and >= 20x on spi-fpga, and the atmega rate on a 4,379-line
+# milling-style job (bench/make_milling_job.sh), reported (real jobs issue).
 # Usage: bench/run_bench.sh [build dir] [repetitions]. Prints one Markdown row per configuration: simulated
 # seconds per wall second and STEP edges per wall second (median of the repetitions), and peak memory.
 set -euo pipefail
@@ -42,7 +44,18 @@ bench "square 20 mm, VCD off" scenarios/fpga-uart/square_20mm.toml
 bench "circle r10 (177 chords), VCD off" scenarios/fpga-uart/circle_r10.toml
 bench "spi-fpga square 20 mm, VCD off" scenarios/spi-fpga/square_20mm.toml
 bench "spi-fpga six-segment, VCD off" scenarios/spi-fpga/six_segment.toml
+# Real jobs. The pocket's last rapid (212 mm at 1200 mm/min) outlasts send_steps.py's 10 s ACK timeout.
+real_job() {  # file architecture -> scenario path
+    local s="$OUT/$(basename "$1").$2.toml"
+    printf '[scenario]\njob = "%s"\narchitecture = "%s"\n[host]\nack_timeout_s = 60\n' "$(realpath "$1")" "$2" > "$s"
+    echo "$s"
+}
+POCKET=tests/data/gcode-corpus/laser_pocket_40k.gcode
+bench "laser pocket 41,289 lines, fpga-uart" "$(real_job "$POCKET" fpga-uart)"
+bench "laser pocket 41,289 lines, spi-fpga" "$(real_job "$POCKET" spi-fpga)"
 if grep -q "CNC_WITH_AVR:BOOL=ON" "$BUILD/CMakeCache.txt"; then
+    bench/make_milling_job.sh > "$OUT/milling_4379.nc"
+    bench "atmega milling job 4,379 lines" "$(real_job "$OUT/milling_4379.nc" atmega)"
     bench "atmega square 20 mm, VCD off" scenarios/atmega/square_20mm.toml
     bench "atmega square 20 mm, VCD on" scenarios/atmega/square_20mm.toml --vcd "$OUT/atmega.vcd"
     bench "atmega six-segment, VCD off" scenarios/atmega/six_segment.toml

@@ -8,14 +8,9 @@
 namespace cnc::host {
 namespace {
 
+using test::expect_point;
+using test::kEps;
 using test::run_gcode;
-
-constexpr double kEps = 1e-9;
-
-void expect_point(geom::Vec2 p, double x_mm, double y_mm) {
-    EXPECT_NEAR(p.x_mm, x_mm, kEps);
-    EXPECT_NEAR(p.y_mm, y_mm, kEps);
-}
 
 TEST(HostGcode, SeedSampleRectangle) {
     // seed 000 §3.1 (§2.2 sample program): 40 x 20 mm rectangle from (10,10).

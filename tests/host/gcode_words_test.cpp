@@ -7,14 +7,8 @@
 namespace cnc::host {
 namespace {
 
+using test::expect_point;
 using test::run_gcode;
-
-constexpr double kEps = 1e-9;
-
-void expect_point(geom::Vec2 p, double x_mm, double y_mm) {
-    EXPECT_NEAR(p.x_mm, x_mm, kEps);
-    EXPECT_NEAR(p.y_mm, y_mm, kEps);
-}
 
 TEST(HostGcodeWords, DwellIsAWaitBeforeTheNextMoveInSeconds) {
     const Program p = run_gcode("G1 X10 F600\nG4 P2.5\nG4 S1\nG1 Y10\nG4 P0.5\nM2\n");

@@ -13,6 +13,13 @@
 
 namespace cnc::host::test {
 
+inline constexpr double kEps = 1e-9;
+
+inline void expect_point(geom::Vec2 p, double x_mm, double y_mm) {
+    EXPECT_NEAR(p.x_mm, x_mm, kEps);
+    EXPECT_NEAR(p.y_mm, y_mm, kEps);
+}
+
 inline Program run_gcode(const std::string& text, const InterpreterOptions& opt = {}) {
     std::istringstream in(text);
     return interpret(in, "t.nc", opt);

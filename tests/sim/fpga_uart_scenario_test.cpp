@@ -211,3 +211,17 @@ TEST(FpgaUartLongMove, SeedFaithfulSenderReportsAckTimeout) {
     EXPECT_EQ(fpga.at("acks_sent"), 1);
     EXPECT_NEAR(*out.metrics.moves.at(0).timing.motion_time_s, 16'000 * 37'500 * 20e-9, 1e-9);  // F500: 12 s
 }
+
+// A calibrated steps/mm reaches the CAM, the NUMERATOR and the carriage: X at 100 and Y at 50 steps/mm.
+TEST(FpgaUartCalibratedMachine, StepsPerMmDrivesStepsAndCarriage) {
+    const auto out = run_shipped("worked_347", {"machine.x.steps_per_mm=100", "machine.y.steps_per_mm=50"});
+    ASSERT_TRUE(out.ok) << out.failure;
+    EXPECT_EQ(out.arch.input.axes[0].step.rising().size(), 1'000U);        // 10 mm x 100
+    EXPECT_EQ(out.arch.input.axes[1].step.rising().size(), 2U * 5 * 50);  // 5 mm out and back at 50
+    // the carriage ends on the programmed (10, 0): the mechanics move 1/100 and 1/50 mm per microstep
+    EXPECT_LT(*out.metrics.path.job_end_um, 1e-6);
+    // The Y-only move at F1000: 16.67 mm/s x 50 steps/mm = 833.3 steps/s, 1.2 ms = 60,000 clocks at 50 MHz
+    // (NUMERATOR_Y = 50 MHz x 60 / 50 = 60,000,000, divided by the feed; seed 000 §2.2).
+    const auto& p = out.report.at("fpga-uart").at("fpga").at("packets");
+    EXPECT_EQ(p.at(1).at("period_cycles").at(1), 60'000);
+}

@@ -9,6 +9,7 @@
 #include "common/bad_input.hpp"
 #include "common/text_format.hpp"
 #include "common/units.hpp"
+#include "host/core/soft_limits.hpp"
 
 namespace cnc::sim {
 
@@ -70,6 +71,17 @@ void read_axis(KeyReader& r, const std::string& axis, host::AxisMachine& m) {
     }
 }
 
+// The job starts where the scenario puts the tool: within the soft limits too.
+void check_start(const KeyReader& r, geom::Vec2 start_mm, const host::MachineModel& machine) {
+    using host::MachineAxis;
+    if (const auto why = soft_limit_breach(machine, MachineAxis::X, start_mm.x_mm, start_mm.x_mm)) {
+        r.fail("scenario.start_x_mm", *why);
+    }
+    if (const auto why = soft_limit_breach(machine, MachineAxis::Y, start_mm.y_mm, start_mm.y_mm)) {
+        r.fail("scenario.start_y_mm", *why);
+    }
+}
+
 // The FPGA model refuses values its RTL registers cannot hold; name the scenario key that set them.
 void check_fpga(const KeyReader& r, const fpga::FpgaConfig& cfg) {
     try {
@@ -106,6 +118,10 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
 
     read_axis(r, "x", s.machine.x);
     read_axis(r, "y", s.machine.y);
+    s.machine.soft_limits = r.get_bool("machine.soft_limits", s.machine.soft_limits,
+                                       "refuse a G-code job or start position that leaves [0, travel_mm] on an axis "
+                                       "with a travel (grbl $20); false: no check");
+    check_start(r, s.interpreter.start_mm, s.machine);
 
     s.driver.strict = r.get_bool("driver.strict", s.driver.strict,
                                  "DRV8825 drops STEP pulses that break tWH/tWL (false: counts every rising edge)");

@@ -83,6 +83,15 @@ TEST(Scenario, StepsPerMmContradictingTheTransmissionNamesBothKeysAndValues) {
               std::string::npos);
 }
 
+TEST(Scenario, StartPositionOutsideTheTravelNamesTheStartKey) {
+    const std::string path = write_scenario(
+        "start", "[scenario]\njob = \"square.nc\"\nstart_x_mm = 12\n[machine.x]\ntravel_mm = 10\n");
+    const std::string err = load_error(path);
+    EXPECT_NE(err.find(path + ":3: scenario.start_x_mm: X 12 mm is past machine.x.travel_mm = 10"), std::string::npos)
+        << err;
+    EXPECT_EQ(load_error(path, {"machine.soft_limits=false"}), "");
+}
+
 TEST(Scenario, UnknownKeyNamesFileLineKeyAndTheAllowedKeys) {
     const std::string path =
         write_scenario("unknown", std::string(kJob) + "\n[link]\nbaud = 115200\nusb_latncy_ms = 2.0\n");

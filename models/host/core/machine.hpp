@@ -37,6 +37,7 @@ struct AxisMachine {
 struct MachineModel {
     AxisMachine x;
     AxisMachine y;
+    bool soft_limits = true;  // keep the tool within each axis' travel (grbl $20; soft_limits.hpp)
 };
 
 // Throws cnc::BadInput(where, ...) for a value no machine can have, naming what is allowed.

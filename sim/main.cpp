@@ -93,6 +93,9 @@ int sc_main(int argc, char* argv[]) {
     sc_core::sc_report_handler::set_actions("tracing timescale unit set", sc_core::SC_DO_NOTHING);
     CLI::App app{"cncsim: co-simulation of CNC / laser motion-control architectures"};
     app.require_subcommand(1);
+    // The SystemC release too: results can differ between kernels (toolchain.md §1 pins 2.3.4).
+    app.set_version_flag("--version", std::string("cncsim ") + CNCSIM_VERSION + "\nSystemC " + sc_core::sc_release(),
+                         "print the cncsim and SystemC versions and exit");
 
     std::string scenario, vcd, report, vcd_in, step, dir;
     std::vector<std::string> sets;

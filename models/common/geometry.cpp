@@ -51,19 +51,42 @@ double Segment::distance_to(Vec2 p) const {
         return distance(p, start + d * u);
     }
     // On the arc if p's angle lies inside the swept range; otherwise the nearer endpoint.
-    const double r = radius_mm();
-    const double a0 = std::atan2(start.y_mm - center.y_mm, start.x_mm - center.x_mm);
-    double ap = std::atan2(p.y_mm - center.y_mm, p.x_mm - center.x_mm) - a0;
-    if (sweep_rad >= 0.0) {
-        while (ap < 0.0) ap += kTwoPi;
-        while (ap >= kTwoPi) ap -= kTwoPi;
-        if (ap <= sweep_rad) return std::fabs(distance(p, center) - r);
-    } else {
-        while (ap > 0.0) ap -= kTwoPi;
-        while (ap <= -kTwoPi) ap += kTwoPi;
-        if (ap >= sweep_rad) return std::fabs(distance(p, center) - r);
+    if (sweeps_through(std::atan2(p.y_mm - center.y_mm, p.x_mm - center.x_mm))) {
+        return std::fabs(distance(p, center) - radius_mm());
     }
     return std::min(distance(p, start), distance(p, end));
+}
+
+bool Segment::sweeps_through(double angle_rad) const {
+    const double a0 = std::atan2(start.y_mm - center.y_mm, start.x_mm - center.x_mm);
+    double a = angle_rad - a0;
+    if (sweep_rad >= 0.0) {
+        while (a < 0.0) a += kTwoPi;
+        while (a >= kTwoPi) a -= kTwoPi;
+        return a <= sweep_rad;
+    }
+    while (a > 0.0) a -= kTwoPi;
+    while (a <= -kTwoPi) a += kTwoPi;
+    return a >= sweep_rad;
+}
+
+Box Segment::bounds() const {
+    Box b{{std::min(start.x_mm, end.x_mm), std::min(start.y_mm, end.y_mm)},
+          {std::max(start.x_mm, end.x_mm), std::max(start.y_mm, end.y_mm)}};
+    if (!is_arc) return b;
+    struct Crossing {
+        double angle_rad;
+        Vec2 direction;
+    };
+    const Crossing crossings[] = {{0.0, {1.0, 0.0}}, {kTwoPi / 4, {0.0, 1.0}}, {kTwoPi / 2, {-1.0, 0.0}},
+                                  {-kTwoPi / 4, {0.0, -1.0}}};
+    for (const Crossing& c : crossings) {
+        if (!sweeps_through(c.angle_rad)) continue;
+        const Vec2 p = center + c.direction * radius_mm();
+        b.min = {std::min(b.min.x_mm, p.x_mm), std::min(b.min.y_mm, p.y_mm)};
+        b.max = {std::max(b.max.x_mm, p.x_mm), std::max(b.max.y_mm, p.y_mm)};
+    }
+    return b;
 }
 
 }  // namespace cnc::geom

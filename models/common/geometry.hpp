@@ -17,6 +17,12 @@ inline double dot(Vec2 a, Vec2 b) { return a.x_mm * b.x_mm + a.y_mm * b.y_mm; }
 inline double norm(Vec2 a) { return std::hypot(a.x_mm, a.y_mm); }
 inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
 
+// Axis-aligned bounds of a path.
+struct Box {
+    Vec2 min;
+    Vec2 max;
+};
+
 // A line (is_arc false) or an arc about `center` from `start` to `end`; `sweep_rad` is signed
 // (positive = counter-clockwise, G3) and is +-2*pi for a full circle whose start equals its end.
 struct Segment {
@@ -37,6 +43,11 @@ struct Segment {
     [[nodiscard]] Vec2 point_at(double s_mm) const;
     // Shortest distance from p to this segment (not to its infinite extension).
     [[nodiscard]] double distance_to(Vec2 p) const;
+    // An arc's swept range, from its start, holds the direction `angle_rad` about the centre (atan2 convention).
+    [[nodiscard]] bool sweeps_through(double angle_rad) const;
+    // The smallest box holding the whole path: an arc reaches further than its ends where it crosses the
+    // horizontal or vertical through its centre.
+    [[nodiscard]] Box bounds() const;
 };
 
 }  // namespace cnc::geom

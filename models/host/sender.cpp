@@ -3,18 +3,41 @@
 
 #include <cstdio>
 
+#include "common/text_format.hpp"
 #include "host/core/packet_codec.hpp"
 
 namespace cnc::host {
 
 Sender::Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
-               std::array<std::uint8_t, 9> init_packet, std::vector<std::array<std::uint8_t, 11>> motion_packets)
+               std::array<std::uint8_t, 9> init_packet, std::vector<OutgoingPacket> motion_packets)
     : sc_module(name), m_cfg(cfg), m_port(port), m_init(init_packet), m_motion(std::move(motion_packets)) {
     SC_HAS_PROCESS(Sender);
     SC_THREAD(run);
 }
 
 void Sender::set_waits(const UnitWaits& waits) { m_waits = waits; }
+
+namespace {
+
+// From the end of a move to the host reading its ACK: the ACK byte, USB frames and driver latency take a few ms
+// (4.4 ms per gap on the 20 mm square, README); 0.1 s tells a move that overran from a byte that was lost.
+constexpr TimePs kAckPathAllowancePs = 100 * kPsPerMs;
+
+// Names the late move so that the fix is obvious: send_steps.py's fixed timeout against a long move, or a lost
+// packet or ACK (framing errors, a busy step_gen), which no timeout fixes.
+std::string ack_timeout_text(int segment, const OutgoingPacket& packet, TimePs timeout_ps) {
+    const std::string line = packet.gcode_line > 0 ? "G-code line " + std::to_string(packet.gcode_line) + ", " : "";
+    const std::string text = "seg " + std::to_string(segment) + " (" + line +
+                             format("a %.2f s move): no ACK within %.1f s", ps_to_s(packet.expected_run_ps),
+                                    ps_to_s(timeout_ps));
+    if (packet.expected_run_ps + kAckPathAllowancePs >= timeout_ps) {
+        return text + "; raise host.ack_timeout_s above the longest move";
+    }
+    return text + ", long after the move should have ended: the packet or its ACK was lost (see the warnings), "
+                  "host.ack_timeout_s is long enough";
+}
+
+}  // namespace
 
 void Sender::say(const std::string& text) { m_messages.push_back({now_ps(), text}); }
 
@@ -52,7 +75,7 @@ void Sender::run() {
         wait_ps(job_wait_ps);
         wait_ps(m_cfg.packet_processing_ps);
         SentPacket sent{segment, now_ps(), job_wait_ps, -1, false};
-        write(m_motion[i].data(), m_motion[i].size());
+        write(m_motion[i].bytes.data(), m_motion[i].bytes.size());
         const TimePs deadline = now_ps() + m_cfg.ack_timeout_ps;
         if (wait_for_ack(segment, deadline)) {
             sent.t_ack_ps = now_ps();
@@ -62,13 +85,12 @@ void Sender::run() {
         sent.timed_out = true;
         m_sent.push_back(sent);
         ++m_errors;
-        char text[96];
-        std::snprintf(text, sizeof text, "[ERROR] seg %d: no ACK within %.1f s", segment,
-                      static_cast<double>(m_cfg.ack_timeout_ps) / static_cast<double>(kPsPerSec));
-        say(text);
+        const std::string timeout = ack_timeout_text(segment, m_motion[i], m_cfg.ack_timeout_ps);
+        say("[ERROR] " + timeout);
         if (!m_cfg.continue_on_timeout) {
             say("Continue anyway? [y/N] N: aborted");
             m_aborted = true;
+            m_abort_reason = timeout;
             break;
         }
     }

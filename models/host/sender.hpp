@@ -25,6 +25,13 @@ struct SenderConfig {
     bool continue_on_timeout = false;  // the script asks "Continue anyway? [y/N]"; with no terminal: N, abort
 };
 
+// A motion packet and what the host knows about it, so that its messages can say which move is late.
+struct OutgoingPacket {
+    std::array<std::uint8_t, 11> bytes{};  // seed 000 T3.6: 11-byte motion packet
+    int gcode_line = 0;                    // source line of the move (0: unknown, e.g. a steps-file row without it)
+    TimePs expected_run_ps = 0;            // how long step_gen should run it (dominant steps x NUMERATOR / feed)
+};
+
 struct SentPacket {
     int segment = 0;             // 1-based, as the script counts
     TimePs t_write_ps = 0;       // the script calls ser.write()
@@ -41,7 +48,7 @@ struct SenderMessage {
 class Sender : public sc_core::sc_module {
 public:
     Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
-           std::array<std::uint8_t, 9> init_packet, std::vector<std::array<std::uint8_t, 11>> motion_packets);
+           std::array<std::uint8_t, 9> init_packet, std::vector<OutgoingPacket> motion_packets);
 
     // Host waits of the job (G4 dwells, M0 pauses, Z moves), one per motion packet: slept before the packet is
     // written (after the previous ACK: the host sleeps once the machine has finished), and after the last ACK.
@@ -51,6 +58,8 @@ public:
     [[nodiscard]] const std::vector<SenderMessage>& messages() const { return m_messages; }
     [[nodiscard]] bool finished() const { return m_finished; }
     [[nodiscard]] bool aborted() const { return m_aborted; }
+    // The ACK timeout that made the script stop (empty unless aborted()): the move, its line and duration.
+    [[nodiscard]] const std::string& abort_reason() const { return m_abort_reason; }
     [[nodiscard]] int errors() const { return m_errors; }
     [[nodiscard]] TimePs t_init_write_ps() const { return m_t_init_write; }
     [[nodiscard]] TimePs t_end_ps() const { return m_t_end; }
@@ -65,7 +74,7 @@ private:
     const SenderConfig m_cfg;
     uart::Cp2102& m_port;
     const std::array<std::uint8_t, 9> m_init;
-    const std::vector<std::array<std::uint8_t, 11>> m_motion;
+    const std::vector<OutgoingPacket> m_motion;
     UnitWaits m_waits;
     std::vector<SentPacket> m_sent;
     std::vector<SenderMessage> m_messages;
@@ -74,6 +83,7 @@ private:
     int m_errors = 0;
     bool m_finished = false;
     bool m_aborted = false;
+    std::string m_abort_reason;
 };
 
 }  // namespace cnc::host

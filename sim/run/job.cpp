@@ -1,6 +1,7 @@
 #include "run/job.hpp"
 
 #include "common/bad_input.hpp"
+#include "host/core/soft_limits.hpp"
 #include "host/core/steps_file.hpp"
 
 namespace cnc::sim {
@@ -21,6 +22,7 @@ Job load_job(const Scenario& s) {
         return job;
     }
     job.program = host::interpret_file(s.job_path, s.interpreter);
+    host::check_soft_limits(*job.program, s.machine);
     return job;
 }
 

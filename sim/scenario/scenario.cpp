@@ -1,17 +1,42 @@
 #include "scenario/scenario.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "common/bad_input.hpp"
+#include "common/text_format.hpp"
 #include "common/units.hpp"
+#include "host/core/soft_limits.hpp"
 
 namespace cnc::sim {
 
 namespace {
 
 namespace fs = std::filesystem;
+
+// A calibrated steps/mm given together with motor or transmission keys must be the value they imply: two
+// different numbers for one axis are a mistake in the scenario, not a choice. microsteps alone does not count:
+// it straps the MODE pins whatever steps/mm is.
+void check_calibration(const KeyReader& r, const std::string& p, const host::AxisMachine& m) {
+    if (!m.calibrated_steps_per_mm) return;
+    std::string given;
+    for (const char* key : {"step_angle_deg", "transmission", "pulley_teeth", "belt_pitch_mm", "lead_mm",
+                            "screw_starts", "gear_ratio"}) {
+        if (r.has(p + key)) given += (given.empty() ? "" : ", ") + p + key;
+    }
+    if (given.empty()) return;
+    if (r.has(p + "microsteps")) given += ", " + p + "microsteps";
+    const double calibrated = *m.calibrated_steps_per_mm;
+    const double implied = m.transmission_steps_per_mm();
+    constexpr double kRelativeTolerance = 1e-9;  // rounding of a value typed as a decimal, not a real difference
+    if (std::abs(calibrated - implied) <= kRelativeTolerance * std::max(calibrated, implied)) return;
+    r.fail(p + "steps_per_mm", format("%.10g", calibrated) + " differs from the " + format("%.10g", implied) +
+                                   " steps/mm that " + given + " give (with the defaults of the keys not set); "
+                                   "give steps_per_mm alone, or values that agree");
+}
 
 void read_axis(KeyReader& r, const std::string& axis, host::AxisMachine& m) {
     const std::string p = "machine." + axis + ".";
@@ -29,11 +54,29 @@ void read_axis(KeyReader& r, const std::string& axis, host::AxisMachine& m) {
     m.screw_starts = static_cast<int>(r.get_int(p + "screw_starts", m.screw_starts, 1, 16, "leadscrew starts"));
     m.gear_ratio = r.get_float(p + "gear_ratio", m.gear_ratio, 0.001, 1000.0,
                                "motor revolutions per pulley/screw revolution");
+    const double calibrated = r.get_float(
+        p + "steps_per_mm", 0.0, 0.0, 1e6,
+        "calibrated microsteps per mm at " + p + "microsteps (full steps per mm = steps_per_mm / microsteps), "
+        "instead of the motor and transmission keys above (given with them, it must equal their value); "
+        "0: computed from them");
+    if (calibrated > 0.0) m.calibrated_steps_per_mm = calibrated;
     m.travel_mm = r.get_float(p + "travel_mm", m.travel_mm, 0.0, 1e6, "axis travel, mm (0 = unlimited)");
+    check_calibration(r, p, m);
     try {
         host::validate(m, r.has(p + "microsteps") ? p + "microsteps" : p.substr(0, p.size() - 1));
     } catch (const BadInput& e) {
         r.fail(p.substr(0, p.size() - 1), e.what());
+    }
+}
+
+// The job starts where the scenario puts the tool: within the soft limits too.
+void check_start(const KeyReader& r, geom::Vec2 start_mm, const host::MachineModel& machine) {
+    using host::MachineAxis;
+    if (const auto why = soft_limit_breach(machine, MachineAxis::X, start_mm.x_mm, start_mm.x_mm)) {
+        r.fail("scenario.start_x_mm", *why);
+    }
+    if (const auto why = soft_limit_breach(machine, MachineAxis::Y, start_mm.y_mm, start_mm.y_mm)) {
+        r.fail("scenario.start_y_mm", *why);
     }
 }
 
@@ -79,6 +122,10 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
 
     read_axis(r, "x", s.machine.x);
     read_axis(r, "y", s.machine.y);
+    s.machine.soft_limits = r.get_bool("machine.soft_limits", s.machine.soft_limits,
+                                       "refuse a G-code job or start position that leaves [0, travel_mm] on an axis "
+                                       "with a travel (grbl $20); false: no check");
+    check_start(r, s.interpreter.start_mm, s.machine);
 
     s.driver.strict = r.get_bool("driver.strict", s.driver.strict,
                                  "DRV8825 drops STEP pulses that break tWH/tWL (false: counts every rising edge)");

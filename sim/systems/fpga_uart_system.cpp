@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/text_format.hpp"
+#include "fpga/core/step_schedule.hpp"
 #include "fpga/top.hpp"
 #include "host/core/packet_codec.hpp"
 #include "host/sender.hpp"
@@ -36,7 +37,7 @@ struct Wires {
 
 struct Packets {
     host::InitBytes init;
-    std::vector<host::MotionBytes> motion;
+    std::vector<host::OutgoingPacket> motion;
 };
 
 Packets encode(const Scenario& s, const std::vector<host::MotionSegment>& segments) {
@@ -46,7 +47,12 @@ Packets encode(const Scenario& s, const std::vector<host::MotionSegment>& segmen
     const std::uint32_t ny =
         s.numerator_from_machine ? host::numerator(s.machine.y.steps_per_mm(), s.fpga.clk_hz) : kSeedScriptNumerator;
     p.init = host::encode_init(nx, ny);
-    for (const host::MotionSegment& seg : segments) p.motion.push_back(host::encode_motion(host::to_packet(seg)));
+    for (const host::MotionSegment& seg : segments) {
+        const host::MotionPacket packet = host::to_packet(seg);
+        // The host expects step_gen to use the numerators it sends (whether the init packet arrives or not).
+        const fpga::MoveInputs move{packet.steps_x, packet.steps_y, packet.feed, nx, ny};
+        p.motion.push_back({host::encode_motion(packet), seg.line, fpga::run_duration_ps(move, s.fpga)});
+    }
     return p;
 }
 
@@ -253,7 +259,8 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
 
     if (sender.aborted()) {
         run.ok = false;
-        run.failure = "ACK timeout: send_steps.py stops here (host.on_timeout = abort)";
+        run.failure =
+            "ACK timeout at " + sender.abort_reason() + "; send_steps.py stops here (host.on_timeout = abort)";
     } else if (!sender.finished()) {
         run.ok = false;
         run.failure = "the job did not finish within scenario.max_sim_s";

@@ -7,6 +7,8 @@ namespace cnc::sim {
 namespace {
 
 std::unique_ptr<mech::Transmission> transmission_for(const host::AxisMachine& a) {
+    // A calibrated steps/mm overrides the belt or screw keys, so the carriage must move by it too.
+    if (a.calibrated_steps_per_mm) return std::make_unique<mech::CalibratedDrive>(a.travel_per_motor_rev_mm());
     if (a.transmission == host::Transmission::Belt) {
         return std::make_unique<mech::Belt>(a.pulley_teeth, a.belt_pitch_mm, a.gear_ratio);
     }

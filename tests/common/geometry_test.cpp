@@ -40,3 +40,30 @@ TEST(Geometry, ArcDistanceOutsideSweepGoesToNearestEnd) {
     EXPECT_NEAR(big.sweep_rad, -1.5 * M_PI, 1e-12);
     EXPECT_NEAR(big.distance_to({0, -10}), 0.0, 1e-9);
 }
+
+TEST(Geometry, BoundsOfALineAreItsEnds) {
+    const cnc::geom::Box b = Segment::line({3, -1}, {-2, 4}).bounds();
+    EXPECT_DOUBLE_EQ(b.min.x_mm, -2.0);
+    EXPECT_DOUBLE_EQ(b.min.y_mm, -1.0);
+    EXPECT_DOUBLE_EQ(b.max.x_mm, 3.0);
+    EXPECT_DOUBLE_EQ(b.max.y_mm, 4.0);
+}
+
+TEST(Geometry, BoundsOfAnArcHoldTheAxisCrossingsItSweeps) {
+    // Half circle about (10, 0) of radius 10 from (0, 0) to (20, 0): counter-clockwise it dips to (10, -10),
+    // clockwise it rises to (10, 10).
+    const cnc::geom::Box under = Segment::arc({0, 0}, {20, 0}, {10, 0}, true).bounds();
+    EXPECT_DOUBLE_EQ(under.min.x_mm, 0.0);
+    EXPECT_DOUBLE_EQ(under.max.x_mm, 20.0);
+    EXPECT_NEAR(under.min.y_mm, -10.0, 1e-12);
+    EXPECT_NEAR(under.max.y_mm, 0.0, 1e-12);
+    const cnc::geom::Box over = Segment::arc({0, 0}, {20, 0}, {10, 0}, false).bounds();
+    EXPECT_NEAR(over.min.y_mm, 0.0, 1e-12);
+    EXPECT_NEAR(over.max.y_mm, 10.0, 1e-12);
+    // Three quarters clockwise from (10, 0) to (0, 10) about the origin: through (0, -10) and (-10, 0).
+    const cnc::geom::Box big = Segment::arc({10, 0}, {0, 10}, {0, 0}, false).bounds();
+    EXPECT_NEAR(big.min.x_mm, -10.0, 1e-12);
+    EXPECT_NEAR(big.min.y_mm, -10.0, 1e-12);
+    EXPECT_NEAR(big.max.x_mm, 10.0, 1e-12);
+    EXPECT_NEAR(big.max.y_mm, 10.0, 1e-12);
+}

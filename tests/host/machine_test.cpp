@@ -36,6 +36,23 @@ TEST(HostMachine, BeltWithOtherPulleyAndMicrosteps) {
     EXPECT_DOUBLE_EQ(axis.steps_per_mm(), 200.0);
 }
 
+TEST(HostMachine, CalibratedStepsPerMmReplacesTheTransmission) {
+    AxisMachine axis;
+    axis.microsteps = 16;
+    axis.calibrated_steps_per_mm = 100.0;
+    EXPECT_DOUBLE_EQ(axis.steps_per_mm(), 100.0);
+    EXPECT_DOUBLE_EQ(axis.transmission_steps_per_mm(), 80.0);  // 3200 steps/rev over the GT2 20T's 40 mm
+    EXPECT_DOUBLE_EQ(axis.mm_per_step(), 0.01);
+    // 100 microsteps/mm at 1/16 are 6.25 full steps/mm: 200 full steps per revolution move the carriage 32 mm.
+    EXPECT_DOUBLE_EQ(axis.travel_per_motor_rev_mm(), 32.0);
+}
+
+TEST(HostMachine, TravelPerMotorRevolutionFollowsTheTransmission) {
+    AxisMachine axis;
+    axis.gear_ratio = 4.0;
+    EXPECT_DOUBLE_EQ(axis.travel_per_motor_rev_mm(), 10.0);  // 40 mm per pulley revolution, 4 motor revolutions
+}
+
 TEST(HostMachine, ValidateAcceptsEveryDrv8825Mode) {
     for (int m : {1, 2, 4, 8, 16, 32}) {
         AxisMachine axis;
@@ -59,6 +76,7 @@ TEST(HostMachine, ValidateRejectsImpossibleValues) {
     rejects([](AxisMachine& a) { a.belt_pitch_mm = -2.0; }, {"belt_pitch_mm -2"});
     rejects([](AxisMachine& a) { a.gear_ratio = 0.0; }, {"gear_ratio 0"});
     rejects([](AxisMachine& a) { a.travel_mm = -1.0; }, {"travel_mm -1"});
+    rejects([](AxisMachine& a) { a.calibrated_steps_per_mm = 0.0; }, {"steps_per_mm 0", "> 0"});
     rejects([](AxisMachine& a) { a.transmission = Transmission::Leadscrew; a.lead_mm = 0.0; }, {"lead_mm 0"});
     rejects([](AxisMachine& a) { a.transmission = Transmission::Leadscrew; a.screw_starts = 0; }, {"screw_starts 0"});
 }

@@ -27,7 +27,13 @@ TEST(Transmission, LeadscrewAndGearRatio) {
     EXPECT_DOUBLE_EQ(Belt(28, 2.0).carriage_mm(1.8), 0.28);  // seed 000 §8 printed column (28-tooth pulley)
 }
 
+TEST(Transmission, CalibratedDriveMovesItsTravelPerRevolution) {
+    EXPECT_DOUBLE_EQ(CalibratedDrive(32.0).carriage_mm(360.0), 32.0);
+    EXPECT_DOUBLE_EQ(CalibratedDrive(32.0).carriage_mm(-90.0), -8.0);
+}
+
 TEST(Transmission, NonPositiveParametersAreBadInput) {
+    EXPECT_THROW(CalibratedDrive(0.0), cnc::BadInput);
     EXPECT_THROW(Belt(0, 2.0), cnc::BadInput);
     EXPECT_THROW(Belt(20, -2.0), cnc::BadInput);
     EXPECT_THROW(Belt(20, 2.0, 0.0), cnc::BadInput);

@@ -205,11 +205,43 @@ TEST(FpgaUartLongMove, SeedFaithfulSenderReportsAckTimeout) {
     const auto& sent = sender.at("packets").at(0);
     EXPECT_TRUE(sent.at("timed_out").get<bool>());
     const auto& msg = sender.at("messages").at(0);
-    EXPECT_EQ(msg.at("text"), "[ERROR] seg 1: no ACK within 10.0 s");
+    // long_move.nc line 4: G1 X100 F500 from the origin, 100 mm at 8.33 mm/s
+    EXPECT_EQ(msg.at("text"),
+              "[ERROR] seg 1 (G-code line 4, a 12.00 s move): no ACK within 10.0 s; raise host.ack_timeout_s above "
+              "the longest move");
+    EXPECT_EQ(out.failure,
+              "ACK timeout at seg 1 (G-code line 4, a 12.00 s move): no ACK within 10.0 s; raise "
+              "host.ack_timeout_s above the longest move; send_steps.py stops here (host.on_timeout = abort)");
     // the deadline starts when write() returns (after host.write_latency_us)
     EXPECT_NEAR(msg.at("t_s").get<double>(), sent.at("t_write_s").get<double>() + 100e-6 + 10.0, 1e-9);
     // the FPGA still finishes the 12 s move and sends its ACK, which nobody reads
     const auto& fpga = out.report.at("fpga-uart").at("fpga");
     EXPECT_EQ(fpga.at("acks_sent"), 1);
     EXPECT_NEAR(*out.metrics.moves.at(0).timing.motion_time_s, 16'000 * 37'500 * 20e-9, 1e-9);  // F500: 12 s
+}
+
+// A calibrated steps/mm reaches the CAM, the NUMERATOR and the carriage: X at 100 and Y at 50 steps/mm.
+TEST(FpgaUartCalibratedMachine, StepsPerMmDrivesStepsAndCarriage) {
+    const auto out =
+        run_shipped("worked_347", {"machine.x.steps_per_mm=100", "machine.y.steps_per_mm=50", "trace.detail=true"});
+    ASSERT_TRUE(out.ok) << out.failure;
+    EXPECT_EQ(out.arch.input.axes[0].step.rising().size(), 1'000U);        // 10 mm x 100
+    EXPECT_EQ(out.arch.input.axes[1].step.rising().size(), 2U * 5 * 50);  // 5 mm out and back at 50
+    // the carriage ends on the programmed (10, 0): the mechanics move 1/100 and 1/50 mm per microstep
+    EXPECT_LT(*out.metrics.path.job_end_um, 1e-6);
+    // The Y-only move at F1000: 16.67 mm/s x 50 steps/mm = 833.3 steps/s, 1.2 ms = 60,000 clocks at 50 MHz
+    // (NUMERATOR_Y = 50 MHz x 60 / 50 = 60,000,000, divided by the feed; seed 000 §2.2).
+    const auto& p = out.report.at("fpga-uart").at("fpga").at("packets");
+    EXPECT_EQ(p.at(1).at("period_cycles").at(1), 60'000);
+}
+
+// A 57600 Bd line into the FPGA's 115200 Bd UART: framing errors lose the packet, so the timeout is no help.
+TEST(FpgaUartLongMove, TimeoutOfALostPacketSaysSo) {
+    const auto out = run_shipped("diagonal_45", {"link.baud=57600"});
+    EXPECT_FALSE(out.ok);
+    // 20 mm on each axis at F1000: 28.28 mm at 16.67 mm/s, 1.70 s (line 4 of diagonal_45.nc)
+    EXPECT_NE(out.failure.find("seg 1 (G-code line 4, a 1.70 s move): no ACK within 10.0 s, long after the move"),
+              std::string::npos)
+        << out.failure;
+    EXPECT_NE(out.failure.find("the packet or its ACK was lost"), std::string::npos) << out.failure;
 }

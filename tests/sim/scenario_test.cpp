@@ -53,6 +53,45 @@ TEST(Scenario, SetOverridesTypedValuesAndBareStrings) {
     EXPECT_EQ(s.job_format, cnc::sim::JobFormat::Steps);
 }
 
+TEST(Scenario, StepsPerMmAloneReplacesTheTransmissionAndKeepsTheMicrostepMode) {
+    const auto s = cnc::sim::load_scenario(
+        write_scenario("spm", std::string(kJob) + "[machine.x]\nsteps_per_mm = 100\nmicrosteps = 16\n"), {});
+    EXPECT_DOUBLE_EQ(s.machine.x.steps_per_mm(), 100.0);
+    EXPECT_EQ(s.machine.x.microsteps, 16);
+    EXPECT_DOUBLE_EQ(s.machine.y.steps_per_mm(), 160.0);
+}
+
+TEST(Scenario, StepsPerMmEqualToTheTransmissionsIsAccepted) {
+    // Leadscrew 8 mm, 1/16: 3200 / 8 = 400 steps/mm; a difference of 1e-12 relative is rounding.
+    const auto s = cnc::sim::load_scenario(
+        write_scenario("spm_equal", std::string(kJob) + "[machine.y]\ntransmission = \"leadscrew\"\n"
+                                                         "microsteps = 16\nsteps_per_mm = 400.0000000004\n"),
+        {});
+    EXPECT_NEAR(s.machine.y.steps_per_mm(), 400.0, 1e-9);
+}
+
+TEST(Scenario, StepsPerMmContradictingTheTransmissionNamesBothKeysAndValues) {
+    const std::string path =
+        write_scenario("spm_conflict", std::string(kJob) + "[machine.x]\npulley_teeth = 20\nsteps_per_mm = 100\n");
+    const std::string err = load_error(path);
+    EXPECT_NE(err.find(path + ":5: machine.x.steps_per_mm: 100 differs from the 160 steps/mm"), std::string::npos)
+        << err;
+    EXPECT_NE(err.find("machine.x.pulley_teeth"), std::string::npos) << err;
+    // 1e-6 relative is more than rounding: refused
+    EXPECT_NE(load_error(write_scenario("spm_close", kJob), {"machine.x.gear_ratio=1", "machine.x.steps_per_mm=160.00016"})
+                  .find("machine.x.steps_per_mm"),
+              std::string::npos);
+}
+
+TEST(Scenario, StartPositionOutsideTheTravelNamesTheStartKey) {
+    const std::string path = write_scenario(
+        "start", "[scenario]\njob = \"square.nc\"\nstart_x_mm = 12\n[machine.x]\ntravel_mm = 10\n");
+    const std::string err = load_error(path);
+    EXPECT_NE(err.find(path + ":3: scenario.start_x_mm: X 12 mm is past machine.x.travel_mm = 10"), std::string::npos)
+        << err;
+    EXPECT_EQ(load_error(path, {"machine.soft_limits=false"}), "");
+}
+
 TEST(Scenario, UnknownKeyNamesFileLineKeyAndTheAllowedKeys) {
     const std::string path =
         write_scenario("unknown", std::string(kJob) + "\n[link]\nbaud = 115200\nusb_latncy_ms = 2.0\n");

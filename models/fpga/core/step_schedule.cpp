@@ -123,4 +123,9 @@ bool StepSchedule::next(PinEdge& out) {
     return false;
 }
 
+TimePs run_duration_ps(const MoveInputs& in, const FpgaConfig& cfg) {
+    const StepSchedule schedule(in, false, false, cfg);  // the DIR levels before do not change RUN's length
+    return cycles_to_ps(schedule.run_cycles(), cfg.clk_hz);
+}
+
 }  // namespace cnc::fpga

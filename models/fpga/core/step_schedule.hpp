@@ -57,6 +57,10 @@ struct MoveInputs {
     std::uint32_t num_y = 0;
 };
 
+// How long step_gen stays in RUN for one packet: N clocks (above), dominant steps x NUMERATOR / feed for a
+// coordinated move. What a host can expect a move to take, e.g. to size its ACK timeout.
+[[nodiscard]] TimePs run_duration_ps(const MoveInputs& in, const FpgaConfig& cfg);
+
 // STEP register changes of one axis during RUN (edges relative to the first RUN edge).
 class AxisPulses {
 public:

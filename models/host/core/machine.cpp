@@ -34,7 +34,9 @@ double AxisMachine::travel_per_rev_mm() const {
     return transmission == Transmission::Belt ? belt_pitch_mm * pulley_teeth : lead_mm * screw_starts;
 }
 
-double AxisMachine::steps_per_mm() const { return steps_per_rev() * gear_ratio / travel_per_rev_mm(); }
+double AxisMachine::transmission_steps_per_mm() const { return steps_per_rev() * gear_ratio / travel_per_rev_mm(); }
+
+double AxisMachine::steps_per_mm() const { return calibrated_steps_per_mm.value_or(transmission_steps_per_mm()); }
 
 void validate(const AxisMachine& axis, const std::string& where) {
     require_positive(axis.step_angle_deg, where, "step_angle_deg");
@@ -57,6 +59,7 @@ void validate(const AxisMachine& axis, const std::string& where) {
         }
     }
     require_positive(axis.gear_ratio, where, "gear_ratio");
+    if (axis.calibrated_steps_per_mm) require_positive(*axis.calibrated_steps_per_mm, where, "steps_per_mm");
     if (!(std::isfinite(axis.travel_mm) && axis.travel_mm >= 0.0)) {
         throw BadInput(where, "travel_mm " + number_text(axis.travel_mm) + " must be >= 0 (0 = unlimited)");
     }

@@ -1,6 +1,7 @@
 // Machine model of seed 000 §2 (AddModel "Machine Model Configuration"): per-axis motor, driver and
 // transmission, and the steps/mm that the CAM and the NUMERATOR are derived from.
 #pragma once
+#include <optional>
 #include <string>
 
 namespace cnc::host {
@@ -17,17 +18,26 @@ struct AxisMachine {
     int screw_starts = 1;          // leadscrew only; seed 000 Q12: travel_per_rev = lead x starts
     double gear_ratio = 1.0;       // motor revs per pulley/screw rev; seed 000 §2.2 uses it, the form has no field (Q12)
     double travel_mm = 0.0;        // TravelDistance of seed 000 §2.1; 0 = unlimited
+    // A measured steps/mm (grbl's $100) that replaces the transmission's: machines are often calibrated, not
+    // specified. It counts microsteps at `microsteps`, which still straps the DRV8825 MODE pins, so the motor
+    // makes calibrated_steps_per_mm / microsteps full steps per mm.
+    std::optional<double> calibrated_steps_per_mm;
 
     [[nodiscard]] double steps_per_rev() const { return 360.0 / step_angle_deg * microsteps; }
     [[nodiscard]] double travel_per_rev_mm() const;
-    // seed 000 §2.2: steps_per_mm = steps_per_rev * gear_ratio / travel_per_rev (160 for the defaults).
+    // seed 000 §2.2: steps_per_rev * gear_ratio / travel_per_rev (160 for the defaults), whatever is calibrated.
+    [[nodiscard]] double transmission_steps_per_mm() const;
+    // The steps/mm every model uses: the calibrated value when there is one, else the transmission's.
     [[nodiscard]] double steps_per_mm() const;
     [[nodiscard]] double mm_per_step() const { return 1.0 / steps_per_mm(); }
+    // Carriage travel per motor revolution that gives steps_per_mm(): what the mechanics model moves.
+    [[nodiscard]] double travel_per_motor_rev_mm() const { return steps_per_rev() / steps_per_mm(); }
 };
 
 struct MachineModel {
     AxisMachine x;
     AxisMachine y;
+    bool soft_limits = true;  // keep the tool within each axis' travel (grbl $20; soft_limits.hpp)
 };
 
 // Throws cnc::BadInput(where, ...) for a value no machine can have, naming what is allowed.

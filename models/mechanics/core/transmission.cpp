@@ -32,4 +32,8 @@ Leadscrew::Leadscrew(double thread_pitch_mm, int starts, double gear_ratio)
 
 double Leadscrew::travel_per_motor_rev_mm() const { return m_pitch_mm * m_starts / m_gear_ratio; }
 
+CalibratedDrive::CalibratedDrive(double travel_per_motor_rev_mm) : m_travel_mm(travel_per_motor_rev_mm) {
+    require_positive(travel_per_motor_rev_mm, "travel per motor revolution");
+}
+
 }  // namespace cnc::mech

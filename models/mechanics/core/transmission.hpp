@@ -40,4 +40,15 @@ private:
     double m_gear_ratio;
 };
 
+// A drive known only by its travel per motor revolution: the machine is given by a calibrated steps/mm
+// (machine.x.steps_per_mm) and its belt or screw is not described.
+class CalibratedDrive : public Transmission {
+public:
+    explicit CalibratedDrive(double travel_per_motor_rev_mm);
+    [[nodiscard]] double travel_per_motor_rev_mm() const override { return m_travel_mm; }
+
+private:
+    double m_travel_mm;
+};
+
 }  // namespace cnc::mech

@@ -11,7 +11,9 @@ namespace {
 
 // A scenario file in GoogleTest's temporary directory.
 std::string write_scenario(const std::string& name, const std::string& text) {
-    const std::string path = ::testing::TempDir() + "scenario_test_" + name + ".toml";
+    // The test's own name in the path: ctest runs the tests of this file in parallel processes.
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const std::string path = ::testing::TempDir() + "scenario_test_" + test + "_" + name + ".toml";
     std::ofstream(path) << text;
     return path;
 }

@@ -14,7 +14,9 @@ using cnc::kPsPerUs;
 namespace {
 
 std::string write_scenario(const std::string& name, const std::string& text) {
-    const std::string path = ::testing::TempDir() + "spi_fpga_settings_" + name + ".toml";
+    // The test's own name in the path: ctest runs the tests of this file in parallel processes.
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const std::string path = ::testing::TempDir() + "spi_fpga_settings_" + test + "_" + name + ".toml";
     std::ofstream(path) << text;
     return path;
 }

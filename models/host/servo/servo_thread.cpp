@@ -24,9 +24,9 @@ void ServoThread::run() {
             m_t_done_ps = m_wakeups.back().t_ps;
             return;
         }
-        std::vector<spi::AxisRate> words;
-        for (const AxisPeriod& a : rec.axes) words.push_back(a.word);
-        m_master.transfer(spi::encode_command(words, m_cfg.min_period_cycles), reply);
+        spi::Command command;  // laser bit off
+        for (const AxisPeriod& a : rec.axes) command.axes.push_back(a.word);
+        m_master.transfer(spi::encode_command(command, m_cfg.min_period_cycles), reply);
         feedback = spi::decode_feedback(reply, kAxes);
     }
 }

@@ -26,7 +26,7 @@ struct Wires {
     sc_core::sc_signal<bool> step_x{"step_x", false}, dir_x{"dir_x", false};
     sc_core::sc_signal<bool> step_y{"step_y", false}, dir_y{"dir_y", false};
     sc_core::sc_signal<bool> n_enbl{"n_enbl", false};  // the FPGA drives no EN pin: drivers always enabled
-    sc_core::sc_signal<bool> laser{"laser", false};    // seed 004's FPGA has no laser output
+    sc_core::sc_signal<bool> laser{"laser", false};    // the FPGA's laser_latch (the frame's laser bit)
 };
 
 host::servo::ServoConfig servo_config(const Scenario& s) {
@@ -71,6 +71,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     fpga.dir_x(w.dir_x);
     fpga.step_y(w.step_y);
     fpga.dir_y(w.dir_y);
+    fpga.laser(w.laser);
     master.target(fpga.spi_target);
     host::servo::ServoThread host("host", servo_config(s), *trajectory, master);
     Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);

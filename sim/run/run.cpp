@@ -50,8 +50,9 @@ RunOutcome run_scenario(const Scenario& s) {
         out.arch = run_fpga_uart(s, job);
     }
     if (job.program) {
-        // The seed 000 FPGA and the seed 003 head switch by motion code; the spi-fpga frame has no laser yet.
-        const LaserSwitching switching = LaserSwitching::ByMotionKind;
+        // The seed 000 FPGA and the seed 003 head switch by motion code; the spi-fpga frame carries the job's bit.
+        const LaserSwitching switching =
+            s.architecture == "spi-fpga" ? LaserSwitching::FollowsJob : LaserSwitching::ByMotionKind;
         for (Warning& w : laser_warnings(*job.program, switching)) out.arch.warnings.push_back(std::move(w));
     }
     out.metrics = metrics::compute_metrics(out.arch.input);

@@ -122,8 +122,8 @@ TEST(PulseGenCore, LaterWordCancelsAPendingReversal) {
 
 TEST(CmdFifoCore, RegisterTimingFullDropAndPerAxisReads) {
     CmdFifoCore f(2, 2);
-    const std::vector<AxisRate> r0{{1000, true}, {2000, false}};
-    const std::vector<AxisRate> r1{{1100, true}, {2100, false}};
+    const spi::Command r0{{{1000, true}, {2000, false}}, true};
+    const spi::Command r1{{{1100, true}, {2100, false}}, false};
     EXPECT_TRUE(f.push(10, 0, r0));
     EXPECT_FALSE(f.readable(0, 10));
     EXPECT_TRUE(f.readable(0, 11));
@@ -138,10 +138,13 @@ TEST(CmdFifoCore, RegisterTimingFullDropAndPerAxisReads) {
     ASSERT_TRUE(a.has_value());
     EXPECT_EQ(a->seq, 0U);
     EXPECT_EQ(a->rate, (AxisRate{1000, true}));
+    EXPECT_FALSE(a->frame_applied);
     EXPECT_EQ(f.level_at(41), 2U);  // axis 1 has not read it yet
     const auto b = f.read(1, 45);
     ASSERT_TRUE(b.has_value());
     EXPECT_EQ(b->rate, (AxisRate{2000, false}));
+    EXPECT_TRUE(b->frame_applied);  // the last axis has its word: the frame (and its laser bit) governs
+    EXPECT_TRUE(b->laser_on);
     EXPECT_EQ(f.level_at(45), 2U);  // a read at 45 frees the slot for writes from 46
     EXPECT_FALSE(f.push(45, 3, r0));
     EXPECT_EQ(f.level_at(46), 1U);
@@ -150,7 +153,11 @@ TEST(CmdFifoCore, RegisterTimingFullDropAndPerAxisReads) {
     EXPECT_EQ(f.read(0, 50)->seq, 1U);
     EXPECT_EQ(f.read(0, 51)->seq, 4U);
     EXPECT_FALSE(f.read(0, 52).has_value());  // empty for axis 0
-    EXPECT_EQ(f.read(1, 52)->seq, 1U);
+    const auto c = f.read(1, 52);
+    ASSERT_TRUE(c.has_value());
+    EXPECT_EQ(c->seq, 1U);
+    EXPECT_TRUE(c->frame_applied);
+    EXPECT_FALSE(c->laser_on);
     EXPECT_EQ(f.read(1, 53)->seq, 4U);
     EXPECT_EQ(f.level_at(54), 0U);
 

@@ -37,7 +37,8 @@ SpiBench::SpiBench(const sc_core::sc_module_name& name, const SpiConfig& link, c
     fpga.dir_x(dir_x);
     fpga.step_y(step_y);
     fpga.dir_y(dir_y);
-    for (auto* sig : {&sclk, &mosi, &ss, &miso, &step_x, &dir_x, &step_y, &dir_y}) {
+    fpga.laser(laser);
+    for (auto* sig : {&sclk, &mosi, &ss, &miso, &step_x, &dir_x, &step_y, &dir_y, &laser}) {
         const std::string pin = sig->basename();
         m_owned.push_back(std::make_unique<PinRecorder>(("rec_" + pin).c_str()));
         m_owned.back()->pin(*sig);
@@ -56,7 +57,9 @@ void SpiBench::host_thread() {
     }
 }
 
-std::vector<std::uint8_t> rates(AxisRate x, AxisRate y) { return encode_command({x, y}, 1); }
+std::vector<std::uint8_t> rates(AxisRate x, AxisRate y, bool laser_on) {
+    return encode_command({{x, y}, laser_on}, 1);
+}
 
 namespace {
 std::vector<std::int64_t> to_edges(const std::vector<TimePs>& times) {

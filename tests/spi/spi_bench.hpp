@@ -51,6 +51,7 @@ public:
     sc_core::sc_signal<bool> dir_x{"dir_x", false};
     sc_core::sc_signal<bool> step_y{"step_y", false};
     sc_core::sc_signal<bool> dir_y{"dir_y", false};
+    sc_core::sc_signal<bool> laser{"laser", false};
     SpiMaster master;
     fpga::SpiFpgaTop fpga;
 
@@ -63,7 +64,7 @@ private:
 };
 
 // Command frame bytes for two axes (min period 1 so that tests can also build short words).
-std::vector<std::uint8_t> rates(AxisRate x, AxisRate y);
+std::vector<std::uint8_t> rates(AxisRate x, AxisRate y, bool laser_on = false);
 // STEP rise edges (clock indices) of a log.
 std::vector<std::int64_t> rise_edges(const EdgeLog& log);
 std::vector<std::int64_t> fall_edges(const EdgeLog& log);

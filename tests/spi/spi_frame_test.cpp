@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <stdexcept>
 #include <limits>
 #include <string>
 #include <vector>
@@ -26,21 +27,36 @@ TEST(SpiFrame, SizesForOneToEightAxes) {
 }
 
 TEST(SpiFrame, CommandBytesAreHeaderThenBigEndianWordsWithDirectionInBit31) {
-    const Bytes b = encode_command({{0x0012'3456, true}, {0x7FFF'FFFF, false}}, 101);
-    EXPECT_EQ(b, (Bytes{0x52, 0x80, 0x12, 0x34, 0x56, 0x7F, 0xFF, 0xFF, 0xFF}));
+    const Bytes b = encode_command({{{0x0012'3456, true}, {0x3FFF'FFFF, false}}}, 101);
+    EXPECT_EQ(b, (Bytes{0x52, 0x80, 0x12, 0x34, 0x56, 0x3F, 0xFF, 0xFF, 0xFF}));
     EXPECT_EQ(encode_rate_word({0, true}, 101), 0x8000'0000U);  // stopped: direction sent as given
     EXPECT_EQ(encode_rate_word({0, false}, 101), 0U);
 }
 
-TEST(SpiFrame, CommandRoundTrip) {
-    const std::vector<AxisRate> axes{{101, true}, {0, false}, {kMaxPeriodCycles, false}, {5000, true}};
-    const auto back = decode_command(encode_command(axes, 101), 4);
+TEST(SpiFrame, LaserIsBit30OfTheXWordOnly) {
+    // X stopped backwards with the laser on: 0x4000'0000; Y forward at 0x0012'3456: 0x8012'3456 (bit 30 clear).
+    const Bytes on = encode_command({{{0, false}, {0x0012'3456, true}}, true}, 101);
+    EXPECT_EQ(on, (Bytes{0x52, 0x40, 0x00, 0x00, 0x00, 0x80, 0x12, 0x34, 0x56}));
+    // Reserved bit 30 of the Y word set by hand: ignored, the period stays 0x0012'3456 and the laser off.
+    const Bytes reserved{0x52, 0x00, 0x00, 0x00, 0x00, 0xC0, 0x12, 0x34, 0x56};
+    const auto back = decode_command(reserved, 2);
     ASSERT_TRUE(back.has_value());
-    EXPECT_EQ(*back, axes);
+    EXPECT_EQ(*back, (Command{{{0, false}, {0x0012'3456, true}}, false}));
+    EXPECT_EQ(decode_rate_word(0xFFFF'FFFFU), (AxisRate{kMaxPeriodCycles, true}));
+    EXPECT_THROW((void)encode_command({{}, true}, 101), std::invalid_argument);  // no X word to carry it
+}
+
+TEST(SpiFrame, CommandRoundTrip) {
+    for (const bool laser : {false, true}) {
+        const Command command{{{101, true}, {0, false}, {kMaxPeriodCycles, false}, {5000, true}}, laser};
+        const auto back = decode_command(encode_command(command, 101), 4);
+        ASSERT_TRUE(back.has_value());
+        EXPECT_EQ(*back, command);
+    }
 }
 
 TEST(SpiFrame, DecodeRejectsWrongLengthOrHeader) {
-    Bytes b = encode_command({{200, true}, {300, false}}, 1);
+    Bytes b = encode_command({{{200, true}, {300, false}}}, 1);
     EXPECT_FALSE(decode_command(b, 1).has_value());   // 9 bytes for 1 axis
     EXPECT_FALSE(decode_command(Bytes(b.begin(), b.end() - 1), 2).has_value());
     b[0] = 0x00;
@@ -91,11 +107,15 @@ TEST(SpiFrame, PeriodForRateRoundsToNearestClock) {
 }
 
 TEST(SpiFrame, RateWordOverflowIsBadInputWithTheNumbers) {
-    // Too slow: 0.01 steps/s needs 5e9 clocks, the field holds 2^31 - 1.
+    // Too slow: 0.01 steps/s needs 5e9 clocks, the field holds 2^30 - 1 = 1,073,741,823.
     const std::string slow = bad_input_message([] { (void)period_for_rate(0.01, 50'000'000, 101, "axis x"); });
     EXPECT_NE(slow.find("axis x: "), std::string::npos) << slow;
     EXPECT_NE(slow.find("5000000000 clocks"), std::string::npos) << slow;
-    EXPECT_NE(slow.find("2147483647"), std::string::npos) << slow;
+    EXPECT_NE(slow.find("30-bit field"), std::string::npos) << slow;
+    EXPECT_NE(slow.find("1073741823"), std::string::npos) << slow;
+    // 0.0466 steps/s needs 1,072,961,373.4 clocks (fits); 0.04656 needs 1,073,883,161.5 (does not).
+    EXPECT_EQ(period_for_rate(0.0466, 50'000'000, 101), 1'072'961'373U);
+    EXPECT_THROW((void)period_for_rate(0.04656, 50'000'000, 101), BadInput);
     // Too fast: 1 MHz needs 50 clocks < 101.
     const std::string fast = bad_input_message([] { (void)period_for_rate(1e6, 50'000'000, 101); });
     EXPECT_NE(fast.find("period of 50 clocks"), std::string::npos) << fast;
@@ -103,11 +123,12 @@ TEST(SpiFrame, RateWordOverflowIsBadInputWithTheNumbers) {
     EXPECT_THROW((void)period_for_rate(std::numeric_limits<double>::infinity(), 50'000'000, 101), BadInput);
     EXPECT_THROW((void)period_for_rate(std::numeric_limits<double>::quiet_NaN(), 50'000'000, 101), BadInput);
     // Just inside both ends.
-    EXPECT_EQ(period_for_rate(50e6 / 2147483647.0, 50'000'000, 101), 2'147'483'647U);
-    // Encoding a word directly: the period field and the minimum.
-    const std::string word = bad_input_message([] { (void)encode_command({{100, true}, {0x8000'0000U, true}}, 100); });
+    EXPECT_EQ(period_for_rate(50e6 / 1073741823.0, 50'000'000, 101), 1'073'741'823U);
+    // Encoding a word directly: the period field (2^30 would overwrite the laser bit) and the minimum.
+    const std::string word =
+        bad_input_message([] { (void)encode_command({{{100, true}, {0x4000'0000U, true}}}, 100); });
     EXPECT_NE(word.find("axis 1"), std::string::npos) << word;
-    EXPECT_NE(word.find("2147483648 clocks does not fit"), std::string::npos) << word;
+    EXPECT_NE(word.find("1073741824 clocks does not fit the rate word's 30-bit field"), std::string::npos) << word;
     EXPECT_THROW((void)encode_rate_word({100, true}, 101), BadInput);
 }
 

@@ -19,7 +19,18 @@ TEST(SpiGolden, WorkedCommandFrame) {
     const std::uint32_t min_period = fpga::min_period_cycles(fpga::SpiFpgaConfig{});
     const auto x = spi::axis_rate_for(10'000.0, 50'000'000, min_period);
     const auto y = spi::axis_rate_for(-1'600.0, 50'000'000, min_period);
-    EXPECT_EQ(spi::encode_command({x, y}, min_period), (Bytes{0x52, 0x80, 0x00, 0x13, 0x88, 0x00, 0x00, 0x7A, 0x12}));
+    EXPECT_EQ(spi::encode_command({{x, y}}, min_period),
+              (Bytes{0x52, 0x80, 0x00, 0x13, 0x88, 0x00, 0x00, 0x7A, 0x12}));
+}
+
+TEST(SpiGolden, WorkedCommandFrameWithTheLaserOn) {
+    // The same rates with the laser on: X word = 0x8000'0000 (DIR) | 0x4000'0000 (laser) | 5000 (0x1388)
+    // = 0xC000'1388; the Y word is unchanged (its bit 30 is reserved, sent 0).
+    const std::uint32_t min_period = fpga::min_period_cycles(fpga::SpiFpgaConfig{});
+    const spi::Command c{{{5'000, true}, {31'250, false}}, true};
+    const Bytes golden{0x52, 0xC0, 0x00, 0x13, 0x88, 0x00, 0x00, 0x7A, 0x12};
+    EXPECT_EQ(spi::encode_command(c, min_period), golden);
+    EXPECT_EQ(spi::decode_command(golden, 2), c);
 }
 
 TEST(SpiGolden, WorkedFeedbackFrame) {
@@ -41,7 +52,9 @@ TEST(SpiGolden, RateLimitsAtFiftyMegahertz) {
     const std::uint32_t min_period = fpga::min_period_cycles(fpga::SpiFpgaConfig{});
     EXPECT_EQ(min_period, 101U);
     EXPECT_NEAR(spi::rate_for_period(min_period, 50'000'000), 495'049.5, 0.1);
-    EXPECT_NEAR(spi::rate_for_period(spi::kMaxPeriodCycles, 50'000'000), 0.02328, 1e-5);
+    // 2^30 - 1 clocks: 50e6 / 1,073,741,823 = 0.046566 steps/s, one step in 21.47 s.
+    EXPECT_EQ(spi::kMaxPeriodCycles, 1'073'741'823U);
+    EXPECT_NEAR(spi::rate_for_period(spi::kMaxPeriodCycles, 50'000'000), 0.046566, 1e-6);
 }
 
 TEST(SpiGolden, Seed004Fig52PulsesEveryTenPlusOneClocksForTwo) {

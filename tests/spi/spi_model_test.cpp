@@ -3,6 +3,7 @@
 // reply, and the FIFO's full and empty behaviour. Times are asserted in FPGA clock edges (20 ns) or ps.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <systemc>
 
 #include "spi_bench.hpp"
@@ -149,14 +150,15 @@ TEST(SpiFpgaModel, TransferTimeAtThreeMegahertzAndBackToBackTransfers) {
 }
 
 TEST(SpiFpgaModel, WiresAndTransactionsGiveTheSameFpgaBehaviour) {
-    const std::vector<Send> script{{10 * kUs, rates({5000, true}, {7919, false})},
+    const std::vector<Send> script{{10 * kUs, rates({5000, true}, {7919, false}, true)},
                                    {1 * kMs, rates({1234, false}, {7919, false})},
-                                   {2 * kMs, rates({0, true}, {300, true})},
+                                   {2 * kMs, rates({0, true}, {300, true}, true)},
                                    {2 * kMs + 500 * kUs, rates({800, true}, {0, false})}};
     SpiBench wires("wires", link(true), fpga_cfg(RateApply::Immediately), script);
     SpiBench trans("trans", link(false), fpga_cfg(RateApply::Immediately), script);
     run_until(5 * kMs);
-    for (const char* pin : {"step_x", "dir_x", "step_y", "dir_y"}) {
+    EXPECT_EQ(wires.log("laser").edges.size(), 4U);
+    for (const char* pin : {"step_x", "dir_x", "step_y", "dir_y", "laser"}) {
         const auto& a = wires.log(pin).edges;
         const auto& c = trans.log(pin).edges;
         ASSERT_EQ(a.size(), c.size()) << pin;
@@ -203,6 +205,38 @@ TEST(SpiFpgaModel, RateChangeAtNextPulseVersusImmediately) {
     EXPECT_EQ(next.fpga.applied(0)[1].edge, 51'374);
     EXPECT_EQ(next.fpga.applied(1)[1].edge, 51'324);
     EXPECT_EQ(next.fpga.applied(1)[1].rate, (AxisRate{20'000, false}));
+}
+
+TEST(SpiFpgaModel, LaserSwitchesAtTheEdgeTheFramesRatesAllGovern) {
+    // The frames of RateChangeAtNextPulseVersusImmediately, A with the laser bit set and B without.
+    const std::vector<Send> script{{10 * kUs, rates({10'000, true}, {10'000, false}, true)},
+                                   {1 * kMs, rates({3'000, true}, {20'000, false}, false)}};
+    SpiBench imm("imm", link(false), fpga_cfg(RateApply::Immediately), script);
+    SpiBench next("next", link(false), fpga_cfg(RateApply::AtNextPulse), script);
+    run_until(1'600'010'000);  // last edge 80 000
+    // A finds both generators stopped: both load it at 1324 (Y's first STEP rises there), and the laser goes on.
+    // Immediately: both load B at 50824 (X's first STEP at the new rate): laser off there.
+    // At next pulse: Y loads B at its boundary 51324, X at 51374; the frame governs from the later: laser off.
+    EXPECT_EQ(change_edges(imm.log("laser")), (std::vector<std::int64_t>{1'324, 50'824}));
+    EXPECT_EQ(change_edges(next.log("laser")), (std::vector<std::int64_t>{1'324, 51'374}));
+    for (const SpiBench* b : {&imm, &next}) {
+        const EdgeLog& laser = b->log("laser");
+        EXPECT_FALSE(laser.initial);
+        ASSERT_EQ(laser.edges.size(), 2U);
+        EXPECT_EQ(laser.edges[0].t_ps, 1'324 * kCyclePs);  // at the edge itself, as STEP and DIR
+        EXPECT_TRUE(laser.edges[0].level);
+        EXPECT_FALSE(laser.edges[1].level);
+        EXPECT_EQ(rise_edges(b->log("step_y")).front(), 1'324);
+        // The switch is the later of the two axes' loads of that frame.
+        const auto& frames = b->fpga.applied_frames();
+        ASSERT_EQ(frames.size(), 2U);
+        for (std::size_t i = 0; i < 2; ++i) {
+            EXPECT_EQ(frames[i].seq, i);
+            EXPECT_EQ(frames[i].edge, std::max(b->fpga.applied(0)[i].edge, b->fpga.applied(1)[i].edge));
+            EXPECT_EQ(frames[i].t_ps, laser.edges[i].t_ps);
+            EXPECT_EQ(frames[i].laser_on, i == 0);
+        }
+    }
 }
 
 void expect_dir_setup_hold(const EdgeLog& dir, const EdgeLog& step, std::int64_t setup, std::int64_t hold) {

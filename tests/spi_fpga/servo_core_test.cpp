@@ -117,8 +117,9 @@ TEST(RestPoints, EveryStopOfThePlanAndItsEnd) {
 TEST(ServoCore, FollowsOnePeriodBehindAndLandsExactlyAtEveryRestPoint) {
     planner::PlannerConfig pc;
     pc.mode = planner::BlendMode::ExactStop;
-    const planner::Trajectory t = planner::plan(program("G1 X10.003 Y-2 F1200\nG1 X0 Y5.0031\n"), pc);
-    ServoCore core(config(), t);
+    const Program p = program("G1 X10.003 Y-2 F1200\nG1 X0 Y5.0031\n");
+    const planner::Trajectory t = planner::plan(p, pc);
+    ServoCore core(config(), t, laser_intent(p));
     IdealPlant plant;
     run(core, plant);
     ASSERT_TRUE(core.done());
@@ -155,8 +156,9 @@ TEST(ServoCore, LandingPulsesAreSingleAndSeparatedByTwoStops) {
     // A generator running 3 % slow leaves the axes short at every stop: landing pulses make up the difference.
     planner::PlannerConfig pc;
     pc.mode = planner::BlendMode::ExactStop;
-    const planner::Trajectory t = planner::plan(program("G1 X20 Y10 F3000\n"), pc);
-    ServoCore core(config(), t);
+    const Program p = program("G1 X20 Y10 F3000\n");
+    const planner::Trajectory t = planner::plan(p, pc);
+    ServoCore core(config(), t, laser_intent(p));
     IdealPlant plant(0.97);
     run(core, plant);
     ASSERT_TRUE(core.done());
@@ -181,8 +183,9 @@ TEST(ServoCore, LandingPulsesAreSingleAndSeparatedByTwoStops) {
 TEST(ServoCore, AStandingAxisCorrectsAnyErrorPastHalfAStep) {
     // Y must stay at 0 while X moves; a plant that once loses... here: Y starts 1 step off (count -1 injected).
     planner::PlannerConfig pc;
-    const planner::Trajectory t = planner::plan(program("G1 X20 F600\n"), pc);
-    ServoCore core(config(), t);
+    const Program p = program("G1 X20 F600\n");
+    const planner::Trajectory t = planner::plan(p, pc);
+    ServoCore core(config(), t, laser_intent(p));
     IdealPlant plant;
     plant.m_count[1] = -1;
     std::size_t n = 0;
@@ -196,4 +199,32 @@ TEST(ServoCore, AStandingAxisCorrectsAnyErrorPastHalfAStep) {
     ASSERT_TRUE(fixed.has_value());
     EXPECT_LE(*fixed, 10U);  // long before the move's end (2 s): not left to landing
     EXPECT_EQ(plant.m_count, (std::array<std::int64_t, 2>{3200, 0}));
+}
+
+TEST(ServoCore, LaserBitCoversTheCutsStretchOfPlanOnlyAndIsOffWhileLanding) {
+    // Exact stop; the cut X0->10 at F600 takes 10 / 10 + 10 / 1000 = 1.01 s, the Y move under M5 the same.
+    planner::PlannerConfig pc;
+    pc.mode = planner::BlendMode::ExactStop;
+    const Program p = program("M3 S1000\nG1 X10 F600\nM5\nG1 Y10\n");
+    const planner::Trajectory t = planner::plan(p, pc);
+    ServoCore core(config(), t, laser_intent(p));
+    IdealPlant plant;
+    run(core, plant);
+    ASSERT_TRUE(core.done());
+    const std::vector<PeriodRecord>& log = core.log();
+    std::vector<std::size_t> on;
+    for (std::size_t n = 0; n < log.size(); ++n) {
+        if (!log[n].laser_on) continue;
+        on.push_back(n);
+        EXPECT_EQ(log[n].mode, PeriodMode::Track) << n;
+    }
+    ASSERT_FALSE(on.empty());
+    EXPECT_EQ(on.front(), 1U);  // period 0 holds tau at 0 (nothing to carry yet)
+    EXPECT_EQ(on.back() - on.front() + 1, on.size());  // one stretch
+    // 1.01 s / 1 ms = 1010 periods; the clock adds 1 ms per period in floating point and can reach the rest
+    // point with one more, vanishing step.
+    EXPECT_GE(on.size(), 1010U);
+    EXPECT_LE(on.size(), 1011U);
+    EXPECT_DOUBLE_EQ(log[on.back()].tau_s - log[on.front() - 1].tau_s, 1.01);
+    EXPECT_EQ(log[on.back() + 1].mode, PeriodMode::Land);
 }

@@ -72,10 +72,10 @@ TEST(RateWord, PeriodToTheNearestClockDirectionAndStop) {
     EXPECT_DOUBLE_EQ(signed_rate({0, false}, 50'000'000), 0.0);
 }
 
-TEST(RateWord, RatesBeyondThe31BitPeriodAreStops) {
-    // 50e6 / 0.0233 = 2,145,922,747 clocks fits 2^31 - 1; 50e6 / 0.02328 = 2,147,766,323 does not.
-    EXPECT_EQ(rate_word_for(0.0233, 50'000'000, 101).period_cycles, 2'145'922'747U);
-    EXPECT_EQ(rate_word_for(0.02328, 50'000'000, 101).period_cycles, 0U);
+TEST(RateWord, RatesBeyondThe30BitPeriodAreStops) {
+    // 50e6 / 0.0466 = 1,072,961,373 clocks fits 2^30 - 1; 50e6 / 0.04656 = 1,073,883,161.5 does not.
+    EXPECT_EQ(rate_word_for(0.0466, 50'000'000, 101).period_cycles, 1'072'961'373U);
+    EXPECT_EQ(rate_word_for(0.04656, 50'000'000, 101).period_cycles, 0U);
     EXPECT_EQ(rate_word_for(-1e-9, 50'000'000, 101).period_cycles, 0U);
 }
 

@@ -3,10 +3,10 @@
 namespace cnc::fpga {
 
 CmdFifo::CmdFifo(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg, std::size_t n_axes)
-    : sc_module(name), m_core(cfg.fifo_depth, n_axes) {}
+    : sc_module(name), m_period_ps(clock_period_ps(cfg)), m_core(cfg.fifo_depth, n_axes) {}
 
-bool CmdFifo::push(std::int64_t edge, std::uint64_t seq, const std::vector<spi::AxisRate>& rates) {
-    const bool accepted = m_core.push(edge, seq, rates);
+bool CmdFifo::push(std::int64_t edge, std::uint64_t seq, const spi::Command& command) {
+    const bool accepted = m_core.push(edge, seq, command);
     if (accepted) m_pushed.notify(sc_core::SC_ZERO_TIME);
     return accepted;
 }
@@ -18,6 +18,13 @@ FifoStatus CmdFifo::status_at(std::int64_t edge) const {
 
 bool CmdFifo::readable(std::size_t axis, std::int64_t edge) const { return m_core.readable(axis, edge); }
 
-std::optional<FifoRead> CmdFifo::read(std::size_t axis, std::int64_t edge) { return m_core.read(axis, edge); }
+std::optional<FifoRead> CmdFifo::read(std::size_t axis, std::int64_t edge) {
+    const std::optional<FifoRead> r = m_core.read(axis, edge);
+    if (r && r->frame_applied) {
+        m_applied.push_back({edge, edge * m_period_ps, r->seq, r->laser_on});
+        m_applied_event.notify(sc_core::SC_ZERO_TIME);
+    }
+    return r;
+}
 
 }  // namespace cnc::fpga

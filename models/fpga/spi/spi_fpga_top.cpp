@@ -19,6 +19,7 @@ SpiFpgaTop::SpiFpgaTop(const sc_core::sc_module_name& name, const SpiFpgaConfig&
       dir_x("dir_x"),
       step_y("step_y"),
       dir_y("dir_y"),
+      laser("laser"),
       spi_target("spi_target"),
       m_cfg(validated(cfg)),
       slave("spi_slave", m_cfg, kAxes),
@@ -26,7 +27,8 @@ SpiFpgaTop::SpiFpgaTop(const sc_core::sc_module_name& name, const SpiFpgaConfig&
       pulse_gen_x("pulse_gen_x", m_cfg, 0),
       pulse_gen_y("pulse_gen_y", m_cfg, 1),
       step_counter_x("step_counter_x", m_cfg),
-      step_counter_y("step_counter_y", m_cfg) {
+      step_counter_y("step_counter_y", m_cfg),
+      laser_latch("laser_latch") {
     slave.sclk(sclk);
     slave.mosi(mosi);
     slave.ss(ss);
@@ -46,6 +48,8 @@ SpiFpgaTop::SpiFpgaTop(const sc_core::sc_module_name& name, const SpiFpgaConfig&
     step_counter_x.dir(dir_x);
     step_counter_y.step(step_y);
     step_counter_y.dir(dir_y);
+    laser_latch.fifo(fifo);
+    laser_latch.laser(laser);
 }
 
 const std::vector<AppliedRate>& SpiFpgaTop::applied(std::size_t axis) const {
@@ -58,12 +62,12 @@ std::int32_t SpiFpgaTop::count(std::size_t axis) const {
 
 std::uint64_t SpiFpgaTop::activations() const {
     return slave.activations() + pulse_gen_x.activations() + pulse_gen_y.activations() +
-           step_counter_x.activations() + step_counter_y.activations();
+           step_counter_x.activations() + step_counter_y.activations() + laser_latch.activations();
 }
 
 void SpiFpgaTop::add_traces(sc_core::sc_trace_file* tf) const {
     for (const auto* pin : {&sclk, &mosi, &ss}) sc_core::sc_trace(tf, *pin, pin->name());
-    for (const auto* pin : {&miso, &step_x, &dir_x, &step_y, &dir_y}) sc_core::sc_trace(tf, *pin, pin->name());
+    for (const auto* pin : {&miso, &step_x, &dir_x, &step_y, &dir_y, &laser}) sc_core::sc_trace(tf, *pin, pin->name());
 }
 
 }  // namespace cnc::fpga

@@ -1,5 +1,6 @@
 // spi_fpga_top (seed 004 §2 data path, issue 4): spi_slave -> cmd_fifo -> one pulse_gen per axis, and one
 // step_counter per axis reading the STEP/DIR pins back for the SPI reply. Two axes (X = axis 0, Y = axis 1).
+// laser_latch drives the `laser` pin from the frames' laser bit, switching when a frame's rates all govern.
 // The pins are for the wire path; `spi_target` is the transaction path used by SpiMaster with
 // trace_wires = false. Bind ss to a signal that starts high; every output must be bound.
 #pragma once
@@ -10,6 +11,7 @@
 
 #include "fpga/spi/cmd_fifo.hpp"
 #include "fpga/spi/core/spi_fpga_config.hpp"
+#include "fpga/spi/laser_latch.hpp"
 #include "fpga/spi/pulse_gen.hpp"
 #include "fpga/spi/spi_slave.hpp"
 #include "fpga/spi/step_counter.hpp"
@@ -28,6 +30,7 @@ public:
     sc_core::sc_out<bool> dir_x;
     sc_core::sc_out<bool> step_y;
     sc_core::sc_out<bool> dir_y;
+    sc_core::sc_out<bool> laser;
     sc_core::sc_export<spi::SpiSlaveIf> spi_target;
 
     SpiFpgaTop(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg);
@@ -36,6 +39,7 @@ public:
     [[nodiscard]] const std::vector<SlaveFrameRecord>& frames() const { return slave.frames(); }
     [[nodiscard]] const std::vector<FifoPushRecord>& fifo_pushes() const { return fifo.core().pushes(); }
     [[nodiscard]] const std::vector<AppliedRate>& applied(std::size_t axis) const;
+    [[nodiscard]] const std::vector<AppliedFrame>& applied_frames() const { return fifo.applied(); }
     [[nodiscard]] std::int32_t count(std::size_t axis) const;  // step counter now (all updates so far)
     [[nodiscard]] std::uint64_t activations() const;  // every process wake (per edge, never per clock)
     void add_traces(sc_core::sc_trace_file* tf) const;
@@ -50,6 +54,7 @@ public:  // blocks, named as their RTL modules
     PulseGen pulse_gen_y;
     StepCounter step_counter_x;
     StepCounter step_counter_y;
+    LaserLatch laser_latch;
 };
 
 }  // namespace cnc::fpga

@@ -108,13 +108,13 @@ void SpiSlave::frame_end(const SlaveEvent& e, bool wires) {
     SlaveFrameRecord& r = m_frames.back();
     r.t_end_ps = e.edge * m_period_ps;
     r.mosi_bits = e.mosi_bits;
-    const auto rates = e.mosi_bits == spi::frame_bits(m_axes) ? spi::decode_command(e.mosi, m_axes) : std::nullopt;
-    if (!rates) {
+    const auto command = e.mosi_bits == spi::frame_bits(m_axes) ? spi::decode_command(e.mosi, m_axes) : std::nullopt;
+    if (!command) {
         ++m_rejected;
         return;
     }
     r.accepted = true;
-    r.dropped = !fifo->push(e.edge, r.seq, *rates);
+    r.dropped = !fifo->push(e.edge, r.seq, *command);
 }
 
 }  // namespace cnc::fpga

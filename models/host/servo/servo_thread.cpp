@@ -1,10 +1,17 @@
 #include "host/servo/servo_thread.hpp"
 
+#include <utility>
+
 namespace cnc::host::servo {
 
 ServoThread::ServoThread(const sc_core::sc_module_name& name, const ServoConfig& cfg,
-                         const planner::Trajectory& trajectory, spi::SpiMaster& master)
-    : sc_module(name), m_cfg(cfg), m_core(m_cfg, trajectory), m_latency(cfg.latency, cfg.seed), m_master(master) {
+                         const planner::Trajectory& trajectory, std::vector<bool> laser_intended,
+                         spi::SpiMaster& master)
+    : sc_module(name),
+      m_cfg(cfg),
+      m_core(m_cfg, trajectory, std::move(laser_intended)),
+      m_latency(cfg.latency, cfg.seed),
+      m_master(master) {
     SC_HAS_PROCESS(ServoThread);
     SC_THREAD(run);
 }
@@ -24,9 +31,9 @@ void ServoThread::run() {
             m_t_done_ps = m_wakeups.back().t_ps;
             return;
         }
-        std::vector<spi::AxisRate> words;
-        for (const AxisPeriod& a : rec.axes) words.push_back(a.word);
-        m_master.transfer(spi::encode_command(words, m_cfg.min_period_cycles), reply);
+        spi::Command command{{}, rec.laser_on};
+        for (const AxisPeriod& a : rec.axes) command.axes.push_back(a.word);
+        m_master.transfer(spi::encode_command(command, m_cfg.min_period_cycles), reply);
         feedback = spi::decode_feedback(reply, kAxes);
     }
 }

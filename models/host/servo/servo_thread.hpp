@@ -2,7 +2,7 @@
 // functions on one real-time thread): wakes at n * period + latency_n (core/latency.hpp), runs one period of
 // core/servo_core.hpp with the reply of the previous transfer, and makes this period's full-duplex transfer
 // through the SPI master. The host's computation takes no simulated time. Stops after the period in which
-// the core reports the job done (no transfer then).
+// the core reports the job done (no transfer then). Each frame carries the period's laser bit.
 #pragma once
 #include <optional>
 #include <systemc>
@@ -23,9 +23,10 @@ struct Wakeup {
 
 class ServoThread : public sc_core::sc_module {
 public:
-    // `trajectory` and `master` must outlive the simulation.
+    // `trajectory` and `master` must outlive the simulation; `laser_intended`: one entry per programmed move
+    // (laser_intent(program)).
     ServoThread(const sc_core::sc_module_name& name, const ServoConfig& cfg, const planner::Trajectory& trajectory,
-                spi::SpiMaster& master);
+                std::vector<bool> laser_intended, spi::SpiMaster& master);
 
     [[nodiscard]] const ServoCore& core() const { return m_core; }
     [[nodiscard]] const std::vector<Wakeup>& wakeups() const { return m_wakeups; }  // one per log record

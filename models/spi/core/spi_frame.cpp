@@ -24,7 +24,7 @@ std::uint32_t get_be32(const std::vector<std::uint8_t>& in, std::size_t at) {
 std::string period_error(std::uint64_t period, std::uint32_t min_period_cycles) {
     std::ostringstream s;
     if (period > kMaxPeriodCycles) {
-        s << "period " << period << " clocks does not fit the rate word's 31-bit field (max " << kMaxPeriodCycles
+        s << "period " << period << " clocks does not fit the rate word's 30-bit field (max " << kMaxPeriodCycles
           << " clocks)";
     } else {
         s << "period " << period << " clocks is shorter than the minimum STEP period of " << min_period_cycles
@@ -47,21 +47,31 @@ AxisRate decode_rate_word(std::uint32_t word) {
     return {word & kPeriodMask, (word & kDirForwardBit) != 0};
 }
 
-std::vector<std::uint8_t> encode_command(const std::vector<AxisRate>& axes, std::uint32_t min_period_cycles) {
+std::vector<std::uint8_t> encode_command(const Command& command, std::uint32_t min_period_cycles) {
+    if (command.laser_on && command.axes.empty())
+        throw std::invalid_argument("spi command: a laser bit needs the X rate word to carry it");
     std::vector<std::uint8_t> out;
-    out.reserve(frame_bytes(axes.size()));
+    out.reserve(frame_bytes(command.axes.size()));
     out.push_back(kCmdRates);
-    for (std::size_t i = 0; i < axes.size(); ++i)
-        put_be32(out, encode_rate_word(axes[i], min_period_cycles, "spi: rate word of axis " + std::to_string(i)));
+    for (std::size_t i = 0; i < command.axes.size(); ++i) {
+        std::uint32_t word =
+            encode_rate_word(command.axes[i], min_period_cycles, "spi: rate word of axis " + std::to_string(i));
+        if (i == 0 && command.laser_on) word |= kLaserOnBit;
+        put_be32(out, word);
+    }
     return out;
 }
 
-std::optional<std::vector<AxisRate>> decode_command(const std::vector<std::uint8_t>& bytes, std::size_t n_axes) {
+std::optional<Command> decode_command(const std::vector<std::uint8_t>& bytes, std::size_t n_axes) {
     if (bytes.size() != frame_bytes(n_axes) || bytes[0] != kCmdRates) return std::nullopt;
-    std::vector<AxisRate> axes;
-    axes.reserve(n_axes);
-    for (std::size_t i = 0; i < n_axes; ++i) axes.push_back(decode_rate_word(get_be32(bytes, kHeaderBytes + 4 * i)));
-    return axes;
+    Command command;
+    command.axes.reserve(n_axes);
+    for (std::size_t i = 0; i < n_axes; ++i) {
+        const std::uint32_t word = get_be32(bytes, kHeaderBytes + 4 * i);
+        command.axes.push_back(decode_rate_word(word));
+        if (i == 0) command.laser_on = (word & kLaserOnBit) != 0;
+    }
+    return command;
 }
 
 std::uint8_t encode_status(const SlaveStatus& status) {
@@ -116,7 +126,7 @@ std::uint32_t period_for_rate(double steps_per_s, std::uint32_t clk_hz, std::uin
     s.precision(10);
     if (exact >= static_cast<double>(kMaxPeriodCycles) + 0.5) {
         s << rate << " steps/s needs a period of " << exact << " clocks at " << clk_hz
-          << " Hz, more than the rate word's 31-bit field holds (" << kMaxPeriodCycles
+          << " Hz, more than the rate word's 30-bit field holds (" << kMaxPeriodCycles
           << " clocks; slowest encodable rate " << clk / static_cast<double>(kMaxPeriodCycles) << " steps/s)";
         throw BadInput(where, s.str());
     }

@@ -2,10 +2,12 @@
 // full-duplex transfer carries a command frame on MOSI and a feedback frame on MISO, both 1 + 4 x n_axes
 // bytes, big-endian, MSB first on the wire:
 //   MOSI: [command 0x52] then per axis a 32-bit rate word: bit 31 = direction (1 = forward, DIR pin high),
-//         bits 30..0 = the pulse generator's period in FPGA clocks, 0 = stopped (the direction is then ignored).
+//         bit 30 = laser on in the first (X) word, reserved (sent 0, ignored) in the others, bits 29..0 = the
+//         pulse generator's period in FPGA clocks, 0 = stopped (the direction is then ignored).
 //   MISO: [status] then per axis the signed 32-bit step counter (wraps mod 2^32; the host widens it).
 // A period word rather than a DDS increment (hm2) or a frequency (Remora): the seed's pulse generator counts a
-// period in clocks (§2), so the host does the division and the FPGA needs none.
+// period in clocks (§2), so the host does the division and the FPGA needs none. The laser rides in a bit of the
+// X word, not in a byte of its own, so that the frame stays 9 bytes with the 0x52 header (sigrok decodes that).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -19,8 +21,9 @@ inline constexpr std::uint8_t kCmdRates = 0x52;  // 'R': "apply these rates"; an
 inline constexpr std::size_t kHeaderBytes = 1;
 inline constexpr std::size_t kBytesPerAxis = 4;
 inline constexpr std::uint32_t kDirForwardBit = 0x8000'0000U;
-inline constexpr std::uint32_t kPeriodMask = 0x7FFF'FFFFU;
-inline constexpr std::uint32_t kMaxPeriodCycles = kPeriodMask;  // 42.9 s between steps at 50 MHz
+inline constexpr std::uint32_t kLaserOnBit = 0x4000'0000U;  // in the X word only; reserved in the others
+inline constexpr std::uint32_t kPeriodMask = 0x3FFF'FFFFU;  // bits 29..0
+inline constexpr std::uint32_t kMaxPeriodCycles = kPeriodMask;  // 2^30 - 1: 21.5 s between steps at 50 MHz
 
 // Status byte (first MISO byte), taken when SS falls (see models/fpga/spi/README.md for the edge).
 inline constexpr std::uint8_t kStatusAlive = 0x80;     // always 1: a MISO stuck low (no FPGA) reads 0x00
@@ -34,6 +37,15 @@ struct AxisRate {
     bool forward = true;              // DIR pin level while stepping
     friend bool operator==(const AxisRate& a, const AxisRate& b) {
         return a.period_cycles == b.period_cycles && a.forward == b.forward;
+    }
+};
+
+// One command frame: a rate word per axis and the laser bit (carried in the X word).
+struct Command {
+    std::vector<AxisRate> axes;
+    bool laser_on = false;
+    friend bool operator==(const Command& a, const Command& b) {
+        return a.axes == b.axes && a.laser_on == b.laser_on;
     }
 };
 
@@ -56,17 +68,18 @@ struct Feedback {
 [[nodiscard]] constexpr std::size_t frame_bytes(std::size_t n_axes) { return kHeaderBytes + kBytesPerAxis * n_axes; }
 [[nodiscard]] constexpr std::size_t frame_bits(std::size_t n_axes) { return 8 * frame_bytes(n_axes); }
 
-// Rate word of one axis. BadInput (naming `where` and the numbers) for a period above the 31-bit field or a
-// non-zero period below min_period_cycles (the FPGA's shortest STEP period).
+// Rate word of one axis, bit 30 clear. BadInput (naming `where` and the numbers) for a period above the 30-bit
+// field or a non-zero period below min_period_cycles (the FPGA's shortest STEP period).
 [[nodiscard]] std::uint32_t encode_rate_word(const AxisRate& rate, std::uint32_t min_period_cycles,
                                              const std::string& where = "spi: rate word");
+// Period and direction of a word; bit 30 is not the rate's business.
 [[nodiscard]] AxisRate decode_rate_word(std::uint32_t word);
 
-[[nodiscard]] std::vector<std::uint8_t> encode_command(const std::vector<AxisRate>& axes,
-                                                       std::uint32_t min_period_cycles);
-// nullopt for a frame the FPGA rejects: wrong length or a command byte other than kCmdRates.
-[[nodiscard]] std::optional<std::vector<AxisRate>> decode_command(const std::vector<std::uint8_t>& bytes,
-                                                                  std::size_t n_axes);
+// std::invalid_argument for a laser bit without an X word to carry it (a caller bug).
+[[nodiscard]] std::vector<std::uint8_t> encode_command(const Command& command, std::uint32_t min_period_cycles);
+// nullopt for a frame the FPGA rejects: wrong length or a command byte other than kCmdRates. The laser is bit 30
+// of the X word; bit 30 of the other words is ignored.
+[[nodiscard]] std::optional<Command> decode_command(const std::vector<std::uint8_t>& bytes, std::size_t n_axes);
 
 [[nodiscard]] std::uint8_t encode_status(const SlaveStatus& status);
 [[nodiscard]] SlaveStatus decode_status(std::uint8_t byte);  // fifo_level as sent (saturated)
@@ -81,7 +94,7 @@ struct Feedback {
 // Period in FPGA clocks for |steps_per_s| (the sign is the direction's business): clk_hz / |rate| rounded to
 // the nearest clock (ties away from zero), so the achieved rate is off by at most half a clock per period.
 // 0 steps/s -> 0 (stopped). BadInput with the numbers when the period exceeds kMaxPeriodCycles (rate below
-// clk_hz / 2^31) or is below min_period_cycles (rate above clk_hz / min_period_cycles), or the rate is not finite.
+// clk_hz / (2^30 - 1/2)) or is below min_period_cycles (rate above clk_hz / min_period_cycles), or the rate is not finite.
 [[nodiscard]] std::uint32_t period_for_rate(double steps_per_s, std::uint32_t clk_hz,
                                             std::uint32_t min_period_cycles,
                                             const std::string& where = "spi: rate word");

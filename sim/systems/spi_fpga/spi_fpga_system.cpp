@@ -5,6 +5,7 @@
 #include "common/bad_input.hpp"
 #include "fpga/spi/spi_fpga_top.hpp"
 #include "host/core/planner/planner.hpp"
+#include "host/servo/core/laser_bit.hpp"
 #include "host/servo/servo_thread.hpp"
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
@@ -26,7 +27,7 @@ struct Wires {
     sc_core::sc_signal<bool> step_x{"step_x", false}, dir_x{"dir_x", false};
     sc_core::sc_signal<bool> step_y{"step_y", false}, dir_y{"dir_y", false};
     sc_core::sc_signal<bool> n_enbl{"n_enbl", false};  // the FPGA drives no EN pin: drivers always enabled
-    sc_core::sc_signal<bool> laser{"laser", false};    // seed 004's FPGA has no laser output
+    sc_core::sc_signal<bool> laser{"laser", false};    // the FPGA's laser_latch (the frame's laser bit)
 };
 
 host::servo::ServoConfig servo_config(const Scenario& s) {
@@ -71,8 +72,10 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     fpga.dir_x(w.dir_x);
     fpga.step_y(w.step_y);
     fpga.dir_y(w.dir_y);
+    fpga.laser(w.laser);
     master.target(fpga.spi_target);
-    host::servo::ServoThread host("host", servo_config(s), *trajectory, master);
+    host::servo::ServoThread host("host", servo_config(s), *trajectory, host::servo::laser_intent(*job.program),
+                                  master);
     Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);
     machine.step_x(w.step_x);
     machine.dir_x(w.dir_x);
@@ -83,7 +86,9 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     machine.laser(w.laser);
 
     EdgeRecorder rec("probes");
-    for (const sc_core::sc_signal<bool>* sig : {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y}) rec.watch(*sig, sig->basename());
+    for (const sc_core::sc_signal<bool>* sig : {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser}) {
+        rec.watch(*sig, sig->basename());
+    }
     if (link.trace_wires) {
         for (const sc_core::sc_signal<bool>* sig : {&w.sclk, &w.mosi, &w.miso, &w.ss}) rec.watch(*sig, sig->basename());
     }
@@ -91,7 +96,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     if (!s.vcd_path.empty()) {
         vcd = std::make_unique<VcdTrace>(s.vcd_path);
         for (const sc_core::sc_signal<bool>* sig :
-             {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.sclk, &w.mosi, &w.miso, &w.ss}) {
+             {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser, &w.sclk, &w.mosi, &w.miso, &w.ss}) {
             vcd->trace(*sig);
         }
     }
@@ -108,6 +113,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
                metrics::AxisTrace{"y", rec.log("step_y"), rec.log("dir_y"), s.machine.y.steps_per_mm(), true}};
     in.moves = planned_moves(*job.program, *trajectory, core);
     in.tool = machine.carriage().samples();
+    in.laser = rec.log("laser");
     in.t_job_start_ps = 0;
     in.t_job_end_ps = host.t_done_ps().value_or(static_cast<TimePs>(sc_core::sc_time_stamp().value()));
     in.commanded = commanded_trajectory(trajectory, core);

@@ -25,8 +25,8 @@ std::uint32_t CmdFifoCore::level_at(std::int64_t edge) const {
     return level;
 }
 
-bool CmdFifoCore::push(std::int64_t edge, std::uint64_t seq, const std::vector<spi::AxisRate>& rates) {
-    if (rates.size() != m_axes) throw std::logic_error("cmd_fifo: frame with the wrong number of axes");
+bool CmdFifoCore::push(std::int64_t edge, std::uint64_t seq, const spi::Command& command) {
+    if (command.axes.size() != m_axes) throw std::logic_error("cmd_fifo: frame with the wrong number of axes");
     forget(edge);
     const std::uint32_t level = level_at(edge);
     const bool full = level >= m_depth;
@@ -35,7 +35,7 @@ bool CmdFifoCore::push(std::int64_t edge, std::uint64_t seq, const std::vector<s
         ++m_dropped;
         return false;
     }
-    m_entries.push_back({m_next_index++, seq, edge, rates, std::vector<std::int64_t>(m_axes, -1)});
+    m_entries.push_back({m_next_index++, seq, edge, command, std::vector<std::int64_t>(m_axes, -1)});
     m_max_level = std::max(m_max_level, level + 1);
     return true;
 }
@@ -57,7 +57,8 @@ std::optional<FifoRead> CmdFifoCore::read(std::size_t axis, std::int64_t edge) {
     auto& e = m_entries[m_read_index[axis] - m_entries.front().index];
     e.read_edge[axis] = edge;
     ++m_read_index[axis];
-    return FifoRead{e.seq, e.rates[axis]};
+    const bool applied = std::all_of(e.read_edge.begin(), e.read_edge.end(), [](std::int64_t r) { return r >= 0; });
+    return FifoRead{e.seq, e.command.axes[axis], applied, e.command.laser_on};
 }
 
 std::uint64_t CmdFifoCore::drops_before(std::int64_t edge) const {

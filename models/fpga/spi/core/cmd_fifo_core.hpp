@@ -1,6 +1,7 @@
 // cmd_fifo bookkeeping (seed 004 §2 FIFO bus between the SPI slave and the pulse generators): one write port
 // (whole frames, written by the slave) and one read port per axis (each generator takes its own rate word
-// of the oldest frame it has not read). An entry is freed once every axis has read it. Register timing:
+// of the oldest frame it has not read). An entry is freed once every axis has read it: from that edge the whole
+// frame governs, and its laser bit goes to laser_latch (the read says so). Register timing:
 //   a frame written at edge p is readable from edge p + 1;
 //   the writer sees the level as of its edge x: frames written before x and not freed before x (a read at
 //   edge r frees the slot for writes from edge r + 1);
@@ -21,6 +22,8 @@ namespace cnc::fpga {
 struct FifoRead {
     std::uint64_t seq = 0;  // the frame's number (SpiSlave's frame log index)
     spi::AxisRate rate;
+    bool frame_applied = false;  // this was the frame's last unread word: every axis now runs on it
+    bool laser_on = false;       // the frame's laser bit
 };
 
 struct FifoPushRecord {
@@ -35,7 +38,7 @@ public:
     CmdFifoCore(std::size_t depth, std::size_t n_axes);
 
     // false: full at `edge`, frame dropped.
-    bool push(std::int64_t edge, std::uint64_t seq, const std::vector<spi::AxisRate>& rates);
+    bool push(std::int64_t edge, std::uint64_t seq, const spi::Command& command);
     [[nodiscard]] bool readable(std::size_t axis, std::int64_t edge) const;
     // The axis's oldest unread rate word written before `edge`, marked read at `edge`.
     std::optional<FifoRead> read(std::size_t axis, std::int64_t edge);
@@ -52,7 +55,7 @@ private:
         std::uint64_t index = 0;  // position in the stream of accepted frames
         std::uint64_t seq = 0;
         std::int64_t push_edge = 0;
-        std::vector<spi::AxisRate> rates;
+        spi::Command command;
         std::vector<std::int64_t> read_edge;  // per axis, -1 while unread
     };
     [[nodiscard]] bool freed_before(const Entry& e, std::int64_t edge) const;

@@ -23,7 +23,7 @@ void validate(const SpiFpgaConfig& cfg) {
             "must divide 1e12 so that a clock period is a whole number of ps");
     require(cfg.fifo_depth >= 1, "fpga: fifo_depth", "must be >= 1");
     require(cfg.pulse_cycles >= 1 && cfg.pulse_cycles < spi::kMaxPeriodCycles, "fpga: pulse_cycles",
-            "must be in 1..2^31-2");
+            "must be in 1..2^30-2 (the rate word's period field is 30 bits)");
     require(cfg.dir_setup_cycles >= 1, "fpga: dir_setup_cycles", "must be >= 1");
     require(cfg.dir_hold_cycles >= 1, "fpga: dir_hold_cycles", "must be >= 1");
 }

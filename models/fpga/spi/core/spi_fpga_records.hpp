@@ -1,4 +1,5 @@
-// What the spi-fpga FPGA logs for reports: frames seen by the SPI slave and rate words applied per axis.
+// What the spi-fpga FPGA logs for reports: frames seen by the SPI slave, rate words applied per axis, and the
+// frames applied as a whole (with their laser bit).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -25,6 +26,14 @@ struct AppliedRate {
     std::uint64_t seq = 0;  // frame it came from
     spi::AxisRate rate;
     bool stretched = false;  // period below pulse + 1, raised to it
+};
+
+// A frame whose rate words every axis has loaded: it governs from this edge, and laser_latch takes its laser bit.
+struct AppliedFrame {
+    std::int64_t edge = 0;
+    TimePs t_ps = 0;
+    std::uint64_t seq = 0;
+    bool laser_on = false;
 };
 
 }  // namespace cnc::fpga

@@ -7,8 +7,8 @@
 
 namespace cnc::host::servo {
 
-// A rate whose period would not fit the word's 31-bit field (below clk / (2^31 - 1/2): 0.023 steps/s at 50 MHz,
-// one step in 42.9 s) is sent as 0 = stopped, so the law's vanishing rates stop the axis. The caller keeps
+// A rate whose period would not fit the word's 30-bit field (below clk / (2^30 - 1/2): 0.047 steps/s at 50 MHz,
+// one step in 21.5 s) is sent as 0 = stopped, so the law's vanishing rates stop the axis. The caller keeps
 // |rate| <= clk / min_period_cycles (the scenario refuses a velocity limit beyond it).
 [[nodiscard]] spi::AxisRate rate_word_for(double steps_per_s, std::uint32_t clk_hz, std::uint32_t min_period_cycles);
 // The same, but keeps `previous` (same direction, running) while clk / |rate| is within half a clock of its period

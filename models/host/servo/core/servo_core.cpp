@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "host/servo/core/rate_word.hpp"
 
@@ -39,12 +40,14 @@ std::vector<double> rest_points(const planner::Trajectory& trajectory) {
     return out;
 }
 
-ServoCore::ServoCore(const ServoConfig& cfg, const planner::Trajectory& trajectory)
+ServoCore::ServoCore(const ServoConfig& cfg, const planner::Trajectory& trajectory,
+                     std::vector<bool> laser_intended)
     : m_cfg(cfg),
       m_traj(trajectory),
       m_period_s(period_s(cfg)),
       m_land_period_cycles(landing_period_cycles(cfg)),
-      m_rest_s(rest_points(trajectory)) {
+      m_rest_s(rest_points(trajectory)),
+      m_laser(trajectory, std::move(laser_intended)) {
     for (std::size_t a = 0; a < kAxes; ++a) m_params[a] = stepgen_params(cfg, a);
     for (const double r : m_rest_s) {
         const std::array<double, kAxes> p = position_steps(m_traj.at(r).pos_mm);
@@ -91,8 +94,10 @@ const PeriodRecord& ServoCore::step(const std::optional<spi::Feedback>& feedback
         const std::array<double, kAxes> at = position_steps(m_traj.at(m_tau_s).pos_mm);
         for (std::size_t a = 0; a < kAxes; ++a) m_law[a] = StepgenState{at[a], 0.0};
     }
+    const double tau_prev = m_tau_s;
     if (rec.n > 0) m_tau_s = std::min(m_tau_s + m_period_s, m_rest_s[m_rest_index]);
     track(rec);
+    rec.laser_on = m_laser.next(tau_prev, m_tau_s);
     if (m_tau_s >= m_rest_s[m_rest_index]) m_landing = true;
     return finish(rec);
 }
@@ -123,6 +128,7 @@ bool ServoCore::count_is_exact(std::size_t axis) const {
 
 bool ServoCore::land(PeriodRecord& rec) {
     rec.mode = PeriodMode::Land;
+    rec.laser_on = m_laser.next(m_tau_s, m_tau_s);  // the clock is held: off
     const std::array<std::int64_t, kAxes>& target = m_targets[m_rest_index];
     bool all_landed = true;
     for (std::size_t a = 0; a < kAxes; ++a) {

@@ -37,6 +37,8 @@
 //     target, and landing ends with count == target exactly, with any latency.
 //  5. When every axis has landed on the last rest point the job is done: step() returns Done and the shell
 //     stops transferring.
+//  6. Laser (laser_bit.hpp): the frame's laser bit is the job's intent over the stretch of plan the clock crossed
+//     this period; off while landing (the clock is held) and at rest.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -44,6 +46,7 @@
 #include <vector>
 
 #include "host/core/planner/trajectory.hpp"
+#include "host/servo/core/laser_bit.hpp"
 #include "host/servo/core/servo_config.hpp"
 #include "host/servo/core/stepgen_law.hpp"
 #include "host/servo/core/trajectory_clock.hpp"
@@ -69,6 +72,7 @@ struct PeriodRecord {
     PeriodMode mode = PeriodMode::Track;
     std::uint32_t fifo_level = 0;      // of the feedback used
     std::array<AxisPeriod, kAxes> axes{};
+    bool laser_on = false;             // sent this period (the frame's laser bit)
 };
 
 struct ServoStats {
@@ -81,7 +85,8 @@ struct ServoStats {
 
 class ServoCore {
 public:
-    ServoCore(const ServoConfig& cfg, const planner::Trajectory& trajectory);
+    // `laser_intended`: one entry per programmed move (laser_intent(program)).
+    ServoCore(const ServoConfig& cfg, const planner::Trajectory& trajectory, std::vector<bool> laser_intended);
 
     // One servo period. `feedback`: the reply of the previous transfer (nullopt in the first period).
     const PeriodRecord& step(const std::optional<spi::Feedback>& feedback);
@@ -113,6 +118,7 @@ private:
     std::array<StepgenParams, kAxes> m_params{};
     std::vector<double> m_rest_s;
     std::vector<std::array<std::int64_t, kAxes>> m_targets;
+    LaserBit m_laser;
 
     std::size_t m_rest_index = 0;
     double m_tau_s = 0.0;

@@ -19,6 +19,8 @@ struct ArchRun {
     std::vector<std::string> warnings;
     bool ok = true;
     std::string failure;
+    double estimated_s = 0.0;  // the job's estimate and the simulated-time limit the run had (run/simulate.hpp)
+    double max_sim_s = 0.0;
 };
 
 }  // namespace cnc::sim

@@ -12,13 +12,15 @@ namespace cnc::sim {
 
 namespace {
 
-nlohmann::json scenario_json(const Scenario& s) {
+nlohmann::json scenario_json(const Scenario& s, const ArchRun& arch) {
     return {{"name", s.name},
             {"file", s.file},
             {"architecture", s.architecture},
             {"job", s.job_path},
             {"seed", s.seed},
-            {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}}};
+            {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}},
+            {"estimated_s", arch.estimated_s},
+            {"max_sim_s", arch.max_sim_s}};
 }
 
 }  // namespace
@@ -39,7 +41,7 @@ RunOutcome run_scenario(const Scenario& s) {
 
     out.ok = arch.ok;
     out.failure = arch.failure;
-    out.report = {{"scenario", scenario_json(s)},
+    out.report = {{"scenario", scenario_json(s, arch)},
                   {"metrics", metrics::to_json(m)},
                   {s.architecture, arch.details},
                   {"warnings", arch.warnings},

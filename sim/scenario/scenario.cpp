@@ -111,8 +111,12 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     const std::string format = r.get_choice("scenario.job_format", "auto", {"auto", "gcode", "steps"},
                                             "job format; auto: .steps and .csv are steps files, the rest G-code");
     s.seed = static_cast<std::uint64_t>(r.get_int("scenario.seed", 1, 0, INT64_MAX, "seed of every random source"));
-    s.max_sim_s = r.get_float("scenario.max_sim_s", s.max_sim_s, 0.001, 1e6,
-                              "simulated-time limit, s: a run that needs longer fails");
+    const double max_sim_s = r.get_float(
+        "scenario.max_sim_s", 0.0, 0.0, 1e6,
+        "simulated-time limit, s: a run that needs longer fails; 0: from the job, 2 x its estimate + 1 s per "
+        "programmed move + 10 s (estimate: host start-up and link time plus every move's length at its feed, "
+        "held to what the axes can do; run/job_estimate.hpp)");
+    if (max_sim_s > 0.0) s.max_sim_s = max_sim_s;
     s.interpreter.start_mm.x_mm = r.get_float("scenario.start_x_mm", 0.0, -1e6, 1e6, "tool X at job start, mm");
     s.interpreter.start_mm.y_mm = r.get_float("scenario.start_y_mm", 0.0, -1e6, 1e6, "tool Y at job start, mm");
 

@@ -1,4 +1,6 @@
 // cncsim: the command line (DESIGN.md §6). Exit codes: 0 ok, 1 run failed, 2 bad input.
+#include <unistd.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -29,10 +31,11 @@ void write_json(const std::string& path, const nlohmann::json& j) {
 }
 
 int cmd_run(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& vcd,
-            const std::string& report) {
+            const std::string& report, bool progress) {
     cnc::sim::Scenario s = cnc::sim::load_scenario(scenario_path, sets);
     if (!vcd.empty()) s.vcd_path = vcd;
     if (!report.empty()) s.report_path = report;
+    if (progress) s.progress = isatty(STDERR_FILENO) ? cnc::sim::ProgressStyle::Terminal : cnc::sim::ProgressStyle::Log;
     const cnc::sim::RunOutcome out = cnc::sim::run_scenario(s);
     std::cout << out.summary;
     if (!s.report_path.empty()) write_json(s.report_path, out.report);
@@ -105,6 +108,9 @@ int sc_main(int argc, char* argv[]) {
     run->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
     run->add_option("--vcd", vcd, "write a VCD trace to this file");
     run->add_option("--report", report, "write the JSON report to this file");
+    bool no_progress = false;
+    run->add_flag("--no-progress", no_progress,
+                  "no progress on stderr (otherwise shown for runs over a second of wall time)");
 
     CLI::App* analyze = app.add_subcommand("analyze", "pulse metrics of any VCD (simulated or captured)");
     analyze->add_option("vcd", vcd_in, "VCD file")->required();
@@ -134,7 +140,7 @@ int sc_main(int argc, char* argv[]) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
     try {
-        if (run->parsed()) return cmd_run(scenario, sets, vcd, report);
+        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, !no_progress);
         if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report);
         if (analyze->parsed()) return cmd_analyze(vcd_in, step, dir, steps_per_mm, report);
         return cmd_keys();

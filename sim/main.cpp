@@ -1,4 +1,6 @@
 // cncsim: the command line (DESIGN.md §6). Exit codes: 0 ok, 1 run failed, 2 bad input.
+#include <unistd.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -29,11 +31,12 @@ void write_json(const std::string& path, const nlohmann::json& j) {
 }
 
 int cmd_run(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& vcd,
-            const std::string& report, bool detail) {
+            const std::string& report, bool detail, bool progress) {
     cnc::sim::Scenario s = cnc::sim::load_scenario(scenario_path, sets);
     if (detail) s.detail = true;
     if (!vcd.empty()) s.vcd_path = vcd;
     if (!report.empty()) s.report_path = report;
+    if (progress) s.progress = isatty(STDERR_FILENO) ? cnc::sim::ProgressStyle::Terminal : cnc::sim::ProgressStyle::Log;
     const cnc::sim::RunOutcome out = cnc::sim::run_scenario(s);
     std::cout << out.summary;
     if (!s.report_path.empty()) write_json(s.report_path, out.report);
@@ -108,6 +111,9 @@ int sc_main(int argc, char* argv[]) {
     run->add_option("--vcd", vcd, "write a VCD trace to this file");
     run->add_option("--report", report, "write the JSON report to this file");
     run->add_flag("--detail", detail, "the report also holds the per-period, per-packet and per-run logs");
+    bool no_progress = false;
+    run->add_flag("--no-progress", no_progress,
+                  "no progress on stderr (otherwise shown for runs over a second of wall time)");
 
     CLI::App* analyze = app.add_subcommand("analyze", "pulse metrics of any VCD (simulated or captured)");
     analyze->add_option("vcd", vcd_in, "VCD file")->required();
@@ -137,7 +143,7 @@ int sc_main(int argc, char* argv[]) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
     try {
-        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail);
+        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, !no_progress);
         if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report);
         if (analyze->parsed()) return cmd_analyze(vcd_in, step, dir, steps_per_mm, report);
         return cmd_keys();

@@ -11,6 +11,7 @@ inline constexpr TimePs kPsPerNs = 1'000;
 inline constexpr TimePs kPsPerUs = 1'000'000;
 inline constexpr TimePs kPsPerMs = 1'000'000'000;
 inline constexpr TimePs kPsPerSec = 1'000'000'000'000;
+inline constexpr double kSecondsPerMinute = 60.0;  // feeds are mm/min (G94), speeds mm/s
 
 // Time of `cycles` ticks of a clock of `clk_hz`, rounded down to the picosecond. Exact for clocks whose
 // period is a whole number of ps (50 MHz -> 20 000 ps, 16 MHz -> 62 500 ps); for others (the CP2102's

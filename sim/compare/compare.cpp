@@ -7,10 +7,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -92,7 +94,9 @@ std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::s
     std::vector<CompareColumn> columns;
     for (const std::string& arch : architectures) {
         const fs::path report = dir / (arch + ".json");
-        std::vector<std::string> args = {self_exe, "run", scenario, "--set", "scenario.architecture=" + arch};
+        // The children's own progress lines would interleave on the shared stderr: the parent reports instead.
+        std::vector<std::string> args = {self_exe, "run", scenario, "--no-progress", "--set",
+                                         "scenario.architecture=" + arch};
         for (const std::string& s : sets) {
             args.push_back("--set");
             args.push_back(s);
@@ -101,7 +105,12 @@ std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::s
         args.push_back(report.string());
         CompareColumn c;
         c.architecture = arch;
+        std::cerr << "cncsim compare: " << arch << " running" << std::endl;
+        const auto start = std::chrono::steady_clock::now();
         c.exit_code = spawn_and_wait(args);
+        const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+        std::cerr << "cncsim compare: " << arch << " " << status(c) << format(" after %.1f s", wall.count())
+                  << std::endl;
         std::ifstream in(report);
         if (in) c.report = nlohmann::json::parse(in);
         columns.push_back(std::move(c));

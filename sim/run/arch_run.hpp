@@ -20,6 +20,8 @@ struct ArchRun {
     std::vector<Warning> warnings;  // grouped by kind in the reports (run.cpp)
     bool ok = true;
     std::string failure;
+    double estimated_s = 0.0;  // the job's estimate and the simulated-time limit the run had (run/simulate.hpp)
+    double max_sim_s = 0.0;
 };
 
 }  // namespace cnc::sim

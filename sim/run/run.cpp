@@ -13,14 +13,16 @@ namespace cnc::sim {
 
 namespace {
 
-nlohmann::json scenario_json(const Scenario& s) {
+nlohmann::json scenario_json(const Scenario& s, const ArchRun& arch) {
     return {{"name", s.name},
             {"file", s.file},
             {"architecture", s.architecture},
             {"job", s.job_path},
             {"seed", s.seed},
             {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}},
-            {"detail", s.detail}};
+            {"detail", s.detail},
+            {"estimated_s", arch.estimated_s},
+            {"max_sim_s", arch.max_sim_s}};
 }
 
 // One entry per kind (common/warning.hpp); with `detail` also every warning of the kind, as worded one by one.
@@ -61,7 +63,7 @@ RunOutcome run_scenario(const Scenario& s) {
 
     out.ok = arch.ok;
     out.failure = arch.failure;
-    out.report = {{"scenario", scenario_json(s)},
+    out.report = {{"scenario", scenario_json(s, arch)},
                   {"metrics", metrics::to_json(m, s.detail)},
                   {s.architecture, arch.details},
                   {"warnings", warnings_json(arch.warnings, s.detail)},

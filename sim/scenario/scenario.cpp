@@ -109,8 +109,12 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     const std::string format = r.get_choice("scenario.job_format", "auto", {"auto", "gcode", "steps"},
                                             "job format; auto: .steps and .csv are steps files, the rest G-code");
     s.seed = static_cast<std::uint64_t>(r.get_int("scenario.seed", 1, 0, INT64_MAX, "seed of every random source"));
-    s.max_sim_s = r.get_float("scenario.max_sim_s", s.max_sim_s, 0.001, 1e6,
-                              "simulated-time limit, s: a run that needs longer fails");
+    const double max_sim_s = r.get_float(
+        "scenario.max_sim_s", 0.0, 0.0, 1e6,
+        "simulated-time limit, s: a run that needs longer fails; 0: from the job, 2 x its estimate + 1 s per "
+        "programmed move + 10 s (estimate: host start-up and link time plus every move's length at its feed, "
+        "held to what the axes can do; run/job_estimate.hpp)");
+    if (max_sim_s > 0.0) s.max_sim_s = max_sim_s;
     s.interpreter.policy =
         r.get_choice("scenario.gcode_policy", "lenient", {"lenient", "strict"},
                      "lenient: run what the machine can do and list the words it ignores; strict: every word the "

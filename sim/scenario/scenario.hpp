@@ -2,6 +2,7 @@
 // Loaded from TOML (DESIGN.md §5), overridden by --set, validated in one place (scenario.cpp).
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "host/core/machine.hpp"
 #include "host/sender.hpp"
 #include "mechanics/drv8825.hpp"
+#include "run/progress.hpp"
 #include "scenario/atmega_settings.hpp"
 #include "scenario/key_reader.hpp"
 #include "scenario/spi_fpga_settings.hpp"
@@ -28,7 +30,7 @@ struct Scenario {
     std::string job_path;       // resolved against the scenario's folder
     JobFormat job_format = JobFormat::GCode;
     std::uint64_t seed = 1;
-    double max_sim_s = 3600.0;
+    std::optional<double> max_sim_s;  // set by the scenario; else the job's own limit (run/job_estimate.hpp)
 
     host::MachineModel machine;
     host::InterpreterOptions interpreter;
@@ -45,6 +47,7 @@ struct Scenario {
     std::string vcd_path;       // empty: no VCD
     std::string report_path;    // empty: no JSON file
     bool detail = false;        // the report also holds the logs that grow with steps, periods and packets
+    ProgressStyle progress = ProgressStyle::Off;  // set by the CLI from stderr, not a scenario key
 };
 
 // Reads and validates; throws BadInput naming the file, line and key.

@@ -1,6 +1,7 @@
 #include "systems/fpga_uart_system.hpp"
 
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -11,6 +12,7 @@
 #include "host/sender.hpp"
 #include "probes/edge_recorder.hpp"
 #include "run/moves.hpp"
+#include "run/simulate.hpp"
 #include "systems/dead_time.hpp"
 #include "systems/machine.hpp"
 #include "probes/vcd_trace.hpp"
@@ -117,6 +119,41 @@ void fpga_warnings(const fpga::Top& top, const std::vector<fpga::PacketRecord>& 
     }
 }
 
+// The fpga-uart side of the job estimate: send_steps.py's settle and init gap, then per packet its trip over
+// the link: the host's work and write latency, the USB frames out and in, the driver latency, and the packet
+// and its ACK on the line (4.3 ms at 115200 Bd; the README's dead-time table measures 4.35 ms per gap).
+ArchPace pace(const Scenario& s, std::size_t packets) {
+    constexpr double kBitsPerByte = 10.0;  // 8N1
+    constexpr double kTripBytes = host::kMotionPacketBytes + 1.0;  // the packet and its ACK
+    ArchPace p;
+    p.startup_s = ps_to_s(s.sender.settle_ps + s.sender.init_gap_ps);
+    const double trip_s =
+        ps_to_s(s.sender.packet_processing_ps + s.sender.write_latency_ps + 2 * s.link.usb_frame_ps +
+                s.link.usb_latency_ps) +
+        kTripBytes * kBitsPerByte / static_cast<double>(s.link.requested_baud);
+    p.link_s = static_cast<double>(packets) * trip_s;
+    return p;
+}
+
+// A steps file has no programmed moves: its packets, as the straight lines they are, at the speed step_gen
+// runs them (so also a FeedRate 0 row of host.allow_feed_zero).
+host::Program packet_moves(const std::vector<host::MotionSegment>& rows, const Packets& packets,
+                           const std::string& file) {
+    host::Program program{file, {}};
+    geom::Vec2 at{};
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const geom::Vec2 to = at + geom::Vec2{rows[i].dx_mm, rows[i].dy_mm};
+        const double run_s = ps_to_s(packets.motion[i].expected_run_ps);
+        // A packet step_gen does not run (no steps, or a period of 0) takes no time at any feed.
+        const double feed_mm_per_min =
+            run_s > 0.0 ? geom::distance(at, to) / run_s * kSecondsPerMinute : std::numeric_limits<double>::infinity();
+        program.moves.push_back({rows[i].motion, geom::Segment::line(at, to), feed_mm_per_min,
+                                 rows[i].motion != host::MotionKind::Rapid, rows[i].line});
+        at = to;
+    }
+    return program;
+}
+
 nlohmann::json packet_json(const fpga::PacketRecord& r) {
     return {{"t_pkt_valid_s", ps_to_s(r.t_pkt_valid_ps)},
             {"motion", r.motion},
@@ -178,12 +215,13 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         trace_wires(*vcd, w);
     }
 
-    const sc_core::sc_time limit = sc_core::sc_time::from_value(
-        static_cast<sc_dt::uint64>(s.max_sim_s * static_cast<double>(kPsPerSec)));
-    sc_core::sc_start(limit, sc_core::SC_EXIT_ON_STARVATION);
+    const host::Program moves_run = job.program ? *job.program : packet_moves(segments, packets, s.job_path);
+    const RunBudget budget = run_budget(s, estimate_job(moves_run, pace(s, segments.size())));
+    const SimulationEnd end = simulate(budget);
     vcd.reset();
 
     ArchRun run;
+    record_budget(budget, run);
     const std::vector<fpga::PacketRecord> records = fpga.packets();
     const host::Program* program = job.program ? &*job.program : nullptr;
     std::vector<metrics::MoveSpec> moves = commanded_moves(program, segments, s.machine, s.interpreter.start_mm);
@@ -263,7 +301,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
             "ACK timeout at " + sender.abort_reason() + "; send_steps.py stops here (host.on_timeout = abort)";
     } else if (!sender.finished()) {
         run.ok = false;
-        run.failure = "the job did not finish within scenario.max_sim_s";
+        run.failure = "the job did not finish: " + time_limit_text(budget, end);
     }
     return run;
 }

@@ -194,3 +194,20 @@ TEST(AtmegaJobs, SixSegmentCountsWhatTheFirmwareCounts) {
     EXPECT_NEAR(*out.metrics.moves[3].path.endpoint_vs_command_um, (4132 - 3864) * 6.25, 1e-6);
     EXPECT_EQ(*out.metrics.laser->on_in_rapid_ms, 0.0);
 }
+
+// A link at the wrong rate stalls the job; without scenario.max_sim_s the job's own limit stops the run.
+TEST(AtmegaStall, TheJobsOwnLimitStopsAStalledRunAndSaysSo) {
+    const auto out = run_atmega("baud_mismatch", {"scenario.max_sim_s=0"});
+    EXPECT_FALSE(out.ok);
+    // G1 X20 Y20 F1000: 28.28 mm at 16.67 mm/s; 0.3 s settle; 7 bytes (G01 and M30), each with a 0.1 ms write,
+    // two 1 ms USB frames, 1 ms driver latency, and itself and its confirm at 51200 Bd; 0.2 ms per transfer.
+    const double expected_s =
+        std::sqrt(800.0) / (1000.0 / 60.0) + 0.3 + 7 * (0.1e-3 + 2e-3 + 1e-3 + 20 / 51200.0) + 2 * 0.2e-3;
+    const double limit_s = 2 * expected_s + 1 + 10;
+    EXPECT_NEAR(out.report.at("scenario").at("estimated_s").get<double>(), expected_s, 1e-9);
+    EXPECT_NEAR(out.report.at("scenario").at("max_sim_s").get<double>(), limit_s, 1e-9);
+    // The garbled confirms let CAD2G send everything; the firmware, fed garbage, never reaches M30.
+    EXPECT_EQ(out.failure,
+              "the firmware did not reach M30: stopped at 15.044 s of simulated time by this job's limit, 15.044 s = "
+              "2 x 2.022 s + 1 s x 1 moves + 10 s from its 2.022 s estimate; set scenario.max_sim_s higher");
+}

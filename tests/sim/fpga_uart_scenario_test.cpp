@@ -245,3 +245,30 @@ TEST(FpgaUartLongMove, TimeoutOfALostPacketSaysSo) {
         << out.failure;
     EXPECT_NE(out.failure.find("the packet or its ACK was lost"), std::string::npos) << out.failure;
 }
+
+// The 20 mm square's estimate: its moves at their feeds, send_steps.py's start-up and six packet trips.
+TEST(FpgaUartEstimate, SquareEstimateAndDefaultLimit) {
+    const auto out = run_shipped("square_20mm");
+    ASSERT_TRUE(out.ok) << out.failure;
+    // Two 14.14 mm rapids at 1200 mm/min and four 20 mm sides at F800; 0.3 s settle and 0.05 s after the init
+    // packet; per packet 0.2 ms host work, 0.1 ms write latency, two 1 ms USB frames, 1 ms driver latency and
+    // 12 bytes (packet and ACK) of 10 bits at 115200 Bd.
+    const double trip_s = 0.2e-3 + 0.1e-3 + 2 * 1e-3 + 1e-3 + 12 * 10 / 115200.0;
+    const double expected_s = 2 * std::sqrt(200.0) / 20.0 + 4 * 20.0 / (800.0 / 60.0) + 0.35 + 6 * trip_s;
+    const auto& sc = out.report.at("scenario");
+    EXPECT_NEAR(sc.at("estimated_s").get<double>(), expected_s, 1e-9);
+    EXPECT_NEAR(sc.at("max_sim_s").get<double>(), 2 * expected_s + 6 * 1.0 + 10.0, 1e-9);
+    // the run itself is within 0.1 % of it (the FPGA's integer periods and the USB frame phases)
+    EXPECT_NEAR(out.metrics.timing.job_time_s, expected_s, 1e-3 * expected_s);
+}
+
+TEST(FpgaUartEstimate, ALimitSetInTheScenarioIsUsedAndNamed) {
+    const auto out = run_shipped("square_20mm", {"scenario.max_sim_s=1"});
+    EXPECT_FALSE(out.ok);
+    EXPECT_EQ(out.report.at("scenario").at("max_sim_s"), 1.0);
+    EXPECT_EQ(out.failure.rfind("the job did not finish: stopped at ", 0), 0U) << out.failure;
+    EXPECT_NE(out.failure.find(" s of simulated time by scenario.max_sim_s = 1 s (this job's estimate: 7.790 s); "
+                               "raise scenario.max_sim_s"),
+              std::string::npos)
+        << out.failure;
+}

@@ -241,3 +241,16 @@ TEST(SpiFpgaAtNextPulse, FramesDropButTheJobStillEndsOnTheTarget) {
     EXPECT_NE(out.arch.warnings.front().text.find("rate frames dropped by the full FIFO"), std::string::npos);
     EXPECT_EQ(*out.metrics.path.job_end_um, 0.0);
 }
+
+// The estimate holds every move to rest at both ends: the exact-stop square runs within it.
+TEST(SpiFpgaEstimate, ExactStopSquareRunsWithinItsEstimate) {
+    const auto out = run_spi("square_exact_stop");
+    ASSERT_TRUE(out.ok) << out.failure;
+    // Rapids of 14.14 mm at 1200 mm/min (20 mm/s) and sides of 20 mm at F800 (13.33 mm/s), each plus one
+    // speed change from rest at half the 1000 mm/s^2 axis limit (trapezoidal): v / 500 mm/s^2.
+    const double rapid_s = std::sqrt(200.0) / 20.0 + 20.0 / 500.0;
+    const double side_s = 20.0 / (800.0 / 60.0) + (800.0 / 60.0) / 500.0;
+    const double expected_s = 2 * rapid_s + 4 * side_s;
+    EXPECT_NEAR(out.report.at("scenario").at("estimated_s").get<double>(), expected_s, 1e-9);
+    EXPECT_LT(out.metrics.timing.job_time_s, expected_s);
+}

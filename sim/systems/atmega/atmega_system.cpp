@@ -10,6 +10,7 @@
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
 #include "run/moves.hpp"
+#include "run/simulate.hpp"
 #include "systems/atmega/atmega_report.hpp"
 #include "systems/atmega/enabled_steps.hpp"
 #include "systems/atmega/motion_windows.hpp"
@@ -89,6 +90,26 @@ std::vector<std::size_t> transfer_moves(const s3::Plan& plan, const std::vector<
     return out;
 }
 
+// The atmega side of the job estimate. An axis steps at most at OCR = 0, f / 2N (48.8 mm/s at 160 steps/mm):
+// a faster feed runs at that rate. (The truncated OCR otherwise only makes moves faster: OCR + 1 <= f / (2 N
+// v/s).) CAD2G settles, then writes every byte after the confirm of the one before: per byte the write latency,
+// a USB frame out, the byte and its confirm on the line, a frame in and the driver latency; per transfer the
+// PC's work. The chords of an arc overlap the previous chord's motion, so this counts them twice: an upper bound.
+ArchPace pace(const Scenario& s, const uart::Cp2102Config& link, const std::vector<s3::Transfer>& transfers) {
+    constexpr double kBitsPerByte = 10.0;  // 8N1
+    constexpr double kLineBytesPerByte = 2.0;  // the byte and its confirm
+    ArchPace p;
+    p.max_speed_x_mm_per_s = s3::speed_mm_per_s(0, s.machine.x.mm_per_step(), s.atmega.pc.timer);
+    p.max_speed_y_mm_per_s = s3::speed_mm_per_s(0, s.machine.y.mm_per_step(), s.atmega.pc.timer);
+    p.startup_s = ps_to_s(s.sender.settle_ps);
+    const double byte_s = ps_to_s(s.sender.write_latency_ps + 2 * link.usb_frame_ps + link.usb_latency_ps) +
+                          kLineBytesPerByte * kBitsPerByte / static_cast<double>(link.requested_baud);
+    for (const s3::Transfer& t : transfers) {
+        p.link_s += ps_to_s(s.sender.packet_processing_ps) + static_cast<double>(t.bytes.size()) * byte_s;
+    }
+    return p;
+}
+
 }  // namespace
 
 ArchRun run_atmega(const Scenario& s, const Job& job) {
@@ -99,11 +120,13 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     const s3::Plan plan = s3::plan_program(*job.program, s.machine, s.atmega.pc);
     const avr::AvrCoreConfig avr_cfg = avr_config(s);
 
+    const uart::Cp2102Config link = link_config(s);
+    const std::vector<s3::Transfer> transfers = s3::transfers(plan);
+
     Wires w;
-    uart::Cp2102 cp2102("cp2102", link_config(s));
+    uart::Cp2102 cp2102("cp2102", link);
     cp2102.txd(w.uart_rx);
     cp2102.rxd(w.uart_tx);
-    const std::vector<s3::Transfer> transfers = s3::transfers(plan);
     host::PcProgram pc("host", s.sender, cp2102, transfers);
     pc.set_waits(host::waits_per_unit(*job.program, transfer_moves(plan, transfers, job.program->moves.size())));
     avr::AvrCore mcu("atmega328p", avr_cfg);
@@ -128,16 +151,13 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
         for (const sc_core::sc_signal<bool>* sig : w.all()) vcd->trace(*sig);
     }
 
-    const auto limit_ps = static_cast<TimePs>(s.max_sim_s * static_cast<double>(kPsPerSec));
-    auto t_now = static_cast<TimePs>(sc_core::sc_time_stamp().value());
-    while (!mcu.stopped() && t_now < limit_ps) {
-        const TimePs step_ps = std::min(kStopCheckPs, limit_ps - t_now);
-        sc_core::sc_start(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(step_ps)));
-        t_now = static_cast<TimePs>(sc_core::sc_time_stamp().value());
-    }
+    const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s, link, transfers)));
+    const SimulationEnd end = simulate(budget, [&mcu] { return mcu.stopped(); }, kStopCheckPs);
+    const TimePs t_now = end.t_ps;
     vcd.reset();
 
     ArchRun run;
+    record_budget(budget, run);
     const std::vector<MotionWindow> windows = motion_windows(
         plan, {rec.log("n_enbl_x"), rec.log("n_enbl_y"), rec.log("dir_x"), rec.log("dir_y"), rec.log("laser")},
         t_now);
@@ -165,11 +185,11 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     if (!pc.finished()) {
         run.ok = false;
         run.failure = mcu.stopped() ? "the firmware stopped before the PC program had sent the job"
-                                    : "the job did not finish within scenario.max_sim_s (CAD2G waits for a confirm "
-                                      "byte without a timeout)";
+                                    : "the job did not finish (CAD2G waits for a confirm byte without a timeout): " +
+                                          time_limit_text(budget, end);
     } else if (!mcu.stopped()) {
         run.ok = false;
-        run.failure = "the firmware did not reach M30 within scenario.max_sim_s";
+        run.failure = "the firmware did not reach M30: " + time_limit_text(budget, end);
     }
     return run;
 }

@@ -1,14 +1,17 @@
 #include "systems/spi_fpga/spi_fpga_system.hpp"
 
+#include <algorithm>
 #include <memory>
 
 #include "common/bad_input.hpp"
 #include "fpga/spi/spi_fpga_top.hpp"
 #include "host/core/planner/planner.hpp"
+#include "host/core/planner/speed_profile.hpp"
 #include "host/servo/core/laser_bit.hpp"
 #include "host/servo/servo_thread.hpp"
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
+#include "run/simulate.hpp"
 #include "spi/spi_master.hpp"
 #include "systems/machine.hpp"
 #include "systems/spi_fpga/planned_moves.hpp"
@@ -40,6 +43,23 @@ host::servo::ServoConfig servo_config(const Scenario& s) {
         c.axes[a] = {machine[a]->steps_per_mm(), limits[a]->max_velocity_mm_per_s, limits[a]->max_accel_mm_per_s2};
     }
     return c;
+}
+
+// The spi-fpga side of the job estimate: the planner holds each axis to its velocity limit, and a move that
+// starts and ends at rest (exact stop; blended corners are faster) spends the time of one speed change from
+// rest beyond length / speed. That change is taken at the smallest tangential acceleration the planner uses
+// (half the smaller axis limit, on arcs: path_limits.hpp) and the smaller jerk limit.
+ArchPace pace(const host::planner::PlannerConfig& cfg) {
+    ArchPace p;
+    p.max_speed_x_mm_per_s = cfg.x.max_velocity_mm_per_s;
+    p.max_speed_y_mm_per_s = cfg.y.max_velocity_mm_per_s;
+    host::planner::PathLimits slowest{};
+    slowest.accel_mm_per_s2 = 0.5 * std::min(cfg.x.max_accel_mm_per_s2, cfg.y.max_accel_mm_per_s2);
+    slowest.jerk_mm_per_s3 = std::min(cfg.x.max_jerk_mm_per_s3, cfg.y.max_jerk_mm_per_s3);
+    p.ramp_s = [profile = cfg.profile, slowest](double speed_mm_per_s) {
+        return host::planner::transition_time_s(profile, 0.0, speed_mm_per_s, slowest);
+    };
+    return p;
 }
 
 }  // namespace
@@ -101,12 +121,12 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
         }
     }
 
-    const sc_core::sc_time limit = sc_core::sc_time::from_value(
-        static_cast<sc_dt::uint64>(s.max_sim_s * static_cast<double>(kPsPerSec)));
-    sc_core::sc_start(limit, sc_core::SC_EXIT_ON_STARVATION);
+    const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s.spi_fpga.planner)));
+    const SimulationEnd end = simulate(budget);
     vcd.reset();
 
     ArchRun run;
+    record_budget(budget, run);
     const host::servo::ServoCore& core = host.core();
     metrics::RunInput& in = run.input;
     in.axes = {metrics::AxisTrace{"x", rec.log("step_x"), rec.log("dir_x"), s.machine.x.steps_per_mm(), true},
@@ -128,7 +148,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     run.warnings = std::move(report.warnings);
     if (!host.finished()) {
         run.ok = false;
-        run.failure = "the job did not finish within scenario.max_sim_s (the axes had not landed)";
+        run.failure = "the job did not finish (the axes had not landed): " + time_limit_text(budget, end);
     }
     return run;
 }

@@ -1,0 +1,50 @@
+#include "run/job_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/text_format.hpp"
+#include "common/units.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+// The limit's margins (job_estimate.hpp): twice the estimate, a second per move, ten seconds for the rest.
+constexpr double kLimitFactor = 2.0;
+constexpr double kLimitPerMoveS = 1.0;
+constexpr double kLimitFixedS = 10.0;
+
+double path_speed_mm_per_s(const host::ProgrammedMove& move, const ArchPace& pace) {
+    const double feed = move.feed_mm_per_min / kSecondsPerMinute;
+    if (move.path.is_arc) return std::min({feed, pace.max_speed_x_mm_per_s, pace.max_speed_y_mm_per_s});
+    const geom::Vec2 d = move.path.end - move.path.start;
+    const double length = geom::norm(d);
+    double speed = feed;
+    if (d.x_mm != 0.0) speed = std::min(speed, pace.max_speed_x_mm_per_s * length / std::fabs(d.x_mm));
+    if (d.y_mm != 0.0) speed = std::min(speed, pace.max_speed_y_mm_per_s * length / std::fabs(d.y_mm));
+    return speed;
+}
+
+}  // namespace
+
+JobEstimate estimate_job(const host::Program& program, const ArchPace& pace) {
+    JobEstimate e;
+    e.moves = program.moves.size();
+    // The host waits (dwells, operator pauses, Z moves) take their own time on every architecture.
+    e.expected_s = pace.startup_s + pace.link_s + program.wait_s_between(0, program.moves.size() + 1);
+    for (const host::ProgrammedMove& move : program.moves) {
+        const double speed = path_speed_mm_per_s(move, pace);
+        e.expected_s += move.path.length_mm() / speed + (pace.ramp_s ? pace.ramp_s(speed) : 0.0);
+    }
+    e.limit_s = kLimitFactor * e.expected_s + kLimitPerMoveS * static_cast<double>(e.moves) + kLimitFixedS;
+    return e;
+}
+
+std::string limit_formula(const JobEstimate& estimate) {
+    return format("%.0f x %.3f s + %.0f s x %.0f moves", kLimitFactor, estimate.expected_s, kLimitPerMoveS,
+                  static_cast<double>(estimate.moves)) +
+           format(" + %.0f s", kLimitFixedS);
+}
+
+}  // namespace cnc::sim

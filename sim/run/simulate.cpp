@@ -1,0 +1,96 @@
+#include "run/simulate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+
+#include "common/sc_time.hpp"
+#include "common/text_format.hpp"
+#include "run/progress.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+// Adaptive slices (no `finished` check): start at 10 ms of simulated time and keep each slice between these
+// wall times, so that the display updates a few times a second and sc_start is called rarely.
+constexpr TimePs kFirstSlicePs = 10 * kPsPerMs;
+constexpr double kSliceWallMinS = 0.05;
+constexpr double kSliceWallMaxS = 0.2;
+// The largest scenario.max_sim_s (11.6 days), also for a job whose estimate is longer: TimePs holds 106 days.
+constexpr double kMaxLimitS = 1e6;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+RunBudget run_budget(const Scenario& s, const JobEstimate& estimate) {
+    RunBudget b;
+    b.estimate = estimate;
+    b.limit_from_scenario = s.max_sim_s.has_value();
+    const double limit_s = std::min(s.max_sim_s.value_or(estimate.limit_s), kMaxLimitS);
+    b.limit_ps = static_cast<TimePs>(limit_s * static_cast<double>(kPsPerSec));
+    b.progress = s.progress;
+    return b;
+}
+
+SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& finished, TimePs check_ps) {
+    Progress progress(std::cerr, budget.progress, budget.estimate.expected_s);
+    const auto start = std::chrono::steady_clock::now();
+    // A model asked every check_ps never starves (the atmega's timers run on): each slice runs to its end, as
+    // one bounded sc_start per check always did. Otherwise a slice stops at its last event, as one
+    // sc_start(limit, SC_EXIT_ON_STARVATION) would, so that the run ends where the model went quiet.
+    const sc_core::sc_starvation_policy policy =
+        check_ps > 0 ? sc_core::SC_RUN_TO_TIME : sc_core::SC_EXIT_ON_STARVATION;
+    TimePs slice_ps = check_ps > 0 ? check_ps : kFirstSlicePs;
+    SimulationEnd end;
+    for (bool started = false;; started = true) {
+        end.t_ps = now_ps();
+        if (finished && finished()) break;
+        TimePs until_ps = std::min(end.t_ps + slice_ps, budget.limit_ps);
+        if (check_ps == 0 && started) {  // before the first sc_start no process has been scheduled yet
+            if (!sc_core::sc_pending_activity()) break;  // nothing left to happen: the model has run to its end
+            // A slice must reach the next event, or the kernel would not move (and say so).
+            const TimePs next_ps = end.t_ps + static_cast<TimePs>(sc_core::sc_time_to_pending_activity().value());
+            if (next_ps > budget.limit_ps) {
+                end.limit_reached = true;
+                break;
+            }
+            until_ps = std::max(until_ps, next_ps);
+        } else if (end.t_ps >= budget.limit_ps) {
+            end.limit_reached = true;
+            break;
+        }
+        const double slice_start_s = seconds_since(start);
+        sc_core::sc_start(ps_time(until_ps - end.t_ps), policy);
+        const double wall_s = seconds_since(start);
+        progress.update(ps_to_s(now_ps()), wall_s);
+        if (check_ps == 0) {
+            const double slice_wall_s = wall_s - slice_start_s;
+            if (slice_wall_s < kSliceWallMinS) slice_ps = std::min(2 * slice_ps, budget.limit_ps);
+            if (slice_wall_s > kSliceWallMaxS && slice_ps > 1) slice_ps /= 2;
+        }
+    }
+    progress.finish(ps_to_s(end.t_ps), seconds_since(start));
+    return end;
+}
+
+void record_budget(const RunBudget& budget, ArchRun& run) {
+    run.estimated_s = budget.estimate.expected_s;
+    run.max_sim_s = ps_to_s(budget.limit_ps);
+}
+
+std::string time_limit_text(const RunBudget& budget, const SimulationEnd& end) {
+    const std::string stopped = format("stopped at %.3f s of simulated time by ", ps_to_s(end.t_ps));
+    const double limit_s = ps_to_s(budget.limit_ps);
+    if (budget.limit_from_scenario) {
+        return stopped + format("scenario.max_sim_s = %g s (this job's estimate: %.3f s); raise scenario.max_sim_s",
+                                limit_s, budget.estimate.expected_s);
+    }
+    return stopped + format("this job's limit, %.3f s = ", limit_s) + limit_formula(budget.estimate) +
+           format(" from its %.3f s estimate; set scenario.max_sim_s higher", budget.estimate.expected_s);
+}
+
+}  // namespace cnc::sim

@@ -40,6 +40,9 @@ TEST(CompareSquare, EachArchitectureShowsItsOwnCost) {
         EXPECT_LE(metric(c, "metrics/pulse/tie_max_ns"), 20.0);  // every controller's edges sit on its clock
         EXPECT_EQ(metric(c, "metrics/path/job_end_um"), 0.0);
         EXPECT_EQ(metric(c, "metrics/pulse/driver_violations"), 0.0);
+        // The square's rapids run with the laser off on every architecture: by motion code on fpga-uart and
+        // atmega, by the frame's laser bit on spi-fpga.
+        EXPECT_EQ(metric(c, "metrics/laser/on_in_rapid_ms"), 0.0);
     }
     EXPECT_GT(metric(avr, "metrics/job/dead_mean_ms"), 3 * metric(fpga, "metrics/job/dead_mean_ms"));
     EXPECT_LT(metric(spi, "metrics/job/dead_total_ms"), metric(fpga, "metrics/job/dead_total_ms"));

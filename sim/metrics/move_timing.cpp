@@ -9,19 +9,41 @@ namespace cnc::metrics {
 
 namespace {
 
-std::optional<double> motion_time_s(const MoveSpec& move, const EdgeIndex& idx, std::size_t m) {
-    std::optional<double> longest;
+// When a move's motion ends: per axis its last rising edge plus the period that edge closes (the interval to the
+// edge before it; with one edge, the commanded period), the latest over the axes. A constant-rate run of n edges
+// then lasts exactly n periods from its first edge.
+std::optional<TimePs> motion_end_ps(const MoveSpec& move, const EdgeIndex& idx, std::size_t m) {
+    std::optional<TimePs> end;
     for (std::size_t a = 0; a < idx.axes.size(); ++a) {
         const EdgeRange r = idx.by_move[a][m];
-        const std::size_t n = r.size();
-        if (n >= 2) {
-            const TimePs span = idx.axes[a].rising[r.end - 1] - idx.axes[a].rising[r.begin];
-            keep_max(longest, ps_to_s(span) * static_cast<double>(n) / static_cast<double>(n - 1));
-        } else if (n == 1 && a < move.rate_steps_per_s.size() && move.rate_steps_per_s[a] > 0.0) {
-            keep_max(longest, 1.0 / move.rate_steps_per_s[a]);
+        if (r.empty()) continue;
+        const std::vector<TimePs>& rising = idx.axes[a].rising;
+        const TimePs last = rising[r.end - 1];
+        TimePs period = 0;
+        if (r.size() >= 2) {
+            period = last - rising[r.end - 2];
+        } else if (a < move.rate_steps_per_s.size() && move.rate_steps_per_s[a] > 0.0) {
+            period = s_to_ps(1.0 / move.rate_steps_per_s[a]);
         }
+        end = std::max(end.value_or(last + period), last + period);
     }
-    return longest;
+    return end;
+}
+
+// Motion time of move m: from its first rising edge to the end of its motion, but never past the next move's
+// first edge nor the job's end, so that the motion of the moves never overlaps and never exceeds the job.
+std::optional<double> motion_time_s(const RunInput& in, const EdgeIndex& idx, std::size_t m) {
+    if (!idx.move_first_edge_ps[m]) return std::nullopt;
+    TimePs end = motion_end_ps(in.moves[m], idx, m).value_or(*idx.move_first_edge_ps[m]);
+    for (std::size_t next = m + 1; next < in.moves.size(); ++next) {
+        if (!idx.move_first_edge_ps[next]) continue;
+        end = std::min(end, *idx.move_first_edge_ps[next]);
+        break;
+    }
+    // A job that ended before this move's last edge (an aborted run, whose metrics are partial, or an analyzed
+    // trace with no job window) does not cut it.
+    if (in.t_job_end_ps > *idx.move_last_edge_ps[m]) end = std::min(end, in.t_job_end_ps);
+    return ps_to_s(end - *idx.move_first_edge_ps[m]);
 }
 
 }  // namespace
@@ -36,7 +58,7 @@ TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx) {
     for (std::size_t m = 0; m < in.moves.size(); ++m) {
         const MoveSpec& move = in.moves[m];
         MoveTiming& mt = out.moves[m];
-        mt.motion_time_s = motion_time_s(move, idx, m);
+        mt.motion_time_s = motion_time_s(in, idx, m);
         if (!mt.motion_time_s) continue;
         out.motion_time_s = out.motion_time_s.value_or(0.0) + *mt.motion_time_s;
         if (move.rapid || move.feed_mm_per_min <= 0.0 || *mt.motion_time_s <= 0.0) continue;

@@ -11,8 +11,9 @@
 namespace cnc::metrics {
 
 struct MoveTiming {
-    // max over axes of (t_last - t_first) * n / (n - 1): the n periods of the move, so a constant-period
-    // run of n edges takes exactly n * period; an axis with one edge takes 1 / its commanded rate.
+    // From the move's first rising edge to its last one plus the period that edge closes (latest over the axes;
+    // an axis with one edge: its commanded period), so a constant-period run of n edges takes exactly n periods;
+    // cut at the next move's first edge and at the job's end, so that motion never exceeds the job.
     std::optional<double> motion_time_s;
     std::optional<double> achieved_feed_mm_per_min;  // |to_mm - from_mm| / motion time (cutting moves)
     std::optional<double> feed_error_pct;            // (achieved - F) / F

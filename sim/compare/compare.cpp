@@ -52,8 +52,10 @@ constexpr Row kRows[] = {
     {"laser on in rapids [ms]", "/metrics/laser/on_in_rapid_ms", "%.3f"},
 };
 
+// A failed run's figures cover only what ran before it stopped: never shown as a result (its JSON keeps them
+// apart as partial_metrics).
 std::string cell(const CompareColumn& c, const Row& row) {
-    if (c.report.is_null()) return "-";
+    if (c.report.is_null() || c.exit_code != 0) return "-";
     const nlohmann::json::json_pointer ptr(row.pointer);
     if (!c.report.contains(ptr) || !c.report.at(ptr).is_number()) return "-";
     return format(row.format, c.report.at(ptr).get<double>());
@@ -128,12 +130,19 @@ nlohmann::json compare_json(const std::vector<CompareColumn>& columns) {
             metrics[row.pointer + 1] =
                 !c.report.is_null() && c.report.contains(ptr) ? c.report.at(ptr) : nlohmann::json(nullptr);
         }
-        out.push_back({{"architecture", c.architecture},
-                       {"status", status(c)},
-                       {"exit_code", c.exit_code},
-                       {"warnings", c.report.is_null() ? nlohmann::json::array() : c.report.value("warnings",
-                                                                                    nlohmann::json::array())},
-                       {"metrics", metrics}});
+        nlohmann::json column = {{"architecture", c.architecture},
+                                 {"status", status(c)},
+                                 {"exit_code", c.exit_code},
+                                 {"warnings", c.report.is_null() ? nlohmann::json::array()
+                                                                 : c.report.value("warnings", nlohmann::json::array())}};
+        if (c.exit_code == 0) {
+            column["metrics"] = metrics;
+        } else {
+            column["metrics"] = nullptr;
+            column["partial_metrics"] = metrics;
+            column["failure"] = c.report.is_null() ? nlohmann::json(nullptr) : c.report.value("failure", nlohmann::json());
+        }
+        out.push_back(std::move(column));
     }
     return out;
 }

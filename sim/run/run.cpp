@@ -69,11 +69,18 @@ RunOutcome run_scenario(const Scenario& s) {
                   {"warnings", warnings_json(arch.warnings, s.detail)},
                   {"gcode", job.program ? program_json(*job.program) : nlohmann::json(nullptr)},
                   {"ok", arch.ok}};
-    if (!arch.ok) out.report["failure"] = arch.failure;
+    if (!arch.ok) {
+        out.report["failure"] = arch.failure;
+        out.report["metrics_partial"] = true;
+    }
 
     std::ostringstream text;
-    text << "cncsim run: " << s.name << " (" << s.architecture << "), job " << s.job_path << "\n\n"
-         << metrics::summary_table(m) << '\n'
+    text << "cncsim run: " << s.name << " (" << s.architecture << "), job " << s.job_path << "\n\n";
+    if (!arch.ok) {
+        text << "PARTIAL: the run failed (" << arch.failure
+             << ").\nThe figures below cover only what ran before it stopped; they are not a result.\n\n";
+    }
+    text << metrics::summary_table(m) << '\n'
          << (job.program ? program_text(*job.program) : std::string()) << '\n'
          << arch.details_text;
     for (const WarningGroup& g : group_warnings(arch.warnings)) text << "warning: " << summary_line(g) << '\n';

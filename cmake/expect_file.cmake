@@ -1,0 +1,11 @@
+# Checks that FILE exists and matches each regex in MATCH (a |-list). Used after a run test wrote the file.
+if(NOT EXISTS "${FILE}")
+  message(FATAL_ERROR "${FILE} was not written")
+endif()
+file(READ "${FILE}" text)
+string(REPLACE "|" ";" patterns "${MATCH}")
+foreach(p IN LISTS patterns)
+  if(NOT "${text}" MATCHES "${p}")
+    message(FATAL_ERROR "${FILE} does not match '${p}'")
+  endif()
+endforeach()

@@ -38,6 +38,27 @@ void check_calibration(const KeyReader& r, const std::string& p, const host::Axi
                                    "give steps_per_mm alone, or values that agree");
 }
 
+// An axis limit of 0 would leave the planner without a profile: refused by name rather than as a range.
+double positive(KeyReader& r, const std::string& key, double def, double max, const std::string& doc,
+                const std::string& why_zero) {
+    const double v = r.get_float(key, def, 0.0, max, doc);
+    if (!(v > 0.0)) r.fail(key, "must be > 0: " + why_zero);
+    return v;
+}
+
+void read_axis_limits(KeyReader& r, const std::string& axis, host::AxisLimits& lim) {
+    const std::string p = "machine." + axis + ".";
+    lim.max_velocity_mm_per_s = positive(r, p + "max_velocity_mm_per_s", lim.max_velocity_mm_per_s, 1e5,
+                                         "axis velocity limit, mm/s, > 0 (LinuxCNC MAX_VELOCITY): every architecture holds its moves to it",
+                                         "an axis that may not move cannot follow any move");
+    lim.max_accel_mm_per_s2 = positive(r, p + "max_accel_mm_per_s2", lim.max_accel_mm_per_s2, 1e7,
+                                       "axis acceleration limit, mm/s^2, > 0 (LinuxCNC MAX_ACCELERATION): spi-fpga (fpga-uart and atmega have no ramps)",
+                                       "an axis that cannot accelerate never leaves rest");
+    lim.max_jerk_mm_per_s3 = positive(r, p + "max_jerk_mm_per_s3", lim.max_jerk_mm_per_s3, 1e10,
+                                      "axis jerk limit, mm/s^3, > 0 (planner.profile = jerk-limited only)",
+                                      "a jerk-limited profile could never change its acceleration");
+}
+
 void read_axis(KeyReader& r, const std::string& axis, host::AxisMachine& m) {
     const std::string p = "machine." + axis + ".";
     m.step_angle_deg = r.get_float(p + "step_angle_deg", m.step_angle_deg, 0.01, 90.0,
@@ -60,6 +81,7 @@ void read_axis(KeyReader& r, const std::string& axis, host::AxisMachine& m) {
         "instead of the motor and transmission keys above (given with them, it must equal their value); "
         "0: computed from them");
     if (calibrated > 0.0) m.calibrated_steps_per_mm = calibrated;
+    read_axis_limits(r, axis, m.limits);
     m.travel_mm = r.get_float(p + "travel_mm", m.travel_mm, 0.0, 1e6, "axis travel, mm (0 = unlimited)");
     check_calibration(r, p, m);
     try {
@@ -211,6 +233,8 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     check_fpga(r, s.fpga);
     read_atmega_settings(r, s.atmega, base);
     read_spi_fpga_settings(r, s.spi_fpga, base);
+    s.spi_fpga.planner.x = s.machine.x.limits;  // one machine for every architecture
+    s.spi_fpga.planner.y = s.machine.y.limits;
 
     s.vcd_path = r.get_string("trace.vcd", "", "VCD file to write (relative to the working directory); empty: none");
     s.report_path = r.get_string("trace.report", "", "JSON report to write; empty: none");

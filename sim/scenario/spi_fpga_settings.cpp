@@ -12,35 +12,11 @@ namespace cnc::sim {
 
 namespace {
 
-using host::planner::AxisLimits;
 
 TimePs us_to_ps(double us) { return static_cast<TimePs>(us * static_cast<double>(kPsPerUs) + 0.5); }
 TimePs ns_to_ps(double ns) { return static_cast<TimePs>(ns * static_cast<double>(kPsPerNs) + 0.5); }
 
-// An axis limit of 0 would leave the planner without a profile: refused by name rather than as a range.
-double positive(KeyReader& r, const std::string& key, double def, double max, const std::string& doc,
-                const std::string& why_zero) {
-    const double v = r.get_float(key, def, 0.0, max, doc);
-    if (!(v > 0.0)) r.fail(key, "must be > 0: " + why_zero);
-    return v;
-}
-
-void read_axis_limits(KeyReader& r, const std::string& axis, AxisLimits& lim) {
-    const std::string p = "planner." + axis + ".";
-    lim.max_velocity_mm_per_s = positive(r, p + "max_velocity_mm_per_s", lim.max_velocity_mm_per_s, 1e5,
-                                         "axis velocity limit, mm/s, > 0 (LinuxCNC MAX_VELOCITY)",
-                                         "an axis that may not move cannot follow any move");
-    lim.max_accel_mm_per_s2 = positive(r, p + "max_accel_mm_per_s2", lim.max_accel_mm_per_s2, 1e7,
-                                       "axis acceleration limit, mm/s^2, > 0 (LinuxCNC MAX_ACCELERATION)",
-                                       "an axis that cannot accelerate never leaves rest");
-    lim.max_jerk_mm_per_s3 = positive(r, p + "max_jerk_mm_per_s3", lim.max_jerk_mm_per_s3, 1e10,
-                                      "axis jerk limit, mm/s^3, > 0 (planner.profile = jerk-limited only)",
-                                      "a jerk-limited profile could never change its acceleration");
-}
-
 void read_planner(KeyReader& r, host::planner::PlannerConfig& c) {
-    read_axis_limits(r, "x", c.x);
-    read_axis_limits(r, "y", c.y);
     c.profile = r.get_choice("planner.profile", "trapezoidal", {"trapezoidal", "jerk-limited"},
                              "speed profile: constant-acceleration phases, or the seed's cubic acceleration "
                              "(seed 004 §3.2)") == "trapezoidal"
@@ -188,7 +164,7 @@ void check_rate_limits(const SpiFpgaSettings& s, const host::MachineModel& machi
             m << "the stepgen velocity limit " << mm_per_s << " mm/s (this limit x (1 + host.stepgen_margin "
               << s.servo.stepgen_margin << ")) at " << axes[a].second << " steps/mm overflows the rate word: "
               << e.what();
-            throw BadInput(file + ": planner." + axes[a].first + ".max_velocity_mm_per_s", m.str());
+            throw BadInput(file + ": machine." + axes[a].first + ".max_velocity_mm_per_s", m.str());
         }
     }
 }

@@ -126,6 +126,8 @@ ArchPace pace(const Scenario& s, std::size_t packets) {
     constexpr double kBitsPerByte = 10.0;  // 8N1
     constexpr double kTripBytes = host::kMotionPacketBytes + 1.0;  // the packet and its ACK
     ArchPace p;
+    p.max_speed_x_mm_per_s = s.machine.x.limits.max_velocity_mm_per_s;  // the CAM holds the packet feed to them
+    p.max_speed_y_mm_per_s = s.machine.y.limits.max_velocity_mm_per_s;
     p.startup_s = ps_to_s(s.sender.settle_ps + s.sender.init_gap_ps);
     const double trip_s =
         ps_to_s(s.sender.packet_processing_ps + s.sender.write_latency_ps + 2 * s.link.usb_frame_ps +

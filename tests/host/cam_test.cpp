@@ -418,10 +418,25 @@ TEST(HostCam, StepsOutsideInt32AreReported) {
 
 TEST(HostCam, FeedOutsidePacketRangeIsReported) {
     expect_bad_input([] { cam_of("G1 X10 Y10 F0.5\n"); }, {"t.nc:1:", "rounds to 0", "1..65535"});
-    expect_bad_input([] { cam_of("G1 X10 F70000\n"); }, {"t.nc:1:", "feed 70000", "1..65535"});
+    MachineModel unlimited;  // axes fast enough that the packet range, not the machine, stops the feed
+    unlimited.x.limits.max_velocity_mm_per_s = unlimited.y.limits.max_velocity_mm_per_s = 1e5;
+    expect_bad_input([&] { cam_of("G1 X10 F70000\n", {}, unlimited); }, {"t.nc:1:", "feed 70000", "1..65535"});
     InterpreterOptions fast;
     fast.rapid_feed_mm_per_min = 100000.0;
-    expect_bad_input([&] { cam(run_gcode("G0 X1\n", fast), {}, {}); }, {"t.nc:1:", "feed 100000"});
+    expect_bad_input([&] { cam(run_gcode("G0 X1\n", fast), unlimited, {}); }, {"t.nc:1:", "feed 100000"});
+}
+
+TEST(HostCam, FeedIsHeldToTheAxisVelocityLimits) {
+    MachineModel m;
+    m.x.limits.max_velocity_mm_per_s = 10.0;  // 600 mm/min
+    m.y.limits.max_velocity_mm_per_s = 5.0;   // 300 mm/min
+    // X alone at F1000: X's 600 mm/min. The 45-degree line at F1000 (707 mm/min per axis): Y's 300 mm/min
+    // holds the path to 300 x sqrt(2) = 424.3 mm/min, whose dominant-axis share is 300 mm/min.
+    const auto segs = cam_of("G1 X10 F1000\nG1 X20 Y10\nG1 X30 F500\n", {}, m);
+    ASSERT_EQ(segs.size(), 3U);
+    EXPECT_EQ(segs[0].feed, 600);
+    EXPECT_EQ(segs[1].feed, 300);
+    EXPECT_EQ(segs[2].feed, 500);  // below the limit: untouched
 }
 
 TEST(HostCam, BadMachineOrToleranceIsReported) {

@@ -51,6 +51,20 @@ TEST(CompareSquare, EachArchitectureShowsItsOwnCost) {
     EXPECT_GT(metric(spi, "metrics/path/following_max_um"), 5 * metric(fpga, "metrics/path/following_max_um"));
 }
 
+// One machine for every architecture (trust issue, check 4): an X velocity limit of 1 mm/s holds each
+// architecture's two 20 mm X sides of the square to at least 20 s each, where F800 would take 1.5 s.
+TEST(CompareSquare, TheMachineVelocityLimitHoldsEveryArchitecture) {
+    const auto cols = run_compare_json(std::string(CNC_SOURCE_DIR) +
+                                       "/scenarios/fpga-uart/square_20mm.toml --set machine.x.max_velocity_mm_per_s=1"
+                                       " --set host.ack_timeout_s=60");  // the first rapid now takes 10 s
+    ASSERT_EQ(cols.size(), 3U);
+    for (const auto& c : cols) {
+        EXPECT_EQ(c.at("status"), "ok") << c.at("architecture");
+        // atmega's 8-bit compare value makes 1 mm/s into 1.017 mm/s (OCR 47): 2 x 20 mm / 1.017 mm/s = 39.3 s.
+        EXPECT_GT(metric(c, "metrics/job/job_time_s"), 39.0) << c.at("architecture");
+    }
+}
+
 TEST(CompareTable, MarkdownHasAColumnPerArchitectureAndDashesForMissingValues) {
     cnc::sim::CompareColumn a{"fpga-uart", 0, {{"metrics", {{"job", {{"job_time_s", 1.5}}}}}}};
     cnc::sim::CompareColumn b{"atmega", 2, nullptr};

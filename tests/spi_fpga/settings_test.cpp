@@ -63,7 +63,7 @@ TEST(SpiFpgaSettings, TheIssuesCommandLineKeys) {
     const auto s = cnc::sim::load_scenario(write_scenario("cli", kJob),
                                            {"host.servo_period_us=500", "host.latency_max_us=80",
                                             "planner.mode=\"exact-stop\"", "fpga_spi.rate_apply=\"at-next-pulse\"",
-                                            "planner.y.max_velocity_mm_per_s=50", "spi.sclk_hz=2500000"});
+                                            "machine.y.max_velocity_mm_per_s=50", "spi.sclk_hz=2500000"});
     EXPECT_EQ(s.spi_fpga.servo.period_ps, 500 * kPsPerUs);
     EXPECT_EQ(s.spi_fpga.servo.latency.max_ps, 80 * kPsPerUs);
     EXPECT_EQ(s.spi_fpga.planner.mode, cnc::host::planner::BlendMode::ExactStop);
@@ -77,7 +77,7 @@ TEST(SpiFpgaSettings, EveryKeyIsDocumentedAndNoneClashesWithFpgaUart) {
     const auto has = [&](const std::string& k) {
         return std::count_if(keys.begin(), keys.end(), [&](const cnc::sim::KeyDoc& d) { return d.key == k; });
     };
-    for (const char* k : {"planner.x.max_velocity_mm_per_s", "planner.y.max_accel_mm_per_s2", "planner.x.max_jerk_mm_per_s3",
+    for (const char* k : {"machine.x.max_velocity_mm_per_s", "machine.y.max_accel_mm_per_s2", "machine.x.max_jerk_mm_per_s3",
                           "planner.profile", "planner.mode", "planner.path_tolerance_mm", "planner.lookahead_moves",
                           "host.servo_period_us", "host.latency_max_us", "host.latency_distribution",
                           "host.position_gain", "host.deadband_steps", "host.stepgen_margin", "spi.sclk_hz",
@@ -89,8 +89,8 @@ TEST(SpiFpgaSettings, EveryKeyIsDocumentedAndNoneClashesWithFpgaUart) {
 }
 
 TEST(SpiFpgaSettings, AccelerationZeroIsRefusedWithItsLine) {
-    const std::string e = load_error(std::string(kJob) + "[planner.x]\nmax_accel_mm_per_s2 = 0\n");
-    EXPECT_NE(e.find(".toml:5: planner.x.max_accel_mm_per_s2: must be > 0"), std::string::npos) << e;
+    const std::string e = load_error(std::string(kJob) + "[machine.x]\nmax_accel_mm_per_s2 = 0\n");
+    EXPECT_NE(e.find(".toml:5: machine.x.max_accel_mm_per_s2: must be > 0"), std::string::npos) << e;
 }
 
 TEST(SpiFpgaSettings, AServoPeriodShorterThanTheTransferIsRefused) {

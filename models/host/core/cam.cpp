@@ -209,13 +209,15 @@ std::vector<StepPos> chord_ends(const geom::Segment& path, StepPos from, const S
 // axisFeed = F x dominant_distance / path_length. The distances are the step-quantised ones (steps / steps_per_mm),
 // i.e. what the machine really moves, so the executed path speed is F even when rounding bent the segment.
 // The dominant axis is the one with more steps, X on a tie, as step_gen decides (seed 000 §5.4).
-std::int64_t packet_feed(const ProgrammedMove& move, const MotionSegment& seg, const CamOptions& opt,
-                         const std::string& where) {
-    double axis_feed = move.feed_mm_per_min;
+// A path feed that would drive an axis past machine.<axis>.max_velocity_mm_per_s is lowered to that limit first.
+std::int64_t packet_feed(const ProgrammedMove& move, const MotionSegment& seg, const MachineModel& machine,
+                         const CamOptions& opt, const std::string& where) {
+    const double path_feed = feed_within_axis_limits(seg.dx_mm, seg.dy_mm, move.feed_mm_per_min, machine);
+    double axis_feed = path_feed;
     if (move.kind != MotionKind::Rapid || opt.correct_rapid_feed) {
         const bool x_dominant = std::llabs(seg.steps_x) >= std::llabs(seg.steps_y);
         const double dominant_mm = std::fabs(x_dominant ? seg.dx_mm : seg.dy_mm);
-        axis_feed = move.feed_mm_per_min * dominant_mm / std::hypot(seg.dx_mm, seg.dy_mm);
+        axis_feed = path_feed * dominant_mm / std::hypot(seg.dx_mm, seg.dy_mm);
     }
     const double feed = opt.feed_rounding == FeedRounding::Round ? std::round(axis_feed) : std::floor(axis_feed);
     if (feed < 1.0) {
@@ -263,7 +265,7 @@ std::vector<MotionSegment> cam(const Program& program, const MachineModel& machi
             seg.line = move.line;
             seg.dx_mm = static_cast<double>(seg.steps_x) / grid.spm_x;
             seg.dy_mm = static_cast<double>(seg.steps_y) / grid.spm_y;
-            seg.feed = packet_feed(move, seg, opt, where);
+            seg.feed = packet_feed(move, seg, machine, opt, where);
             segments.push_back(seg);
             cur = p;
         }

@@ -1,6 +1,8 @@
 #include "host/core/machine.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <sstream>
 
 #include "common/bad_input.hpp"
@@ -37,6 +39,19 @@ double AxisMachine::travel_per_rev_mm() const {
 double AxisMachine::transmission_steps_per_mm() const { return steps_per_rev() * gear_ratio / travel_per_rev_mm(); }
 
 double AxisMachine::steps_per_mm() const { return calibrated_steps_per_mm.value_or(transmission_steps_per_mm()); }
+
+double feed_within_axis_limits(double dx_mm, double dy_mm, double feed_mm_per_min, const MachineModel& machine) {
+    constexpr double kSecondsPerMinute = 60.0;
+    const double length_mm = std::hypot(dx_mm, dy_mm);
+    double feed = feed_mm_per_min;
+    if (length_mm <= 0.0) return feed;
+    const std::pair<double, double> axes[] = {{dx_mm, machine.x.limits.max_velocity_mm_per_s},
+                                              {dy_mm, machine.y.limits.max_velocity_mm_per_s}};
+    for (const auto& [d_mm, v_max] : axes) {
+        if (d_mm != 0.0) feed = std::min(feed, v_max * kSecondsPerMinute * length_mm / std::fabs(d_mm));
+    }
+    return feed;
+}
 
 void validate(const AxisMachine& axis, const std::string& where) {
     require_positive(axis.step_angle_deg, where, "step_angle_deg");

@@ -8,6 +8,14 @@ namespace cnc::host {
 
 enum class Transmission { Belt, Leadscrew };
 
+// What an axis can do (LinuxCNC's [JOINT] MAX_VELOCITY, MAX_ACCELERATION): every architecture holds its moves to
+// the velocity limit; an architecture that accelerates (the spi-fpga planner) also honours the others.
+struct AxisLimits {
+    double max_velocity_mm_per_s = 100.0;
+    double max_accel_mm_per_s2 = 1000.0;
+    double max_jerk_mm_per_s3 = 50000.0;  // jerk-limited profiles only
+};
+
 struct AxisMachine {
     double step_angle_deg = 1.8;   // seed 000 §2.2 T3.4: NEMA17 42BYGHW208, 200 full steps/rev
     int microsteps = 32;           // seed 000 T3.4: DRV8825 at 1/32
@@ -22,6 +30,7 @@ struct AxisMachine {
     // specified. It counts microsteps at `microsteps`, which still straps the DRV8825 MODE pins, so the motor
     // makes calibrated_steps_per_mm / microsteps full steps per mm.
     std::optional<double> calibrated_steps_per_mm;
+    AxisLimits limits;
 
     [[nodiscard]] double steps_per_rev() const { return 360.0 / step_angle_deg * microsteps; }
     [[nodiscard]] double travel_per_rev_mm() const;
@@ -44,6 +53,11 @@ struct MachineModel {
 // Microsteps must be one of the DRV8825 modes 1, 2, 4, 8, 16, 32 (seed 000 §8; the AddModel form offers
 // only 8, 16 and 32, Q12, but the driver supports all six).
 void validate(const AxisMachine& axis, const std::string& where);
+
+// The path speed at which a straight displacement (dx, dy) keeps every axis within its velocity limit: `feed`
+// itself when it does, less otherwise (mm/min in, mm/min out).
+[[nodiscard]] double feed_within_axis_limits(double dx_mm, double dy_mm, double feed_mm_per_min,
+                                             const MachineModel& machine);
 void validate(const MachineModel& machine, const std::string& where);
 
 }  // namespace cnc::host

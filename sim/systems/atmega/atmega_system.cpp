@@ -99,8 +99,11 @@ ArchPace pace(const Scenario& s, const uart::Cp2102Config& link, const std::vect
     constexpr double kBitsPerByte = 10.0;  // 8N1
     constexpr double kLineBytesPerByte = 2.0;  // the byte and its confirm
     ArchPace p;
-    p.max_speed_x_mm_per_s = s3::speed_mm_per_s(0, s.machine.x.mm_per_step(), s.atmega.pc.timer);
-    p.max_speed_y_mm_per_s = s3::speed_mm_per_s(0, s.machine.y.mm_per_step(), s.atmega.pc.timer);
+    // The PC program also holds every speed to the machine's velocity limits.
+    p.max_speed_x_mm_per_s = std::min(s3::speed_mm_per_s(0, s.machine.x.mm_per_step(), s.atmega.pc.timer),
+                                      s.machine.x.limits.max_velocity_mm_per_s);
+    p.max_speed_y_mm_per_s = std::min(s3::speed_mm_per_s(0, s.machine.y.mm_per_step(), s.atmega.pc.timer),
+                                      s.machine.y.limits.max_velocity_mm_per_s);
     p.startup_s = ps_to_s(s.sender.settle_ps);
     const double byte_s = ps_to_s(s.sender.write_latency_ps + 2 * link.usb_frame_ps + link.usb_latency_ps) +
                           kLineBytesPerByte * kBitsPerByte / static_cast<double>(link.requested_baud);

@@ -3,13 +3,12 @@
 #pragma once
 #include <string>
 
+#include "host/core/machine.hpp"
+
 namespace cnc::host::planner {
 
-struct AxisLimits {
-    double max_velocity_mm_per_s = 100.0;
-    double max_accel_mm_per_s2 = 1000.0;
-    double max_jerk_mm_per_s3 = 50000.0;  // used by Profile::JerkLimited only
-};
+// The machine's axis limits (machine.hpp): the planner honours all three.
+using AxisLimits = host::AxisLimits;
 
 // seed 004 §3.2 (figs. 3.2, 3.3): trapezoidal = constant-acceleration phases; JerkLimited = the "cubic
 // acceleration" profile (acceleration a smooth polynomial, jerk bounded).

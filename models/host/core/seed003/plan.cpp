@@ -97,7 +97,7 @@ private:
         const double dx_mm = static_cast<double>(sx) * m_machine.x.mm_per_step();
         const double dy_mm = static_cast<double>(sy) * m_machine.y.mm_per_step();
         const double dz_mm = std::hypot(dx_mm, dy_mm);
-        const double v0 = move.feed_mm_per_min / 60.0;
+        const double v0 = feed_within_axis_limits(dx_mm, dy_mm, move.feed_mm_per_min, m_machine) / 60.0;
         m.speed_x_mm_per_s = std::fabs(dx_mm) / dz_mm * v0;
         m.speed_y_mm_per_s = std::fabs(dy_mm) / dz_mm * v0;
         m.ocr_y = ocr_for_speed(m.speed_y_mm_per_s, m_machine.y.mm_per_step(), m_opt.timer);
@@ -119,7 +119,10 @@ private:
         m.steps_x = sx;
         m.steps_y = sy;
         m.path_feed_mm_per_min = move.feed_mm_per_min;
-        m.speed_x_mm_per_s = m.speed_y_mm_per_s = move.feed_mm_per_min / 60.0;
+        // One speed for both axes: the slower axis' velocity limit holds it.
+        m.speed_x_mm_per_s = m.speed_y_mm_per_s =
+            std::min({move.feed_mm_per_min / 60.0, m_machine.x.limits.max_velocity_mm_per_s,
+                      m_machine.y.limits.max_velocity_mm_per_s});
         m.ocr_x = m.ocr_y = ocr_for_speed(m.speed_x_mm_per_s, m_machine.x.mm_per_step(), m_opt.timer);
         m.count_x = count(sx, m.wrapped);
         m.count_y = count(sy, m.wrapped);

@@ -148,6 +148,8 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
 
     read_axis(r, "x", s.machine.x);
     read_axis(r, "y", s.machine.y);
+    read_axis(r, "z", s.machine.z);
+    s.interpreter.z_max_feed_mm_per_min = s.machine.z.limits.max_velocity_mm_per_s * 60.0;
     s.machine.soft_limits = r.get_bool("machine.soft_limits", s.machine.soft_limits,
                                        "refuse a G-code job or start position that leaves [0, travel_mm] on an axis "
                                        "with a travel (grbl $20); false: no check");

@@ -44,6 +44,17 @@ TEST(HostGcodeWords, ZOnlyMoveIsTimedAtItsFeedAndAMixedMoveSharesF) {
     EXPECT_DOUBLE_EQ(p.z_travel_mm, 50.0);
 }
 
+TEST(HostGcodeWords, ZMovesStayWithinTheZVelocityLimit) {
+    InterpreterOptions opt;
+    opt.z_max_feed_mm_per_min = 60.0;  // machine.z.max_velocity_mm_per_s = 1
+    const Program p = run_gcode("G1 Z5 F300\nG1 X30 Z-35 F600\n", opt);
+    // 5 mm at 1 mm/s = 5 s instead of 1 s at F300.
+    ASSERT_EQ(p.waits.size(), 1u);
+    EXPECT_DOUBLE_EQ(p.waits[0].seconds, 5.0);
+    // X30 Z-40 (50 mm): Z's 40 mm at 1 mm/s take 40 s, so the XY path runs 30 mm in 40 s = 45 mm/min.
+    EXPECT_NEAR(p.moves[0].feed_mm_per_min, 45.0, 1e-9);
+}
+
 TEST(HostGcodeWords, WorkOffsetsG10AndCoordinateSystems) {
     const Program p = run_gcode(
         "G10 L2 P1 X10 Y20\nG0 X1 Y1\nG55 X1 Y1\nG10 L2 P2 X100\nG0 X0\nG10 L20 P0 X5\nG0 X5 Y0\nG54 G0 X0 Y0\n");

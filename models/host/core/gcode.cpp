@@ -352,7 +352,8 @@ private:
         const double dz_mm = std::fabs(z_to - m_z);
         const double linear_mm = std::hypot(xy_mm, dz_mm);
         const double length_mm = linear_mm > kSamePointMm ? linear_mm : other_axes;
-        const double feed = kind == MotionKind::Rapid ? m_opt.rapid_feed_mm_per_min : *m_feed_mm_per_min;
+        double feed = kind == MotionKind::Rapid ? m_opt.rapid_feed_mm_per_min : *m_feed_mm_per_min;
+        if (dz_mm > 0.0) feed = std::min(feed, m_opt.z_max_feed_mm_per_min * linear_mm / dz_mm);
         const bool inverse_time = kind != MotionKind::Rapid && m_inverse_time;
         const double minutes = inverse_time ? 1.0 / *m_f_word : length_mm / feed;
         m_program.z_travel_mm += dz_mm;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <istream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -79,6 +80,8 @@ struct InterpreterOptions {
     geom::Vec2 start_mm{};                  // machine position when the program starts
     GcodePolicy policy = GcodePolicy::Lenient;
     double operator_pause_s = 5.0;          // M0/M1/M60: the time an operator takes to press cycle start
+    // machine.z.max_velocity_mm_per_s: a move is slowed so that its Z part stays within it.
+    double z_max_feed_mm_per_min = std::numeric_limits<double>::infinity();
 };
 
 struct Program {

@@ -83,6 +83,7 @@ void validate(const AxisMachine& axis, const std::string& where) {
 void validate(const MachineModel& machine, const std::string& where) {
     validate(machine.x, where + " x");
     validate(machine.y, where + " y");
+    validate(machine.z, where + " z");
 }
 
 }  // namespace cnc::host

@@ -46,6 +46,9 @@ struct AxisMachine {
 struct MachineModel {
     AxisMachine x;
     AxisMachine y;
+    // The third axis: no architecture of the seeds has Z STEP pins, so Z moves are host waits (gcode.hpp), timed
+    // within z's velocity limit.
+    AxisMachine z;
     bool soft_limits = true;  // keep the tool within each axis' travel (grbl $20; soft_limits.hpp)
 };
 

@@ -31,12 +31,15 @@ void write_json(const std::string& path, const nlohmann::json& j) {
 }
 
 int cmd_run(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& vcd,
-            const std::string& report, bool detail, bool progress) {
+            const std::string& report, bool detail, const std::string& progress) {
     cnc::sim::Scenario s = cnc::sim::load_scenario(scenario_path, sets);
     if (detail) s.detail = true;
     if (!vcd.empty()) s.vcd_path = vcd;
     if (!report.empty()) s.report_path = report;
-    if (progress) s.progress = isatty(STDERR_FILENO) ? cnc::sim::ProgressStyle::Terminal : cnc::sim::ProgressStyle::Log;
+    s.progress = progress == "off"   ? cnc::sim::ProgressStyle::Off
+                 : progress == "log" ? cnc::sim::ProgressStyle::Log
+                 : isatty(STDERR_FILENO) ? cnc::sim::ProgressStyle::Terminal
+                                         : cnc::sim::ProgressStyle::Log;
     const cnc::sim::RunOutcome out = cnc::sim::run_scenario(s);
     std::cout << out.summary;
     if (!s.report_path.empty()) write_json(s.report_path, out.report);
@@ -111,9 +114,12 @@ int sc_main(int argc, char* argv[]) {
     run->add_option("--vcd", vcd, "write a VCD trace to this file");
     run->add_option("--report", report, "write the JSON report to this file");
     run->add_flag("--detail", detail, "the report also holds the per-period, per-packet and per-run logs");
-    bool no_progress = false;
-    run->add_flag("--no-progress", no_progress,
-                  "no progress on stderr (otherwise shown for runs over a second of wall time)");
+    std::string progress = "auto";
+    run->add_option("--progress", progress,
+                    "progress on stderr for runs over a second of wall time: auto (a redrawn line on a terminal, "
+                    "a line per 10 % otherwise), log (lines), off")
+        ->check(CLI::IsMember({"auto", "log", "off"}))
+        ->capture_default_str();
 
     CLI::App* analyze = app.add_subcommand("analyze", "pulse metrics of any VCD (simulated or captured)");
     analyze->add_option("vcd", vcd_in, "VCD file")->required();
@@ -143,7 +149,7 @@ int sc_main(int argc, char* argv[]) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
     try {
-        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, !no_progress);
+        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, progress);
         if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report);
         if (analyze->parsed()) return cmd_analyze(vcd_in, step, dir, steps_per_mm, report);
         return cmd_keys();

@@ -96,8 +96,9 @@ std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::s
     std::vector<CompareColumn> columns;
     for (const std::string& arch : architectures) {
         const fs::path report = dir / (arch + ".json");
-        // The children's own progress lines would interleave on the shared stderr: the parent reports instead.
-        std::vector<std::string> args = {self_exe, "run", scenario, "--no-progress", "--set",
+        // One child at a time, its progress as whole lines (a line per 10 % of its estimate) named by architecture,
+        // between the parent's start and end lines.
+        std::vector<std::string> args = {self_exe, "run", scenario, "--progress", "log", "--set",
                                          "scenario.architecture=" + arch};
         for (const std::string& s : sets) {
             args.push_back("--set");

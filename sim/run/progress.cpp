@@ -12,14 +12,17 @@ constexpr double kTenthsPerEstimate = 10.0;  // log: one line per 10 % of the es
 
 }  // namespace
 
-Progress::Progress(std::ostream& out, ProgressStyle style, double expected_s)
+Progress::Progress(std::ostream& out, ProgressStyle style, double expected_s, std::string label)
     : m_out(out),
       m_style(expected_s > 0.0 ? style : ProgressStyle::Off),  // an empty job has nothing to show a share of
-      m_expected_s(expected_s) {}
+      m_expected_s(expected_s),
+      m_label(std::move(label)) {}
+
+std::string Progress::prefix() const { return "cncsim: " + (m_label.empty() ? "" : m_label + ": "); }
 
 std::string Progress::text(double sim_s, double wall_s) const {
     const double fraction = sim_s / m_expected_s;
-    std::string t = format("cncsim: simulated %.1f s of ~%.1f s", sim_s, m_expected_s);
+    std::string t = prefix() + format("simulated %.1f s of ~%.1f s", sim_s, m_expected_s);
     if (fraction >= 1.0) return t + format(" (past the estimate), %.1f s wall", wall_s);
     t += format(" (%.0f %%), %.1f s wall", 100.0 * fraction, wall_s);
     if (sim_s > 0.0) t += format(", about %.0f s to go", wall_s * (m_expected_s - sim_s) / sim_s);
@@ -56,7 +59,7 @@ void Progress::update(double sim_s, double wall_s) {
 
 void Progress::finish(double sim_s, double wall_s) {
     if (!m_shown) return;
-    const std::string done = format("cncsim: simulated %.1f s in %.1f s wall", sim_s, wall_s);
+    const std::string done = prefix() + format("simulated %.1f s in %.1f s wall", sim_s, wall_s);
     if (m_style == ProgressStyle::Terminal) {
         show(done);
         m_out << '\n' << std::flush;

@@ -15,7 +15,8 @@ enum class ProgressStyle {
 
 class Progress {
 public:
-    Progress(std::ostream& out, ProgressStyle style, double expected_s);
+    // `label` names the run in every line ("atmega"), so that the lines of several runs can share a stream.
+    Progress(std::ostream& out, ProgressStyle style, double expected_s, std::string label = "");
 
     // Between simulation slices: simulated seconds so far, wall seconds since the simulation started.
     void update(double sim_s, double wall_s);
@@ -23,12 +24,14 @@ public:
     void finish(double sim_s, double wall_s);
 
 private:
+    [[nodiscard]] std::string prefix() const;
     [[nodiscard]] std::string text(double sim_s, double wall_s) const;
     void show(const std::string& text);
 
     std::ostream& m_out;
     ProgressStyle m_style;
     double m_expected_s;
+    std::string m_label;
     bool m_shown = false;
     double m_last_draw_wall_s = 0.0;
     std::size_t m_last_width = 0;

@@ -33,11 +33,12 @@ RunBudget run_budget(const Scenario& s, const JobEstimate& estimate) {
     const double limit_s = std::min(s.max_sim_s.value_or(estimate.limit_s), kMaxLimitS);
     b.limit_ps = static_cast<TimePs>(limit_s * static_cast<double>(kPsPerSec));
     b.progress = s.progress;
+    b.label = s.architecture;
     return b;
 }
 
 SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& finished, TimePs check_ps) {
-    Progress progress(std::cerr, budget.progress, budget.estimate.expected_s);
+    Progress progress(std::cerr, budget.progress, budget.estimate.expected_s, budget.label);
     const auto start = std::chrono::steady_clock::now();
     // A model asked every check_ps never starves (the atmega's timers run on): each slice runs to its end, as
     // one bounded sc_start per check always did. Otherwise a slice stops at its last event, as one

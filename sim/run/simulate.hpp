@@ -16,6 +16,7 @@ struct RunBudget {
     TimePs limit_ps = 0;        // scenario.max_sim_s when the scenario sets it, else the estimate's limit
     bool limit_from_scenario = false;
     ProgressStyle progress = ProgressStyle::Off;
+    std::string label;          // names the run in its progress lines (the architecture)
 };
 
 [[nodiscard]] RunBudget run_budget(const Scenario& scenario, const JobEstimate& estimate);

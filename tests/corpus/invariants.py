@@ -29,7 +29,7 @@ def main():
         if os.path.exists(report):
             os.remove(report)
         run = subprocess.run([cncsim, "run", scenario, "--set", "scenario.architecture=" + arch, "--report", report,
-                              "--no-progress"], capture_output=True, text=True)
+                              "--progress", "off"], capture_output=True, text=True)
         if run.returncode == 2:
             failures.append("%s: bad input: %s" % (name, run.stderr.strip()))
             continue

@@ -22,6 +22,17 @@ TEST(Progress, RunsUnderASecondShowNothing) {
     }
 }
 
+TEST(Progress, EveryLineNamesTheRun) {
+    // compare runs its architectures one after another on one stderr: each line says which one it is.
+    std::ostringstream out;
+    Progress p(out, ProgressStyle::Log, 10.0, "atmega");
+    p.update(5.0, 2.0);
+    p.finish(10.0, 4.0);
+    EXPECT_EQ(out.str(),
+              "cncsim: atmega: simulated 5.0 s of ~10.0 s (50 %), 2.0 s wall, about 2 s to go\n"
+              "cncsim: atmega: simulated 10.0 s in 4.0 s wall\n");
+}
+
 TEST(Progress, LogHasOneLinePerTenthOfTheEstimate) {
     std::ostringstream out;
     Progress p(out, ProgressStyle::Log, 100.0);

@@ -5,9 +5,11 @@
 #include <cmath>
 
 #include "fpga_uart_test_util.hpp"
+#include "support/bad_input_message.hpp"
 #include "uart/core/line_receiver.hpp"
 
 using cnc::TimePs;
+using cnc::test::bad_input_message;
 using cnc::test::diffs;
 using cnc::test::run_shipped;
 
@@ -235,15 +237,30 @@ TEST(FpgaUartCalibratedMachine, StepsPerMmDrivesStepsAndCarriage) {
     EXPECT_EQ(p.at(1).at("period_cycles").at(1), 60'000);
 }
 
-// A 57600 Bd line into the FPGA's 115200 Bd UART: framing errors lose the packet, so the timeout is no help.
+// A packet_decoder watchdog of 50 us, shorter than one byte at 115200 Bd (86.8 us), resets the decoder between
+// every two bytes: the packet is lost, so the timeout is no help.
 TEST(FpgaUartLongMove, TimeoutOfALostPacketSaysSo) {
-    const auto out = run_shipped("diagonal_45", {"link.baud=57600"});
+    const auto out = run_shipped("diagonal_45", {"fpga.watchdog_ms=0.05"});
     EXPECT_FALSE(out.ok);
     // 20 mm on each axis at F1000: 28.28 mm at 16.67 mm/s, 1.70 s (line 4 of diagonal_45.nc)
     EXPECT_NE(out.failure.find("seg 1 (G-code line 4, a 1.70 s move): no ACK within 10.0 s, long after the move"),
               std::string::npos)
         << out.failure;
     EXPECT_NE(out.failure.find("the packet or its ACK was lost"), std::string::npos) << out.failure;
+}
+
+// A 57600 Bd line (CP2102: 24 MHz / 417 = 57 553.96 Bd) into the FPGA's 115200 Bd UART (50 MHz / 434 = 115 207.4
+// Bd) is 50 % off: refused before the run, naming both keys (it used to run into framing errors and an ACK timeout).
+TEST(FpgaUartLink, ABaudMismatchIsRefusedBeforeTheRun) {
+    const std::string err = bad_input_message([] { (void)run_shipped("diagonal_45", {"link.baud=57600"}); });
+    EXPECT_NE(err.find("diagonal_45.toml: link.baud, fpga.uart_baud: baud mismatch: link.baud = 57600 (the CP2102 "
+                       "runs 57553.96 Bd) against the FPGA UART at 115207.37 Bd (fpga.uart_baud: 50 MHz / 434 clocks "
+                       "a bit): the host's line runs -50.04 % off"),
+              std::string::npos)
+        << err;
+    // +104 %: 235000 is in AN205's 230400 range (24 MHz / 104 = 230 769 Bd), twice the FPGA's rate
+    EXPECT_NE(bad_input_message([] { (void)run_shipped("diagonal_45", {"link.baud=235000"}); }).find("+100.31 %"),
+              std::string::npos);
 }
 
 // The 20 mm square's estimate: its moves at their feeds, send_steps.py's start-up and six packet trips.

@@ -14,6 +14,7 @@
 #include "run/moves.hpp"
 #include "run/simulate.hpp"
 #include "systems/dead_time.hpp"
+#include "systems/link_checks.hpp"
 #include "systems/machine.hpp"
 #include "probes/vcd_trace.hpp"
 #include "uart/cp2102.hpp"
@@ -176,6 +177,15 @@ nlohmann::json sent_json(const host::SentPacket& p) {
             {"timed_out", p.timed_out}};
 }
 
+// The FPGA UART's rate (clock / FULL_BIT) against the CP2102's, before anything is simulated.
+void check_fpga_rate(const Scenario& s) {
+    const double fpga_bd = static_cast<double>(s.fpga.clk_hz) / s.fpga.uart_full_bit_cycles;
+    check_line_rates(s.file + ": link.baud, fpga.uart_baud", cp2102_end(s.link),
+                     {fpga_bd, format("the FPGA UART at %.2f Bd (fpga.uart_baud: ", fpga_bd) +
+                                   format("%g MHz / %.0f clocks a bit)", s.fpga.clk_hz / 1e6,
+                                          static_cast<double>(s.fpga.uart_full_bit_cycles))});
+}
+
 }  // namespace
 
 ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
@@ -183,6 +193,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     const std::vector<host::MotionSegment> segments =
         job.program ? host::cam(*job.program, s.machine, s.cam) : job.steps_file;
     const Packets packets = encode(s, segments);
+    check_fpga_rate(s);
 
     Wires w;
     uart::Cp2102 cp2102("cp2102", s.link);
@@ -297,7 +308,11 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     }
     run.details_text = text.str();
 
-    if (sender.aborted()) {
+    if (const std::optional<std::string> framing = framing_failure(static_cast<std::int64_t>(st.framing_errors), "FPGA",
+                                                                   cp2102.stats().framing_errors)) {
+        run.ok = false;
+        run.failure = *framing;
+    } else if (sender.aborted()) {
         run.ok = false;
         run.failure =
             "ACK timeout at " + sender.abort_reason() + "; send_steps.py stops here (host.on_timeout = abort)";

@@ -39,6 +39,12 @@ TEST(AtmegaSpeed, ThesisOcr3MeasuredFromTheStepEdges) {
 // Check 3: G1 X20 Y7 at 10 mm/s: OCR0A 4 (X 1562.5 steps/s), OCR2A 13 (Y 558.04 steps/s). Only X is counted
 // (3200 steps, 2.048 s); Y runs for that time: its edges at 7 + 14 k timer periods of 1024 cycles that fall
 // inside, 1143 against the 1120 commanded: 23 steps (143.75 um) past the end point.
+// Contour error: in timer ticks of 1024 cycles X rises at 10 k - 5 (k = 1..3200) and Y at 28 j - 14, so Y's last
+// rise (j = 1143: 31 990) comes before X's last (31 995): the tool is then at (3199, 1143) steps, one X step short
+// of the end and 23 Y steps above it. That point lies past the end of the programmed segment (its projection on
+// (20, 7) is 449.88 / 449 of it), so its nearest point on the path is the end (20, 7): 6.25 um x sqrt(1 + 23^2)
+// = 143.886 um, more than the final (3200, 1143), 143.75 um; the points before drift up from the line at 2 %
+// of the Y travel and are nearer.
 TEST(AtmegaDiagonal, RatesFollowTheEightBitWordsNotTheCommandedRatio) {
     const auto out = run_atmega("diagonal_20x7", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
@@ -63,7 +69,7 @@ TEST(AtmegaDiagonal, RatesFollowTheEightBitWordsNotTheCommandedRatio) {
     const auto& move = out.metrics.moves.at(0);
     EXPECT_EQ(move.steps_emitted, (std::vector<std::int64_t>{3200, 1143}));
     EXPECT_NEAR(*move.path.endpoint_vs_command_um, 23 * 6.25, 1e-6);
-    EXPECT_NEAR(*out.metrics.path.contour_max_um, 143.886, 1e-3);  // the end point, 23 steps up from the line
+    EXPECT_NEAR(*out.metrics.path.contour_max_um, 6.25 * std::sqrt(1.0 + 23.0 * 23.0), 1e-9);
     EXPECT_EQ(*out.metrics.pulse.tie_max_ns, 0.0);
 }
 
@@ -157,19 +163,7 @@ TEST(AtmegaLink, UsartRunsAt58823BaudAndDeliversEveryByte) {
     EXPECT_EQ(pc.at("bytes_written"), 39);  // 2 G00 x 7, 4 G01 x 6, M30
     EXPECT_EQ(link.at("bytes_to_mcu"), 39);
     EXPECT_EQ(link.at("bytes_from_mcu"), 39);  // one confirm per byte
-    EXPECT_EQ(pc.at("unexpected_confirms"), 0);
-}
-
-// Check 4, the other side: the link at 51200 Bd against the MCU's 58 823.5 (+14.95 %): framing errors, garbled
-// confirms, and CAD2G, which has no timeout, never finishes.
-TEST(AtmegaLink, LargeBaudMismatchShowsFramingErrors) {
-    const auto out = run_atmega("baud_mismatch");
-    EXPECT_FALSE(out.ok);
-    const auto& link = out.report.at("atmega").at("link");
-    EXPECT_NEAR(link.at("mcu_vs_line_pct").get<double>(), 14.95, 0.01);
-    EXPECT_GT(link.at("framing_errors_at_mcu").get<int>(), 0);
-    EXPECT_GT(out.report.at("atmega").at("pc").at("unexpected_confirms").get<int>(), 0);
-    EXPECT_TRUE(has_warning(out, "UART framing errors at the MCU"));
+    EXPECT_TRUE(pc.at("stopped").is_null());  // every byte the PC read was the confirm
 }
 
 // The link baud: 57600 unless the scenario sets link.baud (the fpga-uart default is 115200).
@@ -193,21 +187,4 @@ TEST(AtmegaJobs, SixSegmentCountsWhatTheFirmwareCounts) {
     EXPECT_EQ(m4.at("ocr"), nlohmann::json({2, 2}));
     EXPECT_NEAR(*out.metrics.moves[3].path.endpoint_vs_command_um, (4132 - 3864) * 6.25, 1e-6);
     EXPECT_EQ(*out.metrics.laser->on_in_rapid_ms, 0.0);
-}
-
-// A link at the wrong rate stalls the job; without scenario.max_sim_s the job's own limit stops the run.
-TEST(AtmegaStall, TheJobsOwnLimitStopsAStalledRunAndSaysSo) {
-    const auto out = run_atmega("baud_mismatch", {"scenario.max_sim_s=0"});
-    EXPECT_FALSE(out.ok);
-    // G1 X20 Y20 F1000: 28.28 mm at 16.67 mm/s; 0.3 s settle; 7 bytes (G01 and M30), each with a 0.1 ms write,
-    // two 1 ms USB frames, 1 ms driver latency, and itself and its confirm at 51200 Bd; 0.2 ms per transfer.
-    const double expected_s =
-        std::sqrt(800.0) / (1000.0 / 60.0) + 0.3 + 7 * (0.1e-3 + 2e-3 + 1e-3 + 20 / 51200.0) + 2 * 0.2e-3;
-    const double limit_s = 2 * expected_s + 1 + 10;
-    EXPECT_NEAR(out.report.at("scenario").at("estimated_s").get<double>(), expected_s, 1e-9);
-    EXPECT_NEAR(out.report.at("scenario").at("max_sim_s").get<double>(), limit_s, 1e-9);
-    // The garbled confirms let CAD2G send everything; the firmware, fed garbage, never reaches M30.
-    EXPECT_EQ(out.failure,
-              "the firmware did not reach M30: stopped at 15.044 s of simulated time by this job's limit, 15.044 s = "
-              "2 x 2.022 s + 1 s x 1 moves + 10 s from its 2.022 s estimate; set scenario.max_sim_s higher");
 }

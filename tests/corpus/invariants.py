@@ -19,7 +19,7 @@ EPS_S = 1e-12
 def main():
     cncsim, source, arch, workdir = sys.argv[1:5]
     os.makedirs(workdir, exist_ok=True)
-    failures, checked = [], 0
+    failures, refused, checked = [], [], 0
     for scenario in sorted(glob.glob(os.path.join(source, "scenarios", "*", "*.toml"))):
         name = os.path.relpath(scenario, source)
         with open(scenario) as f:
@@ -31,7 +31,9 @@ def main():
         run = subprocess.run([cncsim, "run", scenario, "--set", "scenario.architecture=" + arch, "--report", report,
                               "--progress", "off"], capture_output=True, text=True)
         if run.returncode == 2:
-            failures.append("%s: bad input: %s" % (name, run.stderr.strip()))
+            # Refused before simulating (e.g. an atmega scenario's 57600 Bd link against the FPGA's 115200 Bd
+            # UART): no run, nothing to check; the refusals have their own tests.
+            refused.append(name)
             continue
         with open(report) as f:
             r = json.load(f)
@@ -46,7 +48,10 @@ def main():
         for key in ("lead_in_ms", "tail_ms", "dead_total_ms", "dead_max_ms"):
             if job.get(key) is not None and job[key] < 0:
                 failures.append("%s: %s = %g < 0" % (name, key, job[key]))
+    if checked == 0:
+        failures.append("no scenario ran on %s" % arch)
     print("\n".join(failures))
+    print("refused as bad input on %s: %s" % (arch, ", ".join(refused) or "none"))
     print("%d passed, %d failed (%d scenario runs on %s)" % (checked - len(failures), len(failures), checked, arch))
     return 1 if failures else 0
 

@@ -162,6 +162,66 @@ CamOptions round_ends() {
     return opt;
 }
 
+// ChordEnds::OnArc's rule as cam.cpp describes it, written out here without its code: interior end k is the grid
+// point nearest the circle within +-W steps per axis of the rounded ideal end k (the corners of its grid cell when
+// W = 0), W = floor(min(3, 0.05 x longest chord x steps/mm)) with the chords counted for 0.8 of the tolerance.
+// (The rule also keeps the ends in order; at the radii checked with it the windows, a few steps wide, never reach
+// a neighbouring end some 50 steps away.)
+int window_steps_of(double r, double tol, double spm) {
+    return static_cast<int>(std::min(3.0, std::floor(0.05 * max_chord_rad(r, kOnArcSagittaShare * tol) * r * spm)));
+}
+
+double nearest_in_window_mm(geom::Vec2 ideal, geom::Vec2 c, double r, double spm_x, double spm_y, int w_x, int w_y) {
+    const auto range = [](double mm, double spm, int w) {
+        const double steps = mm * spm;
+        return w > 0 ? std::pair<std::int64_t, std::int64_t>{std::llround(steps) - w, std::llround(steps) + w}
+                     : std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::floor(steps)),
+                                                             static_cast<std::int64_t>(std::ceil(steps))};
+    };
+    const auto [x0, x1] = range(ideal.x_mm, spm_x, w_x);
+    const auto [y0, y1] = range(ideal.y_mm, spm_y, w_y);
+    double best = INFINITY;
+    for (std::int64_t x = x0; x <= x1; ++x) {
+        for (std::int64_t y = y0; y <= y1; ++y) {
+            best = std::min(best, residual_mm({static_cast<double>(x) / spm_x, static_cast<double>(y) / spm_y}, c, r));
+        }
+    }
+    return best;
+}
+
+// Every interior end of a full-turn arc (ends[0] = the start; none left out) is as near the circle as the nearest
+// point of its window (a tie may pick either point); returns the largest of those nearest distances: the residual
+// the rule promises, computed without the CAM.
+double expect_ends_nearest_in_window(const std::vector<geom::Vec2>& ends, geom::Vec2 c, double r, double a0_rad,
+                                     double sweep_rad, double tol, double spm_x, double spm_y) {
+    const std::size_t n = ends.size() - 1;
+    const int w_x = window_steps_of(r, tol, spm_x);
+    const int w_y = window_steps_of(r, tol, spm_y);
+    double worst = 0.0;
+    for (std::size_t k = 1; k < n; ++k) {
+        const double a = a0_rad + sweep_rad * static_cast<double>(k) / static_cast<double>(n);
+        const double best = nearest_in_window_mm(c + geom::Vec2{r * std::cos(a), r * std::sin(a)}, c, r, spm_x,
+                                                 spm_y, w_x, w_y);
+        EXPECT_NEAR(residual_mm(ends[k], c, r), best, 1e-12) << "end " << k;
+        worst = std::max(worst, best);
+    }
+    return worst;
+}
+
+// Bounds that follow from the rule, for windows of W >= 1 (h = the step on the axis, n = the circle's normal):
+// - Round's end is within half a step per axis of the ideal end, which is on the circle, so within
+//   0.5 sqrt(hx^2 + hy^2) of it (triangle inequality): 0.71 step when hx = hy. OnArc's end is never further off
+//   than that rounded end (the rule falls back on it).
+// - Along the axis i that the circle crosses more steeply (|n_i| >= 1/sqrt(2)), the window's points from the rounded
+//   end reach W h_i |n_i| across the circle on either side, at least the rounded end's 0.71 step when W h_i |n_i|
+//   >= 0.5 sqrt(hx^2 + hy^2) (true for every window below), so two neighbours straddle the circle; their distances
+//   to the centre differ by at most h_i, so the nearer is within h_i / 2 of it: OnArc's residual <= max(hx, hy) / 2.
+// - A chord's sagitta is at most the tolerance when its span is at most max_chord_rad (check_chords checks the
+//   spans), so its contour error is at most the tolerance plus its two ends' residuals.
+// - The spans add up to the sweep, so the longest is at least the sweep / n.
+double round_bound_mm(double spm_x, double spm_y) { return 0.5 * std::hypot(1.0 / spm_x, 1.0 / spm_y); }
+double on_arc_bound_mm(double spm_x, double spm_y) { return 0.5 * std::max(1.0 / spm_x, 1.0 / spm_y); }
+
 TEST(HostCam, RoundChordEndsAreWithinHalfAStepOfTheArc) {
     const Program prog = run_gcode("G0 X10 Y0\nG2 I-10 F600\n");
     const geom::Segment arc = prog.moves[1].path;
@@ -220,13 +280,15 @@ TEST(HostCam, OnArcFullCircleR10) {
     for (std::size_t i = 1; i < segs.size(); ++i) EXPECT_EQ(segs[i].motion, MotionKind::ArcCW);
     const auto ends = arc_ends(segs);
     const ArcChording m = check_chords(ends, {0, 0}, 10.0, false, tol, max_chord_rad(10.0, tol));
-    // Every interior end within 0.25 step of the circle; the largest measured is 0.183 step (1.14 um), where
-    // Round's bound is 0.71 step.
-    EXPECT_LT(m.max_residual_mm * kSpm, 0.25);
-    EXPECT_NEAR(m.max_residual_mm * kSpm, 0.1828, 0.0005);
-    // Snapping lengthened the longest chord to 0.956 of the tolerance's span; its contour error is 2.03 um.
-    EXPECT_NEAR(m.max_span_rad / max_chord_rad(10.0, tol), 0.9561, 0.0005);
-    EXPECT_NEAR(m.max_chord_error_mm * 1000.0, 2.025, 0.001);
+    // W = floor(0.05 x 0.358 mm x 160) = 2. Every end is its window's nearest point to the circle; the largest of
+    // those is 0.183 step (1.14 um), within OnArc's half step, where Round's bound is 0.71 step.
+    const double promised = expect_ends_nearest_in_window(ends, {0, 0}, 10.0, 0.0, -2 * M_PI, tol, kSpm, kSpm);
+    EXPECT_DOUBLE_EQ(m.max_residual_mm, promised);
+    EXPECT_LE(m.max_residual_mm, on_arc_bound_mm(kSpm, kSpm));
+    // The longest span is between the mean, 2 pi / 176 = 0.8925 of the tolerance's span, and that span.
+    EXPECT_GE(m.max_span_rad, 2 * M_PI / 176);
+    EXPECT_LE(m.max_span_rad, max_chord_rad(10.0, tol));
+    EXPECT_LE(m.max_chord_error_mm, tol + 2 * m.max_residual_mm);
     EXPECT_NEAR(m.travelled_rad, -2 * M_PI, 1e-12);
     // The last end is the rounded programmed end: the start again.
     EXPECT_DOUBLE_EQ(ends.back().x_mm, 10.0);
@@ -244,11 +306,17 @@ TEST(HostCam, OnArcBeatsRoundOnAnOffGridCircle) {
     // Round's count is for the full tolerance, so its rounded ends make some chords a little longer.
     const auto round =
         check_chords(arc_ends(cam_of(g, round_ends())), c, 10.0, true, tol, 1.05 * max_chord_rad(10.0, tol));
-    EXPECT_NEAR(on_arc.max_span_rad / max_chord_rad(10.0, tol), 0.9849, 0.0005);
-    EXPECT_NEAR(on_arc.max_residual_mm * kSpm, 0.4960, 0.0005);
-    EXPECT_NEAR(round.max_residual_mm * kSpm, 0.6498, 0.0005);
-    EXPECT_NEAR(on_arc.max_chord_error_mm * 1000.0, 4.547, 0.001);
-    EXPECT_NEAR(round.max_chord_error_mm * 1000.0, 4.944, 0.001);
+    // OnArc: every end its window's nearest (0.496 step at worst, near the axes), within its half step; Round
+    // within its 0.71 step; OnArc nearer on both counts.
+    const double promised =
+        expect_ends_nearest_in_window(arc_ends(cam_of(g)), c, 10.0, 0.0, 2 * M_PI, tol, kSpm, kSpm);
+    EXPECT_DOUBLE_EQ(on_arc.max_residual_mm, promised);
+    EXPECT_LE(on_arc.max_residual_mm, on_arc_bound_mm(kSpm, kSpm));
+    EXPECT_LE(round.max_residual_mm, round_bound_mm(kSpm, kSpm));
+    EXPECT_LT(on_arc.max_residual_mm, round.max_residual_mm);
+    EXPECT_LT(on_arc.max_chord_error_mm, round.max_chord_error_mm);
+    EXPECT_LE(on_arc.max_chord_error_mm, tol + 2 * on_arc.max_residual_mm);
+    EXPECT_GE(on_arc.max_span_rad, 2 * M_PI / 176);
     EXPECT_NEAR(on_arc.travelled_rad, 2 * M_PI, 1e-12);
 }
 
@@ -263,12 +331,16 @@ TEST(HostCam, OnArcWithDifferentStepsPerMmPerAxis) {
     const auto m = check_chords(ends, {0, 0}, 10.0, false, tol, max_chord_rad(10.0, tol));
     const auto r = check_chords(arc_ends(cam_of(g, round_ends(), mm), kSpm, 80.0), {0, 0}, 10.0, false, tol,
                                 1.05 * max_chord_rad(10.0, tol));
-    EXPECT_NEAR(m.max_span_rad / max_chord_rad(10.0, tol), 0.9729, 0.0005);
-    // Near +-Y the residual is along Y, where half a step is 6.25 um.
-    EXPECT_NEAR(m.max_residual_mm * 1000.0, 5.695, 0.001);
-    EXPECT_NEAR(r.max_residual_mm * 1000.0, 5.861, 0.001);
-    EXPECT_NEAR(m.max_chord_error_mm * 1000.0, 5.741, 0.001);
-    EXPECT_NEAR(r.max_chord_error_mm * 1000.0, 6.365, 0.001);
+    // W = 2 on X, floor(0.05 x 0.358 mm x 80) = 1 on Y. Near +-Y the residual is along Y, where half a step is
+    // 6.25 um: every end its window's nearest (5.695 um at worst), within that; Round within
+    // 0.5 sqrt(6.25^2 + 12.5^2) = 6.99 um.
+    const double promised = expect_ends_nearest_in_window(ends, {0, 0}, 10.0, 0.0, -2 * M_PI, tol, kSpm, 80.0);
+    EXPECT_DOUBLE_EQ(m.max_residual_mm, promised);
+    EXPECT_LE(m.max_residual_mm, on_arc_bound_mm(kSpm, 80.0));
+    EXPECT_LE(r.max_residual_mm, round_bound_mm(kSpm, 80.0));
+    EXPECT_LE(m.max_chord_error_mm, tol + 2 * m.max_residual_mm);
+    EXPECT_LE(r.max_chord_error_mm, tol + 2 * r.max_residual_mm);
+    EXPECT_GE(m.max_span_rad, 2 * M_PI / 176);
     EXPECT_NEAR(m.travelled_rad, -2 * M_PI, 1e-12);
     EXPECT_DOUBLE_EQ(ends.back().x_mm, 10.0);
     EXPECT_DOUBLE_EQ(ends.back().y_mm, 0.0);
@@ -289,11 +361,14 @@ TEST(HostCam, OnArcTinyRadiusSearchesTheFourCorners) {
         EXPECT_LT(std::fabs(e.x_mm - 0.05 * std::cos(a)) * kSpm, 1.0) << k;
         EXPECT_LT(std::fabs(e.y_mm - 0.05 * std::sin(a)) * kSpm, 1.0) << k;
     }
-    // On so coarse a grid a chord spans up to 1.11 x the tolerance's span (its error 2.50 um).
-    const auto m = check_chords(ends, {0, 0}, 0.05, true, tol, 1.12 * max_chord_rad(0.05, tol));
-    EXPECT_NEAR(m.max_span_rad / max_chord_rad(0.05, tol), 1.1119, 0.0005);
-    EXPECT_NEAR(m.max_residual_mm * kSpm, 0.2462, 0.0005);
-    EXPECT_NEAR(m.max_chord_error_mm * 1000.0, 2.500, 0.001);
+    // On so coarse a grid an end may sit at any corner of its ideal end's cell, up to a cell diagonal (sqrt(2)
+    // steps, 0.177 rad at R = 8 steps) from it along the arc: a span is at most 2 pi / 13 + 2 x 0.177 rad, 1.47 x
+    // the tolerance's span (1.11 x here). The residual keeps Round's bound (the rule falls back on the rounded end).
+    const double longest_rad = 2 * M_PI / 13 + 2 * std::sqrt(2.0) / (0.05 * kSpm);
+    const auto m = check_chords(ends, {0, 0}, 0.05, true, tol, longest_rad);
+    EXPECT_GE(m.max_span_rad, 2 * M_PI / 13);
+    EXPECT_LE(m.max_residual_mm, round_bound_mm(kSpm, kSpm));
+    EXPECT_LE(m.max_chord_error_mm, tol + 2 * m.max_residual_mm);
     EXPECT_NEAR(m.travelled_rad, 2 * M_PI, 1e-12);
     EXPECT_DOUBLE_EQ(ends.back().x_mm, 0.05);
     EXPECT_DOUBLE_EQ(ends.back().y_mm, 0.0);
@@ -322,8 +397,12 @@ TEST(HostCam, OnArcLargeRadius) {
     ASSERT_EQ(segs.size(), 1u + 1242u);
     const auto ends = arc_ends(segs);
     const auto m = check_chords(ends, {0, 0}, 500.0, false, tol, max_chord_rad(500.0, tol));
-    EXPECT_NEAR(m.max_residual_mm * kSpm, 0.4142, 0.0005);
-    EXPECT_NEAR(m.max_span_rad / max_chord_rad(500.0, tol), 0.9141, 0.0005);
+    // Every end its window's nearest (0.414 step at worst), within OnArc's half step; the longest span between
+    // the mean and the tolerance's span.
+    const double promised = expect_ends_nearest_in_window(ends, {0, 0}, 500.0, 0.0, -2 * M_PI, tol, kSpm, kSpm);
+    EXPECT_DOUBLE_EQ(m.max_residual_mm, promised);
+    EXPECT_LE(m.max_residual_mm, on_arc_bound_mm(kSpm, kSpm));
+    EXPECT_GE(m.max_span_rad, 2 * M_PI / 1242);
     EXPECT_NEAR(m.travelled_rad, -2 * M_PI, 1e-12);
     EXPECT_DOUBLE_EQ(ends.back().x_mm, 500.0);
     EXPECT_DOUBLE_EQ(ends.back().y_mm, 0.0);

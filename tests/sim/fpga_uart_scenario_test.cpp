@@ -5,15 +5,64 @@
 #include <cmath>
 
 #include "fpga_uart_test_util.hpp"
+#include "support/bad_input_message.hpp"
 #include "uart/core/line_receiver.hpp"
 
 using cnc::TimePs;
+using cnc::test::bad_input_message;
 using cnc::test::diffs;
 using cnc::test::run_shipped;
 
 namespace {
 constexpr TimePs kClockPs = 20'000;  // 50 MHz
+
+// The circle of circle_r10.nc (radius 10 mm about (10, 10), G2 at F600 from (20, 10)) as step_gen draws it, rebuilt
+// from seed 000's arithmetic, so that the contour error is derived without the CAM's feeds, step_gen or the
+// metrics. The chords are the packets' step counts; per chord:
+//   - the packet feed is F x dominant / length, rounded (§3.4.5), at 160 steps/mm on both axes;
+//   - the dominant period is NUMERATOR / feed, NUMERATOR = 50 MHz x 60 s / 160 steps/mm = 18 750 000, and the other
+//     axis's is that x N_dominant / N_other, both truncated to clocks (§5.4);
+//   - step_gen fires both axes on the first RUN clock and then once a period: step k of an axis at k periods,
+//     k = 0 .. N - 1, and steps of both axes at the same clock move the tool together.
+// The contour error of the tool after each step event is | |p - c| - R |. (The G0 before the circle, along
+// (2, 1), leads its line by under one step across it: < 6.25 um x 2 / sqrt(5) = 5.59 um, below the circle's.)
+double circle_staircase_contour_max_um(const nlohmann::json& packets) {
+    constexpr double kStepsPerMm = 160.0;
+    constexpr std::int64_t kNumerator = 18'750'000;
+    constexpr double kFeedMmPerMin = 600.0;
+    const double cx = 10.0 * kStepsPerMm, cy = 10.0 * kStepsPerMm, r = 10.0 * kStepsPerMm;  // in steps
+    std::int64_t x = 0, y = 0;
+    double worst_steps = 0.0;
+    for (const auto& p : packets) {
+        const std::int64_t sx = p.at("steps").at(0), sy = p.at("steps").at(1);
+        const std::int64_t nx = std::llabs(sx), ny = std::llabs(sy);
+        const bool arc = p.at("motion") != 0;
+        if (arc) {
+            const std::int64_t n_dom = std::max(nx, ny), n_sub = std::min(nx, ny);
+            const auto feed = std::llround(kFeedMmPerMin * static_cast<double>(n_dom) / std::hypot(nx, ny));
+            const std::int64_t p_dom = kNumerator / feed;
+            const std::int64_t p_sub = n_sub > 0 ? p_dom * n_dom / n_sub : 0;
+            EXPECT_EQ(p.at("feed"), feed);
+            EXPECT_EQ(p.at("period_cycles"), nlohmann::json(nx >= ny ? std::vector<std::int64_t>{p_dom, p_sub}
+                                                                      : std::vector<std::int64_t>{p_sub, p_dom}));
+            const std::int64_t px = nx >= ny ? p_dom : p_sub, py = nx >= ny ? p_sub : p_dom;
+            std::int64_t kx = 0, ky = 0;  // steps made
+            while (kx < nx || ky < ny) {
+                const std::int64_t tx = kx < nx ? kx * px : INT64_MAX, ty = ky < ny ? ky * py : INT64_MAX;
+                const std::int64_t t = std::min(tx, ty);
+                if (tx == t) ++kx;
+                if (ty == t) ++ky;
+                const double dx = static_cast<double>(x + (sx < 0 ? -kx : kx)) - cx;
+                const double dy = static_cast<double>(y + (sy < 0 ? -ky : ky)) - cy;
+                worst_steps = std::max(worst_steps, std::fabs(std::hypot(dx, dy) - r));
+            }
+        }
+        x += sx;
+        y += sy;
+    }
+    return worst_steps / kStepsPerMm * 1000.0;
 }
+}  // namespace
 
 // Check 2: the packet 01 00 00 01 40 FF FF FF 60 04 B0 on the real chain.
 TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
@@ -148,26 +197,31 @@ TEST(FpgaUartDiagonal, FeedErrorOfTheIntegerFeedAndTruncatedPeriod) {
     EXPECT_LT(*move.timing.feed_error_pct, 0.0);  // 707 < 707.1: slower than programmed
 }
 
-// Check 6: the circle's contour error stays within the chord tolerance plus one step.
+// Check 6: the circle's contour error stays within the chord tolerance plus one step, and is what the staircase
+// of step_gen over the chords gives (7.796 um, on four chords, one per quadrant).
 TEST(FpgaUartCircle, ContourErrorWithinChordTolerancePlusOneStep) {
-    const auto out = run_shipped("circle_r10");
+    const auto out = run_shipped("circle_r10", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     ASSERT_TRUE(out.metrics.path.contour_max_um.has_value());
     ASSERT_TRUE(out.metrics.path.contour_rms_um.has_value());
     EXPECT_LE(*out.metrics.path.contour_max_um, 2.0 + 6.25);
-    EXPECT_NEAR(*out.metrics.path.contour_max_um, 7.796, 0.001);  // regression: chord ends on the arc
+    EXPECT_NEAR(*out.metrics.path.contour_max_um,
+                circle_staircase_contour_max_um(out.report.at("fpga-uart").at("fpga").at("packets")), 1e-6);
     EXPECT_GT(*out.metrics.path.contour_rms_um, 0.0);
     EXPECT_LT(*out.metrics.path.contour_rms_um, *out.metrics.path.contour_max_um);
     EXPECT_GT(out.metrics.moves.size(), 100U);  // the circle went as chords
 }
 
 // The seed's literal chord-end rounding (each axis rounded, §3.4.4) leaves the chord ends up to 0.71 step off the
-// circle: with the step_gen staircase the contour error then exceeds tolerance + one step. Regression numbers.
+// circle: with the step_gen staircase the contour error then exceeds tolerance + one step (9.641 um), within the
+// bound that adds the ends' rounding: 2 + 6.25 + 6.25 x sqrt(2) / 2 = 12.67 um.
 TEST(FpgaUartCircle, SeedRoundingOfChordEndsExceedsTheBound) {
-    const auto out = run_shipped("circle_r10", {"host.chord_ends=round"});
+    const auto out = run_shipped("circle_r10", {"host.chord_ends=round", "trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
-    EXPECT_NEAR(*out.metrics.path.contour_max_um, 9.641, 0.001);
+    EXPECT_NEAR(*out.metrics.path.contour_max_um,
+                circle_staircase_contour_max_um(out.report.at("fpga-uart").at("fpga").at("packets")), 1e-6);
     EXPECT_GT(*out.metrics.path.contour_max_um, 2.0 + 6.25);
+    EXPECT_LE(*out.metrics.path.contour_max_um, 2.0 + 6.25 + 6.25 * std::sqrt(2.0) / 2.0);
     EXPECT_EQ(out.report.at("fpga-uart").at("segments"), 159);
 }
 
@@ -235,15 +289,30 @@ TEST(FpgaUartCalibratedMachine, StepsPerMmDrivesStepsAndCarriage) {
     EXPECT_EQ(p.at(1).at("period_cycles").at(1), 60'000);
 }
 
-// A 57600 Bd line into the FPGA's 115200 Bd UART: framing errors lose the packet, so the timeout is no help.
+// A packet_decoder watchdog of 50 us, shorter than one byte at 115200 Bd (86.8 us), resets the decoder between
+// every two bytes: the packet is lost, so the timeout is no help.
 TEST(FpgaUartLongMove, TimeoutOfALostPacketSaysSo) {
-    const auto out = run_shipped("diagonal_45", {"link.baud=57600"});
+    const auto out = run_shipped("diagonal_45", {"fpga.watchdog_ms=0.05"});
     EXPECT_FALSE(out.ok);
     // 20 mm on each axis at F1000: 28.28 mm at 16.67 mm/s, 1.70 s (line 4 of diagonal_45.nc)
     EXPECT_NE(out.failure.find("seg 1 (G-code line 4, a 1.70 s move): no ACK within 10.0 s, long after the move"),
               std::string::npos)
         << out.failure;
     EXPECT_NE(out.failure.find("the packet or its ACK was lost"), std::string::npos) << out.failure;
+}
+
+// A 57600 Bd line (CP2102: 24 MHz / 417 = 57 553.96 Bd) into the FPGA's 115200 Bd UART (50 MHz / 434 = 115 207.4
+// Bd) is 50 % off: refused before the run, naming both keys (it used to run into framing errors and an ACK timeout).
+TEST(FpgaUartLink, ABaudMismatchIsRefusedBeforeTheRun) {
+    const std::string err = bad_input_message([] { (void)run_shipped("diagonal_45", {"link.baud=57600"}); });
+    EXPECT_NE(err.find("diagonal_45.toml: link.baud, fpga.uart_baud: baud mismatch: link.baud = 57600 (the CP2102 "
+                       "runs 57553.96 Bd) against the FPGA UART at 115207.37 Bd (fpga.uart_baud: 50 MHz / 434 clocks "
+                       "a bit): the host's line runs -50.04 % off"),
+              std::string::npos)
+        << err;
+    // +104 %: 235000 is in AN205's 230400 range (24 MHz / 104 = 230 769 Bd), twice the FPGA's rate
+    EXPECT_NE(bad_input_message([] { (void)run_shipped("diagonal_45", {"link.baud=235000"}); }).find("+100.31 %"),
+              std::string::npos);
 }
 
 // The 20 mm square's estimate: its moves at their feeds, send_steps.py's start-up and six packet trips.

@@ -36,6 +36,28 @@ TEST(StepgenLaw, ErrorPastTheDeadbandIsHalfCorrectedWithinTheAccelLimit) {
     EXPECT_NEAR(stepgen_velocity(kParams, s2, 1000.0, 1000.0 - 3.2 - 0.3, kT).velocity_steps_per_s, 3200.0, 1e-9);
 }
 
+// The position gain where the acceleration limit does not clip it. The axis cruises at its command's 3200 steps/s
+// (vel_fb = ff_vel: t_match = 0) and lags 0.6 steps more than the one-period lag. By hand, from the hm2 formula:
+//   ff_vel       = (1000 - 996.8) / 1 ms = 3200 steps/s
+//   pos_at_match = pos_fb + (3200 + 3200) / 2 x (0 + 1 ms) = 996.2 + 3.2 = 999.4
+//   err_at_match = 999.4 - (1000 + 3200 x 0) = -0.6 steps, past the 0.5-step deadband
+//   vel          = ff_vel - gain x err / T = 3200 + gain x 600 steps/s
+// with A = 10^6 steps/s^2 the velocity may change by A T = 1000 steps/s, more than the correction. hm2's gain 0.5
+// gives 3500 steps/s: over the next period the axis moves 3.5 steps, half the 0.6-step error closed; gain 1 gives
+// 3800 steps/s and closes it all (996.2 + 3.8 = 1000, the command).
+TEST(StepgenLaw, PositionGainCorrectsThatShareOfTheErrorInOnePeriod) {
+    StepgenParams loose = kParams;
+    loose.max_accel_steps_per_s2 = 1'000'000.0;
+    loose.deadband_steps = 0.5;
+    StepgenState half{1000.0 - 3.2, 3200.0};
+    const StepgenOutput out = stepgen_velocity(loose, half, 1000.0, 1000.0 - 3.2 - 0.6, kT);
+    EXPECT_NEAR(out.err_at_match_steps, -0.6, 1e-9);
+    EXPECT_NEAR(out.velocity_steps_per_s, 3500.0, 1e-6);
+    loose.position_gain = 1.0;
+    StepgenState all{1000.0 - 3.2, 3200.0};
+    EXPECT_NEAR(stepgen_velocity(loose, all, 1000.0, 1000.0 - 3.2 - 0.6, kT).velocity_steps_per_s, 3800.0, 1e-6);
+}
+
 TEST(StepgenLaw, StartFromRestMatchesTheFirstPeriodsVelocity) {
     // Trapezoid at 160,000 steps/s^2: after 1 ms the command is 0.08 steps ahead, ff_vel 80 steps/s.
     // t_match = 80 / 200,000 = 0.4 ms; pos_at_match = 40 x 1.4 ms = 0.056; cmd at match 0.08 + 0.032 = 0.112.

@@ -124,11 +124,6 @@ std::vector<Warning> link_warnings(const AtmegaFacts& f) {
         w.push_back({"cp2102_framing_errors", "",
                      std::to_string(f.cp2102.stats().framing_errors) + " UART framing errors at the CP2102"});
     }
-    if (f.pc.unexpected_confirms() > 0) {
-        w.push_back({"unexpected_confirms", "",
-                     std::to_string(f.pc.unexpected_confirms()) +
-                         " confirm bytes other than 0x06 (CAD2G takes any byte as a confirm)"});
-    }
     const ChordGaps gaps = chord_gaps(f);
     if (gaps.late > 0) {
         w.push_back({"late_chords", "",
@@ -157,8 +152,10 @@ nlohmann::json details_json(const AtmegaFacts& f, bool detail) {
                         {"pc",
                          {{"transfers", f.pc.transfers().size()},
                           {"bytes_written", f.pc.writes().size()},
-                          {"unexpected_confirms", f.pc.unexpected_confirms()},
                           {"finished", f.pc.finished()},
+                          {"stopped", f.pc.failure() ? nlohmann::json(f.pc.failure()->reason) : nlohmann::json(nullptr)},
+                          {"t_stopped_s",
+                           f.pc.failure() ? nlohmann::json(ps_to_s(f.pc.failure()->t_ps)) : nlohmann::json(nullptr)},
                           {"t_end_s",
                            f.pc.finished() ? nlohmann::json(ps_to_s(f.pc.t_end_ps())) : nlohmann::json(nullptr)}}},
                         {"mcu", {{"cycles", st.cycles}, {"stopped", f.mcu.stopped()}}},
@@ -185,8 +182,10 @@ std::string details_text(const AtmegaFacts& f) {
       << format("  line %.2f Bd (%+.3f %% vs requested), MCU USART %.1f Bd: ", baud.actual_bd, baud.error_pct,
                 f.mcu_baud)
       << format("%+.3f %% against the line\n", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0)
-      << "  PC wrote " << f.pc.writes().size() << " bytes, one per confirm (" << f.pc.unexpected_confirms()
-      << " unexpected confirm values); framing errors at the MCU " << st.usart.rx_framing_errors
+      << "  PC wrote " << f.pc.writes().size() << " bytes, one per confirm"
+      << (f.pc.failure() ? format(" (stopped at %.3f s: ", ps_to_s(f.pc.failure()->t_ps)) + f.pc.failure()->reason + ")"
+                         : std::string())
+      << "; framing errors at the MCU " << st.usart.rx_framing_errors
       << ", at the CP2102 " << f.cp2102.stats().framing_errors << '\n'
       << "  commands:";
     for (const auto& [id, n] : per_id) {

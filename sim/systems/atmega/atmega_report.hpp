@@ -35,7 +35,7 @@ struct AtmegaFacts {
 };
 
 [[nodiscard]] ChordGaps chord_gaps(const AtmegaFacts& f);
-// Framing errors at either end, confirm values other than 0x06, chords that started late.
+// Framing errors at either end, chords that started late.
 [[nodiscard]] std::vector<Warning> link_warnings(const AtmegaFacts& f);
 [[nodiscard]] nlohmann::json details_json(const AtmegaFacts& f, bool detail);
 [[nodiscard]] std::string details_text(const AtmegaFacts& f);

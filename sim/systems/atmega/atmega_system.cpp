@@ -6,6 +6,8 @@
 
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
+#include "common/text_format.hpp"
+#include "host/core/seed003/firmware_busy.hpp"
 #include "host/pc_program.hpp"
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
@@ -13,7 +15,9 @@
 #include "run/simulate.hpp"
 #include "systems/atmega/atmega_report.hpp"
 #include "systems/atmega/enabled_steps.hpp"
+#include "systems/atmega/firmware_usart.hpp"
 #include "systems/atmega/motion_windows.hpp"
+#include "systems/link_checks.hpp"
 #include "systems/machine.hpp"
 #include "uart/cp2102.hpp"
 
@@ -96,8 +100,6 @@ std::vector<std::size_t> transfer_moves(const s3::Plan& plan, const std::vector<
 // a USB frame out, the byte and its confirm on the line, a frame in and the driver latency; per transfer the
 // PC's work. The chords of an arc overlap the previous chord's motion, so this counts them twice: an upper bound.
 ArchPace pace(const Scenario& s, const uart::Cp2102Config& link, const std::vector<s3::Transfer>& transfers) {
-    constexpr double kBitsPerByte = 10.0;  // 8N1
-    constexpr double kLineBytesPerByte = 2.0;  // the byte and its confirm
     ArchPace p;
     // The PC program also holds every speed to the machine's velocity limits.
     p.max_speed_x_mm_per_s = std::min(s3::speed_mm_per_s(0, s.machine.x.mm_per_step(), s.atmega.pc.timer),
@@ -105,12 +107,42 @@ ArchPace pace(const Scenario& s, const uart::Cp2102Config& link, const std::vect
     p.max_speed_y_mm_per_s = std::min(s3::speed_mm_per_s(0, s.machine.y.mm_per_step(), s.atmega.pc.timer),
                                       s.machine.y.limits.max_velocity_mm_per_s);
     p.startup_s = ps_to_s(s.sender.settle_ps);
-    const double byte_s = ps_to_s(s.sender.write_latency_ps + 2 * link.usb_frame_ps + link.usb_latency_ps) +
-                          kLineBytesPerByte * kBitsPerByte / static_cast<double>(link.requested_baud);
+    const double byte_s = ps_to_s(host::byte_round_trip_ps(s.sender, link));
     for (const s3::Transfer& t : transfers) {
         p.link_s += ps_to_s(s.sender.packet_processing_ps) + static_cast<double>(t.bytes.size()) * byte_s;
     }
     return p;
+}
+
+// The firmware's USART against the CP2102's rate, before anything is simulated (systems/link_checks.hpp).
+void check_firmware_rate(const Scenario& s, const uart::Cp2102Config& link, const avr::AvrCoreConfig& avr_cfg) {
+    const std::optional<FirmwareUsart> usart = probe_firmware_usart(avr_cfg);
+    if (!usart) return;
+    const std::string firmware =
+        s.atmega.firmware.empty() ? "the seed 003 firmware" : "the firmware " + avr_cfg.firmware_elf;
+    check_line_rates(s.file + ": link.baud, avr.firmware", cp2102_end(link),
+                     {usart->baud, firmware + "'s USART0 at " + usart->text(avr_cfg.f_cpu_hz)});
+}
+
+host::ConfirmTimeouts confirm_timeouts(const Scenario& s, const uart::Cp2102Config& link, const s3::Plan& plan,
+                                       const std::vector<s3::Transfer>& transfers) {
+    host::ConfirmTimeouts t;
+    t.round_trip_ps = host::byte_round_trip_ps(s.sender, link);
+    for (const double busy_s : s3::motion_before_next_confirm_s(plan, transfers, s.atmega.pc.timer)) {
+        t.motion_after_ps.push_back(s_to_ps(busy_s));
+    }
+    return t;
+}
+
+// Why the link does not work, once it is clear: frames garbled at either end, or the PC program's protocol check
+// (which names the firmware it checked).
+std::optional<std::string> link_failure(const avr::AvrCore& mcu, const uart::Cp2102& cp2102,
+                                        const host::PcProgram& pc) {
+    if (auto framing = framing_failure(mcu.stats().usart.rx_framing_errors, "MCU", cp2102.stats().framing_errors)) {
+        return framing;
+    }
+    if (pc.failure()) return pc.failure()->reason + " (avr.firmware " + mcu.config().firmware_elf + ")";
+    return std::nullopt;
 }
 
 }  // namespace
@@ -124,13 +156,14 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     const avr::AvrCoreConfig avr_cfg = avr_config(s);
 
     const uart::Cp2102Config link = link_config(s);
+    check_firmware_rate(s, link, avr_cfg);
     const std::vector<s3::Transfer> transfers = s3::transfers(plan);
 
     Wires w;
     uart::Cp2102 cp2102("cp2102", link);
     cp2102.txd(w.uart_rx);
     cp2102.rxd(w.uart_tx);
-    host::PcProgram pc("host", s.sender, cp2102, transfers);
+    host::PcProgram pc("host", s.sender, cp2102, transfers, confirm_timeouts(s, link, plan, transfers));
     pc.set_waits(host::waits_per_unit(*job.program, transfer_moves(plan, transfers, job.program->moves.size())));
     avr::AvrCore mcu("atmega328p", avr_cfg);
     mcu.step_x(w.step_x);
@@ -155,7 +188,8 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     }
 
     const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s, link, transfers)));
-    const SimulationEnd end = simulate(budget, [&mcu] { return mcu.stopped(); }, kStopCheckPs);
+    const SimulationEnd end =
+        simulate(budget, [&] { return mcu.stopped() || link_failure(mcu, cp2102, pc).has_value(); }, kStopCheckPs);
     const TimePs t_now = end.t_ps;
     vcd.reset();
 
@@ -185,11 +219,13 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     run.details = details_json(facts, s.detail);
     run.details_text = details_text(facts);
 
-    if (!pc.finished()) {
+    if (const std::optional<std::string> why = link_failure(mcu, cp2102, pc)) {
+        run.ok = false;
+        run.failure = *why + format(" (run stopped at %.3f s of simulated time)", ps_to_s(t_now));
+    } else if (!pc.finished()) {
         run.ok = false;
         run.failure = mcu.stopped() ? "the firmware stopped before the PC program had sent the job"
-                                    : "the job did not finish (CAD2G waits for a confirm byte without a timeout): " +
-                                          time_limit_text(budget, end);
+                                    : "the job did not finish: " + time_limit_text(budget, end);
     } else if (!mcu.stopped()) {
         run.ok = false;
         run.failure = "the firmware did not reach M30: " + time_limit_text(budget, end);

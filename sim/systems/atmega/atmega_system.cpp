@@ -7,12 +7,12 @@
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
 #include "host/pc_program.hpp"
+#include "metrics/enabled_steps.hpp"
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
 #include "run/moves.hpp"
 #include "run/simulate.hpp"
 #include "systems/atmega/atmega_report.hpp"
-#include "systems/atmega/enabled_steps.hpp"
 #include "systems/atmega/motion_windows.hpp"
 #include "systems/machine.hpp"
 #include "uart/cp2102.hpp"
@@ -162,10 +162,12 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
         plan, {rec.log("n_enbl_x"), rec.log("n_enbl_y"), rec.log("dir_x"), rec.log("dir_y"), rec.log("laser")},
         t_now);
     metrics::RunInput& in = run.input;
-    in.axes = {metrics::AxisTrace{"x", enabled_steps(rec.log("step_x"), rec.log("n_enbl_x")), rec.log("dir_x"),
-                                  s.machine.x.steps_per_mm(), false},
-               metrics::AxisTrace{"y", enabled_steps(rec.log("step_y"), rec.log("n_enbl_y")), rec.log("dir_y"),
-                                  s.machine.y.steps_per_mm(), false}};
+    const auto driven = [&rec](const char* step, const char* n_enbl) {  // the DRV8825's nENBL is active low
+        return metrics::enabled_steps(rec.log(step), rec.log(n_enbl), metrics::EnableLevel::ActiveLow);
+    };
+    in.axes = {
+        metrics::AxisTrace{"x", driven("step_x", "n_enbl_x"), rec.log("dir_x"), s.machine.x.steps_per_mm(), false},
+        metrics::AxisTrace{"y", driven("step_y", "n_enbl_y"), rec.log("dir_y"), s.machine.y.steps_per_mm(), false}};
     in.moves = executed_moves(s, job, plan, windows);
     for (const mech::ToolSample& t : machine.carriage().samples()) in.tool.push_back({t.t_ps, t.pos});
     in.laser = rec.log("laser");

@@ -115,8 +115,6 @@ int cmd_keys() {
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    // The kernel's tracing notes would only clutter stderr.
-    sc_core::sc_report_handler::set_actions("tracing timescale unit set", sc_core::SC_DO_NOTHING);
     CLI::App app{"cncsim: co-simulation of CNC / laser motion-control architectures"};
     app.require_subcommand(1);
     // The SystemC release too: results can differ between kernels (toolchain.md §1 pins 2.3.4).

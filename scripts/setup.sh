@@ -7,7 +7,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libsystemc-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev
-  python3
+  python3 sigrok-cli
   gcc-avr binutils-avr avr-libc simavr libsimavr-dev libelf-dev
 )
 SUDO=""

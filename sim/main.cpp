@@ -14,7 +14,7 @@
 #include "compare/compare.hpp"
 #include "metrics/analyze_input.hpp"
 #include "metrics/metrics.hpp"
-#include "metrics/vcd.hpp"
+#include "metrics/vcd_reader.hpp"
 #include "run/run.hpp"
 #include "scenario/scenario.hpp"
 
@@ -50,13 +50,36 @@ int cmd_run(const std::string& scenario_path, const std::vector<std::string>& se
     return kExitOk;
 }
 
-int cmd_analyze(const std::string& vcd_path, const std::string& step, const std::string& dir, double steps_per_mm,
-                const std::string& report) {
+// The axes of `cncsim analyze`: the i-th --step with the i-th --dir and, if any are given, the i-th --enable.
+std::vector<cnc::metrics::AxisSignalNames> analyze_axes(const std::vector<std::string>& steps,
+                                                        const std::vector<std::string>& dirs,
+                                                        const std::vector<std::string>& enables) {
+    const std::string counts = " (" + std::to_string(steps.size()) + " --step, " + std::to_string(dirs.size()) +
+                               " --dir, " + std::to_string(enables.size()) + " --enable)";
+    if (dirs.size() != steps.size()) throw cnc::BadInput("--dir", "give one --dir per --step" + counts);
+    if (!enables.empty() && enables.size() != steps.size()) {
+        throw cnc::BadInput("--enable", "give one --enable per --step, or none" + counts);
+    }
+    std::vector<cnc::metrics::AxisSignalNames> axes;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        cnc::metrics::AxisSignalNames a{steps[i], dirs[i], "", cnc::metrics::EnableLevel::ActiveHigh};
+        if (!enables.empty()) {
+            const cnc::metrics::EnableOption e = cnc::metrics::parse_enable_option(enables[i]);
+            a.enable = e.name;
+            a.enable_active = e.active;
+        }
+        axes.push_back(a);
+    }
+    return axes;
+}
+
+int cmd_analyze(const std::string& vcd_path, const std::vector<cnc::metrics::AxisSignalNames>& axes,
+                double steps_per_mm, const std::string& report) {
     std::ifstream in(vcd_path);
     if (!in) throw cnc::BadInput(vcd_path, "cannot open the VCD file");
-    const auto logs = cnc::metrics::read_vcd(in, vcd_path);
+    const cnc::metrics::VcdContents vcd = cnc::metrics::read_vcd(in, vcd_path);
     const cnc::metrics::RunInput input = cnc::metrics::analyze_input(
-        logs, step, dir, steps_per_mm > 0 ? std::optional<double>(steps_per_mm) : std::nullopt);
+        vcd, vcd_path, axes, steps_per_mm > 0 ? std::optional<double>(steps_per_mm) : std::nullopt);
     const cnc::metrics::RunMetrics m = cnc::metrics::compute_metrics(input);
     std::cout << cnc::metrics::summary_table(m);
     if (!report.empty()) write_json(report, cnc::metrics::to_json(m));
@@ -95,16 +118,14 @@ int cmd_keys() {
 }  // namespace
 
 int sc_main(int argc, char* argv[]) {
-    // The kernel's tracing notes would only clutter stderr.
-    sc_core::sc_report_handler::set_actions("tracing timescale unit set", sc_core::SC_DO_NOTHING);
     CLI::App app{"cncsim: co-simulation of CNC / laser motion-control architectures"};
     app.require_subcommand(1);
     // The SystemC release too: results can differ between kernels (toolchain.md §1 pins 2.3.4).
     app.set_version_flag("--version", std::string("cncsim ") + CNCSIM_VERSION + "\nSystemC " + sc_core::sc_release(),
                          "print the cncsim and SystemC versions and exit");
 
-    std::string scenario, vcd, report, vcd_in, step, dir;
-    std::vector<std::string> sets;
+    std::string scenario, vcd, report, vcd_in;
+    std::vector<std::string> sets, steps, dirs, enables;
     double steps_per_mm = 0.0;
     bool detail = false;
 
@@ -123,8 +144,16 @@ int sc_main(int argc, char* argv[]) {
 
     CLI::App* analyze = app.add_subcommand("analyze", "pulse metrics of any VCD (simulated or captured)");
     analyze->add_option("vcd", vcd_in, "VCD file")->required();
-    analyze->add_option("--step", step, "STEP signal name")->required();
-    analyze->add_option("--dir", dir, "DIR signal name")->required();
+    // One value per occurrence, repeated per axis (a list after one --step would swallow the file name).
+    const auto one_per_axis = [](CLI::Option* o) {
+        o->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    };
+    one_per_axis(analyze->add_option("--step", steps, "STEP signal name; repeat for more axes")->required());
+    one_per_axis(analyze->add_option("--dir", dirs, "DIR signal name, one per --step")->required());
+    one_per_axis(analyze->add_option("--enable", enables,
+                                     "NAME[:active-low]: the driver's enable, one per --step; STEP edges while "
+                                     "disabled do not count (active high unless :active-low, e.g. the DRV8825's "
+                                     "nENBL)"));
     analyze->add_option("--steps-per-mm", steps_per_mm, "steps per mm, for distances and speeds")
         ->check(CLI::PositiveNumber);
     analyze->add_option("--report", report, "write the JSON report to this file");
@@ -151,7 +180,7 @@ int sc_main(int argc, char* argv[]) {
     try {
         if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, progress);
         if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report);
-        if (analyze->parsed()) return cmd_analyze(vcd_in, step, dir, steps_per_mm, report);
+        if (analyze->parsed()) return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, report);
         return cmd_keys();
     } catch (const cnc::BadInput& e) {
         std::cerr << "cncsim: " << e.what() << '\n';

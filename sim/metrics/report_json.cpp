@@ -210,11 +210,13 @@ json worst_json(const RunMetrics& m) {
 
 json job_json(const RunMetrics& m, bool detail) {
     const TimingResult& t = m.timing;
+    // Without moves (analyze) the job is only the span of the traced edges: no lead-in, tail or gaps to count.
+    const auto of_moves = [&m](const json& v) { return m.with_moves ? v : json(nullptr); };
     json j = {{"job_time_s", t.job_time_s},
               {"motion_time_s", opt(t.motion_time_s)},
-              {"lead_in_ms", opt(t.lead_in_ms)},
-              {"tail_ms", opt(t.tail_ms)},
-              {"dead_gaps", t.gaps.size()},
+              {"lead_in_ms", of_moves(opt(t.lead_in_ms))},
+              {"tail_ms", of_moves(opt(t.tail_ms))},
+              {"dead_gaps", of_moves(t.gaps.size())},
               {"dead_total_ms", opt(t.dead_total_ms)},
               {"dead_mean_ms", opt(t.dead_mean_ms)},
               {"dead_max_ms", opt(t.dead_max_ms)}};

@@ -1,5 +1,7 @@
 // VCD reader: a tokenizer over lines (for file:line messages), the header (scopes, 1-bit vars,
-// timescale) and the value changes, turned into edge logs of exact ps times.
+// timescale) and the value changes, turned into edge logs of integer ps times.
+#include "metrics/vcd_reader.hpp"
+
 #include <cctype>
 #include <cstdint>
 #include <istream>
@@ -8,7 +10,6 @@
 #include <unordered_map>
 
 #include "common/bad_input.hpp"
-#include "metrics/vcd.hpp"
 #include "metrics/vcd_timescale.hpp"
 
 namespace cnc::metrics {
@@ -39,6 +40,8 @@ public:
         skip_space();
         return true;
     }
+    // Drops the rest of the current line.
+    void skip_line() { m_pos = m_text.size(); }
     [[nodiscard]] std::size_t line() const { return m_line; }
 
 private:
@@ -57,6 +60,7 @@ struct Var {
     std::string leaf_name;
     std::size_t decl_line = 0;
     bool kept = false;  // a 1-bit signal
+    std::string kind;   // for the others: "32 bits wide (wire)", "64 bits wide (real)"
     bool has_value = false;
     bool level = false;
     EdgeLog log;
@@ -66,7 +70,7 @@ class VcdReader {
 public:
     VcdReader(std::istream& in, std::string filename) : m_tokens(in), m_file(std::move(filename)) {}
 
-    std::map<std::string, EdgeLog> read() {
+    VcdContents read() {
         read_header();
         read_body();
         return collect();
@@ -94,7 +98,7 @@ private:
             const std::string& k = tok.text;
             if (k == "$enddefinitions") {
                 section_body(k, tok.line);
-                if (!m_timescale_ps) fail(tok.line, "no $timescale before $enddefinitions");
+                if (!m_timescale_fs) fail(tok.line, "no $timescale before $enddefinitions");
                 return;
             }
             if (k == "$timescale") {
@@ -112,6 +116,8 @@ private:
                 read_var(section_body(k, tok.line), tok.line);
             } else if (!k.empty() && k[0] == '$') {
                 section_body(k, tok.line);  // $date, $version, $comment and tool-specific sections
+            } else if (k == "META") {
+                m_tokens.skip_line();  // sigrok-cli's "META samplerate: 1000000000"
             } else {
                 fail(tok.line, "unexpected '" + k + "' in the header");
             }
@@ -122,9 +128,9 @@ private:
     void read_timescale(const std::vector<Token>& body, std::size_t line) {
         std::string text;
         for (const Token& t : body) text += t.text;
-        m_timescale_ps = parse_vcd_timescale(text);
-        if (!m_timescale_ps) {
-            fail(line, "$timescale '" + text + "' is not 1, 10 or 100 of s, ms, us, ns or ps");
+        m_timescale_fs = parse_vcd_timescale_fs(text);
+        if (!m_timescale_fs) {
+            fail(line, "$timescale '" + text + "' is not 1, 10 or 100 of s, ms, us, ns, ps or fs");
         }
     }
 
@@ -140,11 +146,13 @@ private:
                              type != "event" && type != "string";
         Var v;
         v.leaf_name = body[3].text;
-        for (std::size_t i = 4; i < body.size(); ++i) v.leaf_name += body[i].text;  // "data [3]" -> "data[3]"
+        // A 1-bit select keeps its index ("data [3]" -> "data[3]"); a vector's range ("cnt [31:0]") is not a name.
+        for (std::size_t i = 4; one_bit && i < body.size(); ++i) v.leaf_name += body[i].text;
         for (const std::string& s : m_scopes) v.full_name += s + ".";
         v.full_name += v.leaf_name;
         v.decl_line = line;
         v.kept = one_bit;
+        v.kind = size_text + " bits wide (" + type + ")";
         m_ids[body[2].text].push_back(m_vars.size());
         m_vars.push_back(std::move(v));
     }
@@ -194,14 +202,15 @@ private:
         if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) {
             fail(tok.line, "time '" + tok.text + "' is not a whole number");
         }
-        constexpr TimePs kMax = std::numeric_limits<TimePs>::max();
-        TimePs units = 0;
+        constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+        std::int64_t units = 0;
         for (const char d : digits) {
             if (units > (kMax - (d - '0')) / 10) fail(tok.line, "time '" + tok.text + "' is too large");
             units = units * 10 + (d - '0');
         }
-        if (units > kMax / *m_timescale_ps) fail(tok.line, "time '" + tok.text + "' is too large in ps");
-        const TimePs t = units * *m_timescale_ps;
+        const std::optional<TimePs> t_ps = vcd_ticks_to_ps(units, *m_timescale_fs);
+        if (!t_ps) fail(tok.line, "time '" + tok.text + "' is too large in ps");
+        const TimePs t = *t_ps;
         if (m_time_ps && t < *m_time_ps) fail(tok.line, "time goes backwards (" + tok.text + ")");
         if (!m_first_time_ps) m_first_time_ps = t;
         m_time_ps = t;
@@ -242,25 +251,29 @@ private:
         }
     }
 
-    std::map<std::string, EdgeLog> collect() {
+    VcdContents collect() {
         std::map<std::string, std::size_t> leaf_count;
         for (const Var& v : m_vars) {
             if (v.kept) ++leaf_count[v.leaf_name];
         }
-        std::map<std::string, EdgeLog> out;
+        VcdContents out;
         for (Var& v : m_vars) {
-            if (!v.kept) continue;
+            if (!v.kept) {
+                out.other_variables.emplace(v.leaf_name, v.kind);
+                out.other_variables.emplace(v.full_name, v.kind);
+                continue;
+            }
             const std::string key = leaf_count[v.leaf_name] == 1 ? v.leaf_name : v.full_name;
-            if (out.count(key) != 0) fail(v.decl_line, "signal '" + key + "' is declared twice");
+            if (out.signals.count(key) != 0) fail(v.decl_line, "signal '" + key + "' is declared twice");
             v.log.name = key;
-            out.emplace(key, std::move(v.log));
+            out.signals.emplace(key, std::move(v.log));
         }
         return out;
     }
 
     Tokenizer m_tokens;
     std::string m_file;
-    std::optional<TimePs> m_timescale_ps;
+    std::optional<std::int64_t> m_timescale_fs;
     std::vector<std::string> m_scopes;
     std::vector<Var> m_vars;
     std::unordered_map<std::string, std::vector<std::size_t>> m_ids;
@@ -272,7 +285,7 @@ private:
 
 }  // namespace
 
-std::map<std::string, EdgeLog> read_vcd(std::istream& in, const std::string& filename) {
+VcdContents read_vcd(std::istream& in, const std::string& filename) {
     return VcdReader(in, filename).read();
 }
 

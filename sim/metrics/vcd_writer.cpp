@@ -1,17 +1,18 @@
-// VCD writer for edge logs: one scope, 1-bit wires, initial levels in $dumpvars, then the merged edges.
+// VCD writer: the header and $dumpvars at construction, then one "#tick" line per instant with changes.
+#include "metrics/vcd_writer.hpp"
+
 #include <algorithm>
+#include <cctype>
 #include <ostream>
 #include <set>
+#include <stdexcept>
 
 #include "common/bad_input.hpp"
-#include "metrics/vcd.hpp"
 #include "metrics/vcd_timescale.hpp"
 
 namespace cnc::metrics {
 
 namespace {
-
-const char* const kWhere = "write_vcd";
 
 // Short identifiers from the printable ASCII range '!'..'~', as VCD writers use.
 std::string vcd_id(std::size_t n) {
@@ -24,29 +25,124 @@ std::string vcd_id(std::size_t n) {
     return id;
 }
 
+// The $timescale text, or BadInput(where, ...) when the standard does not allow the value.
+std::string timescale_text(std::int64_t timescale_fs, const std::string& where) {
+    const std::optional<std::string> text = format_vcd_timescale(timescale_fs);
+    if (!text) {
+        throw BadInput(where, "timescale " + std::to_string(timescale_fs) + " fs is not 1, 10 or 100 of fs .. s");
+    }
+    return *text;
+}
+
+std::optional<TimePs> exact_period_ps(const VcdSignal& s) {
+    return s.clock_hz ? whole_period_ps(*s.clock_hz) : std::nullopt;
+}
+
+// The coarsest timescale that keeps every clocked edge exact (1 fs always does).
+std::string coarsest_exact_timescale(const std::vector<VcdSignal>& signals) {
+    for (const std::string& name : vcd_timescale_names()) {
+        const std::int64_t ts = *parse_vcd_timescale_fs(name);
+        const bool exact = std::all_of(signals.begin(), signals.end(), [ts](const VcdSignal& s) {
+            const std::optional<TimePs> period = exact_period_ps(s);
+            return !period || on_vcd_tick(*period, ts);
+        });
+        if (exact) return name;
+    }
+    return "1 fs";
+}
+
+}  // namespace
+
+void check_vcd_signals(std::int64_t timescale_fs, const std::vector<VcdSignal>& signals, const std::string& where) {
+    (void)timescale_text(timescale_fs, where);
+    std::set<std::string> names;
+    for (const VcdSignal& s : signals) {
+        const bool has_space =
+            std::any_of(s.name.begin(), s.name.end(), [](unsigned char c) { return std::isspace(c) != 0; });
+        if (s.name.empty() || has_space) {
+            throw BadInput(where, "signal name '" + s.name + "' is empty or contains white space");
+        }
+        if (!names.insert(s.name).second) throw BadInput(where, "signal '" + s.name + "' given twice");
+        const std::optional<TimePs> period = exact_period_ps(s);
+        if (period && !on_vcd_tick(*period, timescale_fs)) {
+            throw BadInput(where, *format_vcd_timescale(timescale_fs) + " would round the edges of " + s.name +
+                                      " (its clock, " + std::to_string(*s.clock_hz) + " Hz, has a period of " +
+                                      std::to_string(*period) + " ps); the coarsest timescale that keeps every " +
+                                      "clocked edge exact is " + coarsest_exact_timescale(signals));
+        }
+    }
+}
+
+std::optional<TimePs> whole_period_ps(std::int64_t clock_hz) {
+    if (clock_hz <= 0 || kPsPerSec % clock_hz != 0) return std::nullopt;
+    return kPsPerSec / clock_hz;
+}
+
+VcdWriter::VcdWriter(std::ostream& out, std::int64_t timescale_fs, std::vector<VcdSignal> signals,
+                     const std::string& where)
+    : m_out(out), m_timescale_fs(timescale_fs), m_signals(std::move(signals)) {
+    check_vcd_signals(timescale_fs, m_signals, where);
+    m_out << "$version cncsim $end\n$timescale " << timescale_text(timescale_fs, where)
+          << " $end\n$scope module cncsim $end\n";
+    for (std::size_t i = 0; i < m_signals.size(); ++i) {
+        m_ids.push_back(vcd_id(i));
+        m_out << "$var wire 1 " << m_ids[i] << ' ' << m_signals[i].name << " $end\n";
+    }
+    m_out << "$upscope $end\n$enddefinitions $end\n#0\n$dumpvars\n";
+    for (std::size_t i = 0; i < m_signals.size(); ++i) m_out << (m_signals[i].initial ? '1' : '0') << m_ids[i] << '\n';
+    m_out << "$end\n";
+}
+
+void VcdWriter::write_time(TimePs t_ps) {
+    if (t_ps < m_last_ps) {
+        throw std::logic_error("VCD writer: time goes back from " + std::to_string(m_last_ps) + " ps to " +
+                               std::to_string(t_ps) + " ps");
+    }
+    m_last_ps = t_ps;
+    const std::int64_t tick = ps_to_vcd_ticks(t_ps, m_timescale_fs);
+    if (tick != m_written_tick) {
+        m_out << '#' << tick << '\n';
+        m_written_tick = tick;
+    }
+}
+
+void VcdWriter::change(TimePs t_ps, std::size_t index, bool level) {
+    const VcdSignal& s = m_signals.at(index);
+    const std::optional<TimePs> period = exact_period_ps(s);
+    if (period && t_ps % *period != 0) {
+        throw std::logic_error("VCD writer: edge of " + s.name + " at " + std::to_string(t_ps) +
+                               " ps is not on its clock (period " + std::to_string(*period) + " ps)");
+    }
+    write_time(t_ps);
+    m_out << (level ? '1' : '0') << m_ids[index] << '\n';
+}
+
+void VcdWriter::finish(TimePs t_ps) {
+    write_time(t_ps);
+    m_out.flush();
+}
+
+namespace {
+
 struct Change {
     TimePs t_ps;
     std::size_t log;
     bool level;
 };
 
-void check_log(const EdgeLog& log, TimePs timescale_ps, std::set<std::string>& names) {
-    const bool has_space = std::any_of(log.name.begin(), log.name.end(),
-                                   [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; });
-    if (log.name.empty() || has_space) {
-        throw BadInput(kWhere, "signal name '" + log.name + "' is empty or contains white space");
-    }
-    if (!names.insert(log.name).second) throw BadInput(kWhere, "signal '" + log.name + "' given twice");
+const char* const kWhere = "write_vcd";
+
+void check_edges(const EdgeLog& log, std::int64_t timescale_fs) {
     TimePs previous = 0;
     for (const Edge& e : log.edges) {
         if (e.t_ps < previous) {
             throw BadInput(kWhere, "signal '" + log.name + "': edge at " + std::to_string(e.t_ps) +
                                        " ps is negative or out of time order");
         }
-        if (e.t_ps % timescale_ps != 0) {
+        if (!on_vcd_tick(e.t_ps, timescale_fs)) {
             throw BadInput(kWhere, "signal '" + log.name + "': edge at " + std::to_string(e.t_ps) +
-                                       " ps is not a multiple of the timescale (" + std::to_string(timescale_ps) +
-                                       " ps)");
+                                       " ps is not a multiple of the timescale (" +
+                                       timescale_text(timescale_fs, kWhere) + ")");
         }
         previous = e.t_ps;
     }
@@ -54,35 +150,20 @@ void check_log(const EdgeLog& log, TimePs timescale_ps, std::set<std::string>& n
 
 }  // namespace
 
-void write_vcd(std::ostream& out, const std::vector<EdgeLog>& logs, TimePs timescale_ps) {
-    const std::optional<std::string> timescale = format_vcd_timescale(timescale_ps);
-    if (!timescale) {
-        throw BadInput(kWhere, "timescale " + std::to_string(timescale_ps) + " ps is not 1, 10 or 100 of ps .. s");
-    }
-    std::set<std::string> names;
+void write_vcd(std::ostream& out, const std::vector<EdgeLog>& logs, std::int64_t timescale_fs) {
+    (void)timescale_text(timescale_fs, kWhere);  // before the edges are checked against it
+    std::vector<VcdSignal> signals;
     std::vector<Change> changes;
     for (std::size_t i = 0; i < logs.size(); ++i) {
-        check_log(logs[i], timescale_ps, names);
+        check_edges(logs[i], timescale_fs);
+        signals.push_back({logs[i].name, logs[i].initial, std::nullopt});
         for (const Edge& e : logs[i].edges) changes.push_back({e.t_ps, i, e.level});
     }
+    VcdWriter writer(out, timescale_fs, std::move(signals), kWhere);
     // Stable: changes at one instant keep their order within a log (a zero-width glitch stays a glitch).
     std::stable_sort(changes.begin(), changes.end(), [](const Change& a, const Change& b) { return a.t_ps < b.t_ps; });
-
-    out << "$timescale " << *timescale << " $end\n$scope module cncsim $end\n";
-    for (std::size_t i = 0; i < logs.size(); ++i) {
-        out << "$var wire 1 " << vcd_id(i) << ' ' << logs[i].name << " $end\n";
-    }
-    out << "$upscope $end\n$enddefinitions $end\n#0\n$dumpvars\n";
-    for (std::size_t i = 0; i < logs.size(); ++i) out << (logs[i].initial ? '1' : '0') << vcd_id(i) << '\n';
-    out << "$end\n";
-    TimePs now = 0;
-    for (const Change& c : changes) {
-        if (c.t_ps != now) {
-            now = c.t_ps;
-            out << '#' << now / timescale_ps << '\n';
-        }
-        out << (c.level ? '1' : '0') << vcd_id(c.log) << '\n';
-    }
+    for (const Change& c : changes) writer.change(c.t_ps, c.log, c.level);
+    if (!changes.empty()) writer.finish(changes.back().t_ps);
 }
 
 }  // namespace cnc::metrics

@@ -10,6 +10,7 @@
 #include "common/text_format.hpp"
 #include "common/units.hpp"
 #include "host/core/soft_limits.hpp"
+#include "metrics/vcd_timescale.hpp"
 
 namespace cnc::sim {
 
@@ -239,6 +240,10 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.spi_fpga.planner.y = s.machine.y.limits;
 
     s.vcd_path = r.get_string("trace.vcd", "", "VCD file to write (relative to the working directory); empty: none");
+    s.vcd_timescale_fs = *metrics::parse_vcd_timescale_fs(r.get_choice(
+        "trace.timescale", "100 ps", metrics::vcd_timescale_names(),
+        "VCD time unit: 100 ps keeps every FPGA (20 ns) and AVR (62.5 ns) clock edge exact, a unit that would round "
+        "them is refused; pins timed otherwise (CP2102, SPI master) are written at the nearest tick"));
     s.report_path = r.get_string("trace.report", "", "JSON report to write; empty: none");
     s.detail = r.get_bool("trace.detail", false,
                           "the JSON report also holds the logs that grow with steps, servo periods and packets "

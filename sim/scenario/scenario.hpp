@@ -45,6 +45,7 @@ struct Scenario {
     SpiFpgaSettings spi_fpga;
 
     std::string vcd_path;       // empty: no VCD
+    std::int64_t vcd_timescale_fs = 100'000;  // trace.timescale
     std::string report_path;    // empty: no JSON file
     bool detail = false;        // the report also holds the logs that grow with steps, periods and packets
     ProgressStyle progress = ProgressStyle::Off;  // set by the CLI from stderr, not a scenario key

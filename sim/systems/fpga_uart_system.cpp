@@ -26,16 +26,19 @@ namespace {
 // send_steps.py hard-codes NUMERATOR_X = NUMERATOR_Y = 18_750_000 (seed 000 §6).
 constexpr std::uint32_t kSeedScriptNumerator = 18'750'000;
 
-// Every wire of the system, named as the pins are in every architecture (VCD and analyze scripts rely on it).
+// Every wire of the system: the machine pins named as in every architecture, then this one's link and FPGA
+// internals (README "Pins"; VCD and analyze scripts rely on the names).
 struct Wires {
-    sc_core::sc_signal<bool> uart_rx{"uart_rx", true};  // CP2102 TXD -> FPGA rx (GPIO_0[0]); idles high
-    sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // FPGA tx (GPIO_0[1]) -> CP2102 RXD
     sc_core::sc_signal<bool> step_x{"step_x", false}, dir_x{"dir_x", false};
     sc_core::sc_signal<bool> step_y{"step_y", false}, dir_y{"dir_y", false};
-    sc_core::sc_signal<bool> laser{"laser", false}, busy{"busy", false};
+    // The FPGA drives no EN pin: the DRV8825s' nENBL stay low (enabled), held here as constant wires.
+    sc_core::sc_signal<bool> n_enbl_x{"n_enbl_x", false}, n_enbl_y{"n_enbl_y", false};
+    sc_core::sc_signal<bool> laser{"laser", false};
+    sc_core::sc_signal<bool> uart_rx{"uart_rx", true};  // CP2102 TXD -> FPGA rx (GPIO_0[0]); idles high
+    sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // FPGA tx (GPIO_0[1]) -> CP2102 RXD
+    sc_core::sc_signal<bool> busy{"busy", false};
     sc_core::sc_signal<bool> pkt_valid{"pkt_valid", false}, cfg_valid{"cfg_valid", false};
     sc_core::sc_signal<bool> rx_valid{"rx_valid", false}, ack{"ack", false};
-    sc_core::sc_signal<bool> n_enbl{"n_enbl", false};   // the FPGA drives no EN pin: drivers always enabled
 };
 
 struct Packets {
@@ -59,12 +62,14 @@ Packets encode(const Scenario& s, const std::vector<host::MotionSegment>& segmen
     return p;
 }
 
-void trace_wires(VcdTrace& vcd, const Wires& w) {
-    for (const sc_core::sc_signal<bool>* sig : {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser, &w.busy,
-                                               &w.uart_rx, &w.uart_tx, &w.pkt_valid, &w.cfg_valid, &w.rx_valid,
-                                               &w.ack}) {
-        vcd.trace(*sig);
-    }
+// The VCD's pins, each with the clock that times its edges: the FPGA's for everything it drives; the CP2102
+// (uart_rx) starts its frames when USB delivers the bytes, and the nENBL wires are constant.
+std::vector<TracedPin> traced_pins(const Wires& w, std::int64_t fpga_clock_hz) {
+    const std::optional<std::int64_t> fpga = fpga_clock_hz;
+    return {{&w.step_x, fpga},   {&w.dir_x, fpga},         {&w.step_y, fpga},          {&w.dir_y, fpga},
+            {&w.n_enbl_x, {}},   {&w.n_enbl_y, {}},        {&w.laser, fpga},           {&w.uart_rx, {}},
+            {&w.uart_tx, fpga},  {&w.busy, fpga},          {&w.pkt_valid, fpga},       {&w.cfg_valid, fpga},
+            {&w.rx_valid, fpga}, {&w.ack, fpga}};
 }
 
 void record_wires(EdgeRecorder& rec, const Wires& w) {
@@ -219,13 +224,13 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     fpga.rx_valid(w.rx_valid);
     fpga.tx_start(w.ack);
     Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);
-    machine.bind(w.step_x, w.dir_x, w.n_enbl, w.step_y, w.dir_y, w.n_enbl, w.laser);
+    machine.bind(w.step_x, w.dir_x, w.n_enbl_x, w.step_y, w.dir_y, w.n_enbl_y, w.laser);
     EdgeRecorder rec("probes");
     record_wires(rec, w);
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
-        vcd = std::make_unique<VcdTrace>(s.vcd_path);
-        trace_wires(*vcd, w);
+        vcd = std::make_unique<VcdTrace>(s.vcd_path, s.vcd_timescale_fs, traced_pins(w, s.fpga.clk_hz),
+                                         s.file + ": trace.timescale");
     }
 
     const host::Program moves_run = job.program ? *job.program : packet_moves(segments, packets, s.job_path);

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-#include "systems/atmega/enabled_steps.hpp"
 #include "systems/atmega/motion_windows.hpp"
 
 namespace s3 = cnc::host::seed003;
@@ -48,20 +47,6 @@ void expect_window(const MotionWindow& w, std::size_t command, std::size_t motio
 }
 
 }  // namespace
-
-TEST(EnabledSteps, KeepsPulsesThatRiseWhileEnabled) {
-    const EdgeLog step =
-        log("step_x", false, {{10, true}, {20, false}, {30, true}, {40, false}, {50, true}, {60, false}});
-    const EdgeLog en = log("n_enbl_x", true, {{25, false}, {45, true}});  // enabled 25..45
-    const EdgeLog out = cnc::sim::enabled_steps(step, en);
-    EXPECT_EQ(out.name, "step_x");
-    EXPECT_EQ(out.rising(), (std::vector<cnc::TimePs>{30}));
-    EXPECT_EQ(out.falling(), (std::vector<cnc::TimePs>{40}));
-    // a pulse that rises enabled keeps its fall after EN rises; an edge at an EN change sees the level before
-    const EdgeLog late = cnc::sim::enabled_steps(step, log("n_enbl_x", false, {{30, true}, {55, false}}));
-    EXPECT_EQ(late.rising(), (std::vector<cnc::TimePs>{10, 30}));
-    EXPECT_EQ(late.falling(), (std::vector<cnc::TimePs>{20, 40}));
-}
 
 TEST(MotionWindows, CommandsAndChordsFromThePortbPins) {
     const Pins p = arc_pins();

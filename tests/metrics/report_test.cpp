@@ -1,12 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 
-#include "common/bad_input.hpp"
-#include "metrics/analyze_input.hpp"
 #include "metrics/metrics.hpp"
-#include "metrics/vcd.hpp"
 #include "metrics_test_util.hpp"
 
 namespace cnc::metrics {
@@ -117,36 +113,6 @@ TEST(MetricsReport, SummaryTableHasOneSectionPerFamilyWithUnitsInHeads) {
         s.find("   1                 -     -     -                   -     -     -         -0.0470     0     1\n"),
         std::string::npos)
         << s;
-}
-
-TEST(MetricsAnalyze, InputFromVcdSignalsAndMissingNames) {
-    std::ostringstream vcd;
-    write_vcd(vcd, {test::step_log(grid(10'000'000, 312'500'000, 50)), EdgeLog{"dir_x", true, {}}});
-    std::istringstream in(vcd.str());
-    const auto logs = read_vcd(in, "cap.vcd");
-    const RunInput run = analyze_input(logs, "step_x", "dir_x", 160.0);
-    ASSERT_EQ(run.axes.size(), 1U);
-    EXPECT_EQ(run.axes[0].steps_per_mm, 160.0);
-    EXPECT_TRUE(run.moves.empty());
-    EXPECT_EQ(run.t_job_start_ps, 10'000'000);
-    EXPECT_EQ(run.t_job_end_ps, TimePs{10'000'000} + 49 * TimePs{312'500'000} + 2'000'000);
-    const RunMetrics m = compute_metrics(run);
-    EXPECT_EQ(m.axes[0].net_steps, 50);
-    EXPECT_DOUBLE_EQ(*m.axes[0].net_mm, 50.0 / 160.0);
-    ASSERT_EQ(m.axes[0].runs.size(), 1U);
-    EXPECT_NEAR(*m.axes[0].runs[0].speed_mm_per_min, 3200.0 / 160.0 * 60.0, 1e-9);
-    EXPECT_NE(summary_table(m).find("Pulse timing (runs split by period change)"), std::string::npos);
-    EXPECT_EQ(to_json(m)["run_split_tolerance"], 0.005);
-
-    try {
-        (void)analyze_input(logs, "step_y", "dir_x");
-        FAIL() << "missing signal accepted";
-    } catch (const BadInput& e) {
-        EXPECT_STREQ(e.what(), "--step: no 1-bit signal 'step_y' in the trace; available: dir_x, step_x");
-    }
-    EXPECT_THROW((void)analyze_input(logs, "step_x", "dir_q"), BadInput);
-    EXPECT_THROW((void)analyze_input(logs, "step_x", "dir_x", 0.0), BadInput);
-    EXPECT_EQ(analyze_input(logs, "step_x", "").axes[0].dir.edges.size(), 0U);
 }
 
 TEST(MetricsReport, OutOfOrderInputIsAProgrammingError) {

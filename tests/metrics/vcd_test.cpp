@@ -3,14 +3,16 @@
 #include <sstream>
 
 #include "common/bad_input.hpp"
-#include "metrics/vcd.hpp"
+#include "metrics/vcd_reader.hpp"
+#include "metrics/vcd_timescale.hpp"
+#include "metrics/vcd_writer.hpp"
 
 namespace cnc::metrics {
 namespace {
 
 std::map<std::string, EdgeLog> read(const std::string& text) {
     std::istringstream in(text);
-    return read_vcd(in, "t.vcd");
+    return read_vcd(in, "t.vcd").signals;
 }
 
 // Message of the BadInput that reading `text` throws ("" if it does not throw).
@@ -76,8 +78,12 @@ b1 aaaac
 )";
 
 TEST(MetricsVcdRead, SystemCTrace) {
-    const auto logs = read(kSystemCVcd);
-    ASSERT_EQ(logs.size(), 2U);  // the 32-bit cnt is ignored
+    std::istringstream in(kSystemCVcd);
+    const VcdContents vcd = read_vcd(in, "t.vcd");
+    EXPECT_EQ(vcd.other_variables.at("cnt"), "32 bits wide (wire)");  // not read, but known by leaf and path
+    EXPECT_EQ(vcd.other_variables.at("SystemC.cnt"), "32 bits wide (wire)");
+    const auto& logs = vcd.signals;
+    ASSERT_EQ(logs.size(), 2U);
     const EdgeLog& step = logs.at("step_x");
     EXPECT_EQ(step.name, "step_x");
     EXPECT_FALSE(step.initial);
@@ -163,7 +169,7 @@ TEST(MetricsVcdRead, MalformedInputNamesFileAndLine) {
     const std::vector<std::pair<std::string, std::string>> cases{
         {"$var wire 1 ! s $end\n$enddefinitions $end\n", "t.vcd:2: no $timescale"},
         {"$timescale 3 ns $end\n", "t.vcd:1: $timescale '3ns' is not"},
-        {"$timescale 1 fs $end\n", "t.vcd:1: $timescale '1fs' is not"},
+        {"$timescale 1000 fs $end\n", "t.vcd:1: $timescale '1000fs' is not"},
         {"$timescale ns $end\n", "t.vcd:1: $timescale 'ns' is not"},
         {"$timescale 1 ns $end\n$var wire 1 ! s\n", "t.vcd:2: $var is not closed by $end"},
         {"$timescale 1 ns $end\n$var wire 1 ! $end\n", "t.vcd:2: $var needs"},
@@ -231,17 +237,17 @@ TEST(MetricsVcdWrite, PicosecondTimescaleAndManySignals) {
         logs.push_back(l);
     }
     std::ostringstream out;
-    write_vcd(out, logs, 1);
+    write_vcd(out, logs, 1'000);
     const auto back = read(out.str());
     ASSERT_EQ(back.size(), 100U);
     EXPECT_EQ(back.at("s99").rising(), std::vector<TimePs>{100});
 }
 
 TEST(MetricsVcdWrite, RejectsBadTimescaleTimesAndNames) {
-    const auto error = [](const std::vector<EdgeLog>& logs, TimePs ts) -> std::string {
+    const auto error = [](const std::vector<EdgeLog>& logs, std::int64_t ts_fs) -> std::string {
         std::ostringstream out;
         try {
-            write_vcd(out, logs, ts);
+            write_vcd(out, logs, ts_fs);
         } catch (const BadInput& e) {
             return e.what();
         }
@@ -249,14 +255,127 @@ TEST(MetricsVcdWrite, RejectsBadTimescaleTimesAndNames) {
     };
     EdgeLog ok{"s", false, {{1'000, true}}};
     EdgeLog off_grid{"s", false, {{1'500, true}}};
-    EXPECT_EQ(error({ok}, 3'000).rfind("write_vcd: timescale 3000 ps", 0), 0U);
-    EXPECT_EQ(error({off_grid}, 1'000).rfind("write_vcd: signal 's': edge at 1500 ps is not a multiple", 0), 0U);
-    EXPECT_EQ(error({EdgeLog{"a b", false, {}}}, 1'000).rfind("write_vcd: signal name 'a b'", 0), 0U);
-    EXPECT_EQ(error({ok, ok}, 1'000).rfind("write_vcd: signal 's' given twice", 0), 0U);
-    EXPECT_EQ(error({EdgeLog{"s", false, {{5'000, true}, {4'000, false}}}}, 1'000)
+    constexpr std::int64_t k1ns = 1'000'000;
+    EXPECT_EQ(error({ok}, 3'000'000).rfind("write_vcd: timescale 3000000 fs is not", 0), 0U);
+    EXPECT_EQ(error({off_grid}, k1ns).rfind("write_vcd: signal 's': edge at 1500 ps is not a multiple of the "
+                                             "timescale (1 ns)", 0),
+              0U);
+    EXPECT_EQ(error({EdgeLog{"a b", false, {}}}, k1ns).rfind("write_vcd: signal name 'a b'", 0), 0U);
+    EXPECT_EQ(error({ok, ok}, k1ns).rfind("write_vcd: signal 's' given twice", 0), 0U);
+    EXPECT_EQ(error({EdgeLog{"s", false, {{5'000, true}, {4'000, false}}}}, k1ns)
                   .rfind("write_vcd: signal 's': edge at 4000 ps is negative or out of time order", 0),
               0U);
-    EXPECT_EQ(error({ok}, 1'000), "");
+    EXPECT_EQ(error({ok}, k1ns), "");
+}
+
+TEST(MetricsVcdTimescale, EveryStandardValueFromSecondsToFemtoseconds) {
+    const std::vector<std::string> names = vcd_timescale_names();
+    ASSERT_EQ(names.size(), 18U);
+    EXPECT_EQ(names.front(), "100 s");
+    EXPECT_EQ(names.back(), "1 fs");
+    for (const std::string& n : names) EXPECT_EQ(format_vcd_timescale(*parse_vcd_timescale_fs(n)), n);
+    EXPECT_EQ(parse_vcd_timescale_fs("100ps"), 100'000);
+    EXPECT_EQ(parse_vcd_timescale_fs("10 fs"), 10);
+    EXPECT_EQ(parse_vcd_timescale_fs("1 s"), 1'000'000'000'000'000);
+    for (const char* bad : {"1000 fs", "5 ns", "1 min", "ns", "", "1 ps 2"}) {
+        EXPECT_EQ(parse_vcd_timescale_fs(bad), std::nullopt) << bad;
+    }
+    EXPECT_EQ(format_vcd_timescale(500'000), std::nullopt);
+}
+
+TEST(MetricsVcdTimescale, TicksToAndFromPicoseconds) {
+    EXPECT_EQ(vcd_ticks_to_ps(7, 100'000), 700);          // 100 ps
+    EXPECT_EQ(vcd_ticks_to_ps(4, 100), 0);                // 400 fs: nearest ps
+    EXPECT_EQ(vcd_ticks_to_ps(5, 100), 1);                // 500 fs: half up
+    EXPECT_EQ(vcd_ticks_to_ps(15, 100), 2);
+    EXPECT_EQ(vcd_ticks_to_ps(9'000'000'000'000'000'000, 1'000'000), std::nullopt);  // past int64 in ps
+    EXPECT_EQ(ps_to_vcd_ticks(8'666'667, 100'000), 86'667);  // nearest 100 ps tick
+    EXPECT_EQ(ps_to_vcd_ticks(8'666'649, 100'000), 86'666);
+    EXPECT_EQ(ps_to_vcd_ticks(3, 10), 300);               // 10 fs ticks
+    EXPECT_THROW((void)ps_to_vcd_ticks(10'000'000'000'000'000, 1), std::overflow_error);
+    EXPECT_TRUE(on_vcd_tick(62'500, 100'000));
+    EXPECT_FALSE(on_vcd_tick(62'500, 1'000'000));
+    EXPECT_TRUE(on_vcd_tick(1, 100));
+}
+
+TEST(MetricsVcdRead, FemtosecondTimesRoundToTheNearestPicosecond) {
+    const auto logs = read("$timescale 100 fs $end\n$var wire 1 ! s $end\n$enddefinitions $end\n"
+                           "#0\n0!\n#4\n1!\n#5\n0!\n#15\n1!\n");
+    EXPECT_EQ(logs.at("s").rising(), (std::vector<TimePs>{0, 2}));
+    EXPECT_EQ(logs.at("s").falling(), (std::vector<TimePs>{1}));
+}
+
+// What sigrok-cli 0.7.2 (libsigrok 0.5.2) writes for `-O vcd`: a META line before $date, a $comment before
+// $enddefinitions, '$' and '"' as identifiers, every change of an instant on the timestamp's line, and a last
+// timestamp without changes (copied from an export of out/square.vcd at 1 GHz).
+const char* const kSigrokExport = R"(META samplerate: 1000000000
+$date Mon Nov 23 22:36:14 2026 $end
+$version libsigrok 0.5.2 $end
+$comment
+  Acquisition with 4/4 channels at 1 GHz
+$end
+$timescale 1 ns $end
+$scope module libsigrok $end
+$var wire 1 ! step_x $end
+$var wire 1 " dir_x $end
+$var wire 1 # step_y $end
+$var wire 1 $ dir_y $end
+$upscope $end
+$enddefinitions $end
+#0 0! 0" 0# 1$
+#351949240 1"
+#351953260 1! 1#
+#351955260 0! 0#
+#454000000
+)";
+
+TEST(MetricsVcdRead, SigrokCliExport) {
+    const auto logs = read(kSigrokExport);
+    ASSERT_EQ(logs.size(), 4U);
+    EXPECT_TRUE(logs.at("dir_y").initial);
+    EXPECT_EQ(logs.at("dir_y").edges.size(), 0U);
+    EXPECT_EQ(logs.at("dir_x").rising(), std::vector<TimePs>{351'949'240'000});
+    EXPECT_EQ(logs.at("step_x").rising(), std::vector<TimePs>{351'953'260'000});
+    EXPECT_EQ(logs.at("step_y").falling(), std::vector<TimePs>{351'955'260'000});
+}
+
+// The streaming writer, as the run uses it: exact edges of clocked signals, the others at the nearest tick.
+TEST(MetricsVcdWrite, StreamingWriterRoundsOnlyUnclockedSignals) {
+    std::ostringstream out;
+    VcdWriter w(out, 100'000, {{"step_x", false, 50'000'000}, {"uart_rx", true, std::nullopt}}, "test");
+    w.change(20'000, 0, true);
+    w.change(8'660'000, 0, false);
+    w.change(8'666'667, 1, false);  // a CP2102 edge: 86 666.67 ticks -> 86 667
+    w.finish(9'000'000);
+    const std::string text = out.str();
+    EXPECT_EQ(text.find("$comment"), std::string::npos);
+    EXPECT_NE(text.find("$timescale 100 ps $end"), std::string::npos);
+    EXPECT_NE(text.find("#0\n$dumpvars\n0!\n1\"\n$end\n#200\n1!\n#86600\n0!\n#86667\n0\"\n#90000\n"),
+              std::string::npos)
+        << text;
+    const auto logs = read(text);
+    EXPECT_EQ(logs.at("uart_rx").falling(), std::vector<TimePs>{8'666'700});
+    EXPECT_THROW(w.change(8'000'000, 0, true), std::logic_error);   // back in time
+    EXPECT_THROW(w.change(9'010'000, 0, true), std::logic_error);   // not on the 20 ns clock
+}
+
+TEST(MetricsVcdWrite, RefusesATimescaleThatWouldRoundAClockedEdge) {
+    const std::vector<VcdSignal> pins{
+        {"step_x", false, 16'000'000}, {"uart_tx", false, 50'000'000}, {"uart_rx", true, 24'000'000}};
+    EXPECT_NO_THROW(check_vcd_signals(100'000, pins, "s.toml: trace.timescale"));
+    EXPECT_NO_THROW(check_vcd_signals(1, pins, "s.toml: trace.timescale"));
+    try {
+        check_vcd_signals(1'000'000, pins, "s.toml: trace.timescale");
+        FAIL() << "1 ns accepted for a 62.5 ns clock";
+    } catch (const BadInput& e) {
+        EXPECT_STREQ(e.what(), "s.toml: trace.timescale: 1 ns would round the edges of step_x (its clock, 16000000 "
+                               "Hz, has a period of 62500 ps); the coarsest timescale that keeps every clocked edge "
+                               "exact is 100 ps");
+    }
+    // The CP2102's 24 MHz has no whole-ps period: its edges are rounded, whatever the timescale.
+    EXPECT_NO_THROW(check_vcd_signals(10'000'000, {{"uart_rx", true, 24'000'000}}, "t"));
+    EXPECT_EQ(whole_period_ps(24'000'000), std::nullopt);
+    EXPECT_EQ(whole_period_ps(50'000'000), 20'000);
 }
 
 }  // namespace

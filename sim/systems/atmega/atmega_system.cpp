@@ -9,12 +9,12 @@
 #include "common/text_format.hpp"
 #include "host/core/seed003/firmware_busy.hpp"
 #include "host/pc_program.hpp"
+#include "metrics/enabled_steps.hpp"
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
 #include "run/moves.hpp"
 #include "run/simulate.hpp"
 #include "systems/atmega/atmega_report.hpp"
-#include "systems/atmega/enabled_steps.hpp"
 #include "systems/atmega/firmware_usart.hpp"
 #include "systems/atmega/motion_windows.hpp"
 #include "systems/link_checks.hpp"
@@ -30,18 +30,30 @@ namespace s3 = host::seed003;
 // The chip's timers run on after M30 (cli; sleep): the run ends when the firmware has stopped, checked this often.
 constexpr TimePs kStopCheckPs = 10 * kPsPerMs;
 
-// Every wire of the system, named as the pins are in every architecture (VCD and analyze scripts rely on it).
+// Every wire of the system: the machine pins named as in every architecture, then the link (README "Pins"; VCD
+// and analyze scripts rely on the names).
 struct Wires {
+    sc_core::sc_signal<bool> step_x{"step_x", false}, dir_x{"dir_x", false};
+    sc_core::sc_signal<bool> step_y{"step_y", false}, dir_y{"dir_y", false};
+    sc_core::sc_signal<bool> n_enbl_x{"n_enbl_x", false}, n_enbl_y{"n_enbl_y", false};
+    sc_core::sc_signal<bool> laser{"laser", false};  // PB1, the HEADER bit of the start byte
     sc_core::sc_signal<bool> uart_rx{"uart_rx", true};  // CP2102 TXD -> PD0 RXD; idles high
     sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // PD1 TXD -> CP2102 RXD
-    sc_core::sc_signal<bool> step_x{"step_x", false}, dir_x{"dir_x", false}, n_enbl_x{"n_enbl_x", false};
-    sc_core::sc_signal<bool> step_y{"step_y", false}, dir_y{"dir_y", false}, n_enbl_y{"n_enbl_y", false};
-    sc_core::sc_signal<bool> laser{"laser", false};  // PB1, the HEADER bit of the start byte
 
     [[nodiscard]] std::array<const sc_core::sc_signal<bool>*, 9> all() const {
-        return {&step_x, &dir_x, &n_enbl_x, &step_y, &dir_y, &n_enbl_y, &laser, &uart_rx, &uart_tx};
+        return {&step_x, &dir_x, &step_y, &dir_y, &n_enbl_x, &n_enbl_y, &laser, &uart_rx, &uart_tx};
     }
 };
+
+// The VCD's pins, each with the clock that times its edges: the AVR's for every pin it drives; the CP2102
+// (uart_rx) starts its frames when USB delivers the bytes.
+std::vector<TracedPin> traced_pins(const Wires& w, std::int64_t avr_clock_hz) {
+    std::vector<TracedPin> pins;
+    for (const sc_core::sc_signal<bool>* sig : w.all()) {
+        pins.push_back({sig, sig == &w.uart_rx ? std::nullopt : std::optional<std::int64_t>(avr_clock_hz)});
+    }
+    return pins;
+}
 
 std::string firmware_path(const Scenario& s) {
     if (!s.atmega.firmware.empty()) return s.atmega.firmware;
@@ -183,8 +195,8 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     for (const sc_core::sc_signal<bool>* sig : w.all()) rec.watch(*sig, sig->basename());
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
-        vcd = std::make_unique<VcdTrace>(s.vcd_path);
-        for (const sc_core::sc_signal<bool>* sig : w.all()) vcd->trace(*sig);
+        vcd = std::make_unique<VcdTrace>(s.vcd_path, s.vcd_timescale_fs, traced_pins(w, avr_cfg.f_cpu_hz),
+                                         s.file + ": trace.timescale");
     }
 
     const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s, link, transfers)));
@@ -199,10 +211,12 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
         plan, {rec.log("n_enbl_x"), rec.log("n_enbl_y"), rec.log("dir_x"), rec.log("dir_y"), rec.log("laser")},
         t_now);
     metrics::RunInput& in = run.input;
-    in.axes = {metrics::AxisTrace{"x", enabled_steps(rec.log("step_x"), rec.log("n_enbl_x")), rec.log("dir_x"),
-                                  s.machine.x.steps_per_mm(), false},
-               metrics::AxisTrace{"y", enabled_steps(rec.log("step_y"), rec.log("n_enbl_y")), rec.log("dir_y"),
-                                  s.machine.y.steps_per_mm(), false}};
+    const auto driven = [&rec](const char* step, const char* n_enbl) {  // the DRV8825's nENBL is active low
+        return metrics::enabled_steps(rec.log(step), rec.log(n_enbl), metrics::EnableLevel::ActiveLow);
+    };
+    in.axes = {
+        metrics::AxisTrace{"x", driven("step_x", "n_enbl_x"), rec.log("dir_x"), s.machine.x.steps_per_mm(), false},
+        metrics::AxisTrace{"y", driven("step_y", "n_enbl_y"), rec.log("dir_y"), s.machine.y.steps_per_mm(), false}};
     in.moves = executed_moves(s, job, plan, windows);
     for (const mech::ToolSample& t : machine.carriage().samples()) in.tool.push_back({t.t_ps, t.pos});
     in.laser = rec.log("laser");

@@ -21,17 +21,29 @@ namespace cnc::sim {
 
 namespace {
 
-// Every wire of the system, named as the pins are in every architecture (VCD and analyze scripts rely on it).
+// Every wire of the system: the machine pins named as in every architecture, then the link (README "Pins"; VCD
+// and analyze scripts rely on the names).
 struct Wires {
-    sc_core::sc_signal<bool> sclk{"sclk", false};  // mode 0: idles low
-    sc_core::sc_signal<bool> mosi{"mosi", false};
-    sc_core::sc_signal<bool> miso{"miso", false};
-    sc_core::sc_signal<bool> ss{"ss", true};       // active low
     sc_core::sc_signal<bool> step_x{"step_x", false}, dir_x{"dir_x", false};
     sc_core::sc_signal<bool> step_y{"step_y", false}, dir_y{"dir_y", false};
-    sc_core::sc_signal<bool> n_enbl{"n_enbl", false};  // the FPGA drives no EN pin: drivers always enabled
-    sc_core::sc_signal<bool> laser{"laser", false};    // the FPGA's laser_latch (the frame's laser bit)
+    // The FPGA drives no EN pin: the DRV8825s' nENBL stay low (enabled), held here as constant wires.
+    sc_core::sc_signal<bool> n_enbl_x{"n_enbl_x", false}, n_enbl_y{"n_enbl_y", false};
+    sc_core::sc_signal<bool> laser{"laser", false};  // the FPGA's laser_latch (the frame's laser bit)
+    sc_core::sc_signal<bool> sclk{"sclk", false};    // mode 0: idles low
+    sc_core::sc_signal<bool> mosi{"mosi", false};
+    sc_core::sc_signal<bool> miso{"miso", false};
+    sc_core::sc_signal<bool> ss{"ss", true};         // active low
 };
+
+// The VCD's pins, each with the clock that times its edges: the FPGA's for its step, dir and laser outputs. The
+// host's servo thread times the SPI master (sclk, mosi, ss), the FPGA answers on miso at SS edges as well as on
+// its clock, and the nENBL wires are constant.
+std::vector<TracedPin> traced_pins(const Wires& w, std::int64_t fpga_clock_hz) {
+    const std::optional<std::int64_t> fpga = fpga_clock_hz;
+    return {{&w.step_x, fpga}, {&w.dir_x, fpga}, {&w.step_y, fpga}, {&w.dir_y, fpga}, {&w.n_enbl_x, {}},
+            {&w.n_enbl_y, {}}, {&w.laser, fpga}, {&w.sclk, {}},     {&w.mosi, {}},      {&w.miso, {}},
+            {&w.ss, {}}};
+}
 
 host::servo::ServoConfig servo_config(const Scenario& s) {
     host::servo::ServoConfig c = s.spi_fpga.servo;
@@ -99,10 +111,10 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);
     machine.step_x(w.step_x);
     machine.dir_x(w.dir_x);
-    machine.n_enbl_x(w.n_enbl);
+    machine.n_enbl_x(w.n_enbl_x);
     machine.step_y(w.step_y);
     machine.dir_y(w.dir_y);
-    machine.n_enbl_y(w.n_enbl);
+    machine.n_enbl_y(w.n_enbl_y);
     machine.laser(w.laser);
 
     EdgeRecorder rec("probes");
@@ -114,11 +126,8 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     }
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
-        vcd = std::make_unique<VcdTrace>(s.vcd_path);
-        for (const sc_core::sc_signal<bool>* sig :
-             {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser, &w.sclk, &w.mosi, &w.miso, &w.ss}) {
-            vcd->trace(*sig);
-        }
+        vcd = std::make_unique<VcdTrace>(s.vcd_path, s.vcd_timescale_fs, traced_pins(w, s.spi_fpga.fpga.clk_hz),
+                                         s.file + ": trace.timescale");
     }
 
     const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s.spi_fpga.planner)));

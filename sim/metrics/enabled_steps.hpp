@@ -1,0 +1,17 @@
+// The STEP pulses a DRV8825 acts on: rising edges while its enable input is active, with the falling edge that
+// ends each of them. Seed 003 stops an axis by EN while its timer keeps toggling STEP (§4.3-4.5), so the raw pin
+// carries pulses no motor sees; the metrics count what a logic analyser triggered on STEP and qualified by the
+// enable would count (spec seed-003 §5, "the caliper"). `cncsim analyze --enable` applies the same rule.
+#pragma once
+#include "common/edge_log.hpp"
+
+namespace cnc::metrics {
+
+// The level at which the enable input lets the driver step: the DRV8825's nENBL is active low.
+enum class EnableLevel { ActiveHigh, ActiveLow };
+
+// `step` and `enable` in time order. A STEP edge at the same instant as an enable change sees the level before
+// the change (the driver samples the level it had). The result keeps `step`'s name and initial level low.
+[[nodiscard]] EdgeLog enabled_steps(const EdgeLog& step, const EdgeLog& enable, EnableLevel active);
+
+}  // namespace cnc::metrics

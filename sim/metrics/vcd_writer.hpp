@@ -1,0 +1,60 @@
+// VCD writing, as the simulation runs (VcdWriter) or from finished edge logs (write_vcd): one scope "cncsim",
+// 1-bit wires, the initial levels in $dumpvars and nothing after $enddefinitions but value changes and times,
+// so that every reader (gtkwave, sigrok, PulseView) sees the whole file.
+#pragma once
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/edge_log.hpp"
+#include "common/units.hpp"
+
+namespace cnc::metrics {
+
+struct VcdSignal {
+    std::string name;      // unique, no white space
+    bool initial = false;  // level at time 0
+    // The clock that times every edge of the signal. When its period is a whole number of ps (50 MHz, 16 MHz)
+    // each edge is a multiple of that period and stays exact: the timescale must divide the period. Without one
+    // (host software, a constant pin), or with a period that is not whole ps (the CP2102's 24 MHz: the
+    // simulation itself rounds those edges to the ps), edges are written at the nearest tick.
+    std::optional<std::int64_t> clock_hz;
+};
+
+// The whole-ps period of a clock, if it has one.
+[[nodiscard]] std::optional<TimePs> whole_period_ps(std::int64_t clock_hz);
+
+// What VcdWriter checks before it writes: throws cnc::BadInput(where, ...) for a timescale that is not 1, 10 or
+// 100 of s .. fs, a name that is empty, has white space or comes twice, and a timescale that does not divide the
+// period of a signal's clock (the message gives the coarsest timescale that does).
+void check_vcd_signals(std::int64_t timescale_fs, const std::vector<VcdSignal>& signals, const std::string& where);
+
+class VcdWriter {
+public:
+    // Writes the header and the initial levels, after check_vcd_signals.
+    VcdWriter(std::ostream& out, std::int64_t timescale_fs, std::vector<VcdSignal> signals, const std::string& where);
+
+    // Signal `index` changed to `level` at t_ps; times must not decrease. std::logic_error for a time that goes
+    // backwards, or an edge of a clocked signal that is not on its clock (a model that breaks its own timing).
+    void change(TimePs t_ps, std::size_t index, bool level);
+    // The end of the capture: a last timestamp, so that readers hold the final levels until then.
+    void finish(TimePs t_ps);
+
+private:
+    void write_time(TimePs t_ps);
+
+    std::ostream& m_out;
+    std::int64_t m_timescale_fs;
+    std::vector<VcdSignal> m_signals;
+    std::vector<std::string> m_ids;
+    TimePs m_last_ps = 0;
+    std::int64_t m_written_tick = 0;
+};
+
+// The logs as a VCD (tests and tools): `timescale_fs` 1, 10 or 100 of a unit and every edge time a multiple of
+// it, edges in time order. Otherwise throws cnc::BadInput("write_vcd", ...).
+void write_vcd(std::ostream& out, const std::vector<EdgeLog>& logs, std::int64_t timescale_fs = 1'000'000);
+
+}  // namespace cnc::metrics

@@ -1,6 +1,7 @@
 // cncsim: the command line (DESIGN.md §6). Exit codes: 0 ok, 1 run failed, 2 bad input.
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "metrics/analyze_input.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/vcd_reader.hpp"
+#include "output/output_file.hpp"
 #include "run/run.hpp"
 #include "scenario/scenario.hpp"
 
@@ -25,9 +27,7 @@ constexpr int kExitRunFailed = 1;
 constexpr int kExitBadInput = 2;
 
 void write_json(const std::string& path, const nlohmann::json& j) {
-    std::ofstream out(path);
-    if (!out) throw cnc::BadInput(path, "cannot write the report file");
-    out << cnc::metrics::report_text(j);
+    cnc::sim::write_output_file(path, "--report", cnc::metrics::report_text(j));
 }
 
 int cmd_run(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& vcd,
@@ -36,13 +36,20 @@ int cmd_run(const std::string& scenario_path, const std::vector<std::string>& se
     if (detail) s.detail = true;
     if (!vcd.empty()) s.vcd_path = vcd;
     if (!report.empty()) s.report_path = report;
+    // Every output can be written before anything is simulated; the report is opened now and filled at the end.
+    if (!s.vcd_path.empty()) cnc::sim::check_output_path(s.vcd_path, vcd.empty() ? s.file + ": trace.vcd" : "--vcd");
+    std::optional<cnc::sim::OutputFile> report_file;
+    if (!s.report_path.empty()) report_file.emplace(s.report_path, report.empty() ? s.file + ": trace.report" : "--report");
     s.progress = progress == "off"   ? cnc::sim::ProgressStyle::Off
                  : progress == "log" ? cnc::sim::ProgressStyle::Log
                  : isatty(STDERR_FILENO) ? cnc::sim::ProgressStyle::Terminal
                                          : cnc::sim::ProgressStyle::Log;
     const cnc::sim::RunOutcome out = cnc::sim::run_scenario(s);
     std::cout << out.summary;
-    if (!s.report_path.empty()) write_json(s.report_path, out.report);
+    if (report_file) {
+        report_file->stream() << cnc::metrics::report_text(out.report);
+        report_file->close();
+    }
     if (!out.ok) {
         std::cerr << "cncsim: run failed: " << out.failure << '\n';
         return kExitRunFailed;
@@ -75,6 +82,9 @@ std::vector<cnc::metrics::AxisSignalNames> analyze_axes(const std::vector<std::s
 
 int cmd_analyze(const std::string& vcd_path, const std::vector<cnc::metrics::AxisSignalNames>& axes,
                 double steps_per_mm, const std::string& report) {
+    // CLI11's PositiveNumber lets nan and inf through (nan <= 0 is false).
+    if (!std::isfinite(steps_per_mm)) throw cnc::BadInput("--steps-per-mm", "must be a finite number > 0");
+    if (!report.empty()) cnc::sim::check_output_path(report, "--report");
     std::ifstream in(vcd_path);
     if (!in) throw cnc::BadInput(vcd_path, "cannot open the VCD file");
     const cnc::metrics::VcdContents vcd = cnc::metrics::read_vcd(in, vcd_path);
@@ -97,6 +107,7 @@ int cmd_compare(const std::string& scenario_path, const std::string& archs, cons
         list.push_back(a);
     }
     cnc::sim::load_scenario(scenario_path, sets);  // bad input is reported once, here, not once per child
+    if (!report.empty()) cnc::sim::check_output_path(report, "--report");
     const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
     const auto columns = cnc::sim::run_compare(self, scenario_path, list, sets);
     const cnc::sim::TableFormat format = format_name == "markdown" ? cnc::sim::TableFormat::Markdown
@@ -185,6 +196,9 @@ int sc_main(int argc, char* argv[]) {
     } catch (const cnc::BadInput& e) {
         std::cerr << "cncsim: " << e.what() << '\n';
         return kExitBadInput;
+    } catch (const cnc::sim::OutputError& e) {
+        std::cerr << "cncsim: run failed: " << e.what() << '\n';
+        return kExitRunFailed;
     } catch (const std::exception& e) {
         std::cerr << "cncsim: internal error: " << e.what() << '\n';
         return kExitRunFailed;

@@ -79,8 +79,9 @@ std::optional<TimePs> whole_period_ps(std::int64_t clock_hz) {
 }
 
 VcdWriter::VcdWriter(std::ostream& out, std::int64_t timescale_fs, std::vector<VcdSignal> signals,
-                     const std::string& where)
-    : m_out(out), m_timescale_fs(timescale_fs), m_signals(std::move(signals)) {
+                     const std::string& where, TimePs start_ps)
+    : m_out(out), m_timescale_fs(timescale_fs), m_signals(std::move(signals)), m_last_ps(start_ps),
+      m_written_tick(ps_to_vcd_ticks(start_ps, timescale_fs)) {
     check_vcd_signals(timescale_fs, m_signals, where);
     m_out << "$version cncsim $end\n$timescale " << timescale_text(timescale_fs, where)
           << " $end\n$scope module cncsim $end\n";
@@ -88,7 +89,7 @@ VcdWriter::VcdWriter(std::ostream& out, std::int64_t timescale_fs, std::vector<V
         m_ids.push_back(vcd_id(i));
         m_out << "$var wire 1 " << m_ids[i] << ' ' << m_signals[i].name << " $end\n";
     }
-    m_out << "$upscope $end\n$enddefinitions $end\n#0\n$dumpvars\n";
+    m_out << "$upscope $end\n$enddefinitions $end\n#" << m_written_tick << "\n$dumpvars\n";
     for (std::size_t i = 0; i < m_signals.size(); ++i) m_out << (m_signals[i].initial ? '1' : '0') << m_ids[i] << '\n';
     m_out << "$end\n";
 }

@@ -33,8 +33,10 @@ void check_vcd_signals(std::int64_t timescale_fs, const std::vector<VcdSignal>& 
 
 class VcdWriter {
 public:
-    // Writes the header and the initial levels, after check_vcd_signals.
-    VcdWriter(std::ostream& out, std::int64_t timescale_fs, std::vector<VcdSignal> signals, const std::string& where);
+    // Writes the header and the initial levels, after check_vcd_signals. A capture that starts at start_ps
+    // (a window of a run) gives the levels at that time, and its changes come from then on.
+    VcdWriter(std::ostream& out, std::int64_t timescale_fs, std::vector<VcdSignal> signals, const std::string& where,
+              TimePs start_ps = 0);
 
     // Signal `index` changed to `level` at t_ps; times must not decrease. std::logic_error for a time that goes
     // backwards, or an edge of a clocked signal that is not on its clock (a model that breaks its own timing).

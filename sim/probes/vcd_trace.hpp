@@ -1,10 +1,11 @@
 // The run's VCD file, written as the simulation runs (nothing is kept in memory): the traced pins by their
-// machine names, at trace.timescale. Edges of pins timed by a clock with a whole-ps period (FPGA 50 MHz, AVR
-// 16 MHz) are exact, and a timescale that would round them is refused; the others are written at the nearest
-// tick (metrics/vcd_writer.hpp).
+// machine names, at trace.timescale, the pins trace.signals names (by default every pin but those traced only on
+// request) in the window trace.from_s .. trace.to_s. Edges of pins timed by a clock with a whole-ps period (FPGA
+// 50 MHz, AVR 16 MHz) are exact, and a timescale that would round them is refused; the others are written at the
+// nearest tick (metrics/vcd_writer.hpp). The file is an OutputFile: complete, or not there.
 #pragma once
 #include <cstdint>
-#include <fstream>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,28 +13,44 @@
 #include <systemc>
 
 #include "metrics/vcd_writer.hpp"
+#include "output/output_file.hpp"
+#include "scenario/scenario.hpp"
 
 namespace cnc::sim {
 
 struct TracedPin {
     const sc_core::sc_signal<bool>* signal;  // traced under its basename
     std::optional<std::int64_t> clock_hz;    // the clock that times its edges; nullopt: host timing or constant
+    bool on_request = false;                 // in the VCD only when trace.signals names it
 };
+
+// Whether the scenario writes a VCD that trace.signals asks to hold one of `names`.
+[[nodiscard]] bool trace_names_any(const Scenario& s, std::initializer_list<const char*> names);
 
 class VcdTrace {
 public:
     // Call during elaboration, after the pins are bound: their current levels are the initial ones. Throws
-    // BadInput(timescale_key, ...) for a timescale that would round a clocked pin's edges, BadInput(path, ...)
-    // when the file cannot be written.
-    VcdTrace(const std::string& path, std::int64_t timescale_fs, const std::vector<TracedPin>& pins,
-             const std::string& timescale_key);
-    ~VcdTrace();  // ends the file at the current simulation time
+    // BadInput naming trace.signals for a name that is not one of `pins`, trace.timescale for a timescale that
+    // would round a clocked pin's edges, the file when it cannot be written.
+    VcdTrace(const Scenario& s, const std::vector<TracedPin>& pins);
     VcdTrace(const VcdTrace&) = delete;
     VcdTrace& operator=(const VcdTrace&) = delete;
 
+    // Ends the file at the current simulation time (or trace.to_s); OutputError if it could not be written.
+    void close();
+
 private:
-    std::ofstream m_file;
+    void change(std::size_t index, bool level);
+    void open_at(TimePs t_ps);
+
+    std::optional<OutputFile> m_file;  // opened once the pins and the timescale are accepted
+    std::int64_t m_timescale_fs;
+    std::string m_timescale_key;
+    std::vector<metrics::VcdSignal> m_signals;  // the levels before the window, then the initial levels
+    TimePs m_from_ps;
+    std::optional<TimePs> m_to_ps;
     std::optional<metrics::VcdWriter> m_writer;
+    bool m_ended = false;
 };
 
 }  // namespace cnc::sim

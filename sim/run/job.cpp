@@ -3,10 +3,12 @@
 #include "common/bad_input.hpp"
 #include "host/core/soft_limits.hpp"
 #include "host/core/steps_file.hpp"
+#include "run/job_limits.hpp"
 
 namespace cnc::sim {
 
 Job load_job(const Scenario& s) {
+    if (s.architecture == "fpga-uart") check_numerators(s);
     Job job;
     if (s.job_format == JobFormat::Steps) {
         job.steps_file = host::load_steps_file(s.job_path);
@@ -19,10 +21,20 @@ Job load_job(const Scenario& s) {
             seg.dx_mm = static_cast<double>(seg.steps_x) / s.machine.x.steps_per_mm();
             seg.dy_mm = static_cast<double>(seg.steps_y) / s.machine.y.steps_per_mm();
         }
+        if (job.steps_file.empty()) job.warnings.push_back({"empty_job", s.job_path, "the steps file has no segment"});
         return job;
     }
     job.program = host::interpret_file(s.job_path, s.interpreter);
     host::check_soft_limits(*job.program, s.machine);
+    check_job_limits(*job.program, s);
+    if (job.program->moves.empty()) {
+        const std::string what = "the job has no XY move (" + std::to_string(job.program->lines) +
+                                 " lines: empty, or comments and words that move nothing)";
+        if (s.interpreter.policy == host::GcodePolicy::Strict) {
+            throw BadInput(s.job_path, what + "; scenario.gcode_policy = \"strict\" refuses it");
+        }
+        job.warnings.push_back({"empty_job", s.job_path, what + ": nothing to measure"});
+    }
     return job;
 }
 

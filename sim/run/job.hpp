@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "common/warning.hpp"
 #include "host/core/cam.hpp"
 #include "host/core/gcode.hpp"
 #include "scenario/scenario.hpp"
@@ -13,8 +14,11 @@ namespace cnc::sim {
 struct Job {
     std::optional<host::Program> program;         // G-code job
     std::vector<host::MotionSegment> steps_file;   // steps-file job (fpga-uart only)
+    std::vector<Warning> warnings;                 // about the job as a whole (one without a move)
 };
 
+// Reads the job and checks it against the machine (run/job_limits.hpp) before anything is simulated. A job
+// without a move (empty, comments only) is a warning, and bad input under scenario.gcode_policy = "strict".
 Job load_job(const Scenario& scenario);
 
 }  // namespace cnc::sim

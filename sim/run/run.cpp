@@ -57,6 +57,7 @@ RunOutcome run_scenario(const Scenario& s) {
             s.architecture == "spi-fpga" ? LaserSwitching::FollowsJob : LaserSwitching::ByMotionKind;
         for (Warning& w : laser_warnings(*job.program, switching)) out.arch.warnings.push_back(std::move(w));
     }
+    out.arch.warnings.insert(out.arch.warnings.begin(), job.warnings.begin(), job.warnings.end());
     out.metrics = metrics::compute_metrics(out.arch.input);
     const ArchRun& arch = out.arch;
     const metrics::RunMetrics& m = out.metrics;

@@ -38,7 +38,15 @@ std::string type_name(const toml::node& n) {
 
 }  // namespace
 
-KeyReader::KeyReader(const toml::table& root, std::string file) : m_root(root), m_file(std::move(file)) {}
+KeyReader::KeyReader(const toml::table& root, std::string file, std::vector<std::string> overridden)
+    : m_root(root), m_file(std::move(file)), m_overridden(std::move(overridden)) {}
+
+std::optional<std::string> KeyReader::override_of(const std::string& key) const {
+    for (auto o = m_overridden.rbegin(); o != m_overridden.rend(); ++o) {  // the last --set of a key wins
+        if (*o == key || o->rfind(key + ".", 0) == 0) return *o;
+    }
+    return std::nullopt;
+}
 
 const toml::node* KeyReader::find(const std::string& key) const {
     const toml::node* node = &m_root;
@@ -54,6 +62,7 @@ const toml::node* KeyReader::find(const std::string& key) const {
 bool KeyReader::has(const std::string& key) const { return find(key) != nullptr; }
 
 std::string KeyReader::where(const std::string& key) const {
+    if (const auto o = override_of(key)) return "--set " + *o;
     const toml::node* n = find(key);
     if (n != nullptr && n->source().begin.line > 0) {
         return m_file + ":" + std::to_string(n->source().begin.line) + ": " + key;
@@ -107,6 +116,19 @@ std::string KeyReader::get_string(const std::string& key, const std::string& def
     return n->as_string()->get();
 }
 
+std::vector<std::string> KeyReader::get_string_list(const std::string& key, const std::string& doc) {
+    record({key, "array of strings", "[]", "", doc});
+    const toml::node* n = find(key);
+    if (n == nullptr) return {};
+    if (!n->is_array()) fail(key, "expected an array of strings ([\"a\", \"b\"]), got " + type_name(*n));
+    std::vector<std::string> out;
+    for (const toml::node& item : *n->as_array()) {
+        if (!item.is_string()) fail(key, "expected an array of strings, it holds a " + type_name(item));
+        out.push_back(item.as_string()->get());
+    }
+    return out;
+}
+
 std::string KeyReader::get_choice(const std::string& key, const std::string& def,
                                   const std::vector<std::string>& choices, const std::string& doc) {
     std::string allowed;
@@ -146,20 +168,25 @@ void KeyReader::reject_unknown_keys() const {
             for (const std::string& c : siblings) allowed += (allowed.empty() ? " " : ", ") + c;
             const std::string scope = prefix.empty() ? "at the top level" : "in [" + prefix + "]";
             const int line = node.source().begin.line;
-            throw BadInput(m_file + (line > 0 ? ":" + std::to_string(line) : "") + ": " + key,
+            const std::optional<std::string> o = override_of(key);
+            throw BadInput(o ? "--set " + *o : m_file + (line > 0 ? ":" + std::to_string(line) : "") + ": " + key,
                            "unknown key (allowed " + scope + ":" + allowed + ")");
         }
     };
     walk(m_root, "");
 }
 
-void apply_override(toml::table& root, const std::string& assignment) {
+std::string override_key(const std::string& assignment) {
     const auto eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0) {
         throw BadInput("--set " + assignment, "expected key=value (e.g. link.baud=57600)");
     }
-    const std::string key = assignment.substr(0, eq);
-    const std::string value = assignment.substr(eq + 1);
+    return assignment.substr(0, eq);
+}
+
+void apply_override(toml::table& root, const std::string& assignment) {
+    const std::string key = override_key(assignment);
+    const std::string value = assignment.substr(key.size() + 1);
     std::vector<std::string> parts = split_key(key);
     toml::table* t = &root;
     for (std::size_t i = 0; i + 1 < parts.size(); ++i) {

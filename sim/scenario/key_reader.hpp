@@ -13,7 +13,7 @@ namespace cnc::sim {
 
 struct KeyDoc {
     std::string key;      // dotted path: link.baud
-    std::string type;     // integer | float | string | boolean
+    std::string type;     // integer | float | string | boolean | array of strings
     std::string default_text;
     std::string allowed;  // "1 .. 65535", "belt | leadscrew"
     std::string doc;      // one line, unit included
@@ -21,14 +21,17 @@ struct KeyDoc {
 
 class KeyReader {
 public:
-    // `file` names the scenario in messages; `root` is the whole document (after --set overrides).
-    KeyReader(const toml::table& root, std::string file);
+    // `file` names the scenario in messages; `root` is the whole document (after --set overrides). Messages about
+    // a key that `overridden` lists (--set keys) name "--set key" instead of the file.
+    KeyReader(const toml::table& root, std::string file, std::vector<std::string> overridden = {});
 
     double get_float(const std::string& key, double def, double min, double max, const std::string& doc);
     std::int64_t get_int(const std::string& key, std::int64_t def, std::int64_t min, std::int64_t max,
                          const std::string& doc);
     bool get_bool(const std::string& key, bool def, const std::string& doc);
     std::string get_string(const std::string& key, const std::string& def, const std::string& doc);
+    // An array of strings (empty by default).
+    std::vector<std::string> get_string_list(const std::string& key, const std::string& doc);
     // A string from a fixed set of choices.
     std::string get_choice(const std::string& key, const std::string& def, const std::vector<std::string>& choices,
                            const std::string& doc);
@@ -45,11 +48,17 @@ private:
     const toml::node* find(const std::string& key) const;
     void record(KeyDoc doc);
     std::string where(const std::string& key) const;
+    // The --set key that set `key` or, for a table, a key inside it.
+    std::optional<std::string> override_of(const std::string& key) const;
 
     const toml::table& m_root;
     std::string m_file;
+    std::vector<std::string> m_overridden;
     std::vector<KeyDoc> m_docs;
 };
+
+// The key of `--set key=value` (BadInput naming the option if there is no '=').
+std::string override_key(const std::string& assignment);
 
 // Applies `--set key=value`: the value is parsed as a TOML value (42, 1.5, true, "text"); anything that is not a
 // TOML value is taken as a bare string (paths). Creates intermediate tables.

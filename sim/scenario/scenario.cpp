@@ -120,6 +120,27 @@ void check_fpga(const KeyReader& r, const fpga::FpgaConfig& cfg) {
     }
 }
 
+// Which pins the VCD holds, and when: a window of a long job keeps the file to the part of interest.
+void read_trace_window(KeyReader& r, Scenario& s) {
+    s.trace_signals = r.get_string_list(
+        "trace.signals",
+        "pins the VCD holds, by name (README \"VCD traces\": the pins of each architecture); an unknown name is "
+        "refused with the allowed ones; []: every pin except spi-fpga's sclk, mosi, miso and ss, which are driven "
+        "bit by bit only when named here (or with spi.trace_wires = true)");
+    constexpr double kMaxTraceS = 1e6;  // the largest scenario.max_sim_s
+    const double from_s = r.get_float("trace.from_s", 0.0, 0.0, kMaxTraceS,
+                                      "start of the VCD's window, s of simulated time: the file holds the levels at "
+                                      "that time, then the changes until trace.to_s");
+    const double to_s = r.get_float("trace.to_s", 0.0, 0.0, kMaxTraceS,
+                                    "end of the VCD's window, s of simulated time, > trace.from_s; 0: the end of "
+                                    "the run");
+    if (to_s > 0.0 && !(to_s > from_s)) {
+        r.fail("trace.to_s", format("%g s must be after trace.from_s = ", to_s) + format("%g s", from_s));
+    }
+    s.trace_from_ps = s_to_ps(from_s);
+    if (to_s > 0.0) s.trace_to_ps = s_to_ps(to_s);
+}
+
 // Reads every key (registering its documentation); `base` resolves relative paths.
 Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     Scenario s;
@@ -244,6 +265,7 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
         "trace.timescale", "100 ps", metrics::vcd_timescale_names(),
         "VCD time unit: 100 ps keeps every FPGA (20 ns) and AVR (62.5 ns) clock edge exact, a unit that would round "
         "them is refused; pins timed otherwise (CP2102, SPI master) are written at the nearest tick"));
+    read_trace_window(r, s);
     s.report_path = r.get_string("trace.report", "", "JSON report to write; empty: none");
     s.detail = r.get_bool("trace.detail", false,
                           "the JSON report also holds the logs that grow with steps, servo periods and packets "
@@ -259,9 +281,18 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     return s;
 }
 
+// The job file must be a file that exists: named by its key, not as whatever the reader would make of it.
+void check_job_file(const KeyReader& r, const std::string& job_path) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(job_path, ec);
+    if (!fs::exists(st)) r.fail("scenario.job", "the job file " + job_path + " does not exist");
+    if (fs::is_directory(st)) r.fail("scenario.job", job_path + " is a folder, not a job file");
+}
+
 }  // namespace
 
 Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides) {
+    if (fs::is_directory(path)) throw BadInput(path, "is a folder, not a scenario file (TOML)");
     std::ifstream in(path);
     if (!in) throw BadInput(path, "cannot open the scenario file");
     std::stringstream text;
@@ -272,11 +303,16 @@ Scenario load_scenario(const std::string& path, const std::vector<std::string>& 
     } catch (const toml::parse_error& e) {
         throw BadInput(path + ":" + std::to_string(e.source().begin.line), std::string(e.description()));
     }
-    for (const std::string& o : overrides) apply_override(root, o);
-    KeyReader reader(root, path);
+    std::vector<std::string> overridden;
+    for (const std::string& o : overrides) {
+        apply_override(root, o);
+        overridden.push_back(override_key(o));
+    }
+    KeyReader reader(root, path, overridden);
     Scenario s = read(reader, path, fs::path(path).parent_path());
     reader.reject_unknown_keys();
     if (s.job_path.empty()) reader.fail("scenario.job", "missing: the job file to run is required");
+    check_job_file(reader, s.job_path);
     return s;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/geometry.hpp"
+#include "common/units.hpp"
 #include "fpga/core/fpga_config.hpp"
 #include "host/core/cam.hpp"
 #include "host/core/gcode.hpp"
@@ -46,6 +47,9 @@ struct Scenario {
 
     std::string vcd_path;       // empty: no VCD
     std::int64_t vcd_timescale_fs = 100'000;  // trace.timescale
+    std::vector<std::string> trace_signals;   // trace.signals; empty: every pin not traced on request only
+    TimePs trace_from_ps = 0;                 // trace.from_s
+    std::optional<TimePs> trace_to_ps;        // trace.to_s; none: the end of the run
     std::string report_path;    // empty: no JSON file
     bool detail = false;        // the report also holds the logs that grow with steps, periods and packets
     ProgressStyle progress = ProgressStyle::Off;  // set by the CLI from stderr, not a scenario key

@@ -63,8 +63,9 @@ void read_link(KeyReader& r, spi::SpiConfig& c) {
     c.cs_hold_ps = ns_to_ps(r.get_float("spi.cs_hold_ns", 1000.0, 0.0, 1e6, "end of the last bit cell to SS rise, ns"));
     c.ss_idle_min_ps = ns_to_ps(r.get_float("spi.ss_idle_ns", 1000.0, 0.0, 1e6, "least SS-high time between frames, ns"));
     c.trace_wires = r.get_bool("spi.trace_wires", false,
-                               "toggle SCLK/MOSI/MISO/SS bit by bit even without a VCD (with trace.vcd the wires "
-                               "are always driven); false: one transaction per frame at the same SS edges");
+                               "toggle SCLK/MOSI/MISO/SS bit by bit (and trace them in the VCD); false: one "
+                               "transaction per frame at the same SS edges, and the wires are driven only when "
+                               "trace.signals names one of them");
 }
 
 void read_fpga(KeyReader& r, fpga::SpiFpgaConfig& c) {

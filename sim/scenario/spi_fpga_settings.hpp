@@ -19,7 +19,7 @@ struct SpiFpgaSettings {
     host::planner::PlannerConfig planner;
     // Period, latency and law settings; the system fills in the machine (axes, origin) and the FPGA clock.
     host::servo::ServoConfig servo;
-    // trace_wires is the spi.trace_wires key; the system also traces the wires whenever a VCD is written.
+    // trace_wires is the spi.trace_wires key; the system also drives the wires when trace.signals names one.
     spi::SpiConfig link;
     fpga::SpiFpgaConfig fpga;
 };

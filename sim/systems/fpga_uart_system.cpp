@@ -229,14 +229,13 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     record_wires(rec, w);
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
-        vcd = std::make_unique<VcdTrace>(s.vcd_path, s.vcd_timescale_fs, traced_pins(w, s.fpga.clk_hz),
-                                         s.file + ": trace.timescale");
+        vcd = std::make_unique<VcdTrace>(s, traced_pins(w, s.fpga.clk_hz));
     }
 
     const host::Program moves_run = job.program ? *job.program : packet_moves(segments, packets, s.job_path);
     const RunBudget budget = run_budget(s, estimate_job(moves_run, pace(s, segments.size())));
     const SimulationEnd end = simulate(budget);
-    vcd.reset();
+    if (vcd) vcd->close();
 
     ArchRun run;
     record_budget(budget, run);

@@ -71,6 +71,23 @@ TEST(HostGcodeErrors, MalformedWords) {
     expect_gcode_error("G0 X1 (outer (inner) )\n", {"t.nc:1:", "nested comment"});
 }
 
+// A number beyond a double (1.8e308: IEEE 754 binary64) is out of range, whether written with an exponent (which
+// G-code does not have: "1e5" reads as 1 and the word E5) or with 400 digits; in range, "e" stays the E word.
+TEST(HostGcodeErrors, NumbersOutOfRange) {
+    expect_gcode_error("G1 X1e400 F100\n", {"t.nc:1:", "number '1e400' is out of range"});
+    expect_gcode_error("G1 X-2.5E+999 F100\n", {"number '-2.5E+999' is out of range"});
+    expect_gcode_error("G1 X1e-400 F100\n", {"number '1e-400' is out of range"});
+    expect_gcode_error("G1 X1" + std::string(400, '0') + " F100\n", {"t.nc:1:", "the number is out of range"});
+    const Program p = run_gcode("G1 X1e5 F100\n");
+    ASSERT_EQ(p.moves.size(), 1u);
+    EXPECT_DOUBLE_EQ(p.moves[0].path.end.x_mm, 1.0);
+}
+
+// Control bytes of a job are quoted escaped (common/printable.hpp), not sent to the terminal.
+TEST(HostGcodeErrors, ControlBytesAreEscapedInMessages) {
+    expect_gcode_error("G1 X1 \x1b[2J F1\n", {"t.nc:1:", "unexpected character '\\x1B'"});
+}
+
 TEST(HostGcodeErrors, ConflictingAndRepeatedWords) {
     expect_gcode_error("G0 G1 X1 F1\n", {"t.nc:1:", "'G1' conflicts", "motion"});
     expect_gcode_error("G90 G91\n", {"'G91' conflicts", "distance"});

@@ -104,7 +104,15 @@ std::vector<MotionSegment> read_steps_file(std::istream& in, const std::string& 
     std::string text;
     int line = 0;
     while (std::getline(in, text)) {
-        if (++line == 1) continue;  // header
+        if (++line == 1) {
+            // send_steps.py skips line 1 unread (seed 000 §6): a file without its header would lose a segment.
+            if (parse_int(split_commas(trim(text)).front())) {
+                throw BadInput(filename + ":1", std::string("a data row where the header belongs (") +
+                                                    kStepsFileHeader + "): the sender skips line 1, so this "
+                                                    "segment would never be sent; add the header line");
+            }
+            continue;
+        }
         const std::string_view row = trim(text);
         if (row.empty()) continue;
         segments.push_back(parse_row(row, filename + ":" + std::to_string(line)));

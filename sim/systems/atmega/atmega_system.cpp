@@ -195,15 +195,14 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     for (const sc_core::sc_signal<bool>* sig : w.all()) rec.watch(*sig, sig->basename());
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
-        vcd = std::make_unique<VcdTrace>(s.vcd_path, s.vcd_timescale_fs, traced_pins(w, avr_cfg.f_cpu_hz),
-                                         s.file + ": trace.timescale");
+        vcd = std::make_unique<VcdTrace>(s, traced_pins(w, avr_cfg.f_cpu_hz));
     }
 
     const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s, link, transfers)));
     const SimulationEnd end =
         simulate(budget, [&] { return mcu.stopped() || link_failure(mcu, cp2102, pc).has_value(); }, kStopCheckPs);
     const TimePs t_now = end.t_ps;
-    vcd.reset();
+    if (vcd) vcd->close();
 
     ArchRun run;
     record_budget(budget, run);

@@ -37,12 +37,14 @@ struct Wires {
 
 // The VCD's pins, each with the clock that times its edges: the FPGA's for its step, dir and laser outputs. The
 // host's servo thread times the SPI master (sclk, mosi, ss), the FPGA answers on miso at SS edges as well as on
-// its clock, and the nENBL wires are constant.
-std::vector<TracedPin> traced_pins(const Wires& w, std::int64_t fpga_clock_hz) {
+// its clock, and the nENBL wires are constant. The SPI wires toggle only when they are driven bit by bit, which
+// costs simulation time: they are traced when asked for (trace.signals, spi.trace_wires).
+std::vector<TracedPin> traced_pins(const Wires& w, std::int64_t fpga_clock_hz, bool wires_driven) {
     const std::optional<std::int64_t> fpga = fpga_clock_hz;
-    return {{&w.step_x, fpga}, {&w.dir_x, fpga}, {&w.step_y, fpga}, {&w.dir_y, fpga}, {&w.n_enbl_x, {}},
-            {&w.n_enbl_y, {}}, {&w.laser, fpga}, {&w.sclk, {}},     {&w.mosi, {}},      {&w.miso, {}},
-            {&w.ss, {}}};
+    const bool on_request = !wires_driven;
+    return {{&w.step_x, fpga},   {&w.dir_x, fpga},    {&w.step_y, fpga},         {&w.dir_y, fpga},
+            {&w.n_enbl_x, {}},   {&w.n_enbl_y, {}},   {&w.laser, fpga},          {&w.sclk, {}, on_request},
+            {&w.mosi, {}, on_request}, {&w.miso, {}, on_request}, {&w.ss, {}, on_request}};
 }
 
 host::servo::ServoConfig servo_config(const Scenario& s) {
@@ -87,7 +89,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
         std::make_shared<const host::planner::Trajectory>(host::planner::plan(*job.program, s.spi_fpga.planner));
 
     spi::SpiConfig link = s.spi_fpga.link;
-    link.trace_wires = link.trace_wires || !s.vcd_path.empty();
+    link.trace_wires = link.trace_wires || trace_names_any(s, {"sclk", "mosi", "miso", "ss"});
 
     Wires w;
     spi::SpiMaster master("spi_master", link);
@@ -126,13 +128,12 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     }
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
-        vcd = std::make_unique<VcdTrace>(s.vcd_path, s.vcd_timescale_fs, traced_pins(w, s.spi_fpga.fpga.clk_hz),
-                                         s.file + ": trace.timescale");
+        vcd = std::make_unique<VcdTrace>(s, traced_pins(w, s.spi_fpga.fpga.clk_hz, link.trace_wires));
     }
 
     const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s.spi_fpga.planner)));
     const SimulationEnd end = simulate(budget);
-    vcd.reset();
+    if (vcd) vcd->close();
 
     ArchRun run;
     record_budget(budget, run);

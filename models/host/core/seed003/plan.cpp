@@ -17,6 +17,8 @@ constexpr std::int64_t kCountMax = 0xFFFF;  // STEPH:STEPL and STEPY:STEPVL are 
 // App. A4 MOV STEPL,DXL: a chord's count is 8 bits. Chords are cut for 254 steps of path, so that rounding both
 // ends to the grid (half a step each) keeps every axis within 255.
 constexpr double kChordStepsMax = 254.0;
+// 2 pi x 2^30 / 254 rounded up: a full circle of the largest radius (machine.hpp kMaxPositionSteps).
+constexpr double kMaxArcChords = 3.0e7;
 
 struct GridPos {
     std::int64_t x = 0;
@@ -65,7 +67,7 @@ public:
         : m_program(program), m_machine(machine), m_opt(opt) {}
 
     Plan run() {
-        if (!m_program.moves.empty()) m_cur = grid(m_program.moves.front().path.start);
+        if (!m_program.moves.empty()) m_cur = grid(m_program.moves.front().path.start, m_program.moves.front());
         for (std::size_t i = 0; i < m_program.moves.size(); ++i) {
             const ProgrammedMove& move = m_program.moves[i];
             std::vector<Command> cmds =
@@ -78,8 +80,16 @@ public:
     }
 
 private:
-    [[nodiscard]] GridPos grid(geom::Vec2 p) const {
-        return {std::llround(p.x_mm * m_machine.x.steps_per_mm()), std::llround(p.y_mm * m_machine.y.steps_per_mm())};
+    // The grid point of `p`; BadInput beyond kMaxPositionSteps, where the step differences and counts below
+    // would leave int64 (cncsim checks the job first: run/job_limits.hpp; this holds for direct callers).
+    [[nodiscard]] GridPos grid(geom::Vec2 p, const ProgrammedMove& move) const {
+        const double x = p.x_mm * m_machine.x.steps_per_mm();
+        const double y = p.y_mm * m_machine.y.steps_per_mm();
+        if (!(std::fabs(x) <= kMaxPositionSteps && std::fabs(y) <= kMaxPositionSteps)) {
+            throw BadInput(source_line(move), format("position (%.10g, %.10g) mm is beyond the ", p.x_mm, p.y_mm) +
+                                                  format("%.0f steps an axis may go from 0", kMaxPositionSteps));
+        }
+        return {std::llround(x), std::llround(y)};
     }
 
     [[nodiscard]] std::uint16_t count(std::int64_t steps, bool& wrapped) const {
@@ -146,7 +156,7 @@ private:
     // One command, or several when a count exceeds 16 bits and LongMoves::Split cuts it.
     std::vector<Command> line(int index, const ProgrammedMove& move) {
         const CommandId id = command_id(move.kind);
-        const GridPos to = grid(move.path.end);
+        const GridPos to = grid(move.path.end, move);
         const GridPos from = m_cur;
         const std::int64_t dx = to.x - from.x;
         const std::int64_t dy = to.y - from.y;
@@ -174,13 +184,20 @@ private:
         // A sweep within 1e-6 of a whole number of steps (end points printed to a few decimals) takes that number.
         const double by_angle = std::ceil(std::fabs(path.sweep_rad) * 180.0 / kPi / m_opt.arc_step_deg - 1e-6);
         const double by_count = std::ceil(length_mm * spm / kChordStepsMax);
-        const auto chords = static_cast<std::int64_t>(std::max({1.0, by_angle, by_count}));
+        // Within the position bound an arc has at most 2 pi 2^30 / 254 chords by count; a sweep of many turns
+        // (a corrupt end point) would need more than memory holds.
+        const double chords_needed = std::max({1.0, by_angle, by_count});
+        if (!(chords_needed <= kMaxArcChords)) {
+            throw BadInput(source_line(move), format("arc of %.6g mm needs %.6g chords", length_mm, chords_needed) +
+                                                  format(", more than %.0f", kMaxArcChords));
+        }
+        const auto chords = static_cast<std::int64_t>(chords_needed);
         int chord = 0;
         for (std::int64_t k = 1; k <= chords; ++k) {
             const double s_mm = length_mm * static_cast<double>(k) / static_cast<double>(chords);
             const geom::Vec2 p = k == chords ? path.end : path.point_at(s_mm);
             const std::size_t before = c.motions.size();
-            add(c, index, move, grid(p), chord);
+            add(c, index, move, grid(p, move), chord);
             if (c.motions.size() == before) continue;
             ++chord;
             Motion& m = c.motions.back();

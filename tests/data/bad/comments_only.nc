@@ -1,0 +1,3 @@
+; a job of comments only
+(nothing to cut)
+

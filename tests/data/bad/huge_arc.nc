@@ -1,0 +1,5 @@
+(an arc about a centre 10^24 mm away)
+G21 G90
+G1 X10 F600
+G2 X10 Y0.01 I1000000000000000000000000 J0
+M30

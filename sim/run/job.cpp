@@ -1,5 +1,7 @@
 #include "run/job.hpp"
 
+#include <filesystem>
+
 #include "common/bad_input.hpp"
 #include "host/core/soft_limits.hpp"
 #include "host/core/steps_file.hpp"
@@ -7,7 +9,20 @@
 
 namespace cnc::sim {
 
+namespace {
+
+// The job file must be a file that exists: named by its key, not as whatever the reader would make of it.
+void check_job_file(const Scenario& s) {
+    std::error_code ec;
+    const std::filesystem::file_status st = std::filesystem::status(s.job_path, ec);
+    if (!std::filesystem::exists(st)) throw BadInput(s.job_key, "the job file " + s.job_path + " does not exist");
+    if (std::filesystem::is_directory(st)) throw BadInput(s.job_key, s.job_path + " is a folder, not a job file");
+}
+
+}  // namespace
+
 Job load_job(const Scenario& s) {
+    check_job_file(s);
     if (s.architecture == "fpga-uart") check_numerators(s);
     Job job;
     if (s.job_format == JobFormat::Steps) {

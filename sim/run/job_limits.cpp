@@ -21,7 +21,8 @@ std::string place(const host::Program& p, const host::ProgrammedMove& m) {
 double max_position_mm(const host::AxisMachine& axis) { return host::kMaxPositionSteps / axis.steps_per_mm(); }
 
 std::string position_rule(const char* axis, const host::AxisMachine& m) {
-    return format("; the farthest an axis may go is 2^30 steps (the step counters hold 2^31), %.10g mm on ",
+    return format("; the farthest an axis may go is 2^30 steps, so that every move fits the int32 step counts: "
+                  "%.10g mm on ",
                   max_position_mm(m)) +
            axis + format(" at %.10g steps/mm", m.steps_per_mm());
 }
@@ -80,7 +81,6 @@ void check_job_limits(const host::Program& p, const Scenario& s) {
             throw BadInput(place(p, m), format("arc radius %.10g mm (I, J or R) is out of range", m.path.radius_mm()) +
                                             position_rule(x_finer ? "X" : "Y", finer));
         }
-        if (s.architecture == "spi-fpga") check_spi_feed(p, m, s);
         for (; wait < p.waits.size() && p.waits[wait].before_move <= i; ++wait) job_s += p.waits[wait].seconds;
         job_s += m.path.length_mm() / m.feed_mm_per_min * kSecondsPerMinute;
         if (!(job_s <= kMaxJobS)) {
@@ -89,6 +89,7 @@ void check_job_limits(const host::Program& p, const Scenario& s) {
                                                "(11.6 days)",
                                                job_s, kMaxJobS));
         }
+        if (s.architecture == "spi-fpga") check_spi_feed(p, m, s);
     }
     for (; wait < p.waits.size(); ++wait) {
         job_s += p.waits[wait].seconds;

@@ -41,13 +41,14 @@ public:
     // BadInput for `key` with the key's line when the document has it.
     [[noreturn]] void fail(const std::string& key, const std::string& what) const;
 
+    // "file:line: key" (the line when the document has one), or "--set key" for a key set on the command line.
+    [[nodiscard]] std::string where(const std::string& key) const;
     [[nodiscard]] const std::vector<KeyDoc>& docs() const { return m_docs; }
     [[nodiscard]] bool has(const std::string& key) const;
 
 private:
     const toml::node* find(const std::string& key) const;
     void record(KeyDoc doc);
-    std::string where(const std::string& key) const;
     // The --set key that set `key` or, for a table, a key inside it.
     std::optional<std::string> override_of(const std::string& key) const;
 

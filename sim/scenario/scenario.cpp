@@ -274,19 +274,12 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
 
     if (!job.empty()) {
         s.job_path = (base / job).lexically_normal().string();
+        s.job_key = r.where("scenario.job");
         const std::string ext = fs::path(job).extension().string();
         const bool steps = format == "steps" || (format == "auto" && (ext == ".steps" || ext == ".csv"));
         s.job_format = steps ? JobFormat::Steps : JobFormat::GCode;
     }
     return s;
-}
-
-// The job file must be a file that exists: named by its key, not as whatever the reader would make of it.
-void check_job_file(const KeyReader& r, const std::string& job_path) {
-    std::error_code ec;
-    const fs::file_status st = fs::status(job_path, ec);
-    if (!fs::exists(st)) r.fail("scenario.job", "the job file " + job_path + " does not exist");
-    if (fs::is_directory(st)) r.fail("scenario.job", job_path + " is a folder, not a job file");
 }
 
 }  // namespace
@@ -312,7 +305,6 @@ Scenario load_scenario(const std::string& path, const std::vector<std::string>& 
     Scenario s = read(reader, path, fs::path(path).parent_path());
     reader.reject_unknown_keys();
     if (s.job_path.empty()) reader.fail("scenario.job", "missing: the job file to run is required");
-    check_job_file(reader, s.job_path);
     return s;
 }
 

@@ -29,6 +29,7 @@ struct Scenario {
     std::string name;
     std::string architecture;   // fpga-uart
     std::string job_path;       // resolved against the scenario's folder
+    std::string job_key;        // where scenario.job was set ("s.toml:3: scenario.job", "--set scenario.job")
     JobFormat job_format = JobFormat::GCode;
     std::uint64_t seed = 1;
     std::optional<double> max_sim_s;  // set by the scenario; else the job's own limit (run/job_estimate.hpp)

@@ -36,7 +36,7 @@ cnc_bad_input_test(fpga_uart_baud_300 "${SQUARE}|--set|link.baud=300" "link.baud
 cnc_bad_input_test(number_out_of_range ${BAD}/exponent_out_of_range.toml
                    "exponent_out_of_range[.]nc:2: number '1e400' is out of range")
 cnc_bad_input_test(missing_job_names_the_key ${BAD}/missing_job.toml "missing_job[.]toml:2: scenario[.]job: the job file .*no_such_job[.]nc does not exist")
-cnc_bad_input_test(job_is_a_folder "${SQUARE}|--set|scenario.job=${BAD}" "--set scenario[.]job: .*is a folder, not a job file")
+cnc_bad_input_test(job_is_a_folder "${SQUARE}|--set|scenario.job=${BAD}" "--set scenario[.]job: .*bad is a folder, not a job file")
 cnc_bad_input_test(scenario_is_a_folder ${BAD} "tests/data/bad: is a folder, not a scenario file")
 cnc_bad_input_test(set_of_unknown_key "${SQUARE}|--set|link.bauds=3" "--set link[.]bauds: unknown key [(]allowed in [[]link[]]: baud")
 cnc_bad_input_test(set_of_bad_value "${SQUARE}|--set|link.baud=12" "--set link[.]baud: 12 is out of range")

@@ -105,7 +105,8 @@ TEST(SpiFpgaSettings, AServoPeriodShorterThanTheTransferIsRefused) {
 
 TEST(SpiFpgaSettings, ALatencyLargerThanThePeriodIsRefused) {
     const std::string e = load_error(kJob, {"host.latency_max_us=1000"});
-    EXPECT_NE(e.find(": host.latency_max_us: a wake-up latency of up to 1000 us plus the 17.4 us SPI transfer slot"),
+    // set by --set, so named as such
+    EXPECT_NE(e.find("--set host.latency_max_us: a wake-up latency of up to 1000 us plus the 17.4 us SPI"),
               std::string::npos)
         << e;
     EXPECT_NE(e.find("below the period minus the transfer (982.6 us)"), std::string::npos) << e;

@@ -7,22 +7,29 @@
 
 namespace cnc {
 
-// Length of the valid UTF-8 sequence of 2 to 4 bytes starting at text[i] (no overlong forms, no surrogates,
-// nothing past U+10FFFF); 0 if there is none.
+// Length of the valid UTF-8 sequence of 2 to 4 bytes starting at text[i], 0 if there is none. The table is
+// RFC 3629 §4's: per lead byte, the length and the range of the second byte (no overlong forms, no surrogates,
+// nothing past U+10FFFF); further bytes are 0x80..0xBF.
 inline std::size_t utf8_sequence_length(std::string_view text, std::size_t i) {
+    struct Lead {
+        unsigned char lead_min, lead_max;
+        std::size_t length;
+        unsigned char second_min, second_max;
+    };
+    static constexpr Lead kLeads[] = {{0xC2, 0xDF, 2, 0x80, 0xBF}, {0xE0, 0xE0, 3, 0xA0, 0xBF},
+                                      {0xE1, 0xEC, 3, 0x80, 0xBF}, {0xED, 0xED, 3, 0x80, 0x9F},
+                                      {0xEE, 0xEF, 3, 0x80, 0xBF}, {0xF0, 0xF0, 4, 0x90, 0xBF},
+                                      {0xF1, 0xF3, 4, 0x80, 0xBF}, {0xF4, 0xF4, 4, 0x80, 0x8F}};
     const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-    const unsigned char b0 = byte(i);
-    std::size_t n = 0;
-    unsigned char lo = 0x80, hi = 0xBF;  // allowed range of the second byte (RFC 3629 §4)
-    if (b0 >= 0xC2 && b0 <= 0xDF) n = 2;
-    else if (b0 >= 0xE0 && b0 <= 0xEF) n = 3, lo = b0 == 0xE0 ? 0xA0 : 0x80, hi = b0 == 0xED ? 0x9F : 0xBF;
-    else if (b0 >= 0xF0 && b0 <= 0xF4) n = 4, lo = b0 == 0xF0 ? 0x90 : 0x80, hi = b0 == 0xF4 ? 0x8F : 0xBF;
-    if (n == 0 || i + n > text.size()) return 0;
-    if (byte(i + 1) < lo || byte(i + 1) > hi) return 0;
-    for (std::size_t k = 2; k < n; ++k) {
-        if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
+    for (const Lead& l : kLeads) {
+        if (byte(i) < l.lead_min || byte(i) > l.lead_max) continue;
+        if (i + l.length > text.size() || byte(i + 1) < l.second_min || byte(i + 1) > l.second_max) return 0;
+        for (std::size_t k = 2; k < l.length; ++k) {
+            if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
+        }
+        return l.length;
     }
-    return n;
+    return 0;
 }
 
 // `text` with every byte that is neither printable ASCII, a line feed (messages list problems a line each)

@@ -39,7 +39,9 @@ int cmd_run(const std::string& scenario_path, const std::vector<std::string>& se
     // Every output can be written before anything is simulated; the report is opened now and filled at the end.
     if (!s.vcd_path.empty()) cnc::sim::check_output_path(s.vcd_path, vcd.empty() ? s.file + ": trace.vcd" : "--vcd");
     std::optional<cnc::sim::OutputFile> report_file;
-    if (!s.report_path.empty()) report_file.emplace(s.report_path, report.empty() ? s.file + ": trace.report" : "--report");
+    if (!s.report_path.empty()) {
+        report_file.emplace(s.report_path, report.empty() ? s.file + ": trace.report" : "--report");
+    }
     s.progress = progress == "off"   ? cnc::sim::ProgressStyle::Off
                  : progress == "log" ? cnc::sim::ProgressStyle::Log
                  : isatty(STDERR_FILENO) ? cnc::sim::ProgressStyle::Terminal

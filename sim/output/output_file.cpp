@@ -31,7 +31,9 @@ void check_output_path(const std::string& path, const std::string& label) {
     const fs::file_status st = fs::status(path, ec);
     if (fs::is_directory(st)) throw BadInput(where, "is a folder, not a file");
     if (fs::exists(st)) {
-        if (access(path.c_str(), W_OK) != 0) throw BadInput(where, std::string("cannot be written: ") + std::strerror(errno));
+        if (access(path.c_str(), W_OK) != 0) {
+            throw BadInput(where, std::string("cannot be written: ") + std::strerror(errno));
+        }
         if (!fs::is_regular_file(st)) return;  // a device or pipe: written in place
     }
     const fs::path parent = fs::path(path).parent_path();

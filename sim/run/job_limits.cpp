@@ -17,11 +17,11 @@ std::string place(const host::Program& p, const host::ProgrammedMove& m) {
     return p.filename + ":" + std::to_string(m.line);
 }
 
-// The largest |position| of an axis in mm, with the sentence that says where it comes from.
+// The largest |position| of an axis in mm.
 double max_position_mm(const host::AxisMachine& axis) { return host::kMaxPositionSteps / axis.steps_per_mm(); }
 
 std::string position_rule(const char* axis, const host::AxisMachine& m) {
-    return format("; the farthest an axis may go is 2^30 steps, so that every move fits the int32 step counts: "
+    return format("; the farthest an axis may go is 2^30 - 1 steps, so that every move fits the int32 step counts: "
                   "%.10g mm on ",
                   max_position_mm(m)) +
            axis + format(" at %.10g steps/mm", m.steps_per_mm());

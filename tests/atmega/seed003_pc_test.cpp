@@ -241,7 +241,7 @@ TEST(Seed003Plan, TransfersConcatenateToTheCommandBytes) {
     EXPECT_EQ(segs.at(1).steps_x, 800);
 }
 
-// Positions beyond 2^30 microsteps (machine.hpp) are refused with their line, for a caller that did not run the
+// Positions beyond 2^30 - 1 microsteps (machine.hpp) are refused with their line, for a caller that did not run the
 // job checks first (run/job_limits.hpp): before, 2.9e13 mm was split into 7e10 commands (std::bad_alloc), and the
 // step differences and the chord count of an arc of 10^24 mm overflowed int64 (UBSan).
 TEST(Seed003Plan, PositionsBeyondTheCountersAreRefusedNotOverflowed) {
@@ -254,9 +254,9 @@ TEST(Seed003Plan, PositionsBeyondTheCountersAreRefusedNotOverflowed) {
         return std::string("no BadInput");
     };
     const std::string rapid = message("G91 G0 X28888888888885\n");
-    EXPECT_TRUE(contains(rapid, "t.nc:1: position (2.888888889e+13, 0) mm is beyond the 1073741824 steps")) << rapid;
+    EXPECT_TRUE(contains(rapid, "t.nc:1: position (2.888888889e+13, 0) mm is beyond the 1073741823 steps")) << rapid;
     const std::string arc = message("G1 X10 F600\nG2 X10 Y0 I1000000000000000000000000 J0\n");  // a full circle
     EXPECT_TRUE(contains(arc, "t.nc:2: arc of 6.28319e+24 mm needs")) << arc;
-    // At the bound (2^30 steps = 6710886.4 mm at 160 steps/mm) a move is planned: split into 16-bit pieces.
-    EXPECT_NO_THROW((void)plan("G0 X6710886.4\n", s3::PcOptions{}));
+    // At the bound (2^30 - 1 steps = 6710886.39375 mm at 160 steps/mm) a move is planned, in 16-bit pieces.
+    EXPECT_NO_THROW((void)plan("G0 X6710886.39375\n", s3::PcOptions{}));
 }

@@ -51,7 +51,7 @@ if(CNC_WITH_AVR)
 endif()
 foreach(arch IN LISTS archs)
   cnc_bad_input_test(huge_rapid.${arch} "${BAD}/huge_rapid.toml|--set|scenario.architecture=${arch}"
-                     "huge_rapid[.]nc:3: X 2[.]888888889e[+]13 mm is out of range" "2.30 steps")
+                     "huge_rapid[.]nc:3: X 2[.]888888889e[+]13 mm is out of range" "2.30 - 1 steps")
   cnc_bad_input_test(huge_arc.${arch} "${BAD}/huge_arc.toml|--set|scenario.architecture=${arch}"
                      "huge_arc[.]nc:4: .*out of range")
   cnc_bad_input_test(endless_job.${arch} "${BAD}/endless_job.toml|--set|scenario.architecture=${arch}"

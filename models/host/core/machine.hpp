@@ -43,10 +43,10 @@ struct AxisMachine {
     [[nodiscard]] double travel_per_motor_rev_mm() const { return steps_per_rev() / steps_per_mm(); }
 };
 
-// The farthest an axis may be from 0, in microsteps: 2^30, so that any move between two positions is under 2^31
-// steps, within the int32 step counts of the fpga-uart packet (seed 000 §3.4.6) and the spi-fpga FPGA's 32-bit
-// step counters. At 160 steps/mm that is 6,710,886 mm; no machine has such a travel.
-inline constexpr double kMaxPositionSteps = 1073741824.0;
+// The farthest an axis may be from 0, in microsteps: 2^30 - 1, so that any move between two positions is at most
+// 2^31 - 2 steps, within the int32 step counts of the fpga-uart packet (seed 000 §3.4.6) and the spi-fpga FPGA's
+// 32-bit step counters. At 160 steps/mm that is 6,710,886 mm; no machine has such a travel.
+inline constexpr double kMaxPositionSteps = 1073741823.0;
 
 struct MachineModel {
     AxisMachine x;

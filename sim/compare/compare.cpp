@@ -140,11 +140,12 @@ std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::s
         const pid_t pid = wait_any_child(exit_code);
         const auto it = running.find(pid);
         if (it == running.end()) continue;
-        CompareColumn& c = columns[it->second];
+        const std::size_t k = it->second;
+        CompareColumn& c = columns[k];
         running.erase(it);
         ++done;
         c.exit_code = exit_code;
-        c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started[&c - columns.data()]).count();
+        c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started[k]).count();
         std::ifstream in(dir / (c.architecture + ".json"));
         if (in) c.report = nlohmann::json::parse(in, nullptr, false);
         if (c.report.is_discarded()) c.report = nullptr;

@@ -55,7 +55,8 @@ void write_compare_outputs(const std::vector<CompareColumn>& columns, const std:
     for (std::string line; std::getline(in, line); ++job.job_lines) {
         if (job.job_lines < kJobLinesShown) job.job_text += line + "\n";
     }
-    if (job.job_lines > kJobLinesShown) job.job_text += format("... (%zu more lines)\n", job.job_lines - kJobLinesShown);
+    if (job.job_lines > kJobLinesShown)
+        job.job_text += format("... (%zu more lines)\n", job.job_lines - kJobLinesShown);
     write_file(dir / "index.html", html_report(columns, plots, job));
 }
 

@@ -10,11 +10,20 @@ std::string escape(const std::string& s) {
     std::string out;
     for (const char c : s) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -54,8 +63,8 @@ void warnings_html(std::ostream& os, const std::vector<CompareColumn>& columns) 
             os << "<p><b>The run wrote no report</b> (exit code " << c.exit_code
                << "): its error is in the command's output.</p>\n";
         }
-        const nlohmann::json warnings = c.report.is_null() ? nlohmann::json::array()
-                                                           : c.report.value("warnings", nlohmann::json::array());
+        const nlohmann::json warnings =
+            c.report.is_null() ? nlohmann::json::array() : c.report.value("warnings", nlohmann::json::array());
         if (warnings.empty()) {
             os << "<p>No warnings.</p>\n";
             continue;
@@ -79,8 +88,8 @@ std::string html_report(const std::vector<CompareColumn>& columns, const std::ve
        << "<p>Scenario <code>" << escape(job.scenario_file) << "</code>";
     for (const std::string& o : job.overrides) os << ", <code>--set " << escape(o) << "</code>";
     os << "; every architecture runs it with only <code>scenario.architecture</code> changed.</p>\n<pre>"
-       << escape(job.scenario_text) << "</pre>\n<p>Job <code>" << escape(job.job_file) << "</code>, "
-       << job.job_lines << " lines:</p>\n<pre>" << escape(job.job_text) << "</pre>\n<h2>Comparison</h2>\n";
+       << escape(job.scenario_text) << "</pre>\n<p>Job <code>" << escape(job.job_file) << "</code>, " << job.job_lines
+       << " lines:</p>\n<pre>" << escape(job.job_text) << "</pre>\n<h2>Comparison</h2>\n";
     table_html(os, columns);
     os << "<p>The same table: <a href=\"table.md\">table.md</a>, <a href=\"table.csv\">table.csv</a>, "
           "<a href=\"table.json\">table.json</a>. Each architecture's report and trace:";
@@ -88,7 +97,9 @@ std::string html_report(const std::vector<CompareColumn>& columns, const std::ve
         if (!c.report.is_null()) {
             os << " <a href=\"" << escape(c.architecture) << ".json\">" << escape(c.architecture) << ".json</a>";
         }
-        if (c.exit_code != 2) os << " <a href=\"" << escape(c.architecture) << ".vcd\">" << escape(c.architecture) << ".vcd</a>";
+        if (c.exit_code != 2) {  // bad input: refused before a trace was opened
+            os << " <a href=\"" << escape(c.architecture) << ".vcd\">" << escape(c.architecture) << ".vcd</a>";
+        }
     }
     os << "</p>\n<h2>Plots</h2>\n";
     for (const Plot& p : plots) {

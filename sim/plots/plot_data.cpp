@@ -108,7 +108,8 @@ std::optional<ToolRow> write_tool(const RunInput& in, const metrics::EdgeIndex& 
 // Keeps, per time bin, the value of largest magnitude.
 class WorstPerBin {
 public:
-    WorstPerBin(TimePs t0_ps, TimePs t1_ps) : m_t0_ps(t0_ps), m_bin_ps(std::max<TimePs>(1, (t1_ps - t0_ps) / kTimeBins)) {}
+    WorstPerBin(TimePs t0_ps, TimePs t1_ps)
+        : m_t0_ps(t0_ps), m_bin_ps(std::max<TimePs>(1, (t1_ps - t0_ps) / kTimeBins)) {}
     void add(TimePs t_ps, double v) {
         const TimePs bin = (t_ps - m_t0_ps) / m_bin_ps;
         auto [it, fresh] = m_bins.try_emplace(bin, t_ps, v);
@@ -177,7 +178,8 @@ void write_velocity(const RunInput& in, const metrics::RunMetrics& m, const fs::
     if (in.t_job_end_ps <= in.t_job_start_ps) return;
     const TimePs dt = std::max<TimePs>(kPsPerMs, (in.t_job_end_ps - in.t_job_start_ps) / kTimeBins);
     std::vector<double> travel(in.tool.size(), 0.0);
-    for (std::size_t i = 1; i < in.tool.size(); ++i) travel[i] = travel[i - 1] + geom::distance(in.tool[i - 1].pos, in.tool[i].pos);
+    for (std::size_t i = 1; i < in.tool.size(); ++i)
+        travel[i] = travel[i - 1] + geom::distance(in.tool[i - 1].pos, in.tool[i].pos);
     // The tool stands still between samples: its travel at t is that of the last sample at or before t.
     const auto travel_at = [&](TimePs t_ps) {
         const auto it = std::upper_bound(in.tool.begin(), in.tool.end(), t_ps,
@@ -187,7 +189,8 @@ void write_velocity(const RunInput& in, const metrics::RunMetrics& m, const fs::
     CommandedSpeed commanded(in, m);
     const TimePs half = kVelocityWindowPs / 2;
     for (TimePs t = in.t_job_start_ps; t <= in.t_job_end_ps; t += dt) {
-        const double carriage = in.tool.empty() ? 0.0 : (travel_at(t + half) - travel_at(t - half)) / ps_to_s(kVelocityWindowPs);
+        const double carriage =
+            in.tool.empty() ? 0.0 : (travel_at(t + half) - travel_at(t - half)) / ps_to_s(kVelocityWindowPs);
         out << num(ps_to_s(t)) << ' ' << num(commanded.at(t)) << ' ' << num(carriage) << '\n';
     }
 }
@@ -197,8 +200,9 @@ std::vector<std::string> write_dead_time(const metrics::RunMetrics& m, const Arc
     std::map<std::size_t, const GapCauses*> by_move;
     for (const GapCauses& g : run.gap_causes) by_move[g.after_move] = &g;
     std::vector<std::string> causes;
-    const bool split = !m.timing.gaps.empty() && std::all_of(m.timing.gaps.begin(), m.timing.gaps.end(),
-                                                             [&](const metrics::DeadGap& g) { return by_move.count(g.after_move); });
+    const bool split =
+        !m.timing.gaps.empty() && std::all_of(m.timing.gaps.begin(), m.timing.gaps.end(),
+                                              [&](const metrics::DeadGap& g) { return by_move.count(g.after_move); });
     if (split) {
         for (const auto& part : by_move.begin()->second->parts_ms) causes.push_back(part.first);
     }
@@ -207,7 +211,8 @@ std::vector<std::string> write_dead_time(const metrics::RunMetrics& m, const Arc
     std::ofstream out = open(dir / "dead_time.dat", header);
     for (std::size_t k = 0; k < m.timing.gaps.size(); ++k) {
         const metrics::DeadGap& g = m.timing.gaps[k];
-        out << k + 1 << ' ' << g.after_move + 1 << ' ' << num(static_cast<double>(g.dead_ps) / static_cast<double>(kPsPerMs));
+        out << k + 1 << ' ' << g.after_move + 1 << ' '
+            << num(static_cast<double>(g.dead_ps) / static_cast<double>(kPsPerMs));
         if (split) {
             for (const auto& part : by_move.at(g.after_move)->parts_ms) out << ' ' << num(part.second);
         }

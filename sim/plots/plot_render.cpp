@@ -147,10 +147,10 @@ std::optional<Script> path_plot(const std::vector<PlotRun>& runs, const fs::path
          << format("set object 1 rect from %g,%g to %g,%g front fillstyle empty border lc rgb 'black' lw 1.5\n",
                    x - half, y - half, x + half, y + half)
          << plot_line(clauses) << "unset object 1\nset origin 0.63,0.12\nset size 0.37,0.8\nunset key\n"
-         << "set title " << quoted(format("zoom: largest contour error, %.1f um", err_mm * 1000.0))
-         << "\n"
+         << "set title " << quoted(format("zoom: largest contour error, %.1f um", err_mm * 1000.0)) << "\n"
          << format("set xrange [%g:%g]\nset yrange [%g:%g]\n", x - half, x + half, y - half, y + half)
-         << "set xtics rotate by -30\n" << plot_line(clauses) << "unset multiplot\n";
+         << "set xtics rotate by -30\n"
+         << plot_line(clauses) << "unset multiplot\n";
     s.body = body.str();
     return s;
 }
@@ -181,8 +181,8 @@ std::optional<Script> error_plot(const std::vector<PlotRun>& runs, const fs::pat
         hi_max = std::max(hi_max, y.hi);
     }
     const bool log = hi_max > kLogSpan * lo_max;
-    const std::string y = log ? format("($%g > %g ? $%g : %g)", ycol, kLogFloorUm, ycol, kLogFloorUm)
-                              : std::to_string(ycol);
+    const std::string y =
+        log ? format("($%g > %g ? $%g : %g)", ycol, kLogFloorUm, ycol, kLogFloorUm) : std::to_string(ycol);
     const std::string extra = log ? "set logscale y\nset format y '%g'\n" : "";
     return simple_plot(runs, out_dir, std::move(plot), "tool.dat", ycol,
                        std::to_string(xcol) + ":" + y + " with lines lw 1.2", extra);
@@ -265,7 +265,8 @@ std::vector<Script> series_plots(const std::vector<PlotRun>& runs, const fs::pat
     std::vector<Script> out;
     for (const auto& [quantity, list] : clauses) {
         std::string name = "series";
-        for (const char c : quantity.substr(0, quantity.find(" ["))) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+        for (const char c : quantity.substr(0, quantity.find(" [")))
+            name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
         Script s({name, quantity.substr(0, quantity.find(" [")) + " over time", "time [s]", quantity});
         s.body = header(s.plot) + yrange_for(ranges[quantity]) + plot_line(list);
         out.push_back(std::move(s));
@@ -276,12 +277,11 @@ std::vector<Script> series_plots(const std::vector<PlotRun>& runs, const fs::pat
 std::vector<Script> scripts(const std::vector<PlotRun>& runs, const fs::path& out_dir) {
     std::vector<std::optional<Script>> all;
     all.push_back(path_plot(runs, out_dir));
-    all.push_back(error_plot(runs, out_dir,
-                             {"contour_error", "Contour error along the path", "tool travel [mm]", "contour error [um]"},
-                             4, 5));
-    all.push_back(error_plot(runs, out_dir,
-                             {"following_error", "Following error over time", "time [s]", "following error [um]"}, 1,
-                             6));
+    all.push_back(
+        error_plot(runs, out_dir,
+                   {"contour_error", "Contour error along the path", "tool travel [mm]", "contour error [um]"}, 4, 5));
+    all.push_back(error_plot(
+        runs, out_dir, {"following_error", "Following error over time", "time [s]", "following error [um]"}, 1, 6));
     std::vector<std::string> axes;
     for (const PlotRun& r : runs) {
         for (const std::string& a : r.meta.value("axes", std::vector<std::string>{})) {
@@ -340,8 +340,8 @@ std::vector<Plot> render_plots(const std::vector<PlotRun>& runs, const fs::path&
         std::ofstream out(out_dir / script);
         out << s.body;
         all << "set terminal svg size " << kWidthPx << ',' << s.height_px
-            << " dynamic noenhanced font 'sans,13' background rgb 'white'\nset output "
-            << quoted(s.plot.name + ".svg") << "\nload " << quoted(script) << "\nunset output\n"
+            << " dynamic noenhanced font 'sans,13' background rgb 'white'\nset output " << quoted(s.plot.name + ".svg")
+            << "\nload " << quoted(script) << "\nunset output\n"
             << "set terminal pngcairo size " << kWidthPx << ',' << s.height_px
             << " noenhanced font 'sans,10' background rgb 'white'\nset output " << quoted(s.plot.name + ".png")
             << "\nload " << quoted(script) << "\nunset output\n";

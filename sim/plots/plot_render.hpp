@@ -3,10 +3,9 @@
 // terminal by one gnuplot process, so the figures can be re-rendered or edited by hand.
 #pragma once
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace cnc::sim {
 
@@ -25,7 +24,8 @@ struct Plot {
 std::string arch_colour(const std::string& architecture);
 
 // Reads data_dir/meta.json of each architecture under `out_dir`.
-std::vector<PlotRun> load_plot_runs(const std::filesystem::path& out_dir, const std::vector<std::string>& architectures);
+std::vector<PlotRun> load_plot_runs(const std::filesystem::path& out_dir,
+                                    const std::vector<std::string>& architectures);
 
 // Writes the scripts, runs gnuplot in out_dir and returns the plots it drew (a plot with no data in any run is left
 // out; the load angle and lost steps plots exist only when a run reports them). Also writes plots.json, the list.

@@ -124,7 +124,8 @@ std::vector<GapCauses> gap_causes(const DeadTimeBreakdown& d) {
         GapCauses c;
         c.after_move = static_cast<std::size_t>(g.after_move - 1);
         for (const Part& p : kParts) {
-            if (p.field != &GapBreakdown::total_ps) c.parts_ms.emplace_back(p.name, static_cast<double>(g.*p.field) / static_cast<double>(kPsPerMs));
+            if (p.field == &GapBreakdown::total_ps) continue;
+            c.parts_ms.emplace_back(p.name, static_cast<double>(g.*p.field) / static_cast<double>(kPsPerMs));
         }
         out.push_back(std::move(c));
     }

@@ -4,7 +4,10 @@ every SVG is well-formed XML (xmllint) with its title and both axis labels as te
 blank (Pillow reads its pixels); index.html parses as HTML (xmllint --html) without a message and refers only to
 files in its own folder.
 
-usage: compare_outputs.py CNCSIM SOURCE_DIR WORK_DIR (compare|run)
+With `failing`, one architecture's run fails (fpga-uart's ACK timeout on a 12 s move): it is reported in its
+column and on the page, and the other's table column, plots and page are all there.
+
+usage: compare_outputs.py CNCSIM SOURCE_DIR WORK_DIR (compare|run|failing)
 """
 import json
 import os
@@ -93,12 +96,23 @@ def check_html(out):
     return p.refs
 
 
-def check_plots(out, expect_archs):
+def drawn_colours(svg_path):
+    with open(svg_path) as f:
+        return {tuple(int(v) for v in m) for m in re.findall(r"rgb\(\s*(\d+),\s*(\d+),\s*(\d+)\)", f.read())}
+
+
+COLOURS = {"fpga-uart": (0x00, 0x72, 0xb2), "atmega": (0xd5, 0x5e, 0x00), "spi-fpga": (0x00, 0x9e, 0x73)}
+
+
+ALL_PLOTS = ("path", "contour_error", "following_error", "step_period_x", "step_period_y", "tie_x", "tie_y",
+             "velocity", "dead_time")
+
+
+def check_plots(out, expect_archs, required_plots=ALL_PLOTS):
     with open(os.path.join(out, "plots.json")) as f:
         plots = json.load(f)
     names = {p["name"] for p in plots}
-    for required in ("path", "contour_error", "following_error", "step_period_x", "step_period_y", "tie_x", "tie_y",
-                     "velocity", "dead_time"):
+    for required in required_plots:
         if required not in names:
             fail(f"no {required} plot in {out} (has {sorted(names)})")
     for p in plots:
@@ -108,12 +122,10 @@ def check_plots(out, expect_archs):
     if svgs != names:
         fail(f"SVGs {sorted(svgs)} != plots.json {sorted(names)}")
     # Same colour per architecture everywhere: each architecture's colour is in the path plot.
-    colours = {"fpga-uart": "#0072b2", "atmega": "#d55e00", "spi-fpga": "#009e73"}
-    with open(os.path.join(out, "path.svg")) as f:
-        drawn = {tuple(int(v) for v in m) for m in re.findall(r"rgb\(\s*(\d+),\s*(\d+),\s*(\d+)\)", f.read())}
+    drawn = drawn_colours(os.path.join(out, "path.svg"))
     for a in expect_archs:
-        if tuple(int(colours[a][i:i + 2], 16) for i in (1, 3, 5)) not in drawn:
-            fail(f"path.svg does not draw {a} in its colour {colours[a]}")
+        if COLOURS[a] not in drawn:
+            fail(f"path.svg does not draw {a} in its colour {COLOURS[a]}")
     return plots
 
 
@@ -124,15 +136,35 @@ def main():
     os.makedirs(work)
     scenario = os.path.join(source, "scenarios", "compare", "circle_r10.toml")
     archs = ["fpga-uart", "atmega", "spi-fpga"]
+    expect_exit = 0
     if mode == "compare":
         cmd = [cncsim, "compare", scenario, "--arch", ",".join(archs), "--out", out]
+    elif mode == "failing":
+        archs = ["spi-fpga"]
+        expect_exit = 1
+        cmd = [cncsim, "compare", os.path.join(source, "scenarios", "fpga-uart", "long_move_timeout.toml"),
+               "--arch", "fpga-uart,spi-fpga", "--out", out]
     else:
         archs = ["spi-fpga"]
         cmd = [cncsim, "run", scenario, "--set", "scenario.architecture=spi-fpga", "--plots", out, "--progress", "off"]
     r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        fail(f"{' '.join(cmd)} exited {r.returncode}: {r.stderr}")
-    plots = check_plots(out, archs)
+    if r.returncode != expect_exit:
+        fail(f"{' '.join(cmd)} exited {r.returncode}, not {expect_exit}: {r.stderr}")
+    # The failing job is one X move: no Y steps and no gap between moves, so no plot of them.
+    plots = check_plots(out, archs, ALL_PLOTS if mode != "failing" else
+                        ("path", "contour_error", "following_error", "step_period_x", "tie_x", "velocity"))
+    if mode == "failing":
+        with open(os.path.join(out, "table.md")) as f:
+            status = next(line for line in f if line.startswith("| status"))
+        if re.sub(r"\s+", " ", status).strip() != "| status | failed | ok |":
+            fail(f"table.md status row: {status}")
+        if COLOURS["fpga-uart"] in drawn_colours(os.path.join(out, "path.svg")):
+            fail("path.svg draws the failed fpga-uart run: a failed run's figures are no result")
+        with open(os.path.join(out, "index.html")) as f:
+            page = f.read()
+        if not re.search(r"<b>The run failed:</b> ACK timeout at seg 1 .*host\.ack_timeout_s", page):
+            fail("index.html does not say why fpga-uart failed")
+        check_html(out)
     if mode == "compare":
         for f in ["index.html", "table.md", "table.csv", "table.json"] + [a + ".json" for a in archs] + \
                  [a + ".vcd" for a in archs]:

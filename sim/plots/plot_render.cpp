@@ -126,14 +126,18 @@ std::optional<Script> path_plot(const std::vector<PlotRun>& runs, const fs::path
     // The zoom: around the sample of largest contour error over every run, wide enough to show the deviation and
     // the path on both sides of it, at most an eighth of the job's extent.
     const nlohmann::json* worst = nullptr;
+    std::string worst_arch;
     double extent_mm = 1.0;
     for (const PlotRun& r : runs) {
         extent_mm = std::max(extent_mm, r.meta.value("program_extent_mm", 0.0));
         const nlohmann::json& w = r.meta["worst_contour"];
-        if (!w.is_null() && (worst == nullptr || w["contour_um"] > (*worst)["contour_um"])) worst = &w;
+        if (!w.is_null() && (worst == nullptr || w["contour_um"] > (*worst)["contour_um"])) {
+            worst = &w;
+            worst_arch = r.architecture;
+        }
     }
     std::ostringstream body;
-    body << header(s.plot) << "set size ratio -1\nset key outside bottom center horizontal\n";
+    body << header(s.plot) << "set size ratio -1\nset key outside top center horizontal\n";
     if (worst == nullptr) {
         body << plot_line(clauses);
         s.body = body.str();
@@ -147,7 +151,7 @@ std::optional<Script> path_plot(const std::vector<PlotRun>& runs, const fs::path
          << format("set object 1 rect from %g,%g to %g,%g front fillstyle empty border lc rgb 'black' lw 1.5\n",
                    x - half, y - half, x + half, y + half)
          << plot_line(clauses) << "unset object 1\nset origin 0.63,0.12\nset size 0.37,0.8\nunset key\n"
-         << "set title " << quoted(format("zoom: largest contour error, %.1f um", err_mm * 1000.0)) << "\n"
+         << "set title " << quoted("zoom: " + worst_arch + format("'s largest contour error in a cut, %.1f um", err_mm * 1000.0)) << "\n"
          << format("set xrange [%g:%g]\nset yrange [%g:%g]\n", x - half, x + half, y - half, y + half)
          << "set xtics rotate by -30\n"
          << plot_line(clauses) << "unset multiplot\n";

@@ -151,7 +151,7 @@ std::optional<Script> path_plot(const std::vector<PlotRun>& runs, const fs::path
          << format("set object 1 rect from %g,%g to %g,%g front fillstyle empty border lc rgb 'black' lw 1.5\n",
                    x - half, y - half, x + half, y + half)
          << plot_line(clauses) << "unset object 1\nset origin 0.63,0.12\nset size 0.37,0.8\nunset key\n"
-         << "set title " << quoted("zoom: " + worst_arch + format("'s largest contour error in a cut, %.1f um", err_mm * 1000.0)) << "\n"
+         << "set title " << quoted("largest cut error: " + worst_arch + format(", %.1f um", err_mm * 1000.0)) << "\n"
          << format("set xrange [%g:%g]\nset yrange [%g:%g]\n", x - half, x + half, y - half, y + half)
          << "set xtics rotate by -30\n"
          << plot_line(clauses) << "unset multiplot\n";

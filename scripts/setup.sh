@@ -8,6 +8,7 @@ PACKAGES=(
   libsystemc-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev
   python3 sigrok-cli
+  gnuplot-nox libxml2-utils python3-pil
   gcc-avr binutils-avr avr-libc simavr libsimavr-dev libelf-dev
 )
 SUDO=""

@@ -13,10 +13,12 @@
 
 #include "common/bad_input.hpp"
 #include "compare/compare.hpp"
+#include "compare/compare_outputs.hpp"
 #include "metrics/analyze_input.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/vcd_reader.hpp"
 #include "output/output_file.hpp"
+#include "plots/run_plots.hpp"
 #include "run/run.hpp"
 #include "scenario/scenario.hpp"
 
@@ -31,13 +33,16 @@ void write_json(const std::string& path, const nlohmann::json& j) {
 }
 
 int cmd_run(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& vcd,
-            const std::string& report, bool detail, const std::string& progress) {
+            const std::string& report, bool detail, const std::string& progress, const std::string& plots,
+            const std::string& plot_data) {
     cnc::sim::Scenario s = cnc::sim::load_scenario(scenario_path, sets);
     if (detail) s.detail = true;
     if (!vcd.empty()) s.vcd_path = vcd;
     if (!report.empty()) s.report_path = report;
     // Every output can be written before anything is simulated; the report is opened now and filled at the end.
     if (!s.vcd_path.empty()) cnc::sim::check_output_path(s.vcd_path, vcd.empty() ? s.file + ": trace.vcd" : "--vcd");
+    if (!plots.empty()) cnc::sim::check_output_dir(plots, "--plots");
+    if (!plot_data.empty()) cnc::sim::check_output_dir(plot_data, "--plot-data");
     std::optional<cnc::sim::OutputFile> report_file;
     if (!s.report_path.empty()) {
         report_file.emplace(s.report_path, report.empty() ? s.file + ": trace.report" : "--report");
@@ -52,6 +57,7 @@ int cmd_run(const std::string& scenario_path, const std::vector<std::string>& se
         report_file->stream() << cnc::metrics::report_text(out.report);
         report_file->close();
     }
+    if (out.ok) cnc::sim::write_run_plots(out, s, plots, plot_data);  // a failed run's figures are no result
     if (!out.ok) {
         std::cerr << "cncsim: run failed: " << out.failure << '\n';
         return kExitRunFailed;
@@ -99,7 +105,7 @@ int cmd_analyze(const std::string& vcd_path, const std::vector<cnc::metrics::Axi
 }
 
 int cmd_compare(const std::string& scenario_path, const std::string& archs, const std::vector<std::string>& sets,
-                const std::string& format_name, const std::string& report) {
+                const std::string& format_name, const std::string& report, const std::string& out_dir) {
     std::vector<std::string> list;
     std::stringstream ss(archs);
     for (std::string a; std::getline(ss, a, ',');) {
@@ -108,16 +114,22 @@ int cmd_compare(const std::string& scenario_path, const std::string& archs, cons
         }
         list.push_back(a);
     }
-    cnc::sim::load_scenario(scenario_path, sets);  // bad input is reported once, here, not once per child
+    // Bad input is reported once, here, not once per child.
+    const cnc::sim::Scenario scenario = cnc::sim::load_scenario(scenario_path, sets);
     if (!report.empty()) cnc::sim::check_output_path(report, "--report");
+    if (!out_dir.empty()) {
+        cnc::sim::check_output_dir(out_dir, "--out");
+        std::filesystem::create_directories(out_dir);
+    }
     const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-    const auto columns = cnc::sim::run_compare(self, scenario_path, list, sets);
+    const auto columns = cnc::sim::run_compare(self, scenario_path, list, sets, out_dir);
     const cnc::sim::TableFormat format = format_name == "markdown" ? cnc::sim::TableFormat::Markdown
                                          : format_name == "csv"    ? cnc::sim::TableFormat::Csv
                                          : format_name == "json"   ? cnc::sim::TableFormat::Json
                                                                    : cnc::sim::TableFormat::Text;
     std::cout << cnc::sim::compare_table(columns, format);
     if (!report.empty()) write_json(report, cnc::sim::compare_json(columns));
+    if (!out_dir.empty()) cnc::sim::write_compare_outputs(columns, scenario_path, sets, scenario.job_path, out_dir);
     int worst = kExitOk;
     for (const auto& c : columns) worst = std::max(worst, c.exit_code == kExitBadInput ? kExitBadInput : c.exit_code);
     return worst;
@@ -137,7 +149,7 @@ int sc_main(int argc, char* argv[]) {
     app.set_version_flag("--version", std::string("cncsim ") + CNCSIM_VERSION + "\nSystemC " + sc_core::sc_release(),
                          "print the cncsim and SystemC versions and exit");
 
-    std::string scenario, vcd, report, vcd_in;
+    std::string scenario, vcd, report, vcd_in, plots, plot_data, out_dir;
     std::vector<std::string> sets, steps, dirs, enables;
     double steps_per_mm = 0.0;
     bool detail = false;
@@ -147,6 +159,8 @@ int sc_main(int argc, char* argv[]) {
     run->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
     run->add_option("--vcd", vcd, "write a VCD trace to this file");
     run->add_option("--report", report, "write the JSON report to this file");
+    run->add_option("--plots", plots, "write the run's plots (SVG, PNG) and their gnuplot data and scripts here");
+    run->add_option("--plot-data", plot_data, "write only the plots' data files here (what compare asks of a run)");
     run->add_flag("--detail", detail, "the report also holds the per-period, per-packet and per-run logs");
     std::string progress = "auto";
     run->add_option("--progress", progress,
@@ -181,6 +195,9 @@ int sc_main(int argc, char* argv[]) {
         ->check(CLI::IsMember({"text", "markdown", "csv", "json"}))
         ->capture_default_str();
     compare->add_option("--report", report, "write the comparison as JSON to this file");
+    compare->add_option("--out", out_dir,
+                        "write here: index.html, the table (md, csv, json), the plots, each architecture's report "
+                        "and VCD");
 
     app.add_subcommand("keys", "print every scenario key (type, default, range, meaning) as Markdown");
 
@@ -191,8 +208,8 @@ int sc_main(int argc, char* argv[]) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
     try {
-        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, progress);
-        if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report);
+        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, progress, plots, plot_data);
+        if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report, out_dir);
         if (analyze->parsed()) return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, report);
         return cmd_keys();
     } catch (const cnc::BadInput& e) {

@@ -1,24 +1,20 @@
 #include "compare/compare.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
 #include "common/text_format.hpp"
-
-extern char** environ;
+#include "compare/spawn.hpp"
 
 namespace cnc::sim {
 
@@ -61,70 +57,133 @@ std::string cell(const CompareColumn& c, const Row& row) {
     return format(row.format, c.report.at(ptr).get<double>());
 }
 
+// The smallest magnitude as printed, when at least two cells have a value and they are not all the same.
+std::vector<bool> best_cells(const std::vector<std::string>& cells) {
+    std::vector<double> v(cells.size(), -1.0);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        if (cells[i] != "-") v[i] = std::fabs(std::stod(cells[i]));
+    }
+    std::vector<bool> best(cells.size(), false);
+    const auto valued = [](double x) { return x >= 0.0; };
+    if (std::count_if(v.begin(), v.end(), valued) < 2) return best;
+    double lo = 1e300;
+    double hi = -1.0;
+    for (const double x : v) {
+        if (!valued(x)) continue;
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+    }
+    if (lo == hi) return best;
+    for (std::size_t i = 0; i < v.size(); ++i) best[i] = valued(v[i]) && v[i] == lo;
+    return best;
+}
+
+std::string join(const std::vector<std::string>& parts, const char* sep) {
+    std::string out;
+    for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? sep : "") + parts[i];
+    return out;
+}
+
+std::vector<std::string> child_args(const std::string& self_exe, const std::string& scenario, const std::string& arch,
+                                    const std::vector<std::string>& sets, const fs::path& report,
+                                    const std::string& out_dir) {
+    // Progress as whole lines (a line per 10 % of the child's estimate), named by architecture.
+    std::vector<std::string> args = {self_exe, "run", scenario, "--progress", "log", "--set",
+                                     "scenario.architecture=" + arch};
+    for (const std::string& s : sets) {
+        args.push_back("--set");
+        args.push_back(s);
+    }
+    args.push_back("--report");
+    args.push_back(report.string());
+    if (!out_dir.empty()) {
+        args.push_back("--vcd");
+        args.push_back((fs::path(out_dir) / (arch + ".vcd")).string());
+        args.push_back("--plot-data");
+        args.push_back((fs::path(out_dir) / "data" / arch).string());
+    }
+    return args;
+}
+
+}  // namespace
+
 std::string status(const CompareColumn& c) {
     if (c.exit_code == 0) return "ok";
     return c.exit_code == 2 ? "bad input" : "failed";
 }
 
-// Runs argv and waits; the child's stdout goes to /dev/null (its summary), stderr stays the user's.
-int spawn_and_wait(const std::vector<std::string>& args) {
-    std::vector<char*> argv;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    pid_t pid = 0;
-    const int err = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (err != 0) throw std::runtime_error(std::string("cannot start ") + argv[0] + ": " + std::strerror(err));
-    int wstatus = 0;
-    while (waitpid(pid, &wstatus, 0) < 0) {
-        if (errno != EINTR) throw std::runtime_error("waitpid failed");
-    }
-    return WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 1;
-}
-
-}  // namespace
-
 std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::string& scenario,
                                        const std::vector<std::string>& architectures,
-                                       const std::vector<std::string>& sets) {
-    std::string dir_template = (fs::temp_directory_path() / "cncsim-compare-XXXXXX").string();
-    if (mkdtemp(dir_template.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder");
-    const fs::path dir(dir_template);
-    std::vector<CompareColumn> columns;
-    for (const std::string& arch : architectures) {
-        const fs::path report = dir / (arch + ".json");
-        // One child at a time, its progress as whole lines (a line per 10 % of its estimate) named by architecture,
-        // between the parent's start and end lines.
-        std::vector<std::string> args = {self_exe, "run", scenario, "--progress", "log", "--set",
-                                         "scenario.architecture=" + arch};
-        for (const std::string& s : sets) {
-            args.push_back("--set");
-            args.push_back(s);
-        }
-        args.push_back("--report");
-        args.push_back(report.string());
-        CompareColumn c;
-        c.architecture = arch;
-        std::cerr << "cncsim compare: " << arch << " running" << std::endl;
-        const auto start = std::chrono::steady_clock::now();
-        c.exit_code = spawn_and_wait(args);
-        const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-        std::cerr << "cncsim compare: " << arch << " " << status(c) << format(" after %.1f s", wall.count())
-                  << std::endl;
-        std::ifstream in(report);
-        if (in) c.report = nlohmann::json::parse(in);
-        columns.push_back(std::move(c));
+                                       const std::vector<std::string>& sets, const std::string& out_dir) {
+    fs::path dir(out_dir);
+    if (out_dir.empty()) {
+        std::string dir_template = (fs::temp_directory_path() / "cncsim-compare-XXXXXX").string();
+        if (mkdtemp(dir_template.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder");
+        dir = dir_template;
     }
-    fs::remove_all(dir);
+    std::vector<CompareColumn> columns(architectures.size());
+    std::map<pid_t, std::size_t> running;
+    std::vector<std::chrono::steady_clock::time_point> started(architectures.size());
+    const std::size_t cores = std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
+    std::size_t next = 0;
+    std::size_t done = 0;
+    while (done < architectures.size()) {
+        while (next < architectures.size() && running.size() < cores) {
+            const std::string& arch = architectures[next];
+            columns[next].architecture = arch;
+            std::cerr << "cncsim compare: " << arch << " running" << std::endl;
+            started[next] = std::chrono::steady_clock::now();
+            running[spawn_child(child_args(self_exe, scenario, arch, sets, dir / (arch + ".json"), out_dir))] = next;
+            ++next;
+        }
+        int exit_code = 0;
+        const pid_t pid = wait_any_child(exit_code);
+        const auto it = running.find(pid);
+        if (it == running.end()) continue;
+        const std::size_t k = it->second;
+        CompareColumn& c = columns[k];
+        running.erase(it);
+        ++done;
+        c.exit_code = exit_code;
+        c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started[k]).count();
+        std::ifstream in(dir / (c.architecture + ".json"));
+        if (in) c.report = nlohmann::json::parse(in, nullptr, false);
+        if (c.report.is_discarded()) c.report = nullptr;
+        std::string ratio;
+        if (c.exit_code == 0 && c.report.contains(nlohmann::json::json_pointer("/metrics/job/job_time_s"))) {
+            const double sim_s = c.report["metrics"]["job"]["job_time_s"].get<double>();
+            ratio = format(" (%.3f s simulated, %.1fx real time)", sim_s, sim_s / c.wall_s);
+        }
+        std::cerr << "cncsim compare: " << c.architecture << " " << status(c) << format(" after %.1f s", c.wall_s)
+                  << ratio << " [" << done << '/' << architectures.size() << " done]" << std::endl;
+    }
+    if (out_dir.empty()) fs::remove_all(dir);
     return columns;
+}
+
+std::vector<TableRow> table_rows(const std::vector<CompareColumn>& columns) {
+    std::vector<TableRow> rows;
+    TableRow st{"status", {}, std::vector<bool>(columns.size(), false)};
+    for (const CompareColumn& c : columns) st.cells.push_back(status(c));
+    rows.push_back(st);
+    for (const Row& row : kRows) {
+        TableRow r{row.label, {}, {}};
+        for (const CompareColumn& c : columns) r.cells.push_back(cell(c, row));
+        r.best = best_cells(r.cells);
+        rows.push_back(r);
+    }
+    return rows;
 }
 
 nlohmann::json compare_json(const std::vector<CompareColumn>& columns) {
     nlohmann::json out = nlohmann::json::array();
-    for (const CompareColumn& c : columns) {
+    const std::vector<TableRow> rows = table_rows(columns);
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        const CompareColumn& c = columns[k];
+        nlohmann::json best = nlohmann::json::array();
+        for (std::size_t r = 1; r < rows.size(); ++r) {  // rows[0] is the status
+            if (rows[r].best[k]) best.push_back(kRows[r - 1].pointer + 1);
+        }
         nlohmann::json metrics = nlohmann::json::object();
         for (const Row& row : kRows) {
             const nlohmann::json::json_pointer ptr(row.pointer);
@@ -135,7 +194,8 @@ nlohmann::json compare_json(const std::vector<CompareColumn>& columns) {
                                  {"status", status(c)},
                                  {"exit_code", c.exit_code},
                                  {"warnings", c.report.is_null() ? nlohmann::json::array()
-                                                                 : c.report.value("warnings", nlohmann::json::array())}};
+                                                                 : c.report.value("warnings", nlohmann::json::array())},
+                                 {"best", best}};
         if (c.exit_code == 0) {
             column["metrics"] = metrics;
         } else {
@@ -150,21 +210,31 @@ nlohmann::json compare_json(const std::vector<CompareColumn>& columns) {
 
 std::string compare_table(const std::vector<CompareColumn>& columns, TableFormat format_kind) {
     if (format_kind == TableFormat::Json) return compare_json(columns).dump(2) + "\n";
-    std::vector<std::vector<std::string>> rows;
     std::vector<std::string> head = {"metric"};
-    std::vector<std::string> st = {"status"};
-    for (const CompareColumn& c : columns) {
-        head.push_back(c.architecture);
-        st.push_back(status(c));
+    for (const CompareColumn& c : columns) head.push_back(c.architecture);
+    std::vector<std::vector<std::string>> rows = {head};
+    const bool md = format_kind == TableFormat::Markdown;
+    std::ostringstream os;
+    if (format_kind == TableFormat::Csv) {
+        head.push_back("best");
+        rows = {head};
     }
-    rows.push_back(head);
-    rows.push_back(st);
-    for (const Row& row : kRows) {
-        std::vector<std::string> r = {row.label};
-        for (const CompareColumn& c : columns) r.push_back(cell(c, row));
+    for (const TableRow& tr : table_rows(columns)) {
+        std::vector<std::string> r = {tr.label};
+        std::vector<std::string> best_names;
+        for (std::size_t i = 0; i < tr.cells.size(); ++i) {
+            if (tr.best[i]) best_names.push_back(columns[i].architecture);
+            if (format_kind == TableFormat::Csv) {
+                r.push_back(tr.cells[i]);
+            } else if (md) {
+                r.push_back(tr.best[i] ? "**" + tr.cells[i] + "**" : tr.cells[i]);
+            } else {
+                r.push_back(tr.cells[i] + (tr.best[i] ? "*" : " "));
+            }
+        }
+        if (format_kind == TableFormat::Csv) r.push_back(join(best_names, " "));
         rows.push_back(r);
     }
-    std::ostringstream os;
     if (format_kind == TableFormat::Csv) {
         for (const auto& r : rows) {
             for (std::size_t i = 0; i < r.size(); ++i) os << (i ? "," : "") << '"' << r[i] << '"';
@@ -176,7 +246,6 @@ std::string compare_table(const std::vector<CompareColumn>& columns, TableFormat
     for (const auto& r : rows) {
         for (std::size_t i = 0; i < r.size(); ++i) width[i] = std::max(width[i], r[i].size());
     }
-    const bool md = format_kind == TableFormat::Markdown;
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const auto& r = rows[k];
         for (std::size_t i = 0; i < r.size(); ++i) {
@@ -191,6 +260,7 @@ std::string compare_table(const std::vector<CompareColumn>& columns, TableFormat
             os << (md ? "|\n" : "\n");
         }
     }
+    if (!md) os << "* best of the row (smallest magnitude)\n";
     return os.str();
 }
 

@@ -12,16 +12,30 @@ struct CompareColumn {
     std::string architecture;
     int exit_code = 0;        // of the child `cncsim run`: 0 ok, 1 run failed, 2 bad input
     nlohmann::json report;    // its JSON report (null when it wrote none)
+    double wall_s = 0.0;      // the child's wall time
 };
 
 enum class TableFormat { Text, Markdown, Csv, Json };
 
-// Runs `self_exe run SCENARIO --set scenario.architecture=A [--set ...] --report TMP` for each architecture.
+// Runs `self_exe run SCENARIO --set scenario.architecture=A [--set ...] --report R` for each architecture, as many
+// at once as the machine has cores. With `out_dir`, R is out_dir/A.json and each child also writes out_dir/A.vcd
+// and its plot data in out_dir/data/A/; without, R is a temporary file.
 std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::string& scenario,
                                        const std::vector<std::string>& architectures,
-                                       const std::vector<std::string>& sets);
+                                       const std::vector<std::string>& sets, const std::string& out_dir = "");
 
-// The comparison table: one row per metric, one column per architecture.
+// One metric row: its label (unit in brackets), a cell per column ("-" when the run has no such figure) and which
+// cells hold the row's best value (the smallest magnitude among two or more that differ).
+struct TableRow {
+    std::string label;
+    std::vector<std::string> cells;
+    std::vector<bool> best;
+};
+std::vector<TableRow> table_rows(const std::vector<CompareColumn>& columns);
+std::string status(const CompareColumn& c);
+
+// The comparison table: one row per metric, one column per architecture; best values marked (text: a trailing
+// `*`, Markdown: bold, CSV: a last column naming the best architectures, JSON: each column's `best` metrics).
 std::string compare_table(const std::vector<CompareColumn>& columns, TableFormat format);
 nlohmann::json compare_json(const std::vector<CompareColumn>& columns);
 

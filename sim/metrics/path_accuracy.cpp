@@ -38,6 +38,23 @@ bool same_program_segment(const MoveSpec& a, const MoveSpec& b) {
            (!p.is_arc || (same_point(p.center, q.center) && p.sweep_rad == q.sweep_rad));
 }
 
+SampleError sample_error(const RunInput& in, const EdgeIndex& idx, const MoveTimeline& timeline, std::size_t i) {
+    const std::vector<MoveSpec>& moves = in.moves;
+    const ToolSample& s = in.tool[i];
+    SampleError e;
+    e.move = timeline.active_at(s.t_ps).value_or(0);
+    e.contour_um = contour_distance_mm(moves, e.move, s.pos) * kUmPerMm;
+    if (in.commanded) {
+        const geom::Vec2 cmd = commanded_at(*in.commanded, s.t_ps).pos_mm;
+        e.following_um = geom::distance(s.pos, cmd) * kUmPerMm;
+        if (i > 0) e.following_um = std::max(e.following_um, geom::distance(in.tool[i - 1].pos, cmd) * kUmPerMm);
+    } else {
+        const TimePs t0 = idx.move_first_edge_ps[e.move].value_or(moves[e.move].t_begin_ps);
+        e.following_um = geom::distance(s.pos, expected_position(moves[e.move], t0, s.t_ps)) * kUmPerMm;
+    }
+    return e;
+}
+
 PathResult compute_path_accuracy(const RunInput& in, const EdgeIndex& idx) {
     PathResult out;
     const std::vector<MoveSpec>& moves = in.moves;
@@ -53,22 +70,11 @@ PathResult compute_path_accuracy(const RunInput& in, const EdgeIndex& idx) {
     MaxRms contour_all;
     MaxRms following_all;
     for (std::size_t i = 0; i < in.tool.size(); ++i) {
-        const ToolSample& s = in.tool[i];
-        const std::size_t m = timeline.active_at(s.t_ps).value_or(0);
-        const double c_um = contour_distance_mm(moves, m, s.pos) * kUmPerMm;
-        double f_um = 0.0;
-        if (in.commanded) {
-            const geom::Vec2 cmd = commanded_at(*in.commanded, s.t_ps).pos_mm;
-            f_um = geom::distance(s.pos, cmd) * kUmPerMm;
-            if (i > 0) f_um = std::max(f_um, geom::distance(in.tool[i - 1].pos, cmd) * kUmPerMm);
-        } else {
-            const TimePs t0 = idx.move_first_edge_ps[m].value_or(moves[m].t_begin_ps);
-            f_um = geom::distance(s.pos, expected_position(moves[m], t0, s.t_ps)) * kUmPerMm;
-        }
-        contour[m].add(c_um);
-        following[m].add(f_um);
-        contour_all.add(c_um);
-        following_all.add(f_um);
+        const SampleError e = sample_error(in, idx, timeline, i);
+        contour[e.move].add(e.contour_um);
+        following[e.move].add(e.following_um);
+        contour_all.add(e.contour_um);
+        following_all.add(e.following_um);
     }
     out.samples = in.tool.size();
     out.contour_max_um = contour_all.max_abs();

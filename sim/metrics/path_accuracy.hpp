@@ -38,6 +38,16 @@ struct PathResult {
 // says which moves are rapid. Needs tool samples and moves; otherwise all figures are empty.
 [[nodiscard]] PathResult compute_path_accuracy(const RunInput& in, const EdgeIndex& idx);
 
+// The errors of tool sample i as compute_path_accuracy measures them (the plots draw them along the job); needs
+// moves, and i < in.tool.size().
+struct SampleError {
+    std::size_t move = 0;  // the active move the sample is attributed to
+    double contour_um = 0.0;
+    double following_um = 0.0;
+};
+[[nodiscard]] SampleError sample_error(const RunInput& in, const EdgeIndex& idx, const MoveTimeline& timeline,
+                                       std::size_t i);
+
 // True if moves i and i+1 are chords (or pieces) of the same programmed segment.
 [[nodiscard]] bool same_program_segment(const MoveSpec& a, const MoveSpec& b);
 

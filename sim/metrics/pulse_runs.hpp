@@ -28,6 +28,8 @@ struct TieStats {
 // Needs n >= 3 edges (two points fit exactly). Centred sums in long double keep the residuals of an
 // exact grid below 1e-3 ns even for runs of many seconds.
 [[nodiscard]] std::optional<TieStats> tie_stats(const TimePs* t, std::size_t n);
+// Each edge's TIE against the same fitted grid, ns (what the plots draw over time); empty below 3 edges.
+[[nodiscard]] std::vector<double> tie_residuals_ns(const TimePs* t, std::size_t n);
 
 // Analyze mode: a new run starts when a period differs from the mean period of the run so far by more
 // than `tolerance` (relative), when it is more than 1.5x the previous period (a pause), or when DIR

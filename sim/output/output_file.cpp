@@ -45,6 +45,20 @@ void check_output_path(const std::string& path, const std::string& label) {
     }
 }
 
+void check_output_dir(const std::string& path, const std::string& label) {
+    const std::string where = label + " " + path;
+    if (path.empty()) throw BadInput(label, "the output folder name is empty");
+    std::error_code ec;
+    fs::path folder = fs::absolute(path, ec);
+    while (!fs::exists(folder, ec) && folder.has_parent_path() && folder != folder.parent_path()) {
+        folder = folder.parent_path();
+    }
+    if (!fs::is_directory(folder, ec)) throw BadInput(where, folder.string() + " is not a folder");
+    if (access(folder.c_str(), W_OK | X_OK) != 0) {
+        throw BadInput(where, folder.string() + " is not writable: " + std::strerror(errno));
+    }
+}
+
 OutputFile::OutputFile(std::string path, std::string label)
     : m_path(std::move(path)), m_label(std::move(label)) {
     check_output_path(m_path, m_label);

@@ -25,6 +25,10 @@ public:
 // ("--report", "s.toml: trace.vcd").
 void check_output_path(const std::string& path, const std::string& label);
 
+// The same for an output folder (--plots, --out): it exists and is a writable folder, or it can be created
+// (its nearest existing ancestor is a writable folder).
+void check_output_dir(const std::string& path, const std::string& label);
+
 class OutputFile {
 public:
     // Opens the file (after check_output_path); BadInput naming `label` if it cannot.

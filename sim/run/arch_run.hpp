@@ -3,6 +3,7 @@
 #pragma once
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -12,12 +13,27 @@
 
 namespace cnc::sim {
 
+// Where one dead-time gap goes, for an architecture that knows (fpga-uart: the stop-and-wait hand-overs).
+struct GapCauses {
+    std::size_t after_move = 0;                             // index of the move the gap follows
+    std::vector<std::pair<std::string, double>> parts_ms;  // cause and its share, ms; the parts add up to the gap
+};
+
+// A quantity a model reports over time beyond the edges and tool samples, e.g. the dynamic mechanics' load angle.
+struct TimeSeries {
+    std::string quantity;  // what the plot is titled with, unit in brackets: "load angle [deg]"
+    std::string axis;      // x, y
+    std::vector<std::pair<TimePs, double>> points;
+};
+
 struct ArchRun {
     metrics::RunInput input;
     std::map<std::string, EdgeLog> lines;               // other recorded pins (busy, UART lines), by name
     nlohmann::json details = nlohmann::json::object();  // architecture section of the JSON report
     std::string details_text;                           // the same, for the summary
     std::vector<Warning> warnings;  // grouped by kind in the reports (run.cpp)
+    std::vector<GapCauses> gap_causes;  // empty: the architecture reports no split (the plots draw whole gaps)
+    std::vector<TimeSeries> series;     // plotted per quantity when present (sim/plots/plot_data.hpp)
     bool ok = true;
     std::string failure;
     double estimated_s = 0.0;  // the job's estimate and the simulated-time limit the run had (run/simulate.hpp)

@@ -118,6 +118,20 @@ nlohmann::json to_json(const DeadTimeBreakdown& d, bool detail) {
     return j;
 }
 
+std::vector<GapCauses> gap_causes(const DeadTimeBreakdown& d) {
+    std::vector<GapCauses> out;
+    for (const GapBreakdown& g : d.gaps) {
+        GapCauses c;
+        c.after_move = static_cast<std::size_t>(g.after_move - 1);
+        for (const Part& p : kParts) {
+            if (p.field == &GapBreakdown::total_ps) continue;
+            c.parts_ms.emplace_back(p.name, static_cast<double>(g.*p.field) / static_cast<double>(kPsPerMs));
+        }
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
 std::string summary_text(const DeadTimeBreakdown& d) {
     std::string out = "  dead time between moves (" + std::to_string(d.gaps.size()) + " gaps), ms:   mean      max\n";
     for (const Part& p : kParts) {

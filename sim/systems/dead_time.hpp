@@ -9,6 +9,7 @@
 #include "fpga/core/fpga_records.hpp"
 #include "host/sender.hpp"
 #include "metrics/run_input.hpp"
+#include "run/arch_run.hpp"
 #include "uart/cp2102.hpp"
 
 namespace cnc::sim {
@@ -37,5 +38,7 @@ DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::v
 // `detail`: with every gap's breakdown (per_gap); without, the mean and the max of each part.
 nlohmann::json to_json(const DeadTimeBreakdown& d, bool detail);
 std::string summary_text(const DeadTimeBreakdown& d);
+// The same split per gap for the dead-time plot.
+std::vector<GapCauses> gap_causes(const DeadTimeBreakdown& d);
 
 }  // namespace cnc::sim

@@ -262,6 +262,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     in.t_job_end_ps = sender.finished() ? sender.t_end_ps() : static_cast<TimePs>(sc_core::sc_time_stamp().value());
 
     const DeadTimeBreakdown dead = dead_time_breakdown(in, records, sender.packets(), cp2102);
+    run.gap_causes = gap_causes(dead);
 
     fpga_warnings(fpga, records, segments, s, run.warnings);
     const fpga::FpgaStats st = fpga.stats();

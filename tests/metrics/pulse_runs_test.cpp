@@ -49,6 +49,21 @@ TEST(MetricsPulseRuns, OneClockPerturbationGivesTheLeastSquaresResidual) {
     EXPECT_NEAR(period->std_ns, d_ns * std::sqrt(2.0 / 1000.0), 1e-9);
 }
 
+TEST(MetricsPulseRuns, TieOfEachEdgeIsItsResidualAgainstTheFittedGrid) {
+    // The same centred impulse: it leaves the fitted slope alone (the fit is symmetric about the centre) and lifts
+    // the intercept by d/n, so edge 500 is d (1 - 1/n) late and every other edge d/n early.
+    std::vector<TimePs> t = grid(0, kPeriod3200HzPs, 1001);
+    t[500] += kFpgaClockPs;
+    const double d_ns = 20.0;
+    const double n = 1001.0;
+    const std::vector<double> tie = tie_residuals_ns(t.data(), t.size());
+    ASSERT_EQ(tie.size(), t.size());
+    for (std::size_t k = 0; k < tie.size(); ++k) {
+        EXPECT_NEAR(tie[k], k == 500 ? d_ns * (1.0 - 1.0 / n) : -d_ns / n, 1e-6) << k;
+    }
+    EXPECT_TRUE(tie_residuals_ns(t.data(), 2).empty());
+}
+
 TEST(MetricsPulseRuns, TieNeedsThreeEdgesAndPeriodsTwo) {
     const std::vector<TimePs> t = grid(0, 1'000'000, 2);
     EXPECT_FALSE(tie_stats(t.data(), 2).has_value());

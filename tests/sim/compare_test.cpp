@@ -65,6 +65,33 @@ TEST(CompareSquare, TheMachineVelocityLimitHoldsEveryArchitecture) {
     }
 }
 
+// The best of a row is the smallest magnitude as printed (a rate error of -0.01 % beats +0.02 %), marked only when
+// two or more runs have the figure and they differ.
+TEST(CompareTable, BestValueOfEachRowIsMarked) {
+    const auto col = [](const char* arch, double job_s, double rate_pct, double tie_ns) {
+        const nlohmann::json pulse = {{"rate_error_worst_pct", rate_pct}, {"tie_max_ns", tie_ns}};
+        return cnc::sim::CompareColumn{arch, 0, {{"metrics", {{"job", {{"job_time_s", job_s}}}, {"pulse", pulse}}}}};
+    };
+    const std::vector<cnc::sim::CompareColumn> cols = {
+        col("fpga-uart", 8.0, 0.02, 0.0), col("atmega", 7.0, -0.01, 0.0), col("spi-fpga", 7.0, 24.0, 0.0)};
+    const std::string md = cnc::sim::compare_table(cols, cnc::sim::TableFormat::Markdown);
+    EXPECT_NE(md.find("| job time [s]               |    8.0000 |  **7.0000** | **7.0000** |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| rate error worst [%]       |   +0.0200 | **-0.0100** |   +24.0000 |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| TIE max [ns]               |     0.000 |       0.000 |      0.000 |"),
+              std::string::npos)
+        << md;
+    const std::string csv = cnc::sim::compare_table(cols, cnc::sim::TableFormat::Csv);
+    EXPECT_NE(csv.find("\"job time [s]\",\"8.0000\",\"7.0000\",\"7.0000\",\"atmega spi-fpga\""),
+              std::string::npos)
+        << csv;
+    const nlohmann::json j = cnc::sim::compare_json(cols);
+    EXPECT_EQ(j.at(1).at("best"), nlohmann::json({"metrics/job/job_time_s", "metrics/pulse/rate_error_worst_pct"}));
+}
+
 TEST(CompareTable, MarkdownHasAColumnPerArchitectureAndDashesForMissingValues) {
     cnc::sim::CompareColumn a{"fpga-uart", 0, {{"metrics", {{"job", {{"job_time_s", 1.5}}}}}}};
     cnc::sim::CompareColumn b{"atmega", 2, nullptr};

@@ -1,0 +1,15 @@
+(the six-segment shape of seed 000 sec. 7.3 with every cut at F4800 = 80 mm/s, the target speed of seed 000's machine)
+G21 G90
+G0 X26.60625 Y99.30625
+M3
+G1 X26.60625 Y149.30625 F4800
+M5
+G0 X41.0875 Y117.84375
+M3
+G1 X66.9125 Y141.99375 F4800
+M5
+G0 X43.11875 Y99.3125
+M3
+G1 X80.61875 Y99.3125 F4800
+M5
+M30

@@ -1,0 +1,63 @@
+#include "compare/compare_outputs.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "common/text_format.hpp"
+#include "compare/html_report.hpp"
+#include "plots/plot_render.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The page shows a long job's head only.
+constexpr std::size_t kJobLinesShown = 80;
+
+void write_file(const fs::path& file, const std::string& text) {
+    std::ofstream out(file);
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+    out << text;
+}
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+}  // namespace
+
+void write_compare_outputs(const std::vector<CompareColumn>& columns, const std::string& scenario_path,
+                           const std::vector<std::string>& sets, const std::string& job_path,
+                           const std::string& out_dir) {
+    const fs::path dir(out_dir);
+    write_file(dir / "table.md", compare_table(columns, TableFormat::Markdown));
+    write_file(dir / "table.csv", compare_table(columns, TableFormat::Csv));
+    write_file(dir / "table.json", compare_table(columns, TableFormat::Json));
+
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::string> archs;
+    for (const CompareColumn& c : columns) archs.push_back(c.architecture);
+    const std::vector<Plot> plots = render_plots(load_plot_runs(dir, archs), dir);
+    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+    std::cerr << "cncsim compare: " << plots.size() << format(" plots rendered in %.2f s", wall.count()) << std::endl;
+
+    HtmlJob job{scenario_path, read_file(scenario_path), sets, job_path, "", 0};
+    std::ifstream in(job_path);
+    for (std::string line; std::getline(in, line); ++job.job_lines) {
+        if (job.job_lines < kJobLinesShown) job.job_text += line + "\n";
+    }
+    if (job.job_lines > kJobLinesShown)
+        job.job_text += format("... (%zu more lines)\n", job.job_lines - kJobLinesShown);
+    write_file(dir / "index.html", html_report(columns, plots, job));
+}
+
+}  // namespace cnc::sim

@@ -1,0 +1,16 @@
+// `cncsim compare --out DIR`: after the runs (their reports, VCDs and plot data already in DIR), the table as
+// Markdown, CSV and JSON, the plots of every architecture together, and index.html.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "compare/compare.hpp"
+
+namespace cnc::sim {
+
+// job_path: the scenario's job, resolved. Prints the plotting time on stderr.
+void write_compare_outputs(const std::vector<CompareColumn>& columns, const std::string& scenario_path,
+                           const std::vector<std::string>& sets, const std::string& job_path,
+                           const std::string& out_dir);
+
+}  // namespace cnc::sim

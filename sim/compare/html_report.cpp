@@ -1,0 +1,116 @@
+#include "compare/html_report.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+namespace cnc::sim {
+
+namespace {
+
+std::string escape(const std::string& s) {
+    std::string out;
+    for (const char c : s) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+constexpr const char* kStyle =
+    "body{font-family:sans-serif;max-width:1000px;margin:1em auto;padding:0 1em;color:#222}"
+    "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px}td.n{text-align:right}"
+    "td.best{font-weight:bold;background:#eaf6ea}pre{background:#f6f6f6;padding:6px;overflow:auto;max-height:20em}"
+    "img{max-width:100%;border:1px solid #ddd}.arch{border-bottom:4px solid}";
+
+void table_html(std::ostream& os, const std::vector<CompareColumn>& columns) {
+    os << "<table>\n<tr><th>metric</th>";
+    for (const CompareColumn& c : columns) {
+        os << "<th class=\"arch\" style=\"border-bottom-color:" << arch_colour(c.architecture) << "\">"
+           << escape(c.architecture) << "</th>";
+    }
+    os << "</tr>\n";
+    for (const TableRow& r : table_rows(columns)) {
+        os << "<tr><td>" << escape(r.label) << "</td>";
+        for (std::size_t i = 0; i < r.cells.size(); ++i) {
+            os << "<td class=\"n" << (r.best[i] ? " best" : "") << "\">" << escape(r.cells[i]) << "</td>";
+        }
+        os << "</tr>\n";
+    }
+    os << "</table>\n<p>Bold: the best value of the row (the smallest magnitude). A <code>-</code> is a figure the run "
+          "does not have; a failed run shows none.</p>\n";
+}
+
+void warnings_html(std::ostream& os, const std::vector<CompareColumn>& columns) {
+    for (const CompareColumn& c : columns) {
+        os << "<h3 class=\"arch\" style=\"border-bottom-color:" << arch_colour(c.architecture) << "\">"
+           << escape(c.architecture) << ": " << escape(status(c)) << "</h3>\n";
+        if (!c.report.is_null() && c.report.contains("failure")) {
+            os << "<p><b>The run failed:</b> " << escape(c.report["failure"].get<std::string>()) << "</p>\n";
+        } else if (c.exit_code != 0) {
+            os << "<p><b>The run wrote no report</b> (exit code " << c.exit_code
+               << "): its error is in the command's output.</p>\n";
+        }
+        const nlohmann::json warnings =
+            c.report.is_null() ? nlohmann::json::array() : c.report.value("warnings", nlohmann::json::array());
+        if (warnings.empty()) {
+            os << "<p>No warnings.</p>\n";
+            continue;
+        }
+        os << "<ul>\n";
+        for (const nlohmann::json& w : warnings) {
+            os << "<li>" << escape(w.value("message", std::string())) << " (" << w.value("count", 0) << " x, "
+               << escape(w.value("kind", std::string())) << ")</li>\n";
+        }
+        os << "</ul>\n";
+    }
+}
+
+}  // namespace
+
+std::string html_report(const std::vector<CompareColumn>& columns, const std::vector<Plot>& plots, const HtmlJob& job) {
+    std::ostringstream os;
+    os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>cncsim compare: "
+       << escape(job.scenario_file) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n"
+       << "<h1>cncsim compare: " << escape(std::filesystem::path(job.scenario_file).filename().string()) << "</h1>\n<h2>Machine and job</h2>\n"
+       << "<p>Scenario <code>" << escape(job.scenario_file) << "</code>";
+    for (const std::string& o : job.overrides) os << ", <code>--set " << escape(o) << "</code>";
+    os << "; every architecture runs it with only <code>scenario.architecture</code> changed.</p>\n<pre>"
+       << escape(job.scenario_text) << "</pre>\n<p>Job <code>" << escape(job.job_file) << "</code>, " << job.job_lines
+       << " lines:</p>\n<pre>" << escape(job.job_text) << "</pre>\n<h2>Comparison</h2>\n";
+    table_html(os, columns);
+    os << "<p>The same table: <a href=\"table.md\">table.md</a>, <a href=\"table.csv\">table.csv</a>, "
+          "<a href=\"table.json\">table.json</a>. Each architecture's report and trace:";
+    for (const CompareColumn& c : columns) {
+        if (!c.report.is_null()) {
+            os << " <a href=\"" << escape(c.architecture) << ".json\">" << escape(c.architecture) << ".json</a>";
+        }
+        if (c.exit_code != 2) {  // bad input: refused before a trace was opened
+            os << " <a href=\"" << escape(c.architecture) << ".vcd\">" << escape(c.architecture) << ".vcd</a>";
+        }
+    }
+    os << "</p>\n<h2>Plots</h2>\n";
+    for (const Plot& p : plots) {
+        os << "<h3>" << escape(p.title) << "</h3>\n<p><a href=\"" << p.name << ".svg\"><img src=\"" << p.name
+           << ".svg\" alt=\"" << escape(p.title) << "\"></a><br><a href=\"" << p.name << ".png\">PNG</a></p>\n";
+    }
+    os << "<h2>Warnings</h2>\n";
+    warnings_html(os, columns);
+    os << "</body>\n</html>\n";
+    return os.str();
+}
+
+}  // namespace cnc::sim

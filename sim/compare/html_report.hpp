@@ -1,0 +1,23 @@
+// index.html of `cncsim compare --out DIR`: one page that works offline (no script, no external font or style;
+// images are the plot files next to it): the machine and job, the table, every plot, each architecture's warnings.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "compare/compare.hpp"
+#include "plots/plot_render.hpp"
+
+namespace cnc::sim {
+
+struct HtmlJob {
+    std::string scenario_file;
+    std::string scenario_text;           // the scenario file as written
+    std::vector<std::string> overrides;  // --set key=value
+    std::string job_file;
+    std::string job_text;  // the G-code (its head on long jobs)
+    std::size_t job_lines = 0;
+};
+
+std::string html_report(const std::vector<CompareColumn>& columns, const std::vector<Plot>& plots, const HtmlJob& job);
+
+}  // namespace cnc::sim

@@ -1,0 +1,27 @@
+// The data behind the plots of one run, written as gnuplot data files (whitespace columns, `#` header lines) and
+// a meta.json that says which files exist. Everything is drawn from what a run already measured (the edge logs,
+// tool samples, moves and metrics) and from what its architecture adds (ArchRun::gap_causes, ArchRun::series), so
+// a model that reports more gets more plots without touching the renderer.
+#pragma once
+#include <filesystem>
+#include <string>
+
+#include "metrics/metrics.hpp"
+#include "run/arch_run.hpp"
+
+namespace cnc::sim {
+
+// Files in `dir` (created):
+//   program.dat, rapids.dat   x_mm y_mm: the programmed feed moves and rapids, one block per connected piece
+//   tool.dat                  t_s x_mm y_mm travel_mm contour_um following_um, per tool sample (thinned to the
+//                             worst contour error per window on long jobs)
+//   periods_<axis>.dat        period_us count: STEP periods within the axis's pulse runs
+//   tie_<axis>.dat            t_s tie_ns: TIE of each edge against its run's fitted grid (worst per time bin)
+//   velocity.dat              t_s commanded_mm_per_s carriage_mm_per_s: path speeds on a uniform grid
+//   dead_time.dat             gap after_move total_ms [one column per cause, ms]
+//   series_<k>.dat            t_s value: ArchRun::series[k]
+//   meta.json                 architecture, axes, causes, series, the worst contour sample, the job's extent
+void write_plot_data(const std::string& architecture, const ArchRun& run, const metrics::RunMetrics& m,
+                     const std::filesystem::path& dir);
+
+}  // namespace cnc::sim

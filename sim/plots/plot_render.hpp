@@ -1,0 +1,35 @@
+// Renders the plots of one or more runs with gnuplot, as SVG and PNG, from the data files write_plot_data wrote.
+// Each plot is a gnuplot script of its own (data/<name>.gp, paths relative to the output folder), loaded once per
+// terminal by one gnuplot process, so the figures can be re-rendered or edited by hand.
+#pragma once
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace cnc::sim {
+
+struct PlotRun {
+    std::string architecture;
+    std::string data_dir;  // relative to the output folder: where write_plot_data wrote (data/<architecture>)
+    nlohmann::json meta;   // its meta.json
+};
+
+struct Plot {
+    std::string name;  // <name>.svg and <name>.png in the output folder
+    std::string title, xlabel, ylabel;
+};
+
+// The same colour for an architecture in every plot and on the HTML page (Okabe-Ito, colour-blind safe).
+std::string arch_colour(const std::string& architecture);
+
+// Reads data_dir/meta.json of each architecture under `out_dir`.
+std::vector<PlotRun> load_plot_runs(const std::filesystem::path& out_dir,
+                                    const std::vector<std::string>& architectures);
+
+// Writes the scripts, runs gnuplot in out_dir and returns the plots it drew (a plot with no data in any run is left
+// out; the load angle and lost steps plots exist only when a run reports them). Also writes plots.json, the list.
+// Throws std::runtime_error when gnuplot is missing or fails.
+std::vector<Plot> render_plots(const std::vector<PlotRun>& runs, const std::filesystem::path& out_dir);
+
+}  // namespace cnc::sim

@@ -1,0 +1,108 @@
+// The plot data files of a synthetic run whose every figure is known: two 100-step X moves at F1200 on the seed 000
+// machine (160 steps/mm: a STEP every 312.5 us), 4 ms apart, the carriage on the line at every step.
+#include "plots/plot_data.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../metrics/metrics_test_util.hpp"
+#include "metrics/metrics.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace cnc;
+using namespace cnc::metrics::test;
+
+constexpr TimePs kPeriodPs = 312'500'000;  // 60 / (1200 mm/min x 160 steps/mm)
+constexpr TimePs kGapPs = 4 * kPsPerMs;
+constexpr int kSteps = 100;
+
+std::vector<std::vector<double>> rows(const fs::path& file) {
+    std::ifstream in(file);
+    std::vector<std::vector<double>> out;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream f(line);
+        std::vector<double> r;
+        for (double v; f >> v;) r.push_back(v);
+        out.push_back(r);
+    }
+    return out;
+}
+
+struct PlotData : ::testing::Test {
+    fs::path dir =
+        fs::temp_directory_path() /
+        ("cncsim-plot_data_test-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" +
+         std::to_string(getpid()));
+    void TearDown() override { fs::remove_all(dir); }
+
+    void write() {
+        sim::ArchRun run;
+        const std::vector<TimePs> first = grid(kPsPerMs, kPeriodPs, kSteps);
+        const TimePs second_start = first.back() + kGapPs;
+        std::vector<TimePs> rises = first;
+        for (const TimePs t : grid(second_start, kPeriodPs, kSteps)) rises.push_back(t);
+        metrics::RunInput& in = run.input;
+        in.axes = {axis(rises, "x")};
+        in.axes[0].steps_per_mm = 160.0;
+        const double move_mm = kSteps * kMicrostepMm;
+        in.moves = {
+            line_move(0, {0, 0}, {move_mm, 0}, 1200.0, 0, first.back() + kPsPerUs),
+            line_move(1, {move_mm, 0}, {2 * move_mm, 0}, 1200.0, second_start - kPsPerUs, rises.back() + kPeriodPs)};
+        for (std::size_t k = 0; k < rises.size(); ++k) {
+            in.tool.push_back({rises[k], {static_cast<double>(k + 1) * kMicrostepMm, 0.0}});
+        }
+        in.t_job_end_ps = rises.back() + kPeriodPs;
+        run.gap_causes = {{0, {{"wire", 1.5}, {"host", 2.5}}}};
+        run.series = {{"load angle [deg]", "x", {{kPsPerMs, 1.0}, {2 * kPsPerMs, 2.0}}}};
+        sim::write_plot_data("fpga-uart", run, metrics::compute_metrics(in), dir);
+    }
+};
+
+}  // namespace
+
+TEST_F(PlotData, PeriodHistogramCountsThePeriodsWithinEachRun) {
+    write();
+    const auto periods = rows(dir / "periods_x.dat");
+    ASSERT_EQ(periods.size(), 1U);  // the 4 ms gap is between runs, not a period
+    EXPECT_DOUBLE_EQ(periods[0][0], 312.5);
+    EXPECT_EQ(periods[0][1], 2.0 * (kSteps - 1));
+}
+
+TEST_F(PlotData, DeadTimeRowsCarryTheGapAndItsCauses) {
+    write();
+    const auto gaps = rows(dir / "dead_time.dat");
+    ASSERT_EQ(gaps.size(), 1U);
+    EXPECT_EQ(gaps[0], (std::vector<double>{1, 1, 4.0, 1.5, 2.5}));  // gap 1 after move 1: 4 ms = 1.5 + 2.5
+    std::ifstream meta_in(dir / "meta.json");
+    const nlohmann::json meta = nlohmann::json::parse(meta_in);
+    EXPECT_EQ(meta.at("causes"), nlohmann::json({"wire", "host"}));
+    EXPECT_EQ(meta.at("series").at(0).at("quantity"), "load angle [deg]");
+    EXPECT_EQ(rows(dir / meta.at("series").at(0).at("file").get<std::string>()).size(), 2U);
+}
+
+TEST_F(PlotData, ToolRowsFollowTheLineAtTheCommandedSpeed) {
+    write();
+    const auto tool = rows(dir / "tool.dat");
+    ASSERT_EQ(tool.size(), 2U * kSteps);
+    EXPECT_NEAR(tool.back()[3], 2 * kSteps * kMicrostepMm - kMicrostepMm, 1e-9);  // travel from the first sample
+    for (const auto& r : tool) EXPECT_NEAR(r[4], 0.0, 1e-9);                      // contour: on the line
+    // Inside move 0 (t = 10 ms) both the command and the carriage run at F1200 = 20 mm/s; the carriage's 5 ms window
+    // holds 16 steps of 1/160 mm: 0.1 mm / 5 ms.
+    for (const auto& r : rows(dir / "velocity.dat")) {
+        if (std::abs(r[0] - 0.010) > 1e-9) continue;
+        EXPECT_DOUBLE_EQ(r[1], 20.0);
+        EXPECT_NEAR(r[2], 20.0, 1e-9);
+    }
+    std::ifstream meta_in(dir / "meta.json");
+    EXPECT_NEAR(nlohmann::json::parse(meta_in).at("program_extent_mm").get<double>(), 2 * kSteps * kMicrostepMm, 1e-12);
+}

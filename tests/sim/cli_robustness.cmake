@@ -67,6 +67,11 @@ cnc_cli_test(output.vcd_is_a_folder golden 2 CMD run ${SQUARE} --vcd ${ROBUST}/f
 cnc_cli_test(output.report_in_missing_folder golden 2
   CMD run ${SQUARE} --report ${ROBUST}/no_such_folder/r.json --progress off
   MATCH "^cncsim: --report .*no_such_folder/r[.]json: its folder .*no_such_folder does not exist\n$")
+file(WRITE ${ROBUST}/plain_file "")
+cnc_cli_test(output.plots_under_a_file golden 2 CMD run ${SQUARE} --plots ${ROBUST}/plain_file/plots --progress off
+  MATCH "^cncsim: --plots .*plain_file/plots: .*plain_file is not a folder\n$")
+cnc_cli_test(output.compare_out_under_a_file golden 2 CMD compare ${SQUARE} --arch fpga-uart --out ${ROBUST}/plain_file/o
+  MATCH "^cncsim: --out .*plain_file/o: .*plain_file is not a folder\n$")
 cnc_cli_test(output.compare_report_in_missing_folder golden 2
   CMD compare ${SQUARE} --arch fpga-uart --report ${ROBUST}/no_such_folder/c.json
   MATCH "^cncsim: --report .*: its folder .*no_such_folder does not exist\n$")

@@ -1,0 +1,97 @@
+#include "mechanics/core/dynamic_axis.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+#include "mechanics/core/drv8825_modes.hpp"
+
+namespace cnc::mech {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRadToDeg = 180.0 / kPi;
+constexpr int kFullStepsPerElectricalPeriod = 4;  // two-phase motor: 4 x 90 electrical deg
+
+}  // namespace
+
+DynamicAxis::DynamicAxis(const AxisParams& params, const IntegratorTolerances& tol) : m_integrator(params, tol) {
+    apply_setpoints();
+}
+
+void DynamicAxis::advance(TimePs t_ps) const {
+    m_integrator.advance_to(ps_to_s(t_ps));
+    track_load_angle(t_ps);
+}
+
+void DynamicAxis::track_load_angle(TimePs t_ps) const {
+    if (!m_enabled) return;
+    const HybridStepperParams& motor = m_integrator.ode().params().motor;
+    const double lag_rad = motor.rotor_teeth * (commanded_shaft_deg() / kRadToDeg - m_integrator.state()[kTheta]);
+    const auto periods = static_cast<std::int64_t>(std::llround(lag_rad / (2.0 * kPi)));
+    if (periods != m_slip_periods) {
+        const int steps = static_cast<int>(periods - m_slip_periods) * kFullStepsPerElectricalPeriod;
+        m_stats.lost_full_steps += std::abs(steps);
+        if (m_stats.events.size() < kMaxLostStepEvents) m_stats.events.push_back({t_ps, steps});
+        m_slip_periods = periods;
+    }
+    const double load_angle_deg = std::abs(lag_rad - 2.0 * kPi * static_cast<double>(periods)) * kRadToDeg;
+    if (load_angle_deg > m_stats.peak_load_angle_deg) {
+        m_stats.peak_load_angle_deg = load_angle_deg;
+        m_stats.peak_load_angle_ps = t_ps;
+    }
+}
+
+void DynamicAxis::apply_setpoints() {
+    const DriverElectrics& drv = m_integrator.ode().params().driver;
+    m_integrator.set_setpoints({winding_setpoints(m_units, drv, m_enabled), m_external_torque_nm});
+}
+
+void DynamicAxis::on_microstep(TimePs t_ps, std::int64_t microstep_index, int microsteps_per_full_step) {
+    advance(t_ps);
+    m_units = microstep_index * (kIndexerUnitsPerFullStep / microsteps_per_full_step);
+    apply_setpoints();
+}
+
+void DynamicAxis::on_enable(TimePs t_ps, bool enabled) {
+    advance(t_ps);
+    if (enabled && !m_enabled) {
+        const HybridStepperParams& motor = m_integrator.ode().params().motor;
+        const double lag_rad = motor.rotor_teeth * (commanded_shaft_deg() / kRadToDeg - m_integrator.state()[kTheta]);
+        m_slip_periods = std::llround(lag_rad / (2.0 * kPi));
+    }
+    m_enabled = enabled;
+    apply_setpoints();
+}
+
+void DynamicAxis::set_external_torque(TimePs t_ps, double torque_nm) {
+    advance(t_ps);
+    m_external_torque_nm = torque_nm;
+    apply_setpoints();
+}
+
+double DynamicAxis::shaft_angle_deg(TimePs t_ps) const {
+    advance(t_ps);
+    return m_integrator.state()[kTheta] * kRadToDeg;
+}
+
+double DynamicAxis::commanded_shaft_deg() const {
+    const HybridStepperParams& motor = m_integrator.ode().params().motor;
+    return static_cast<double>(m_units) / kIndexerUnitsPerFullStep * motor.full_step_rad() * kRadToDeg;
+}
+
+double DynamicAxis::carriage_mm(TimePs t_ps) const {
+    advance(t_ps);
+    const AxisParams& p = m_integrator.ode().params();
+    if (p.load.kind == DriveKind::Free) return m_integrator.state()[kTheta] * travel_m_per_rad(p.load) * 1e3;
+    return m_integrator.state()[kX] * 1e3;
+}
+
+double DynamicAxis::carriage_velocity_mm_s(TimePs t_ps) const {
+    advance(t_ps);
+    const AxisParams& p = m_integrator.ode().params();
+    if (p.load.kind == DriveKind::Free) return m_integrator.state()[kOmega] * travel_m_per_rad(p.load) * 1e3;
+    return m_integrator.state()[kV] * 1e3;
+}
+
+}  // namespace cnc::mech

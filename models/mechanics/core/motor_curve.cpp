@@ -63,7 +63,7 @@ double pull_out_torque_nm(const AxisParams& p, int microsteps, double full_steps
     // Coarse scan of the load angle, then a golden-section search around the best.
     double best_angle = 0.0;
     double best = -1e9;
-    constexpr int kCoarse = 18;
+    constexpr int kCoarse = 12;
     for (int i = 0; i <= kCoarse; ++i) {
         const double a = kPi * i / kCoarse;
         const double t = synchronous_torque_nm(p, microsteps, full_steps_per_s, a);
@@ -79,7 +79,7 @@ double pull_out_torque_nm(const AxisParams& p, int microsteps, double full_steps
     double b = lo + g * (hi - lo);
     double ta = synchronous_torque_nm(p, microsteps, full_steps_per_s, a);
     double tb = synchronous_torque_nm(p, microsteps, full_steps_per_s, b);
-    for (int i = 0; i < 12; ++i) {
+    for (int i = 0; i < 8; ++i) {
         if (ta > tb) {
             hi = b;
             b = a;

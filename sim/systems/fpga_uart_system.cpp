@@ -223,7 +223,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     fpga.cfg_valid(w.cfg_valid);
     fpga.rx_valid(w.rx_valid);
     fpga.tx_start(w.ack);
-    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);
+    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics);
     machine.bind(w.step_x, w.dir_x, w.n_enbl_x, w.step_y, w.dir_y, w.n_enbl_y, w.laser);
     EdgeRecorder rec("probes");
     record_wires(rec, w);

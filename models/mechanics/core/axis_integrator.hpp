@@ -15,7 +15,7 @@ namespace cnc::mech {
 
 struct IntegratorTolerances {
     double abs_tol = 1e-8;     // per step, in the state's SI units (A, rad, rad/s, m, m/s)
-    double rel_tol = 1e-7;
+    double rel_tol = 1e-5;
     double max_step_s = 1e-3;  // never step further than this, so the step control sees every transient
 };
 

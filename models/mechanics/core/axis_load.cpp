@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/bad_input.hpp"
+#include "mechanics/core/friction.hpp"
 
 namespace cnc::mech {
 
@@ -12,7 +13,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinSpanM = 0.01;             // a span never gets shorter than the pulley-to-clamp distance
-constexpr double kRailStictionSpeedM_s = 1e-4; // Coulomb friction reaches 76 % of its value at 0.1 mm/s
+constexpr double kRailStickBandM_s = 1e-4;      // the carriage may stick below 0.1 mm/s
 
 void require(bool ok, const char* what, double v) {
     if (!ok) throw BadInput("", std::string(what) + " (got " + std::to_string(v) + ")");
@@ -79,8 +80,9 @@ CouplingForces coupling_forces(const AxisLoadParams& p, double theta_rad, double
     return {};
 }
 
-double rail_friction_n(const AxisLoadParams& p, double v_m_s) {
-    return -p.rail_friction_n * std::tanh(v_m_s / kRailStictionSpeedM_s) - p.rail_viscous_n_per_m_s * v_m_s;
+double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n) {
+    const double viscous = -p.rail_viscous_n_per_m_s * v_m_s;
+    return viscous + coulomb_friction(p.rail_friction_n, v_m_s, other_n + viscous, p.carriage_mass_kg, kRailStickBandM_s);
 }
 
 double coupling_energy_j(const AxisLoadParams& p, double theta_rad, double x_m) {

@@ -9,7 +9,7 @@
 // Leadscrew: the nut follows the screw travel s with axial play (backlash) b: no force within +-b/2, then
 // an axial spring (screw and nut stiffness) with damping. The screw's efficiency divides the torque the
 // motor must supply (we assume the motor always drives the load, i.e. the screw never back-drives it).
-// Rails: Coulomb friction (regularised: tanh(v / v_s)) and viscous friction.
+// Rails: Coulomb friction that sticks at rest (friction.hpp) and viscous friction.
 #pragma once
 
 namespace cnc::mech {
@@ -49,8 +49,8 @@ struct CouplingForces {
 // Forces between shaft (angle theta, speed omega) and carriage (x, v).
 [[nodiscard]] CouplingForces coupling_forces(const AxisLoadParams& p, double theta_rad, double omega_rad_s,
                                              double x_m, double v_m_s);
-// Rail friction force on the carriage at speed v (opposes it), N.
-[[nodiscard]] double rail_friction_n(const AxisLoadParams& p, double v_m_s);
+// Rail friction force on the carriage at speed v (opposes it), N; `other_n`: the other forces on it.
+[[nodiscard]] double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n);
 // Energy stored in the coupling, J.
 [[nodiscard]] double coupling_energy_j(const AxisLoadParams& p, double theta_rad, double x_m);
 

@@ -2,13 +2,13 @@
 
 #include <cmath>
 
+#include "mechanics/core/friction.hpp"
+
 namespace cnc::mech {
 
 namespace {
 
-// Shaft friction reaches 76 % of its Coulomb value at 0.05 rad/s (0.5 rpm); regularised so that the ODE
-// stays smooth at rest (its time constant J omega_s / T_c stays above ~0.1 ms with the default motor).
-constexpr double kShaftStictionRad_s = 0.05;
+constexpr double kShaftStickBandRad_s = 0.01;  // the shaft may stick below 0.1 rpm
 
 }  // namespace
 
@@ -28,9 +28,10 @@ void AxisOde::operator()(const AxisState& x, AxisState& dxdt, double) const {
     dxdt[kIb] = (vb - m.resistance_ohm * x[kIb] - emf.b_a) / m.inductance_h;
 
     const CouplingForces f = coupling_forces(m_p.load, theta, omega, x[kX], x[kV]);
-    const double torque = electromagnetic_torque_nm(m, theta, {x[kIa], x[kIb]}) + detent_torque_nm(m, theta) +
-                          f.on_rotor_nm - m.viscous_nm_per_rad_s * omega -
-                          m.coulomb_nm * std::tanh(omega / kShaftStictionRad_s) + m_sp.external_torque_nm;
+    const double other = electromagnetic_torque_nm(m, theta, {x[kIa], x[kIb]}) + detent_torque_nm(m, theta) +
+                         f.on_rotor_nm - m.viscous_nm_per_rad_s * omega + m_sp.external_torque_nm;
+    const double torque =
+        other + coulomb_friction(m.coulomb_nm, omega, other, m.rotor_inertia_kgm2, kShaftStickBandRad_s);
     dxdt[kTheta] = omega;
     dxdt[kOmega] = torque / m.rotor_inertia_kgm2;
     if (m_p.load.kind == DriveKind::Free) {
@@ -39,7 +40,7 @@ void AxisOde::operator()(const AxisState& x, AxisState& dxdt, double) const {
         return;
     }
     dxdt[kX] = x[kV];
-    dxdt[kV] = (f.on_carriage_n + rail_friction_n(m_p.load, x[kV])) / m_p.load.carriage_mass_kg;
+    dxdt[kV] = (f.on_carriage_n + rail_friction_n(m_p.load, x[kV], f.on_carriage_n)) / m_p.load.carriage_mass_kg;
 }
 
 double AxisOde::mechanical_energy_j(const AxisState& x) const {

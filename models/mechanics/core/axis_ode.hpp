@@ -3,7 +3,7 @@
 // State (Eigen, SI units): winding currents i_a, i_b (A), shaft angle theta (rad, 0 at the driver's home
 // state), shaft speed omega (rad/s), carriage position x (m) and speed v (m/s).
 //   L di/dt = v_bridge - R i - e                          (drv8825_current.hpp, hybrid_stepper.hpp)
-//   J domega/dt = T_em + T_detent + T_coupling - B omega - T_c tanh(omega / omega_s) + T_external
+//   J domega/dt = T_em + T_detent + T_coupling - B omega + T_coulomb + T_external   (friction.hpp)
 //   m dv/dt = F_coupling + F_rail                          (axis_load.hpp)
 // With DriveKind::Free the carriage states stay 0. The set-points are constant between events.
 #pragma once

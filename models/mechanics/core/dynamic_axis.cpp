@@ -1,5 +1,6 @@
 #include "mechanics/core/dynamic_axis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -12,6 +13,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadToDeg = 180.0 / kPi;
 constexpr int kFullStepsPerElectricalPeriod = 4;  // two-phase motor: 4 x 90 electrical deg
+// Steps further apart than this are starts from rest, not a commanded speed (1/32 step at 0.1 s: 2 mm/min).
+constexpr TimePs kRippleMaxStepGapPs = 100 * kPsPerMs;
 
 }  // namespace
 
@@ -49,8 +52,25 @@ void DynamicAxis::apply_setpoints() {
 
 void DynamicAxis::on_microstep(TimePs t_ps, std::int64_t microstep_index, int microsteps_per_full_step) {
     advance(t_ps);
+    const std::int64_t previous = m_units;
     m_units = microstep_index * (kIndexerUnitsPerFullStep / microsteps_per_full_step);
+    track_ripple(t_ps, previous);
     apply_setpoints();
+}
+
+void DynamicAxis::track_ripple(TimePs t_ps, std::int64_t previous_units) {
+    const TimePs gap = t_ps - m_last_microstep_ps;
+    if (m_last_microstep_ps >= 0 && gap > 0 && gap < kRippleMaxStepGapPs && m_enabled) {
+        const AxisParams& p = m_integrator.ode().params();
+        const double mm_per_unit = p.load.travel_per_rev_mm / (4.0 * p.motor.rotor_teeth * kIndexerUnitsPerFullStep);
+        const double commanded = static_cast<double>(m_units - previous_units) * mm_per_unit / ps_to_s(gap);
+        const double diff = std::abs(carriage_velocity_mm_s(t_ps) - commanded);
+        m_ripple_sum_sq += diff * diff;
+        ++m_stats.ripple_samples;
+        m_stats.velocity_ripple_rms_mm_s = std::sqrt(m_ripple_sum_sq / static_cast<double>(m_stats.ripple_samples));
+        m_stats.velocity_ripple_peak_mm_s = std::max(m_stats.velocity_ripple_peak_mm_s, diff);
+    }
+    m_last_microstep_ps = t_ps;
 }
 
 void DynamicAxis::on_enable(TimePs t_ps, bool enabled) {

@@ -13,6 +13,7 @@
 
 #include "common/units.hpp"
 #include "mechanics/core/axis_integrator.hpp"
+#include "mechanics/core/carriage_drive.hpp"
 #include "mechanics/core/motor.hpp"
 
 namespace cnc::mech {
@@ -27,9 +28,14 @@ struct DynamicAxisStats {
     std::vector<LostStepEvent> events;       // the first kMaxLostStepEvents, in time order
     double peak_load_angle_deg = 0.0;        // electrical degrees between command and rotor (90 = pull-out)
     TimePs peak_load_angle_ps = 0;
+    // Carriage velocity against the commanded one (a microstep over the time since the previous one), at
+    // every microstep: RMS and peak of the difference, mm/s.
+    double velocity_ripple_rms_mm_s = 0.0;
+    double velocity_ripple_peak_mm_s = 0.0;
+    std::int64_t ripple_samples = 0;
 };
 
-class DynamicAxis : public StepperMotor {
+class DynamicAxis : public StepperMotor, public CarriageDrive {
 public:
     static constexpr std::size_t kMaxLostStepEvents = 1000;
 
@@ -40,7 +46,8 @@ public:
     [[nodiscard]] double shaft_angle_deg(TimePs t_ps) const override;
 
     // Carriage position (mm from 0) and speed (mm/s) at t; with DriveKind::Free, the shaft's travel.
-    [[nodiscard]] double carriage_mm(TimePs t_ps) const;
+    [[nodiscard]] double carriage_mm(TimePs t_ps) const override;
+    [[nodiscard]] bool at_rest() const override { return m_integrator.at_rest(); }
     [[nodiscard]] double carriage_velocity_mm_s(TimePs t_ps) const;
     // The shaft angle the driver commands (what an ideal motor would be at), deg.
     [[nodiscard]] double commanded_shaft_deg() const;
@@ -54,11 +61,14 @@ private:
     void advance(TimePs t_ps) const;
     void track_load_angle(TimePs t_ps) const;
     void apply_setpoints();
+    void track_ripple(TimePs t_ps, std::int64_t previous_units);
 
     mutable AxisIntegrator m_integrator;
     mutable DynamicAxisStats m_stats;
     mutable std::int64_t m_slip_periods = 0;  // electrical periods the rotor has slipped (signed)
     std::int64_t m_units = 0;                  // commanded indexer position, 1/32 step
+    TimePs m_last_microstep_ps = -1;
+    double m_ripple_sum_sq = 0.0;
     bool m_enabled = false;
     double m_external_torque_nm = 0.0;
 };

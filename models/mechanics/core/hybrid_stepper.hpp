@@ -19,7 +19,7 @@ namespace cnc::mech {
 
 struct HybridStepperParams {
     int rotor_teeth = 50;                   // 1.8 deg full step = 90 electrical deg / 50 teeth
-    double holding_torque_nm = 0.2746;      // 2,800 g cm (seed 000 §8), both phases at the rated current
+    double holding_torque_nm = 2800.0 * 9.80665e-5;  // 2,800 g cm (seed 000 §8), both phases at rated current
     double rated_current_a = 0.4;           // per phase (seed 000 §8)
     double resistance_ohm = 30.0;           // per phase (Wantai listing)
     double inductance_h = 0.037;            // per phase, 37 mH (Wantai listing)

@@ -102,7 +102,7 @@ double required_torque_nm(const AxisParams& p, double full_steps_per_s) {
     const double motor = p.motor.viscous_nm_per_rad_s * omega + (omega > 0.0 ? p.motor.coulomb_nm : 0.0);
     if (p.load.kind == DriveKind::Free) return motor;
     const double r = travel_m_per_rad(p.load);
-    const double force = -rail_friction_n(p.load, omega * r);
+    const double force = -rail_friction_n(p.load, omega * r, 0.0);
     const double efficiency = p.load.kind == DriveKind::Leadscrew ? p.load.screw_efficiency : 1.0;
     return motor + force * r / efficiency;
 }

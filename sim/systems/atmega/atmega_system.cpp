@@ -189,7 +189,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     mcu.rxd(w.uart_rx);
     mech::Drv8825Config driver = s.driver;
     driver.dir_high_is_positive = false;  // seed 003 §2.2: DIR 0 = CW = +X / +Y
-    Machine machine("machine", s.machine, driver, s.interpreter.start_mm);
+    Machine machine("machine", s.machine, driver, s.interpreter.start_mm, s.mechanics);
     machine.bind(w.step_x, w.dir_x, w.n_enbl_x, w.step_y, w.dir_y, w.n_enbl_y, w.laser);
     EdgeRecorder rec("probes");
     for (const sc_core::sc_signal<bool>* sig : w.all()) rec.watch(*sig, sig->basename());

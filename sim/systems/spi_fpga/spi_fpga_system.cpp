@@ -108,7 +108,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     master.target(fpga.spi_target);
     host::servo::ServoThread host("host", servo_config(s), *trajectory, host::servo::laser_intent(*job.program),
                                   master);
-    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);
+    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics);
     machine.step_x(w.step_x);
     machine.dir_x(w.dir_x);
     machine.n_enbl_x(w.n_enbl_x);

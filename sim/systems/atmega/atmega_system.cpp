@@ -19,6 +19,7 @@
 #include "systems/atmega/motion_windows.hpp"
 #include "systems/link_checks.hpp"
 #include "systems/machine.hpp"
+#include "systems/mechanics_report.hpp"
 #include "uart/cp2102.hpp"
 
 namespace cnc::sim {
@@ -232,6 +233,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     for (Warning& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
     run.details = details_json(facts, s.detail);
     run.details_text = details_text(facts);
+    add_mechanics_report(machine, run);
 
     if (const std::optional<std::string> why = link_failure(mcu, cp2102, pc)) {
         run.ok = false;

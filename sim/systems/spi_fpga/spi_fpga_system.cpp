@@ -16,6 +16,7 @@
 #include "systems/machine.hpp"
 #include "systems/spi_fpga/planned_moves.hpp"
 #include "systems/spi_fpga/spi_fpga_report.hpp"
+#include "systems/mechanics_report.hpp"
 
 namespace cnc::sim {
 
@@ -154,6 +155,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     SpiFpgaReport report = spi_fpga_report(host, master, fpga, in.t_job_end_ps, s.detail);
     run.details = std::move(report.details);
     run.details_text = std::move(report.text);
+    add_mechanics_report(machine, run);
     run.warnings = std::move(report.warnings);
     if (!host.finished()) {
         run.ok = false;

@@ -27,10 +27,14 @@ void DynamicAxis::advance(TimePs t_ps) const {
     track_load_angle(t_ps);
 }
 
+double DynamicAxis::lag_electrical_rad() const {
+    const HybridStepperParams& motor = m_integrator.ode().params().motor;
+    return motor.rotor_teeth * (commanded_shaft_deg() / kRadToDeg - m_integrator.state()[kTheta]);
+}
+
 void DynamicAxis::track_load_angle(TimePs t_ps) const {
     if (!m_enabled) return;
-    const HybridStepperParams& motor = m_integrator.ode().params().motor;
-    const double lag_rad = motor.rotor_teeth * (commanded_shaft_deg() / kRadToDeg - m_integrator.state()[kTheta]);
+    const double lag_rad = lag_electrical_rad();
     const auto periods = static_cast<std::int64_t>(std::llround(lag_rad / (2.0 * kPi)));
     if (periods != m_slip_periods) {
         const int steps = static_cast<int>(periods - m_slip_periods) * kFullStepsPerElectricalPeriod;
@@ -75,11 +79,7 @@ void DynamicAxis::track_ripple(TimePs t_ps, std::int64_t previous_units) {
 
 void DynamicAxis::on_enable(TimePs t_ps, bool enabled) {
     advance(t_ps);
-    if (enabled && !m_enabled) {
-        const HybridStepperParams& motor = m_integrator.ode().params().motor;
-        const double lag_rad = motor.rotor_teeth * (commanded_shaft_deg() / kRadToDeg - m_integrator.state()[kTheta]);
-        m_slip_periods = std::llround(lag_rad / (2.0 * kPi));
-    }
+    if (enabled && !m_enabled) m_slip_periods = std::llround(lag_electrical_rad() / (2.0 * kPi));
     m_enabled = enabled;
     apply_setpoints();
 }

@@ -60,6 +60,8 @@ public:
 private:
     void advance(TimePs t_ps) const;
     void track_load_angle(TimePs t_ps) const;
+    // Command minus rotor, electrical radians (> 0: the rotor lags).
+    [[nodiscard]] double lag_electrical_rad() const;
     void apply_setpoints();
     void track_ripple(TimePs t_ps, std::int64_t previous_units);
 

@@ -124,9 +124,8 @@ bool starts_without_loss(const AxisParams& p, int microsteps, double full_steps_
     const double microstep_s = 1.0 / (full_steps_per_s * microsteps);
     const auto steps = std::max<std::int64_t>(static_cast<std::int64_t>(kPullInRunS / microstep_s), 20 * microsteps);
     for (std::int64_t k = 1; k <= steps; ++k) axis.on_microstep(s_to_ps(k * microstep_s), k, microsteps);
-    const double end_s = steps * microstep_s + kPullInRunS;
+    // Settle for as long again, looking at the rotor ten times (a slip is counted when it is seen).
     for (int i = 1; i <= 10; ++i) (void)axis.shaft_angle_deg(s_to_ps(steps * microstep_s + i * kPullInRunS / 10));
-    (void)axis.shaft_angle_deg(s_to_ps(end_s));
     return axis.stats().lost_full_steps == 0;
 }
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "mechanics/core/dynamic_axis.hpp"
 #include "mechanics/core/motor_curve.hpp"
 
 using namespace cnc::mech;
@@ -52,4 +53,23 @@ TEST(MotorCurve, RequiredTorqueIsTheRailFrictionThroughThePulley) {
     // 3.8 kg at 1000 mm/s^2: F r = 3.8 N x 6.366 mm = 24.19e-3 N m, plus 34 g cm2 x 157.1 rad/s^2.
     EXPECT_NEAR(acceleration_torque_nm(p, 1000.0), 3.8 * 0.040 / (2 * 3.14159265358979) + 34e-7 * 1.0 / (0.040 / (2 * 3.14159265358979)),
                 1e-6);
+}
+
+TEST(MotorCurve, AStepJumpFarAboveThePullOutRateLosesWholeElectricalPeriods) {
+    // Check 5 on the core: the seed X axis (3.8 kg) commanded from rest straight to 800 full steps/s
+    // (160 mm/s), where even the steady pull-out torque (0.074 N m) is barely 5 x the rail friction's, loses
+    // steps, and every slip is a whole electrical period: 4 full steps. At 50 full steps/s (10 mm/s) it
+    // follows.
+    const AxisParams p;
+    EXPECT_FALSE(starts_without_loss(p, 32, 800.0));
+    EXPECT_TRUE(starts_without_loss(p, 32, 50.0));
+    DynamicAxis axis(p);
+    axis.on_enable(0, true);
+    const cnc::TimePs microstep_ps = cnc::kPsPerSec / (800 * 32);
+    for (int k = 1; k <= 2'560; ++k) axis.on_microstep(k * microstep_ps, k, 32);
+    (void)axis.shaft_angle_deg(2'560 * microstep_ps + 100 * cnc::kPsPerMs);
+    ASSERT_FALSE(axis.stats().events.empty());
+    EXPECT_GT(axis.stats().lost_full_steps, 0);
+    EXPECT_EQ(axis.stats().lost_full_steps % 4, 0);
+    for (const LostStepEvent& e : axis.stats().events) EXPECT_EQ(e.full_steps % 4, 0);
 }

@@ -17,6 +17,7 @@
 #include "metrics/analyze_input.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/vcd_reader.hpp"
+#include "motor_curve_cmd.hpp"
 #include "output/output_file.hpp"
 #include "plots/run_plots.hpp"
 #include "run/run.hpp"
@@ -199,6 +200,14 @@ int sc_main(int argc, char* argv[]) {
                         "write here: index.html, the table (md, csv, json), the plots, each architecture's report "
                         "and VCD");
 
+    std::string curve_axis = "x";
+    std::string curve_csv;
+    CLI::App* curve = app.add_subcommand("motor-curve", "pull-out torque, the load's torque and the pull-in rate of one axis");
+    curve->add_option("scenario", scenario, "scenario file (TOML)")->required();
+    curve->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
+    curve->add_option("--axis", curve_axis, "axis")->check(CLI::IsMember({"x", "y"}))->capture_default_str();
+    curve->add_option("--csv", curve_csv, "also write the table as CSV to this file");
+
     app.add_subcommand("keys", "print every scenario key (type, default, range, meaning) as Markdown");
 
     try {
@@ -210,6 +219,7 @@ int sc_main(int argc, char* argv[]) {
     try {
         if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, progress, plots, plot_data);
         if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report, out_dir);
+        if (curve->parsed()) return cnc::sim::cmd_motor_curve(scenario, sets, curve_axis, curve_csv, std::cout);
         if (analyze->parsed()) return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, report);
         return cmd_keys();
     } catch (const cnc::BadInput& e) {

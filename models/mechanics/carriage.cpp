@@ -11,11 +11,9 @@ namespace {
 
 
 void require_complete(const CarriageAxis& a, const char* axis) {
-    if (a.step_event == nullptr || a.motor == nullptr || a.transmission == nullptr)
-        throw BadInput("", std::string("carriage axis ") + axis + " needs a step event, a motor and a transmission");
+    if (a.step_event == nullptr || a.drive == nullptr)
+        throw BadInput("", std::string("carriage axis ") + axis + " needs a step event and a drive");
 }
-
-double axis_mm(const CarriageAxis& a, TimePs t) { return a.transmission->carriage_mm(a.motor->shaft_angle_deg(t)); }
 
 }  // namespace
 
@@ -24,14 +22,35 @@ Carriage::Carriage(const sc_core::sc_module_name& name, const CarriageConfig& cf
     require_complete(cfg.x, "x");
     require_complete(cfg.y, "y");
     SC_HAS_PROCESS(Carriage);
-    SC_METHOD(sample);
+    SC_METHOD(on_step);
     sensitive << *cfg.x.step_event << *cfg.y.step_event;
     dont_initialize();
+    SC_METHOD(on_period);
+    sensitive << m_period_ev;
+    dont_initialize();
+}
+
+void Carriage::on_step() {
+    sample();
+    if (m_cfg.sample_hz > 0.0 && !m_periodic_armed) {
+        m_periodic_armed = true;
+        m_period_ev.notify(sc_core::sc_time(1.0 / m_cfg.sample_hz, sc_core::SC_SEC));
+    }
+}
+
+// Stops once both axes are at rest, so that a finished job leaves the kernel without events.
+void Carriage::on_period() {
+    sample();
+    if (m_cfg.x.drive->at_rest() && m_cfg.y.drive->at_rest()) {
+        m_periodic_armed = false;
+        return;
+    }
+    m_period_ev.notify(sc_core::sc_time(1.0 / m_cfg.sample_hz, sc_core::SC_SEC));
 }
 
 geom::Vec2 Carriage::position() const {
     const TimePs t = now_ps();
-    return m_cfg.origin + geom::Vec2{axis_mm(m_cfg.x, t), axis_mm(m_cfg.y, t)};
+    return m_cfg.origin + geom::Vec2{m_cfg.x.drive->carriage_mm(t), m_cfg.y.drive->carriage_mm(t)};
 }
 
 void Carriage::start_of_simulation() { sample(); }

@@ -1,5 +1,7 @@
-// The XY carriage: each axis is a motor driving a transmission; the tool position is sampled at every step
-// of either axis (DESIGN.md §4: contour error is sampled at every step event).
+// The XY carriage: each axis is a drive (an ideal motor on a rigid transmission, or a dynamic axis model);
+// the tool position is sampled at every step of either axis (DESIGN.md §4: contour error is sampled at every
+// step event) and, with sample_hz > 0, periodically in between for as long as an axis is not at rest (a
+// dynamic carriage keeps moving between steps: it lags, rings and settles).
 #pragma once
 #include <systemc>
 #include <vector>
@@ -7,21 +9,20 @@
 #include "common/geometry.hpp"
 #include "common/tool_sample.hpp"
 #include "common/units.hpp"
-#include "mechanics/core/motor.hpp"
-#include "mechanics/core/transmission.hpp"
+#include "mechanics/core/carriage_drive.hpp"
 
 namespace cnc::mech {
 
 struct CarriageAxis {
     const sc_core::sc_event* step_event = nullptr;  // the axis driver's step_event()
-    const StepperMotor* motor = nullptr;
-    const Transmission* transmission = nullptr;
+    const CarriageDrive* drive = nullptr;
 };
 
 struct CarriageConfig {
     CarriageAxis x;
     CarriageAxis y;
     geom::Vec2 origin{};  // tool position (machine mm) with both shafts at 0 deg
+    double sample_hz = 0.0;  // periodic samples while an axis moves; 0: at step events only
 };
 
 using ToolSample = cnc::ToolSample;
@@ -40,9 +41,13 @@ public:
 private:
     void start_of_simulation() override;
     void sample();
+    void on_step();
+    void on_period();
 
     CarriageConfig m_cfg;
     std::vector<ToolSample> m_samples;
+    sc_core::sc_event m_period_ev;
+    bool m_periodic_armed = false;
     double m_x_mm = 0.0;  // last sample, for VCD traces
     double m_y_mm = 0.0;
 };

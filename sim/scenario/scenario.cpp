@@ -179,6 +179,7 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
 
     s.driver.strict = r.get_bool("driver.strict", s.driver.strict,
                                  "DRV8825 drops STEP pulses that break tWH/tWL (false: counts every rising edge)");
+    read_mechanics_settings(r, s.mechanics);
 
     s.link.requested_baud = static_cast<std::uint32_t>(
         r.get_int("link.baud", s.link.requested_baud, 300, 921'600, "baud rate the host asks the CP2102 for"));

@@ -17,6 +17,7 @@
 #include "run/progress.hpp"
 #include "scenario/atmega_settings.hpp"
 #include "scenario/key_reader.hpp"
+#include "scenario/mechanics_settings.hpp"
 #include "scenario/spi_fpga_settings.hpp"
 #include "uart/cp2102.hpp"
 
@@ -43,6 +44,7 @@ struct Scenario {
     uart::Cp2102Config link;
     fpga::FpgaConfig fpga;
     mech::Drv8825Config driver;
+    MechanicsSettings mechanics;
     AtmegaSettings atmega;
     SpiFpgaSettings spi_fpga;
 

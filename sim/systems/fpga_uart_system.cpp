@@ -17,6 +17,7 @@
 #include "systems/link_checks.hpp"
 #include "systems/machine.hpp"
 #include "probes/vcd_trace.hpp"
+#include "systems/mechanics_report.hpp"
 #include "uart/cp2102.hpp"
 
 namespace cnc::sim {
@@ -223,7 +224,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     fpga.cfg_valid(w.cfg_valid);
     fpga.rx_valid(w.rx_valid);
     fpga.tx_start(w.ack);
-    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);
+    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics);
     machine.bind(w.step_x, w.dir_x, w.n_enbl_x, w.step_y, w.dir_y, w.n_enbl_y, w.laser);
     EdgeRecorder rec("probes");
     record_wires(rec, w);
@@ -312,6 +313,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         text << format("  host at %.6f s: ", ps_to_s(m.t_ps)) << m.text << '\n';
     }
     run.details_text = text.str();
+    add_mechanics_report(machine, run);
 
     if (const std::optional<std::string> framing = framing_failure(static_cast<std::int64_t>(st.framing_errors), "FPGA",
                                                                    cp2102.stats().framing_errors)) {

@@ -27,28 +27,45 @@ void wire(mech::Drv8825& drv, sc_core::sc_in<bool>& step, sc_core::sc_in<bool>& 
 
 }  // namespace
 
+AxisMechanics::AxisMechanics(const host::AxisMachine& axis, const MechanicsSettings& settings,
+                             const mech::AxisLoadParams& load) {
+    if (settings.model == MechanicsModel::Dynamic) {
+        auto model = std::make_unique<mech::DynamicAxis>(axis_params(settings, axis, load), settings.tolerances);
+        dynamic = model.get();
+        motor = std::move(model);
+        return;
+    }
+    motor = std::make_unique<mech::IdealStepper>(axis.step_angle_deg);
+    transmission = transmission_for(axis);
+    rigid = std::make_unique<mech::RigidDrive>(*motor, *transmission);
+}
+
+const mech::CarriageDrive& AxisMechanics::drive() const {
+    return dynamic != nullptr ? static_cast<const mech::CarriageDrive&>(*dynamic) : *rigid;
+}
+
 ModeStraps::ModeStraps(int microsteps, const std::string& axis)
     : m0(("mode0_" + axis).c_str(), mech::mode_pins_for(microsteps).m0),
       m1(("mode1_" + axis).c_str(), mech::mode_pins_for(microsteps).m1),
       m2(("mode2_" + axis).c_str(), mech::mode_pins_for(microsteps).m2) {}
 
 Machine::Machine(const sc_core::sc_module_name& name, const host::MachineModel& model,
-                 const mech::Drv8825Config& driver, geom::Vec2 origin_mm)
+                 const mech::Drv8825Config& driver, geom::Vec2 origin_mm, const MechanicsSettings& mechanics)
     : sc_module(name),
       step_x("step_x"), dir_x("dir_x"), n_enbl_x("n_enbl_x"),
       step_y("step_y"), dir_y("dir_y"), n_enbl_y("n_enbl_y"),
       laser("laser"),
       m_modes_x(model.x.microsteps, "x"),
       m_modes_y(model.y.microsteps, "y"),
-      m_motor_x(model.x.step_angle_deg),
-      m_motor_y(model.y.step_angle_deg),
-      m_drive_x(transmission_for(model.x)),
-      m_drive_y(transmission_for(model.y)),
-      m_drv_x("drv8825_x", driver, m_motor_x),
-      m_drv_y("drv8825_y", driver, m_motor_y),
-      m_carriage("carriage", mech::CarriageConfig{{&m_drv_x.step_event(), &m_motor_x, m_drive_x.get()},
-                                                  {&m_drv_y.step_event(), &m_motor_y, m_drive_y.get()},
-                                                  origin_mm}),
+      m_axis_x(model.x, mechanics, mechanics.x),
+      m_axis_y(model.y, mechanics, mechanics.y),
+      m_drv_x("drv8825_x", driver, *m_axis_x.motor),
+      m_drv_y("drv8825_y", driver, *m_axis_y.motor),
+      m_carriage("carriage", mech::CarriageConfig{{&m_drv_x.step_event(), &m_axis_x.drive()},
+                                                  {&m_drv_y.step_event(), &m_axis_y.drive()},
+                                                  origin_mm,
+                                                  mechanics.model == MechanicsModel::Dynamic ? mechanics.sample_hz
+                                                                                             : 0.0}),
       m_head("laser_head") {
     wire(m_drv_x, step_x, dir_x, n_enbl_x, m_modes_x);
     wire(m_drv_y, step_y, dir_y, n_enbl_y, m_modes_y);

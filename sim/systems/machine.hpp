@@ -1,5 +1,6 @@
 // The machine every architecture drives: two DRV8825 drivers with their MODE pins strapped for the scenario's
-// microstepping, ideal steppers, belt or leadscrew transmissions, the XY carriage and the laser head.
+// microstepping, the motors and what they move (mechanics.model: ideal steppers on rigid belt or leadscrew
+// transmissions, or dynamic axis models), the XY carriage and the laser head.
 #pragma once
 #include <memory>
 #include <string>
@@ -8,12 +9,25 @@
 
 #include "host/core/machine.hpp"
 #include "mechanics/carriage.hpp"
+#include "mechanics/core/carriage_drive.hpp"
+#include "mechanics/core/dynamic_axis.hpp"
 #include "mechanics/core/ideal_stepper.hpp"
 #include "mechanics/core/transmission.hpp"
 #include "mechanics/drv8825.hpp"
 #include "mechanics/laser_head.hpp"
+#include "scenario/mechanics_settings.hpp"
 
 namespace cnc::sim {
+
+// One axis's motor and what it moves: an ideal stepper on a rigid transmission, or a dynamic axis model.
+struct AxisMechanics {
+    AxisMechanics(const host::AxisMachine& axis, const MechanicsSettings& settings, const mech::AxisLoadParams& load);
+    std::unique_ptr<mech::StepperMotor> motor;
+    std::unique_ptr<mech::Transmission> transmission;
+    std::unique_ptr<mech::CarriageDrive> rigid;
+    const mech::DynamicAxis* dynamic = nullptr;  // the motor, when it is a dynamic model
+    [[nodiscard]] const mech::CarriageDrive& drive() const;
+};
 
 // MODE0..2 strapped on the driver board (seed 000 §8: microstepping is set on the PCB, not by the FPGA).
 struct ModeStraps {
@@ -28,7 +42,7 @@ public:
     sc_core::sc_in<bool> laser;
 
     Machine(const sc_core::sc_module_name& name, const host::MachineModel& model, const mech::Drv8825Config& driver,
-            geom::Vec2 origin_mm);
+            geom::Vec2 origin_mm, const MechanicsSettings& mechanics);
 
     // Binds every input pin to the controller's wires (the same names in every architecture).
     void bind(sc_core::sc_signal<bool>& step_x_wire, sc_core::sc_signal<bool>& dir_x_wire,
@@ -40,11 +54,13 @@ public:
     [[nodiscard]] const mech::Drv8825& driver_x() const { return m_drv_x; }
     [[nodiscard]] const mech::Drv8825& driver_y() const { return m_drv_y; }
     [[nodiscard]] const mech::LaserHead& laser_head() const { return m_head; }
+    // The dynamic axis models (nullptr with the ideal mechanics).
+    [[nodiscard]] const mech::DynamicAxis* dynamic_x() const { return m_axis_x.dynamic; }
+    [[nodiscard]] const mech::DynamicAxis* dynamic_y() const { return m_axis_y.dynamic; }
 
 private:
     ModeStraps m_modes_x, m_modes_y;
-    mech::IdealStepper m_motor_x, m_motor_y;
-    std::unique_ptr<mech::Transmission> m_drive_x, m_drive_y;
+    AxisMechanics m_axis_x, m_axis_y;
     mech::Drv8825 m_drv_x, m_drv_y;
     mech::Carriage m_carriage;
     mech::LaserHead m_head;

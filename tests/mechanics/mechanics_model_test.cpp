@@ -164,8 +164,10 @@ TEST(CarriageModel, SimultaneousXYStepsMergeIntoOneSample) {
     DriverBench x("x", Drv8825Config{});
     DriverBench y("y", Drv8825Config{});
     const Belt belt(20, 2.0);  // 160 steps/mm at 1/32
-    Carriage carriage("carriage", CarriageConfig{{&x.drv.step_event(), &x.motor, &belt},
-                                                 {&y.drv.step_event(), &y.motor, &belt},
+    const RigidDrive drive_x(x.motor, belt);
+    const RigidDrive drive_y(y.motor, belt);
+    Carriage carriage("carriage", CarriageConfig{{&x.drv.step_event(), &drive_x},
+                                                 {&y.drv.step_event(), &drive_y},
                                                  {10.0, 20.0}});
     x.dir.write(true);
     drive(x.step, pulses(100 * kUs, 2, 100 * kUs));  // X at 100 and 200 us

@@ -19,6 +19,7 @@
 #include "systems/atmega/motion_windows.hpp"
 #include "systems/link_checks.hpp"
 #include "systems/machine.hpp"
+#include "systems/mechanics_report.hpp"
 #include "uart/cp2102.hpp"
 
 namespace cnc::sim {
@@ -189,7 +190,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     mcu.rxd(w.uart_rx);
     mech::Drv8825Config driver = s.driver;
     driver.dir_high_is_positive = false;  // seed 003 §2.2: DIR 0 = CW = +X / +Y
-    Machine machine("machine", s.machine, driver, s.interpreter.start_mm);
+    Machine machine("machine", s.machine, driver, s.interpreter.start_mm, s.mechanics);
     machine.bind(w.step_x, w.dir_x, w.n_enbl_x, w.step_y, w.dir_y, w.n_enbl_y, w.laser);
     EdgeRecorder rec("probes");
     for (const sc_core::sc_signal<bool>* sig : w.all()) rec.watch(*sig, sig->basename());
@@ -231,6 +232,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     for (Warning& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
     run.details = details_json(facts, s.detail);
     run.details_text = details_text(facts);
+    add_mechanics_report(machine, run);
 
     if (const std::optional<std::string> why = link_failure(mcu, cp2102, pc)) {
         run.ok = false;

@@ -16,6 +16,7 @@
 #include "systems/machine.hpp"
 #include "systems/spi_fpga/planned_moves.hpp"
 #include "systems/spi_fpga/spi_fpga_report.hpp"
+#include "systems/mechanics_report.hpp"
 
 namespace cnc::sim {
 
@@ -110,7 +111,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     master.target(fpga.spi_target);
     host::servo::ServoThread host("host", servo_config(s), *trajectory, host::servo::laser_intent(*job.program),
                                   master);
-    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm);
+    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics);
     machine.step_x(w.step_x);
     machine.dir_x(w.dir_x);
     machine.n_enbl_x(w.n_enbl_x);
@@ -155,6 +156,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     SpiFpgaReport report = spi_fpga_report(host, master, fpga, in.t_job_end_ps, s.detail);
     run.details = std::move(report.details);
     run.details_text = std::move(report.text);
+    add_mechanics_report(machine, run);
     run.warnings = std::move(report.warnings);
     if (!host.finished()) {
         run.ok = false;

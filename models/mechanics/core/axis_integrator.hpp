@@ -1,0 +1,51 @@
+// Event-driven integration of one axis (axis_ode.hpp) with Boost.Odeint.
+//
+// Stepper: Dormand-Prince 5(4) (runge_kutta_dopri5) under odeint's step-size control, with absolute and
+// relative error tolerances per step (IntegratorTolerances). The set-points are constant between events,
+// so the caller advances the state to each event time (a microstep change, an EN change, a sample) and
+// then changes them; the integrator never steps past the time it is asked for. Once the axis has come to
+// rest (speeds, accelerations and current errors below the rest thresholds) it is fast-forwarded: later
+// calls move its clock without integrating, until the set-points change.
+#pragma once
+#include <cstdint>
+
+#include "mechanics/core/axis_ode.hpp"
+
+namespace cnc::mech {
+
+struct IntegratorTolerances {
+    double abs_tol = 1e-8;     // per step, in the state's SI units (A, rad, rad/s, m, m/s)
+    double rel_tol = 1e-5;
+    double max_step_s = 1e-3;  // never step further than this, so the step control sees every transient
+};
+
+class AxisIntegrator {
+public:
+    explicit AxisIntegrator(const AxisParams& params, const IntegratorTolerances& tol = {});
+
+    // Integrates from the current time to t_s (no-op if t_s is not later).
+    void advance_to(double t_s);
+    // New set-points from the current time on (ends a fast-forward).
+    void set_setpoints(const AxisSetpoints& sp);
+    // Replaces the state (initial conditions for tests and studies).
+    void set_state(const AxisState& x);
+
+    [[nodiscard]] double time_s() const { return m_t_s; }
+    [[nodiscard]] const AxisState& state() const { return m_x; }
+    [[nodiscard]] const AxisOde& ode() const { return m_ode; }
+    [[nodiscard]] bool at_rest() const { return m_at_rest; }
+    [[nodiscard]] std::int64_t steps_taken() const { return m_steps; }
+
+private:
+    [[nodiscard]] bool converged() const;
+
+    AxisOde m_ode;
+    IntegratorTolerances m_tol;
+    AxisState m_x = AxisState::Zero();
+    double m_t_s = 0.0;
+    double m_dt_s;
+    bool m_at_rest = false;
+    std::int64_t m_steps = 0;
+};
+
+}  // namespace cnc::mech

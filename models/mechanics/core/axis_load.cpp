@@ -1,0 +1,98 @@
+#include "mechanics/core/axis_load.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/bad_input.hpp"
+#include "mechanics/core/friction.hpp"
+
+namespace cnc::mech {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kMinSpanM = 0.01;             // a span never gets shorter than the pulley-to-clamp distance
+constexpr double kRailStickBandM_s = 1e-4;      // the carriage may stick below 0.1 mm/s
+
+void require(bool ok, const char* what, double v) {
+    if (!ok) throw BadInput("", std::string(what) + " (got " + std::to_string(v) + ")");
+}
+
+double dead_zone(double d, double half_width) {
+    if (d > half_width) return d - half_width;
+    if (d < -half_width) return d + half_width;
+    return 0.0;
+}
+
+}  // namespace
+
+void validate(const AxisLoadParams& p) {
+    require(p.travel_per_rev_mm > 0.0, "travel per motor revolution must be > 0 mm", p.travel_per_rev_mm);
+    if (p.kind == DriveKind::Free) return;
+    require(p.carriage_mass_kg > 0.0, "carriage_mass_kg must be > 0", p.carriage_mass_kg);
+    require(p.rail_friction_n >= 0.0, "rail_friction_n must be >= 0", p.rail_friction_n);
+    require(p.rail_viscous_n_per_m_s >= 0.0, "rail_viscous_n_s_per_m must be >= 0", p.rail_viscous_n_per_m_s);
+    if (p.kind == DriveKind::Belt) {
+        require(p.belt_specific_stiffness_n > 0.0, "belt_specific_stiffness_n must be > 0",
+                p.belt_specific_stiffness_n);
+        require(p.belt_home_span_mm > 0.0, "belt_home_span_mm must be > 0", p.belt_home_span_mm);
+        require(p.belt_total_span_mm > p.belt_home_span_mm, "belt_total_span_mm must exceed belt_home_span_mm",
+                p.belt_total_span_mm);
+        require(p.belt_damping_ratio >= 0.0, "belt_damping_ratio must be >= 0", p.belt_damping_ratio);
+    } else {
+        require(p.screw_efficiency > 0.0 && p.screw_efficiency <= 1.0, "screw_efficiency must be in (0, 1]",
+                p.screw_efficiency);
+        require(p.backlash_mm >= 0.0, "backlash_mm must be >= 0", p.backlash_mm);
+        require(p.screw_stiffness_n_per_m > 0.0, "screw_stiffness_n_per_m must be > 0", p.screw_stiffness_n_per_m);
+        require(p.screw_damping_ratio >= 0.0, "screw_damping_ratio must be >= 0", p.screw_damping_ratio);
+    }
+}
+
+double travel_m_per_rad(const AxisLoadParams& p) { return p.travel_per_rev_mm * 1e-3 / (2.0 * kPi); }
+
+double belt_stiffness_n_per_m(const AxisLoadParams& p, double x_m) {
+    const double total = p.belt_total_span_mm * 1e-3;
+    const double l1 = std::clamp(p.belt_home_span_mm * 1e-3 + x_m, kMinSpanM, total - kMinSpanM);
+    return p.belt_specific_stiffness_n / l1 + p.belt_specific_stiffness_n / (total - l1);
+}
+
+CouplingForces coupling_forces(const AxisLoadParams& p, double theta_rad, double omega_rad_s, double x_m,
+                               double v_m_s) {
+    const double r = travel_m_per_rad(p);
+    const double stretch = r * theta_rad - x_m;
+    const double stretch_rate = r * omega_rad_s - v_m_s;
+    if (p.kind == DriveKind::Belt) {
+        const double k = belt_stiffness_n_per_m(p, x_m);
+        const double h = 1e-6;  // dk/dx by central difference: k is smooth away from the span clamps
+        const double dk_dx = (belt_stiffness_n_per_m(p, x_m + h) - belt_stiffness_n_per_m(p, x_m - h)) / (2 * h);
+        const double c = 2.0 * p.belt_damping_ratio * std::sqrt(k * p.carriage_mass_kg);
+        const double spring = k * stretch + c * stretch_rate;
+        return {spring - 0.5 * dk_dx * stretch * stretch, -spring * r};
+    }
+    if (p.kind == DriveKind::Leadscrew) {
+        const double engaged = dead_zone(stretch, 0.5 * p.backlash_mm * 1e-3);
+        if (engaged == 0.0) return {};
+        const double c = 2.0 * p.screw_damping_ratio * std::sqrt(p.screw_stiffness_n_per_m * p.carriage_mass_kg);
+        const double force = p.screw_stiffness_n_per_m * engaged + c * stretch_rate;
+        return {force, -force * r / p.screw_efficiency};
+    }
+    return {};
+}
+
+double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n) {
+    const double viscous = -p.rail_viscous_n_per_m_s * v_m_s;
+    return viscous + coulomb_friction(p.rail_friction_n, v_m_s, other_n + viscous, p.carriage_mass_kg, kRailStickBandM_s);
+}
+
+double coupling_energy_j(const AxisLoadParams& p, double theta_rad, double x_m) {
+    const double stretch = travel_m_per_rad(p) * theta_rad - x_m;
+    if (p.kind == DriveKind::Belt) return 0.5 * belt_stiffness_n_per_m(p, x_m) * stretch * stretch;
+    if (p.kind == DriveKind::Leadscrew) {
+        const double engaged = dead_zone(stretch, 0.5 * p.backlash_mm * 1e-3);
+        return 0.5 * p.screw_stiffness_n_per_m * engaged * engaged;
+    }
+    return 0.0;
+}
+
+}  // namespace cnc::mech

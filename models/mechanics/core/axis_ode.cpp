@@ -1,0 +1,52 @@
+#include "mechanics/core/axis_ode.hpp"
+
+#include <cmath>
+
+#include "mechanics/core/friction.hpp"
+
+namespace cnc::mech {
+
+namespace {
+
+constexpr double kShaftStickBandRad_s = 0.01;  // the shaft may stick below 0.1 rpm
+
+}  // namespace
+
+AxisOde::AxisOde(const AxisParams& params) : m_p(params) {
+    validate(m_p.motor);
+    validate(m_p.load);
+}
+
+void AxisOde::operator()(const AxisState& x, AxisState& dxdt, double) const {
+    const HybridStepperParams& m = m_p.motor;
+    const double theta = x[kTheta];
+    const double omega = x[kOmega];
+    const WindingCurrents emf = back_emf_v(m, theta, omega);
+    const double va = bridge_voltage_v(m_sp.current.a_a, x[kIa], emf.a_a, m.resistance_ohm, m.inductance_h, m_p.driver);
+    const double vb = bridge_voltage_v(m_sp.current.b_a, x[kIb], emf.b_a, m.resistance_ohm, m.inductance_h, m_p.driver);
+    dxdt[kIa] = (va - m.resistance_ohm * x[kIa] - emf.a_a) / m.inductance_h;
+    dxdt[kIb] = (vb - m.resistance_ohm * x[kIb] - emf.b_a) / m.inductance_h;
+
+    const CouplingForces f = coupling_forces(m_p.load, theta, omega, x[kX], x[kV]);
+    const double other = electromagnetic_torque_nm(m, theta, {x[kIa], x[kIb]}) + detent_torque_nm(m, theta) +
+                         f.on_rotor_nm - m.viscous_nm_per_rad_s * omega + m_sp.external_torque_nm;
+    const double torque =
+        other + coulomb_friction(m.coulomb_nm, omega, other, m.rotor_inertia_kgm2, kShaftStickBandRad_s);
+    dxdt[kTheta] = omega;
+    dxdt[kOmega] = torque / m.rotor_inertia_kgm2;
+    if (m_p.load.kind == DriveKind::Free) {
+        dxdt[kX] = 0.0;
+        dxdt[kV] = 0.0;
+        return;
+    }
+    dxdt[kX] = x[kV];
+    dxdt[kV] = (f.on_carriage_n + rail_friction_n(m_p.load, x[kV], f.on_carriage_n)) / m_p.load.carriage_mass_kg;
+}
+
+double AxisOde::mechanical_energy_j(const AxisState& x) const {
+    const double kinetic = 0.5 * m_p.motor.rotor_inertia_kgm2 * x[kOmega] * x[kOmega] +
+                           (m_p.load.kind == DriveKind::Free ? 0.0 : 0.5 * m_p.load.carriage_mass_kg * x[kV] * x[kV]);
+    return kinetic + coupling_energy_j(m_p.load, x[kTheta], x[kX]) + detent_energy_j(m_p.motor, x[kTheta]);
+}
+
+}  // namespace cnc::mech

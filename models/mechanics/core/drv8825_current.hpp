@@ -1,0 +1,40 @@
+// DRV8825 current regulation (TI SLVSA73 §8.3.4 "Current Regulation", §8.3.2 "Microstepping Indexer"):
+// the indexer position sets the two winding current set-points, and the bridges drive the windings towards
+// them within the motor supply VMOT.
+//
+// The chip chops each bridge with a fixed off-time PWM; we average it: the bridge applies the voltage that
+// would bring the current to its set-point within `chop_tau_s`, clamped to +-VMOT. Clamping at -VMOT as well
+// as +VMOT means we assume the current can be driven down as fast as up (fast decay: the bridge reverses),
+// which is what the data sheet's mixed decay does on a falling step of the sine table; slow decay alone
+// would make falling currents lag more. EN off (nENBL high) sets both set-points to 0: the bridges drive
+// the currents to zero and keep them there (no holding torque).
+#pragma once
+#include <cstdint>
+
+namespace cnc::mech {
+
+struct DriverElectrics {
+    double current_limit_a = 0.4;  // 100 % of the sine table; seed 000 §8: the motor's rated 0.4 A/phase
+    double supply_v = 12.0;        // VMOT: seed 000 §8 drives the motors at 12 V
+    // Averaging time of the chopper: a few PWM periods (the DRV8825's fixed off-time is about 30 us;
+    // SLVSA73 §7.6 tOFF). Shorter tracks the set-point more tightly and makes the ODE stiffer.
+    double chop_tau_s = 20e-6;
+};
+
+// Full-scale current from the reference voltage: I = VREF / (5 x R_SENSE) (SLVSA73 §8.3.4, eq. 1; the
+// factor 5 is the chip's current-sense amplifier gain).
+[[nodiscard]] double current_limit_from_vref_a(double vref_v, double r_sense_ohm);
+
+struct WindingSetpoints {
+    double a_a = 0.0;  // winding A current set-point, A
+    double b_a = 0.0;
+};
+
+// Set-points at indexer position `units` (1/32-step units, home = 0 -> 71 % / 71 %), scaled by the limit.
+[[nodiscard]] WindingSetpoints winding_setpoints(std::int64_t units, const DriverElectrics& drv, bool enabled);
+
+// Averaged bridge voltage for one winding: R i_ref + e + L (i_ref - i) / tau, clamped to +-VMOT.
+[[nodiscard]] double bridge_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm,
+                                      double inductance_h, const DriverElectrics& drv);
+
+}  // namespace cnc::mech

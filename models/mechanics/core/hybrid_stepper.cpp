@@ -1,0 +1,63 @@
+#include "mechanics/core/hybrid_stepper.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "common/bad_input.hpp"
+
+namespace cnc::mech {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kHomeElectricalRad = kPi / 4.0;  // DRV8825 home state, 45 deg (drv8825_modes.hpp)
+
+void require(bool ok, const char* what, double v) {
+    if (!ok) throw BadInput("", std::string("motor ") + what + " (got " + std::to_string(v) + ")");
+}
+
+}  // namespace
+
+double HybridStepperParams::torque_constant_nm_per_a() const {
+    return holding_torque_nm / (std::sqrt(2.0) * rated_current_a);
+}
+
+double HybridStepperParams::full_step_rad() const { return kPi / (2.0 * rotor_teeth); }
+
+void validate(const HybridStepperParams& p) {
+    require(p.rotor_teeth > 0, "rotor_teeth must be > 0", p.rotor_teeth);
+    require(p.holding_torque_nm > 0.0, "holding_torque_nm must be > 0", p.holding_torque_nm);
+    require(p.rated_current_a > 0.0, "rated_current_a must be > 0", p.rated_current_a);
+    require(p.resistance_ohm > 0.0, "resistance_ohm must be > 0", p.resistance_ohm);
+    require(p.inductance_h > 0.0, "inductance_mh must be > 0", p.inductance_h);
+    require(p.rotor_inertia_kgm2 > 0.0, "rotor_inertia_gcm2 must be > 0", p.rotor_inertia_kgm2);
+    require(p.detent_torque_nm >= 0.0, "detent_torque_nm must be >= 0", p.detent_torque_nm);
+    require(p.viscous_nm_per_rad_s >= 0.0, "viscous_nm_s_per_rad must be >= 0", p.viscous_nm_per_rad_s);
+    require(p.coulomb_nm >= 0.0, "coulomb_nm must be >= 0", p.coulomb_nm);
+}
+
+double rotor_electrical_rad(const HybridStepperParams& p, double theta_rad) {
+    return p.rotor_teeth * theta_rad + kHomeElectricalRad;
+}
+
+double electromagnetic_torque_nm(const HybridStepperParams& p, double theta_rad, WindingCurrents i) {
+    const double psi = rotor_electrical_rad(p, theta_rad);
+    return p.torque_constant_nm_per_a() * (-i.a_a * std::sin(psi) + i.b_a * std::cos(psi));
+}
+
+WindingCurrents back_emf_v(const HybridStepperParams& p, double theta_rad, double omega_rad_s) {
+    const double psi = rotor_electrical_rad(p, theta_rad);
+    const double k = p.torque_constant_nm_per_a() * omega_rad_s;
+    return {-k * std::sin(psi), k * std::cos(psi)};
+}
+
+double detent_torque_nm(const HybridStepperParams& p, double theta_rad) {
+    return -p.detent_torque_nm * std::sin(4.0 * p.rotor_teeth * theta_rad);
+}
+
+double detent_energy_j(const HybridStepperParams& p, double theta_rad) {
+    const double n = 4.0 * p.rotor_teeth;
+    return p.detent_torque_nm / n * (1.0 - std::cos(n * theta_rad));
+}
+
+}  // namespace cnc::mech

@@ -1,0 +1,56 @@
+// Two-phase hybrid stepper: torque and back-EMF of the two windings against the rotor angle.
+//
+// Rotor angle theta (shaft rad) is 0 at the DRV8825 home state, so the electrical angle of the rotor is
+// psi = N_r theta + 45 deg (home = 45 deg electrical, drv8825_modes.hpp). With winding currents i_a, i_b:
+//   T_em = K_m (-i_a sin psi + i_b cos psi)      e_a = -K_m omega sin psi,  e_b = K_m omega cos psi
+// so sinusoidal set-points i = I (cos phi, sin phi) give T_em = K_m I sin(phi - psi): the torque-angle
+// curve T_hold sin(N_r x load angle), stable where the rotor's electrical angle equals the commanded one.
+// Detent (cogging) torque -T_det sin(4 N_r theta) has one period per full step.
+//
+// Defaults: the seed 000 motor, Wantai 42BYGHW208 (seed 000 §8: 1.8 deg, 12 V, 0.4 A/phase, 2,800 g cm).
+// Winding 30 ohm and 37 mH per phase: Wantai's 42BYGHW208 listing (wantmotor.com, 42BYGHW series, 34 mm
+// body; the same figures are quoted in the ACIS project's motor notes, github.com/mattybabaallos/ACIS/wiki/
+// Motors-Information, which are those of the 0.4 A / 34 mm motor). Rotor inertia and detent torque are not
+// in the sources we could find for this part: 34 g cm2 and 150 g cm are the values 42 mm x 34 mm 1.8 deg
+// motors list (e.g. the 17HS13 family); set them from a measured motor if you have one.
+#pragma once
+
+namespace cnc::mech {
+
+struct HybridStepperParams {
+    int rotor_teeth = 50;                   // 1.8 deg full step = 90 electrical deg / 50 teeth
+    double holding_torque_nm = 2800.0 * 9.80665e-5;  // 2,800 g cm (seed 000 §8), both phases at rated current
+    double rated_current_a = 0.4;           // per phase (seed 000 §8)
+    double resistance_ohm = 30.0;           // per phase (Wantai listing)
+    double inductance_h = 0.037;            // per phase, 37 mH (Wantai listing)
+    double rotor_inertia_kgm2 = 34e-7;      // 34 g cm2 (typical of the frame; see above)
+    double detent_torque_nm = 0.0147;       // 150 g cm (typical of the frame; see above)
+    double viscous_nm_per_rad_s = 1e-4;     // bearing and iron-loss damping: an estimate, not a data sheet value
+    double coulomb_nm = 2e-3;               // bearing friction: an estimate, not a data sheet value
+
+    // Torque per ampere of the current vector: the holding torque is rated with both phases at the rated
+    // current, a vector of sqrt(2) x I_rated.
+    [[nodiscard]] double torque_constant_nm_per_a() const;
+    // Shaft radians per full step (pi / (2 N_r)).
+    [[nodiscard]] double full_step_rad() const;
+};
+
+// Rejects values outside physics (BadInput naming the parameter).
+void validate(const HybridStepperParams& p);
+
+struct WindingCurrents {
+    double a_a = 0.0;
+    double b_a = 0.0;
+};
+
+// Electrical angle of the rotor, rad (psi above).
+[[nodiscard]] double rotor_electrical_rad(const HybridStepperParams& p, double theta_rad);
+// Electromagnetic torque of the two winding currents, N m.
+[[nodiscard]] double electromagnetic_torque_nm(const HybridStepperParams& p, double theta_rad, WindingCurrents i);
+// Back-EMF of the two windings at rotor speed omega, V.
+[[nodiscard]] WindingCurrents back_emf_v(const HybridStepperParams& p, double theta_rad, double omega_rad_s);
+// Detent torque and its potential energy (zero at the detent minima).
+[[nodiscard]] double detent_torque_nm(const HybridStepperParams& p, double theta_rad);
+[[nodiscard]] double detent_energy_j(const HybridStepperParams& p, double theta_rad);
+
+}  // namespace cnc::mech

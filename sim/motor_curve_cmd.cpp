@@ -1,0 +1,61 @@
+#include "motor_curve_cmd.hpp"
+
+#include <optional>
+#include <sstream>
+
+#include "common/text_format.hpp"
+#include "mechanics/core/motor_curve.hpp"
+#include "output/output_file.hpp"
+#include "scenario/scenario.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+constexpr int kRatePoints = 16;
+constexpr double kRateSpanOfMaxVelocity = 2.0;  // the table runs to twice the axis velocity limit
+constexpr double kPullInSearchOfMaxVelocity = 4.0;
+
+}  // namespace
+
+int cmd_motor_curve(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& axis,
+                    const std::string& csv_path, std::ostream& out) {
+    const Scenario s = load_scenario(scenario_path, sets);
+    const host::AxisMachine& m = axis == "x" ? s.machine.x : s.machine.y;
+    const mech::AxisParams p = axis_params(s.mechanics, m, axis == "x" ? s.mechanics.x : s.mechanics.y);
+    const double full_steps_per_mm = 360.0 / m.step_angle_deg / m.travel_per_motor_rev_mm();
+    const double max_rate = m.limits.max_velocity_mm_per_s * full_steps_per_mm;
+    const double accel_nm = mech::acceleration_torque_nm(p, m.limits.max_accel_mm_per_s2);
+
+    std::optional<OutputFile> csv_file;
+    if (!csv_path.empty()) csv_file.emplace(csv_path, "--csv");
+    std::ostringstream csv;
+    csv << "full_steps_per_s,speed_mm_per_s,pull_out_torque_nm,required_torque_nm,required_torque_at_max_accel_nm\n";
+    out << "motor curve, axis " << axis << ": " << format("%.3f", p.driver.current_limit_a) << " A at "
+        << format("%.1f", p.driver.supply_v) << " V, 1/" << m.microsteps << " step, "
+        << format("%.2f", p.load.carriage_mass_kg) << " kg, holding torque at this current "
+        << format("%.4f", p.motor.torque_constant_nm_per_a() * p.driver.current_limit_a) << " N m\n";
+    out << "  steps/s    mm/s  pull-out N m  required N m  at " << format("%.0f", m.limits.max_accel_mm_per_s2)
+        << " mm/s2\n";
+    for (int i = 1; i <= kRatePoints; ++i) {
+        const double rate = max_rate * kRateSpanOfMaxVelocity * i / kRatePoints;
+        const double pull_out = mech::pull_out_torque_nm(p, m.microsteps, rate);
+        const double required = mech::required_torque_nm(p, rate);
+        const double speed = rate / full_steps_per_mm;
+        out << format("%9.1f %7.2f %13.4f", rate, speed, pull_out)
+            << format(" %13.4f %13.4f\n", required, required + accel_nm);
+        csv << format("%.3f,%.4f,%.6f", rate, speed, pull_out) << format(",%.6f,%.6f\n", required, required + accel_nm);
+    }
+    const double pull_in = mech::pull_in_rate(p, m.microsteps, max_rate * kPullInSearchOfMaxVelocity);
+    out << "pull-in (start-stop without a ramp, this load): " << format("%.1f", pull_in) << " full steps/s = "
+        << format("%.2f", pull_in / full_steps_per_mm) << " mm/s = F" << format("%.0f", 60.0 * pull_in / full_steps_per_mm)
+        << "\n";
+    if (csv_file) {
+        csv_file->stream() << csv.str();
+        csv_file->close();
+        out << "csv: " << csv_path << "\n";
+    }
+    return 0;
+}
+
+}  // namespace cnc::sim

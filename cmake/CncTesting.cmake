@@ -13,7 +13,8 @@ function(cnc_add_gtest NAME)
     target_link_libraries(${NAME} PRIVATE GTest::gtest_main)
   endif()
   target_include_directories(${NAME} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
-  target_compile_definitions(${NAME} PRIVATE CNC_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_compile_definitions(${NAME} PRIVATE CNC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+                             CNC_TEST_OUT_DIR="${PROJECT_BINARY_DIR}/test_out")  # support/test_path.hpp
   gtest_discover_tests(${NAME}
     TEST_PREFIX "${T_LABEL}/"
     DISCOVERY_TIMEOUT 30

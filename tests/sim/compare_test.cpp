@@ -104,9 +104,23 @@ TEST(CompareTable, MarkdownHasAColumnPerArchitectureAndDashesForMissingValues) {
     cnc::sim::CompareColumn a{"fpga-uart", 0, {{"metrics", {{"job", {{"job_time_s", 1.5}}}}}}};
     cnc::sim::CompareColumn b{"atmega", 2, nullptr};
     const std::string md = cnc::sim::compare_table({a, b}, cnc::sim::TableFormat::Markdown);
-    EXPECT_NE(md.find("| metric                     | fpga-uart |    atmega |"), std::string::npos) << md;
-    EXPECT_NE(md.find("| status                     |        ok | bad input |"), std::string::npos) << md;
-    EXPECT_NE(md.find("| job time [s]               |    1.5000 |         - |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| metric                         | fpga-uart |    atmega |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| status                         |        ok | bad input |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| job time [s]                   |    1.5000 |         - |"), std::string::npos) << md;
     EXPECT_NE(cnc::sim::compare_table({a}, cnc::sim::TableFormat::Csv).find("\"job time [s]\",\"1.5000\""),
               std::string::npos);
+}
+
+// The machine rows are what the run was given: shown for a failed run too, whose results are not.
+TEST(CompareTable, StatesTheMachineOfEveryRunEvenAFailedOne) {
+    const nlohmann::json machine = {{"rapid_feed_mm_per_min", 1200.0},
+                                    {"x", {{"steps_per_mm", 160.0}, {"max_velocity_mm_per_s", 100.0}}}};
+    cnc::sim::CompareColumn failed{"fpga-uart", 1,
+                                   {{"scenario", {{"machine", machine}}}, {"metrics", {{"job", {{"job_time_s", 1.5}}}}}}};
+    const std::string md = cnc::sim::compare_table({failed}, cnc::sim::TableFormat::Markdown);
+    EXPECT_NE(md.find("| machine: X steps/mm            |  160.0000 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| machine: X velocity max [mm/s] |     100.0 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| machine: rapid speed [mm/min]  |    1200.0 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| job time [s]                   |         - |"), std::string::npos) << md;
+    EXPECT_EQ(cnc::sim::compare_json({failed}).at(0).at("machine"), machine);
 }

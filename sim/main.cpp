@@ -191,7 +191,9 @@ int sc_main(int argc, char* argv[]) {
     try {
         if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, progress);
         if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report);
-        if (analyze->parsed()) return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, commanded, report);
+        if (analyze->parsed()) {
+            return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, commanded, report);
+        }
         return cmd_keys();
     } catch (const cnc::BadInput& e) {
         std::cerr << "cncsim: " << e.what() << '\n';

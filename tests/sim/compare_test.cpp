@@ -115,8 +115,9 @@ TEST(CompareTable, MarkdownHasAColumnPerArchitectureAndDashesForMissingValues) {
 TEST(CompareTable, StatesTheMachineOfEveryRunEvenAFailedOne) {
     const nlohmann::json machine = {{"rapid_feed_mm_per_min", 1200.0},
                                     {"x", {{"steps_per_mm", 160.0}, {"max_velocity_mm_per_s", 100.0}}}};
-    cnc::sim::CompareColumn failed{"fpga-uart", 1,
-                                   {{"scenario", {{"machine", machine}}}, {"metrics", {{"job", {{"job_time_s", 1.5}}}}}}};
+    const nlohmann::json report = {{"scenario", {{"machine", machine}}},
+                                   {"metrics", {{"job", {{"job_time_s", 1.5}}}}}};
+    cnc::sim::CompareColumn failed{"fpga-uart", 1, report};
     const std::string md = cnc::sim::compare_table({failed}, cnc::sim::TableFormat::Markdown);
     EXPECT_NE(md.find("| machine: X steps/mm            |  160.0000 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| machine: X velocity max [mm/s] |     100.0 |"), std::string::npos) << md;

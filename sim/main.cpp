@@ -15,6 +15,7 @@
 #include "compare/compare.hpp"
 #include "compare/compare_outputs.hpp"
 #include "metrics/analyze_input.hpp"
+#include "metrics/commanded_rates.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/vcd_reader.hpp"
 #include "motor_curve_cmd.hpp"
@@ -90,15 +91,22 @@ std::vector<cnc::metrics::AxisSignalNames> analyze_axes(const std::vector<std::s
 }
 
 int cmd_analyze(const std::string& vcd_path, const std::vector<cnc::metrics::AxisSignalNames>& axes,
-                double steps_per_mm, const std::string& report) {
+                double steps_per_mm, const std::string& commanded, const std::string& report) {
     // CLI11's PositiveNumber lets nan and inf through (nan <= 0 is false).
     if (!std::isfinite(steps_per_mm)) throw cnc::BadInput("--steps-per-mm", "must be a finite number > 0");
     if (!report.empty()) cnc::sim::check_output_path(report, "--report");
     std::ifstream in(vcd_path);
     if (!in) throw cnc::BadInput(vcd_path, "cannot open the VCD file");
     const cnc::metrics::VcdContents vcd = cnc::metrics::read_vcd(in, vcd_path);
-    const cnc::metrics::RunInput input = cnc::metrics::analyze_input(
+    cnc::metrics::RunInput input = cnc::metrics::analyze_input(
         vcd, vcd_path, axes, steps_per_mm > 0 ? std::optional<double>(steps_per_mm) : std::nullopt);
+    if (!commanded.empty()) {
+        std::ifstream run_report(commanded);
+        if (!run_report) throw cnc::BadInput(commanded, "cannot open the run's report (--commanded)");
+        const nlohmann::json j = nlohmann::json::parse(run_report, nullptr, false);
+        if (j.is_discarded()) throw cnc::BadInput(commanded, "not a JSON file (--commanded)");
+        input.rate_segments = cnc::metrics::commanded_rates_from_report(j, commanded, axes.size());
+    }
     const cnc::metrics::RunMetrics m = cnc::metrics::compute_metrics(input);
     std::cout << cnc::metrics::summary_table(m);
     if (!report.empty()) write_json(report, cnc::metrics::to_json(m));
@@ -150,7 +158,7 @@ int sc_main(int argc, char* argv[]) {
     app.set_version_flag("--version", std::string("cncsim ") + CNCSIM_VERSION + "\nSystemC " + sc_core::sc_release(),
                          "print the cncsim and SystemC versions and exit");
 
-    std::string scenario, vcd, report, vcd_in, plots, plot_data, out_dir;
+    std::string scenario, vcd, report, vcd_in, commanded, plots, plot_data, out_dir;
     std::vector<std::string> sets, steps, dirs, enables;
     double steps_per_mm = 0.0;
     bool detail = false;
@@ -184,6 +192,9 @@ int sc_main(int argc, char* argv[]) {
                                      "nENBL)"));
     analyze->add_option("--steps-per-mm", steps_per_mm, "steps per mm, for distances and speeds")
         ->check(CLI::PositiveNumber);
+    analyze->add_option("--commanded", commanded,
+                        "REPORT.json of the run that wrote the VCD (`cncsim run --detail`): split pulse runs where "
+                        "its command changed, not by period");
     analyze->add_option("--report", report, "write the JSON report to this file");
 
     std::string archs = "fpga-uart,atmega,spi-fpga";
@@ -220,7 +231,9 @@ int sc_main(int argc, char* argv[]) {
         if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, progress, plots, plot_data);
         if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report, out_dir);
         if (curve->parsed()) return cnc::sim::cmd_motor_curve(scenario, sets, curve_axis, curve_csv, std::cout);
-        if (analyze->parsed()) return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, report);
+        if (analyze->parsed()) {
+            return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, commanded, report);
+        }
         return cmd_keys();
     } catch (const cnc::BadInput& e) {
         std::cerr << "cncsim: " << e.what() << '\n';

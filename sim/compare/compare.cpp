@@ -26,10 +26,20 @@ struct Row {
     const char* label;
     const char* pointer;  // JSON pointer into a run report
     const char* format;   // printf format of the value
+    bool setting = false; // what the run was given (shown for a failed run too), not a result
 };
 
-// The headline numbers of DESIGN.md §4, in the order a reader compares them.
+// The machine each run used, then the headline numbers of DESIGN.md §4 in the order a reader compares them.
 constexpr Row kRows[] = {
+    {"machine: X steps/mm", "/scenario/machine/x/steps_per_mm", "%.4f", true},
+    {"machine: X velocity max [mm/s]", "/scenario/machine/x/max_velocity_mm_per_s", "%.1f", true},
+    {"machine: X accel max [mm/s^2]", "/scenario/machine/x/max_accel_mm_per_s2", "%.0f", true},
+    {"machine: X jerk max [mm/s^3]", "/scenario/machine/x/max_jerk_mm_per_s3", "%.0f", true},
+    {"machine: Y steps/mm", "/scenario/machine/y/steps_per_mm", "%.4f", true},
+    {"machine: Y velocity max [mm/s]", "/scenario/machine/y/max_velocity_mm_per_s", "%.1f", true},
+    {"machine: Y accel max [mm/s^2]", "/scenario/machine/y/max_accel_mm_per_s2", "%.0f", true},
+    {"machine: Y jerk max [mm/s^3]", "/scenario/machine/y/max_jerk_mm_per_s3", "%.0f", true},
+    {"machine: rapid speed [mm/min]", "/scenario/machine/rapid_feed_mm_per_min", "%.1f", true},
     {"job time [s]", "/metrics/job/job_time_s", "%.4f"},
     {"motion time [s]", "/metrics/job/motion_time_s", "%.4f"},
     {"dead time total [ms]", "/metrics/job/dead_total_ms", "%.3f"},
@@ -51,7 +61,7 @@ constexpr Row kRows[] = {
 // A failed run's figures cover only what ran before it stopped: never shown as a result (its JSON keeps them
 // apart as partial_metrics).
 std::string cell(const CompareColumn& c, const Row& row) {
-    if (c.report.is_null() || c.exit_code != 0) return "-";
+    if (c.report.is_null() || (c.exit_code != 0 && !row.setting)) return "-";
     const nlohmann::json::json_pointer ptr(row.pointer);
     if (!c.report.contains(ptr) || !c.report.at(ptr).is_number()) return "-";
     return format(row.format, c.report.at(ptr).get<double>());
@@ -186,6 +196,7 @@ nlohmann::json compare_json(const std::vector<CompareColumn>& columns) {
         }
         nlohmann::json metrics = nlohmann::json::object();
         for (const Row& row : kRows) {
+            if (row.setting) continue;
             const nlohmann::json::json_pointer ptr(row.pointer);
             metrics[row.pointer + 1] =
                 !c.report.is_null() && c.report.contains(ptr) ? c.report.at(ptr) : nlohmann::json(nullptr);
@@ -193,6 +204,9 @@ nlohmann::json compare_json(const std::vector<CompareColumn>& columns) {
         nlohmann::json column = {{"architecture", c.architecture},
                                  {"status", status(c)},
                                  {"exit_code", c.exit_code},
+                                 {"machine", c.report.is_null() ? nlohmann::json(nullptr)
+                                                                : c.report.value("scenario", nlohmann::json::object())
+                                                                      .value("machine", nlohmann::json())},
                                  {"warnings", c.report.is_null() ? nlohmann::json::array()
                                                                  : c.report.value("warnings", nlohmann::json::array())},
                                  {"best", best}};

@@ -1,7 +1,9 @@
 #include "run/run.hpp"
 
 #include <sstream>
+#include <utility>
 
+#include "metrics/commanded_rates.hpp"
 #include "metrics/metrics.hpp"
 #include "run/job.hpp"
 #include "run/program_report.hpp"
@@ -13,6 +15,19 @@ namespace cnc::sim {
 
 namespace {
 
+// The machine every architecture of a comparison shares (its columns show it): per axis the resolution and the
+// limits, and the rapid speed.
+nlohmann::json machine_json(const Scenario& s) {
+    nlohmann::json out = {{"rapid_feed_mm_per_min", s.interpreter.rapid_feed_mm_per_min}};
+    for (const auto& [name, axis] : {std::pair{"x", &s.machine.x}, std::pair{"y", &s.machine.y}}) {
+        out[name] = {{"steps_per_mm", axis->steps_per_mm()},
+                     {"max_velocity_mm_per_s", axis->limits.max_velocity_mm_per_s},
+                     {"max_accel_mm_per_s2", axis->limits.max_accel_mm_per_s2},
+                     {"max_jerk_mm_per_s3", axis->limits.max_jerk_mm_per_s3}};
+    }
+    return out;
+}
+
 nlohmann::json scenario_json(const Scenario& s, const ArchRun& arch) {
     return {{"name", s.name},
             {"file", s.file},
@@ -20,6 +35,7 @@ nlohmann::json scenario_json(const Scenario& s, const ArchRun& arch) {
             {"job", s.job_path},
             {"seed", s.seed},
             {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}},
+            {"machine", machine_json(s)},
             {"detail", s.detail},
             {"estimated_s", arch.estimated_s},
             {"max_sim_s", arch.max_sim_s}};
@@ -70,6 +86,10 @@ RunOutcome run_scenario(const Scenario& s) {
                   {"warnings", warnings_json(arch.warnings, s.detail)},
                   {"gcode", job.program ? program_json(*job.program) : nlohmann::json(nullptr)},
                   {"ok", arch.ok}};
+    // What `analyze --commanded` splits pulse runs by; per servo period, so only with --detail.
+    if (!arch.input.rate_segments.empty()) {
+        out.report["commanded_rates"] = s.detail ? metrics::commanded_rates_json(arch.input) : nlohmann::json(nullptr);
+    }
     if (!arch.ok) {
         out.report["failure"] = arch.failure;
         out.report["metrics_partial"] = true;

@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "common/bad_input.hpp"
 #include "common/text_format.hpp"
@@ -141,8 +144,29 @@ void read_trace_window(KeyReader& r, Scenario& s) {
     if (to_s > 0.0) s.trace_to_ps = s_to_ps(to_s);
 }
 
+// Keys an earlier cncsim read, now a machine key that every architecture takes: refused with the new name, so that
+// an old scenario does not silently run with the default.
+void reject_moved_keys(const KeyReader& r) {
+    std::vector<std::pair<std::string, std::string>> moved = {
+        {"host.rapid_feed_mm_per_min", "machine.rapid_feed_mm_per_min (mm/min)"},
+        {"planner.rapid_velocity_mm_per_s", "machine.rapid_feed_mm_per_min (mm/min: 60 x the mm/s value)"}};
+    for (const char* axis : {"x", "y"}) {
+        for (const char* limit : {"max_velocity_mm_per_s", "max_accel_mm_per_s2", "max_jerk_mm_per_s3"}) {
+            moved.emplace_back(std::string("planner.") + axis + "." + limit,
+                               std::string("machine.") + axis + "." + limit);
+        }
+    }
+    for (const auto& [old_key, new_key] : moved) {
+        if (r.has(old_key)) {
+            r.fail(old_key, "replaced by " + new_key + ": one machine for every architecture (README, "
+                            "\"Which keys apply to which architecture\")");
+        }
+    }
+}
+
 // Reads every key (registering its documentation); `base` resolves relative paths.
 Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
+    reject_moved_keys(r);
     Scenario s;
     s.file = file;
     s.name = r.get_string("scenario.name", fs::path(file).stem().string(), "name shown in reports");
@@ -175,6 +199,13 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.machine.soft_limits = r.get_bool("machine.soft_limits", s.machine.soft_limits,
                                        "refuse a G-code job or start position that leaves [0, travel_mm] on an axis "
                                        "with a travel (grbl $20); false: no check");
+    // One rapid speed, as LinuxCNC has one traverse limit over its per-axis MAX_VELOCITY (grbl's rapids run at the
+    // axis max rates: a value at or above the axis limits gives that).
+    s.interpreter.rapid_feed_mm_per_min = r.get_float(
+        "machine.rapid_feed_mm_per_min", s.interpreter.rapid_feed_mm_per_min, 1.0, 65535.0,
+        "G0 speed, mm/min, of every architecture (seed 000 test log: 1200), held to the axis velocity limits: "
+        "the fpga-uart G0 packet feed, each axis's speed in an atmega G00 (the seed's dog-leg), the spi-fpga "
+        "planner's G0 path speed");
     check_start(r, s.interpreter.start_mm, s.machine);
 
     s.driver.strict = r.get_bool("driver.strict", s.driver.strict,
@@ -223,9 +254,6 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                               : host::FeedRounding::Truncate;
     s.cam.correct_rapid_feed = r.get_bool("host.correct_rapid_feed", s.cam.correct_rapid_feed,
                                           "G0 feed reduced to the dominant axis like G1");
-    s.interpreter.rapid_feed_mm_per_min = r.get_float(
-        "host.rapid_feed_mm_per_min", s.interpreter.rapid_feed_mm_per_min, 1.0, 65535.0,
-        "feed of G0 moves, mm/min (seed 000 test log: 1200)");
     s.interpreter.operator_pause_s = r.get_float(
         "host.operator_pause_s", s.interpreter.operator_pause_s, 0.0, 1e6,
         "time an operator takes to resume after M0/M1/M60 (the job pauses that long), s");

@@ -31,8 +31,6 @@ void read_planner(KeyReader& r, host::planner::PlannerConfig& c) {
                                       "largest distance of a corner blend from the corner, mm (G64 P); 0: stop");
     c.lookahead_moves = static_cast<int>(r.get_int("planner.lookahead_moves", c.lookahead_moves, 1, 100'000,
                                                    "programmed moves the planner sees ahead"));
-    c.rapid_velocity_mm_per_s = r.get_float("planner.rapid_velocity_mm_per_s", c.rapid_velocity_mm_per_s, 0.0, 1e5,
-                                            "G0 path speed, mm/s; 0: as fast as the axis limits allow");
 }
 
 void read_servo(KeyReader& r, host::servo::ServoConfig& c) {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "atmega_test_util.hpp"
 #include "uart/core/line_receiver.hpp"
@@ -36,40 +38,60 @@ TEST(AtmegaSpeed, ThesisOcr3MeasuredFromTheStepEdges) {
 
 
 
-// Check 3: G1 X20 Y7 at 10 mm/s: OCR0A 4 (X 1562.5 steps/s), OCR2A 13 (Y 558.04 steps/s). Only X is counted
-// (3200 steps, 2.048 s); Y runs for that time: its edges at 7 + 14 k timer periods of 1024 cycles that fall
-// inside, 1143 against the 1120 commanded: 23 steps (143.75 um) past the end point.
-// Contour error: in timer ticks of 1024 cycles X rises at 10 k - 5 (k = 1..3200) and Y at 28 j - 14, so Y's last
-// rise (j = 1143: 31 990) comes before X's last (31 995): the tool is then at (3199, 1143) steps, one X step short
-// of the end and 23 Y steps above it. That point lies past the end of the programmed segment (its projection on
-// (20, 7) is 449.88 / 449 of it), so its nearest point on the path is the end (20, 7): 6.25 um x sqrt(1 + 23^2)
-// = 143.886 um, more than the final (3200, 1143), 143.75 um; the points before drift up from the line at 2 %
-// of the Y travel and are nearer.
+// Check 3: G1 X20 Y7 at 10 mm/s, every figure from seed 003's arithmetic (spec §4.3-4.6), not from the run:
+// - PC maths (eqs. 4.74-4.77): dz = sqrt(20^2 + 7^2) = sqrt(449) mm, v_x = 10 x 20/dz = 9.4388 mm/s,
+//   v_y = 10 x 7/dz = 3.3036 mm/s; OCR = f/(2 N v/s) - 1 truncated, f = 16 MHz, N = 1024, s = 1/160 mm:
+//   OCR0A = 5.174 - 1 -> 4, OCR2A = 14.782 - 1 -> 13.
+// - Toggle law (eq. 2.3, two matches per microstep): a STEP period of 2 x 1024 x (OCR + 1) cycles, so in timer
+//   ticks of 1024 cycles X rises at 5 (2k - 1), k = 1..3200 (20 mm x 160), its last at 31 995, and Y at
+//   14 (2j - 1): the rises with 14 (2j - 1) <= 31 995 are j = 1..floor((31 995 / 14 + 1) / 2) = 1143.
+// - Only X is counted: Y runs for X's time, 1143 steps against 7 x 160 = 1120 commanded, 23 steps past the end.
+// - Contour error: Y's last rise (tick 31 990) comes before X's last (31 995): the tool is then at (3199, 1143)
+//   steps, one X step short of the end and 23 Y steps above it. That point lies past the end of the programmed
+//   segment (its projection on (20, 7) is 449.88 / 449 of it), so its nearest point on the path is the end:
+//   6.25 um x sqrt(1 + 23^2) = 143.886 um, more than the final (3200, 1143), 143.75 um; the points before drift
+//   up from the line at 2 % of the Y travel and are nearer.
 TEST(AtmegaDiagonal, RatesFollowTheEightBitWordsNotTheCommandedRatio) {
+    constexpr double kF_hz = 16e6;             // seed 003: 16 MHz crystal
+    constexpr double kPrescaler = 1024.0;      // G01: TCCR0B = 0b101 (and the build's Timer2 at /1024)
+    constexpr double kStepMm = 1.0 / 160.0;    // 1/32 microstep on the GT2 20T belt
+    const double dz = std::sqrt(20.0 * 20.0 + 7.0 * 7.0);
+    const auto ocr = [&](double v_mm_per_s) {
+        return static_cast<int>(std::floor(kF_hz / (2.0 * kPrescaler * (v_mm_per_s / kStepMm)) - 1.0));
+    };
+    const int ocr_x = ocr(10.0 * 20.0 / dz);
+    const int ocr_y = ocr(10.0 * 7.0 / dz);
+    ASSERT_EQ(ocr_x, 4);
+    ASSERT_EQ(ocr_y, 13);
+    const std::int64_t x_steps = 20 * 160;
+    const std::int64_t x_last_tick = (ocr_x + 1) * (2 * x_steps - 1);
+    const std::int64_t y_steps = (x_last_tick / (ocr_y + 1) + 1) / 2;
+    ASSERT_EQ(y_steps, 1143);
+    const std::int64_t y_excess = y_steps - 7 * 160;
+    ASSERT_EQ(y_excess, 23);
+
     const auto out = run_atmega("diagonal_20x7", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& motion = out.report.at("atmega").at("commands").at(0).at("motions").at(0);
-    EXPECT_EQ(motion.at("ocr"), nlohmann::json({4, 13}));
+    EXPECT_EQ(motion.at("ocr"), nlohmann::json({ocr_x, ocr_y}));
     const auto xr = out.arch.input.axes[0].step.rising();
     const auto yr = out.arch.input.axes[1].step.rising();
-    ASSERT_EQ(xr.size(), 3200U);
-    for (const TimePs d : periods(xr)) ASSERT_EQ(d, step_period_ps(4));
-    for (const TimePs d : periods(yr)) ASSERT_EQ(d, step_period_ps(13));
+    ASSERT_EQ(xr.size(), static_cast<std::size_t>(x_steps));
+    for (const TimePs d : periods(xr)) ASSERT_EQ(d, step_period_ps(ocr_x));
+    for (const TimePs d : periods(yr)) ASSERT_EQ(d, step_period_ps(ocr_y));
     // Both timers start on the same cycle (GTCCR.TSM): the first rises after one match each.
-    EXPECT_EQ(yr.front() - xr.front(), (14 - 5) * 1024 * kAvrCyclePs);
-    const TimePs x_time = 3200 * step_period_ps(4);
-    const auto expected_y = static_cast<std::size_t>((x_time - step_period_ps(13) / 2) / step_period_ps(13) + 1);
-    EXPECT_EQ(expected_y, 1143U);
-    EXPECT_EQ(yr.size(), expected_y);
+    EXPECT_EQ(yr.front() - xr.front(), (ocr_y - ocr_x) * 1024 * kAvrCyclePs);
+    EXPECT_EQ(yr.size(), static_cast<std::size_t>(y_steps));
     const auto& x = out.metrics.axes[0].runs.at(0);
     const auto& y = out.metrics.axes[1].runs.at(0);
     const double ratio = *x.rate_achieved_steps_per_s / *y.rate_achieved_steps_per_s;
-    EXPECT_NEAR(ratio, 14.0 / 5.0, 1e-12);  // (OCR2A + 1) / (OCR0A + 1)
-    EXPECT_NEAR(ratio / (20.0 / 7.0) - 1.0, -0.02, 1e-12);  // 2 % off the commanded ratio
+    EXPECT_NEAR(ratio, (ocr_y + 1.0) / (ocr_x + 1.0), 1e-12);
+    EXPECT_NEAR(ratio / (20.0 / 7.0) - 1.0, -0.02, 1e-12);  // 14/5 against 20/7: 2 % off the commanded ratio
     const auto& move = out.metrics.moves.at(0);
-    EXPECT_EQ(move.steps_emitted, (std::vector<std::int64_t>{3200, 1143}));
-    EXPECT_NEAR(*move.path.endpoint_vs_command_um, 23 * 6.25, 1e-6);
-    EXPECT_NEAR(*out.metrics.path.contour_max_um, 6.25 * std::sqrt(1.0 + 23.0 * 23.0), 1e-9);
+    EXPECT_EQ(move.steps_emitted, (std::vector<std::int64_t>{x_steps, y_steps}));
+    const double step_um = kStepMm * 1000.0;
+    EXPECT_NEAR(*move.path.endpoint_vs_command_um, static_cast<double>(y_excess) * step_um, 1e-6);
+    EXPECT_NEAR(*out.metrics.path.contour_max_um, step_um * std::hypot(1.0, static_cast<double>(y_excess)), 1e-9);
     EXPECT_EQ(*out.metrics.pulse.tie_max_ns, 0.0);
 }
 

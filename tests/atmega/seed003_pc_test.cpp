@@ -110,7 +110,7 @@ TEST(Seed003Plan, DxZeroWorkaround) {
     EXPECT_EQ(m.portb & 0x20, 0x20);  // DIR_Y = 1: -Y
 }
 
-// G00: both counts and one OCR from v_max (host.rapid_feed_mm_per_min 1200 = 20 mm/s: 1.44 -> 1), head off.
+// G00: both counts and one OCR from v_max (machine.rapid_feed_mm_per_min 1200 = 20 mm/s: 1.44 -> 1), head off.
 TEST(Seed003Plan, G00SendsBothCountsAndOneOcr) {
     const s3::Plan p = plan("G0 X-10 Y2.5\n");
     const s3::Motion& m = p.commands.at(0).motions.at(0);

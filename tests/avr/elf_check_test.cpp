@@ -6,6 +6,7 @@
 
 #include "avr/core/elf_check.hpp"
 #include "common/bad_input.hpp"
+#include "support/test_path.hpp"
 
 using namespace cnc::avr;
 
@@ -21,7 +22,7 @@ std::string error_of(const std::string& path, std::uint32_t f_cpu_hz = 16'000'00
 }
 
 std::string temp_file(const std::string& name, const std::string& content) {
-    const std::string path = ::testing::TempDir() + name;
+    const std::string path = cnc::test::test_path(name);
     std::ofstream(path, std::ios::binary) << content;
     return path;
 }

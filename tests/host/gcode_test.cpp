@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "host_test_util.hpp"
+#include "support/test_path.hpp"
 
 namespace cnc::host {
 namespace {
@@ -240,7 +241,7 @@ TEST(HostGcode, StartPositionOption) {
 }
 
 TEST(HostGcode, InterpretFileReadsFromDisk) {
-    const std::string path = ::testing::TempDir() + "host_gcode_test.nc";
+    const std::string path = cnc::test::test_path("job.nc");
     {
         std::ofstream out(path);
         out << "G1 X3 Y4 F100\n";

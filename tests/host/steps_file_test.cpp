@@ -5,6 +5,7 @@
 
 #include "host/core/steps_file.hpp"
 #include "host_test_util.hpp"
+#include "support/test_path.hpp"
 
 namespace cnc::host {
 namespace {
@@ -111,7 +112,7 @@ TEST(HostStepsFile, AFileWithoutItsHeaderIsRefusedNotShortened) {
 }
 
 TEST(HostStepsFile, SaveAndLoadFile) {
-    const std::string path = ::testing::TempDir() + "host_steps_file_test.steps";
+    const std::string path = cnc::test::test_path("job.steps");
     const auto segs = cam(run_gcode("G1 X10 Y5 F1000\n"), {}, {});
     save_steps_file(path, segs);
     const auto back = load_steps_file(path);

@@ -38,7 +38,7 @@ TEST(PlannerConfig, EveryLimitMustBePositiveAndFinite) {
     }
 }
 
-TEST(PlannerConfig, ToleranceLookaheadAndRapid) {
+TEST(PlannerConfig, ToleranceAndLookahead) {
     PlannerConfig tol;
     tol.path_tolerance_mm = -0.01;
     expect_rejected(tol, "path_tolerance_mm");
@@ -48,9 +48,6 @@ TEST(PlannerConfig, ToleranceLookaheadAndRapid) {
     PlannerConfig look;
     look.lookahead_moves = 0;
     expect_rejected(look, "lookahead_moves");
-    PlannerConfig rapid;
-    rapid.rapid_velocity_mm_per_s = -5.0;
-    expect_rejected(rapid, "rapid_velocity_mm_per_s");
 }
 
 TEST(PlannerConfig, PlanValidatesFirst) {

@@ -29,7 +29,7 @@ TEST(PlannerJerk, AccelerationContinuousAndJerkBounded) {
         PlannerConfig cfg = config(mode, Profile::JerkLimited);
         cfg.path_tolerance_mm = 0.0;  // corners stop: no blend arcs (their curvature steps are not jerk-limited)
         cfg.y.max_jerk_mm_per_s3 = 20000.0;
-        const Trajectory t = plan(gcode(kLines), cfg);
+        const Trajectory t = plan(gcode(kLines, test::kRapidAboveTheAxes_mm_per_min), cfg);
         const double dt = 1e-5;
         const geom::Vec2 j = max_jerk(t, dt);
         // A step in acceleration would show as a jerk of (step / dt), far above the limits.
@@ -44,7 +44,7 @@ TEST(PlannerJerk, AccelerationContinuousAndJerkBounded) {
 }
 
 TEST(PlannerJerk, SamePathAsTrapezoidalButSlower) {
-    const Program p = gcode(kLines);
+    const Program p = gcode(kLines, test::kRapidAboveTheAxes_mm_per_min);
     for (BlendMode mode : {BlendMode::ExactStop, BlendMode::Continuous}) {
         const Trajectory trap = plan(p, config(mode, Profile::Trapezoidal));
         const Trajectory jerk = plan(p, config(mode, Profile::JerkLimited));

@@ -62,7 +62,7 @@ Check check(const Program& p, const Trajectory& t, const PlannerConfig& cfg) {
 }
 
 TEST(PlannerLimits, MixedJobWithinAxisLimitsEverywhere) {
-    const Program p = gcode(kMixedJob);
+    const Program p = gcode(kMixedJob, test::kRapidAboveTheAxes_mm_per_min);
     for (BlendMode mode : {BlendMode::ExactStop, BlendMode::Continuous}) {
         for (Profile profile : {Profile::Trapezoidal, Profile::JerkLimited}) {
             PlannerConfig cfg = config(mode, profile);
@@ -88,7 +88,7 @@ TEST(PlannerLimits, MixedJobWithinAxisLimitsEverywhere) {
 }
 
 TEST(PlannerLimits, PiecesJoinAndMoveWindowsAreOrdered) {
-    const Program p = gcode(kMixedJob);
+    const Program p = gcode(kMixedJob, test::kRapidAboveTheAxes_mm_per_min);
     const Trajectory t = plan(p, config(BlendMode::Continuous));
     const auto& pieces = t.pieces();
     int blends = 0;

@@ -16,10 +16,16 @@
 
 namespace cnc::host::planner::test {
 
-inline Program gcode(const std::string& text) {
+// `rapid_feed_mm_per_min`: the machine's rapid speed, the path speed the planner gives G0 (capped by the axes).
+inline Program gcode(const std::string& text, double rapid_feed_mm_per_min = 1200.0) {
     std::istringstream in(text);
-    return interpret(in, "t.nc", InterpreterOptions{});
+    InterpreterOptions opt;
+    opt.rapid_feed_mm_per_min = rapid_feed_mm_per_min;
+    return interpret(in, "t.nc", opt);
 }
+
+// A rapid speed above every axis limit of the tests (100 mm/s): G0 runs as fast as the axes allow.
+inline constexpr double kRapidAboveTheAxes_mm_per_min = 60'000.0;
 
 inline PlannerConfig config(BlendMode mode, Profile profile = Profile::Trapezoidal) {
     PlannerConfig cfg;

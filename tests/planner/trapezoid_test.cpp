@@ -71,14 +71,17 @@ TEST(PlannerTrapezoid, FeedBelowTheAxisLimit) {
     EXPECT_NEAR(t.duration_s(), 50.0 / 20.0 + 20.0 / 1000.0, 1e-14);
 }
 
-TEST(PlannerTrapezoid, RapidRunsAtTheRapidVelocity) {
-    // The program's rapid feed (1200 mm/min) is not used: G0 goes at the axis maximum, or the configured rapid.
-    const Program p = gcode("G0 X200\n");
-    EXPECT_DOUBLE_EQ(plan(p, config(BlendMode::Continuous)).pieces()[0].speed.peak_mm_per_s, 100.0);
-    PlannerConfig cfg = config(BlendMode::Continuous);
-    cfg.rapid_velocity_mm_per_s = 40.0;
-    EXPECT_DOUBLE_EQ(plan(p, cfg).pieces()[0].speed.peak_mm_per_s, 40.0);
-    const Trajectory diag = plan(gcode("G0 X200 Y200\n"), config(BlendMode::Continuous));
+TEST(PlannerTrapezoid, RapidRunsAtTheMachineRapidSpeed) {
+    // G0 goes at the program's rapid feed (machine.rapid_feed_mm_per_min: 1200 mm/min = 20 mm/s) as its path
+    // speed, capped by the axes: 40 mm/s at 2400 mm/min; above the 100 mm/s axis limits, 100 mm/s on one axis and
+    // 100 sqrt(2) mm/s on the diagonal (each axis at its limit).
+    EXPECT_DOUBLE_EQ(plan(gcode("G0 X200\n"), config(BlendMode::Continuous)).pieces()[0].speed.peak_mm_per_s, 20.0);
+    EXPECT_DOUBLE_EQ(plan(gcode("G0 X200\n", 2400.0), config(BlendMode::Continuous)).pieces()[0].speed.peak_mm_per_s,
+                     40.0);
+    const double fast = test::kRapidAboveTheAxes_mm_per_min;
+    EXPECT_DOUBLE_EQ(plan(gcode("G0 X200\n", fast), config(BlendMode::Continuous)).pieces()[0].speed.peak_mm_per_s,
+                     100.0);
+    const Trajectory diag = plan(gcode("G0 X200 Y200\n", fast), config(BlendMode::Continuous));
     EXPECT_NEAR(diag.pieces()[0].speed.peak_mm_per_s, 100.0 * std::sqrt(2.0), 1e-12);
 }
 

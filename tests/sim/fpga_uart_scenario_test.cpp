@@ -133,8 +133,11 @@ TEST(FpgaUartSixSegment, MotionTimeAndDeadTimeBreakdown) {
     const auto& dead = out.report.at("fpga-uart").at("dead_time");
     EXPECT_EQ(dead.at("gaps"), 5);
     const auto& mean = dead.at("mean");
-    // 11 frames of 10 bits at the CP2102's 115 384.6 Bd, less the half stop bit uart_rx does not wait for
-    EXPECT_NEAR(mean.at("packet_wire_ms").get<double>(), 0.955, 0.01);
+    // 11 frames of 10 bits at the CP2102's 24 MHz / 208 = 115 384.6 Bd, the last one only until uart_rx samples its
+    // stop bit, 9.5 of its 434-clock bits (20 ns clocks) after the start edge: 0.86667 + 0.08246 = 0.94913 ms; the
+    // two-flip-flop synchroniser on the start edge adds clocks, not microseconds.
+    const double packet_wire_ms = (10.0 * 10.0 / (24e6 / 208.0) + 9.5 * 434 * 20e-9) * 1e3;
+    EXPECT_NEAR(mean.at("packet_wire_ms").get<double>(), packet_wire_ms, 0.0005);
     // tx_start one clock after the busy fall, then 10 bits of 434 clocks: 86.8 us
     EXPECT_NEAR(mean.at("ack_wire_ms").get<double>(), 0.0868, 0.0001);
     EXPECT_GE(mean.at("usb_in_ms").get<double>(), 1.0);   // link.usb_latency_ms plus the wait for a USB frame

@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/test_path.hpp"
+
 namespace {
 
 constexpr std::uintmax_t kReportBoundBytes = 5'000'000;
@@ -23,7 +25,7 @@ struct Report {
 
 // Writes the job and a scenario for the seed 000 machine (160 steps/mm), runs it and reads the report back.
 Report run_generated(const std::string& name, const std::string& architecture, const std::string& gcode) {
-    const std::string dir = ::testing::TempDir();
+    const std::string dir = cnc::test::test_path("");
     std::ofstream(dir + name + ".nc") << gcode;
     std::ofstream(dir + name + ".toml") << "[scenario]\narchitecture = \"" << architecture << "\"\njob = \"" << name
                                         << ".nc\"\nmax_sim_s = 10000\n"

@@ -6,14 +6,13 @@
 
 #include "common/bad_input.hpp"
 #include "scenario/scenario.hpp"
+#include "support/test_path.hpp"
 
 namespace {
 
-// A scenario file in GoogleTest's temporary directory.
+// A scenario file in the test's own folder.
 std::string write_scenario(const std::string& name, const std::string& text) {
-    // The test's own name in the path: ctest runs the tests of this file in parallel processes.
-    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    const std::string path = ::testing::TempDir() + "scenario_test_" + test + "_" + name + ".toml";
+    const std::string path = cnc::test::test_path(name + ".toml");
     std::ofstream(path) << text;
     return path;
 }
@@ -42,7 +41,7 @@ TEST(Scenario, DefaultsAreTheSeed000ReferenceMachine) {
     EXPECT_EQ(s.fpga.watchdog_cycles, 5'000'000U);
     EXPECT_EQ(s.sender.ack_timeout_ps, 10 * cnc::kPsPerSec);
     EXPECT_EQ(s.job_format, cnc::sim::JobFormat::GCode);
-    EXPECT_EQ(s.job_path, ::testing::TempDir() + "square.nc");  // relative to the scenario's folder
+    EXPECT_EQ(s.job_path, cnc::test::test_path("square.nc"));  // relative to the scenario's folder
 }
 
 TEST(Scenario, SetOverridesTypedValuesAndBareStrings) {

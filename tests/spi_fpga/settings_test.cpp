@@ -7,6 +7,7 @@
 
 #include "common/bad_input.hpp"
 #include "scenario/scenario.hpp"
+#include "support/test_path.hpp"
 
 using cnc::kPsPerNs;
 using cnc::kPsPerUs;
@@ -14,9 +15,7 @@ using cnc::kPsPerUs;
 namespace {
 
 std::string write_scenario(const std::string& name, const std::string& text) {
-    // The test's own name in the path: ctest runs the tests of this file in parallel processes.
-    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    const std::string path = ::testing::TempDir() + "spi_fpga_settings_" + test + "_" + name + ".toml";
+    const std::string path = cnc::test::test_path(name + ".toml");
     std::ofstream(path) << text;
     return path;
 }

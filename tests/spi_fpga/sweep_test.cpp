@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/test_path.hpp"
+
 namespace {
 
 struct Point {
@@ -17,7 +19,7 @@ struct Point {
 };
 
 Point run(const std::string& scenario) {
-    const std::string report = ::testing::TempDir() + "spi_fpga_sweep_" + scenario + ".json";
+    const std::string report = cnc::test::test_path(scenario + ".json");
     const std::string cmd = std::string(CNCSIM) + " run " + CNC_SOURCE_DIR + "/scenarios/spi-fpga/sweeps/" +
                             scenario + ".toml --report " + report + " > /dev/null";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;

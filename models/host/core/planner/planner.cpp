@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -58,21 +57,17 @@ struct Layout {
     std::vector<WindowSource> windows;
 };
 
-double feed_of(const ProgrammedMove& m, const PlannerConfig& cfg, const std::string& file) {
-    if (m.kind == MotionKind::Rapid) {
-        return cfg.rapid_velocity_mm_per_s > 0.0 ? cfg.rapid_velocity_mm_per_s
-                                                 : std::numeric_limits<double>::infinity();
-    }
+double feed_of(const ProgrammedMove& m, const std::string& file) {
     if (!(m.feed_mm_per_min > 0.0)) throw BadInput(file + ":" + std::to_string(m.line), "feed must be > 0");
     return m.feed_mm_per_min / kSecondsPerMinute;
 }
 
-std::vector<KeptMove> kept_moves(const Program& program, const PlannerConfig& cfg) {
+std::vector<KeptMove> kept_moves(const Program& program) {
     std::vector<KeptMove> kept;
     std::size_t waits_from = 0;
     for (std::size_t i = 0; i < program.moves.size(); ++i) {
         const ProgrammedMove& m = program.moves[i];
-        const double feed = feed_of(m, cfg, program.filename);
+        const double feed = feed_of(m, program.filename);
         const Curve c = Curve::from_segment(m.path);
         if (c.length_mm() >= kMinPieceMm) {
             kept.push_back(KeptMove{static_cast<int>(i), c, feed, program.wait_s_between(waits_from, i + 1)});
@@ -167,7 +162,7 @@ std::vector<PlannedPiece> schedule(const std::vector<Draft>& drafts, const Plann
 
 Trajectory plan(const Program& program, const PlannerConfig& cfg) {
     validate(cfg, "planner");
-    const std::vector<KeptMove> kept = kept_moves(program, cfg);
+    const std::vector<KeptMove> kept = kept_moves(program);
     std::vector<Join> joins;
     for (std::size_t j = 0; j + 1 < kept.size(); ++j) {
         // A host wait between two moves is a rest: the tool stops, waits, starts again.

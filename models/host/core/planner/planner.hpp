@@ -5,7 +5,7 @@
 // circle (curve.hpp: an arc whose end is off its start circle becomes a spiral between the two circles).
 //
 // Rules (details at each part):
-// - Path speed of a move: F (mm/min -> mm/s), G0 the rapid velocity (ProgrammedMove's rapid feed is not used),
+// - Path speed of a move: its feed (mm/min -> mm/s; G0: the interpreter's rapid feed, the machine's rapid speed),
 //   capped so that no axis exceeds its limits (path_limits.hpp: tangent projection on lines; smaller axis and
 //   tangential A/2 + centripetal (sqrt(3)/2) A on arcs, i.e. arc speed <= sqrt(0.866 A R)).
 // - ExactStop: every move is its own piece from rest to rest (trapezoid, or triangle when too short).

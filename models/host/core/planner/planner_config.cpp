@@ -32,7 +32,6 @@ void validate(const PlannerConfig& cfg, const std::string& where) {
     validate_axis(cfg.x, "x", where);
     validate_axis(cfg.y, "y", where);
     require_non_negative(cfg.path_tolerance_mm, "path_tolerance_mm", where);
-    require_non_negative(cfg.rapid_velocity_mm_per_s, "rapid_velocity_mm_per_s", where);
     if (cfg.lookahead_moves < 1) {
         throw BadInput(where, "lookahead_moves must be >= 1 (got " + std::to_string(cfg.lookahead_moves) + ")");
     }

@@ -25,11 +25,10 @@ struct PlannerConfig {
     BlendMode mode = BlendMode::Continuous;
     double path_tolerance_mm = 0.05;  // G64 P; 0 makes every non-tangent corner a stop
     int lookahead_moves = 32;         // programmed moves the planner sees ahead (the window must end at rest)
-    double rapid_velocity_mm_per_s = 0.0;  // G0 path speed; 0 = as fast as the axes allow
 };
 
 // BadInput(where, "<field> must be ...") for a velocity, acceleration or jerk <= 0 (or not finite), a negative
-// tolerance or rapid velocity, or a look-ahead below 1.
+// tolerance, or a look-ahead below 1.
 void validate(const PlannerConfig& cfg, const std::string& where);
 
 }  // namespace cnc::host::planner

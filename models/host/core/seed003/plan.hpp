@@ -4,7 +4,7 @@
 //
 // Decisions where the seed is silent (README of the firmware, spec seed-003 §8):
 // - F is the programmed path speed (the interpreter converts mm/s or mm/min); G00 runs both axes at v_max =
-//   the rapid feed (host.rapid_feed_mm_per_min), one OCR for both timers.
+//   the rapid feed (machine.rapid_feed_mm_per_min), one OCR for both timers.
 // - Head: on (HEADER = 1) for G01/G02/G03, off for G00, as CAD2G's pen down/up; M3/M5 are not sent.
 // - Arcs: the sweep is cut into equal chords of at most atmega.arc_step_deg, and more when a chord would exceed
 //   the 8-bit DXL (255 steps); the ends are on the absolute step grid and the last one is the programmed end.

@@ -14,74 +14,17 @@
 #include <numeric>
 #include <vector>
 
-#include "avr/avr_chip.hpp"
-#include "lathe/core/dc_motor.hpp"
+#include "lathe_bench.hpp"
 
 namespace {
 
-using cnc::avr::AvrChip;
-using cnc::avr::Cycle;
-using cnc::avr::Pin;
-using cnc::lathe::BridgeMode;
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kCycleS = 1.0 / 8e6;
-constexpr Cycle kStepCycles = 8;  // 1 us: the bench's plant step (encoder edges land on it)
-
-// The ATmega16 with the seed's L298 and motor encoder around it, stepped 1 us at a time.
-struct TuningBench {
-    explicit TuningBench(const cnc::avr::AvrCoreConfig& cfg) : chip(cfg), motor(cnc::lathe::derive_motor()) {
-        chip.drive_input(Pin{'A', 3}, false);  // the LCD's busy flag (D7) always reads ready
-        chip.drive_input(Pin{'D', 7}, true);   // limit switch closed (normally 1)
-        chip.drive_input(Pin{'D', 3}, true);   // spindle encoder idle
-        chip.drive_input(Pin{'D', 6}, false);  // index
-        chip.drive_input(Pin{'B', 2}, false);  // key B held at power-up: tuning mode (§6.6)
-        chip.drive_input(Pin{'D', 2}, encoder_level());
-    }
-
-    // The 74HC14 inverts the slotted opto's output: the MCU sees a falling edge when the disc angle passes a
-    // slot's start. The disc starts half a slot past one, so the first pulse needs a whole slot of travel (the
-    // seed's first period is the longest: 237 counts at OCR2 = 3).
-    [[nodiscard]] bool encoder_level() const {
-        const double slots = motor.state().angle_rad * 30.0 / (2 * kPi) + 0.5;
-        return slots - std::floor(slots) < 0.5;
-    }
-
-    void step() {
-        const Cycle to = chip.cycle() + kStepCycles;
-        const double dt = static_cast<double>(to - last) * kCycleS;
-        last = to;
-        const bool en = chip.pin_level(Pin{'D', 5});
-        const bool dir1 = chip.pin_level(Pin{'D', 0});
-        const bool dir2 = chip.pin_level(Pin{'D', 1});
-        const BridgeMode mode = !en ? BridgeMode::Coast : dir1 != dir2 ? BridgeMode::Drive : BridgeMode::Brake;
-        motor.advance(dt, mode, dir1 ? 22.0 : -22.0, 0.0);
-        chip.run_until(to);
-        const bool level = encoder_level();
-        if (level != encoder) chip.drive_input(Pin{'D', 2}, level);
-        encoder = level;
-    }
-
-    AvrChip chip;
-    cnc::lathe::DcMotor motor;
-    Cycle last = 0;
-    bool encoder = true;
-};
-
-cnc::avr::AvrCoreConfig lathe_firmware() {
-    cnc::avr::AvrCoreConfig cfg;
-    cfg.firmware_elf = LATHE_SYNC_ELF;
-    cfg.mcu = "atmega16";
-    cfg.f_cpu_hz = 8'000'000;
-    return cfg;
-}
+using namespace cnc::lathe::test;
 
 TEST(LatheTuning, PeriodRecordMatchesTheSeedsDump) {
-    TuningBench b(lathe_firmware());
-    b.encoder = b.encoder_level();
-    const Cycle release = 400'000;  // key B released after 50 ms
-    while (b.chip.cycle() < release) b.step();
-    b.chip.drive_input(Pin{'B', 2}, true);
+    LatheBench b;
+    b.pressed = {key_pos('B')};  // held at power-up (§6.6), released after 50 ms
+    b.run_for(0.05);
+    b.pressed.clear();
     // Three overflowing tries (OCR2 = 0, 1, 2) and the good one, each followed by a 500 ms brake and a 1 s wait,
     // then 401 EEPROM bytes of 8.5 ms at most: well inside 12 s.
     std::vector<std::uint8_t> ee;

@@ -21,6 +21,7 @@
 #include "motor_curve_cmd.hpp"
 #include "output/output_file.hpp"
 #include "plots/run_plots.hpp"
+#include "run/architecture.hpp"
 #include "run/run.hpp"
 #include "scenario/scenario.hpp"
 
@@ -113,13 +114,23 @@ int cmd_analyze(const std::string& vcd_path, const std::vector<cnc::metrics::Axi
     return kExitOk;
 }
 
+// The architectures `compare` can put side by side: those that run the scenario's job.
+std::string job_architectures(const std::string& separator = ", ") {
+    std::string text;
+    for (const cnc::sim::Architecture& a : cnc::sim::architectures()) {
+        if (a.runs_job) text += (text.empty() ? "" : separator) + std::string(a.name);
+    }
+    return text;
+}
+
 int cmd_compare(const std::string& scenario_path, const std::string& archs, const std::vector<std::string>& sets,
                 const std::string& format_name, const std::string& report, const std::string& out_dir) {
     std::vector<std::string> list;
     std::stringstream ss(archs);
     for (std::string a; std::getline(ss, a, ',');) {
-        if (a != "fpga-uart" && a != "atmega" && a != "spi-fpga") {
-            throw cnc::BadInput("--arch " + a, "unknown architecture (allowed: fpga-uart, atmega, spi-fpga)");
+        if (!cnc::sim::find_architecture(a, "--arch " + a).runs_job) {
+            throw cnc::BadInput("--arch " + a, "compares the architectures that run a job (" + job_architectures() +
+                                               "); " + a + " does not");
         }
         list.push_back(a);
     }
@@ -197,7 +208,7 @@ int sc_main(int argc, char* argv[]) {
                         "its command changed, not by period");
     analyze->add_option("--report", report, "write the JSON report to this file");
 
-    std::string archs = "fpga-uart,atmega,spi-fpga";
+    std::string archs = job_architectures(",");
     std::string table_format = "text";
     CLI::App* compare = app.add_subcommand("compare", "the same job and machine on several architectures, side by side");
     compare->add_option("scenario", scenario, "scenario file (TOML); its architecture is overridden")->required();

@@ -11,6 +11,7 @@
 #include "avr/core/elf_check.hpp"
 #include "common/bad_input.hpp"
 
+#include <avr_eeprom.h>
 #include <avr_ioport.h>
 #include <avr_timer.h>
 #include <avr_uart.h>
@@ -25,16 +26,17 @@ namespace cnc::avr {
 
 namespace {
 
-// ATmega328P interrupt vector numbers (datasheet "Interrupt Vectors in ATmega328P").
-constexpr int kVecTimer2CompA = 7;  // the first timer vector
+// ATmega328P USART0 vector numbers (datasheet "Interrupt Vectors in ATmega328P"); the ATmega16's USART is
+// simavr's own (the seed 002 firmware does not use it).
 constexpr int kVecUsartRx = 18;
 constexpr int kVecUsartUdre = 19;
 constexpr int kVecUsartTx = 20;
-constexpr std::uint16_t kFirstPortAddr = reg::kPinb;
 
 void quiet_logger(avr_t*, const int level, const char* format, va_list ap) {
     if (level <= LOG_ERROR) std::vfprintf(stderr, format, ap);  // toolchain.md §3: errors only, to stderr
 }
+
+constexpr avr_cycle_count_t kInterruptResponseCycles = 4;
 
 void no_sleep(avr_t*, avr_cycle_count_t) {}  // toolchain.md pitfall 1: the default usleep()s to wall time
 
@@ -43,10 +45,10 @@ avr_cycle_count_t no_op_timer(avr_t*, avr_cycle_count_t, void*) { return 0; }
 }  // namespace
 
 struct AvrChip::PortHooks {
-    std::array<avr_io_write_t, 9> write{};
-    std::array<void*, 9> write_param{};
-    std::array<avr_io_read_t, 9> read{};
-    std::array<void*, 9> read_param{};
+    std::array<avr_io_write_t, 12> write{};
+    std::array<void*, 12> write_param{};  // PINx, DDRx, PORTx of up to 4 ports, in McuMap::ports order
+    std::array<avr_io_read_t, 12> read{};
+    std::array<void*, 12> read_param{};
 };
 
 struct AvrChip::Bridge {
@@ -73,9 +75,10 @@ struct AvrChip::Bridge {
 };
 
 AvrChip::AvrChip(const AvrCoreConfig& cfg)
-    : m_f_cpu_hz(cfg.f_cpu_hz), m_usart(static_cast<UsartSink&>(*this)), m_port_hooks(std::make_unique<PortHooks>()) {
-    if (cfg.mcu != "atmega328p")
-        throw BadInput(cfg.where, "MCU '" + cfg.mcu + "' is not modelled (only atmega328p is)");
+    : m_map(checked_mcu(cfg)),
+      m_f_cpu_hz(cfg.f_cpu_hz),
+      m_usart(static_cast<UsartSink&>(*this)),
+      m_port_hooks(std::make_unique<PortHooks>()) {
     if (cfg.f_cpu_hz == 0) throw BadInput(cfg.where, "the AVR clock frequency must be above 0 Hz");
     validate(cfg.pins, cfg.where);
     for (std::size_t i = 0; i < kPinSignals.size(); ++i) m_line_pins[i] = cfg.pins.at(kPinSignals[i]);
@@ -107,6 +110,12 @@ AvrChip::AvrChip(const AvrCoreConfig& cfg)
     m_level = m_initial;
 }
 
+const McuMap& AvrChip::checked_mcu(const AvrCoreConfig& cfg) {
+    const auto mcu = mcu_by_name(cfg.mcu);
+    if (!mcu) throw BadInput(cfg.where, "MCU '" + cfg.mcu + "' is not modelled (modelled: " + modelled_mcus() + ")");
+    return mcu_map(*mcu);
+}
+
 AvrChip::~AvrChip() {
     if (m_avr == nullptr) return;
     avr_terminate(m_avr);
@@ -119,20 +128,30 @@ void AvrChip::install_hooks() {
         avr_int_vector_t* v = avr->interrupts.vector[i];
         if (v->vector < m_vectors.size()) m_vectors[v->vector] = v;
     }
-    for (int n = kVecTimer2CompA; n <= kVecUsartTx; ++n)
-        if (m_vectors[static_cast<std::size_t>(n)] == nullptr)
-            throw std::runtime_error("libsimavr's atmega328p lacks interrupt vector " + std::to_string(n));
-    // RXC0 and UDRE0 stay set while their condition holds (sticky); they are re-raised after their vector runs.
-    for (const int n : {kVecUsartRx, kVecUsartUdre}) {
-        avr_int_vector_t* v = m_vectors[static_cast<std::size_t>(n)];
-        v->raise_sticky = 1;
-        avr_irq_register_notify(v->irq + AVR_INT_IRQ_PENDING, Bridge::pending, this);
+    for (const auto& timer : m_map.vector) {
+        for (const int n : timer) {
+            if (n != 0 && m_vectors[static_cast<std::size_t>(n)] == nullptr)
+                throw std::runtime_error(std::string("libsimavr's ") + m_map.name + " lacks interrupt vector " +
+                                         std::to_string(n));
+        }
     }
-    avr_irq_register_notify(m_vectors[kVecUsartTx]->irq + AVR_INT_IRQ_RUNNING, Bridge::running, this);
+    if (m_map.mcu == Mcu::Atmega328p) {
+        // RXC0 and UDRE0 stay set while their condition holds (sticky); they are re-raised after their vector runs.
+        for (const int n : {kVecUsartRx, kVecUsartUdre}) {
+            avr_int_vector_t* v = m_vectors[static_cast<std::size_t>(n)];
+            v->raise_sticky = 1;
+            avr_irq_register_notify(v->irq + AVR_INT_IRQ_PENDING, Bridge::pending, this);
+        }
+    }
+    for (avr_int_vector_t* v : m_vectors) {
+        if (v != nullptr) avr_irq_register_notify(v->irq + AVR_INT_IRQ_RUNNING, Bridge::running, this);
+    }
 
-    // simavr's Timer1 connects PB0 (ICP1) to its input capture; capture is not modelled here, and simavr's
-    // version would capture a TCNT1 of 0 from its idle timer on every DIR_X edge.
-    avr_irq_t* icp_pin = avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('B'), IOPORT_IRQ_PIN0);
+    // simavr's Timer1 connects ICP1 (PB0 on the ATmega328P, PD6 on the ATmega16) to its input capture; capture
+    // is not modelled here, and simavr's version would capture a TCNT1 of 0 from its idle timer on every edge.
+    const bool m16 = m_map.mcu == Mcu::Atmega16;
+    avr_irq_t* icp_pin =
+        avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ(m16 ? 'D' : 'B'), m16 ? IOPORT_IRQ_PIN6 : IOPORT_IRQ_PIN0);
     avr_irq_t* icp_in = avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('1'), TIMER_IRQ_IN_ICP);
     if (icp_pin != nullptr && icp_in != nullptr) avr_unconnect_irq(icp_pin, icp_in);
 
@@ -146,15 +165,22 @@ void AvrChip::install_hooks() {
         io.r.c = Bridge::read;
         io.r.param = this;
     };
-    for (std::uint16_t a = kFirstPortAddr; a < kFirstPortAddr + 9; ++a) {
-        const std::size_t i = a - kFirstPortAddr;
-        auto& io = avr->io[AVR_DATA_TO_IO(a)];
-        m_port_hooks->write[i] = io.w.c;
-        m_port_hooks->write_param[i] = io.w.param;
-        m_port_hooks->read[i] = io.r.c;
-        m_port_hooks->read_param[i] = io.r.param;
-        take_write(a);
-        if (i % 3 == 0) take_read(a);  // PINx
+    for (std::size_t p = 0; p < m_map.ports.size(); ++p) {
+        for (std::uint16_t r = 0; r < 3; ++r) {
+            const std::uint16_t a = m_map.ports[p].pin + r;
+            const std::size_t i = 3 * p + r;
+            auto& io = avr->io[AVR_DATA_TO_IO(a)];
+            m_port_hooks->write[i] = io.w.c;
+            m_port_hooks->write_param[i] = io.w.param;
+            m_port_hooks->read[i] = io.r.c;
+            m_port_hooks->read_param[i] = io.r.param;
+            take_write(a);
+            if (r == 0) take_read(a);  // PINx
+        }
+    }
+    if (m16) {
+        install_atmega16_hooks(take_write, take_read);
+        return;
     }
     using namespace reg;
     for (const std::uint16_t a : {kTifr0,  kTifr1,  kTifr2,  kGtccr,  kTccr0a, kTccr0b, kTcnt0,  kOcr0a,  kOcr0b,
@@ -196,6 +222,31 @@ ChipState AvrChip::run_until(Cycle limit) {
         avr_cycle_timer_process(m_avr);
     }
     return m_state;
+}
+
+std::vector<std::uint8_t> AvrChip::eeprom() const {
+    std::vector<std::uint8_t> out(m_avr->e2end + 1);
+    avr_eeprom_desc_t d;
+    std::memset(&d, 0, sizeof d);
+    d.ee = out.data();
+    d.size = static_cast<std::uint32_t>(out.size());
+    // simavr 1.6's EEPROM GET copies the bytes but returns -1 (its `res` is never set on that path): not checked.
+    (void)avr_ioctl(m_avr, AVR_IOCTL_EEPROM_GET, &d);
+    return out;
+}
+
+std::size_t AvrChip::port_index(char port) const {
+    for (std::size_t i = 0; i < m_map.ports.size(); ++i) {
+        if (m_map.ports[i].port == port) return i;
+    }
+    throw std::out_of_range(std::string("no port ") + port + " on the " + m_map.name);
+}
+
+void AvrChip::drive_input(const Pin& pin, bool level) {
+    std::int8_t& driven = m_inputs.at(port_index(pin.port)).at(static_cast<std::size_t>(pin.bit));
+    const bool was = driven < 0 ? pin_level(pin) : driven != 0;
+    driven = level ? 1 : 0;
+    if (m_map.mcu == Mcu::Atmega16) external_interrupt_edge(pin, was, level);
 }
 
 std::vector<LineEvent> AvrChip::take_events(Cycle upto) {
@@ -268,6 +319,12 @@ void AvrChip::vector_cleared(avr_int_vector_t* v) {
 }
 
 void AvrChip::vector_entered(avr_int_vector_t* v) {
+    if (m_map.mcu == Mcu::Atmega16) external_interrupt_entered(v->vector);
+    // Datasheet "Interrupt Response Time": pushing the return address takes at least 4 cycles before the vector
+    // runs; libsimavr 1.6's avr_service_interrupts drops that count (toolchain.md), which put every edge an ISR
+    // writes 4 cycles early. (Waking from sleep costs 4 more on silicon, not modelled: no firmware here sleeps
+    // with interrupts on.)
+    m_avr->cycle += kInterruptResponseCycles;
     if (v->vector == kVecUsartTx) m_usart.clear_txc(now());  // §20.6.3: TXC0 clears when its vector runs
 }
 
@@ -279,14 +336,26 @@ void AvrChip::usart_flags(Cycle) {
 
 void AvrChip::usart_txd(Cycle c, bool level) { record(c, kTxdLine, level); }
 
-void AvrChip::timer_flag(char timer, TimerFlag flag, Cycle) { raise(timer_vector(timer, flag)); }
+void AvrChip::timer_flag(char timer, TimerFlag flag, Cycle) { raise(timer_vector(timer - '0', flag)); }
+
+int AvrChip::timer_vector(int timer, TimerFlag flag) const {
+    return m_map.vector[timer][static_cast<int>(flag)];
+}
 
 void AvrChip::timer_output(char, Cycle c) { update_lines(c); }
 
 // ---- ports and output lines ----
 
+std::optional<std::size_t> AvrChip::port_reg_index(std::uint16_t addr) const {
+    for (std::size_t p = 0; p < m_map.ports.size(); ++p) {
+        const std::uint16_t pin = m_map.ports[p].pin;
+        if (addr >= pin && addr < pin + 3) return 3 * p + (addr - pin);
+    }
+    return std::nullopt;
+}
+
 void AvrChip::port_write(std::uint16_t addr, std::uint8_t v) {
-    const std::size_t i = addr - kFirstPortAddr;
+    const std::size_t i = *port_reg_index(addr);
     if (i % 3 == 0) {  // PINx: writing a one toggles the PORTx bit (SBI: only the addressed bit; CBI: nothing)
         bool set = false;
         if (const auto bit = single_bit_instruction(addr, &set)) v = set ? static_cast<std::uint8_t>(1U << *bit) : 0;
@@ -299,44 +368,33 @@ void AvrChip::port_write(std::uint16_t addr, std::uint8_t v) {
 }
 
 std::uint8_t AvrChip::port_read(std::uint16_t addr) {  // PINx only
-    const std::size_t i = addr - kFirstPortAddr;
+    const std::size_t i = *port_reg_index(addr);
     std::uint8_t v = m_port_hooks->read[i] != nullptr ? m_port_hooks->read[i](m_avr, addr, m_port_hooks->read_param[i])
                                                       : m_avr->data[addr];
-    // An output pin reads its level, which a connected compare output drives.
-    const char port = static_cast<char>('B' + i / 3);
-    const std::uint8_t ddr = m_avr->data[addr + 1];
+    // Every pin reads its level: an output its PORT bit or connected compare output, an input its external drive
+    // or, undriven, its pull-up (simavr 1.6 reads an undriven input as 0 whatever PORTx says).
+    const char port = m_map.ports[i / 3].port;
     for (int bit = 0; bit < 8; ++bit) {
-        if (((ddr >> bit) & 1U) == 0) continue;
         v = static_cast<std::uint8_t>(pin_level(Pin{port, bit}) ? (v | (1U << bit)) : (v & ~(1U << bit)));
     }
     return v;
 }
 
 bool AvrChip::pin_level(const Pin& p) const {
-    const std::uint16_t base = static_cast<std::uint16_t>(kFirstPortAddr + 3 * (p.port - 'B'));
+    const std::size_t pi = port_index(p.port);
+    const std::uint16_t base = m_map.ports[pi].pin;
     const bool output = ((m_avr->data[base + 1] >> p.bit) & 1U) != 0;
     const bool port = ((m_avr->data[base + 2] >> p.bit) & 1U) != 0;
-    // Compare outputs (datasheet pin alternate functions): OC0A PD6, OC0B PD5, OC1A PB1, OC1B PB2, OC2A PB3,
-    // OC2B PD3. They override the port value while their COM bits connect them and the DDR bit is set.
-    struct Oc {
-        char port;
-        int bit;
-        int timer;
-        Channel ch;
-    };
-    static constexpr std::array<Oc, 6> kOc{{{'D', 6, 0, Channel::A},
-                                            {'D', 5, 0, Channel::B},
-                                            {'B', 1, 1, Channel::A},
-                                            {'B', 2, 1, Channel::B},
-                                            {'B', 3, 2, Channel::A},
-                                            {'D', 3, 2, Channel::B}}};
+    // Compare outputs (McuMap) override the port value while their COM bits connect them and the DDR bit is set.
     if (output) {
-        for (const Oc& oc : kOc) {
+        for (const CompareOutputPin& oc : m_map.compare_outputs) {
             if (oc.port != p.port || oc.bit != p.bit) continue;
             const TimerUnit& t = *m_timers[static_cast<std::size_t>(oc.timer)];
-            if (t.output_connected(oc.ch)) return t.output_level(oc.ch);
+            if (t.output_connected(oc.channel)) return t.output_level(oc.channel);
         }
+        return port;
     }
+    if (const std::int8_t driven = m_inputs[pi][static_cast<std::size_t>(p.bit)]; driven >= 0) return driven != 0;
     // An input pin reads its pull-up (PORT bit set) or floats; the DRV8825's STEP, DIR and nENBL inputs have
     // internal pull-downs (DRV8825 datasheet §7.5), so a floating pin is low.
     return port;

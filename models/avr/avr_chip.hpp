@@ -1,5 +1,6 @@
-// The ATmega328P as libsimavr runs it, made to behave as the datasheet where libsimavr 1.6 does not, with its
-// outputs time-stamped by clock cycle. No SystemC here: AvrCore (avr_core.hpp) is the SystemC shell.
+// The ATmega328P (or the ATmega16: the differences are in core/mcu_map.hpp and chip_io_atmega16.cpp) as
+// libsimavr runs it, made to behave as the datasheet where libsimavr 1.6 does not, with its outputs time-stamped
+// by clock cycle. No SystemC here: AvrCore (avr_core.hpp) is the SystemC shell.
 //
 // What runs where:
 //   * libsimavr executes the instructions, the interrupt controller, the I/O ports and the other peripherals.
@@ -27,11 +28,13 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "avr/core/avr_config.hpp"
+#include "avr/core/mcu_map.hpp"
 #include "avr/core/prescaler.hpp"
 #include "avr/core/timer_unit.hpp"
 #include "avr/core/usart_unit.hpp"
@@ -84,6 +87,17 @@ public:
     // Cycle of the next timer or USART event, if any is scheduled.
     [[nodiscard]] std::optional<Cycle> next_event() const;
 
+    // An input pin driven from outside at the current cycle (after run_until): PINx reads it and, on the ATmega16,
+    // INT0 (PD2) / INT1 (PD3) see the edge now (MCUCR ISCn1:0). The model's own edge detector, not simavr's:
+    // simavr 1.6 raises INTFn for a low pin in the reset low-level mode and keeps re-entering the vector.
+    void drive_input(const Pin& pin, bool level);
+
+    // A pin's level now: an output's PORT bit or connected compare output, an input's external drive or pull-up.
+    [[nodiscard]] bool pin_level(const Pin& p) const;
+    // The EEPROM's content now (simavr's EEPROM; the ELF's .eeprom section is loaded at reset).
+    [[nodiscard]] std::vector<std::uint8_t> eeprom() const;
+
+    [[nodiscard]] const McuMap& mcu() const { return m_map; }
     [[nodiscard]] const UsartUnit& usart() const { return m_usart; }
     [[nodiscard]] const TimerUnit& timer(int n) const { return *m_timers.at(static_cast<std::size_t>(n)); }
     [[nodiscard]] std::int64_t f_cpu_hz() const { return m_f_cpu_hz; }
@@ -91,10 +105,21 @@ public:
 private:
     struct Bridge;     // the C callbacks handed to libsimavr (avr_chip.cpp)
     struct PortHooks;  // simavr's own PINx/DDRx/PORTx handlers, called from the wrappers
+    enum class Timer1Reg { Tcnt, Icr, OcrA, OcrB };
+
+    [[nodiscard]] static const McuMap& checked_mcu(const AvrCoreConfig& cfg);
 
     // I/O bus (chip_io.cpp), called from the simavr read/write hooks at the current cycle.
     void io_write(std::uint16_t addr, std::uint8_t v);
     [[nodiscard]] std::uint8_t io_read(std::uint16_t addr);
+    void io_write_atmega16(std::uint16_t addr, std::uint8_t v);  // chip_io_atmega16.cpp
+    [[nodiscard]] std::uint8_t io_read_atmega16(std::uint16_t addr);
+    void install_atmega16_hooks(const std::function<void(std::uint16_t)>& take_write,
+                                const std::function<void(std::uint16_t)>& take_read);
+    // §16.3 (328P) / "Accessing 16-bit Registers" (ATmega16): a low byte read latches the high byte in TEMP; a
+    // low byte write moves TEMP:low into the register.
+    [[nodiscard]] std::uint8_t latch_high(std::uint16_t v);
+    void write_timer1_low(Timer1Reg r, std::uint16_t low_addr, std::uint8_t low);
     // Scheduler: processes every timer/USART event at cycles <= c; returns the next event cycle.
     std::optional<Cycle> process_events(Cycle c);
     void vector_cleared(avr_int_vector_t* v);
@@ -112,15 +137,23 @@ private:
     void sync_level_vector(int vector_number, bool flag);
     void port_write(std::uint16_t addr, std::uint8_t v);
     [[nodiscard]] std::uint8_t port_read(std::uint16_t pin_addr);
-    [[nodiscard]] bool pin_level(const Pin& p) const;
     void update_lines(Cycle c);
     void record(Cycle c, int line, bool level);
-    [[nodiscard]] static int timer_vector(char timer, TimerFlag flag);
+    [[nodiscard]] int timer_vector(int timer, TimerFlag flag) const;
+    [[nodiscard]] int flag_bit_vector(std::uint16_t mask_or_flag_addr, int bit) const;
+    [[nodiscard]] std::optional<std::size_t> port_reg_index(std::uint16_t addr) const;
+    [[nodiscard]] std::size_t port_index(char port) const;
+    // ATmega16 INT0/INT1 (chip_io_atmega16.cpp): the edge detector on PD2/PD3, and the low-level mode's re-raise.
+    void external_interrupt_edge(const Pin& pin, bool was, bool now_level);
+    void external_interrupt_entered(int vector_number);
+    void write_gicr(std::uint8_t v);
+    void write_gifr(std::uint8_t v);
     void write_timer_flags(std::uint16_t addr, std::uint8_t v);
     void write_timsk(std::uint16_t addr, std::uint8_t v);
     void write_gtccr(std::uint8_t v);
     [[nodiscard]] std::optional<int> single_bit_instruction(std::uint16_t addr, bool* set) const;
 
+    const McuMap& m_map;
     const std::int64_t m_f_cpu_hz;
     std::array<Pin, kPinSignals.size()> m_line_pins{};  // kPinSignals order
     Prescaler m_prescaler01;                            // Timer0 and Timer1 (§17)
@@ -137,6 +170,11 @@ private:
     std::array<bool, kLineCount> m_initial{};
     std::array<bool, kLineCount> m_level{};
     std::vector<LineEvent> m_events;
+    // Externally driven input pins, [port index][bit]: -1 undriven, else the level.
+    std::array<std::array<std::int8_t, 8>, 4> m_inputs{{{-1, -1, -1, -1, -1, -1, -1, -1},
+                                                        {-1, -1, -1, -1, -1, -1, -1, -1},
+                                                        {-1, -1, -1, -1, -1, -1, -1, -1},
+                                                        {-1, -1, -1, -1, -1, -1, -1, -1}}};
 };
 
 }  // namespace cnc::avr

@@ -14,36 +14,37 @@ using namespace reg;
 
 namespace {
 
-// TIFRn / TIMSKn bit -> timer flag: TOVn (bit 0), OCFnA (1), OCFnB (2), ICF1 (5, Timer1 only).
-std::optional<TimerFlag> flag_of_bit(int bit) {
-    switch (bit) {
-        case 0: return TimerFlag::Overflow;
-        case 1: return TimerFlag::CompareA;
-        case 2: return TimerFlag::CompareB;
-        case 5: return TimerFlag::Capture;
-        default: return std::nullopt;
-    }
-}
-
-// TIFR0..2 and TIMSK0..2 are consecutive: the timer a flag or mask register belongs to.
-char timer_of(std::uint16_t flag_or_mask_reg) {
-    return static_cast<char>('0' +
-                             (flag_or_mask_reg >= kTimsk0 ? flag_or_mask_reg - kTimsk0 : flag_or_mask_reg - kTifr0));
+// ATmega328P: TIFR0..2 and TIMSK0..2 are consecutive: the timer a flag or mask register belongs to.
+int timer_of(std::uint16_t flag_or_mask_reg) {
+    return flag_or_mask_reg >= kTimsk0 ? flag_or_mask_reg - kTimsk0 : flag_or_mask_reg - kTifr0;
 }
 
 }  // namespace
 
-int AvrChip::timer_vector(char timer, TimerFlag flag) {
-    // "Interrupt Vectors in ATmega328P": Timer2 COMPA 7, COMPB 8, OVF 9; Timer1 CAPT 10, COMPA 11, COMPB 12,
-    // OVF 13; Timer0 COMPA 14, COMPB 15, OVF 16. No capture unit on Timer0/2.
-    const int compa = timer == '0' ? 14 : timer == '1' ? 11 : 7;
-    switch (flag) {
-        case TimerFlag::CompareA: return compa;
-        case TimerFlag::CompareB: return compa + 1;
-        case TimerFlag::Overflow: return compa + 2;
-        case TimerFlag::Capture: return timer == '1' ? 10 : 0;
+int AvrChip::flag_bit_vector(std::uint16_t addr, int bit) const {
+    const auto flag = timer_flag_bit(m_map.mcu, m_map.mcu == Mcu::Atmega328p ? timer_of(addr) : 0, bit);
+    return flag ? timer_vector(flag->first, flag->second) : 0;
+}
+
+std::uint8_t AvrChip::latch_high(std::uint16_t v) {
+    m_temp16 = static_cast<std::uint8_t>(v >> 8);
+    return static_cast<std::uint8_t>(v);
+}
+
+void AvrChip::write_timer1_low(Timer1Reg r, std::uint16_t low_addr, std::uint8_t low) {
+    const Cycle c = now();
+    TimerUnit& t1 = *m_timers[1];
+    const auto word = static_cast<std::uint16_t>((m_temp16 << 8) | low);
+    switch (r) {
+        case Timer1Reg::Tcnt: t1.write_tcnt(c, word); return;
+        case Timer1Reg::Icr: t1.write_icr(c, word); return;
+        case Timer1Reg::OcrA:
+        case Timer1Reg::OcrB:
+            t1.write_ocr(c, r == Timer1Reg::OcrA ? Channel::A : Channel::B, word);
+            m_avr->data[low_addr] = low;  // OCR1xH is the next address on both MCUs
+            m_avr->data[low_addr + 1] = m_temp16;
+            return;
     }
-    return 0;
 }
 
 std::optional<int> AvrChip::single_bit_instruction(std::uint16_t addr, bool* set) const {
@@ -58,12 +59,16 @@ std::optional<int> AvrChip::single_bit_instruction(std::uint16_t addr, bool* set
 }
 
 void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
+    if (m_map.mcu == Mcu::Atmega16) {
+        io_write_atmega16(addr, v);
+        reschedule();
+        return;
+    }
     const Cycle c = now();
     std::uint8_t* data = m_avr->data;
     TimerUnit& t0 = *m_timers[0];
     TimerUnit& t1 = *m_timers[1];
     TimerUnit& t2 = *m_timers[2];
-    const auto word = [&](std::uint8_t low) { return static_cast<std::uint16_t>((m_temp16 << 8) | low); };
     switch (addr) {
         case kTifr0:
         case kTifr1:
@@ -106,18 +111,10 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
         case kIcr1h:
         case kOcr1ah:
         case kOcr1bh: m_temp16 = v; break;
-        case kTcnt1l: t1.write_tcnt(c, word(v)); break;
-        case kIcr1l: t1.write_icr(c, word(v)); break;
-        case kOcr1al:
-            t1.write_ocr(c, Channel::A, word(v));
-            data[kOcr1al] = v;
-            data[kOcr1ah] = m_temp16;
-            break;
-        case kOcr1bl:
-            t1.write_ocr(c, Channel::B, word(v));
-            data[kOcr1bl] = v;
-            data[kOcr1bh] = m_temp16;
-            break;
+        case kTcnt1l: write_timer1_low(Timer1Reg::Tcnt, addr, v); break;
+        case kIcr1l: write_timer1_low(Timer1Reg::Icr, addr, v); break;
+        case kOcr1al: write_timer1_low(Timer1Reg::OcrA, addr, v); break;
+        case kOcr1bl: write_timer1_low(Timer1Reg::OcrB, addr, v); break;
         case kTccr2a:
             t2.write_tccra(c, v);
             data[addr] = v;
@@ -162,28 +159,21 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
             data[addr] = m_usart.ubrrh();
             break;
         default:
-            if (addr >= kPinb && addr <= kPortd) port_write(addr, v);
+            if (port_reg_index(addr)) port_write(addr, v);
             break;
     }
     reschedule();
 }
 
 std::uint8_t AvrChip::io_read(std::uint16_t addr) {
+    if (m_map.mcu == Mcu::Atmega16) return io_read_atmega16(addr);
     const Cycle c = now();
     switch (addr) {
         case kTcnt0: return static_cast<std::uint8_t>(m_timers[0]->read_tcnt(c));
         case kTcnt2: return static_cast<std::uint8_t>(m_timers[2]->read_tcnt(c));
         // §16.3: reading the low byte copies the high byte into TEMP, which the high byte read returns.
-        case kTcnt1l: {
-            const std::uint16_t v = m_timers[1]->read_tcnt(c);
-            m_temp16 = static_cast<std::uint8_t>(v >> 8);
-            return static_cast<std::uint8_t>(v);
-        }
-        case kIcr1l: {
-            const std::uint16_t v = m_timers[1]->icr();
-            m_temp16 = static_cast<std::uint8_t>(v >> 8);
-            return static_cast<std::uint8_t>(v);
-        }
+        case kTcnt1l: return latch_high(m_timers[1]->read_tcnt(c));
+        case kIcr1l: return latch_high(m_timers[1]->icr());
         case kTcnt1h:
         case kIcr1h: return m_temp16;
         case kUcsr0a: m_usart.advance_to(c); return m_usart.ucsra();
@@ -201,8 +191,7 @@ void AvrChip::write_timer_flags(std::uint16_t addr, std::uint8_t v) {
     bool set = false;
     if (const auto bit = single_bit_instruction(addr, &set)) v = set ? static_cast<std::uint8_t>(1U << *bit) : 0;
     for (int bit = 0; bit < 8; ++bit) {
-        const auto flag = flag_of_bit(bit);
-        const int n = flag ? timer_vector(timer_of(addr), *flag) : 0;
+        const int n = flag_bit_vector(addr, bit);
         if (((v >> bit) & 1U) == 0 || n == 0) continue;
         avr_int_vector_t* vec = m_vectors[static_cast<std::size_t>(n)];
         if (avr_regbit_get(m_avr, vec->raised) != 0) avr_clear_interrupt(m_avr, vec);
@@ -214,8 +203,7 @@ void AvrChip::write_timsk(std::uint16_t addr, std::uint8_t v) {
     // simavr queues an interrupt only when its flag is raised while enabled: enabling one whose flag is already
     // set must fire it now, as on silicon.
     for (int bit = 0; bit < 8; ++bit) {
-        const auto flag = flag_of_bit(bit);
-        const int n = flag ? timer_vector(timer_of(addr), *flag) : 0;
+        const int n = flag_bit_vector(addr, bit);
         if (((v >> bit) & 1U) == 0 || n == 0) continue;
         avr_int_vector_t* vec = m_vectors[static_cast<std::size_t>(n)];
         if (avr_regbit_get(m_avr, vec->raised) != 0 && vec->pending == 0) avr_raise_interrupt(m_avr, vec);

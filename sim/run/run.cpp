@@ -5,11 +5,9 @@
 
 #include "metrics/commanded_rates.hpp"
 #include "metrics/metrics.hpp"
+#include "run/architecture.hpp"
 #include "run/job.hpp"
 #include "run/program_report.hpp"
-#include "systems/atmega/atmega_system.hpp"
-#include "systems/fpga_uart_system.hpp"
-#include "systems/spi_fpga/spi_fpga_system.hpp"
 
 namespace cnc::sim {
 
@@ -58,20 +56,14 @@ nlohmann::json warnings_json(const std::vector<Warning>& warnings, bool detail) 
 }  // namespace
 
 RunOutcome run_scenario(const Scenario& s) {
-    const Job job = load_job(s);
+    const Architecture& architecture = find_architecture(s.architecture, s.file + ": scenario.architecture");
+    const Job job = architecture.runs_job ? load_job(s) : Job{};
     RunOutcome out;
-    if (s.architecture == "atmega") {
-        out.arch = run_atmega(s, job);
-    } else if (s.architecture == "spi-fpga") {
-        out.arch = run_spi_fpga(s, job);
-    } else {
-        out.arch = run_fpga_uart(s, job);
-    }
+    out.arch = architecture.run(s, job);
     if (job.program) {
-        // The seed 000 FPGA and the seed 003 head switch by motion code; the spi-fpga frame carries the job's bit.
-        const LaserSwitching switching =
-            s.architecture == "spi-fpga" ? LaserSwitching::FollowsJob : LaserSwitching::ByMotionKind;
-        for (Warning& w : laser_warnings(*job.program, switching)) out.arch.warnings.push_back(std::move(w));
+        for (Warning& w : laser_warnings(*job.program, architecture.laser_switching)) {
+            out.arch.warnings.push_back(std::move(w));
+        }
     }
     out.arch.warnings.insert(out.arch.warnings.begin(), job.warnings.begin(), job.warnings.end());
     out.metrics = metrics::compute_metrics(out.arch.input);

@@ -14,6 +14,7 @@
 #include "common/units.hpp"
 #include "host/core/soft_limits.hpp"
 #include "metrics/vcd_timescale.hpp"
+#include "run/architecture.hpp"
 
 namespace cnc::sim {
 
@@ -163,6 +164,32 @@ void reject_moved_keys(const KeyReader& r) {
         }
     }
 }
+}  // namespace
+
+void read_fpga_settings(KeyReader& r, fpga::FpgaConfig& cfg) {
+    cfg.clk_hz = static_cast<std::uint32_t>(
+        r.get_int("fpga.clock_hz", cfg.clk_hz, 1'000'000, 500'000'000, "FPGA clock, Hz (CLOCK_50)"));
+    const auto fpga_baud = r.get_int("fpga.uart_baud", 115'200, 300, 10'000'000,
+                                     "baud rate the FPGA UART was built for (bit = clock/baud cycles)");
+    cfg.uart_full_bit_cycles = static_cast<std::uint32_t>(cfg.clk_hz / fpga_baud);
+    cfg.uart_half_bit_cycles = cfg.uart_full_bit_cycles / 2;
+    cfg.watchdog_cycles = static_cast<std::uint32_t>(
+        r.get_float("fpga.watchdog_ms", 100.0, 0.001, 10000.0, "packet_decoder inter-byte watchdog, ms") * 1e-3 *
+        cfg.clk_hz);
+    cfg.pulse_high_cycles = static_cast<std::uint32_t>(
+        r.get_int("fpga.pulse_high_cycles", cfg.pulse_high_cycles, 1, 1'000'000, "STEP high time, clocks"));
+    cfg.dir_settle_cycles = static_cast<std::uint32_t>(
+        r.get_int("fpga.dir_settle_cycles", cfg.dir_settle_cycles, 1, 511, "DIR to first STEP wait, clocks"));
+    cfg.init_packet_wired = r.get_bool("fpga.init_packet_wired", cfg.init_packet_wired,
+                                       "init packet reaches step_gen (false: appendix top.v leaves it open)");
+    cfg.period_arithmetic = r.get_choice("fpga.period_arithmetic", "exact", {"exact", "wrap32"},
+                                         "subordinate period product: exact, or the appendix's 32-bit wrap") == "exact"
+                                ? fpga::PeriodArithmetic::Exact
+                                : fpga::PeriodArithmetic::Wrap32;
+    check_fpga(r, cfg);
+}
+
+namespace {
 
 // Reads every key (registering its documentation); `base` resolves relative paths.
 Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
@@ -170,7 +197,7 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     Scenario s;
     s.file = file;
     s.name = r.get_string("scenario.name", fs::path(file).stem().string(), "name shown in reports");
-    s.architecture = r.get_choice("scenario.architecture", "fpga-uart", {"fpga-uart", "atmega", "spi-fpga"},
+    s.architecture = r.get_choice("scenario.architecture", "fpga-uart", architecture_names(),
                                   "controller architecture (docs/architectures.md)");
     const std::string job = r.get_string("scenario.job", "",
                                          "job file, relative to the scenario: G-code, or a seed 000 steps file");
@@ -262,32 +289,7 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                                   ? host::FeedUnit::MmPerMinute
                                   : host::FeedUnit::MmPerSecond;
 
-    s.fpga.clk_hz = static_cast<std::uint32_t>(
-        r.get_int("fpga.clock_hz", s.fpga.clk_hz, 1'000'000, 500'000'000, "FPGA clock, Hz (CLOCK_50)"));
-    const auto fpga_baud = r.get_int("fpga.uart_baud", 115'200, 300, 10'000'000,
-                                     "baud rate the FPGA UART was built for (bit = clock/baud cycles)");
-    s.fpga.uart_full_bit_cycles = static_cast<std::uint32_t>(s.fpga.clk_hz / fpga_baud);
-    s.fpga.uart_half_bit_cycles = s.fpga.uart_full_bit_cycles / 2;
-    s.fpga.watchdog_cycles = static_cast<std::uint32_t>(
-        r.get_float("fpga.watchdog_ms", 100.0, 0.001, 10000.0, "packet_decoder inter-byte watchdog, ms") * 1e-3 *
-        s.fpga.clk_hz);
-    s.fpga.pulse_high_cycles = static_cast<std::uint32_t>(
-        r.get_int("fpga.pulse_high_cycles", s.fpga.pulse_high_cycles, 1, 1'000'000, "STEP high time, clocks"));
-    s.fpga.dir_settle_cycles = static_cast<std::uint32_t>(
-        r.get_int("fpga.dir_settle_cycles", s.fpga.dir_settle_cycles, 1, 511, "DIR to first STEP wait, clocks"));
-    s.fpga.init_packet_wired = r.get_bool("fpga.init_packet_wired", s.fpga.init_packet_wired,
-                                          "init packet reaches step_gen (false: appendix top.v leaves it open)");
-    s.fpga.period_arithmetic = r.get_choice("fpga.period_arithmetic", "exact", {"exact", "wrap32"},
-                                            "subordinate period product: exact, or the appendix's 32-bit wrap") ==
-                                       "exact"
-                                   ? fpga::PeriodArithmetic::Exact
-                                   : fpga::PeriodArithmetic::Wrap32;
-
-    check_fpga(r, s.fpga);
-    read_atmega_settings(r, s.atmega, base);
-    read_spi_fpga_settings(r, s.spi_fpga, base);
-    s.spi_fpga.planner.x = s.machine.x.limits;  // one machine for every architecture
-    s.spi_fpga.planner.y = s.machine.y.limits;
+    for (const Architecture& a : architectures()) a.read_settings(r, s, base);
 
     s.vcd_path = r.get_string("trace.vcd", "", "VCD file to write (relative to the working directory); empty: none");
     s.vcd_timescale_fs = *metrics::parse_vcd_timescale_fs(r.get_choice(
@@ -333,7 +335,9 @@ Scenario load_scenario(const std::string& path, const std::vector<std::string>& 
     KeyReader reader(root, path, overridden);
     Scenario s = read(reader, path, fs::path(path).parent_path());
     reader.reject_unknown_keys();
-    if (s.job_path.empty()) reader.fail("scenario.job", "missing: the job file to run is required");
+    if (s.job_path.empty() && find_architecture(s.architecture, path).runs_job) {
+        reader.fail("scenario.job", "missing: the job file to run is required");
+    }
     return s;
 }
 

@@ -61,6 +61,9 @@ struct Scenario {
 // Reads and validates; throws BadInput naming the file, line and key.
 Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides);
 
+// The fpga.* keys of the seed 000 FPGA (the fpga-uart architecture), validated against its registers.
+void read_fpga_settings(KeyReader& r, fpga::FpgaConfig& cfg);
+
 // Every scenario key with its type, default, range and meaning, in reading order.
 std::vector<KeyDoc> scenario_keys();
 

@@ -193,3 +193,18 @@ TEST(AvrTimerFidelity, OcrWrittenAboveOrBelowTheRunningCount) {
     EXPECT_EQ(*(it + 1) - *it, 11);
     EXPECT_EQ(*(it + 5) - *(it + 4), 11);
 }
+
+TEST(AvrTimerFidelity, InterruptResponseIsFourCyclesThenTheVectorJump) {
+    // Datasheet "Interrupt Response Time": the vector is entered at least 4 cycles after the flag (the CPU pushes
+    // the return address). The vector holds an RJMP (avr-ld --relax shortens the table's JMPs; avr-objdump shows
+    // `rjmp` + `nop`), 2 cycles. Timer0 CTC at N = 1 toggles OC0A at the compare match that sets OCF0A (cycle f);
+    // the main program runs NOPs, so the naked ISR's first instruction (sbi PB0) starts at f + 4 + 2. Stock
+    // libsimavr 1.6 charges nothing for the response: f + 2.
+    AvrBench b(config_for(AVR_FW_IRQ_RESPONSE_ELF));
+    b.run_until_ps(cnc::kPsPerMs);
+    const auto oc0a = edge_cycles(b, "step_x");
+    const auto isr = edge_cycles(b, "dir_x");
+    ASSERT_FALSE(oc0a.empty());
+    ASSERT_EQ(isr.size(), 1U);  // the ISR sets the pin; only its first pass makes an edge
+    EXPECT_EQ(isr.front() - oc0a.front(), 4 + 2);
+}

@@ -1,0 +1,32 @@
+// From the motor shaft to the carriage (seed 002 §3, §8.2): the 1:26 gearbox, the 1:1 timing belt, the
+// leadscrew (3.175 mm per revolution) and the backlash of all three lumped at the leadscrew: the screw (and the
+// carriage) stays put while the gearbox output turns through the play, and is pushed once the play is taken up.
+// The belt is taken as rigid (§8.2: "very stiff"); the carriage's mass is in the motor's reflected inertia.
+#pragma once
+
+namespace cnc::lathe {
+
+struct DriveTrainParams {
+    double gear_ratio = 26.0;        // motor revolutions per gearbox output revolution (§3)
+    double belt_ratio = 1.0;         // gearbox output revolutions per leadscrew revolution (§3, [I])
+    double lead_mm = 3.175;          // leadscrew pitch (§6.1 LS_PITCH)
+    double backlash_mm = 0.0;        // play at the carriage, all three sources together (§8.2: size unknown)
+};
+
+class DriveTrain {
+public:
+    explicit DriveTrain(const DriveTrainParams& p) : m_p(p) {}
+
+    // Follows the motor to `motor_angle_rad` (from the start, where the play is centred) and returns the
+    // carriage position, mm (positive = the motor's positive direction).
+    double follow(double motor_angle_rad);
+    [[nodiscard]] double carriage_mm() const { return m_carriage_mm; }
+    // The carriage position the motor angle would give with no play.
+    [[nodiscard]] double rigid_mm(double motor_angle_rad) const;
+
+private:
+    DriveTrainParams m_p;
+    double m_carriage_mm = 0.0;
+};
+
+}  // namespace cnc::lathe

@@ -60,7 +60,11 @@ std::vector<std::vector<RateSegment>> commanded_rates_from_report(const json& re
             }
             return from_segments(rates, filename, axes);
         }
-        return from_moves(report.at("metrics").at("moves").at("t_first_edge_ps"), axes);
+        // Pulse runs are split per executed piece (chord, command); a report without --detail holds only the
+        // programmed moves, which is the same for a job of straight lines.
+        const json& metrics = report.at("metrics");
+        const json& pieces = metrics.contains("pieces") ? metrics.at("pieces") : metrics.at("moves");
+        return from_moves(pieces.at("t_first_edge_ps"), axes);
     } catch (const json::exception& e) {
         throw BadInput(filename, std::string("not a cncsim run report (") + e.what() + ")");
     }

@@ -1,8 +1,10 @@
 #include "metrics/metrics.hpp"
 
+#include <cmath>
 #include <utility>
 
 #include "metrics/edge_index.hpp"
+#include "metrics/programmed_moves.hpp"
 #include "metrics/stats.hpp"
 #include "metrics/sync_error.hpp"
 
@@ -32,7 +34,7 @@ AxisMetrics axis_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t a
     return am;
 }
 
-MoveMetrics move_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t m) {
+MoveMetrics piece_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t m) {
     const MoveSpec& spec = in.moves[m];
     MoveMetrics mm;
     mm.index = spec.index;
@@ -47,6 +49,41 @@ MoveMetrics move_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t m
         const EdgeRange r = idx.by_move[a][m];
         for (std::size_t k = r.begin; k < r.end; ++k) emitted += idx.axes[a].rising_sign[k];
         mm.steps_emitted.push_back(emitted);
+    }
+    return mm;
+}
+
+// Following RMS over the samples of several pieces, from each piece's RMS and count.
+void add_rms(std::optional<double>& rms, std::size_t& count, const MovePath& piece) {
+    if (!piece.following_rms_um || piece.samples == 0) return;
+    const double sum_sq = rms ? *rms * *rms * static_cast<double>(count) : 0.0;
+    const double piece_sq = *piece.following_rms_um * *piece.following_rms_um * static_cast<double>(piece.samples);
+    count += piece.samples;
+    rms = std::sqrt((sum_sq + piece_sq) / static_cast<double>(count));
+}
+
+MoveMetrics programmed_metrics(const RunInput& in, const std::vector<MoveMetrics>& pieces, const ProgrammedMove& pm) {
+    const MoveSpec& spec = in.moves[pm.first_piece];
+    MoveMetrics mm = pieces[pm.first_piece];
+    mm.index = spec.programmed >= 0 ? spec.programmed + 1 : spec.index;
+    mm.pieces = pm.end_piece - pm.first_piece;
+    mm.t_first_edge_ps = pm.t_first_edge_ps;
+    mm.t_last_edge_ps = pm.t_last_edge_ps;
+    std::size_t rms_count = mm.path.following_rms_um ? mm.path.samples : 0;
+    for (std::size_t p = pm.first_piece + 1; p < pm.end_piece; ++p) {
+        const MoveMetrics& piece = pieces[p];
+        for (std::size_t a = 0; a < mm.steps_commanded.size(); ++a) {
+            mm.steps_commanded[a] += piece.steps_commanded[a];
+            mm.steps_emitted[a] += piece.steps_emitted[a];
+            keep_max(mm.sync_max_abs_ns[a], piece.sync_max_abs_ns[a]);
+        }
+        MovePath& path = mm.path;
+        add_rms(path.following_rms_um, rms_count, piece.path);
+        path.samples += piece.path.samples;
+        keep_max(path.contour_max_um, piece.path.contour_max_um);
+        keep_max(path.following_max_um, piece.path.following_max_um);
+        keep_max(path.endpoint_vs_command_um, piece.path.endpoint_vs_command_um);
+        path.endpoint_vs_program_um = piece.path.endpoint_vs_program_um;
     }
     return mm;
 }
@@ -81,14 +118,19 @@ RunMetrics compute_metrics(const RunInput& in) {
     }
     out.pulse.sync_max_abs_ns = sync.max_abs_ns;
 
+    const std::vector<ProgrammedMove> programmed = programmed_moves(in, idx);
     out.path = compute_path_accuracy(in, idx);
-    out.timing = compute_timing(in, idx);
+    out.timing = compute_timing(in, idx, programmed);
     out.laser = compute_laser(in, idx);
     for (std::size_t m = 0; m < in.moves.size(); ++m) {
-        MoveMetrics mm = move_metrics(in, idx, m);
+        MoveMetrics mm = piece_metrics(in, idx, m);
         mm.sync_max_abs_ns = sync.move_axis_max_abs_ns[m];
-        mm.timing = std::move(out.timing.moves[m]);
         mm.path = std::move(out.path.moves[m]);
+        out.pieces.push_back(std::move(mm));
+    }
+    for (std::size_t m = 0; m < programmed.size(); ++m) {
+        MoveMetrics mm = programmed_metrics(in, out.pieces, programmed[m]);
+        mm.timing = std::move(out.timing.moves[m]);
         out.moves.push_back(std::move(mm));
     }
     out.timing.moves.clear();

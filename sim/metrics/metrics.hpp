@@ -35,9 +35,12 @@ struct AxisMetrics {
     DriverTimingReport driver;
 };
 
+// A programmed move (RunMetrics::moves) or one executed piece of it (RunMetrics::pieces): a programmed move sums
+// its pieces' steps and takes the worst of their figures; timing is defined on programmed moves only.
 struct MoveMetrics {
-    int index = 0;
+    int index = 0;  // programmed move: 1-based in the job (a steps-file row: the row); piece: the piece's own
     int line = 0;
+    std::size_t pieces = 1;
     bool rapid = false;
     double feed_mm_per_min = 0.0;
     std::vector<std::int64_t> steps_commanded;  // [axis]
@@ -63,11 +66,12 @@ struct RunMetrics {
     bool runs_per_rate_segment = false;  // RunInput::rate_segments given: runs are its segments, not moves
     double run_split_tolerance = 0.0;  // the analyze-mode setting the runs were split with
     std::vector<AxisMetrics> axes;
-    std::vector<MoveMetrics> moves;
+    std::vector<MoveMetrics> moves;   // programmed moves (G-code lines)
+    std::vector<MoveMetrics> pieces;  // executed pieces (RunInput::moves): packets, chords, commands
     PulseTotals pulse;
     DriverLimits limits;
-    PathResult path;      // per-move parts moved into `moves`
-    TimingResult timing;  // per-move parts moved into `moves`
+    PathResult path;      // per-piece parts moved into `pieces`
+    TimingResult timing;  // per-programmed-move parts moved into `moves`
     std::optional<LaserResult> laser;
 };
 

@@ -3,67 +3,106 @@
 #include <algorithm>
 #include <cmath>
 
+#include "metrics/cruise_feed.hpp"
 #include "metrics/stats.hpp"
 
 namespace cnc::metrics {
 
 namespace {
 
-// When a move's motion ends: per axis its last rising edge plus the period that edge closes (the interval to the
-// edge before it; with one edge, the commanded period), the latest over the axes. A constant-rate run of n edges
-// then lasts exactly n periods from its first edge.
-std::optional<TimePs> motion_end_ps(const MoveSpec& move, const EdgeIndex& idx, std::size_t m) {
+constexpr double kSecondsPerMinute = 60.0;
+
+// The piece of programmed move pm that holds rising edge k of axis a.
+const MoveSpec& piece_of(const RunInput& in, const EdgeIndex& idx, const ProgrammedMove& pm, std::size_t a,
+                         std::size_t k) {
+    for (std::size_t p = pm.first_piece; p + 1 < pm.end_piece; ++p) {
+        if (k < idx.by_move[a][p].end) return in.moves[p];
+    }
+    return in.moves[pm.end_piece - 1];
+}
+
+// When a programmed move's motion ends: per axis its last rising edge plus the period that edge closes (the
+// interval to the edge before it; with one edge, its piece's commanded period), the latest over the axes. A
+// constant-rate run of n edges then lasts exactly n periods from its first edge.
+std::optional<TimePs> motion_end_ps(const RunInput& in, const EdgeIndex& idx, const ProgrammedMove& pm) {
     std::optional<TimePs> end;
     for (std::size_t a = 0; a < idx.axes.size(); ++a) {
-        const EdgeRange r = idx.by_move[a][m];
+        const EdgeRange r = pm.edges[a];
         if (r.empty()) continue;
         const std::vector<TimePs>& rising = idx.axes[a].rising;
         const TimePs last = rising[r.end - 1];
         TimePs period = 0;
         if (r.size() >= 2) {
             period = last - rising[r.end - 2];
-        } else if (a < move.rate_steps_per_s.size() && move.rate_steps_per_s[a] > 0.0) {
-            period = s_to_ps(1.0 / move.rate_steps_per_s[a]);
+        } else {
+            const MoveSpec& piece = piece_of(in, idx, pm, a, r.begin);
+            if (a < piece.rate_steps_per_s.size() && piece.rate_steps_per_s[a] > 0.0) {
+                period = s_to_ps(1.0 / piece.rate_steps_per_s[a]);
+            }
         }
         end = std::max(end.value_or(last + period), last + period);
     }
     return end;
 }
 
-// Motion time of move m: from its first rising edge to the end of its motion, but never past the next move's
-// first edge nor the job's end, so that the motion of the moves never overlaps and never exceeds the job.
-std::optional<double> motion_time_s(const RunInput& in, const EdgeIndex& idx, std::size_t m) {
-    if (!idx.move_first_edge_ps[m]) return std::nullopt;
-    TimePs end = motion_end_ps(in.moves[m], idx, m).value_or(*idx.move_first_edge_ps[m]);
-    for (std::size_t next = m + 1; next < in.moves.size(); ++next) {
-        if (!idx.move_first_edge_ps[next]) continue;
-        end = std::min(end, *idx.move_first_edge_ps[next]);
+// Motion time of programmed move m: from its first rising edge to the end of its motion, but never past the next
+// move's first edge nor the job's end, so that the motion of the moves never overlaps and never exceeds the job.
+std::optional<double> motion_time_s(const RunInput& in, const EdgeIndex& idx,
+                                    const std::vector<ProgrammedMove>& programmed, std::size_t m) {
+    const ProgrammedMove& pm = programmed[m];
+    if (!pm.t_first_edge_ps) return std::nullopt;
+    TimePs end = motion_end_ps(in, idx, pm).value_or(*pm.t_first_edge_ps);
+    for (std::size_t next = m + 1; next < programmed.size(); ++next) {
+        if (!programmed[next].t_first_edge_ps) continue;
+        end = std::min(end, *programmed[next].t_first_edge_ps);
         break;
     }
     // A job that ended before this move's last edge (an aborted run, whose metrics are partial, or an analyzed
     // trace with no job window) does not cut it.
-    if (in.t_job_end_ps > *idx.move_last_edge_ps[m]) end = std::min(end, in.t_job_end_ps);
-    return ps_to_s(end - *idx.move_first_edge_ps[m]);
+    if (in.t_job_end_ps > *pm.t_last_edge_ps) end = std::min(end, in.t_job_end_ps);
+    return ps_to_s(end - *pm.t_first_edge_ps);
+}
+
+// The achieved feed of a cutting move run by a planner: the STEP edges' path speed over its cruise (none: the
+// commanded speed never reached F, or the cruise holds fewer than two edge instants).
+std::optional<double> cruise_feed_mm_per_min(const RunInput& in, const ProgrammedMove& pm, StepPosition& position,
+                                             bool& below_feed) {
+    const MoveSpec& first = in.moves[pm.first_piece];
+    const auto cruise = cruise_window(*in.commanded, first.t_begin_ps, in.moves[pm.end_piece - 1].t_end_ps,
+                                      first.feed_mm_per_min / kSecondsPerMinute);
+    below_feed = !cruise;
+    if (!cruise) return std::nullopt;
+    const auto travel = position.travel(first.path, cruise->first, cruise->second);
+    if (!travel) return std::nullopt;
+    return travel->path_mm / ps_to_s(travel->t_last_ps - travel->t_first_ps) * kSecondsPerMinute;
 }
 
 }  // namespace
 
-TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx) {
+TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx, const std::vector<ProgrammedMove>& programmed) {
     TimingResult out;
     out.job_time_s = ps_to_s(in.t_job_end_ps - in.t_job_start_ps);
-    out.moves.resize(in.moves.size());
+    out.moves.resize(programmed.size());
 
+    StepPosition position(in, idx);
     double feed_sum = 0.0;
     double feed_abs_sum = 0.0;
-    for (std::size_t m = 0; m < in.moves.size(); ++m) {
-        const MoveSpec& move = in.moves[m];
+    for (std::size_t m = 0; m < programmed.size(); ++m) {
+        const ProgrammedMove& pm = programmed[m];
+        const MoveSpec& first = in.moves[pm.first_piece];
         MoveTiming& mt = out.moves[m];
-        mt.motion_time_s = motion_time_s(in, idx, m);
+        mt.motion_time_s = motion_time_s(in, idx, programmed, m);
         if (!mt.motion_time_s) continue;
         out.motion_time_s = out.motion_time_s.value_or(0.0) + *mt.motion_time_s;
-        if (move.rapid || move.feed_mm_per_min <= 0.0 || *mt.motion_time_s <= 0.0) continue;
-        mt.achieved_feed_mm_per_min = geom::distance(move.from_mm, move.to_mm) / *mt.motion_time_s * 60.0;
-        mt.feed_error_pct = (*mt.achieved_feed_mm_per_min - move.feed_mm_per_min) / move.feed_mm_per_min * 100.0;
+        if (first.rapid || first.feed_mm_per_min <= 0.0 || *mt.motion_time_s <= 0.0) continue;
+        if (in.commanded) {
+            mt.achieved_feed_mm_per_min = cruise_feed_mm_per_min(in, pm, position, mt.below_feed);
+            out.below_feed_moves += mt.below_feed ? 1 : 0;
+        } else {
+            mt.achieved_feed_mm_per_min = first.path.length_mm() / *mt.motion_time_s * kSecondsPerMinute;
+        }
+        if (!mt.achieved_feed_mm_per_min) continue;
+        mt.feed_error_pct = (*mt.achieved_feed_mm_per_min - first.feed_mm_per_min) / first.feed_mm_per_min * 100.0;
         ++out.feed_moves;
         feed_sum += *mt.feed_error_pct;
         feed_abs_sum += std::fabs(*mt.feed_error_pct);
@@ -76,10 +115,10 @@ TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx) {
 
     std::optional<std::size_t> previous;
     TimePs dead_total_ps = 0;
-    for (std::size_t m = 0; m < in.moves.size(); ++m) {
-        if (!idx.move_first_edge_ps[m]) continue;
+    for (std::size_t m = 0; m < programmed.size(); ++m) {
+        if (!programmed[m].t_first_edge_ps) continue;
         if (previous) {
-            const TimePs dead = *idx.move_first_edge_ps[m] - *idx.move_last_edge_ps[*previous];
+            const TimePs dead = *programmed[m].t_first_edge_ps - *programmed[*previous].t_last_edge_ps;
             out.gaps.push_back({*previous, m, dead});
             dead_total_ps += dead;
             keep_max(out.dead_max_ms, ps_to_s(dead) * 1e3);

@@ -1,44 +1,52 @@
-// Per-move timing: motion time, achieved feed against the programmed F, dead time between moves,
-// and the job totals (DESIGN.md §4 "Feed error", "Job timing").
+// Per programmed move timing: motion time, achieved feed against the programmed F, dead time between programmed
+// moves, and the job totals (DESIGN.md §4 "Feed error", "Job timing"; definitions in docs/metrics.md).
 #pragma once
 #include <cstddef>
 #include <optional>
 #include <vector>
 
 #include "metrics/edge_index.hpp"
+#include "metrics/programmed_moves.hpp"
 #include "metrics/run_input.hpp"
 
 namespace cnc::metrics {
 
 struct MoveTiming {
-    // From the move's first rising edge to its last one plus the period that edge closes (latest over the axes;
-    // an axis with one edge: its commanded period), so a constant-period run of n edges takes exactly n periods;
-    // cut at the next move's first edge and at the job's end, so that motion never exceeds the job.
+    // From the programmed move's first rising edge to its last one plus the period that edge closes (latest over
+    // the axes; an axis with one edge: its commanded period), so a constant-period run of n edges takes exactly n
+    // periods; cut at the next programmed move's first edge and at the job's end, so that motion never exceeds
+    // the job. The pauses between the pieces of a move (an arc's chords) are part of its motion time.
     std::optional<double> motion_time_s;
-    std::optional<double> achieved_feed_mm_per_min;  // |to_mm - from_mm| / motion time (cutting moves)
-    std::optional<double> feed_error_pct;            // (achieved - F) / F
+    // Cutting moves. Without a planner: programmed path length / motion time. With a planner (RunInput::commanded):
+    // the path speed of the STEP edges over the cruise (cruise_feed.hpp); none where the commanded speed never
+    // reaches F.
+    std::optional<double> achieved_feed_mm_per_min;
+    std::optional<double> feed_error_pct;  // (achieved - F) / F
+    bool below_feed = false;               // planner: a cutting move whose commanded speed never reached F
 };
 
 struct DeadGap {
-    std::size_t after_move = 0;   // index into the move list
+    std::size_t after_move = 0;   // index into the programmed moves
     std::size_t before_move = 0;
     TimePs dead_ps = 0;           // first rising edge of before_move - last rising edge of after_move (any axis)
 };
 
 struct TimingResult {
-    std::vector<MoveTiming> moves;
-    std::size_t feed_moves = 0;  // cutting moves with a feed error
+    std::vector<MoveTiming> moves;  // [programmed move]
+    std::size_t feed_moves = 0;     // cutting moves with a feed error
+    std::size_t below_feed_moves = 0;  // planner: cutting moves whose commanded speed never reached F
     std::optional<double> feed_error_mean_pct;      // signed mean over cutting moves
     std::optional<double> feed_error_mean_abs_pct;
     std::optional<double> feed_error_max_abs_pct;
     double job_time_s = 0.0;                        // t_job_end - t_job_start
     std::optional<double> motion_time_s;            // sum of the per-move motion times
-    std::vector<DeadGap> gaps;                      // between consecutive moves that emit steps
+    std::vector<DeadGap> gaps;                      // between consecutive programmed moves that emit steps
     std::optional<double> dead_total_ms, dead_mean_ms, dead_max_ms;
     std::optional<double> lead_in_ms;  // job start to the first rising STEP edge (any axis)
     std::optional<double> tail_ms;     // last rising STEP edge to the job end
 };
 
-[[nodiscard]] TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx);
+[[nodiscard]] TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx,
+                                          const std::vector<ProgrammedMove>& programmed);
 
 }  // namespace cnc::metrics

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "metrics/commanded.hpp"
+#include "metrics/programmed_moves.hpp"
 #include "metrics/stats.hpp"
 
 namespace cnc::metrics {
@@ -11,8 +12,6 @@ namespace cnc::metrics {
 namespace {
 
 constexpr double kUmPerMm = 1000.0;
-
-bool same_point(geom::Vec2 a, geom::Vec2 b) { return a.x_mm == b.x_mm && a.y_mm == b.y_mm; }
 
 geom::Vec2 expected_position(const MoveSpec& m, TimePs t0_ps, TimePs t_ps) {
     const double length_mm = geom::distance(m.from_mm, m.to_mm);
@@ -30,13 +29,6 @@ double contour_distance_mm(const std::vector<MoveSpec>& moves, std::size_t activ
 }
 
 }  // namespace
-
-bool same_program_segment(const MoveSpec& a, const MoveSpec& b) {
-    const geom::Segment& p = a.path;
-    const geom::Segment& q = b.path;
-    return p.is_arc == q.is_arc && same_point(p.start, q.start) && same_point(p.end, q.end) &&
-           (!p.is_arc || (same_point(p.center, q.center) && p.sweep_rad == q.sweep_rad));
-}
 
 SampleError sample_error(const RunInput& in, const EdgeIndex& idx, const MoveTimeline& timeline, std::size_t i) {
     const std::vector<MoveSpec>& moves = in.moves;
@@ -94,7 +86,7 @@ PathResult compute_path_accuracy(const RunInput& in, const EdgeIndex& idx) {
         const geom::Vec2 at_end = std::prev(after_end)->pos;
         mp.endpoint_vs_command_um = geom::distance(at_end, moves[m].to_mm) * kUmPerMm;
         keep_max(out.endpoint_vs_command_max_um, mp.endpoint_vs_command_um);
-        const bool segment_ends = m + 1 == moves.size() || !same_program_segment(moves[m], moves[m + 1]);
+        const bool segment_ends = m + 1 == moves.size() || !same_programmed_move(moves[m], moves[m + 1]);
         if (segment_ends) {
             mp.endpoint_vs_program_um = geom::distance(at_end, moves[m].path.end) * kUmPerMm;
             keep_max(out.endpoint_vs_program_max_um, mp.endpoint_vs_program_um);

@@ -15,7 +15,7 @@ struct MovePath {
     std::optional<double> contour_max_um;
     std::optional<double> following_max_um, following_rms_um;
     std::optional<double> endpoint_vs_command_um;  // tool at t_end vs the move's to_mm
-    std::optional<double> endpoint_vs_program_um;  // only on the last move of a programmed segment
+    std::optional<double> endpoint_vs_program_um;  // only on the last piece of a programmed move
 };
 
 struct PathResult {
@@ -47,8 +47,5 @@ struct SampleError {
 };
 [[nodiscard]] SampleError sample_error(const RunInput& in, const EdgeIndex& idx, const MoveTimeline& timeline,
                                        std::size_t i);
-
-// True if moves i and i+1 are chords (or pieces) of the same programmed segment.
-[[nodiscard]] bool same_program_segment(const MoveSpec& a, const MoveSpec& b);
 
 }  // namespace cnc::metrics

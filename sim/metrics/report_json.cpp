@@ -1,6 +1,6 @@
 // JSON report of a run: every number carries its unit in its key; absent figures are null. The default report
-// grows with the moves only; the pulse runs (one per move and axis, or per rate word: per servo period) and the
-// dead-time gaps come with `detail`.
+// grows with the moves only; the pulse runs (one per piece and axis, or per rate word: per servo period), the
+// dead-time gaps and the executed pieces of the programmed moves come with `detail`.
 #include <cstddef>
 
 #include "common/text_format.hpp"
@@ -121,11 +121,13 @@ constexpr double kToTheNs = 1e9;            // s
 constexpr double kToThousandths = 1e3;      // mm/min
 constexpr double kToPartsPerMillion = 1e4;  // %
 
-// A per-move field; per-axis fields take the axis too. `detail`: written only with --detail.
+// A per-move field; per-axis fields take the axis too. `detail`: written only with --detail. `programmed_only`: a
+// column of programmed moves only (their timing, move_timing.hpp), not in the pieces' table.
 struct MoveColumn {
     const char* key;
     bool detail;
     json (*value)(const MoveMetrics&);
+    bool programmed_only = false;
 };
 struct AxisColumn {
     const char* key;
@@ -140,13 +142,15 @@ const MoveColumn kMoveColumns[] = {
     {"line", false, [](const MoveMetrics& m) { return json(m.line); }},
     {"rapid", false, [](const MoveMetrics& m) { return json(m.rapid); }},
     {"feed_mm_per_min", false, [](const MoveMetrics& m) { return json(rounded(m.feed_mm_per_min, kToThousandths)); }},
+    {"pieces", false, [](const MoveMetrics& m) { return json(m.pieces); }, true},
     {"t_first_edge_ps", false, [](const MoveMetrics& m) { return opt(m.t_first_edge_ps); }},
     {"t_last_edge_ps", true, [](const MoveMetrics& m) { return opt(m.t_last_edge_ps); }},
-    {"motion_time_s", false, [](const MoveMetrics& m) { return rounded_opt(m.timing.motion_time_s, kToTheNs); }},
+    {"motion_time_s", false, [](const MoveMetrics& m) { return rounded_opt(m.timing.motion_time_s, kToTheNs); },
+     true},
     {"achieved_feed_mm_per_min", true,
-     [](const MoveMetrics& m) { return rounded_opt(m.timing.achieved_feed_mm_per_min, kToThousandths); }},
+     [](const MoveMetrics& m) { return rounded_opt(m.timing.achieved_feed_mm_per_min, kToThousandths); }, true},
     {"feed_error_pct", false,
-     [](const MoveMetrics& m) { return rounded_opt(m.timing.feed_error_pct, kToPartsPerMillion); }},
+     [](const MoveMetrics& m) { return rounded_opt(m.timing.feed_error_pct, kToPartsPerMillion); }, true},
     {"tool_samples", true, [](const MoveMetrics& m) { return json(m.path.samples); }},
     {"contour_max_um", false, [](const MoveMetrics& m) { return rounded_opt(m.path.contour_max_um, kToTheNm); }},
     {"following_max_um", false, [](const MoveMetrics& m) { return rounded_opt(m.path.following_max_um, kToTheNm); }},
@@ -165,12 +169,13 @@ const AxisColumn kAxisColumns[] = {
 
 // The moves as columns, one array per field in move order (per axis: one per axis name), so that a long job's
 // moves are a few lines of the report file (report_text.cpp) instead of one record of 20 keys per move.
-json moves_json(const RunMetrics& m, bool detail) {
+// `programmed`: the programmed moves; else the pieces (no timing columns).
+json moves_json(const RunMetrics& m, const std::vector<MoveMetrics>& moves, bool detail, bool programmed) {
     json cols = json::object();
     for (const MoveColumn& c : kMoveColumns) {
-        if (c.detail && !detail) continue;
+        if ((c.detail && !detail) || (c.programmed_only && !programmed)) continue;
         json values = json::array();
-        for (const MoveMetrics& mv : m.moves) values.push_back(c.value(mv));
+        for (const MoveMetrics& mv : moves) values.push_back(c.value(mv));
         cols[c.key] = std::move(values);
     }
     for (const AxisColumn& c : kAxisColumns) {
@@ -178,7 +183,7 @@ json moves_json(const RunMetrics& m, bool detail) {
         json per_axis = json::object();
         for (std::size_t a = 0; a < m.axes.size(); ++a) {
             json values = json::array();
-            for (const MoveMetrics& mv : m.moves) values.push_back(c.value(mv, a));
+            for (const MoveMetrics& mv : moves) values.push_back(c.value(mv, a));
             per_axis[m.axes[a].name] = std::move(values);
         }
         cols[c.key] = std::move(per_axis);
@@ -250,7 +255,7 @@ nlohmann::json to_json(const RunMetrics& m, bool detail) {
     const PulseTotals& p = m.pulse;
     const PathResult& path = m.path;
     const TimingResult& t = m.timing;
-    return {{"limits", limits_json(m.limits)},
+    json out = {{"limits", limits_json(m.limits)},
             {"pulse",
              {{"jitter_std_max_ns", opt(p.jitter_std_max_ns)},
               {"jitter_pp_max_ns", opt(p.jitter_pp_max_ns)},
@@ -264,7 +269,7 @@ nlohmann::json to_json(const RunMetrics& m, bool detail) {
             {"run_split_tolerance",
              m.with_moves || m.runs_per_rate_segment ? json(nullptr) : json(m.run_split_tolerance)},
             {"axes", axes},
-            {"moves", moves_json(m, detail)},
+            {"moves", moves_json(m, m.moves, detail, true)},
             {"worst_moves", worst_json(m)},
             {"path",
              {{"tool_samples", path.samples},
@@ -277,11 +282,14 @@ nlohmann::json to_json(const RunMetrics& m, bool detail) {
               {"job_end_um", opt(path.job_end_um)}}},
             {"feed",
              {{"cutting_moves_measured", t.feed_moves},
+              {"cutting_moves_below_feed", t.below_feed_moves},
               {"feed_error_mean_pct", opt(t.feed_error_mean_pct)},
               {"feed_error_mean_abs_pct", opt(t.feed_error_mean_abs_pct)},
               {"feed_error_max_abs_pct", opt(t.feed_error_max_abs_pct)}}},
             {"job", job_json(m, detail)},
             {"laser", laser_json(m.laser)}};
+    if (detail) out["pieces"] = moves_json(m, m.pieces, detail, false);
+    return out;
 }
 
 }  // namespace cnc::metrics

@@ -29,10 +29,13 @@ using ToolSample = cnc::ToolSample;
 // The programmed path and a planner's commanded trajectory are in the XY plane: axes 0 and 1 of RunInput::axes.
 inline constexpr std::size_t kPathAxes = 2;
 
-// One executed motion command (packet, chord or planner segment).
+// One executed motion command, a piece of a programmed move (a packet, a chord, a command, or a whole programmed
+// move for a planner that follows it as one).
 struct MoveSpec {
     int index = 0;
     int line = 0;                 // G-code line
+    int programmed = -1;          // the programmed move it executes (index into the job's moves); -1: a piece of its
+                                  // own (a steps-file row). Consecutive pieces of one programmed move share it.
     geom::Segment path;           // programmed geometry the move belongs to (a chord's parent arc, or the line)
     geom::Vec2 from_mm, to_mm;    // this move's own commanded end points (chord ends, step-quantised)
     double feed_mm_per_min = 0.0; // programmed path feed F
@@ -76,7 +79,7 @@ struct RateSegment {
 
 struct RunInput {
     std::vector<AxisTrace> axes;    // x, y (analyze may give one)
-    std::vector<MoveSpec> moves;    // sorted by t_begin_ps; empty for analyze
+    std::vector<MoveSpec> moves;    // the executed pieces, sorted by t_begin_ps; empty for analyze
     std::vector<ToolSample> tool;   // sorted by t_ps; empty for analyze
     std::optional<EdgeLog> laser;
     TimePs t_job_start_ps = 0;

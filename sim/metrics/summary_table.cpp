@@ -75,9 +75,10 @@ std::string path_section(const RunMetrics& m) {
 
 std::string feed_section(const RunMetrics& m) {
     const TimingResult& f = m.timing;
-    TextTable t({"cutting moves", "feed error mean [%]", "feed error mean abs [%]", "feed error max abs [%]"});
-    t.add_row({count(f.feed_moves), fixed(f.feed_error_mean_pct, 4), fixed(f.feed_error_mean_abs_pct, 4),
-               fixed(f.feed_error_max_abs_pct, 4)});
+    TextTable t({"cutting moves", "below F", "feed error mean [%]", "feed error mean abs [%]",
+                 "feed error max abs [%]"});
+    t.add_row({count(f.feed_moves), count(f.below_feed_moves), fixed(f.feed_error_mean_pct, 4),
+               fixed(f.feed_error_mean_abs_pct, 4), fixed(f.feed_error_max_abs_pct, 4)});
     return t.render("Feed (cutting moves)");
 }
 

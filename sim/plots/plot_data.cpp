@@ -11,6 +11,7 @@
 #include "metrics/commanded.hpp"
 #include "metrics/edge_index.hpp"
 #include "metrics/path_accuracy.hpp"
+#include "metrics/programmed_moves.hpp"
 #include "metrics/pulse_runs.hpp"
 
 namespace cnc::sim {
@@ -49,7 +50,7 @@ double write_program(const RunInput& in, const fs::path& dir) {
     std::optional<geom::Vec2> feed_end, rapid_end;
     geom::Box box{{1e300, 1e300}, {-1e300, -1e300}};
     for (std::size_t i = 0; i < in.moves.size(); ++i) {
-        if (i > 0 && metrics::same_program_segment(in.moves[i - 1], in.moves[i])) continue;  // chords of one arc
+        if (i > 0 && metrics::same_programmed_move(in.moves[i - 1], in.moves[i])) continue;  // chords of one arc
         const geom::Segment& seg = in.moves[i].path;
         std::ofstream& out = in.moves[i].rapid ? rapid : feed;
         std::optional<geom::Vec2>& end = in.moves[i].rapid ? rapid_end : feed_end;

@@ -22,6 +22,7 @@ std::vector<metrics::MoveSpec> commanded_moves(const host::Program* program,
         at_y += seg.steps_y;
         m.to_mm = start_mm + geom::Vec2{static_cast<double>(at_x) * mm_x, static_cast<double>(at_y) * mm_y};
         const bool programmed = program != nullptr && seg.move >= 0;
+        m.programmed = programmed ? seg.move : -1;
         m.path = programmed ? program->moves[static_cast<std::size_t>(seg.move)].path
                             : geom::Segment::line(m.from_mm, m.to_mm);
         m.feed_mm_per_min = seg.path_feed_mm_per_min;

@@ -114,10 +114,11 @@ TEST(AtmegaCircle, ChordsRunAndContourErrorIsReported) {
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& chords = out.report.at("atmega").at("chords");
     EXPECT_EQ(chords.at("late"), 0);  // F600: a 2-degree chord takes 35 ms, its 4 bytes 12 ms
-    ASSERT_EQ(out.metrics.moves.size(), 181U);
+    ASSERT_EQ(out.metrics.pieces.size(), 181U);
+    ASSERT_EQ(out.metrics.moves.size(), 2U);  // the G00 and the circle
     double chord_contour_max = 0.0;
-    for (std::size_t i = 1; i < out.metrics.moves.size(); ++i) {
-        const auto& m = out.metrics.moves[i];
+    for (std::size_t i = 1; i < out.metrics.pieces.size(); ++i) {
+        const auto& m = out.metrics.pieces[i];
         ASSERT_EQ(m.steps_emitted[0], m.steps_commanded[0]) << "chord " << i;  // X is counted
         chord_contour_max = std::max(chord_contour_max, *m.path.contour_max_um);
     }
@@ -146,7 +147,9 @@ TEST(AtmegaLongMove, SplitAndReported) {
     ASSERT_TRUE(out.ok) << out.failure;
     EXPECT_TRUE(has_warning(out, "G00 count 67200 exceeds the 16-bit step counter (409.6 mm at 160 steps/mm)"));
     EXPECT_EQ(out.metrics.axes[0].net_steps, 67200);
-    EXPECT_EQ(out.metrics.moves.size(), 2U);
+    EXPECT_EQ(out.metrics.pieces.size(), 2U);
+    ASSERT_EQ(out.metrics.moves.size(), 1U);  // one programmed move, its motion time over both commands
+    EXPECT_EQ(out.metrics.moves[0].pieces, 2U);
     EXPECT_EQ(*out.metrics.path.job_end_um, 0.0);
 }
 

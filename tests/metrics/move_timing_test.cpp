@@ -49,6 +49,43 @@ TEST(MetricsMoveTiming, SingleStepAxisUsesItsCommandedRateAndRapidsHaveNoFeedErr
     EXPECT_EQ(m.timing.feed_moves, 0U);
 }
 
+// Two pieces of one programmed move (programmed = 0, as an arc's chords) and a move of its own: timing is defined
+// on the programmed move, the pause between its pieces inside its motion time, not a dead time.
+TEST(MetricsMoveTiming, PiecesOfOneProgrammedMoveAreTimedAsOneMove) {
+    // Piece 0: X steps at 1..10 ms; piece 1: at 12..21 ms (a 2 ms pause after 10 ms); move 2: 24..28 ms.
+    RunInput in;
+    std::vector<TimePs> x = grid(kPsPerMs, kPsPerMs, 10);
+    for (const TimePs t0 : {12 * kPsPerMs, 24 * kPsPerMs}) {
+        const std::vector<TimePs> more = grid(t0, kPsPerMs, t0 == 12 * kPsPerMs ? 10 : 5);
+        x.insert(x.end(), more.begin(), more.end());
+    }
+    in.axes.push_back(test::axis(x, "x"));
+    const double step = 1.0 / 160;
+    MoveSpec a = test::line_move(0, {0, 0}, {10 * step, 0}, 375.0, 0, 11 * kPsPerMs);
+    MoveSpec b = test::line_move(1, {10 * step, 0}, {20 * step, 0}, 375.0, 11 * kPsPerMs, 23 * kPsPerMs);
+    a.path = b.path = geom::Segment::line({0, 0}, {20 * step, 0});
+    a.programmed = b.programmed = 0;
+    MoveSpec c = test::line_move(2, {20 * step, 0}, {25 * step, 0}, 375.0, 23 * kPsPerMs, 30 * kPsPerMs);
+    c.programmed = 1;
+    in.moves = {a, b, c};
+    in.t_job_end_ps = 30 * kPsPerMs;
+    const RunMetrics m = compute_metrics(in);
+    ASSERT_EQ(m.pieces.size(), 3U);
+    ASSERT_EQ(m.moves.size(), 2U);
+    EXPECT_EQ(m.moves[0].index, 1);
+    EXPECT_EQ(m.moves[0].pieces, 2U);
+    EXPECT_EQ(m.moves[0].steps_emitted, std::vector<std::int64_t>{20});
+    // Move 1: first edge 1 ms, last 21 ms plus its 1 ms period: 21 ms for 20 steps of 1/160 mm (0.125 mm): the
+    // 375 mm/min of its pieces, slowed by the pause to 0.125 mm / 21 ms = 357.14 mm/min, -1/21 = -4.76 %.
+    EXPECT_NEAR(*m.moves[0].timing.motion_time_s, 0.021, 1e-12);
+    EXPECT_NEAR(*m.moves[0].timing.feed_error_pct, -100.0 / 21.0, 1e-9);
+    // Move 2: 5 periods at F: no error. One gap, between the programmed moves: 24 - 21 = 3 ms.
+    EXPECT_NEAR(*m.moves[1].timing.feed_error_pct, 0.0, 1e-9);
+    ASSERT_EQ(m.timing.gaps.size(), 1U);
+    EXPECT_EQ(m.timing.gaps[0].dead_ps, 3 * kPsPerMs);
+    EXPECT_NEAR(*m.timing.motion_time_s, 0.026, 1e-12);
+}
+
 TEST(MetricsMoveTiming, DeadTimeBetweenMovesAndJobTotals) {
     // Move 0 steps at 1..10 ms, move 1 (no steps) in between, move 2 from 12.5 ms: one gap of 2.5 ms.
     RunInput in;

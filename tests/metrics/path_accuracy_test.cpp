@@ -63,13 +63,19 @@ TEST(MetricsPathAccuracy, EndpointErrorAgainstCommandAndAgainstProgram) {
     MoveSpec b = test::line_move(1, mid, {0.002, 1.0}, 600.0, 10 * kPsPerMs, 20 * kPsPerMs);
     a.path = arc;
     b.path = arc;
+    a.programmed = b.programmed = 0;
     in.moves = {a, b};
     in.tool = {{5 * kPsPerMs, mid}, {20 * kPsPerMs, {0.002 + 0.0003, 1.0 + 0.0004}}, {25 * kPsPerMs, {0, 1}}};
     const RunMetrics m = compute_metrics(in);
-    EXPECT_NEAR(*m.moves[0].path.endpoint_vs_command_um, 0.0, 1e-9);
-    EXPECT_FALSE(m.moves[0].path.endpoint_vs_program_um.has_value());  // not the last chord of the arc
-    EXPECT_NEAR(*m.moves[1].path.endpoint_vs_command_um, 0.5, 1e-9);
-    EXPECT_NEAR(*m.moves[1].path.endpoint_vs_program_um, std::hypot(2.3, 0.4), 1e-6);
+    EXPECT_NEAR(*m.pieces[0].path.endpoint_vs_command_um, 0.0, 1e-9);
+    EXPECT_FALSE(m.pieces[0].path.endpoint_vs_program_um.has_value());  // not the last chord of the arc
+    EXPECT_NEAR(*m.pieces[1].path.endpoint_vs_command_um, 0.5, 1e-9);
+    EXPECT_NEAR(*m.pieces[1].path.endpoint_vs_program_um, std::hypot(2.3, 0.4), 1e-6);
+    // The programmed move: the worst of its chords against their ends, its last chord against the program.
+    ASSERT_EQ(m.moves.size(), 1U);
+    EXPECT_EQ(m.moves[0].pieces, 2U);
+    EXPECT_NEAR(*m.moves[0].path.endpoint_vs_command_um, 0.5, 1e-9);
+    EXPECT_NEAR(*m.moves[0].path.endpoint_vs_program_um, std::hypot(2.3, 0.4), 1e-6);
     EXPECT_NEAR(*m.path.endpoint_vs_program_max_um, std::hypot(2.3, 0.4), 1e-6);
     EXPECT_NEAR(*m.path.job_end_um, 0.0, 1e-9);  // the last sample is back on the arc end
 }

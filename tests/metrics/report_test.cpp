@@ -104,7 +104,8 @@ TEST(MetricsReport, SummaryTableHasOneSectionPerFamilyWithUnitsInHeads) {
     EXPECT_NE(s.find("feed error max abs [%]"), std::string::npos);
     // Driver rows: axis, rule, limit, min seen, checked, violations.
     EXPECT_NE(s.find("x     step_high      1900.0         2000.0     1600           0\n"), std::string::npos) << s;
-    EXPECT_NE(s.find("            1              -0.0470                   0.0470                  0.0470\n"),
+    // Feed: 1 cutting move measured, none held below F (no planner).
+    EXPECT_NE(s.find("            1        0              -0.0470                   0.0470                  0.0470\n"),
               std::string::npos)
         << s;
     // One move (index 0, line 1) without tool samples: no contour or following figure; its feed error is first.

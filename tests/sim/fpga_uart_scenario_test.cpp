@@ -212,7 +212,8 @@ TEST(FpgaUartCircle, ContourErrorWithinChordTolerancePlusOneStep) {
                 circle_staircase_contour_max_um(out.report.at("fpga-uart").at("fpga").at("packets")), 1e-6);
     EXPECT_GT(*out.metrics.path.contour_rms_um, 0.0);
     EXPECT_LT(*out.metrics.path.contour_rms_um, *out.metrics.path.contour_max_um);
-    EXPECT_GT(out.metrics.moves.size(), 100U);  // the circle went as chords
+    EXPECT_GT(out.metrics.pieces.size(), 100U);  // the circle went as chords
+    EXPECT_EQ(out.metrics.moves.size(), 2U);     // of two programmed moves: the G0 and the circle
 }
 
 // The seed's literal chord-end rounding (each axis rounded, §3.4.4) leaves the chord ends up to 0.71 step off the

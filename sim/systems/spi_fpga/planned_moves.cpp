@@ -38,6 +38,7 @@ std::vector<metrics::MoveSpec> planned_moves(const host::Program& program, const
         metrics::MoveSpec m;
         m.index = static_cast<int>(i) + 1;
         m.line = pm.line;
+        m.programmed = static_cast<int>(i);
         m.path = pm.path;
         std::array<std::int64_t, 2> from{};
         std::array<std::int64_t, 2> to{};

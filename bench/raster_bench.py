@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""Wall time, simulated time per wall second and peak memory of cncsim against job length: a laser raster
+(bench/make_raster_job.py) of 10^3, 10^4 and 10^5 lines on fpga-uart and spi-fpga, VCD off (bounded-memory issue,
+"Speed"). Targets: 100x real time on fpga-uart, 20x on spi-fpga, peak RSS < 200 MiB, for the 10^5-line raster.
+Peak RSS is the child's own (wait4's ru_maxrss), not the script's.
+
+Usage: bench/raster_bench.py [BUILD_DIR] [LINES,...]   (default: build 1000,10000,100000)
+Prints one Markdown row per run.
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_raster_job import raster  # noqa: E402
+
+
+def run(cncsim, scenario, report):
+    start = time.monotonic()
+    child = subprocess.Popen([cncsim, "run", scenario, "--report", report, "--progress", "off"],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    _, status, usage = os.wait4(child.pid, 0)
+    wall_s = time.monotonic() - start
+    if os.waitstatus_to_exitcode(status) != 0:
+        sys.exit("cncsim failed on %s: %s" % (scenario, child.stderr.read().decode()))
+    return wall_s, usage.ru_maxrss / 1024.0  # KiB -> MiB
+
+
+def main():
+    build = sys.argv[1] if len(sys.argv) > 1 else "build"
+    sizes = [int(n) for n in (sys.argv[2] if len(sys.argv) > 2 else "1000,10000,100000").split(",")]
+    cncsim = os.path.abspath(os.path.join(build, "sim", "cncsim"))
+    print("| raster lines | architecture | simulated [s] | wall [s] | sim/wall | peak RSS [MiB] |")
+    print("|---|---|---|---|---|---|")
+    with tempfile.TemporaryDirectory() as tmp:
+        for lines in sizes:
+            job = os.path.join(tmp, "raster_%d.nc" % lines)
+            with open(job, "w") as f:
+                f.write(raster(lines))
+            for arch in ("fpga-uart", "spi-fpga"):
+                scenario = os.path.join(tmp, "raster_%d_%s.toml" % (lines, arch))
+                with open(scenario, "w") as f:
+                    f.write('[scenario]\njob = "%s"\narchitecture = "%s"\n' % (job, arch))
+                report = os.path.join(tmp, "report.json")
+                wall_s, rss_mib = run(cncsim, scenario, report)
+                with open(report) as f:
+                    sim_s = json.load(f)["metrics"]["job"]["job_time_s"]
+                print("| %d | %s | %.1f | %.2f | %.0fx | %.1f |" % (lines, arch, sim_s, wall_s, sim_s / wall_s, rss_mib),
+                      flush=True)
+
+
+if __name__ == "__main__":
+    main()

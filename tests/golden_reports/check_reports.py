@@ -82,6 +82,10 @@ def main():
                 json.dump(got, f, indent=1, sort_keys=True)
                 f.write("\n")
             continue
+        if not os.path.exists(path):
+            print("%s: no golden" % name)
+            failures.append("%s: no golden %s (write it with --update and review it)" % (name, path))
+            continue
         with open(path) as f:
             golden = json.load(f)
         diff = differences(golden, got)

@@ -8,6 +8,7 @@ PACKAGES=(
   libsystemc-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev
   python3 sigrok-cli
+  clang libclang-rt-14-dev llvm
   gcc-avr binutils-avr avr-libc simavr libsimavr-dev libelf-dev
 )
 SUDO=""

@@ -10,6 +10,7 @@ PACKAGES=(
   libeigen3-dev libboost-dev
   python3 sigrok-cli
   gnuplot-nox libxml2-utils python3-pil
+  clang libclang-rt-14-dev llvm
   gcc-avr binutils-avr avr-libc simavr libsimavr-dev libelf-dev
 )
 SUDO=""

@@ -1,0 +1,123 @@
+// libFuzzer harness: a G-code job through the interpreter (both policies), the soft limits, and the host planner
+// of each architecture: fpga-uart's CAM (and its steps file written and read back), the atmega PC program's plan
+// (its bytes and motion segments) and the spi-fpga trajectory planner (sampled as the servo thread samples it).
+// Only cnc::BadInput may leave the library code; anything else (another exception, a sanitizer report, a
+// broken invariant below) is a finding.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+#include "common/bad_input.hpp"
+#include "host/core/cam.hpp"
+#include "host/core/gcode.hpp"
+#include "host/core/machine.hpp"
+#include "host/core/planner/planner.hpp"
+#include "host/core/seed003/plan.hpp"
+#include "host/core/soft_limits.hpp"
+#include "host/core/steps_file.hpp"
+
+namespace {
+
+using namespace cnc::host;
+
+// Bounds on what the planners get, so that an execution stays in milliseconds: a job legitimately takes time in
+// proportion to its length (X1e12 is a long job, not a hang). The travel keeps every coordinate, arc radius and
+// chord count within a desktop machine (a 300 mm axis, as the shipped scenarios' machines); the move count keeps
+// the planners' work per input small.
+constexpr double kTravelMm = 300.0;
+constexpr std::size_t kMaxMoves = 200;
+
+MachineModel fuzz_machine() {
+    MachineModel m;  // seed 000 reference axes: 160 steps/mm
+    m.x.travel_mm = kTravelMm;
+    m.y.travel_mm = kTravelMm;
+    return m;
+}
+
+void check(bool ok, const char* what) {
+    if (!ok) {
+        std::fprintf(stderr, "invariant broken: %s\n", what);
+        std::abort();
+    }
+}
+
+void fpga_uart_cam(const Program& program, const MachineModel& machine) {
+    std::vector<MotionSegment> segments;
+    try {
+        segments = cam(program, machine, CamOptions{});
+    } catch (const cnc::BadInput&) {
+        return;
+    }
+    std::stringstream file;
+    write_steps_file(file, segments);
+    const std::vector<MotionSegment> back = read_steps_file(file, "fuzz.steps");
+    check(back.size() == segments.size(), "steps file round trip keeps the row count");
+    for (std::size_t i = 0; i < back.size(); ++i) {
+        check(back[i].steps_x == segments[i].steps_x && back[i].steps_y == segments[i].steps_y &&
+                  back[i].feed == segments[i].feed && back[i].motion == segments[i].motion,
+              "steps file round trip keeps steps, feed and motion");
+    }
+}
+
+void atmega_pc_program(const Program& program, const MachineModel& machine) {
+    seed003::Plan plan;
+    try {
+        plan = seed003::plan_program(program, machine, seed003::PcOptions{});
+    } catch (const cnc::BadInput&) {
+        return;
+    }
+    (void)seed003::transfers(plan);
+    (void)seed003::motion_segments(plan, machine);
+}
+
+void spi_fpga_planner(const Program& program, const MachineModel& machine, planner::Profile profile,
+                      planner::BlendMode mode) {
+    planner::PlannerConfig cfg;
+    cfg.x = machine.x.limits;
+    cfg.y = machine.y.limits;
+    cfg.profile = profile;
+    cfg.mode = mode;
+    try {
+        const planner::Trajectory t = planner::plan(program, cfg);
+        const double duration_s = t.duration_s();
+        check(std::isfinite(duration_s) && duration_s >= 0.0, "trajectory duration finite");
+        constexpr int kSamples = 64;
+        for (int i = 0; i <= kSamples; ++i) {
+            const planner::Sample s = t.at(duration_s * i / kSamples);
+            check(std::isfinite(s.pos_mm.x_mm) && std::isfinite(s.pos_mm.y_mm), "trajectory sample finite");
+        }
+    } catch (const cnc::BadInput&) {
+    }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    const MachineModel machine = fuzz_machine();
+    InterpreterOptions strict;
+    strict.policy = GcodePolicy::Strict;
+    try {
+        std::istringstream in(text);
+        (void)interpret(in, "fuzz.nc", strict);
+    } catch (const cnc::BadInput&) {
+    }
+    Program program;
+    try {
+        std::istringstream in(text);
+        program = interpret(in, "fuzz.nc", InterpreterOptions{});
+        check_soft_limits(program, machine);
+    } catch (const cnc::BadInput&) {
+        return 0;
+    }
+    if (program.moves.size() > kMaxMoves) return 0;
+    fpga_uart_cam(program, machine);
+    atmega_pc_program(program, machine);
+    spi_fpga_planner(program, machine, planner::Profile::Trapezoidal, planner::BlendMode::Continuous);
+    spi_fpga_planner(program, machine, planner::Profile::JerkLimited, planner::BlendMode::ExactStop);
+    return 0;
+}

@@ -41,7 +41,7 @@ def six_segment(cncsim, root, tmp, arch, feed):
         f.write(text)
     scenario = os.path.join(root, "scenarios", "mechanics", "six_segment_f4800.toml")
     return run(cncsim, scenario, ["scenario.architecture=" + arch, "scenario.job=" + job,
-                                  "host.rapid_feed_mm_per_min=%d" % feed], tmp, "%s_f%d" % (arch, feed))
+                                  "machine.rapid_feed_mm_per_min=%d" % feed], tmp, "%s_f%d" % (arch, feed))
 
 
 def check5_9(cncsim, root, tmp):

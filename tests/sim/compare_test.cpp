@@ -77,13 +77,13 @@ TEST(CompareTable, BestValueOfEachRowIsMarked) {
     const std::vector<cnc::sim::CompareColumn> cols = {
         col("fpga-uart", 8.0, 0.02, 0.0), col("atmega", 7.0, -0.01, 0.0), col("spi-fpga", 7.0, 24.0, 0.0)};
     const std::string md = cnc::sim::compare_table(cols, cnc::sim::TableFormat::Markdown);
-    EXPECT_NE(md.find("| job time [s]               |    8.0000 |  **7.0000** | **7.0000** |"),
+    EXPECT_NE(md.find("| job time [s]                   |    8.0000 |  **7.0000** | **7.0000** |"),
               std::string::npos)
         << md;
-    EXPECT_NE(md.find("| rate error worst [%]       |   +0.0200 | **-0.0100** |   +24.0000 |"),
+    EXPECT_NE(md.find("| rate error worst [%]           |   +0.0200 | **-0.0100** |   +24.0000 |"),
               std::string::npos)
         << md;
-    EXPECT_NE(md.find("| TIE max [ns]               |     0.000 |       0.000 |      0.000 |"),
+    EXPECT_NE(md.find("| TIE max [ns]                   |     0.000 |       0.000 |      0.000 |"),
               std::string::npos)
         << md;
     const std::string csv = cnc::sim::compare_table(cols, cnc::sim::TableFormat::Csv);

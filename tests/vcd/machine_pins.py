@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Every architecture's VCD has the same machine pins, declared first and in the same order (README, "VCD traces and
 `analyze`": step/dir and the DRV8825's nENBL per axis, the laser), then its own link pins: a trace of one
-architecture can be analysed with the options of another.
+architecture can be analysed with the options of another. spi-fpga's SPI wires toggle bit by bit, so they are
+traced only when asked for (`spi.trace_wires = true` or named in `trace.signals`): asked for here.
 
 Usage: machine_pins.py CNCSIM SCENARIO WORKDIR ARCHITECTURE...
 """
@@ -37,6 +38,8 @@ def main():
     for arch in sys.argv[4:]:
         vcd = os.path.join(workdir, arch + ".vcd")
         cmd = [cncsim, "run", scenario, "--set", "scenario.architecture=" + arch, "--vcd", vcd, "--progress", "off"]
+        if arch == "spi-fpga":
+            cmd += ["--set", "spi.trace_wires=true"]
         run = subprocess.run(cmd, capture_output=True, text=True)
         if run.returncode != 0:
             fail("%s: exit %d\n%s" % (" ".join(cmd), run.returncode, run.stderr))

@@ -81,7 +81,6 @@ std::optional<double> cruise_feed_mm_per_min(const RunInput& in, const Programme
 
 TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx, const std::vector<ProgrammedMove>& programmed) {
     TimingResult out;
-    out.job_time_s = ps_to_s(in.t_job_end_ps - in.t_job_start_ps);
     out.moves.resize(programmed.size());
 
     StepPosition position(in, idx);
@@ -137,9 +136,13 @@ TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx, const std:
         first_edge = first_edge ? std::min(*first_edge, a.rising.front()) : a.rising.front();
         last_edge = last_edge ? std::max(*last_edge, a.rising.back()) : a.rising.back();
     }
+    // A controller that goes on stepping after its host stopped (an aborted run: its metrics are partial) keeps
+    // the job open to its last edge, so that motion <= job and the tail >= 0 on every run.
+    const TimePs job_end_ps = last_edge ? std::max(in.t_job_end_ps, *last_edge) : in.t_job_end_ps;
+    out.job_time_s = ps_to_s(job_end_ps - in.t_job_start_ps);
     if (first_edge) {
         out.lead_in_ms = ps_to_s(*first_edge - in.t_job_start_ps) * 1e3;
-        out.tail_ms = ps_to_s(in.t_job_end_ps - *last_edge) * 1e3;
+        out.tail_ms = ps_to_s(job_end_ps - *last_edge) * 1e3;
     }
     return out;
 }

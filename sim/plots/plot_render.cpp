@@ -268,7 +268,7 @@ std::vector<Script> series_plots(const std::vector<PlotRun>& runs, const fs::pat
     }
     std::vector<Script> out;
     for (const auto& [quantity, list] : clauses) {
-        std::string name = "series";
+        std::string name = "series_";
         for (const char c : quantity.substr(0, quantity.find(" [")))
             name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
         Script s({name, quantity.substr(0, quantity.find(" [")) + " over time", "time [s]", quantity});

@@ -1,5 +1,7 @@
 #include "systems/mechanics_report.hpp"
 
+#include <algorithm>
+#include <cstdlib>
 #include <sstream>
 
 #include "common/text_format.hpp"
@@ -31,6 +33,21 @@ std::string axis_text(const char* name, const mech::DynamicAxisStats& st) {
     return t.str();
 }
 
+// The load angle's peaks and the lost full steps (cumulative) over time, per axis: what the plots draw.
+void add_series(const char* axis, const mech::DynamicAxisStats& st, ArchRun& run) {
+    run.series.push_back({"load angle [electrical deg]", axis, st.load_angle_deg_trace.points()});
+    TimeSeries lost{"lost full steps [cumulative]", axis, {{0, 0.0}}};
+    std::int64_t total = 0;
+    for (const mech::LostStepEvent& e : st.events) {
+        total += std::abs(e.full_steps);
+        lost.points.emplace_back(e.t_ps, static_cast<double>(total));
+    }
+    // Past kMaxLostStepEvents only the count goes on: the last point holds the whole of it.
+    const TimePs end_ps = std::max(run.input.t_job_end_ps, lost.points.back().first);
+    lost.points.emplace_back(end_ps, static_cast<double>(st.lost_full_steps));
+    run.series.push_back(std::move(lost));
+}
+
 }  // namespace
 
 void add_mechanics_report(const Machine& machine, ArchRun& run) {
@@ -57,6 +74,8 @@ void add_mechanics_report(const Machine& machine, ArchRun& run) {
       << format("%.4f", e.peak_s_per_mm) << " s/mm (" << format("%.1f", metrics::kExposureBinMm) << " mm bin at "
       << format("%.2f", e.peak_at_path_mm) << " mm of lasered path)\n";
     run.details_text += t.str();
+    add_series("x", x->stats(), run);
+    add_series("y", y->stats(), run);
 }
 
 }  // namespace cnc::sim

@@ -7,7 +7,8 @@
     same speed on its 1000 mm/s^2 ramp and must lose none.
     Check 9: the README's table (section "Physical mechanics") must be what the runs print: the losses at
     F4800 per architecture, none at the stated highest feed, some at the next feed the search tried.
-  check8 CNCSIM ROOT: the fpga-uart circle: the contour error with dynamic mechanics exceeds the ideal one, and
+  check8 CNCSIM ROOT: the fpga-uart circle: the contour error with dynamic mechanics exceeds the ideal one (and its
+  plots draw the load angle and the lost steps over time), and
     the summary says where it comes from.
 """
 import json
@@ -18,9 +19,9 @@ import sys
 import tempfile
 
 
-def run(cncsim, scenario, sets, tmp, tag):
+def run(cncsim, scenario, sets, tmp, tag, extra=()):
     report = os.path.join(tmp, tag + ".json")
-    cmd = [cncsim, "run", scenario, "--progress", "off", "--report", report]
+    cmd = [cncsim, "run", scenario, "--progress", "off", "--report", report] + list(extra)
     for s in sets:
         cmd += ["--set", s]
     out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
@@ -70,11 +71,18 @@ def check5_9(cncsim, root, tmp):
 def check8(cncsim, root, tmp):
     scenario = os.path.join(root, "scenarios", "fpga-uart", "circle_r10.toml")
     ideal, _ = run(cncsim, scenario, ["mechanics.model=ideal"], tmp, "circle_ideal")
-    dynamic, out = run(cncsim, scenario, ["mechanics.model=dynamic"], tmp, "circle_dynamic")
+    plots = os.path.join(tmp, "plots")
+    dynamic, out = run(cncsim, scenario, ["mechanics.model=dynamic"], tmp, "circle_dynamic", ["--plots", plots])
     ci = ideal["metrics"]["path"]["contour_max_um"]
     cd = dynamic["metrics"]["path"]["contour_max_um"]
     assert cd > ci, "contour max dynamic %g um is not above ideal %g um" % (cd, ci)
     assert "include their lag and ringing" in out, "the summary does not say where the error comes from"
+    # The dynamic run's plots include the load angle and the lost steps over time (issue 11, with mechanics).
+    for name, title in (("series_load_angle", "load angle over time"), ("series_lost_full_steps", "lost full steps")):
+        svg = os.path.join(plots, name + ".svg")
+        assert os.path.exists(svg) and os.path.exists(os.path.join(plots, name + ".png")), "no plot " + name
+        with open(svg) as f:
+            assert title in f.read(), "%s has no title '%s'" % (svg, title)
     print("circle contour max: ideal %.3f um, dynamic %.3f um" % (ci, cd))
 
 

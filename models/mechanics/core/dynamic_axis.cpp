@@ -43,6 +43,7 @@ void DynamicAxis::track_load_angle(TimePs t_ps) const {
         m_slip_periods = periods;
     }
     const double load_angle_deg = std::abs(lag_rad - 2.0 * kPi * static_cast<double>(periods)) * kRadToDeg;
+    m_stats.load_angle_deg_trace.add(t_ps, load_angle_deg);
     if (load_angle_deg > m_stats.peak_load_angle_deg) {
         m_stats.peak_load_angle_deg = load_angle_deg;
         m_stats.peak_load_angle_ps = t_ps;

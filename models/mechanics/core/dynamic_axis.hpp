@@ -15,6 +15,7 @@
 #include "mechanics/core/axis_integrator.hpp"
 #include "mechanics/core/carriage_drive.hpp"
 #include "mechanics/core/motor.hpp"
+#include "mechanics/core/peak_trace.hpp"
 
 namespace cnc::mech {
 
@@ -28,6 +29,7 @@ struct DynamicAxisStats {
     std::vector<LostStepEvent> events;       // the first kMaxLostStepEvents, in time order
     double peak_load_angle_deg = 0.0;        // electrical degrees between command and rotor (90 = pull-out)
     TimePs peak_load_angle_ps = 0;
+    PeakTrace load_angle_deg_trace;          // the load angle's peaks over time (the plots' load-angle curve)
     // Carriage velocity against the commanded one (a microstep over the time since the previous one), at
     // every microstep: RMS and peak of the difference, mm/s.
     double velocity_ripple_rms_mm_s = 0.0;

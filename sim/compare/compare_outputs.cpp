@@ -9,6 +9,7 @@
 
 #include "common/text_format.hpp"
 #include "compare/html_report.hpp"
+#include "output/output_file.hpp"
 #include "plots/plot_render.hpp"
 
 namespace cnc::sim {
@@ -20,11 +21,8 @@ namespace fs = std::filesystem;
 // The page shows a long job's head only.
 constexpr std::size_t kJobLinesShown = 80;
 
-void write_file(const fs::path& file, const std::string& text) {
-    std::ofstream out(file);
-    if (!out) throw std::runtime_error("cannot write " + file.string());
-    out << text;
-}
+// One OutputFile per page and table, like every output of the CLI: complete or not there.
+void write_file(const fs::path& file, const std::string& text) { write_output_file(file.string(), "--out", text); }
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path);

@@ -20,6 +20,7 @@
 #include "metrics/vcd_reader.hpp"
 #include "motor_curve_cmd.hpp"
 #include "output/output_file.hpp"
+#include "output/samples_csv.hpp"
 #include "plots/run_plots.hpp"
 #include "run/architecture.hpp"
 #include "run/run.hpp"
@@ -37,7 +38,7 @@ void write_json(const std::string& path, const nlohmann::json& j) {
 
 int cmd_run(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& vcd,
             const std::string& report, bool detail, const std::string& progress, const std::string& plots,
-            const std::string& plot_data) {
+            const std::string& plot_data, const std::string& samples) {
     cnc::sim::Scenario s = cnc::sim::load_scenario(scenario_path, sets);
     if (detail) s.detail = true;
     if (!vcd.empty()) s.vcd_path = vcd;
@@ -46,6 +47,8 @@ int cmd_run(const std::string& scenario_path, const std::vector<std::string>& se
     if (!s.vcd_path.empty()) cnc::sim::check_output_path(s.vcd_path, vcd.empty() ? s.file + ": trace.vcd" : "--vcd");
     if (!plots.empty()) cnc::sim::check_output_dir(plots, "--plots");
     if (!plot_data.empty()) cnc::sim::check_output_dir(plot_data, "--plot-data");
+    std::optional<cnc::sim::OutputFile> samples_file;
+    if (!samples.empty()) samples_file.emplace(samples, "--samples");
     std::optional<cnc::sim::OutputFile> report_file;
     if (!s.report_path.empty()) {
         report_file.emplace(s.report_path, report.empty() ? s.file + ": trace.report" : "--report");
@@ -56,6 +59,10 @@ int cmd_run(const std::string& scenario_path, const std::vector<std::string>& se
                                          : cnc::sim::ProgressStyle::Log;
     const cnc::sim::RunOutcome out = cnc::sim::run_scenario(s);
     std::cout << out.summary;
+    if (samples_file) {  // a trace of what ran, like the VCD: written for a failed run too
+        cnc::sim::write_samples_csv(samples_file->stream(), out.arch.input.tool);
+        samples_file->close();
+    }
     if (report_file) {
         report_file->stream() << cnc::metrics::report_text(out.report);
         report_file->close();
@@ -169,7 +176,7 @@ int sc_main(int argc, char* argv[]) {
     app.set_version_flag("--version", std::string("cncsim ") + CNCSIM_VERSION + "\nSystemC " + sc_core::sc_release(),
                          "print the cncsim and SystemC versions and exit");
 
-    std::string scenario, vcd, report, vcd_in, commanded, plots, plot_data, out_dir;
+    std::string scenario, vcd, report, vcd_in, commanded, plots, plot_data, out_dir, samples;
     std::vector<std::string> sets, steps, dirs, enables;
     double steps_per_mm = 0.0;
     bool detail = false;
@@ -180,6 +187,7 @@ int sc_main(int argc, char* argv[]) {
     run->add_option("--vcd", vcd, "write a VCD trace to this file");
     run->add_option("--report", report, "write the JSON report to this file");
     run->add_option("--plots", plots, "write the run's plots (SVG, PNG) and their gnuplot data and scripts here");
+    run->add_option("--samples", samples, "write the tool (carriage) samples to this CSV file: t_s,x_mm,y_mm");
     run->add_option("--plot-data", plot_data, "write only the plots' data files here (what compare asks of a run)");
     run->add_flag("--detail", detail, "the report also holds the per-period, per-packet and per-run logs");
     std::string progress = "auto";
@@ -239,7 +247,7 @@ int sc_main(int argc, char* argv[]) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
     try {
-        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, progress, plots, plot_data);
+        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, progress, plots, plot_data, samples);
         if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report, out_dir);
         if (curve->parsed()) return cnc::sim::cmd_motor_curve(scenario, sets, curve_axis, curve_csv, std::cout);
         if (analyze->parsed()) {

@@ -1,5 +1,6 @@
 // Logic-level history of one pin: what a logic analyser records, and what every metric is computed from.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct EdgeLog {
     [[nodiscard]] bool level_at(TimePs t_ps) const;
     [[nodiscard]] std::vector<TimePs> rising() const;
     [[nodiscard]] std::vector<TimePs> falling() const;
+    [[nodiscard]] std::size_t count_falling() const;
 };
 
 }  // namespace cnc

@@ -51,7 +51,8 @@ void SpiMaster::transfer(const std::vector<std::uint8_t>& out, std::vector<std::
         wait_until(t_end);
         target->deselect(t_end, out, in);
     }
-    m_transfers.push_back({t0, t_end, bits});
+    if (m_keep_transfer_log) m_transfers.push_back({t0, t_end, bits});
+    ++m_transfer_count;
     m_ss_low_total_ps += t_end - t0;
     m_idle_from_ps = t_end + m_cfg.ss_idle_min_ps;
     m_busy = false;

@@ -36,7 +36,11 @@ public:
         TimePs t_ss_rise_ps = 0;
         std::size_t bits = 0;
     };
+    // The transfer log is for tests and benches; a system turns it off before the simulation, so that memory does
+    // not grow with a long job's transfers, and keeps the count.
+    void keep_transfer_log(bool on) { m_keep_transfer_log = on; }
     [[nodiscard]] const std::vector<Transfer>& transfers() const { return m_transfers; }
+    [[nodiscard]] std::uint64_t transfer_count() const { return m_transfer_count; }
     [[nodiscard]] TimePs ss_low_total_ps() const { return m_ss_low_total_ps; }  // link busy time
     [[nodiscard]] const SpiConfig& config() const { return m_cfg; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations; }
@@ -50,7 +54,9 @@ private:
     const SpiConfig m_cfg;
     TimePs m_idle_from_ps = 0;  // earliest next SS fall
     bool m_busy = false;
+    bool m_keep_transfer_log = true;
     std::vector<Transfer> m_transfers;
+    std::uint64_t m_transfer_count = 0;
     TimePs m_ss_low_total_ps = 0;
     std::uint64_t m_activations = 0;
 };

@@ -20,7 +20,7 @@ AxisEdges extract_edges(const AxisTrace& axis) {
     require_time_order(axis.dir);
     AxisEdges out;
     out.rising = axis.step.rising();
-    out.falling = axis.step.falling();
+    out.falling = axis.step.count_falling();
     bool level = axis.dir.initial;
     for (const Edge& e : axis.dir.edges) {
         if (e.level != level) out.dir_changes.push_back(e.t_ps);

@@ -22,7 +22,7 @@ struct EdgeRange {
 
 struct AxisEdges {
     std::vector<TimePs> rising;
-    std::vector<TimePs> falling;
+    std::size_t falling = 0;  // falling STEP edges: only counted
     std::vector<TimePs> dir_changes;
     std::vector<int> rising_sign;  // +1 / -1 per rising edge: the DIR level at that instant, with the polarity applied
 };

@@ -20,7 +20,7 @@ AxisMetrics axis_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t a
     am.step_signal = trace.step.name;
     am.dir_signal = trace.dir.name;
     am.rising_edges = edges.rising.size();
-    am.falling_edges = edges.falling.size();
+    am.falling_edges = edges.falling;
     am.dir_changes = edges.dir_changes.size();
     for (const int s : edges.rising_sign) am.net_steps += s;
     if (trace.steps_per_mm > 0.0) {
@@ -122,6 +122,9 @@ RunMetrics compute_metrics(const RunInput& in) {
     out.path = compute_path_accuracy(in, idx);
     out.timing = compute_timing(in, idx, programmed);
     out.laser = compute_laser(in, idx);
+    // Per-move records are most of a long job's metrics: sized once instead of grown by doubling.
+    out.pieces.reserve(in.moves.size());
+    out.moves.reserve(programmed.size());
     for (std::size_t m = 0; m < in.moves.size(); ++m) {
         MoveMetrics mm = piece_metrics(in, idx, m);
         mm.sync_max_abs_ns = sync.move_axis_max_abs_ns[m];

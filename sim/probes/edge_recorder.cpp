@@ -1,6 +1,7 @@
 #include "probes/edge_recorder.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 #include <sysc/kernel/sc_dynamic_processes.h>
 
@@ -22,11 +23,20 @@ void EdgeRecorder::sample(Probe& probe) {
     probe.log.add(static_cast<TimePs>(sc_core::sc_time_stamp().value()), probe.signal->read());
 }
 
-const EdgeLog& EdgeRecorder::log(const std::string& pin_name) const {
-    for (const Probe& p : m_probes) {
-        if (p.log.name == pin_name) return p.log;
+std::size_t EdgeRecorder::index_of(const std::string& pin_name) const {
+    for (std::size_t i = 0; i < m_probes.size(); ++i) {
+        if (m_probes[i].log.name == pin_name) return i;
     }
     throw std::out_of_range("no probe on pin " + pin_name);
+}
+
+const EdgeLog& EdgeRecorder::log(const std::string& pin_name) const { return m_probes[index_of(pin_name)].log; }
+
+EdgeLog EdgeRecorder::take(const std::string& pin_name) {
+    EdgeLog& log = m_probes[index_of(pin_name)].log;
+    EdgeLog out{log.name, log.initial, std::move(log.edges)};
+    log.edges.clear();
+    return out;
 }
 
 }  // namespace cnc::sim

@@ -1,5 +1,6 @@
 // Records the edges of watched pins into EdgeLogs (the simulated logic analyser the metrics read).
 #pragma once
+#include <cstddef>
 #include <deque>
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@ public:
     // Watches `signal` under `pin_name`; call before the simulation starts.
     void watch(const sc_core::sc_signal<bool>& signal, const std::string& pin_name);
     [[nodiscard]] const EdgeLog& log(const std::string& pin_name) const;
+    // Hands the log over after the simulation (its copy here is left empty): a long job's STEP logs are its
+    // largest data, and a copy would double them.
+    [[nodiscard]] EdgeLog take(const std::string& pin_name);
 
 private:
     struct Probe {
@@ -24,6 +28,7 @@ private:
         EdgeLog log;
     };
     void sample(Probe& probe);
+    [[nodiscard]] std::size_t index_of(const std::string& pin_name) const;
 
     std::deque<Probe> m_probes;  // deque: stable addresses for the spawned methods
 };

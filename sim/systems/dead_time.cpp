@@ -1,6 +1,7 @@
 #include "systems/dead_time.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdio>
 #include <limits>
 
@@ -10,23 +11,29 @@ namespace cnc::sim {
 
 namespace {
 
-// Rising STEP edges of every axis, merged in time order (computed once: the gaps only look them up).
-std::vector<TimePs> all_rises(const metrics::RunInput& run) {
-    std::vector<TimePs> rises;
+// First and last rising STEP edge of any axis inside [t0, t1]; last is -1 when there is none. Looked up in the logs
+// themselves: a merged copy of every rise would be as large as the logs.
+std::pair<TimePs, TimePs> step_span(const metrics::RunInput& run, TimePs t0, TimePs t1) {
+    std::pair<TimePs, TimePs> span{std::numeric_limits<TimePs>::max(), -1};
     for (const metrics::AxisTrace& axis : run.axes) {
-        const std::vector<TimePs> r = axis.step.rising();
-        rises.insert(rises.end(), r.begin(), r.end());
+        const std::vector<Edge>& edges = axis.step.edges;
+        const auto rises = [&](std::size_t k) {
+            return edges[k].level && !(k > 0 ? edges[k - 1].level : axis.step.initial);
+        };
+        std::size_t b = static_cast<std::size_t>(
+            std::lower_bound(edges.begin(), edges.end(), t0, [](const Edge& e, TimePs t) { return e.t_ps < t; }) -
+            edges.begin());
+        std::size_t e = static_cast<std::size_t>(
+            std::upper_bound(edges.begin() + static_cast<std::ptrdiff_t>(b), edges.end(), t1,
+                             [](TimePs t, const Edge& edge) { return t < edge.t_ps; }) -
+            edges.begin());
+        while (b < e && !rises(b)) ++b;
+        while (e > b && !rises(e - 1)) --e;
+        if (b == e) continue;
+        span.first = std::min(span.first, edges[b].t_ps);
+        span.second = std::max(span.second, edges[e - 1].t_ps);
     }
-    std::sort(rises.begin(), rises.end());
-    return rises;
-}
-
-// First and last rising STEP edge inside [t0, t1]; last is -1 when there is none.
-std::pair<TimePs, TimePs> step_span(const std::vector<TimePs>& rises, TimePs t0, TimePs t1) {
-    const auto b = std::lower_bound(rises.begin(), rises.end(), t0);
-    const auto e = std::upper_bound(b, rises.end(), t1);
-    if (b == e) return {std::numeric_limits<TimePs>::max(), -1};
-    return {*b, *std::prev(e)};
+    return span;
 }
 
 double mean_ms(const std::vector<GapBreakdown>& gaps, TimePs GapBreakdown::*part) {
@@ -61,18 +68,18 @@ DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::v
     const auto& tx = cp2102.tx_log();
     const auto& rx = cp2102.rx_log();
     const std::size_t moves = run.moves.size();
-    const std::vector<TimePs> rises = all_rises(run);
     for (std::size_t i = 0; i + 1 < moves && i + 1 < sent.size() && i + 1 < records.size(); ++i) {
         const fpga::PacketRecord& done = records[i];
         const std::size_t next_first = host::kInitPacketBytes + (i + 1) * host::kMotionPacketBytes;
         const fpga::PacketRecord& next = records[i + 1];
         if (done.t_ack_start_ps < 0 || next_first >= tx.size() || sent[i + 1].t_write_ps < 0) continue;
-        const auto ack = std::find_if(rx.begin(), rx.end(), [&](const uart::Cp2102::RxByte& b) {
-            return b.t_start_bit_ps >= done.t_ack_start_ps;
+        // The bytes are in time order: a binary search keeps a long job's gaps linear.
+        const auto ack = std::partition_point(rx.begin(), rx.end(), [&](const uart::Cp2102::RxByte& b) {
+            return b.t_start_bit_ps < done.t_ack_start_ps;
         });
         if (ack == rx.end()) continue;
-        const auto [first_a, last_a] = step_span(rises, run.moves[i].t_begin_ps, run.moves[i].t_end_ps);
-        const auto [first_b, last_b] = step_span(rises, run.moves[i + 1].t_begin_ps, run.moves[i + 1].t_end_ps);
+        const auto [first_a, last_a] = step_span(run, run.moves[i].t_begin_ps, run.moves[i].t_end_ps);
+        const auto [first_b, last_b] = step_span(run, run.moves[i + 1].t_begin_ps, run.moves[i + 1].t_end_ps);
         if (last_a < 0 || last_b < 0) continue;
         GapBreakdown g;
         g.after_move = static_cast<int>(i) + 1;

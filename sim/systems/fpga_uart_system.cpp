@@ -4,6 +4,7 @@
 #include <limits>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include "common/text_format.hpp"
 #include "fpga/core/step_schedule.hpp"
@@ -253,12 +254,12 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     moves.resize(executed);
 
     metrics::RunInput& in = run.input;
-    in.axes = {metrics::AxisTrace{"x", rec.log("step_x"), rec.log("dir_x"), s.machine.x.steps_per_mm(), true},
-               metrics::AxisTrace{"y", rec.log("step_y"), rec.log("dir_y"), s.machine.y.steps_per_mm(), true}};
-    in.moves = moves;
+    in.axes.push_back({"x", rec.take("step_x"), rec.take("dir_x"), s.machine.x.steps_per_mm(), true});
+    in.axes.push_back({"y", rec.take("step_y"), rec.take("dir_y"), s.machine.y.steps_per_mm(), true});
+    in.moves = std::move(moves);
     in.tool = machine.carriage().samples();
-    in.laser = rec.log("laser");
-    for (const char* pin : {"busy", "uart_rx", "uart_tx"}) run.lines[pin] = rec.log(pin);
+    in.laser = rec.take("laser");
+    for (const char* pin : {"busy", "uart_rx", "uart_tx"}) run.lines[pin] = rec.take(pin);
     in.t_job_start_ps = 0;
     in.t_job_end_ps = sender.finished() ? sender.t_end_ps() : static_cast<TimePs>(sc_core::sc_time_stamp().value());
 

@@ -103,3 +103,15 @@ cnc_bad_input_test(trace_window_reversed "${SQUARE}|--set|trace.from_s=2|--set|t
 cnc_cli_test(trace.spi_wires_on_request golden 0
   CMD run ${SCENARIOS}/spi-fpga/square_20mm.toml --vcd ${ROBUST}/spi_default.vcd --progress off
   MATCH "square" FILE ${ROBUST}/spi_default.vcd FILE_MATCH " laser [$]end\n[$]upscope")
+
+# --- --samples FILE: the tool samples as CSV, checked and written like every output ---
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+add_test(NAME golden/samples_file_loads
+  COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/samples_file.py $<TARGET_FILE:cncsim> ${PROJECT_SOURCE_DIR}
+          ${ROBUST}/samples_file_loads)
+set_tests_properties(golden/samples_file_loads PROPERTIES LABELS golden ENVIRONMENT "${CNC_TEST_ENV}")
+cnc_cli_test(output.samples_in_missing_folder golden 2
+  CMD run ${SQUARE} --samples ${ROBUST}/no_such_folder/s.csv --progress off
+  MATCH "^cncsim: --samples .*no_such_folder/s[.]csv: its folder .*no_such_folder does not exist\n$")
+cnc_cli_test(output.samples_to_dev_full golden 1 CMD run ${SQUARE} --samples /dev/full --progress off
+  MATCH "cncsim: run failed: cannot write /dev/full [(]--samples[)]: No space left on device")

@@ -16,12 +16,18 @@ FifoStatus CmdFifo::status_at(std::int64_t edge) const {
     return {level, level >= m_core.depth(), m_core.drops_before(edge)};
 }
 
+void CmdFifo::keep_logs(bool on) {
+    m_keep_applied_log = on;
+    m_core.keep_push_log(on);
+}
+
 bool CmdFifo::readable(std::size_t axis, std::int64_t edge) const { return m_core.readable(axis, edge); }
 
 std::optional<FifoRead> CmdFifo::read(std::size_t axis, std::int64_t edge) {
     const std::optional<FifoRead> r = m_core.read(axis, edge);
     if (r && r->frame_applied) {
-        m_applied.push_back({edge, edge * m_period_ps, r->seq, r->laser_on});
+        m_last_applied = {edge, edge * m_period_ps, r->seq, r->laser_on};
+        if (m_keep_applied_log) m_applied.push_back(m_last_applied);
         m_applied_event.notify(sc_core::SC_ZERO_TIME);
     }
     return r;

@@ -38,7 +38,7 @@ public:
 class CmdFifoAppliedIf : public virtual sc_core::sc_interface {
 public:
     [[nodiscard]] virtual const sc_core::sc_event& applied_event() const = 0;
-    [[nodiscard]] virtual const std::vector<AppliedFrame>& applied() const = 0;
+    [[nodiscard]] virtual const AppliedFrame& last_applied() const = 0;
 };
 
 class CmdFifo : public sc_core::sc_module, public CmdFifoWriteIf, public CmdFifoReadIf, public CmdFifoAppliedIf {
@@ -51,7 +51,10 @@ public:
     std::optional<FifoRead> read(std::size_t axis, std::int64_t edge) override;
     [[nodiscard]] const sc_core::sc_event& default_event() const override { return m_pushed; }
     [[nodiscard]] const sc_core::sc_event& applied_event() const override { return m_applied_event; }
-    [[nodiscard]] const std::vector<AppliedFrame>& applied() const override { return m_applied; }
+    [[nodiscard]] const AppliedFrame& last_applied() const override { return m_last_applied; }
+    // The applied-frame and push logs are for tests and benches: off, memory does not grow with a long job's frames.
+    void keep_logs(bool on);
+    [[nodiscard]] const std::vector<AppliedFrame>& applied() const { return m_applied; }
 
     [[nodiscard]] const CmdFifoCore& core() const { return m_core; }
 
@@ -60,7 +63,9 @@ private:
     CmdFifoCore m_core;
     sc_core::sc_event m_pushed;
     sc_core::sc_event m_applied_event;
+    bool m_keep_applied_log = true;
     std::vector<AppliedFrame> m_applied;
+    AppliedFrame m_last_applied;
 };
 
 }  // namespace cnc::fpga

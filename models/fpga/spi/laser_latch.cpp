@@ -13,7 +13,7 @@ LaserLatch::LaserLatch(const sc_core::sc_module_name& name) : sc_module(name), l
 void LaserLatch::on_applied() {
     ++m_activations;
     // Runs one delta after the read that applied the frame, at that edge's time; one frame is applied per edge.
-    laser.write(fifo->applied().back().laser_on);
+    laser.write(fifo->last_applied().laser_on);
 }
 
 }  // namespace cnc::fpga

@@ -52,6 +52,11 @@ SpiFpgaTop::SpiFpgaTop(const sc_core::sc_module_name& name, const SpiFpgaConfig&
     laser_latch.laser(laser);
 }
 
+void SpiFpgaTop::keep_frame_logs(bool on) {
+    slave.keep_frame_log(on);
+    fifo.keep_logs(on);
+}
+
 const std::vector<AppliedRate>& SpiFpgaTop::applied(std::size_t axis) const {
     return (axis == 0 ? pulse_gen_x : pulse_gen_y).applied();
 }

@@ -36,6 +36,9 @@ public:
     SpiFpgaTop(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg);
 
     [[nodiscard]] const SpiFpgaConfig& config() const { return m_cfg; }
+    // The per-frame logs below (frames, fifo_pushes, applied_frames) are for tests and benches; a system turns them
+    // off before the simulation, so that memory does not grow with a long job's frames. Counts stay (slave, fifo).
+    void keep_frame_logs(bool on);
     [[nodiscard]] const std::vector<SlaveFrameRecord>& frames() const { return slave.frames(); }
     [[nodiscard]] const std::vector<FifoPushRecord>& fifo_pushes() const { return fifo.core().pushes(); }
     [[nodiscard]] const std::vector<AppliedRate>& applied(std::size_t axis) const;

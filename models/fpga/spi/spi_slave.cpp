@@ -95,17 +95,16 @@ void SpiSlave::frame_start(std::int64_t edge, bool wires) {
     for (std::size_t i = 0; i < m_axes; ++i) fb.counts.push_back(counters[static_cast<int>(i)]->value_at_edge(edge));
     m_reply = spi::encode_feedback(fb);
     m_reply_edge = edge;
-    SlaveFrameRecord r;
-    r.seq = m_frames.size();
+    SlaveFrameRecord& r = m_keep_frame_log ? m_frames.emplace_back() : (m_frame = SlaveFrameRecord{});
+    r.seq = m_frame_count++;
     r.t_snapshot_ps = edge * m_period_ps;
-    r.reply = m_reply;
-    m_frames.push_back(r);
+    if (m_keep_frame_log) r.reply = m_reply;
     if (wires) miso.write(reply_bit(0));
 }
 
 void SpiSlave::frame_end(const SlaveEvent& e, bool wires) {
     if (wires) miso.write(false);
-    SlaveFrameRecord& r = m_frames.back();
+    SlaveFrameRecord& r = m_keep_frame_log ? m_frames.back() : m_frame;
     r.t_end_ps = e.edge * m_period_ps;
     r.mosi_bits = e.mosi_bits;
     const auto command = e.mosi_bits == spi::frame_bits(m_axes) ? spi::decode_command(e.mosi, m_axes) : std::nullopt;
@@ -114,6 +113,7 @@ void SpiSlave::frame_end(const SlaveEvent& e, bool wires) {
         return;
     }
     r.accepted = true;
+    ++m_accepted_count;
     r.dropped = !fifo->push(e.edge, r.seq, *command);
 }
 

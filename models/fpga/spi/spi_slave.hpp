@@ -37,7 +37,13 @@ public:
     void deselect(TimePs t_ss_rise_ps, const std::vector<std::uint8_t>& mosi_bytes,
                   std::vector<std::uint8_t>& miso_bytes) override;
 
+    // The frame log (a record per frame, with its reply bytes) is for tests and benches; a system turns it off
+    // before the simulation, so that memory does not grow with a long job's frames, and keeps the counts.
+    void keep_frame_log(bool on) { m_keep_frame_log = on; }
     [[nodiscard]] const std::vector<SlaveFrameRecord>& frames() const { return m_frames; }
+    [[nodiscard]] std::uint64_t frame_count() const { return m_frame_count; }  // frames started
+    // Frames handed to the FIFO (pushed, or dropped there when full); the others were rejected or never ended.
+    [[nodiscard]] std::uint64_t accepted_count() const { return m_accepted_count; }
     [[nodiscard]] std::uint64_t rejected() const { return m_rejected; }
     [[nodiscard]] std::uint64_t activations() const;
 
@@ -62,7 +68,11 @@ private:
     std::uint64_t m_rejected = 0;
     std::uint64_t m_rejected_reported = 0;
     std::uint64_t m_drops_reported = 0;
+    bool m_keep_frame_log = true;
     std::vector<SlaveFrameRecord> m_frames;
+    SlaveFrameRecord m_frame;  // the frame in progress, without the log
+    std::uint64_t m_frame_count = 0;
+    std::uint64_t m_accepted_count = 0;
     std::uint64_t m_activations = 0;
 };
 

@@ -214,17 +214,18 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     const auto driven = [&rec](const char* step, const char* n_enbl) {  // the DRV8825's nENBL is active low
         return metrics::enabled_steps(rec.log(step), rec.log(n_enbl), metrics::EnableLevel::ActiveLow);
     };
-    in.axes = {
-        metrics::AxisTrace{"x", driven("step_x", "n_enbl_x"), rec.log("dir_x"), s.machine.x.steps_per_mm(), false},
-        metrics::AxisTrace{"y", driven("step_y", "n_enbl_y"), rec.log("dir_y"), s.machine.y.steps_per_mm(), false}};
+    in.axes.push_back(
+        {"x", driven("step_x", "n_enbl_x"), rec.take("dir_x"), s.machine.x.steps_per_mm(), false});
+    in.axes.push_back(
+        {"y", driven("step_y", "n_enbl_y"), rec.take("dir_y"), s.machine.y.steps_per_mm(), false});
     in.moves = executed_moves(s, job, plan, windows);
-    for (const mech::ToolSample& t : machine.carriage().samples()) in.tool.push_back({t.t_ps, t.pos});
-    in.laser = rec.log("laser");
+    in.tool = machine.carriage().samples();
+    in.laser = rec.take("laser");
     in.t_job_start_ps = 0;
     in.t_job_end_ps = mcu.chip().stop_cycle() ? mcu.cycle_ps(*mcu.chip().stop_cycle()) : t_now;
-    for (const char* pin : {"uart_rx", "uart_tx", "n_enbl_x", "n_enbl_y"}) run.lines[pin] = rec.log(pin);
-    run.lines["step_x_pin"] = rec.log("step_x");  // the raw pins: the timers toggle them while EN is high too
-    run.lines["step_y_pin"] = rec.log("step_y");
+    for (const char* pin : {"uart_rx", "uart_tx", "n_enbl_x", "n_enbl_y"}) run.lines[pin] = rec.take(pin);
+    run.lines["step_x_pin"] = rec.take("step_x");  // the raw pins: the timers toggle them while EN is high too
+    run.lines["step_y_pin"] = rec.take("step_y");
 
     run.warnings = plan.warnings;
     const AtmegaFacts facts{plan, s.machine, pc, cp2102, mcu, windows, in.axes[1].step, avr_cfg.firmware_elf,

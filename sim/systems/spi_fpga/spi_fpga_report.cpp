@@ -156,8 +156,7 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
         track += r.mode == PeriodMode::Track ? 1 : 0;
         land += r.mode == PeriodMode::Land ? 1 : 0;
     }
-    std::uint64_t rejected = 0;
-    for (const fpga::SlaveFrameRecord& f : fpga.frames()) rejected += f.accepted ? 0 : 1;
+    const std::uint64_t rejected = fpga.slave.frame_count() - fpga.slave.accepted_count();
     const std::uint64_t drops = fpga.fifo.core().dropped();
     const std::uint64_t stretched = fpga.pulse_gen_x.stretched() + fpga.pulse_gen_y.stretched();
     const double job_s = ps_to_s(t_job_end_ps);
@@ -195,14 +194,14 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
           {"transfer_us", ps_to_us(transfer)},
           {"slot_us", ps_to_us(slot)},
           {"transfer_share_of_period_pct", share_pct},
-          {"transfers", master.transfers().size()},
+          {"transfers", master.transfer_count()},
           {"link_busy_pct", busy_pct},
           {"wires_traced", link.trace_wires}}},
         {"fpga",
          {{"clock_hz", fcfg.clk_hz},
           {"rate_apply", fcfg.rate_apply == fpga::RateApply::AtNextPulse ? "at-next-pulse" : "immediately"},
           {"fifo_depth", fcfg.fifo_depth},
-          {"frames", fpga.frames().size()},
+          {"frames", fpga.slave.frame_count()},
           {"frames_rejected", rejected},
           {"fifo_max_level", fpga.fifo.core().max_level()},
           {"fifo_drops", drops},

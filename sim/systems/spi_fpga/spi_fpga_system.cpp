@@ -94,11 +94,13 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
 
     Wires w;
     spi::SpiMaster master("spi_master", link);
+    master.keep_transfer_log(false);  // the report counts them
     master.sclk(w.sclk);
     master.mosi(w.mosi);
     master.ss(w.ss);
     master.miso(w.miso);
     fpga::SpiFpgaTop fpga("fpga", s.spi_fpga.fpga);
+    fpga.keep_frame_logs(false);  // the report counts the frames
     fpga.sclk(w.sclk);
     fpga.mosi(w.mosi);
     fpga.ss(w.ss);
@@ -140,17 +142,17 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     record_budget(budget, run);
     const host::servo::ServoCore& core = host.core();
     metrics::RunInput& in = run.input;
-    in.axes = {metrics::AxisTrace{"x", rec.log("step_x"), rec.log("dir_x"), s.machine.x.steps_per_mm(), true},
-               metrics::AxisTrace{"y", rec.log("step_y"), rec.log("dir_y"), s.machine.y.steps_per_mm(), true}};
+    in.axes.push_back({"x", rec.take("step_x"), rec.take("dir_x"), s.machine.x.steps_per_mm(), true});
+    in.axes.push_back({"y", rec.take("step_y"), rec.take("dir_y"), s.machine.y.steps_per_mm(), true});
     in.moves = planned_moves(*job.program, *trajectory, core);
     in.tool = machine.carriage().samples();
-    in.laser = rec.log("laser");
+    in.laser = rec.take("laser");
     in.t_job_start_ps = 0;
     in.t_job_end_ps = host.t_done_ps().value_or(static_cast<TimePs>(sc_core::sc_time_stamp().value()));
     in.commanded = commanded_trajectory(trajectory, core);
     in.rate_segments = rate_segments(fpga, core);
     if (link.trace_wires) {
-        for (const char* pin : {"sclk", "mosi", "miso", "ss"}) run.lines[pin] = rec.log(pin);
+        for (const char* pin : {"sclk", "mosi", "miso", "ss"}) run.lines[pin] = rec.take(pin);
     }
 
     SpiFpgaReport report = spi_fpga_report(host, master, fpga, in.t_job_end_ps, s.detail);

@@ -30,9 +30,10 @@ bool CmdFifoCore::push(std::int64_t edge, std::uint64_t seq, const spi::Command&
     forget(edge);
     const std::uint32_t level = level_at(edge);
     const bool full = level >= m_depth;
-    m_log.push_back({edge, seq, full, level});
+    if (m_keep_log) m_log.push_back({edge, seq, full, level});
     if (full) {
         ++m_dropped;
+        m_drop_edges.push_back(edge);
         return false;
     }
     m_entries.push_back({m_next_index++, seq, edge, command, std::vector<std::int64_t>(m_axes, -1)});
@@ -63,7 +64,7 @@ std::optional<FifoRead> CmdFifoCore::read(std::size_t axis, std::int64_t edge) {
 
 std::uint64_t CmdFifoCore::drops_before(std::int64_t edge) const {
     std::uint64_t n = m_dropped;
-    for (auto it = m_log.rbegin(); it != m_log.rend() && it->edge >= edge; ++it) n -= it->dropped ? 1 : 0;
+    for (auto it = m_drop_edges.rbegin(); it != m_drop_edges.rend() && *it >= edge; ++it) --n;
     return n;
 }
 

@@ -45,6 +45,8 @@ public:
 
     [[nodiscard]] std::uint32_t level_at(std::int64_t edge) const;
     [[nodiscard]] std::uint64_t drops_before(std::int64_t edge) const;
+    // The push log is for tests and benches: off, memory does not grow with a long job's frames.
+    void keep_push_log(bool on) { m_keep_log = on; }
     [[nodiscard]] const std::vector<FifoPushRecord>& pushes() const { return m_log; }
     [[nodiscard]] std::uint64_t dropped() const { return m_dropped; }
     [[nodiscard]] std::uint32_t max_level() const { return m_max_level; }
@@ -67,7 +69,9 @@ private:
     std::deque<Entry> m_entries;
     std::uint64_t m_next_index = 0;
     std::vector<std::uint64_t> m_read_index;  // per axis: index of the next entry to read
+    bool m_keep_log = true;
     std::vector<FifoPushRecord> m_log;
+    std::vector<std::int64_t> m_drop_edges;  // push edge of every dropped frame, in order (drops_before)
     std::uint64_t m_dropped = 0;
     std::uint32_t m_max_level = 0;
 };

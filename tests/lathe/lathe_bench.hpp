@@ -21,9 +21,9 @@ inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kCycleS = 1.0 / 8e6;
 inline constexpr Cycle kStepCycles = 8;  // 1 us
 
-inline avr::AvrCoreConfig lathe_firmware() {
+inline avr::AvrCoreConfig lathe_firmware(const char* elf) {
     avr::AvrCoreConfig cfg;
-    cfg.firmware_elf = LATHE_SYNC_ELF;
+    cfg.firmware_elf = elf;
     cfg.mcu = "atmega16";
     cfg.f_cpu_hz = 8'000'000;
     return cfg;
@@ -56,8 +56,8 @@ inline KeyPos key_pos(char key) {
 }
 
 struct LatheBench {
-    explicit LatheBench(double spindle_rpm = 0.0) : chip(lathe_firmware()), motor(derive_motor()), train({}),
-                                                    spindle_rev_per_s(spindle_rpm / 60.0) {
+    explicit LatheBench(double spindle_rpm = 0.0, const char* elf = LATHE_SYNC_ELF)
+        : chip(lathe_firmware(elf)), motor(derive_motor()), train({}), spindle_rev_per_s(spindle_rpm / 60.0) {
         chip.drive_input(Pin{'A', 3}, false);  // the LCD's busy flag (D7) always reads ready
         chip.drive_input(Pin{'D', 7}, true);   // limit switch closed (normally 1)
         motor_level = motor_encoder_level();
@@ -74,13 +74,17 @@ struct LatheBench {
 
     [[nodiscard]] double spindle_rev() const { return spindle_rev_per_s * static_cast<double>(chip.cycle()) * kCycleS; }
 
-    // Spindle: 40 slots (falling edge at each 1/40 rev) and the half-reflective index disc (high for the first
-    // half revolution, so its falling edge is at the half turn).
+    // Spindle: 40 slots (falling edge at each 1/40 rev) and the half-reflective index disc, high for half a
+    // revolution: its falling edge is at 1/2 + 1/80 rev, halfway between two slot edges. Were it on a slot edge,
+    // whether the INT1 ISR of that slot runs before or after doCut's `Error = slip` would be left to the cycle
+    // the two edges happen to land on, and one pass would carry a whole B(n) (6 or 7 pulses at 1 mm) more than
+    // another.
     void update_spindle(bool force = false) {
         const double rev = spindle_rev();
         const double slots = rev * 40.0;
         const bool slot_level = slots - std::floor(slots) < 0.5;
-        const bool index_level = rev - std::floor(rev) < 0.5;
+        const double index_rev = rev - 1.0 / 80.0;
+        const bool index_level = index_rev - std::floor(index_rev) < 0.5;
         if (force || slot_level != spindle_level) chip.drive_input(Pin{'D', 3}, slot_level);
         if (force || index_level != index) chip.drive_input(Pin{'D', 6}, index_level);
         if (!force && spindle_level && !slot_level) on_spindle_pulse();

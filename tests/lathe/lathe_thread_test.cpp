@@ -18,73 +18,32 @@ using cnc::lathe::ThreadPass;
 
 constexpr double kPulseUm = 3175.0 / 780.0;  // carriage per motor pulse (§7): 4.07 um
 
-// A pass is the time the firmware's PID runs (Timer0 clocked: doCut starts it at the spindle index and stops it
-// before the brake). Records the carriage along the cut at the start and at each spindle pulse of a pass, and the
-// motor pulses (falling edges at the MCU, as INT0 sees them).
-struct ThreadBench : LatheBench {
-    using LatheBench::LatheBench;
-
-    [[nodiscard]] bool pid_running() const { return chip.timer(0).divisor() != 0; }
-
-    [[nodiscard]] double along_cut_mm() const { return cut_sign * train.carriage_mm(); }
-
-    void on_spindle_pulse() override {
-        if (!pid_running()) return;
-        passes.back().x_mm.push_back(along_cut_mm());
-        motor_at_pulse.back().push_back(motor_pulses);
+// cut_s after OK: the wait for the index (< 1 revolution), 10 revolutions, the 500 ms brake and the slip shown 1 s.
+// retract_s: 10 mm at full then slow speed (< 2 s) and the brake.
+void thread_m6(LatheBench& b, int passes_wanted, double cut_s, double retract_s = 3.0) {
+    b.run_for(0.3);
+    b.type("131#00D110D");
+    for (int p = 0; p < passes_wanted; ++p) {
+        b.press('D');  // press OK to cut
+        b.run_for(cut_s);
+        b.press('D');  // OK to retract
+        b.run_for(retract_s);
     }
+}
 
-    void cut_step() {
-        const bool before = motor_level;
-        const bool was_running = pid_running();
-        step();
-        if (before && !motor_level) ++motor_pulses;
-        if (!was_running && pid_running()) {
-            if (passes.empty()) cut_sign = chip.pin_level(Pin{'D', 0}) ? 1.0 : -1.0;  // DIR1 high: positive volts
-            passes.emplace_back();
-            passes.back().x_mm.push_back(along_cut_mm());
-            motor_at_pulse.emplace_back(1, motor_pulses);
-        }
-    }
-
-    void run_cut_for(double s) {
-        const Cycle end = chip.cycle() + static_cast<Cycle>(s * 8e6);
-        while (chip.cycle() < end) cut_step();
-    }
-
-    void key(char k) {
-        pressed = {key_pos(k)};
-        run_cut_for(0.1);
-        pressed.clear();
-        run_cut_for(0.4);
-    }
-
-    // cut_s after OK: the wait for the index (< 1 revolution), 10 revolutions, the 500 ms brake and the slip shown
-    // 1 s. retract_s: 10 mm at full then slow speed (< 2 s) and the brake.
-    void thread_m6(int passes_wanted, double cut_s, double retract_s = 3.0) {
-        run_cut_for(0.3);
-        for (const char k : std::string("131#00D110D")) key(k);
-        for (int p = 0; p < passes_wanted; ++p) {
-            key('D');  // press OK to cut
-            run_cut_for(cut_s);
-            key('D');  // OK to retract
-            run_cut_for(retract_s);
-        }
-    }
-
-    std::vector<ThreadPass> passes;
-    std::vector<std::vector<long>> motor_at_pulse;
-    double cut_sign = 1.0;
-    long motor_pulses = 0;
-};
+std::vector<ThreadPass> thread_passes(const LatheBench& b) {
+    std::vector<ThreadPass> out;
+    for (const cnc::lathe::RecordedPass& p : b.passes) out.push_back(p.thread);
+    return out;
+}
 
 // Three passes of the M6 thread at `rpm`: 10 revolutions take 600 / rpm s, after up to 1 revolution waiting for
 // the index, and the 500 ms brake and the slip shown 1 s follow.
 std::vector<ThreadPass> three_passes(double rpm, const char* elf) {
-    ThreadBench b(rpm, elf);
-    b.thread_m6(3, 2.0 + 660.0 / rpm);
+    LatheBench b(rpm, elf);
+    thread_m6(b, 3, 2.0 + 660.0 / rpm);
     EXPECT_EQ(b.passes.size(), 3U);
-    return b.passes;
+    return thread_passes(b);
 }
 
 ThreadMetrics m6_metrics(const std::vector<ThreadPass>& passes, int settle_revolutions = 0) {
@@ -126,10 +85,10 @@ TEST(LatheThread, SeedNestedPulseIsrsShiftTheHelix) {
 
 TEST(LatheThread, SpindleTooFastSaturatesAndTheErrorGrows) {
     // 700 rpm at 1 mm asks 11.7 mm/s of carriage, 1.34 x the motor's 8.70 mm/s at 100 % duty (§10: about 522 rpm).
-    ThreadBench b(700.0);
-    b.thread_m6(1, 4.0);
+    LatheBench b(700.0);
+    thread_m6(b, 1, 4.0);
     ASSERT_FALSE(b.passes.empty());
-    const auto& motor = b.motor_at_pulse.front();
+    const auto& motor = b.passes.front().motor_pulses;
     ASSERT_GT(motor.size(), 200U);
     // Following error in motor pulses: lambda = 6.1417 per spindle pulse asked, against the pulses counted.
     const auto lag = [&](std::size_t k) {

@@ -22,23 +22,7 @@ avr::AvrCoreConfig firmware(const std::string& elf) {
     return cfg;
 }
 
-constexpr const char* kKeys = "147*2580369#ABCD";  // column by column, rows 1..4 (§6.6)
-
 }  // namespace
-
-bool keypad_has(char key) {
-    for (const char* k = kKeys; *k; ++k) {
-        if (*k == key) return true;
-    }
-    return false;
-}
-
-KeyPos key_pos(char key) {
-    for (int i = 0; kKeys[i]; ++i) {
-        if (kKeys[i] == key) return {i / 4, i % 4};
-    }
-    return {-1, -1};
-}
 
 LatheRig::LatheRig(const LatheRigConfig& cfg)
     : chip(firmware(cfg.firmware_elf)), motor(cfg.motor), train(cfg.train),

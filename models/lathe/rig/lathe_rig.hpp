@@ -12,6 +12,7 @@
 #include "avr/avr_chip.hpp"
 #include "lathe/core/dc_motor.hpp"
 #include "lathe/core/drive_train.hpp"
+#include "lathe/core/keypad.hpp"
 #include "lathe/core/thread_metrics.hpp"
 
 namespace cnc::lathe {
@@ -22,14 +23,6 @@ struct LatheRigConfig {
     DcMotorParams motor = derive_motor();
     DriveTrainParams train;
 };
-
-// Keys by (column 0..3 = PB7..PB4, row 0..3 = PB3..PB0), seed 002 §6.6. Keys the keypad lacks have none.
-struct KeyPos {
-    int col;
-    int row;
-};
-[[nodiscard]] bool keypad_has(char key);
-[[nodiscard]] KeyPos key_pos(char key);
 
 // One cutting pass as recorded: the carriage along the cut at its start and at each spindle pulse, the motor
 // pulses (falling edges at the MCU, as INT0 sees them) at the same instants.

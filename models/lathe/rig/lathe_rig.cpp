@@ -79,9 +79,8 @@ void LatheRig::update_keypad() {
 }
 
 // A pass starts when doCut starts the PID (at the spindle index) and ends when it stops it before the brake.
-void LatheRig::record() {
+void LatheRig::record(double dt_s) {
     const bool running = pid_running();
-    const double dt_s = static_cast<double>(kStepCycles) * kCycleS;
     if (running && !m_was_running) {
         if (passes.empty()) m_cut_sign = chip.pin_level(Pin{'D', 0}) ? 1.0 : -1.0;  // DIR1 high: positive volts
         passes.emplace_back();
@@ -122,7 +121,7 @@ void LatheRig::step() {
     if (level != m_motor_level) chip.drive_input(Pin{'D', 2}, level);
     if (m_motor_level && !level) ++motor_pulses;
     m_motor_level = level;
-    record();
+    record(dt);
     update_spindle(false);
     update_keypad();
 }

@@ -66,7 +66,7 @@ private:
     [[nodiscard]] bool motor_encoder_level() const;
     void update_spindle(bool force);
     void update_keypad();
-    void record();
+    void record(double dt_s);  // the step just run, s
 
     double m_spindle_rev_per_s;
     avr::Cycle m_last = 0;

@@ -74,7 +74,9 @@ void LatheRig::update_keypad() {
         for (const KeyPos& k : pressed) {
             if (k.row == row && !chip.pin_level(Pin{'B', 7 - k.col})) low = true;
         }
-        chip.drive_input(Pin{'B', 3 - row}, !low);
+        auto& level = m_row_level[static_cast<std::size_t>(row)];
+        if (level != static_cast<int>(!low)) chip.drive_input(Pin{'B', 3 - row}, !low);
+        level = !low;
     }
 }
 

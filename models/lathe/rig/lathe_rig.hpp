@@ -6,6 +6,7 @@
 // carriage at each spindle pulse of each pass (the time the firmware's PID runs), the motor pulses, the time the
 // PID output sits at a clamp, and the carriage's overshoot after each brake.
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,7 @@ private:
     bool m_spindle_level = true;
     bool m_index = true;
     bool m_was_running = false;
+    std::array<int, 4> m_row_level{-1, -1, -1, -1};  // the rows as last driven (-1: not yet)
     double m_cut_sign = 1.0;
     double m_brake_from_mm = 0.0;
     double m_brake_until_s = -1.0;

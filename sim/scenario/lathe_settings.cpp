@@ -66,9 +66,12 @@ std::vector<OperatorStep> default_operator_script(const LatheSettings& s) {
     const double cut_s = 60.0 / s.spindle_rpm + 1.1 * length_mm / feed_mm_per_s + 2.0;
     // The retract: full speed, the last 6.35 mm at PWM_SLOW = 58.7 % (§6.4), the brake.
     const double retract_s = length_mm / 5.1 + 1.5;
-    const std::string cut = s.mode == "thread" ? "13" + centi_text(s.pitch_centi_mm) + "D" : s.mode == "fine" ? "12" : "11";
-    std::vector<OperatorStep> steps = {{"", 0, 0.0, 0.3},
-                                       {cut + (s.right_hand ? "1" : "2") + centi_text(s.length_centi_mm) + "D", 0, 0.0, 0.0}};
+    // Menu "1: cut", then "1:coarse 2:fine 3:thread" (3 asks the pitch), the hand, the length (§6.6).
+    const std::string cut = s.mode == "thread" ? "13" + centi_text(s.pitch_centi_mm) + "D"
+                            : s.mode == "fine" ? "12"
+                                               : "11";
+    const std::string setup = cut + (s.right_hand ? "1" : "2") + centi_text(s.length_centi_mm) + "D";
+    std::vector<OperatorStep> steps = {{"", 0, 0.0, 0.3}, {setup, 0, 0.0, 0.0}};
     for (int p = 0; p < s.passes; ++p) {
         steps.push_back({"D", 0, 0.0, 0.0});
         steps.push_back({"", 0, 0.0, cut_s});

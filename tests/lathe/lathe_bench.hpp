@@ -5,7 +5,6 @@
 namespace cnc::lathe::test {
 
 using avr::Cycle;
-using avr::Pin;
 
 inline constexpr double kCycleS = 1.0 / 8e6;
 

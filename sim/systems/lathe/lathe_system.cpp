@@ -129,6 +129,8 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
         thread.push_back(p.thread);
         const std::vector<double> e = following_error(p, list.lambda_list);
         const double max_e = e.empty() ? 0.0 : *std::max_element(e.begin(), e.end());
+        const nlohmann::json overshoot =
+            p.overshoot_mm < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(p.overshoot_mm * 1000.0 / kPulseUm);
         const double trend = trend_per_s(e, spindle_pulse_s);
         growing = growing || trend > kGrowingPulsesPerS;
         at_full_s += p.at_full_s;
@@ -138,8 +140,7 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
                           {"pid_at_0_s", p.at_zero_s},
                           {"following_error_max_pulses", max_e},
                           {"following_error_trend_pulses_per_s", trend},
-                          {"overshoot_after_brake_pulses",
-                           p.overshoot_mm < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(p.overshoot_mm * 1000.0 / kPulseUm)}});
+                          {"overshoot_after_brake_pulses", overshoot}});
         text << "pass " << passes.size() << ": " << fixed(p.pid_s, 3) << " s under the PID, at 1023 for "
              << fixed(p.at_full_s, 3) << " s, at 0 for " << fixed(p.at_zero_s, 3) << " s; following error max "
              << fixed(max_e, 1) << " pulses, trend " << fixed(trend, 1) << " pulses/s; overshoot after the brake "
@@ -147,7 +148,8 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
              << "\n";
     }
     d["passes"] = passes;
-    const lathe::ThreadMetrics m = lathe::thread_metrics(thread, pitch_mm, kSpindlePulsesPerRev, s.settle_revolutions);
+    const lathe::ThreadMetrics m =
+        lathe::thread_metrics(thread, pitch_mm, kSpindlePulsesPerRev, s.settle_revolutions);
     const lathe::ThreadMetrics whole = lathe::thread_metrics(thread, pitch_mm, kSpindlePulsesPerRev);
     d["thread"] = {{"settle_revolutions", s.settle_revolutions},
                    {"revolutions", m.revolutions},
@@ -164,7 +166,8 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
     d["pid_at_1023_s"] = at_full_s;
     text << "thread (" << rig.passes.size() << " passes, first " << s.settle_revolutions
          << " revolutions of each left out): pitch error mean " << fixed(m.pitch_error_mean_um, 2) << " um, max "
-         << fixed(m.pitch_error_max_um, 2) << " um per revolution; fitted pitch error " << fixed(m.pitch_fit_error_um, 3)
+         << fixed(m.pitch_error_max_um, 2) << " um per revolution; fitted pitch error "
+         << fixed(m.pitch_fit_error_um, 3)
          << " um (" << fixed(m.pitch_fit_error_um / (pitch_mm * 10.0), 4) << " %); phase error between passes max "
          << fixed(m.phase_error_max_um, 2) << " um, at the end " << fixed(m.phase_error_end_um, 2)
          << " um (whole passes: max " << fixed(whole.phase_error_max_um, 2) << " um)\n";

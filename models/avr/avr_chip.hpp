@@ -113,7 +113,9 @@ private:
     void io_write(std::uint16_t addr, std::uint8_t v);
     [[nodiscard]] std::uint8_t io_read(std::uint16_t addr);
     void io_write_atmega16(std::uint16_t addr, std::uint8_t v);  // chip_io_atmega16.cpp
-    [[nodiscard]] std::uint8_t io_read_atmega16(std::uint16_t addr);
+    // The timer registers both MCUs share (McuMap::timer_regs): false / nullopt for any other address.
+    bool write_shared_timer_reg(std::uint16_t addr, std::uint8_t v);
+    [[nodiscard]] std::optional<std::uint8_t> read_shared_timer_reg(std::uint16_t addr);
     void install_atmega16_hooks(const std::function<void(std::uint16_t)>& take_write,
                                 const std::function<void(std::uint16_t)>& take_read);
     // §16.3 (328P) / "Accessing 16-bit Registers" (ATmega16): a low byte read latches the high byte in TEMP; a

@@ -47,6 +47,49 @@ void AvrChip::write_timer1_low(Timer1Reg r, std::uint16_t low_addr, std::uint8_t
     }
 }
 
+bool AvrChip::write_shared_timer_reg(std::uint16_t addr, std::uint8_t v) {
+    const TimerRegs& r = m_map.timer_regs;
+    const Cycle c = now();
+    // §16.3 (328P), "Accessing 16-bit Registers" (ATmega16): a high byte write goes to TEMP; the low byte write
+    // moves TEMP:low into the register at once.
+    if (addr == r.tcnt1l + 1 || addr == r.icr1l + 1 || addr == r.ocr1al + 1 || addr == r.ocr1bl + 1) {
+        m_temp16 = v;
+    } else if (addr == r.tcnt1l) {
+        write_timer1_low(Timer1Reg::Tcnt, addr, v);
+    } else if (addr == r.icr1l) {
+        write_timer1_low(Timer1Reg::Icr, addr, v);
+    } else if (addr == r.ocr1al) {
+        write_timer1_low(Timer1Reg::OcrA, addr, v);
+    } else if (addr == r.ocr1bl) {
+        write_timer1_low(Timer1Reg::OcrB, addr, v);
+    } else if (addr == r.tcnt0) {
+        m_timers[0]->write_tcnt(c, v);
+    } else if (addr == r.tcnt2) {
+        m_timers[2]->write_tcnt(c, v);
+    } else if (addr == r.assr) {
+        if ((v & r.assr_as2) != 0 && (m_avr->data[addr] & r.assr_as2) == 0)
+            std::fprintf(stderr,
+                         "avr: ASSR.AS2 set: Timer2's asynchronous mode is not modelled (it keeps counting the I/O "
+                         "clock)\n");
+        m_avr->data[addr] = static_cast<std::uint8_t>(v & r.assr_writable);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+std::optional<std::uint8_t> AvrChip::read_shared_timer_reg(std::uint16_t addr) {
+    const TimerRegs& r = m_map.timer_regs;
+    const Cycle c = now();
+    if (addr == r.tcnt0) return static_cast<std::uint8_t>(m_timers[0]->read_tcnt(c));
+    if (addr == r.tcnt2) return static_cast<std::uint8_t>(m_timers[2]->read_tcnt(c));
+    // Reading the low byte copies the high byte into TEMP, which the high byte read returns.
+    if (addr == r.tcnt1l) return latch_high(m_timers[1]->read_tcnt(c));
+    if (addr == r.icr1l) return latch_high(m_timers[1]->icr());
+    if (addr == r.tcnt1l + 1 || addr == r.icr1l + 1) return m_temp16;
+    return std::nullopt;
+}
+
 std::optional<int> AvrChip::single_bit_instruction(std::uint16_t addr, bool* set) const {
     // SBI A,b = 1001 1010 AAAA Abbb, CBI A,b = 1001 1000 AAAA Abbb (AVR instruction set manual).
     const std::uint32_t pc = m_avr->pc;
@@ -85,7 +128,6 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
             t0.write_tccrb(c, v);
             data[addr] = t0.tccrb();
             break;
-        case kTcnt0: t0.write_tcnt(c, v); break;
         case kOcr0a:
             t0.write_ocr(c, Channel::A, v);
             data[addr] = v;
@@ -106,15 +148,6 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
             t1.write_tccrc(c, v);
             data[addr] = 0;
             break;
-        // §16.3: a high byte write goes to TEMP; the low byte write moves TEMP:low into the register at once.
-        case kTcnt1h:
-        case kIcr1h:
-        case kOcr1ah:
-        case kOcr1bh: m_temp16 = v; break;
-        case kTcnt1l: write_timer1_low(Timer1Reg::Tcnt, addr, v); break;
-        case kIcr1l: write_timer1_low(Timer1Reg::Icr, addr, v); break;
-        case kOcr1al: write_timer1_low(Timer1Reg::OcrA, addr, v); break;
-        case kOcr1bl: write_timer1_low(Timer1Reg::OcrB, addr, v); break;
         case kTccr2a:
             t2.write_tccra(c, v);
             data[addr] = v;
@@ -123,7 +156,6 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
             t2.write_tccrb(c, v);
             data[addr] = t2.tccrb();
             break;
-        case kTcnt2: t2.write_tcnt(c, v); break;
         case kOcr2a:
             t2.write_ocr(c, Channel::A, v);
             data[addr] = v;
@@ -131,13 +163,6 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
         case kOcr2b:
             t2.write_ocr(c, Channel::B, v);
             data[addr] = v;
-            break;
-        case kAssr:
-            if ((v & kAs2) != 0 && (data[addr] & kAs2) == 0)
-                std::fprintf(stderr,
-                             "avr: ASSR.AS2 set: Timer2's asynchronous mode is not modelled (it keeps "
-                             "counting the I/O clock)\n");
-            data[addr] = static_cast<std::uint8_t>(v & 0x60);
             break;
         case kUdr0: m_usart.write_udr(c, v); break;
         case kUcsr0a: m_usart.write_ucsra(c, v); break;
@@ -159,23 +184,17 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
             data[addr] = m_usart.ubrrh();
             break;
         default:
-            if (port_reg_index(addr)) port_write(addr, v);
+            if (!write_shared_timer_reg(addr, v) && port_reg_index(addr)) port_write(addr, v);
             break;
     }
     reschedule();
 }
 
 std::uint8_t AvrChip::io_read(std::uint16_t addr) {
-    if (m_map.mcu == Mcu::Atmega16) return io_read_atmega16(addr);
+    if (const auto v = read_shared_timer_reg(addr)) return *v;
+    if (m_map.mcu == Mcu::Atmega16) return port_read(addr);  // the ATmega16's USART is not modelled
     const Cycle c = now();
     switch (addr) {
-        case kTcnt0: return static_cast<std::uint8_t>(m_timers[0]->read_tcnt(c));
-        case kTcnt2: return static_cast<std::uint8_t>(m_timers[2]->read_tcnt(c));
-        // §16.3: reading the low byte copies the high byte into TEMP, which the high byte read returns.
-        case kTcnt1l: return latch_high(m_timers[1]->read_tcnt(c));
-        case kIcr1l: return latch_high(m_timers[1]->icr());
-        case kTcnt1h:
-        case kIcr1h: return m_temp16;
         case kUcsr0a: m_usart.advance_to(c); return m_usart.ucsra();
         case kUdr0: {
             const std::uint8_t v = m_usart.read_udr(c);

@@ -1,6 +1,7 @@
 // The ATmega16's Timer0/1/2 and prescaler registers (datasheet doc2466 §"8-bit Timer/Counter0", "16-bit
 // Timer/Counter1", "8-bit Timer/Counter2", "Timer/Counter0 and Timer/Counter1 Prescalers") on the same TimerUnit
-// models as the ATmega328P's: the layouts differ, the counters do not.
+// models as the ATmega328P's: the layouts differ, the counters do not. The registers that differ only in address
+// (counters, Timer1's 16-bit registers, ASSR) go through the shared handlers of chip_io.cpp and McuMap::timer_regs.
 //   * TCCR0 / TCCR2 = FOCn (7), WGMn0 (6), COMn1:0 (5:4), WGMn1 (3), CSn2:0 (2:0), with one compare unit (OCR0 /
 //     OCR2, channel A here). Modes WGMn1:0 = 0 normal, 1 phase correct PWM, 2 CTC, 3 fast PWM: the 328P's modes
 //     0..3, so the bits are moved to the TCCRnA/TCCRnB places TimerUnit decodes.
@@ -68,7 +69,6 @@ void AvrChip::io_write_atmega16(std::uint16_t addr, std::uint8_t v) {
             break;
         }
         case kTccr0: write_tccr(t0); break;
-        case kTcnt0: t0.write_tcnt(c, v); break;
         case kOcr0:
             t0.write_ocr(c, Channel::A, v);
             data[addr] = v;
@@ -82,29 +82,13 @@ void AvrChip::io_write_atmega16(std::uint16_t addr, std::uint8_t v) {
             t1.write_tccrb(c, v);
             data[addr] = t1.tccrb();
             break;
-        case kTcnt1h:
-        case kIcr1h:
-        case kOcr1ah:
-        case kOcr1bh: m_temp16 = v; break;
-        case kTcnt1l: write_timer1_low(Timer1Reg::Tcnt, addr, v); break;
-        case kIcr1l: write_timer1_low(Timer1Reg::Icr, addr, v); break;
-        case kOcr1al: write_timer1_low(Timer1Reg::OcrA, addr, v); break;
-        case kOcr1bl: write_timer1_low(Timer1Reg::OcrB, addr, v); break;
         case kTccr2: write_tccr(t2); break;
-        case kTcnt2: t2.write_tcnt(c, v); break;
         case kOcr2:
             t2.write_ocr(c, Channel::A, v);
             data[addr] = v;
             break;
-        case kAssr:
-            if ((v & kAs2) != 0 && (data[addr] & kAs2) == 0)
-                std::fprintf(stderr,
-                             "avr: ASSR.AS2 set: Timer2's asynchronous mode is not modelled (it keeps "
-                             "counting the I/O clock)\n");
-            data[addr] = static_cast<std::uint8_t>(v & kAs2);
-            break;
         default:
-            if (port_reg_index(addr)) port_write(addr, v);
+            if (!write_shared_timer_reg(addr, v) && port_reg_index(addr)) port_write(addr, v);
             break;
     }
 }
@@ -153,17 +137,5 @@ void AvrChip::write_gifr(std::uint8_t v) {
     }
 }
 
-std::uint8_t AvrChip::io_read_atmega16(std::uint16_t addr) {
-    const Cycle c = now();
-    switch (addr) {
-        case kTcnt0: return static_cast<std::uint8_t>(m_timers[0]->read_tcnt(c));
-        case kTcnt2: return static_cast<std::uint8_t>(m_timers[2]->read_tcnt(c));
-        case kTcnt1l: return latch_high(m_timers[1]->read_tcnt(c));
-        case kIcr1l: return latch_high(m_timers[1]->icr());
-        case kTcnt1h:
-        case kIcr1h: return m_temp16;
-        default: return port_read(addr);
-    }
-}
 
 }  // namespace cnc::avr

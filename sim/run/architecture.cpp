@@ -4,6 +4,7 @@
 #include "scenario/scenario.hpp"
 #include "systems/atmega/atmega_system.hpp"
 #include "systems/fpga_uart_system.hpp"
+#include "systems/lathe/lathe_system.hpp"
 #include "systems/spi_fpga/spi_fpga_system.hpp"
 
 namespace cnc::sim {
@@ -22,15 +23,18 @@ void read_spi_fpga(KeyReader& r, Scenario& s, const std::filesystem::path& base)
     s.spi_fpga.planner.y = s.machine.y.limits;
 }
 
+void read_lathe(KeyReader& r, Scenario& s, const std::filesystem::path&) { read_lathe_settings(r, s.lathe); }
+
 }  // namespace
 
 const std::vector<Architecture>& architectures() {
     // The seed 000 FPGA and the seed 003 head switch the laser by motion code; the seed 004 frame carries the
-    // job's laser bit.
+    // job's laser bit. The seed 002 lathe runs no job (its laser switching is never asked).
     static const std::vector<Architecture> list = {
         {"fpga-uart", read_fpga_uart, run_fpga_uart, true, LaserSwitching::ByMotionKind},
         {"atmega", read_atmega, run_atmega, true, LaserSwitching::ByMotionKind},
         {"spi-fpga", read_spi_fpga, run_spi_fpga, true, LaserSwitching::FollowsJob},
+        {"lathe-sync", read_lathe, run_lathe_sync, false, LaserSwitching::FollowsJob},
     };
     return list;
 }

@@ -17,6 +17,7 @@
 #include "run/progress.hpp"
 #include "scenario/atmega_settings.hpp"
 #include "scenario/key_reader.hpp"
+#include "scenario/lathe_settings.hpp"
 #include "scenario/mechanics_settings.hpp"
 #include "scenario/spi_fpga_settings.hpp"
 #include "uart/cp2102.hpp"
@@ -47,6 +48,7 @@ struct Scenario {
     MechanicsSettings mechanics;
     AtmegaSettings atmega;
     SpiFpgaSettings spi_fpga;
+    LatheSettings lathe;
 
     std::string vcd_path;       // empty: no VCD
     std::int64_t vcd_timescale_fs = 100'000;  // trace.timescale

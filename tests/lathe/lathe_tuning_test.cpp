@@ -22,9 +22,7 @@ using namespace cnc::lathe::test;
 
 TEST(LatheTuning, PeriodRecordMatchesTheSeedsDump) {
     LatheBench b;
-    b.pressed = {key_pos('B')};  // held at power-up (§6.6), released after 50 ms
-    b.run_for(0.05);
-    b.pressed.clear();
+    b.hold('B', 0.05);  // held at power-up (§6.6), released after 50 ms
     // Three overflowing tries (OCR2 = 0, 1, 2) and the good one, each followed by a 500 ms brake and a 1 s wait,
     // then 401 EEPROM bytes of 8.5 ms at most: well inside 12 s.
     std::vector<std::uint8_t> ee;

@@ -1,5 +1,8 @@
 #include "avr/core/mcu_map.hpp"
 
+#include "avr/atmega16_regs.hpp"
+#include "avr/atmega328p_regs.hpp"
+
 namespace cnc::avr {
 
 namespace {
@@ -28,6 +31,9 @@ McuMap make_328p() {
     m.vector[2][kCompA] = 7;
     m.vector[2][kCompB] = 8;
     m.vector[2][kOvf] = 9;
+    // ASSR keeps EXCLK (6) and AS2 (5).
+    m.timer_regs = {reg::kTcnt0, reg::kTcnt2, reg::kTcnt1l, reg::kIcr1l, reg::kOcr1al, reg::kOcr1bl, reg::kAssr,
+                    reg::kAs2, 0x60};
     return m;
 }
 
@@ -48,6 +54,8 @@ McuMap make_16() {
     m.vector[1][kOvf] = 8;
     m.vector[2][kCompA] = 3;
     m.vector[2][kOvf] = 4;
+    m.timer_regs = {reg16::kTcnt0, reg16::kTcnt2, reg16::kTcnt1l, reg16::kIcr1l, reg16::kOcr1al, reg16::kOcr1bl,
+                    reg16::kAssr, reg16::kAs2, reg16::kAs2};
     return m;
 }
 

@@ -29,6 +29,20 @@ struct CompareOutputPin {
     Channel channel = Channel::A;
 };
 
+// The timer registers both MCUs have with the same function at their own data-space addresses: the counters,
+// Timer1's 16-bit registers (accessed through TEMP) and ASSR.
+struct TimerRegs {
+    std::uint16_t tcnt0 = 0;
+    std::uint16_t tcnt2 = 0;
+    std::uint16_t tcnt1l = 0;  // each xH register is the next address
+    std::uint16_t icr1l = 0;
+    std::uint16_t ocr1al = 0;
+    std::uint16_t ocr1bl = 0;
+    std::uint16_t assr = 0;
+    std::uint8_t assr_as2 = 0;       // ASSR.AS2: Timer2 clocked asynchronously (not modelled)
+    std::uint8_t assr_writable = 0;  // the bits a write keeps
+};
+
 struct McuMap {
     Mcu mcu = Mcu::Atmega328p;
     const char* name = "";  // as avr-gcc's -mmcu and simavr's core name
@@ -36,6 +50,7 @@ struct McuMap {
     std::vector<CompareOutputPin> compare_outputs;
     // Vector number of each timer flag (0: the timer has no such flag).
     int vector[3][4] = {};  // [timer][TimerFlag]
+    TimerRegs timer_regs;
 };
 
 // "atmega328p" or "atmega16"; nullopt for any other.

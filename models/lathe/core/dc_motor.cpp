@@ -53,6 +53,10 @@ double DcMotor::terminal_volts(BridgeMode mode, double drive_volts, double curre
 }
 
 void DcMotor::advance(double dt_s, BridgeMode mode, double drive_volts, double load_torque_nm) {
+    // A shaft at rest, without current or load, on an open bridge stays so (the operator's waits cost nothing).
+    if (mode == BridgeMode::Coast && m_s.current_a == 0.0 && m_s.omega_rad_per_s == 0.0 && load_torque_nm == 0.0) {
+        return;
+    }
     const int steps = std::max(1, static_cast<int>(std::ceil(dt_s / kMaxStepS)));
     const double h = dt_s / steps;
     const DcMotorParams& p = m_p;
@@ -61,7 +65,7 @@ void DcMotor::advance(double dt_s, BridgeMode mode, double drive_volts, double l
         const bool open = mode == BridgeMode::Coast && m_s.current_a == 0.0;
         const double v = terminal_volts(mode, drive_volts, m_s.current_a);
         const auto deriv = [&](double w, double i, double& dw, double& di) {
-            const double load = load_torque_nm * std::tanh(w / kLoadSmoothingRadPerS);
+            const double load = load_torque_nm == 0.0 ? 0.0 : load_torque_nm * std::tanh(w / kLoadSmoothingRadPerS);
             dw = (p.kt_nm_per_a * i - p.b_nm_s_per_rad * w - load) / p.j_kg_m2;
             di = open ? 0.0 : (v - p.r_ohm * i - p.kt_nm_per_a * w) / p.l_h;
         };

@@ -58,14 +58,38 @@ void control_init(void) {
     pid_init();
 }
 
-/* Motor encoder pulse (§6.2). Nested interrupts allowed, as the seed's ISR_NOBLOCK. */
-ISR(INT0_vect, ISR_NOBLOCK) {
+/* Seed option (§11.9): the seed declares every ISR ISR_NOBLOCK, and its pulse counts are multi-byte variables
+ * shared between nested ISRs. Two races follow, both seen on the model (tests/lathe/lathe_thread_test.cpp):
+ *   - INT1 preempting INT0 between its load and store of ls_pulses: INT0 then stores the interval's count + 1
+ *     over the 0 INT1 wrote, the interval's pulses are subtracted twice and Error drops by a whole B(n);
+ *   - INT0 preempting INT1 between its read and its clear of ls_pulses: that motor pulse is never subtracted.
+ * PULSE_ISR_ATOMIC (the lathe_sync_atomic build) runs INT0 and INT1 with interrupts disabled and has the PID read
+ * Error with interrupts disabled; the default keeps the seed's nesting. */
+#ifdef PULSE_ISR_ATOMIC
+#define PULSE_ISR_ATTR ISR_BLOCK
+#else
+#define PULSE_ISR_ATTR ISR_NOBLOCK
+#endif
+
+static int16_t read_error(void) {
+#ifdef PULSE_ISR_ATOMIC
+    cli();
+    const int16_t e = Error;
+    sei();
+    return e;
+#else
+    return Error;
+#endif
+}
+
+/* Motor encoder pulse (§6.2). */
+ISR(INT0_vect, PULSE_ISR_ATTR) {
     ls_pulses++;
     total_ls_pulses++;
 }
 
 /* Spindle encoder pulse: add the list's B(n), subtract the motor pulses of the interval (§2.1, §6.2). */
-ISR(INT1_vect, ISR_NOBLOCK) {
+ISR(INT1_vect, PULSE_ISR_ATTR) {
     sp_index++;
     if (sp_index == SP_PPR) sp_index = 0;
     Error += (int16_t)(Ptr->info - ls_pulses);
@@ -76,7 +100,7 @@ ISR(INT1_vect, ISR_NOBLOCK) {
 
 /* PID tick every (OCR0 + 1) x 128 us (§6.3): position form, gains x32, output clamped to 0..PWM_TOP. */
 ISR(TIMER0_COMP_vect, ISR_NOBLOCK) {
-    const int16_t pid_error = Error;
+    const int16_t pid_error = read_error();
     int16_t p_term, d_term;
     int32_t i_term, ret, temp;
     if (pid_error > pid_st.maxError) p_term = MAX_INT;

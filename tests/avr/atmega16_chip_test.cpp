@@ -108,7 +108,9 @@ TEST(Atmega16, SeedTimerModes) {
     ASSERT_GE(oc1a.rise.size(), 15U);
     for (std::size_t j = 0; j < oc1a.rise.size(); ++j) {
         ASSERT_EQ(oc1a.rise[j], w + 1024 * static_cast<Cycle>(j + 1)) << j;
-        if (j < oc1a.fall.size()) ASSERT_EQ(oc1a.fall[j], oc1a.rise[j] + 301) << j;
+        if (j < oc1a.fall.size()) {
+            ASSERT_EQ(oc1a.fall[j], oc1a.rise[j] + 301) << j;
+        }
     }
 }
 

@@ -88,13 +88,15 @@ RunOutcome run_scenario(const Scenario& s) {
     }
 
     std::ostringstream text;
-    text << "cncsim run: " << s.name << " (" << s.architecture << "), job " << s.job_path << "\n\n";
+    text << "cncsim run: " << s.name << " (" << s.architecture << ")"
+         << (s.job_path.empty() ? std::string() : ", job " + s.job_path) << "\n\n";
     if (!arch.ok) {
         text << "PARTIAL: the run failed (" << arch.failure
              << ").\nThe figures below cover only what ran before it stopped; they are not a result.\n\n";
     }
-    text << metrics::summary_table(m) << '\n'
-         << (job.program ? program_text(*job.program) : std::string()) << '\n'
+    // A controller without STEP/DIR axes (the lathe's DC motor) has no pulse figures to tabulate.
+    if (!arch.input.axes.empty()) text << metrics::summary_table(m) << '\n';
+    text << (job.program ? program_text(*job.program) : std::string()) << '\n'
          << arch.details_text;
     for (const WarningGroup& g : group_warnings(arch.warnings)) text << "warning: " << summary_line(g) << '\n';
     out.summary = text.str();

@@ -31,16 +31,17 @@ AxisIntegrator::AxisIntegrator(const AxisParams& params, const IntegratorToleran
 void AxisIntegrator::set_setpoints(const AxisSetpoints& sp) {
     m_ode.set_setpoints(sp);
     m_at_rest = false;
+    m_dxdt_valid = false;
 }
 
 void AxisIntegrator::set_state(const AxisState& x) {
     m_x = x;
     m_at_rest = false;
+    m_dxdt_valid = false;
 }
 
 bool AxisIntegrator::converged() const {
-    AxisState d;
-    m_ode(m_x, d, m_t_s);
+    const AxisState& d = m_dxdt;
     const WindingSetpoints& sp = m_ode.setpoints().current;
     return std::abs(m_x[kOmega]) < kRestOmegaRad_s && std::abs(d[kOmega]) < kRestAlphaRad_s2 &&
            std::abs(m_x[kV]) < kRestVelocityM_s && std::abs(d[kV]) < kRestAccelM_s2 &&
@@ -55,11 +56,13 @@ void AxisIntegrator::advance_to(double t_s) {
     }
     auto stepper = odeint::make_controlled(m_tol.abs_tol, m_tol.rel_tol, Dopri5());
     auto system = [this](const AxisState& x, AxisState& dxdt, double t) { m_ode(x, dxdt, t); };
+    if (!m_dxdt_valid) m_ode(m_x, m_dxdt, m_t_s);
+    m_dxdt_valid = true;
     while (m_t_s < t_s) {
         const double remaining = t_s - m_t_s;
         const bool last = m_dt_s >= remaining;
         double dt = last ? remaining : m_dt_s;
-        if (stepper.try_step(system, m_x, m_t_s, dt) == odeint::success) {
+        if (stepper.try_step(system, m_x, m_dxdt, m_t_s, dt) == odeint::success) {
             ++m_steps;
             if (last) m_t_s = t_s;  // land exactly on the event time despite rounding
             if (!last || dt < m_dt_s) m_dt_s = std::min(dt, m_tol.max_step_s);

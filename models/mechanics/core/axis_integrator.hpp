@@ -5,7 +5,9 @@
 // so the caller advances the state to each event time (a microstep change, an EN change, a sample) and
 // then changes them; the integrator never steps past the time it is asked for. Once the axis has come to
 // rest (speeds, accelerations and current errors below the rest thresholds) it is fast-forwarded: later
-// calls move its clock without integrating, until the set-points change.
+// calls move its clock without integrating, until the set-points change. The derivative at the end of the
+// last step is kept between calls (Dormand-Prince's first-same-as-last stage) until the set-points or the
+// state change.
 #pragma once
 #include <cstdint>
 
@@ -42,6 +44,8 @@ private:
     AxisOde m_ode;
     IntegratorTolerances m_tol;
     AxisState m_x = AxisState::Zero();
+    AxisState m_dxdt = AxisState::Zero();  // at m_x, m_t_s when m_dxdt_valid
+    bool m_dxdt_valid = false;
     double m_t_s = 0.0;
     double m_dt_s;
     bool m_at_rest = false;

@@ -21,14 +21,15 @@ void AxisOde::operator()(const AxisState& x, AxisState& dxdt, double) const {
     const HybridStepperParams& m = m_p.motor;
     const double theta = x[kTheta];
     const double omega = x[kOmega];
-    const WindingCurrents emf = back_emf_v(m, theta, omega);
+    const RotorAngle angle = rotor_angle(m, theta);
+    const WindingCurrents emf = back_emf_v(m, angle, omega);
     const double va = bridge_voltage_v(m_sp.current.a_a, x[kIa], emf.a_a, m.resistance_ohm, m.inductance_h, m_p.driver);
     const double vb = bridge_voltage_v(m_sp.current.b_a, x[kIb], emf.b_a, m.resistance_ohm, m.inductance_h, m_p.driver);
     dxdt[kIa] = (va - m.resistance_ohm * x[kIa] - emf.a_a) / m.inductance_h;
     dxdt[kIb] = (vb - m.resistance_ohm * x[kIb] - emf.b_a) / m.inductance_h;
 
     const CouplingForces f = coupling_forces(m_p.load, theta, omega, x[kX], x[kV]);
-    const double other = electromagnetic_torque_nm(m, theta, {x[kIa], x[kIb]}) + detent_torque_nm(m, theta) +
+    const double other = electromagnetic_torque_nm(m, angle, {x[kIa], x[kIb]}) + detent_torque_nm(m, angle) +
                          f.on_rotor_nm - m.viscous_nm_per_rad_s * omega + m_sp.external_torque_nm;
     const double torque =
         other + coulomb_friction(m.coulomb_nm, omega, other, m.rotor_inertia_kgm2, kShaftStickBandRad_s);

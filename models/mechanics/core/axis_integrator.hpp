@@ -1,7 +1,10 @@
 // Event-driven integration of one axis (axis_ode.hpp) with Boost.Odeint.
 //
 // Stepper: Dormand-Prince 5(4) (runge_kutta_dopri5) under odeint's step-size control, with absolute and
-// relative error tolerances per step (IntegratorTolerances). The set-points are constant between events,
+// relative error tolerances per step (IntegratorTolerances). A winding whose DRV8825 bridge regulates is
+// integrated through an integrating factor (Lawson's method, axis_integrator.cpp): its current's 20 us decay
+// towards the set-point is exact, not stepped through, and a step that ends a current ramp ends where the
+// bridge regulates again. The set-points are constant between events,
 // so the caller advances the state to each event time (a microstep change, an EN change, a sample) and
 // then changes them; the integrator never steps past the time it is asked for. Once the axis has come to
 // rest (speeds, accelerations and current errors below the rest thresholds) it is fast-forwarded: later

@@ -140,7 +140,8 @@ void AxisIntegrator::advance_to(double t_s) {
             m_x = y;
             m_dxdt = dy;
             m_t_s = last && !at_kink ? t_s : t;  // land exactly on the event time despite rounding
-            if ((!last && !at_kink) || dt < m_dt_s) m_dt_s = std::min(dt, m_tol.max_step_s);
+            // A step cut at a kink says nothing about the step size beyond it: keep the one from before.
+            if (!at_kink && (!last || dt < m_dt_s)) m_dt_s = std::min(dt, m_tol.max_step_s);
         } else {
             m_dt_s = dt;
         }

@@ -1,6 +1,7 @@
 #include "mechanics/carriage.hpp"
 #include "common/sc_time.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "common/bad_input.hpp"
@@ -9,18 +10,27 @@ namespace cnc::mech {
 
 namespace {
 
-
 void require_complete(const CarriageAxis& a, const char* axis) {
     if (a.step_event == nullptr || a.drive == nullptr)
         throw BadInput("", std::string("carriage axis ") + axis + " needs a step event and a drive");
 }
 
+const CarriageConfig& checked(const CarriageConfig& cfg) {
+    require_complete(cfg.x, "x");
+    require_complete(cfg.y, "y");
+    return cfg;
+}
+
+void write_position(PositionSignal& signal, double mm) {
+    if (std::abs(mm - signal.read()) > kPositionSignalResolutionMm) signal.write(mm);
+}
+
 }  // namespace
 
 Carriage::Carriage(const sc_core::sc_module_name& name, const CarriageConfig& cfg)
-    : sc_core::sc_module(name), m_cfg(cfg) {
-    require_complete(cfg.x, "x");
-    require_complete(cfg.y, "y");
+    : sc_core::sc_module(name), m_cfg(checked(cfg)),
+      m_carriage_x_mm("carriage_x_mm", position().x_mm),
+      m_carriage_y_mm("carriage_y_mm", position().y_mm) {
     SC_HAS_PROCESS(Carriage);
     SC_METHOD(on_step);
     sensitive << *cfg.x.step_event << *cfg.y.step_event;
@@ -61,13 +71,8 @@ void Carriage::sample() {
         m_samples.back() = s;
     else
         m_samples.push_back(s);
-    m_x_mm = s.pos.x_mm;
-    m_y_mm = s.pos.y_mm;
-}
-
-void Carriage::add_traces(sc_core::sc_trace_file* tf) const {
-    sc_core::sc_trace(tf, m_x_mm, std::string(name()) + ".x_mm");
-    sc_core::sc_trace(tf, m_y_mm, std::string(name()) + ".y_mm");
+    write_position(m_carriage_x_mm, s.pos.x_mm);
+    write_position(m_carriage_y_mm, s.pos.y_mm);
 }
 
 }  // namespace cnc::mech

@@ -1,7 +1,9 @@
 // The XY carriage: each axis is a drive (an ideal motor on a rigid transmission, or a dynamic axis model);
 // the tool position is sampled at every step of either axis (DESIGN.md §4: contour error is sampled at every
 // step event) and, with sample_hz > 0, periodically in between for as long as an axis is not at rest (a
-// dynamic carriage keeps moving between steps: it lags, rings and settles).
+// dynamic carriage keeps moving between steps: it lags, rings and settles). At each sample the position goes
+// to the real-valued signals carriage_x_mm / carriage_y_mm (what the VCD traces) when it has moved by more than
+// kPositionSignalResolutionMm since the value they hold.
 #pragma once
 #include <systemc>
 #include <vector>
@@ -27,6 +29,13 @@ struct CarriageConfig {
 
 using ToolSample = cnc::ToolSample;
 
+// 0.1 um: a hundredth of the finest microstep of the shipped machines (1/32 step on a 40 mm/rev belt,
+// 6.25 um), well below what a contour error of um needs, and it keeps a carriage settling by nm from writing
+// a VCD value at every sample.
+inline constexpr double kPositionSignalResolutionMm = 1e-4;
+// Written by the step and the periodic sample processes.
+using PositionSignal = sc_core::sc_signal<double, sc_core::SC_MANY_WRITERS>;
+
 class Carriage : public sc_core::sc_module {
 public:
     Carriage(const sc_core::sc_module_name& name, const CarriageConfig& cfg);
@@ -36,7 +45,9 @@ public:
     // One sample at t = 0, then one per time stamp at which either axis stepped: steps of X and Y at the
     // same instant give one sample (the later one overwrites), so a diagonal step is not seen as an L.
     [[nodiscard]] const std::vector<ToolSample>& samples() const { return m_samples; }
-    void add_traces(sc_core::sc_trace_file* tf) const;
+    // The tool position in machine mm, per axis, updated at the samples (resolution above).
+    [[nodiscard]] const PositionSignal& carriage_x_mm() const { return m_carriage_x_mm; }
+    [[nodiscard]] const PositionSignal& carriage_y_mm() const { return m_carriage_y_mm; }
 
 private:
     void start_of_simulation() override;
@@ -48,8 +59,8 @@ private:
     std::vector<ToolSample> m_samples;
     sc_core::sc_event m_period_ev;
     bool m_periodic_armed = false;
-    double m_x_mm = 0.0;  // last sample, for VCD traces
-    double m_y_mm = 0.0;
+    PositionSignal m_carriage_x_mm;
+    PositionSignal m_carriage_y_mm;
 };
 
 }  // namespace cnc::mech

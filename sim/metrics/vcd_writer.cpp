@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <ostream>
 #include <set>
 #include <stdexcept>
@@ -32,6 +33,12 @@ std::string timescale_text(std::int64_t timescale_fs, const std::string& where) 
         throw BadInput(where, "timescale " + std::to_string(timescale_fs) + " fs is not 1, 10 or 100 of fs .. s");
     }
     return *text;
+}
+
+std::string real_text(double value) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "r%.16g", value);
+    return buf;
 }
 
 std::optional<TimePs> exact_period_ps(const VcdSignal& s) {
@@ -87,10 +94,17 @@ VcdWriter::VcdWriter(std::ostream& out, std::int64_t timescale_fs, std::vector<V
           << " $end\n$scope module cncsim $end\n";
     for (std::size_t i = 0; i < m_signals.size(); ++i) {
         m_ids.push_back(vcd_id(i));
-        m_out << "$var wire 1 " << m_ids[i] << ' ' << m_signals[i].name << " $end\n";
+        const bool real = m_signals[i].kind == VcdVarKind::Real;
+        m_out << (real ? "$var real 64 " : "$var wire 1 ") << m_ids[i] << ' ' << m_signals[i].name << " $end\n";
     }
     m_out << "$upscope $end\n$enddefinitions $end\n#" << m_written_tick << "\n$dumpvars\n";
-    for (std::size_t i = 0; i < m_signals.size(); ++i) m_out << (m_signals[i].initial ? '1' : '0') << m_ids[i] << '\n';
+    for (std::size_t i = 0; i < m_signals.size(); ++i) {
+        const VcdSignal& s = m_signals[i];
+        if (s.kind == VcdVarKind::Real)
+            m_out << real_text(s.initial_value) << ' ' << m_ids[i] << '\n';
+        else
+            m_out << (s.initial ? '1' : '0') << m_ids[i] << '\n';
+    }
     m_out << "$end\n";
 }
 
@@ -109,6 +123,7 @@ void VcdWriter::write_time(TimePs t_ps) {
 
 void VcdWriter::change(TimePs t_ps, std::size_t index, bool level) {
     const VcdSignal& s = m_signals.at(index);
+    if (s.kind != VcdVarKind::Wire) throw std::logic_error("VCD writer: " + s.name + " is a real variable, not a wire");
     const std::optional<TimePs> period = exact_period_ps(s);
     if (period && t_ps % *period != 0) {
         throw std::logic_error("VCD writer: edge of " + s.name + " at " + std::to_string(t_ps) +
@@ -116,6 +131,14 @@ void VcdWriter::change(TimePs t_ps, std::size_t index, bool level) {
     }
     write_time(t_ps);
     m_out << (level ? '1' : '0') << m_ids[index] << '\n';
+}
+
+void VcdWriter::change_real(TimePs t_ps, std::size_t index, double value) {
+    if (m_signals.at(index).kind != VcdVarKind::Real) {
+        throw std::logic_error("VCD writer: " + m_signals[index].name + " is a wire, not a real variable");
+    }
+    write_time(t_ps);
+    m_out << real_text(value) << ' ' << m_ids[index] << '\n';
 }
 
 void VcdWriter::finish(TimePs t_ps) {

@@ -1,6 +1,7 @@
 // VCD writing, as the simulation runs (VcdWriter) or from finished edge logs (write_vcd): one scope "cncsim",
-// 1-bit wires, the initial levels in $dumpvars and nothing after $enddefinitions but value changes and times,
-// so that every reader (gtkwave, sigrok, PulseView) sees the whole file.
+// 1-bit wires and 64-bit real variables (IEEE 1364 §18.2: "r<value> <id>", written as %.16g, what gtkwave reads;
+// sigrok-cli's VCD input skips them), the initial values in $dumpvars and nothing after $enddefinitions but
+// value changes and times, so that every reader (gtkwave, sigrok, PulseView) sees the whole file.
 #pragma once
 #include <cstdint>
 #include <iosfwd>
@@ -13,14 +14,18 @@
 
 namespace cnc::metrics {
 
+enum class VcdVarKind { Wire, Real };
+
 struct VcdSignal {
     std::string name;      // unique, no white space
-    bool initial = false;  // level at time 0
+    bool initial = false;  // level at time 0 (wires)
     // The clock that times every edge of the signal. When its period is a whole number of ps (50 MHz, 16 MHz)
     // each edge is a multiple of that period and stays exact: the timescale must divide the period. Without one
     // (host software, a constant pin), or with a period that is not whole ps (the CP2102's 24 MHz: the
     // simulation itself rounds those edges to the ps), edges are written at the nearest tick.
     std::optional<std::int64_t> clock_hz;
+    VcdVarKind kind = VcdVarKind::Wire;
+    double initial_value = 0.0;  // value at time 0 (reals)
 };
 
 // The whole-ps period of a clock, if it has one.
@@ -41,6 +46,8 @@ public:
     // Signal `index` changed to `level` at t_ps; times must not decrease. std::logic_error for a time that goes
     // backwards, or an edge of a clocked signal that is not on its clock (a model that breaks its own timing).
     void change(TimePs t_ps, std::size_t index, bool level);
+    // Real variable `index` took `value` at t_ps (times as for change()).
+    void change_real(TimePs t_ps, std::size_t index, double value);
     // The end of the capture: a last timestamp, so that readers hold the final levels until then.
     void finish(TimePs t_ps);
 

@@ -12,33 +12,55 @@ namespace {
 
 TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
 
-std::string allowed_names(const std::vector<TracedPin>& pins) {
+// A signal the file can hold, wire or real, by name.
+struct Candidate {
+    std::string name;
+    bool on_request;
+};
+
+std::vector<Candidate> candidates(const std::vector<TracedPin>& pins, const std::vector<TracedReal>& reals) {
+    std::vector<Candidate> all;
+    for (const TracedPin& p : pins) all.push_back({p.signal->basename(), p.on_request});
+    for (const TracedReal& r : reals) all.push_back({r.signal->basename(), false});
+    return all;
+}
+
+std::string allowed_names(const std::vector<Candidate>& all) {
     std::string names;
-    for (const TracedPin& p : pins) names += (names.empty() ? "" : ", ") + std::string(p.signal->basename());
+    for (const Candidate& c : all) names += (names.empty() ? "" : ", ") + c.name;
     return names;
 }
 
-// The pins of the file: those trace.signals names, in the order the architecture lists them, or every pin
-// that is not on request.
-std::vector<TracedPin> selected_pins(const Scenario& s, const std::vector<TracedPin>& pins) {
+// The signals of the file (indices into `all`): those trace.signals names, in the order the architecture lists
+// them, or every one that is not on request.
+std::vector<std::size_t> selected(const Scenario& s, const std::vector<Candidate>& all) {
     const std::string key = s.file + ": trace.signals";
-    std::vector<TracedPin> out;
     for (const std::string& name : s.trace_signals) {
-        const auto named = [&](const TracedPin& p) { return name == p.signal->basename(); };
-        if (std::none_of(pins.begin(), pins.end(), named)) {
-            throw BadInput(key, "'" + name + "' is not a pin of " + s.architecture + " (allowed: " +
-                                    allowed_names(pins) + ")");
+        const auto named = [&](const Candidate& c) { return name == c.name; };
+        if (std::none_of(all.begin(), all.end(), named)) {
+            throw BadInput(key, "'" + name + "' is not a signal of " + s.architecture + " (allowed: " +
+                                    allowed_names(all) + ")");
         }
         if (std::count(s.trace_signals.begin(), s.trace_signals.end(), name) > 1) {
             throw BadInput(key, "'" + name + "' is named twice");
         }
     }
-    for (const TracedPin& p : pins) {
-        const bool named = std::find(s.trace_signals.begin(), s.trace_signals.end(), p.signal->basename()) !=
-                           s.trace_signals.end();
-        if (s.trace_signals.empty() ? !p.on_request : named) out.push_back(p);
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const bool named =
+            std::find(s.trace_signals.begin(), s.trace_signals.end(), all[i].name) != s.trace_signals.end();
+        if (s.trace_signals.empty() ? !all[i].on_request : named) out.push_back(i);
     }
     return out;
+}
+
+template <typename F>
+void spawn_on(const sc_core::sc_event& event, const std::string& name, F f) {
+    sc_core::sc_spawn_options opts;
+    opts.spawn_method();
+    opts.dont_initialize();
+    opts.set_sensitivity(&event);
+    sc_core::sc_spawn(std::move(f), ("vcd_" + name).c_str(), &opts);
 }
 
 }  // namespace
@@ -50,33 +72,8 @@ bool trace_names_any(const Scenario& s, std::initializer_list<const char*> names
     });
 }
 
-VcdTrace::VcdTrace(const Scenario& s, const std::vector<TracedPin>& pins)
-    : m_timescale_fs(s.vcd_timescale_fs),
-      m_timescale_key(s.file + ": trace.timescale"),
-      m_from_ps(s.trace_from_ps),
-      m_to_ps(s.trace_to_ps) {
-    const std::vector<TracedPin> traced = selected_pins(s, pins);
-    for (const TracedPin& p : traced) m_signals.push_back({p.signal->basename(), p.signal->read(), p.clock_hz});
-    metrics::check_vcd_signals(m_timescale_fs, m_signals, m_timescale_key);  // before the file: a refusal leaves none
-    m_file.emplace(s.vcd_path, "the VCD");
-    if (m_from_ps == 0) open_at(0);
-
-    for (std::size_t i = 0; i < traced.size(); ++i) {
-        const sc_core::sc_signal<bool>* signal = traced[i].signal;
-        sc_core::sc_spawn_options opts;
-        opts.spawn_method();
-        opts.dont_initialize();
-        opts.set_sensitivity(&signal->value_changed_event());
-        sc_core::sc_spawn([this, signal, i] { change(i, signal->read()); },
-                          (std::string("vcd_") + signal->basename()).c_str(), &opts);
-    }
-}
-
-void VcdTrace::open_at(TimePs t_ps) {
-    m_writer.emplace(m_file->stream(), m_timescale_fs, m_signals, m_timescale_key, t_ps);
-}
-
-void VcdTrace::change(std::size_t index, bool level) {
+template <typename Write, typename Keep>
+void VcdTrace::change(Write write, Keep keep) {
     const TimePs t_ps = now_ps();
     if (m_ended) return;
     if (m_to_ps && t_ps > *m_to_ps) {
@@ -87,13 +84,53 @@ void VcdTrace::change(std::size_t index, bool level) {
     }
     if (!m_writer) {
         if (t_ps < m_from_ps) {
-            m_signals[index].initial = level;  // the levels at the window's start are the last before it
+            keep();  // the values at the window's start are the last before it
             return;
         }
         open_at(m_from_ps);
     }
-    m_writer->change(t_ps, index, level);
+    write(*m_writer, t_ps);
     if (m_file->failed()) m_ended = true;  // nothing more to write; close() reports it
+}
+
+VcdTrace::VcdTrace(const Scenario& s, const std::vector<TracedPin>& pins, const std::vector<TracedReal>& reals)
+    : m_timescale_fs(s.vcd_timescale_fs),
+      m_timescale_key(s.file + ": trace.timescale"),
+      m_from_ps(s.trace_from_ps),
+      m_to_ps(s.trace_to_ps) {
+    const std::vector<Candidate> all = candidates(pins, reals);
+    const std::vector<std::size_t> chosen = selected(s, all);
+    for (const std::size_t k : chosen) {
+        if (k < pins.size()) {
+            m_signals.push_back({all[k].name, pins[k].signal->read(), pins[k].clock_hz});
+        } else {
+            const double value = reals[k - pins.size()].signal->read();
+            m_signals.push_back({all[k].name, false, std::nullopt, metrics::VcdVarKind::Real, value});
+        }
+    }
+    metrics::check_vcd_signals(m_timescale_fs, m_signals, m_timescale_key);  // before the file: a refusal leaves none
+    m_file.emplace(s.vcd_path, "the VCD");
+    if (m_from_ps == 0) open_at(0);
+
+    for (std::size_t i = 0; i < chosen.size(); ++i) {
+        if (chosen[i] < pins.size()) {
+            const auto* signal = pins[chosen[i]].signal;
+            spawn_on(signal->value_changed_event(), all[chosen[i]].name, [this, signal, i] {
+                change([&](metrics::VcdWriter& w, TimePs t) { w.change(t, i, signal->read()); },
+                       [&] { m_signals[i].initial = signal->read(); });
+            });
+        } else {
+            const auto* signal = reals[chosen[i] - pins.size()].signal;
+            spawn_on(signal->value_changed_event(), all[chosen[i]].name, [this, signal, i] {
+                change([&](metrics::VcdWriter& w, TimePs t) { w.change_real(t, i, signal->read()); },
+                       [&] { m_signals[i].initial_value = signal->read(); });
+            });
+        }
+    }
+}
+
+void VcdTrace::open_at(TimePs t_ps) {
+    m_writer.emplace(m_file->stream(), m_timescale_fs, m_signals, m_timescale_key, t_ps);
 }
 
 void VcdTrace::close() {

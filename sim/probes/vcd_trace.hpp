@@ -1,8 +1,9 @@
 // The run's VCD file, written as the simulation runs (nothing is kept in memory): the traced pins by their
 // machine names, at trace.timescale, the pins trace.signals names (by default every pin but those traced only on
-// request) in the window trace.from_s .. trace.to_s. Edges of pins timed by a clock with a whole-ps period (FPGA
-// 50 MHz, AVR 16 MHz) are exact, and a timescale that would round them is refused; the others are written at the
-// nearest tick (metrics/vcd_writer.hpp). The file is an OutputFile: complete, or not there.
+// request) and the carriage's real-valued positions (TracedReal), in the window trace.from_s .. trace.to_s. Edges
+// of pins timed by a clock with a whole-ps period (FPGA 50 MHz, AVR 16 MHz) are exact, and a timescale that would
+// round them is refused; the others are written at the nearest tick (metrics/vcd_writer.hpp). The file is an
+// OutputFile: complete, or not there.
 #pragma once
 #include <cstdint>
 #include <initializer_list>
@@ -24,15 +25,20 @@ struct TracedPin {
     bool on_request = false;                 // in the VCD only when trace.signals names it
 };
 
+struct TracedReal {
+    // Traced under its basename as a 64-bit real variable (the carriage's position: mechanics/carriage.hpp).
+    const sc_core::sc_signal<double, sc_core::SC_MANY_WRITERS>* signal;
+};
+
 // Whether the scenario writes a VCD that trace.signals asks to hold one of `names`.
 [[nodiscard]] bool trace_names_any(const Scenario& s, std::initializer_list<const char*> names);
 
 class VcdTrace {
 public:
-    // Call during elaboration, after the pins are bound: their current levels are the initial ones. Throws
-    // BadInput naming trace.signals for a name that is not one of `pins`, trace.timescale for a timescale that
-    // would round a clocked pin's edges, the file when it cannot be written.
-    VcdTrace(const Scenario& s, const std::vector<TracedPin>& pins);
+    // Call during elaboration, after the pins are bound: their current values are the initial ones. Throws
+    // BadInput naming trace.signals for a name that is not one of `pins` or `reals`, trace.timescale for a
+    // timescale that would round a clocked pin's edges, the file when it cannot be written.
+    VcdTrace(const Scenario& s, const std::vector<TracedPin>& pins, const std::vector<TracedReal>& reals);
     VcdTrace(const VcdTrace&) = delete;
     VcdTrace& operator=(const VcdTrace&) = delete;
 
@@ -40,7 +46,10 @@ public:
     void close();
 
 private:
-    void change(std::size_t index, bool level);
+    // Writes one change through `write` (a wire's level or a real's value), or keeps it as the value at the
+    // window's start through `keep` while the window has not begun.
+    template <typename Write, typename Keep>
+    void change(Write write, Keep keep);
     void open_at(TimePs t_ps);
 
     std::optional<OutputFile> m_file;  // opened once the pins and the timescale are accepted

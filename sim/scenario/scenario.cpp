@@ -128,9 +128,10 @@ void check_fpga(const KeyReader& r, const fpga::FpgaConfig& cfg) {
 void read_trace_window(KeyReader& r, Scenario& s) {
     s.trace_signals = r.get_string_list(
         "trace.signals",
-        "pins the VCD holds, by name (README \"VCD traces\": the pins of each architecture); an unknown name is "
-        "refused with the allowed ones; []: every pin except spi-fpga's sclk, mosi, miso and ss, which are driven "
-        "bit by bit only when named here (or with spi.trace_wires = true)");
+        "pins and signals the VCD holds, by name (README \"VCD traces\": the pins of each architecture, and the "
+        "real-valued carriage_x_mm, carriage_y_mm); an unknown name is refused with the allowed ones; []: all of "
+        "them except spi-fpga's sclk, mosi, miso and ss, which are driven bit by bit only when named here (or with "
+        "spi.trace_wires = true)");
     constexpr double kMaxTraceS = 1e6;  // the largest scenario.max_sim_s
     const double from_s = r.get_float("trace.from_s", 0.0, 0.0, kMaxTraceS,
                                       "start of the VCD's window, s of simulated time: the file holds the levels at "

@@ -231,7 +231,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     record_wires(rec, w);
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
-        vcd = std::make_unique<VcdTrace>(s, traced_pins(w, s.fpga.clk_hz));
+        vcd = std::make_unique<VcdTrace>(s, traced_pins(w, s.fpga.clk_hz), machine.traced_positions());
     }
 
     const host::Program moves_run = job.program ? *job.program : packet_moves(segments, packets, s.job_path);

@@ -72,6 +72,10 @@ Machine::Machine(const sc_core::sc_module_name& name, const host::MachineModel& 
     m_head.laser(laser);
 }
 
+std::vector<TracedReal> Machine::traced_positions() const {
+    return {{&m_carriage.carriage_x_mm()}, {&m_carriage.carriage_y_mm()}};
+}
+
 void Machine::bind(sc_core::sc_signal<bool>& step_x_wire, sc_core::sc_signal<bool>& dir_x_wire,
                    sc_core::sc_signal<bool>& n_enbl_x_wire, sc_core::sc_signal<bool>& step_y_wire,
                    sc_core::sc_signal<bool>& dir_y_wire, sc_core::sc_signal<bool>& n_enbl_y_wire,

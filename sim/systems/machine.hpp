@@ -15,6 +15,7 @@
 #include "mechanics/core/transmission.hpp"
 #include "mechanics/drv8825.hpp"
 #include "mechanics/laser_head.hpp"
+#include "probes/vcd_trace.hpp"
 #include "scenario/mechanics_settings.hpp"
 
 namespace cnc::sim {
@@ -54,6 +55,8 @@ public:
     [[nodiscard]] const mech::Drv8825& driver_x() const { return m_drv_x; }
     [[nodiscard]] const mech::Drv8825& driver_y() const { return m_drv_y; }
     [[nodiscard]] const mech::LaserHead& laser_head() const { return m_head; }
+    // The carriage position per axis for the VCD: carriage_x_mm, carriage_y_mm (real-valued).
+    [[nodiscard]] std::vector<TracedReal> traced_positions() const;
     // The dynamic axis models (nullptr with the ideal mechanics).
     [[nodiscard]] const mech::DynamicAxis* dynamic_x() const { return m_axis_x.dynamic; }
     [[nodiscard]] const mech::DynamicAxis* dynamic_y() const { return m_axis_y.dynamic; }

@@ -11,7 +11,8 @@ namespace cnc::sim {
 
 namespace {
 
-nlohmann::json axis_json(const mech::DynamicAxisStats& st) {
+nlohmann::json axis_json(const mech::DynamicAxis& axis) {
+    const mech::DynamicAxisStats& st = axis.stats();
     nlohmann::json times = nlohmann::json::array();
     for (const mech::LostStepEvent& e : st.events) times.push_back({{"t_s", ps_to_s(e.t_ps)}, {"full_steps", e.full_steps}});
     return {{"lost_full_steps", st.lost_full_steps},
@@ -19,7 +20,8 @@ nlohmann::json axis_json(const mech::DynamicAxisStats& st) {
             {"peak_load_angle_electrical_deg", st.peak_load_angle_deg},
             {"peak_load_angle_t_s", ps_to_s(st.peak_load_angle_ps)},
             {"velocity_ripple_rms_mm_per_s", st.velocity_ripple_rms_mm_s},
-            {"velocity_ripple_peak_mm_per_s", st.velocity_ripple_peak_mm_s}};
+            {"velocity_ripple_peak_mm_per_s", st.velocity_ripple_peak_mm_s},
+            {"integration_steps", axis.integrator().steps_taken()}};
 }
 
 std::string axis_text(const char* name, const mech::DynamicAxisStats& st) {
@@ -58,8 +60,8 @@ void add_mechanics_report(const Machine& machine, ArchRun& run) {
         run.input.laser ? metrics::laser_exposure(run.input.tool, *run.input.laser) : metrics::LaserExposure{};
     run.details["mechanics"] = {
         {"model", "dynamic"},
-        {"x", axis_json(x->stats())},
-        {"y", axis_json(y->stats())},
+        {"x", axis_json(*x)},
+        {"y", axis_json(*y)},
         {"laser_exposure",
          {{"lasered_path_mm", e.lasered_path_mm},
           {"mean_s_per_mm", e.mean_s_per_mm},

@@ -359,6 +359,32 @@ TEST(MetricsVcdWrite, StreamingWriterRoundsOnlyUnclockedSignals) {
     EXPECT_THROW(w.change(9'010'000, 0, true), std::logic_error);   // not on the 20 ns clock
 }
 
+// Real variables as IEEE 1364 §18.2 has them (what gtkwave reads): "$var real 64", values "r<%.16g> <id>"
+// (0.1 + 0.2 is 0.30000000000000004, whose 16 significant digits are 0.3). The reader keeps them out of the
+// 1-bit signals.
+TEST(MetricsVcdWrite, RealVariablesBesideWires) {
+    std::ostringstream out;
+    VcdWriter w(out, 1'000, {{"step_x", false, std::nullopt}, {"carriage_x_mm", false, std::nullopt,
+                                                                VcdVarKind::Real, 12.5}}, "test");
+    w.change(1'000, 0, true);
+    w.change_real(1'000, 1, 12.50625);
+    w.change_real(3'000, 1, 0.1 + 0.2);
+    w.change_real(4'000, 1, -1e-7);
+    w.finish(5'000);
+    const std::string text = out.str();
+    EXPECT_NE(text.find("$var wire 1 ! step_x $end\n$var real 64 \" carriage_x_mm $end\n"), std::string::npos);
+    EXPECT_NE(text.find("$dumpvars\n0!\nr12.5 \"\n$end\n#1000\n1!\nr12.50625 \"\n#3000\nr0.3 \"\n"
+                        "#4000\nr-1e-07 \"\n#5000\n"),
+              std::string::npos)
+        << text;
+    std::istringstream in(text);
+    const VcdContents read_back = read_vcd(in, "t.vcd");
+    EXPECT_EQ(read_back.signals.count("carriage_x_mm"), 0U);
+    EXPECT_EQ(read_back.other_variables.at("carriage_x_mm"), "64 bits wide (real)");
+    EXPECT_THROW(w.change(5'000, 1, true), std::logic_error);         // a real is not a wire
+    EXPECT_THROW(w.change_real(5'000, 0, 1.0), std::logic_error);     // nor a wire a real
+}
+
 TEST(MetricsVcdWrite, RefusesATimescaleThatWouldRoundAClockedEdge) {
     const std::vector<VcdSignal> pins{
         {"step_x", false, 16'000'000}, {"uart_tx", false, 50'000'000}, {"uart_rx", true, 24'000'000}};

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Every architecture's VCD has the same machine pins, declared first and in the same order (README, "VCD traces and
 `analyze`": step/dir and the DRV8825's nENBL per axis, the laser), then its own link pins: a trace of one
-architecture can be analysed with the options of another. spi-fpga's SPI wires toggle bit by bit, so they are
+architecture can be analysed with the options of another. The carriage position per axis (real-valued) comes
+after them in every architecture. spi-fpga's SPI wires toggle bit by bit, so they are
 traced only when asked for (`spi.trace_wires = true` or named in `trace.signals`): asked for here.
 
 Usage: machine_pins.py CNCSIM SCENARIO WORKDIR ARCHITECTURE...
@@ -13,6 +14,7 @@ import sys
 from vcd_tools import fail
 
 MACHINE_PINS = ["step_x", "dir_x", "step_y", "dir_y", "n_enbl_x", "n_enbl_y", "laser"]
+CARRIAGE = ["carriage_x_mm", "carriage_y_mm"]
 LINK_PINS = {"fpga-uart": {"uart_rx", "uart_tx"}, "atmega": {"uart_rx", "uart_tx"},
              "spi-fpga": {"sclk", "mosi", "miso", "ss"}}
 
@@ -47,6 +49,8 @@ def main():
         if names[:len(MACHINE_PINS)] != MACHINE_PINS:
             fail("%s: the VCD starts with %s, expected the machine pins %s" % (arch, names[:len(MACHINE_PINS)],
                                                                              MACHINE_PINS))
+        if names[-len(CARRIAGE):] != CARRIAGE:
+            fail("%s: the VCD ends with %s, expected the carriage positions %s" % (arch, names[-2:], CARRIAGE))
         missing = LINK_PINS[arch] - set(names)
         if missing:
             fail("%s: no link pin %s in %s" % (arch, sorted(missing), names))

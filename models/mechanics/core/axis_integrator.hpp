@@ -1,11 +1,16 @@
 // Event-driven integration of one axis (axis_ode.hpp) with Boost.Odeint.
 //
 // Stepper: Dormand-Prince 5(4) (runge_kutta_dopri5) under odeint's step-size control, with absolute and
-// relative error tolerances per step (IntegratorTolerances). The set-points are constant between events,
+// relative error tolerances per step (IntegratorTolerances). A winding whose DRV8825 bridge regulates is
+// integrated through an integrating factor (Lawson's method, axis_integrator.cpp): its current's 20 us decay
+// towards the set-point is exact, not stepped through, and a step that ends a current ramp ends where the
+// bridge regulates again. The set-points are constant between events,
 // so the caller advances the state to each event time (a microstep change, an EN change, a sample) and
 // then changes them; the integrator never steps past the time it is asked for. Once the axis has come to
 // rest (speeds, accelerations and current errors below the rest thresholds) it is fast-forwarded: later
-// calls move its clock without integrating, until the set-points change.
+// calls move its clock without integrating, until the set-points change. The derivative at the end of the
+// last step is kept between calls (Dormand-Prince's first-same-as-last stage) until the set-points or the
+// state change.
 #pragma once
 #include <cstdint>
 
@@ -42,6 +47,8 @@ private:
     AxisOde m_ode;
     IntegratorTolerances m_tol;
     AxisState m_x = AxisState::Zero();
+    AxisState m_dxdt = AxisState::Zero();  // at m_x, m_t_s when m_dxdt_valid
+    bool m_dxdt_valid = false;
     double m_t_s = 0.0;
     double m_dt_s;
     bool m_at_rest = false;

@@ -25,6 +25,21 @@ double dead_zone(double d, double half_width) {
     return 0.0;
 }
 
+struct BeltStiffness {
+    double k_n_per_m;
+    double dk_dx_n_per_m2;  // 0 where a span is held at its shortest
+};
+
+// k = c/L1 + c/L2 with dL1/dx = 1, dL2/dx = -1: dk/dx = c/L2^2 - c/L1^2.
+BeltStiffness belt_stiffness(const AxisLoadParams& p, double x_m) {
+    const double total = p.belt_total_span_mm * 1e-3;
+    const double free_l1 = p.belt_home_span_mm * 1e-3 + x_m;
+    const double l1 = std::clamp(free_l1, kMinSpanM, total - kMinSpanM);
+    const double l2 = total - l1;
+    const double c = p.belt_specific_stiffness_n;
+    return {c / l1 + c / l2, l1 == free_l1 ? c / (l2 * l2) - c / (l1 * l1) : 0.0};
+}
+
 }  // namespace
 
 void validate(const AxisLoadParams& p) {
@@ -51,11 +66,7 @@ void validate(const AxisLoadParams& p) {
 
 double travel_m_per_rad(const AxisLoadParams& p) { return p.travel_per_rev_mm * 1e-3 / (2.0 * kPi); }
 
-double belt_stiffness_n_per_m(const AxisLoadParams& p, double x_m) {
-    const double total = p.belt_total_span_mm * 1e-3;
-    const double l1 = std::clamp(p.belt_home_span_mm * 1e-3 + x_m, kMinSpanM, total - kMinSpanM);
-    return p.belt_specific_stiffness_n / l1 + p.belt_specific_stiffness_n / (total - l1);
-}
+double belt_stiffness_n_per_m(const AxisLoadParams& p, double x_m) { return belt_stiffness(p, x_m).k_n_per_m; }
 
 CouplingForces coupling_forces(const AxisLoadParams& p, double theta_rad, double omega_rad_s, double x_m,
                                double v_m_s) {
@@ -63,12 +74,10 @@ CouplingForces coupling_forces(const AxisLoadParams& p, double theta_rad, double
     const double stretch = r * theta_rad - x_m;
     const double stretch_rate = r * omega_rad_s - v_m_s;
     if (p.kind == DriveKind::Belt) {
-        const double k = belt_stiffness_n_per_m(p, x_m);
-        const double h = 1e-6;  // dk/dx by central difference: k is smooth away from the span clamps
-        const double dk_dx = (belt_stiffness_n_per_m(p, x_m + h) - belt_stiffness_n_per_m(p, x_m - h)) / (2 * h);
-        const double c = 2.0 * p.belt_damping_ratio * std::sqrt(k * p.carriage_mass_kg);
-        const double spring = k * stretch + c * stretch_rate;
-        return {spring - 0.5 * dk_dx * stretch * stretch, -spring * r};
+        const BeltStiffness k = belt_stiffness(p, x_m);
+        const double c = 2.0 * p.belt_damping_ratio * std::sqrt(k.k_n_per_m * p.carriage_mass_kg);
+        const double spring = k.k_n_per_m * stretch + c * stretch_rate;
+        return {spring - 0.5 * k.dk_dx_n_per_m2 * stretch * stretch, -spring * r};
     }
     if (p.kind == DriveKind::Leadscrew) {
         const double engaged = dead_zone(stretch, 0.5 * p.backlash_mm * 1e-3);

@@ -7,6 +7,8 @@
 //   m dv/dt = F_coupling + F_rail                          (axis_load.hpp)
 // With DriveKind::Free the carriage states stay 0. The set-points are constant between events.
 #pragma once
+#include <array>
+
 #include <Eigen/Core>
 
 #include "mechanics/core/axis_load.hpp"
@@ -37,6 +39,15 @@ public:
     void set_setpoints(const AxisSetpoints& sp) { m_sp = sp; }
     [[nodiscard]] const AxisSetpoints& setpoints() const { return m_sp; }
     [[nodiscard]] const AxisParams& params() const { return m_p; }
+    // Per winding (a, b), whether its bridge regulates the current (drv8825_current.hpp), and the earliest
+    // time at which one at +-VMOT regulates again, estimated from the currents' rates of change in dxdt.
+    struct Bridges {
+        std::array<bool, 2> regulate;
+        double time_to_regulation_s;  // infinity if no ramping current approaches its set-point
+    };
+    [[nodiscard]] Bridges bridges(const AxisState& x, const AxisState& dxdt) const;
+    // The rate at which a regulated winding's current error decays, 1/s.
+    [[nodiscard]] double regulation_rate_per_s() const;
     // Kinetic energy of rotor and carriage plus the energy in the coupling and the detent, J (the winding
     // inductances' energy is not included: the energy check runs with the windings off).
     [[nodiscard]] double mechanical_energy_j(const AxisState& x) const;

@@ -36,5 +36,14 @@ struct WindingSetpoints {
 // Averaged bridge voltage for one winding: R i_ref + e + L (i_ref - i) / tau, clamped to +-VMOT.
 [[nodiscard]] double bridge_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm,
                                       double inductance_h, const DriverElectrics& drv);
+// Whether that voltage is within +-VMOT: then L di/dt = -(R + L / tau)(i - i_ref), so the current error decays
+// as exp(-regulation_rate t) whatever the rotor does.
+[[nodiscard]] bool bridge_regulates(double i_ref_a, double i_a, double emf_v, double resistance_ohm,
+                                    double inductance_h, const DriverElectrics& drv);
+// For a bridge at +-VMOT whose current moves at di_dt towards its set-point: the time until it regulates again,
+// at the current error where the voltage it wants comes back within +-VMOT (infinity if it does not approach).
+[[nodiscard]] double time_to_regulation_s(double i_ref_a, double i_a, double emf_v, double resistance_ohm,
+                                          double inductance_h, const DriverElectrics& drv, double di_dt_a_s);
+[[nodiscard]] double regulation_rate_per_s(double resistance_ohm, double inductance_h, const DriverElectrics& drv);
 
 }  // namespace cnc::mech

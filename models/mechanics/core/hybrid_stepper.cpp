@@ -40,19 +40,24 @@ double rotor_electrical_rad(const HybridStepperParams& p, double theta_rad) {
     return p.rotor_teeth * theta_rad + kHomeElectricalRad;
 }
 
-double electromagnetic_torque_nm(const HybridStepperParams& p, double theta_rad, WindingCurrents i) {
+RotorAngle rotor_angle(const HybridStepperParams& p, double theta_rad) {
     const double psi = rotor_electrical_rad(p, theta_rad);
-    return p.torque_constant_nm_per_a() * (-i.a_a * std::sin(psi) + i.b_a * std::cos(psi));
+    return {std::sin(psi), std::cos(psi)};
 }
 
-WindingCurrents back_emf_v(const HybridStepperParams& p, double theta_rad, double omega_rad_s) {
-    const double psi = rotor_electrical_rad(p, theta_rad);
+double electromagnetic_torque_nm(const HybridStepperParams& p, RotorAngle a, WindingCurrents i) {
+    return p.torque_constant_nm_per_a() * (-i.a_a * a.sin_psi + i.b_a * a.cos_psi);
+}
+
+WindingCurrents back_emf_v(const HybridStepperParams& p, RotorAngle a, double omega_rad_s) {
     const double k = p.torque_constant_nm_per_a() * omega_rad_s;
-    return {-k * std::sin(psi), k * std::cos(psi)};
+    return {-k * a.sin_psi, k * a.cos_psi};
 }
 
-double detent_torque_nm(const HybridStepperParams& p, double theta_rad) {
-    return -p.detent_torque_nm * std::sin(4.0 * p.rotor_teeth * theta_rad);
+double detent_torque_nm(const HybridStepperParams& p, RotorAngle a) {
+    const double s = a.sin_psi;
+    const double c = a.cos_psi;
+    return p.detent_torque_nm * 4.0 * s * c * (c * c - s * s);  // sin 4psi = 2 sin 2psi cos 2psi
 }
 
 double detent_energy_j(const HybridStepperParams& p, double theta_rad) {

@@ -45,12 +45,20 @@ struct WindingCurrents {
 
 // Electrical angle of the rotor, rad (psi above).
 [[nodiscard]] double rotor_electrical_rad(const HybridStepperParams& p, double theta_rad);
+// sin and cos of psi: torque, back-EMF and detent all follow from them, so the equations of motion evaluate
+// one sincos per state.
+struct RotorAngle {
+    double sin_psi = 0.0;
+    double cos_psi = 1.0;
+};
+[[nodiscard]] RotorAngle rotor_angle(const HybridStepperParams& p, double theta_rad);
 // Electromagnetic torque of the two winding currents, N m.
-[[nodiscard]] double electromagnetic_torque_nm(const HybridStepperParams& p, double theta_rad, WindingCurrents i);
+[[nodiscard]] double electromagnetic_torque_nm(const HybridStepperParams& p, RotorAngle a, WindingCurrents i);
 // Back-EMF of the two windings at rotor speed omega, V.
-[[nodiscard]] WindingCurrents back_emf_v(const HybridStepperParams& p, double theta_rad, double omega_rad_s);
-// Detent torque and its potential energy (zero at the detent minima).
-[[nodiscard]] double detent_torque_nm(const HybridStepperParams& p, double theta_rad);
+[[nodiscard]] WindingCurrents back_emf_v(const HybridStepperParams& p, RotorAngle a, double omega_rad_s);
+// Detent torque, N m: -T_det sin(4 N_r theta) = T_det sin(4 psi) (4 N_r theta = 4 psi - pi).
+[[nodiscard]] double detent_torque_nm(const HybridStepperParams& p, RotorAngle a);
+// Its potential energy (zero at the detent minima).
 [[nodiscard]] double detent_energy_j(const HybridStepperParams& p, double theta_rad);
 
 }  // namespace cnc::mech

@@ -196,7 +196,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     for (const sc_core::sc_signal<bool>* sig : w.all()) rec.watch(*sig, sig->basename());
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
-        vcd = std::make_unique<VcdTrace>(s, traced_pins(w, avr_cfg.f_cpu_hz));
+        vcd = std::make_unique<VcdTrace>(s, traced_pins(w, avr_cfg.f_cpu_hz), machine.traced_positions());
     }
 
     const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s, link, transfers)));

@@ -131,7 +131,8 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     }
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
-        vcd = std::make_unique<VcdTrace>(s, traced_pins(w, s.spi_fpga.fpga.clk_hz, link.trace_wires));
+        vcd = std::make_unique<VcdTrace>(s, traced_pins(w, s.spi_fpga.fpga.clk_hz, link.trace_wires),
+                                         machine.traced_positions());
     }
 
     const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s.spi_fpga.planner)));

@@ -104,7 +104,9 @@ LaserResult laser_result(const EdgeLog& laser, TimePs t_job_start_ps, TimePs t_j
 
 std::optional<LaserResult> compute_laser(const RunInput& in, const EdgeIndex& idx) {
     if (!in.laser) return std::nullopt;
-    if (in.moves.empty()) return laser_result(*in.laser, in.t_job_start_ps, in.t_job_end_ps, std::nullopt, std::nullopt);
+    if (in.moves.empty()) {
+        return laser_result(*in.laser, in.t_job_start_ps, in.t_job_end_ps, std::nullopt, std::nullopt);
+    }
     std::vector<TimeInterval> rapid;
     for (std::size_t m = 0; m < in.moves.size(); ++m) {
         if (in.moves[m].rapid && idx.move_first_edge_ps[m]) {

@@ -95,11 +95,6 @@ RunInput synthetic_run() {
     }
     // A programmed move of two pieces takes the path of the whole line.
     in.moves[1].path = in.moves[2].path = geom::Segment::line(in.moves[1].from_mm, in.moves[2].to_mm);
-    for (AxisTrace& a : in.axes) {
-        std::stable_sort(a.step.edges.begin(), a.step.edges.end(),
-                         [](const Edge& x, const Edge& y) { return x.t_ps < y.t_ps; });
-    }
-    std::stable_sort(tool.begin(), tool.end(), [](const ToolSample& x, const ToolSample& y) { return x.t_ps < y.t_ps; });
     in.tool = std::move(tool);
     in.t_job_start_ps = 0;
     in.t_job_end_ps = t + 300 * kUs;

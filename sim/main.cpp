@@ -43,6 +43,7 @@ int cmd_run(const std::string& scenario_path, const std::vector<std::string>& se
     if (detail) s.detail = true;
     if (!vcd.empty()) s.vcd_path = vcd;
     if (!report.empty()) s.report_path = report;
+    s.keep_run_input = !plots.empty() || !plot_data.empty() || !samples.empty();
     // Every output can be written before anything is simulated; the report is opened now and filled at the end.
     if (!s.vcd_path.empty()) cnc::sim::check_output_path(s.vcd_path, vcd.empty() ? s.file + ": trace.vcd" : "--vcd");
     if (!plots.empty()) cnc::sim::check_output_dir(plots, "--plots");

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "common/edge_log.hpp"
 #include "common/units.hpp"
@@ -39,6 +40,22 @@ struct DriverTimingReport {
 [[nodiscard]] const char* rule_name(DriverRule rule);  // step_high, step_low, dir_setup, dir_hold, rate
 // Limit as a time: the rate limit is the shortest allowed interval between rising edges (4 us at 250 kHz).
 [[nodiscard]] double rule_limit_ns(DriverRule rule, const DriverLimits& limits);
+
+// The driver timing of one axis checked window by window, for a run whose edge logs are dropped as it goes: the
+// checker's state (levels, last rise, fall and DIR change) carries over, so the report equals one check of the
+// whole logs. Each add() gives the edges of both pins in one time window, later than the previous window's; both
+// pins must be cut at the same instant, so that a DIR change and a STEP rise at one time stay in one window and
+// keep their order (DIR first).
+class DriverTimingStream {
+public:
+    DriverTimingStream(const DriverLimits& limits, bool step_initial, bool dir_initial);
+
+    void add(const std::vector<Edge>& step_edges, const std::vector<Edge>& dir_edges);
+    [[nodiscard]] DriverTimingReport report() const;
+
+private:
+    mech::Drv8825TimingChecker m_checker;
+};
 
 // Runs the DRV8825 model's checker (mech::Drv8825TimingChecker) over the recorded edges, so a trace is judged
 // exactly as the simulated driver judged it. A DIR change at the very instant of a STEP rising edge is a

@@ -8,14 +8,9 @@ namespace cnc::metrics {
 
 namespace {
 
-struct Interval {
-    TimePs begin = 0;
-    TimePs end = 0;
-};
-
 // Laser-on stretches clipped to the job window.
-std::vector<Interval> on_intervals(const EdgeLog& laser, TimePs lo, TimePs hi) {
-    std::vector<Interval> out;
+std::vector<TimeInterval> on_intervals(const EdgeLog& laser, TimePs lo, TimePs hi) {
+    std::vector<TimeInterval> out;
     bool level = laser.initial;
     TimePs since = lo;
     const auto close = [&](TimePs until) {
@@ -34,8 +29,8 @@ std::vector<Interval> on_intervals(const EdgeLog& laser, TimePs lo, TimePs hi) {
 }
 
 // Sorted, disjoint inputs; the result is sorted and disjoint.
-std::vector<Interval> intersect(const std::vector<Interval>& a, const std::vector<Interval>& b) {
-    std::vector<Interval> out;
+std::vector<TimeInterval> intersect(const std::vector<TimeInterval>& a, const std::vector<TimeInterval>& b) {
+    std::vector<TimeInterval> out;
     std::size_t i = 0;
     std::size_t j = 0;
     while (i < a.size() && j < b.size()) {
@@ -47,7 +42,17 @@ std::vector<Interval> intersect(const std::vector<Interval>& a, const std::vecto
     return out;
 }
 
-void append_merged(std::vector<Interval>& out, Interval iv) {
+TimePs total(const std::vector<TimeInterval>& v) {
+    TimePs sum = 0;
+    for (const TimeInterval& iv : v) sum += iv.end - iv.begin;
+    return sum;
+}
+
+double ms(TimePs t) { return ps_to_s(t) * 1e3; }
+
+}  // namespace
+
+void append_merged(std::vector<TimeInterval>& out, TimeInterval iv) {
     if (iv.end <= iv.begin) return;
     if (!out.empty() && out.back().end >= iv.begin) {
         out.back().end = std::max(out.back().end, iv.end);
@@ -56,57 +61,38 @@ void append_merged(std::vector<Interval>& out, Interval iv) {
     }
 }
 
-TimePs total(const std::vector<Interval>& v) {
-    TimePs sum = 0;
-    for (const Interval& iv : v) sum += iv.end - iv.begin;
-    return sum;
-}
-
-std::vector<Interval> slow_intervals(const RunInput& in) {
-    constexpr TimePs kMin = std::numeric_limits<TimePs>::min();
-    constexpr TimePs kMax = std::numeric_limits<TimePs>::max();
-    const MoveTimeline timeline(in.moves);
-    const std::vector<ToolSample>& tool = in.tool;
-    std::vector<Interval> out;
-    append_merged(out, {kMin, tool.front().t_ps});
-    for (std::size_t j = 0; j + 1 < tool.size(); ++j) {
-        const TimePs dt = tool[j + 1].t_ps - tool[j].t_ps;
-        if (dt <= 0) continue;
-        const double dist_mm = geom::distance(tool[j].pos, tool[j + 1].pos);
+void SlowStretches::add(const ToolSample& sample, double feed_mm_per_min) {
+    if (!m_last) {
+        append_merged(m_slow, {std::numeric_limits<TimePs>::min(), sample.t_ps});
+    } else if (const TimePs dt = sample.t_ps - m_last->t_ps; dt > 0) {
+        const double dist_mm = geom::distance(m_last->pos, sample.pos);
         const double speed_mm_per_s = dist_mm / ps_to_s(dt);
-        const double feed = in.moves[timeline.active_at(tool[j].t_ps).value_or(0)].feed_mm_per_min;
-        const bool slow = dist_mm == 0.0 || speed_mm_per_s < kDwellSpeedFraction * feed / 60.0;
-        if (slow) append_merged(out, {tool[j].t_ps, tool[j + 1].t_ps});
+        const bool slow = dist_mm == 0.0 || speed_mm_per_s < kDwellSpeedFraction * m_last_feed_mm_per_min / 60.0;
+        if (slow) append_merged(m_slow, {m_last->t_ps, sample.t_ps});
     }
-    append_merged(out, {tool.back().t_ps, kMax});
-    return out;
+    m_last = sample;
+    m_last_feed_mm_per_min = feed_mm_per_min;
 }
 
-double ms(TimePs t) { return ps_to_s(t) * 1e3; }
+std::vector<TimeInterval> SlowStretches::finish() {
+    if (m_last) append_merged(m_slow, {m_last->t_ps, std::numeric_limits<TimePs>::max()});
+    return std::move(m_slow);
+}
 
-}  // namespace
-
-std::optional<LaserResult> compute_laser(const RunInput& in, const EdgeIndex& idx) {
-    if (!in.laser) return std::nullopt;
+LaserResult laser_result(const EdgeLog& laser, TimePs t_job_start_ps, TimePs t_job_end_ps,
+                         const std::optional<std::vector<TimeInterval>>& rapid,
+                         const std::optional<std::vector<TimeInterval>>& slow) {
     LaserResult out;
-    const std::vector<Interval> on = on_intervals(*in.laser, in.t_job_start_ps, in.t_job_end_ps);
+    const std::vector<TimeInterval> on = on_intervals(laser, t_job_start_ps, t_job_end_ps);
     out.on_ms = ms(total(on));
-    if (in.moves.empty()) return out;
-
-    std::vector<Interval> rapid;
-    for (std::size_t m = 0; m < in.moves.size(); ++m) {
-        if (in.moves[m].rapid && idx.move_first_edge_ps[m]) {
-            append_merged(rapid, {*idx.move_first_edge_ps[m], *idx.move_last_edge_ps[m]});
-        }
-    }
-    out.on_in_rapid_ms = ms(total(intersect(on, rapid)));
-
-    if (in.tool.empty()) return out;
-    std::vector<Interval> dwell;
-    for (const Interval& iv : intersect(on, slow_intervals(in))) append_merged(dwell, iv);
+    if (!rapid) return out;
+    out.on_in_rapid_ms = ms(total(intersect(on, *rapid)));
+    if (!slow) return out;
+    std::vector<TimeInterval> dwell;
+    for (const TimeInterval& iv : intersect(on, *slow)) append_merged(dwell, iv);
     out.dwell_ms = ms(total(dwell));
     out.dwell_intervals = dwell.size();
-    const auto longest = std::max_element(dwell.begin(), dwell.end(), [](const Interval& a, const Interval& b) {
+    const auto longest = std::max_element(dwell.begin(), dwell.end(), [](const TimeInterval& a, const TimeInterval& b) {
         return a.end - a.begin < b.end - b.begin;
     });
     if (longest != dwell.end()) {
@@ -114,6 +100,29 @@ std::optional<LaserResult> compute_laser(const RunInput& in, const EdgeIndex& id
         out.dwell_longest_at_s = ps_to_s(longest->begin);
     }
     return out;
+}
+
+std::optional<LaserResult> compute_laser(const RunInput& in, const EdgeIndex& idx) {
+    if (!in.laser) return std::nullopt;
+    if (in.moves.empty()) {
+        return laser_result(*in.laser, in.t_job_start_ps, in.t_job_end_ps, std::nullopt, std::nullopt);
+    }
+    std::vector<TimeInterval> rapid;
+    for (std::size_t m = 0; m < in.moves.size(); ++m) {
+        if (in.moves[m].rapid && idx.move_first_edge_ps[m]) {
+            append_merged(rapid, {*idx.move_first_edge_ps[m], *idx.move_last_edge_ps[m]});
+        }
+    }
+    std::optional<std::vector<TimeInterval>> slow;
+    if (!in.tool.empty()) {
+        const MoveTimeline timeline(in.moves);
+        SlowStretches stretches;
+        for (const ToolSample& s : in.tool) {
+            stretches.add(s, in.moves[timeline.active_at(s.t_ps).value_or(0)].feed_mm_per_min);
+        }
+        slow = stretches.finish();
+    }
+    return laser_result(*in.laser, in.t_job_start_ps, in.t_job_end_ps, rapid, slow);
 }
 
 }  // namespace cnc::metrics

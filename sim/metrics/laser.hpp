@@ -3,6 +3,7 @@
 #pragma once
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "metrics/edge_index.hpp"
 #include "metrics/run_input.hpp"
@@ -20,6 +21,36 @@ struct LaserResult {
     std::optional<double> dwell_longest_at_s;  // start of the longest stretch
     std::optional<double> on_in_rapid_ms;      // needs moves
 };
+
+struct TimeInterval {
+    TimePs begin = 0;
+    TimePs end = 0;
+};
+
+// Appends to sorted, disjoint intervals, merging an interval that touches or overlaps the last one.
+void append_merged(std::vector<TimeInterval>& out, TimeInterval iv);
+
+// The stretches where the tool is slow (see compute_laser), built sample by sample in time order, so that a run can
+// drop its samples as it goes.
+class SlowStretches {
+public:
+    // `feed_mm_per_min`: the F of the move active at the sample, which the stretch from it to the next one is
+    // judged by.
+    void add(const ToolSample& sample, double feed_mm_per_min);
+    // Sorted, disjoint; before the first and after the last sample the tool is still. Empty without samples.
+    [[nodiscard]] std::vector<TimeInterval> finish();
+
+private:
+    std::vector<TimeInterval> m_slow;
+    std::optional<ToolSample> m_last;
+    double m_last_feed_mm_per_min = 0.0;
+};
+
+// The laser figures from the laser pin, the rapid moves' edge windows (sorted, disjoint; none without moves) and
+// the slow stretches (none without tool samples).
+[[nodiscard]] LaserResult laser_result(const EdgeLog& laser, TimePs t_job_start_ps, TimePs t_job_end_ps,
+                                       const std::optional<std::vector<TimeInterval>>& rapid,
+                                       const std::optional<std::vector<TimeInterval>>& slow);
 
 // Tool speed is piecewise constant between consecutive tool samples (distance / time); a stretch is
 // slow when that speed is zero or below kDwellSpeedFraction of the F of the move active at its start.

@@ -23,14 +23,10 @@ AxisMetrics axis_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t a
     am.falling_edges = edges.falling;
     am.dir_changes = edges.dir_changes.size();
     for (const int s : edges.rising_sign) am.net_steps += s;
-    if (trace.steps_per_mm > 0.0) {
-        am.travel_mm = static_cast<double>(am.rising_edges) / trace.steps_per_mm;
-        am.net_mm = static_cast<double>(am.net_steps) / trace.steps_per_mm;
-    }
     am.unattributed_edges = idx.unattributed[a];
     am.runs = axis_runs(in, idx, a);
-    am.pulse = summarise_runs(am.runs);
     am.driver = check_driver_timing(trace.step, trace.dir, in.limits);
+    finish_axis(am, trace.steps_per_mm);
     return am;
 }
 
@@ -90,6 +86,24 @@ MoveMetrics programmed_metrics(const RunInput& in, const std::vector<MoveMetrics
 
 }  // namespace
 
+void finish_axis(AxisMetrics& am, double steps_per_mm) {
+    if (steps_per_mm > 0.0) {
+        am.travel_mm = static_cast<double>(am.rising_edges) / steps_per_mm;
+        am.net_mm = static_cast<double>(am.net_steps) / steps_per_mm;
+    }
+    am.pulse = summarise_runs(am.runs);
+}
+
+void add_axis_totals(PulseTotals& t, const AxisMetrics& am) {
+    keep_max(t.jitter_std_max_ns, am.pulse.jitter_std_max_ns);
+    keep_max(t.jitter_pp_max_ns, am.pulse.jitter_pp_max_ns);
+    keep_max(t.tie_rms_max_ns, am.pulse.tie_rms_max_ns);
+    keep_max(t.tie_max_ns, am.pulse.tie_max_ns);
+    keep_max(t.tie_max_period_frac, am.pulse.tie_max_period_frac);
+    keep_worst_signed(t.rate_error_worst_pct, am.pulse.rate_error_worst_pct);
+    t.driver_violations += am.driver.total_violations();
+}
+
 RunMetrics compute_metrics(const RunInput& in) {
     const EdgeIndex idx = index_edges(in);
     RunMetrics out;
@@ -106,14 +120,7 @@ RunMetrics compute_metrics(const RunInput& in) {
         AxisMetrics am = axis_metrics(in, idx, a);
         am.sync_max_abs_ns = sync.axis_max_abs_ns[a];
         if (a < sync.axis_unmatched_edges.size()) am.sync_unmatched_edges = sync.axis_unmatched_edges[a];
-        PulseTotals& t = out.pulse;
-        keep_max(t.jitter_std_max_ns, am.pulse.jitter_std_max_ns);
-        keep_max(t.jitter_pp_max_ns, am.pulse.jitter_pp_max_ns);
-        keep_max(t.tie_rms_max_ns, am.pulse.tie_rms_max_ns);
-        keep_max(t.tie_max_ns, am.pulse.tie_max_ns);
-        keep_max(t.tie_max_period_frac, am.pulse.tie_max_period_frac);
-        keep_worst_signed(t.rate_error_worst_pct, am.pulse.rate_error_worst_pct);
-        t.driver_violations += am.driver.total_violations();
+        add_axis_totals(out.pulse, am);
         out.axes.push_back(std::move(am));
     }
     out.pulse.sync_max_abs_ns = sync.max_abs_ns;

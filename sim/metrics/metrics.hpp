@@ -75,6 +75,11 @@ struct RunMetrics {
     std::optional<LaserResult> laser;
 };
 
+// Shared by compute_metrics and MetricsStream: an axis's distances and pulse summary from its counts and runs, and
+// the run's worst figures over the axes.
+void finish_axis(AxisMetrics& am, double steps_per_mm);
+void add_axis_totals(PulseTotals& t, const AxisMetrics& am);
+
 // Throws std::invalid_argument on inconsistent input (edge logs, moves or tool samples out of time order).
 [[nodiscard]] RunMetrics compute_metrics(const RunInput& in);
 // `detail` false: without the pulse runs and the dead-time gaps (cncsim run without --detail); analyze writes all.

@@ -79,54 +79,71 @@ std::optional<double> cruise_feed_mm_per_min(const RunInput& in, const Programme
 
 }  // namespace
 
-TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx, const std::vector<ProgrammedMove>& programmed) {
-    TimingResult out;
-    out.moves.resize(programmed.size());
+void TimingFold::add(std::size_t move, const MoveTiming& mt, std::optional<TimePs> t_first_edge_ps,
+                     std::optional<TimePs> t_last_edge_ps) {
+    if (mt.motion_time_s) m_out.motion_time_s = m_out.motion_time_s.value_or(0.0) + *mt.motion_time_s;
+    m_out.below_feed_moves += mt.below_feed ? 1 : 0;
+    if (mt.feed_error_pct) {
+        ++m_out.feed_moves;
+        m_feed_sum += *mt.feed_error_pct;
+        m_feed_abs_sum += std::fabs(*mt.feed_error_pct);
+        keep_max(m_out.feed_error_max_abs_pct, std::fabs(*mt.feed_error_pct));
+    }
+    if (!t_first_edge_ps) return;
+    if (m_previous) {
+        const TimePs dead = *t_first_edge_ps - m_previous_last_edge_ps;
+        m_out.gaps.push_back({*m_previous, move, dead});
+        m_dead_total_ps += dead;
+        keep_max(m_out.dead_max_ms, ps_to_s(dead) * 1e3);
+    }
+    m_previous = move;
+    m_previous_last_edge_ps = *t_last_edge_ps;
+}
 
+TimingResult TimingFold::finish(TimePs t_job_start_ps, TimePs t_job_end_ps, std::optional<TimePs> first_edge_ps,
+                                std::optional<TimePs> last_edge_ps) {
+    TimingResult out = std::move(m_out);
+    if (out.feed_moves > 0) {
+        out.feed_error_mean_pct = m_feed_sum / static_cast<double>(out.feed_moves);
+        out.feed_error_mean_abs_pct = m_feed_abs_sum / static_cast<double>(out.feed_moves);
+    }
+    if (!out.gaps.empty()) {
+        out.dead_total_ms = ps_to_s(m_dead_total_ps) * 1e3;
+        out.dead_mean_ms = *out.dead_total_ms / static_cast<double>(out.gaps.size());
+    }
+    // A controller that goes on stepping after its host stopped (an aborted run: its metrics are partial) keeps
+    // the job open to its last edge, so that motion <= job and the tail >= 0 on every run.
+    const TimePs job_end_ps = last_edge_ps ? std::max(t_job_end_ps, *last_edge_ps) : t_job_end_ps;
+    out.job_time_s = ps_to_s(job_end_ps - t_job_start_ps);
+    if (first_edge_ps) {
+        out.lead_in_ms = ps_to_s(*first_edge_ps - t_job_start_ps) * 1e3;
+        out.tail_ms = ps_to_s(job_end_ps - *last_edge_ps) * 1e3;
+    }
+    return out;
+}
+
+TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx, const std::vector<ProgrammedMove>& programmed) {
+    std::vector<MoveTiming> moves(programmed.size());
     StepPosition position(in, idx);
-    double feed_sum = 0.0;
-    double feed_abs_sum = 0.0;
+    TimingFold fold;
     for (std::size_t m = 0; m < programmed.size(); ++m) {
         const ProgrammedMove& pm = programmed[m];
         const MoveSpec& first = in.moves[pm.first_piece];
-        MoveTiming& mt = out.moves[m];
+        MoveTiming& mt = moves[m];
         mt.motion_time_s = motion_time_s(in, idx, programmed, m);
-        if (!mt.motion_time_s) continue;
-        out.motion_time_s = out.motion_time_s.value_or(0.0) + *mt.motion_time_s;
-        if (first.rapid || first.feed_mm_per_min <= 0.0 || *mt.motion_time_s <= 0.0) continue;
-        if (in.commanded) {
-            mt.achieved_feed_mm_per_min = cruise_feed_mm_per_min(in, pm, position, mt.below_feed);
-            out.below_feed_moves += mt.below_feed ? 1 : 0;
-        } else {
-            mt.achieved_feed_mm_per_min = first.path.length_mm() / *mt.motion_time_s * kSecondsPerMinute;
+        const bool cutting = mt.motion_time_s && !first.rapid && first.feed_mm_per_min > 0.0 && *mt.motion_time_s > 0.0;
+        if (cutting) {
+            if (in.commanded) {
+                mt.achieved_feed_mm_per_min = cruise_feed_mm_per_min(in, pm, position, mt.below_feed);
+            } else {
+                mt.achieved_feed_mm_per_min = first.path.length_mm() / *mt.motion_time_s * kSecondsPerMinute;
+            }
+            if (mt.achieved_feed_mm_per_min) {
+                mt.feed_error_pct =
+                    (*mt.achieved_feed_mm_per_min - first.feed_mm_per_min) / first.feed_mm_per_min * 100.0;
+            }
         }
-        if (!mt.achieved_feed_mm_per_min) continue;
-        mt.feed_error_pct = (*mt.achieved_feed_mm_per_min - first.feed_mm_per_min) / first.feed_mm_per_min * 100.0;
-        ++out.feed_moves;
-        feed_sum += *mt.feed_error_pct;
-        feed_abs_sum += std::fabs(*mt.feed_error_pct);
-        keep_max(out.feed_error_max_abs_pct, std::fabs(*mt.feed_error_pct));
-    }
-    if (out.feed_moves > 0) {
-        out.feed_error_mean_pct = feed_sum / static_cast<double>(out.feed_moves);
-        out.feed_error_mean_abs_pct = feed_abs_sum / static_cast<double>(out.feed_moves);
-    }
-
-    std::optional<std::size_t> previous;
-    TimePs dead_total_ps = 0;
-    for (std::size_t m = 0; m < programmed.size(); ++m) {
-        if (!programmed[m].t_first_edge_ps) continue;
-        if (previous) {
-            const TimePs dead = *programmed[m].t_first_edge_ps - *programmed[*previous].t_last_edge_ps;
-            out.gaps.push_back({*previous, m, dead});
-            dead_total_ps += dead;
-            keep_max(out.dead_max_ms, ps_to_s(dead) * 1e3);
-        }
-        previous = m;
-    }
-    if (!out.gaps.empty()) {
-        out.dead_total_ms = ps_to_s(dead_total_ps) * 1e3;
-        out.dead_mean_ms = *out.dead_total_ms / static_cast<double>(out.gaps.size());
+        fold.add(m, mt, pm.t_first_edge_ps, pm.t_last_edge_ps);
     }
 
     std::optional<TimePs> first_edge;
@@ -136,14 +153,8 @@ TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx, const std:
         first_edge = first_edge ? std::min(*first_edge, a.rising.front()) : a.rising.front();
         last_edge = last_edge ? std::max(*last_edge, a.rising.back()) : a.rising.back();
     }
-    // A controller that goes on stepping after its host stopped (an aborted run: its metrics are partial) keeps
-    // the job open to its last edge, so that motion <= job and the tail >= 0 on every run.
-    const TimePs job_end_ps = last_edge ? std::max(in.t_job_end_ps, *last_edge) : in.t_job_end_ps;
-    out.job_time_s = ps_to_s(job_end_ps - in.t_job_start_ps);
-    if (first_edge) {
-        out.lead_in_ms = ps_to_s(*first_edge - in.t_job_start_ps) * 1e3;
-        out.tail_ms = ps_to_s(job_end_ps - *last_edge) * 1e3;
-    }
+    TimingResult out = fold.finish(in.t_job_start_ps, in.t_job_end_ps, first_edge, last_edge);
+    out.moves = std::move(moves);
     return out;
 }
 

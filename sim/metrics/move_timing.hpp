@@ -46,6 +46,27 @@ struct TimingResult {
     std::optional<double> tail_ms;     // last rising STEP edge to the job end
 };
 
+// The job figures folded over the programmed moves in order: feed and motion totals, dead-time gaps, then lead-in,
+// tail and job time from the first and last rising edge of the run. compute_timing folds all moves at once; the
+// streaming metrics fold them as they close and drop them.
+class TimingFold {
+public:
+    // Programmed move `move` (index into the run's programmed moves) with its timing and first and last edge.
+    void add(std::size_t move, const MoveTiming& mt, std::optional<TimePs> t_first_edge_ps,
+             std::optional<TimePs> t_last_edge_ps);
+    // `first_edge_ps`, `last_edge_ps`: the run's first and last rising edge on any axis (none: no edges).
+    [[nodiscard]] TimingResult finish(TimePs t_job_start_ps, TimePs t_job_end_ps, std::optional<TimePs> first_edge_ps,
+                                      std::optional<TimePs> last_edge_ps);
+
+private:
+    TimingResult m_out;
+    double m_feed_sum = 0.0;
+    double m_feed_abs_sum = 0.0;
+    std::optional<std::size_t> m_previous;  // the last move with edges, and its last edge
+    TimePs m_previous_last_edge_ps = 0;
+    TimePs m_dead_total_ps = 0;
+};
+
 [[nodiscard]] TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx,
                                           const std::vector<ProgrammedMove>& programmed);
 

@@ -21,6 +21,9 @@ public:
     // Hands the log over after the simulation (its copy here is left empty): a long job's STEP logs are its
     // largest data, and a copy would double them.
     [[nodiscard]] EdgeLog take(const std::string& pin_name);
+    // Hands over the edges before t_ps during the simulation (the level they leave becomes the kept log's initial
+    // one), so that a long run's logs stay as short as the metrics need them.
+    [[nodiscard]] EdgeLog take_before(const std::string& pin_name, TimePs t_ps);
 
 private:
     struct Probe {

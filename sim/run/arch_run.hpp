@@ -2,6 +2,7 @@
 // own report section (link, host, controller details) with its warnings.
 #pragma once
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/warning.hpp"
+#include "metrics/metrics.hpp"
 #include "metrics/run_input.hpp"
 
 namespace cnc::sim {
@@ -27,7 +29,8 @@ struct TimeSeries {
 };
 
 struct ArchRun {
-    metrics::RunInput input;
+    metrics::RunInput input;  // empty logs and samples when the metrics streamed (`metrics` set)
+    std::optional<metrics::RunMetrics> metrics;  // computed by the system itself; else run.cpp computes them from input
     std::map<std::string, EdgeLog> lines;               // other recorded pins (busy, UART lines), by name
     nlohmann::json details = nlohmann::json::object();  // architecture section of the JSON report
     std::string details_text;                           // the same, for the summary

@@ -66,7 +66,7 @@ RunOutcome run_scenario(const Scenario& s) {
         }
     }
     out.arch.warnings.insert(out.arch.warnings.begin(), job.warnings.begin(), job.warnings.end());
-    out.metrics = metrics::compute_metrics(out.arch.input);
+    out.metrics = out.arch.metrics ? std::move(*out.arch.metrics) : metrics::compute_metrics(out.arch.input);
     const ArchRun& arch = out.arch;
     const metrics::RunMetrics& m = out.metrics;
 

@@ -37,7 +37,8 @@ RunBudget run_budget(const Scenario& s, const JobEstimate& estimate) {
     return b;
 }
 
-SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& finished, TimePs check_ps) {
+SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& finished, TimePs check_ps,
+                       const std::function<void(TimePs)>& after_slice) {
     Progress progress(std::cerr, budget.progress, budget.estimate.expected_s, budget.label);
     const auto start = std::chrono::steady_clock::now();
     // A model asked every check_ps never starves (the atmega's timers run on): each slice runs to its end, as
@@ -66,6 +67,7 @@ SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& fin
         }
         const double slice_start_s = seconds_since(start);
         sc_core::sc_start(ps_time(until_ps - end.t_ps), policy);
+        if (after_slice) after_slice(now_ps());
         const double wall_s = seconds_since(start);
         progress.update(ps_to_s(now_ps()), wall_s);
         if (check_ps == 0) {

@@ -58,6 +58,9 @@ struct Scenario {
     std::string report_path;    // empty: no JSON file
     bool detail = false;        // the report also holds the logs that grow with steps, periods and packets
     ProgressStyle progress = ProgressStyle::Off;  // set by the CLI from stderr, not a scenario key
+    // Set by the CLI for --plots, --plot-data and --samples, which read every edge and tool sample after the run:
+    // the logs are then kept whole instead of being dropped as the metrics stream (docs/streaming.md).
+    bool keep_run_input = false;
 };
 
 // Reads and validates; throws BadInput naming the file, line and key.

@@ -11,31 +11,6 @@ namespace cnc::sim {
 
 namespace {
 
-// First and last rising STEP edge of any axis inside [t0, t1]; last is -1 when there is none. Looked up in the logs
-// themselves: a merged copy of every rise would be as large as the logs.
-std::pair<TimePs, TimePs> step_span(const metrics::RunInput& run, TimePs t0, TimePs t1) {
-    std::pair<TimePs, TimePs> span{std::numeric_limits<TimePs>::max(), -1};
-    for (const metrics::AxisTrace& axis : run.axes) {
-        const std::vector<Edge>& edges = axis.step.edges;
-        const auto rises = [&](std::size_t k) {
-            return edges[k].level && !(k > 0 ? edges[k - 1].level : axis.step.initial);
-        };
-        std::size_t b = static_cast<std::size_t>(
-            std::lower_bound(edges.begin(), edges.end(), t0, [](const Edge& e, TimePs t) { return e.t_ps < t; }) -
-            edges.begin());
-        std::size_t e = static_cast<std::size_t>(
-            std::upper_bound(edges.begin() + static_cast<std::ptrdiff_t>(b), edges.end(), t1,
-                             [](TimePs t, const Edge& edge) { return t < edge.t_ps; }) -
-            edges.begin());
-        while (b < e && !rises(b)) ++b;
-        while (e > b && !rises(e - 1)) --e;
-        if (b == e) continue;
-        span.first = std::min(span.first, edges[b].t_ps);
-        span.second = std::max(span.second, edges[e - 1].t_ps);
-    }
-    return span;
-}
-
 double mean_ms(const std::vector<GapBreakdown>& gaps, TimePs GapBreakdown::*part) {
     if (gaps.empty()) return 0.0;
     double sum = 0.0;
@@ -62,12 +37,13 @@ constexpr Part kParts[] = {{"step_tail", &GapBreakdown::step_tail_ps},     {"ack
 
 }  // namespace
 
-DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::vector<fpga::PacketRecord>& records,
+DeadTimeBreakdown dead_time_breakdown(const std::vector<metrics::MoveMetrics>& pieces, TimePs t_job_start_ps,
+                                      TimePs t_job_end_ps, const std::vector<fpga::PacketRecord>& records,
                                       const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102) {
     DeadTimeBreakdown d;
     const auto& tx = cp2102.tx_log();
     const auto& rx = cp2102.rx_log();
-    const std::size_t moves = run.moves.size();
+    const std::size_t moves = pieces.size();
     for (std::size_t i = 0; i + 1 < moves && i + 1 < sent.size() && i + 1 < records.size(); ++i) {
         const fpga::PacketRecord& done = records[i];
         const std::size_t next_first = host::kInitPacketBytes + (i + 1) * host::kMotionPacketBytes;
@@ -78,9 +54,9 @@ DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::v
             return b.t_start_bit_ps < done.t_ack_start_ps;
         });
         if (ack == rx.end()) continue;
-        const auto [first_a, last_a] = step_span(run, run.moves[i].t_begin_ps, run.moves[i].t_end_ps);
-        const auto [first_b, last_b] = step_span(run, run.moves[i + 1].t_begin_ps, run.moves[i + 1].t_end_ps);
-        if (last_a < 0 || last_b < 0) continue;
+        if (!pieces[i].t_last_edge_ps || !pieces[i + 1].t_first_edge_ps) continue;
+        const TimePs last_a = *pieces[i].t_last_edge_ps;
+        const TimePs first_b = *pieces[i + 1].t_first_edge_ps;
         GapBreakdown g;
         g.after_move = static_cast<int>(i) + 1;
         g.step_tail_ps = done.t_busy_fall_ps - last_a;
@@ -94,7 +70,7 @@ DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::v
         g.total_ps = first_b - last_a;
         d.gaps.push_back(g);
     }
-    const TimePs job = run.t_job_end_ps - run.t_job_start_ps;
+    const TimePs job = t_job_end_ps - t_job_start_ps;
     if (job > 0) {
         TimePs busy_to = 0;
         TimePs busy_from = 0;

@@ -8,7 +8,7 @@
 
 #include "fpga/core/fpga_records.hpp"
 #include "host/sender.hpp"
-#include "metrics/run_input.hpp"
+#include "metrics/metrics.hpp"
 #include "run/arch_run.hpp"
 #include "uart/cp2102.hpp"
 
@@ -33,7 +33,10 @@ struct DeadTimeBreakdown {
     double utilisation_from_fpga_pct = 0.0;
 };
 
-DeadTimeBreakdown dead_time_breakdown(const metrics::RunInput& run, const std::vector<fpga::PacketRecord>& records,
+// `pieces`: the run's executed pieces as measured (metrics::RunMetrics::pieces, one per packet), whose first and
+// last STEP rises bound the gaps.
+DeadTimeBreakdown dead_time_breakdown(const std::vector<metrics::MoveMetrics>& pieces, TimePs t_job_start_ps,
+                                      TimePs t_job_end_ps, const std::vector<fpga::PacketRecord>& records,
                                       const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102);
 // `detail`: with every gap's breakdown (per_gap); without, the mean and the max of each part.
 nlohmann::json to_json(const DeadTimeBreakdown& d, bool detail);

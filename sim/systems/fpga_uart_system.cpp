@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -13,6 +14,7 @@
 #include "host/sender.hpp"
 #include "probes/edge_recorder.hpp"
 #include "run/moves.hpp"
+#include "run/metrics_feed.hpp"
 #include "run/simulate.hpp"
 #include "systems/dead_time.hpp"
 #include "systems/link_checks.hpp"
@@ -24,6 +26,31 @@
 namespace cnc::sim {
 
 namespace {
+
+// The executed pieces, one per packet step_gen accepted (a packet ignored because busy carries none), in order:
+// busy rises one clock after pkt_valid (SETUP) and falls at DONE.
+class ExecutedPieces {
+public:
+    // Hands `f` each piece not handed yet whose packet's busy fell before until_ps (none: every accepted packet's,
+    // once the run has ended).
+    template <typename F>
+    void time_ended(const std::vector<fpga::PacketRecord>& records, const fpga::FpgaConfig& fpga,
+                    std::optional<TimePs> until_ps, std::vector<metrics::MoveSpec>& moves, F f) {
+        for (; m_record < records.size() && m_executed < moves.size(); ++m_record) {
+            const fpga::PacketRecord& r = records[m_record];
+            if (!r.accepted) continue;
+            if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
+            metrics::MoveSpec& m = moves[m_executed++];
+            m.t_begin_ps = r.t_pkt_valid_ps + clock_period_ps(fpga);
+            m.t_end_ps = r.t_busy_fall_ps;
+            f(m);
+        }
+    }
+
+private:
+    std::size_t m_record = 0;
+    std::size_t m_executed = 0;
+};
 
 // send_steps.py hard-codes NUMERATOR_X = NUMERATOR_Y = 18_750_000 (seed 000 §6).
 constexpr std::uint32_t kSeedScriptNumerator = 18'750'000;
@@ -236,34 +263,51 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
 
     const host::Program moves_run = job.program ? *job.program : packet_moves(segments, packets, s.job_path);
     const RunBudget budget = run_budget(s, estimate_job(moves_run, pace(s, segments.size())));
-    const SimulationEnd end = simulate(budget);
+    const host::Program* program = job.program ? &*job.program : nullptr;
+    std::vector<metrics::MoveSpec> moves = commanded_moves(program, segments, s.machine, s.interpreter.start_mm);
+    // The metrics stream (their inputs dropped as they are measured) unless the whole logs are asked for, or the
+    // dynamic mechanics' report reads every tool sample at the end.
+    std::optional<MetricsFeed> feed;
+    if (!s.keep_run_input && machine.dynamic_x() == nullptr) {
+        const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm()},
+                                         {"y", "step_y", "dir_y", s.machine.y.steps_per_mm()}};
+        feed.emplace(rec, axes, "laser", machine.carriage().samples());
+    }
+    ExecutedPieces executed;
+    const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
+        if (!feed) return;
+        executed.time_ended(fpga.packets(), s.fpga, now_ps, moves,
+                            [&](const metrics::MoveSpec& m) { feed->add_piece(m); });
+        feed->fold(now_ps);
+    });
     if (vcd) vcd->close();
 
     ArchRun run;
     record_budget(budget, run);
     const std::vector<fpga::PacketRecord> records = fpga.packets();
-    const host::Program* program = job.program ? &*job.program : nullptr;
-    std::vector<metrics::MoveSpec> moves = commanded_moves(program, segments, s.machine, s.interpreter.start_mm);
-    std::size_t executed = 0;
-    for (const fpga::PacketRecord& r : records) {
-        if (!r.accepted || executed >= moves.size()) continue;
-        moves[executed].t_begin_ps = r.t_pkt_valid_ps + clock_period_ps(s.fpga);  // SETUP: busy rises
-        moves[executed].t_end_ps = r.t_busy_fall_ps;
-        ++executed;
-    }
-    moves.resize(executed);
-
     metrics::RunInput& in = run.input;
-    in.axes.push_back({"x", rec.take("step_x"), rec.take("dir_x"), s.machine.x.steps_per_mm(), true});
-    in.axes.push_back({"y", rec.take("step_y"), rec.take("dir_y"), s.machine.y.steps_per_mm(), true});
-    in.moves = std::move(moves);
-    in.tool = machine.carriage().samples();
-    in.laser = rec.take("laser");
-    for (const char* pin : {"busy", "uart_rx", "uart_tx"}) run.lines[pin] = rec.take(pin);
+    executed.time_ended(records, s.fpga, std::nullopt, moves, [&](const metrics::MoveSpec& m) {
+        if (feed) {
+            feed->add_piece(m);
+        } else {
+            in.moves.push_back(m);
+        }
+    });
     in.t_job_start_ps = 0;
     in.t_job_end_ps = sender.finished() ? sender.t_end_ps() : static_cast<TimePs>(sc_core::sc_time_stamp().value());
+    if (feed) {
+        run.metrics = feed->finish(in.t_job_end_ps);
+    } else {
+        in.axes.push_back({"x", rec.take("step_x"), rec.take("dir_x"), s.machine.x.steps_per_mm(), true});
+        in.axes.push_back({"y", rec.take("step_y"), rec.take("dir_y"), s.machine.y.steps_per_mm(), true});
+        in.tool = machine.carriage().samples();
+        in.laser = rec.take("laser");
+        run.metrics = metrics::compute_metrics(in);
+    }
+    for (const char* pin : {"busy", "uart_rx", "uart_tx"}) run.lines[pin] = rec.take(pin);
 
-    const DeadTimeBreakdown dead = dead_time_breakdown(in, records, sender.packets(), cp2102);
+    const DeadTimeBreakdown dead =
+        dead_time_breakdown(run.metrics->pieces, in.t_job_start_ps, in.t_job_end_ps, records, sender.packets(), cp2102);
     run.gap_causes = gap_causes(dead);
 
     fpga_warnings(fpga, records, segments, s, run.warnings);

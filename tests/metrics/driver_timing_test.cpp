@@ -102,5 +102,44 @@ TEST(MetricsDriverTiming, RepeatedLevelsAreNotEdges) {
     EXPECT_EQ(*r[DriverRule::StepHigh].min_ps, 2 * kUs);
 }
 
+// The edges of `log` in [from_ps, to_ps).
+std::vector<Edge> window(const EdgeLog& log, TimePs from_ps, TimePs to_ps) {
+    std::vector<Edge> out;
+    for (const Edge& e : log.edges) {
+        if (e.t_ps >= from_ps && e.t_ps < to_ps) out.push_back(e);
+    }
+    return out;
+}
+
+TEST(MetricsDriverTiming, WindowsCutThroughAPulseAndAtASimultaneousChangeCheckAsOneTrace) {
+    // The trace of DirSetupViolationsIncludingASimultaneousChange: rises at 10, 20, 30, 40 us, 2 us high; DIR
+    // 600 ns before the 20 us rise and exactly at the 40 us rise. Cuts at 21 us (inside the 20 us pulse: its
+    // high time and the next low time span two windows) and at 40 us (the tied DIR change and rise open the
+    // last window together).
+    const EdgeLog step = step_log(grid(10 * kUs, 10 * kUs, 4));
+    const EdgeLog dir = dir_log({20 * kUs - 600 * kNs, 40 * kUs});
+    DriverTimingStream stream(DriverLimits{}, step.initial, dir.initial);
+    const std::vector<TimePs> cuts{0, 21 * kUs, 40 * kUs, 100 * kUs};
+    for (std::size_t w = 0; w + 1 < cuts.size(); ++w) {
+        stream.add(window(step, cuts[w], cuts[w + 1]), window(dir, cuts[w], cuts[w + 1]));
+    }
+    const DriverTimingReport r = stream.report();
+    // Every pulse 2 us high, 8 us low, 10 us apart: no width or rate violation, the cut pulse included.
+    EXPECT_EQ(r[DriverRule::StepHigh].checked, 4U);
+    EXPECT_EQ(*r[DriverRule::StepHigh].min_ps, 2 * kUs);
+    EXPECT_EQ(r[DriverRule::StepLow].checked, 3U);
+    EXPECT_EQ(*r[DriverRule::StepLow].min_ps, 8 * kUs);
+    EXPECT_EQ(r[DriverRule::Rate].checked, 3U);
+    EXPECT_EQ(*r[DriverRule::Rate].min_ps, 10 * kUs);
+    // Setup 600 ns and 0 (DIR first at the tie), holds 9.4 us and none at the tie: as in the one-trace test.
+    EXPECT_EQ(r[DriverRule::DirSetup].violations, 2U);
+    EXPECT_EQ(*r[DriverRule::DirSetup].min_ps, 0);
+    EXPECT_EQ(*r[DriverRule::DirSetup].first_violation_at_ps, 20 * kUs);
+    EXPECT_EQ(r[DriverRule::DirHold].violations, 0U);
+    EXPECT_EQ(r[DriverRule::DirHold].checked, 2U);
+    EXPECT_EQ(*r[DriverRule::DirHold].min_ps, 9'400 * kNs);
+    EXPECT_EQ(r.total_violations(), 2U);
+}
+
 }  // namespace
 }  // namespace cnc::metrics

@@ -66,7 +66,7 @@ double circle_staircase_contour_max_um(const nlohmann::json& packets) {
 
 // Check 2: the packet 01 00 00 01 40 FF FF FF 60 04 B0 on the real chain.
 TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
-    const auto out = run_shipped("worked_example");
+    const auto out = run_shipped("worked_example", {}, true);
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& x = out.arch.input.axes[0];
     const auto& y = out.arch.input.axes[1];
@@ -280,8 +280,8 @@ TEST(FpgaUartLongMove, SeedFaithfulSenderReportsAckTimeout) {
 
 // A calibrated steps/mm reaches the CAM, the NUMERATOR and the carriage: X at 100 and Y at 50 steps/mm.
 TEST(FpgaUartCalibratedMachine, StepsPerMmDrivesStepsAndCarriage) {
-    const auto out =
-        run_shipped("worked_347", {"machine.x.steps_per_mm=100", "machine.y.steps_per_mm=50", "trace.detail=true"});
+    const auto out = run_shipped(
+        "worked_347", {"machine.x.steps_per_mm=100", "machine.y.steps_per_mm=50", "trace.detail=true"}, true);
     ASSERT_TRUE(out.ok) << out.failure;
     EXPECT_EQ(out.arch.input.axes[0].step.rising().size(), 1'000U);        // 10 mm x 100
     EXPECT_EQ(out.arch.input.axes[1].step.rising().size(), 2U * 5 * 50);  // 5 mm out and back at 50

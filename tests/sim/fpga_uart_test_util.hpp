@@ -8,9 +8,14 @@
 
 namespace cnc::test {
 
-inline sim::RunOutcome run_shipped(const std::string& name, const std::vector<std::string>& sets = {}) {
+// `keep_logs`: out.arch.input keeps every edge and tool sample, as --plots and --samples ask (the metrics otherwise
+// stream and drop them as they go).
+inline sim::RunOutcome run_shipped(const std::string& name, const std::vector<std::string>& sets = {},
+                                   bool keep_logs = false) {
     const std::string path = std::string(CNC_SOURCE_DIR) + "/scenarios/fpga-uart/" + name + ".toml";
-    return sim::run_scenario(sim::load_scenario(path, sets));
+    sim::Scenario s = sim::load_scenario(path, sets);
+    s.keep_run_input = keep_logs;
+    return sim::run_scenario(s);
 }
 
 inline std::vector<TimePs> diffs(const std::vector<TimePs>& t) {

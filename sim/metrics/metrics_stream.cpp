@@ -1,0 +1,191 @@
+#include "metrics/metrics_stream.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include "metrics/edge_index.hpp"
+#include "metrics/path_accuracy.hpp"
+
+namespace cnc::metrics {
+
+namespace {
+
+constexpr TimePs kEndOfTime = std::numeric_limits<TimePs>::max();
+
+std::vector<Edge> edges_before(const EdgeLog& log, TimePs cut_ps) {
+    const auto end = std::lower_bound(log.edges.begin(), log.edges.end(), cut_ps,
+                                      [](const Edge& e, TimePs t) { return e.t_ps < t; });
+    return {log.edges.begin(), end};
+}
+
+// Drops the edges before cut_ps; the level they left becomes the initial one.
+void drop_edges_before(EdgeLog& log, TimePs cut_ps) {
+    const auto end = std::lower_bound(log.edges.begin(), log.edges.end(), cut_ps,
+                                      [](const Edge& e, TimePs t) { return e.t_ps < t; });
+    if (end != log.edges.begin()) log.initial = std::prev(end)->level;
+    log.edges.erase(log.edges.begin(), end);
+}
+
+}  // namespace
+
+MetricsStream::MetricsStream(RunInput shape) : m_in(std::move(shape)) {
+    if (m_in.commanded || !m_in.rate_segments.empty()) {
+        throw std::invalid_argument("streaming metrics: a commanded trajectory or rate segments are not streamed");
+    }
+    for (std::size_t a = 0; a < m_in.axes.size(); ++a) {
+        const AxisTrace& trace = m_in.axes[a];
+        AxisMetrics am;
+        am.name = axis_label(m_in, a);
+        am.step_signal = trace.step.name;
+        am.dir_signal = trace.dir.name;
+        m_axes.push_back(std::move(am));
+        m_driver.emplace_back(m_in.limits, trace.step.initial, trace.dir.initial);
+    }
+    m_rising_done.assign(m_in.axes.size(), 0);
+}
+
+void MetricsStream::fold(TimePs now_ps) {
+    if (!m_in.moves.empty()) measure(now_ps, false);
+}
+
+// Measures the programmed moves that can no longer change (all of them when `final`) and drops their inputs. A move
+// is final once a later programmed move has its first edge (its motion time is cut there, and its pieces are
+// followed by a piece that has begun) and all its pieces have ended.
+void MetricsStream::measure(TimePs now_ps, bool final) {
+    const RunMetrics r = compute_metrics(m_in);
+    const std::size_t first_group = m_has_prev ? 1 : 0;
+    std::vector<std::size_t> group_piece{0};  // [group] its first piece in m_in.moves
+    for (const MoveMetrics& mm : r.moves) group_piece.push_back(group_piece.back() + mm.pieces);
+    std::size_t end_group = r.moves.size();
+    if (!final) {
+        std::size_t last_with_edge = first_group;
+        for (std::size_t g = first_group; g < r.moves.size(); ++g) {
+            if (r.moves[g].t_first_edge_ps) last_with_edge = g;
+        }
+        end_group = last_with_edge;
+        for (std::size_t g = first_group; g < end_group; ++g) {
+            for (std::size_t p = group_piece[g]; p < group_piece[g + 1]; ++p) {
+                if (m_in.moves[p].t_end_ps >= now_ps) end_group = std::min(end_group, g);
+            }
+        }
+        if (end_group <= first_group) return;
+    }
+    const std::size_t first_piece = group_piece[first_group];
+    const std::size_t cut_piece = group_piece[end_group];
+    const TimePs cut_ps = final ? kEndOfTime : m_in.moves[cut_piece].t_begin_ps;
+    const bool first_fold = m_pieces_done == 0;
+
+    for (std::size_t p = first_piece; p < cut_piece; ++p) {
+        const MoveMetrics& piece = r.pieces[p];
+        if (m_in.moves[p].rapid && piece.t_first_edge_ps) {
+            append_merged(m_rapid, {*piece.t_first_edge_ps, *piece.t_last_edge_ps});
+        }
+        for (std::size_t a = 0; a < m_axes.size(); ++a) {
+            keep_max(m_axes[a].sync_max_abs_ns, piece.sync_max_abs_ns[a]);
+            keep_max(m_out.pulse.sync_max_abs_ns, piece.sync_max_abs_ns[a]);
+        }
+        keep_max(m_out.path.endpoint_vs_command_max_um, piece.path.endpoint_vs_command_um);
+        keep_max(m_out.path.endpoint_vs_program_max_um, piece.path.endpoint_vs_program_um);
+        m_out.pieces.push_back(piece);
+    }
+    for (std::size_t g = first_group; g < end_group; ++g) {
+        const MoveMetrics& mm = r.moves[g];
+        m_timing.add(m_moves_done++, mm.timing, mm.t_first_edge_ps, mm.t_last_edge_ps);
+        m_out.moves.push_back(mm);
+    }
+    for (std::size_t a = 0; a < m_axes.size(); ++a) {
+        for (PulseRun run : r.axes[a].runs) {
+            if (!run.move || *run.move < first_piece || *run.move >= cut_piece) continue;
+            run.move = m_pieces_done + (*run.move - first_piece);
+            run.edges_range.begin += m_rising_done[a];
+            run.edges_range.end += m_rising_done[a];
+            m_axes[a].runs.push_back(run);
+        }
+    }
+
+    const EdgeIndex idx = index_edges(m_in);
+    const MoveTimeline timeline(m_in.moves);
+    for (std::size_t i = m_sample_measured ? 1 : 0; i < m_in.tool.size() && m_in.tool[i].t_ps < cut_ps; ++i) {
+        const SampleError e = sample_error(m_in, idx, timeline, i);
+        m_contour.add(e.contour_um);
+        m_following.add(e.following_um);
+        m_slow.add(m_in.tool[i], m_in.moves[e.move].feed_mm_per_min);
+        ++m_out.path.samples;
+    }
+    if (final) m_out.path.job_end_um = r.path.job_end_um;
+
+    count_edges_before(cut_ps, first_fold, r);
+    m_pieces_done += cut_piece - first_piece;
+    if (!final) drop_before(cut_ps, cut_piece);
+}
+
+void MetricsStream::count_edges_before(TimePs cut_ps, bool first_fold, const RunMetrics& r) {
+    for (std::size_t a = 0; a < m_axes.size(); ++a) {
+        AxisTrace window = m_in.axes[a];
+        window.step.edges = edges_before(m_in.axes[a].step, cut_ps);
+        window.dir.edges = edges_before(m_in.axes[a].dir, cut_ps);
+        const AxisEdges edges = extract_edges(window);
+        AxisMetrics& am = m_axes[a];
+        am.rising_edges += edges.rising.size();
+        am.falling_edges += edges.falling;
+        am.dir_changes += edges.dir_changes.size();
+        for (const int s : edges.rising_sign) am.net_steps += s;
+        if (first_fold) am.unattributed_edges = r.axes[a].unattributed_edges;
+        if (!edges.rising.empty()) {
+            m_first_edge_ps = std::min(m_first_edge_ps.value_or(edges.rising.front()), edges.rising.front());
+            m_last_edge_ps = std::max(m_last_edge_ps.value_or(edges.rising.back()), edges.rising.back());
+        }
+        m_rising_done[a] += edges.rising.size();
+        m_driver[a].add(window.step.edges, window.dir.edges);
+    }
+}
+
+void MetricsStream::drop_before(TimePs cut_ps, std::size_t cut_piece) {
+    for (AxisTrace& trace : m_in.axes) {
+        drop_edges_before(trace.step, cut_ps);
+        drop_edges_before(trace.dir, cut_ps);
+    }
+    // The last sample before the cut stays: the next window's first piece may end before its own first sample.
+    const auto after = std::lower_bound(m_in.tool.begin(), m_in.tool.end(), cut_ps,
+                                        [](const ToolSample& s, TimePs t) { return s.t_ps < t; });
+    if (after != m_in.tool.begin()) {
+        m_in.tool.erase(m_in.tool.begin(), std::prev(after));
+        m_sample_measured = true;
+    }
+    m_in.moves.erase(m_in.moves.begin(), m_in.moves.begin() + static_cast<std::ptrdiff_t>(cut_piece - 1));
+    m_has_prev = true;
+}
+
+RunMetrics MetricsStream::finish(TimePs t_job_end_ps) {
+    m_in.t_job_end_ps = t_job_end_ps;
+    if (m_in.moves.empty()) return compute_metrics(m_in);  // nothing was measured or dropped
+    measure(kEndOfTime, true);
+
+    RunMetrics out = std::move(m_out);
+    out.with_moves = true;
+    out.with_tool = out.path.samples > 0;
+    out.limits = m_in.limits;
+    out.run_split_tolerance = m_in.run_split_tolerance;
+    for (std::size_t a = 0; a < m_axes.size(); ++a) {
+        AxisMetrics& am = m_axes[a];
+        am.driver = m_driver[a].report();
+        finish_axis(am, m_in.axes[a].steps_per_mm);
+        add_axis_totals(out.pulse, am);
+        out.axes.push_back(std::move(am));
+    }
+    out.path.contour_max_um = m_contour.max_abs();
+    out.path.contour_rms_um = m_contour.rms();
+    out.path.following_max_um = m_following.max_abs();
+    out.path.following_rms_um = m_following.rms();
+    out.timing = m_timing.finish(m_in.t_job_start_ps, t_job_end_ps, m_first_edge_ps, m_last_edge_ps);
+    if (m_in.laser) {
+        std::optional<std::vector<TimeInterval>> slow;
+        if (out.with_tool) slow = m_slow.finish();
+        out.laser = laser_result(*m_in.laser, m_in.t_job_start_ps, t_job_end_ps, m_rapid, slow);
+    }
+    return out;
+}
+
+}  // namespace cnc::metrics

@@ -1,0 +1,54 @@
+// The metrics of a run computed while it runs, in memory that grows with its moves and not with its steps
+// (docs/streaming.md): the run appends what it recorded to pending() and calls fold() at its slice boundaries; the
+// programmed moves that can no longer change are measured with the batch code (compute_metrics on them and their
+// neighbours) and their edges and samples are dropped. finish() gives what compute_metrics gives on the whole run.
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "metrics/laser.hpp"
+#include "metrics/metrics.hpp"
+#include "metrics/move_timing.hpp"
+#include "metrics/stats.hpp"
+
+namespace cnc::metrics {
+
+class MetricsStream {
+public:
+    // `shape`: the run's axes (names, pins and their initial levels, steps per mm, polarity), its laser pin, driver
+    // limits and job start, usually with no edges, samples or moves yet. Throws std::invalid_argument with a
+    // commanded trajectory or rate segments (not streamed yet: spi-fpga computes its metrics at the end).
+    explicit MetricsStream(RunInput shape);
+
+    // Where the run appends its edges, tool samples, laser edges and pieces in time order. A piece is appended when
+    // it begins; its t_end_ps must be set before now_ps passes it. t_job_end_ps: the job's end once it is known,
+    // until then a time not before now_ps.
+    [[nodiscard]] RunInput& pending() { return m_in; }
+    // Everything the run records before now_ps is in pending() (both pins of an axis cut at the same instant).
+    void fold(TimePs now_ps);
+    // The run has ended at t_job_end_ps: the metrics of the whole run.
+    [[nodiscard]] RunMetrics finish(TimePs t_job_end_ps);
+
+private:
+    void measure(TimePs now_ps, bool final);
+    void count_edges_before(TimePs cut_ps, bool first_fold, const RunMetrics& r);
+    void drop_before(TimePs cut_ps, std::size_t cut_piece);
+
+    RunInput m_in;
+    bool m_has_prev = false;          // m_in.moves.front() is the last measured piece, kept as a contour neighbour
+    bool m_sample_measured = false;   // m_in.tool.front() was measured, kept as the sample before the window
+    std::size_t m_pieces_done = 0;    // measured pieces
+    std::size_t m_moves_done = 0;     // measured programmed moves
+    std::vector<std::size_t> m_rising_done;  // [axis] rising edges dropped
+    std::vector<AxisMetrics> m_axes;         // counts, runs, sync of the measured part
+    std::vector<DriverTimingStream> m_driver;
+    std::optional<TimePs> m_first_edge_ps, m_last_edge_ps;  // any axis
+    RunMetrics m_out;                 // pieces, moves, sync and endpoint extrema so far
+    MaxRms m_contour, m_following;
+    TimingFold m_timing;
+    std::vector<TimeInterval> m_rapid;
+    SlowStretches m_slow;
+};
+
+}  // namespace cnc::metrics

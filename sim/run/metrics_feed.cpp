@@ -1,0 +1,53 @@
+#include "run/metrics_feed.hpp"
+
+#include <limits>
+#include <utility>
+
+namespace cnc::sim {
+
+namespace {
+
+metrics::RunInput shape(const EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin) {
+    metrics::RunInput in;
+    for (const AxisPins& a : axes) {
+        const EdgeLog& step = rec.log(a.step_pin);
+        const EdgeLog& dir = rec.log(a.dir_pin);
+        in.axes.push_back({a.name, {step.name, step.initial, {}}, {dir.name, dir.initial, {}}, a.steps_per_mm, true});
+    }
+    const EdgeLog& laser = rec.log(laser_pin);
+    in.laser = EdgeLog{laser.name, laser.initial, {}};
+    return in;
+}
+
+void append(EdgeLog& to, const EdgeLog& from) { to.edges.insert(to.edges.end(), from.edges.begin(), from.edges.end()); }
+
+}  // namespace
+
+MetricsFeed::MetricsFeed(EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin,
+                         const std::vector<ToolSample>& samples)
+    : m_rec(rec), m_axes(axes), m_laser_pin(laser_pin), m_samples(samples), m_stream(shape(rec, axes, laser_pin)) {}
+
+void MetricsFeed::take_until(TimePs t_ps) {
+    metrics::RunInput& p = m_stream.pending();
+    for (std::size_t a = 0; a < m_axes.size(); ++a) {
+        append(p.axes[a].step, m_rec.take_before(m_axes[a].step_pin, t_ps));
+        append(p.axes[a].dir, m_rec.take_before(m_axes[a].dir_pin, t_ps));
+    }
+    append(*p.laser, m_rec.take_before(m_laser_pin, t_ps));
+    for (; m_samples_given < m_samples.size() && m_samples[m_samples_given].t_ps < t_ps; ++m_samples_given) {
+        p.tool.push_back(m_samples[m_samples_given]);
+    }
+}
+
+void MetricsFeed::fold(TimePs now_ps) {
+    take_until(now_ps);
+    m_stream.pending().t_job_end_ps = now_ps;
+    m_stream.fold(now_ps);
+}
+
+metrics::RunMetrics MetricsFeed::finish(TimePs t_job_end_ps) {
+    take_until(std::numeric_limits<TimePs>::max());
+    return m_stream.finish(t_job_end_ps);
+}
+
+}  // namespace cnc::sim

@@ -1,0 +1,46 @@
+// Hands what a run records to its streaming metrics (metrics/metrics_stream.hpp) at each slice boundary of
+// simulate(): the STEP/DIR and laser edges the recorder took so far, the carriage's new tool samples, and the pieces
+// the architecture says have ended. What the metrics have measured is dropped, so the logs stay short.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "common/tool_sample.hpp"
+#include "metrics/metrics_stream.hpp"
+#include "probes/edge_recorder.hpp"
+
+namespace cnc::sim {
+
+struct AxisPins {
+    std::string name;  // x, y
+    std::string step_pin, dir_pin;  // recorder pin names
+    double steps_per_mm = 0.0;
+};
+
+class MetricsFeed {
+public:
+    // Before the simulation starts: the recorder's logs give the pins' initial levels. `samples`: the carriage's
+    // tool samples, read as they grow.
+    MetricsFeed(EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin,
+                const std::vector<ToolSample>& samples);
+
+    // A piece that began, in execution order, with its t_end_ps set once it has ended.
+    void add_piece(metrics::MoveSpec piece) { m_stream.pending().moves.push_back(std::move(piece)); }
+    // The simulation has reached now_ps (the job still runs).
+    void fold(TimePs now_ps);
+    // The run has ended: everything left, and the metrics of the whole run.
+    [[nodiscard]] metrics::RunMetrics finish(TimePs t_job_end_ps);
+
+private:
+    void take_until(TimePs t_ps);
+
+    EdgeRecorder& m_rec;
+    std::vector<AxisPins> m_axes;
+    std::string m_laser_pin;
+    const std::vector<ToolSample>& m_samples;
+    std::size_t m_samples_given = 0;
+    metrics::MetricsStream m_stream;
+};
+
+}  // namespace cnc::sim

@@ -1,6 +1,7 @@
 #include "mechanics/carriage.hpp"
 #include "common/sc_time.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -64,6 +65,14 @@ geom::Vec2 Carriage::position() const {
 }
 
 void Carriage::start_of_simulation() { sample(); }
+
+std::vector<ToolSample> Carriage::take_samples_before(TimePs t_ps) {
+    const auto end = std::lower_bound(m_samples.begin(), m_samples.end(), t_ps,
+                                      [](const ToolSample& s, TimePs t) { return s.t_ps < t; });
+    std::vector<ToolSample> taken(m_samples.begin(), end);
+    m_samples.erase(m_samples.begin(), end);
+    return taken;
+}
 
 void Carriage::sample() {
     const ToolSample s{now_ps(), position()};

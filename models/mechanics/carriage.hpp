@@ -45,6 +45,9 @@ public:
     // One sample at t = 0, then one per time stamp at which either axis stepped: steps of X and Y at the
     // same instant give one sample (the later one overwrites), so a diagonal step is not seen as an L.
     [[nodiscard]] const std::vector<ToolSample>& samples() const { return m_samples; }
+    // Hands over the samples taken before t_ps and forgets them, for metrics that measure as the run goes (a
+    // sample at t_ps or later may still be overwritten by a step at its instant, so it stays).
+    [[nodiscard]] std::vector<ToolSample> take_samples_before(TimePs t_ps);
     // The tool position in machine mm, per axis, updated at the samples (resolution above).
     [[nodiscard]] const PositionSignal& carriage_x_mm() const { return m_carriage_x_mm; }
     [[nodiscard]] const PositionSignal& carriage_y_mm() const { return m_carriage_y_mm; }

@@ -24,8 +24,12 @@ void append(EdgeLog& to, const EdgeLog& from) { to.edges.insert(to.edges.end(), 
 }  // namespace
 
 MetricsFeed::MetricsFeed(EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin,
-                         const std::vector<ToolSample>& samples)
-    : m_rec(rec), m_axes(axes), m_laser_pin(laser_pin), m_samples(samples), m_stream(shape(rec, axes, laser_pin)) {}
+                         TakeSamplesBefore take_samples)
+    : m_rec(rec),
+      m_axes(axes),
+      m_laser_pin(laser_pin),
+      m_take_samples(std::move(take_samples)),
+      m_stream(shape(rec, axes, laser_pin)) {}
 
 void MetricsFeed::take_until(TimePs t_ps) {
     metrics::RunInput& p = m_stream.pending();
@@ -34,9 +38,8 @@ void MetricsFeed::take_until(TimePs t_ps) {
         append(p.axes[a].dir, m_rec.take_before(m_axes[a].dir_pin, t_ps));
     }
     append(*p.laser, m_rec.take_before(m_laser_pin, t_ps));
-    for (; m_samples_given < m_samples.size() && m_samples[m_samples_given].t_ps < t_ps; ++m_samples_given) {
-        p.tool.push_back(m_samples[m_samples_given]);
-    }
+    const std::vector<ToolSample> samples = m_take_samples(t_ps);
+    p.tool.insert(p.tool.end(), samples.begin(), samples.end());
 }
 
 void MetricsFeed::fold(TimePs now_ps) {

@@ -3,6 +3,7 @@
 // the architecture says have ended. What the metrics have measured is dropped, so the logs stay short.
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,12 +19,14 @@ struct AxisPins {
     double steps_per_mm = 0.0;
 };
 
+// The carriage's tool samples taken before a time, handed over and forgotten there (mech::Carriage).
+using TakeSamplesBefore = std::function<std::vector<ToolSample>(TimePs)>;
+
 class MetricsFeed {
 public:
-    // Before the simulation starts: the recorder's logs give the pins' initial levels. `samples`: the carriage's
-    // tool samples, read as they grow.
+    // Before the simulation starts: the recorder's logs give the pins' initial levels.
     MetricsFeed(EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin,
-                const std::vector<ToolSample>& samples);
+                TakeSamplesBefore take_samples);
 
     // A piece that began, in execution order, with its t_end_ps set once it has ended.
     void add_piece(metrics::MoveSpec piece) { m_stream.pending().moves.push_back(std::move(piece)); }
@@ -38,8 +41,7 @@ private:
     EdgeRecorder& m_rec;
     std::vector<AxisPins> m_axes;
     std::string m_laser_pin;
-    const std::vector<ToolSample>& m_samples;
-    std::size_t m_samples_given = 0;
+    TakeSamplesBefore m_take_samples;
     metrics::MetricsStream m_stream;
 };
 

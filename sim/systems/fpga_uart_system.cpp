@@ -176,7 +176,8 @@ ArchPace pace(const Scenario& s, std::size_t packets) {
 // runs them (so also a FeedRate 0 row of host.allow_feed_zero).
 host::Program packet_moves(const std::vector<host::MotionSegment>& rows, const Packets& packets,
                            const std::string& file) {
-    host::Program program{file, {}};
+    host::Program program;
+    program.filename = file;
     geom::Vec2 at{};
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const geom::Vec2 to = at + geom::Vec2{rows[i].dx_mm, rows[i].dy_mm};
@@ -184,8 +185,13 @@ host::Program packet_moves(const std::vector<host::MotionSegment>& rows, const P
         // A packet step_gen does not run (no steps, or a period of 0) takes no time at any feed.
         const double feed_mm_per_min =
             run_s > 0.0 ? geom::distance(at, to) / run_s * kSecondsPerMinute : std::numeric_limits<double>::infinity();
-        program.moves.push_back({rows[i].motion, geom::Segment::line(at, to), feed_mm_per_min,
-                                 rows[i].motion != host::MotionKind::Rapid, rows[i].line});
+        host::ProgrammedMove move{};
+        move.kind = rows[i].motion;
+        move.path = geom::Segment::line(at, to);
+        move.feed_mm_per_min = feed_mm_per_min;
+        move.laser_on = rows[i].motion != host::MotionKind::Rapid;
+        move.line = rows[i].line;
+        program.moves.push_back(move);
         at = to;
     }
     return program;
@@ -271,7 +277,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     if (!s.keep_run_input && machine.dynamic_x() == nullptr) {
         const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm()},
                                          {"y", "step_y", "dir_y", s.machine.y.steps_per_mm()}};
-        feed.emplace(rec, axes, "laser", machine.carriage().samples());
+        feed.emplace(rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); });
     }
     ExecutedPieces executed;
     const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {

@@ -52,6 +52,7 @@ public:
               sc_core::sc_signal<bool>& laser_wire);
 
     [[nodiscard]] const mech::Carriage& carriage() const { return m_carriage; }
+    [[nodiscard]] mech::Carriage& carriage() { return m_carriage; }
     [[nodiscard]] const mech::Drv8825& driver_x() const { return m_drv_x; }
     [[nodiscard]] const mech::Drv8825& driver_y() const { return m_drv_y; }
     [[nodiscard]] const mech::LaserHead& laser_head() const { return m_head; }

@@ -38,4 +38,13 @@ std::vector<TimePs> EdgeLog::rising() const { return edges_to(edges, initial, tr
 std::vector<TimePs> EdgeLog::falling() const { return edges_to(edges, initial, false); }
 std::size_t EdgeLog::count_falling() const { return count_to(edges, initial, false); }
 
+EdgeLog EdgeLog::take_before(TimePs t_ps) {
+    const auto end =
+        std::lower_bound(edges.begin(), edges.end(), t_ps, [](const Edge& e, TimePs t) { return e.t_ps < t; });
+    EdgeLog out{name, initial, {edges.begin(), end}};
+    if (!out.edges.empty()) initial = out.edges.back().level;
+    edges.erase(edges.begin(), end);
+    return out;
+}
+
 }  // namespace cnc

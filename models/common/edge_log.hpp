@@ -24,6 +24,8 @@ struct EdgeLog {
     [[nodiscard]] std::vector<TimePs> rising() const;
     [[nodiscard]] std::vector<TimePs> falling() const;
     [[nodiscard]] std::size_t count_falling() const;
+    // Hands over the edges before t_ps and keeps the rest; the level they leave becomes this log's initial one.
+    [[nodiscard]] EdgeLog take_before(TimePs t_ps);
 };
 
 }  // namespace cnc

@@ -7,26 +7,13 @@
 
 #include "metrics/edge_index.hpp"
 #include "metrics/path_accuracy.hpp"
+#include "metrics/programmed_moves.hpp"
 
 namespace cnc::metrics {
 
 namespace {
 
 constexpr TimePs kEndOfTime = std::numeric_limits<TimePs>::max();
-
-std::vector<Edge> edges_before(const EdgeLog& log, TimePs cut_ps) {
-    const auto end = std::lower_bound(log.edges.begin(), log.edges.end(), cut_ps,
-                                      [](const Edge& e, TimePs t) { return e.t_ps < t; });
-    return {log.edges.begin(), end};
-}
-
-// Drops the edges before cut_ps; the level they left becomes the initial one.
-void drop_edges_before(EdgeLog& log, TimePs cut_ps) {
-    const auto end = std::lower_bound(log.edges.begin(), log.edges.end(), cut_ps,
-                                      [](const Edge& e, TimePs t) { return e.t_ps < t; });
-    if (end != log.edges.begin()) log.initial = std::prev(end)->level;
-    log.edges.erase(log.edges.begin(), end);
-}
 
 }  // namespace
 
@@ -54,6 +41,9 @@ void MetricsStream::fold(TimePs now_ps) {
 // is final once a later programmed move has its first edge (its motion time is cut there, and its pieces are
 // followed by a piece that has begun) and all its pieces have ended.
 void MetricsStream::measure(TimePs now_ps, bool final) {
+    // Until the pieces past the kept neighbour hold two programmed moves, none can be final: the batch code need
+    // not run over a window that only grows (a long move spans many slices).
+    if (!final && !two_moves_pending()) return;
     const RunMetrics r = compute_metrics(m_in);
     const std::size_t first_group = m_has_prev ? 1 : 0;
     std::vector<std::size_t> group_piece{0};  // [group] its first piece in m_in.moves
@@ -116,16 +106,23 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
     }
     if (final) m_out.path.job_end_um = r.path.job_end_um;
 
-    count_edges_before(cut_ps, first_fold, r);
+    take_edges_before(cut_ps, first_fold, r);
     m_pieces_done += cut_piece - first_piece;
     if (!final) drop_before(cut_ps, cut_piece);
 }
 
-void MetricsStream::count_edges_before(TimePs cut_ps, bool first_fold, const RunMetrics& r) {
+bool MetricsStream::two_moves_pending() const {
+    for (std::size_t p = (m_has_prev ? 1 : 0) + 1; p < m_in.moves.size(); ++p) {
+        if (!same_programmed_move(m_in.moves[p - 1], m_in.moves[p])) return true;
+    }
+    return false;
+}
+
+void MetricsStream::take_edges_before(TimePs cut_ps, bool first_fold, const RunMetrics& r) {
     for (std::size_t a = 0; a < m_axes.size(); ++a) {
-        AxisTrace window = m_in.axes[a];
-        window.step.edges = edges_before(m_in.axes[a].step, cut_ps);
-        window.dir.edges = edges_before(m_in.axes[a].dir, cut_ps);
+        AxisTrace& trace = m_in.axes[a];
+        const AxisTrace window{trace.name, trace.step.take_before(cut_ps), trace.dir.take_before(cut_ps),
+                               trace.steps_per_mm, trace.dir_high_is_positive};
         const AxisEdges edges = extract_edges(window);
         AxisMetrics& am = m_axes[a];
         am.rising_edges += edges.rising.size();
@@ -143,10 +140,6 @@ void MetricsStream::count_edges_before(TimePs cut_ps, bool first_fold, const Run
 }
 
 void MetricsStream::drop_before(TimePs cut_ps, std::size_t cut_piece) {
-    for (AxisTrace& trace : m_in.axes) {
-        drop_edges_before(trace.step, cut_ps);
-        drop_edges_before(trace.dir, cut_ps);
-    }
     // The last sample before the cut stays: the next window's first piece may end before its own first sample.
     const auto after = std::lower_bound(m_in.tool.begin(), m_in.tool.end(), cut_ps,
                                         [](const ToolSample& s, TimePs t) { return s.t_ps < t; });

@@ -32,7 +32,10 @@ public:
 
 private:
     void measure(TimePs now_ps, bool final);
-    void count_edges_before(TimePs cut_ps, bool first_fold, const RunMetrics& r);
+    [[nodiscard]] bool two_moves_pending() const;
+    // Counts the edges before cut_ps (driver timing too) and drops them from pending().
+    void take_edges_before(TimePs cut_ps, bool first_fold, const RunMetrics& r);
+    // Drops the measured pieces but the last (a contour neighbour) and the samples but the last before cut_ps.
     void drop_before(TimePs cut_ps, std::size_t cut_piece);
 
     RunInput m_in;

@@ -41,13 +41,7 @@ EdgeLog EdgeRecorder::take(const std::string& pin_name) {
 }
 
 EdgeLog EdgeRecorder::take_before(const std::string& pin_name, TimePs t_ps) {
-    EdgeLog& log = m_probes[index_of(pin_name)].log;
-    const auto end = std::lower_bound(log.edges.begin(), log.edges.end(), t_ps,
-                                      [](const Edge& e, TimePs t) { return e.t_ps < t; });
-    EdgeLog out{log.name, log.initial, {log.edges.begin(), end}};
-    if (!out.edges.empty()) log.initial = out.edges.back().level;
-    log.edges.erase(log.edges.begin(), end);
-    return out;
+    return m_probes[index_of(pin_name)].log.take_before(t_ps);
 }
 
 }  // namespace cnc::sim

@@ -15,6 +15,22 @@ TEST(EdgeLog, LevelsAndEdgeLists) {
     EXPECT_EQ(log.falling(), (std::vector<cnc::TimePs>{300}));
 }
 
+TEST(EdgeLog, TakeBeforeHandsOverTheEarlierEdgesAndKeepsTheLevelTheyLeave) {
+    cnc::EdgeLog log{"step_x", false, {}};
+    log.add(100, true);
+    log.add(300, false);
+    log.add(500, true);
+    const cnc::EdgeLog taken = log.take_before(300);  // an edge at the cut stays
+    EXPECT_EQ(taken.name, "step_x");
+    EXPECT_FALSE(taken.initial);
+    EXPECT_EQ(taken.rising(), (std::vector<cnc::TimePs>{100}));
+    EXPECT_TRUE(log.initial);
+    EXPECT_EQ(log.falling(), (std::vector<cnc::TimePs>{300}));
+    EXPECT_EQ(log.rising(), (std::vector<cnc::TimePs>{500}));
+    EXPECT_TRUE(log.take_before(50).edges.empty());
+    EXPECT_TRUE(log.initial);  // nothing taken: the level stays
+}
+
 TEST(Units, CyclesToPsIsExactForFpgaAndAvrClocksAndDriftFreeForOthers) {
     EXPECT_EQ(cnc::cycles_to_ps(15'625, 50'000'000), 312'500'000);     // 312.5 us
     EXPECT_EQ(cnc::cycles_to_ps(1, 16'000'000), 62'500);               // 62.5 ns AVR cycle

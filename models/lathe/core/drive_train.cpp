@@ -9,7 +9,7 @@ constexpr double kTwoPi = 6.28318530717958647692;
 }
 
 double DriveTrain::rigid_mm(double motor_angle_rad) const {
-    return motor_angle_rad / kTwoPi / m_p.gear_ratio / m_p.belt_ratio * m_p.lead_mm;
+    return motor_angle_rad / kTwoPi * mm_per_motor_rev();
 }
 
 double DriveTrain::follow(double motor_angle_rad) {

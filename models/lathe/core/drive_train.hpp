@@ -23,6 +23,8 @@ public:
     [[nodiscard]] double carriage_mm() const { return m_carriage_mm; }
     // The carriage position the motor angle would give with no play.
     [[nodiscard]] double rigid_mm(double motor_angle_rad) const;
+    // Carriage travel per motor revolution, play taken up.
+    [[nodiscard]] double mm_per_motor_rev() const { return m_p.lead_mm / m_p.gear_ratio / m_p.belt_ratio; }
 
 private:
     DriveTrainParams m_p;

@@ -43,19 +43,19 @@ bool LatheRig::pid_running() const { return chip.timer(0).divisor() != 0; }
 // The 74HC14 inverts the slotted opto's output: the MCU sees a falling edge when a slot's start passes. The motor
 // disc starts half a slot past one.
 bool LatheRig::motor_encoder_level() const {
-    const double slots = motor.state().angle_rad * 30.0 / (2 * kPi) + 0.5;
+    const double slots = motor.state().angle_rad * kMotorSlots / (2 * kPi) + 0.5;
     return slots - std::floor(slots) < 0.5;
 }
 
-// Spindle: 40 slots (falling edge at each 1/40 rev) and the half-reflective index disc, high for half a
+// Spindle: kSpindleSlots = 40 slots (falling edge at each 1/40 rev) and the half-reflective index disc, high for half a
 // revolution: its falling edge is at 1/2 + 1/80 rev, halfway between two slot edges. Were it on a slot edge,
 // whether the INT1 ISR of that slot runs before or after doCut's `Error = slip` would be left to the cycle the two
 // edges happen to land on, and one pass would carry a whole B(n) (6 or 7 pulses at 1 mm) more than another.
 void LatheRig::update_spindle(bool force) {
     const double rev = spindle_rev();
-    const double slots = rev * 40.0;
+    const double slots = rev * kSpindleSlots;
     const bool slot_level = slots - std::floor(slots) < 0.5;
-    const double index_rev = rev - 1.0 / 80.0;
+    const double index_rev = rev - 0.5 / kSpindleSlots;
     const bool index_level = index_rev - std::floor(index_rev) < 0.5;
     if (force || slot_level != m_spindle_level) chip.drive_input(Pin{'D', 3}, slot_level);
     if (force || index_level != m_index) chip.drive_input(Pin{'D', 6}, index_level);

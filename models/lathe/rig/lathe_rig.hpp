@@ -18,6 +18,8 @@
 
 namespace cnc::lathe {
 
+inline constexpr int kSpindleSlots = 40;  // spindle encoder disc: SP_PPR pulses per revolution (seed 002 §6.1)
+
 struct LatheRigConfig {
     std::string firmware_elf;
     double spindle_rpm = 0.0;

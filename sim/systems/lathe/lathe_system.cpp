@@ -12,8 +12,6 @@ namespace cnc::sim {
 
 namespace {
 
-constexpr double kPulseUm = 3175.0 / 780.0;  // carriage per motor pulse (seed 002 §7)
-constexpr int kSpindlePulsesPerRev = 40;     // SP_PPR (§6.1)
 // A following error that rises faster than this over the second half of a pass is growing, not settling: the
 // seed's loop settles with its slow pole (-1.17 s^-1, §8.3), so a bounded error falls there.
 constexpr double kGrowingPulsesPerS = 10.0;
@@ -120,17 +118,18 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
     text << "ratio list: " << list.num << "/" << list.den << " (lambda error " << list.lambda_error
          << "), pitch cut " << fixed(list.pitch_produced_mm, 6) << " mm for " << fixed(pitch_mm, 2) << " mm\n";
 
+    const double mm_per_motor_pulse = lathe::DriveTrain(cfg.train).mm_per_motor_rev() / lathe::kMotorSlots;
     std::vector<lathe::ThreadPass> thread;
     nlohmann::json passes = nlohmann::json::array();
-    const double spindle_pulse_s = 60.0 / s.spindle_rpm / kSpindlePulsesPerRev;
+    const double spindle_pulse_s = 60.0 / s.spindle_rpm / lathe::kSpindleSlots;
     bool growing = false;
     double at_full_s = 0.0;
     for (const lathe::RecordedPass& p : rig.passes) {
         thread.push_back(p.thread);
         const std::vector<double> e = following_error(p, list.lambda_list);
         const double max_e = e.empty() ? 0.0 : *std::max_element(e.begin(), e.end());
-        const nlohmann::json overshoot =
-            p.overshoot_mm < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(p.overshoot_mm * 1000.0 / kPulseUm);
+        const bool overshoot_measured = p.overshoot_mm >= 0.0;  // RecordedPass leaves -1 when it has none
+        const double overshoot_pulses = p.overshoot_mm / mm_per_motor_pulse;
         const double trend = trend_per_s(e, spindle_pulse_s);
         growing = growing || trend > kGrowingPulsesPerS;
         at_full_s += p.at_full_s;
@@ -140,17 +139,18 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
                           {"pid_at_0_s", p.at_zero_s},
                           {"following_error_max_pulses", max_e},
                           {"following_error_trend_pulses_per_s", trend},
-                          {"overshoot_after_brake_pulses", overshoot}});
+                          {"overshoot_after_brake_pulses",
+                           overshoot_measured ? nlohmann::json(overshoot_pulses) : nlohmann::json(nullptr)}});
         text << "pass " << passes.size() << ": " << fixed(p.pid_s, 3) << " s under the PID, at 1023 for "
              << fixed(p.at_full_s, 3) << " s, at 0 for " << fixed(p.at_zero_s, 3) << " s; following error max "
              << fixed(max_e, 1) << " pulses, trend " << fixed(trend, 1) << " pulses/s; overshoot after the brake "
-             << (p.overshoot_mm < 0.0 ? std::string("-") : fixed(p.overshoot_mm * 1000.0 / kPulseUm, 1) + " pulses")
+             << (overshoot_measured ? fixed(overshoot_pulses, 1) + " pulses" : std::string("-"))
              << "\n";
     }
     d["passes"] = passes;
     const lathe::ThreadMetrics m =
-        lathe::thread_metrics(thread, pitch_mm, kSpindlePulsesPerRev, s.settle_revolutions);
-    const lathe::ThreadMetrics whole = lathe::thread_metrics(thread, pitch_mm, kSpindlePulsesPerRev);
+        lathe::thread_metrics(thread, pitch_mm, lathe::kSpindleSlots, s.settle_revolutions);
+    const lathe::ThreadMetrics whole = lathe::thread_metrics(thread, pitch_mm, lathe::kSpindleSlots);
     d["thread"] = {{"settle_revolutions", s.settle_revolutions},
                    {"revolutions", m.revolutions},
                    {"pitch_error_mean_um", m.pitch_error_mean_um},

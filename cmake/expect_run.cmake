@@ -1,8 +1,14 @@
 # Runs CMD (a |-list), then checks its exit code against EXIT and its stderr+stdout against each regex in MATCH
 # (a |-list). Used for the CLI's bad-input contract: exit code 2 and a message naming the file, line or key.
-# Optionally: NO_FILE must not exist afterwards; FILE must exist and match each regex in FILE_MATCH.
+# Optionally: NO_FILE must not exist afterwards; FILE must exist and match each regex in FILE_MATCH; STDOUT is a
+# file that takes the standard output instead (e.g. /dev/full), and then only stderr is matched.
 string(REPLACE "|" ";" cmd "${CMD}")
-execute_process(COMMAND ${cmd} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(DEFINED STDOUT)
+  execute_process(COMMAND ${cmd} RESULT_VARIABLE rc OUTPUT_FILE "${STDOUT}" ERROR_VARIABLE err)
+  set(out "")
+else()
+  execute_process(COMMAND ${cmd} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+endif()
 if(NOT "${rc}" STREQUAL "${EXIT}")
   message(FATAL_ERROR "exit code ${rc}, expected ${EXIT}\nstdout:\n${out}\nstderr:\n${err}")
 endif()

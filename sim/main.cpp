@@ -1,8 +1,11 @@
 // cncsim: the command line (DESIGN.md §6). Exit codes: 0 ok, 1 run failed, 2 bad input.
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -168,9 +171,16 @@ int cmd_keys() {
     return kExitOk;
 }
 
-}  // namespace
+// The summary and tables go to standard output: a full disk or a closed pipe there is a failed run, not exit 0.
+int check_stdout(int code) {
+    std::cout.flush();
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout) && std::cout.good()) return code;
+    const int err = errno;
+    std::cerr << "cncsim: run failed: writing standard output: " << std::strerror(err != 0 ? err : EIO) << '\n';
+    return code == kExitOk ? kExitRunFailed : code;
+}
 
-int sc_main(int argc, char* argv[]) {
+int dispatch(int argc, char* argv[]) {
     CLI::App app{"cncsim: co-simulation of CNC / laser motion-control architectures"};
     app.require_subcommand(1);
     // The SystemC release too: results can differ between kernels (toolchain.md §1 pins 2.3.4).
@@ -266,6 +276,10 @@ int sc_main(int argc, char* argv[]) {
         return kExitRunFailed;
     }
 }
+
+}  // namespace
+
+int sc_main(int argc, char* argv[]) { return check_stdout(dispatch(argc, argv)); }
 
 // Our own main, so that the SystemC banner can be switched off before the kernel reads the environment.
 int main(int argc, char* argv[]) {

@@ -5,7 +5,7 @@ set(ROBUST ${CMAKE_CURRENT_BINARY_DIR}/robust)
 set(SCENARIOS ${PROJECT_SOURCE_DIR}/scenarios)
 
 function(cnc_cli_test NAME LABEL EXIT)
-  cmake_parse_arguments(T "" "NO_FILE;FILE;FILE_MATCH" "CMD;MATCH" ${ARGN})
+  cmake_parse_arguments(T "" "NO_FILE;FILE;FILE_MATCH;STDOUT" "CMD;MATCH" ${ARGN})
   list(JOIN T_CMD "|" cmd)
   list(JOIN T_MATCH "|" match)
   set(extra)
@@ -14,6 +14,9 @@ function(cnc_cli_test NAME LABEL EXIT)
   endif()
   if(T_FILE)
     list(APPEND extra -DFILE=${T_FILE} "-DFILE_MATCH=${T_FILE_MATCH}")
+  endif()
+  if(T_STDOUT)
+    list(APPEND extra -DSTDOUT=${T_STDOUT})
   endif()
   add_test(NAME ${LABEL}/${NAME}
     COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:cncsim>|${cmd}" -DEXIT=${EXIT} "-DMATCH=${match}" ${extra}
@@ -117,3 +120,9 @@ cnc_cli_test(output.samples_in_missing_folder golden 2
   MATCH "^cncsim: --samples .*no_such_folder/s[.]csv: its folder .*no_such_folder does not exist\n$")
 cnc_cli_test(output.samples_to_dev_full golden 1 CMD run ${SQUARE} --samples /dev/full --progress off
   MATCH "cncsim: run failed: cannot write /dev/full [(]--samples[)]: No space left on device")
+
+# --- Standard output: the summary, a compare table or the key list that cannot be written is a failed command ---
+cnc_cli_test(output.summary_to_dev_full golden 1 CMD run ${SQUARE} --progress off STDOUT /dev/full
+  MATCH "^cncsim: run failed: writing standard output: No space left on device\n$")
+cnc_cli_test(output.keys_to_dev_full golden 1 CMD keys STDOUT /dev/full
+  MATCH "^cncsim: run failed: writing standard output: No space left on device\n$")

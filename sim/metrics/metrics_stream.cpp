@@ -17,7 +17,8 @@ constexpr TimePs kEndOfTime = std::numeric_limits<TimePs>::max();
 
 }  // namespace
 
-MetricsStream::MetricsStream(RunInput shape) : m_in(std::move(shape)) {
+MetricsStream::MetricsStream(RunInput shape, bool detail, PieceMeasured on_piece)
+    : m_in(std::move(shape)), m_detail(detail), m_on_piece(std::move(on_piece)) {
     if (m_in.commanded || !m_in.rate_segments.empty()) {
         throw std::invalid_argument("streaming metrics: a commanded trajectory or rate segments are not streamed");
     }
@@ -31,6 +32,7 @@ MetricsStream::MetricsStream(RunInput shape) : m_in(std::move(shape)) {
         m_driver.emplace_back(m_in.limits, trace.step.initial, trace.dir.initial);
     }
     m_rising_done.assign(m_in.axes.size(), 0);
+    m_pulse.resize(m_in.axes.size());
 }
 
 void MetricsStream::fold(TimePs now_ps) {
@@ -78,7 +80,8 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
         }
         keep_max(m_out.path.endpoint_vs_command_max_um, piece.path.endpoint_vs_command_um);
         keep_max(m_out.path.endpoint_vs_program_max_um, piece.path.endpoint_vs_program_um);
-        m_out.pieces.push_back(piece);
+        if (m_on_piece) m_on_piece(piece);
+        if (m_detail) m_out.pieces.push_back(piece);
     }
     for (std::size_t g = first_group; g < end_group; ++g) {
         const MoveMetrics& mm = r.moves[g];
@@ -91,7 +94,8 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
             run.move = m_pieces_done + (*run.move - first_piece);
             run.edges_range.begin += m_rising_done[a];
             run.edges_range.end += m_rising_done[a];
-            m_axes[a].runs.push_back(run);
+            m_pulse[a].add(run);
+            if (m_detail) m_axes[a].runs.push_back(run);
         }
     }
 
@@ -164,7 +168,7 @@ RunMetrics MetricsStream::finish(TimePs t_job_end_ps) {
     for (std::size_t a = 0; a < m_axes.size(); ++a) {
         AxisMetrics& am = m_axes[a];
         am.driver = m_driver[a].report();
-        finish_axis(am, m_in.axes[a].steps_per_mm);
+        finish_axis(am, m_in.axes[a].steps_per_mm, m_pulse[a].summary());
         add_axis_totals(out.pulse, am);
         out.axes.push_back(std::move(am));
     }

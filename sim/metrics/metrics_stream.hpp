@@ -4,6 +4,7 @@
 // neighbours) and their edges and samples are dropped. finish() gives what compute_metrics gives on the whole run.
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -14,12 +15,17 @@
 
 namespace cnc::metrics {
 
+// Each executed piece as it is measured, in order (what an architecture reads of the pieces beyond the report).
+using PieceMeasured = std::function<void(const MoveMetrics&)>;
+
 class MetricsStream {
 public:
     // `shape`: the run's axes (names, pins and their initial levels, steps per mm, polarity), its laser pin, driver
     // limits and job start, usually with no edges, samples or moves yet. Throws std::invalid_argument with a
     // commanded trajectory or rate segments (not streamed yet: spi-fpga computes its metrics at the end).
-    explicit MetricsStream(RunInput shape);
+    // `detail`: keep the per-piece records and the pulse runs, which only the detailed report lists (it grows with
+    // them anyway); without, finish() gives their summaries only (RunMetrics::pieces and AxisMetrics::runs empty).
+    MetricsStream(RunInput shape, bool detail, PieceMeasured on_piece = {});
 
     // Where the run appends its edges, tool samples, laser edges and pieces in time order. A piece is appended when
     // it begins; its t_end_ps must be set before now_ps passes it. t_job_end_ps: the job's end once it is known,
@@ -39,12 +45,15 @@ private:
     void drop_before(TimePs cut_ps, std::size_t cut_piece);
 
     RunInput m_in;
+    bool m_detail;
+    PieceMeasured m_on_piece;
     bool m_has_prev = false;          // m_in.moves.front() is the last measured piece, kept as a contour neighbour
     bool m_sample_measured = false;   // m_in.tool.front() was measured, kept as the sample before the window
     std::size_t m_pieces_done = 0;    // measured pieces
     std::size_t m_moves_done = 0;     // measured programmed moves
     std::vector<std::size_t> m_rising_done;  // [axis] rising edges dropped
-    std::vector<AxisMetrics> m_axes;         // counts, runs, sync of the measured part
+    std::vector<AxisMetrics> m_axes;         // counts, runs (detail), sync of the measured part
+    std::vector<PulseSummaryFold> m_pulse;   // [axis]
     std::vector<DriverTimingStream> m_driver;
     std::optional<TimePs> m_first_edge_ps, m_last_edge_ps;  // any axis
     RunMetrics m_out;                 // pieces, moves, sync and endpoint extrema so far

@@ -24,9 +24,10 @@ using TakeSamplesBefore = std::function<std::vector<ToolSample>(TimePs)>;
 
 class MetricsFeed {
 public:
-    // Before the simulation starts: the recorder's logs give the pins' initial levels.
+    // Before the simulation starts: the recorder's logs give the pins' initial levels. `detail`, `on_piece`: as
+    // metrics::MetricsStream's.
     MetricsFeed(EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin,
-                TakeSamplesBefore take_samples);
+                TakeSamplesBefore take_samples, bool detail, metrics::PieceMeasured on_piece = {});
 
     // A piece that began, in execution order, with its t_end_ps set once it has ended.
     void add_piece(metrics::MoveSpec piece) { m_stream.pending().moves.push_back(std::move(piece)); }

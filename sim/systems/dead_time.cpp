@@ -49,14 +49,14 @@ DeadTimeBreakdown dead_time_breakdown(const std::vector<PieceSteps>& pieces, Tim
                                       const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102,
                                       bool keep_gaps) {
     DeadTimeBreakdown d;
-    const auto& tx = cp2102.tx_log();
+    const auto& first_bytes = cp2102.tx_log();  // [k] motion packet k's first byte
     const auto& rx = cp2102.rx_log();
     const std::size_t moves = pieces.size();
     for (std::size_t i = 0; i + 1 < moves && i + 1 < sent.size() && i + 1 < records.size(); ++i) {
         const fpga::PacketRecord& done = records[i];
-        const std::size_t next_first = host::kInitPacketBytes + (i + 1) * host::kMotionPacketBytes;
         const fpga::PacketRecord& next = records[i + 1];
-        if (done.t_ack_start_ps < 0 || next_first >= tx.size() || sent[i + 1].t_write_ps < 0) continue;
+        if (done.t_ack_start_ps < 0 || i + 1 >= first_bytes.size() || sent[i + 1].t_write_ps < 0) continue;
+        const TimePs next_start_bit_ps = first_bytes[i + 1].t_start_bit_ps;
         // The bytes are in time order: a binary search keeps a long job's gaps linear.
         const auto ack = std::partition_point(rx.begin(), rx.end(), [&](const uart::Cp2102::RxByte& b) {
             return b.t_start_bit_ps < done.t_ack_start_ps;
@@ -72,17 +72,16 @@ DeadTimeBreakdown dead_time_breakdown(const std::vector<PieceSteps>& pieces, Tim
         g.usb_in_ps = ack->t_host_visible_ps - ack->t_stop_end_ps;
         g.job_wait_ps = sent[i + 1].wait_before_ps;
         g.host_ps = sent[i + 1].t_write_ps - ack->t_host_visible_ps - g.job_wait_ps;
-        g.usb_out_ps = tx[next_first].t_start_bit_ps - sent[i + 1].t_write_ps;
-        g.packet_wire_ps = next.t_pkt_valid_ps - tx[next_first].t_start_bit_ps;
+        g.usb_out_ps = next_start_bit_ps - sent[i + 1].t_write_ps;
+        g.packet_wire_ps = next.t_pkt_valid_ps - next_start_bit_ps;
         g.fpga_setup_ps = first_b - next.t_pkt_valid_ps;
         g.total_ps = first_b - last_a;
         add_gap(d, g, keep_gaps);
     }
     const TimePs job = t_job_end_ps - t_job_start_ps;
     if (job > 0) {
-        TimePs busy_to = 0;
+        const TimePs busy_to = cp2102.stats().tx_line_busy_ps;
         TimePs busy_from = 0;
-        for (const auto& b : tx) busy_to += b.t_stop_end_ps - b.t_start_bit_ps;
         for (const auto& b : rx) busy_from += b.t_stop_end_ps - b.t_start_bit_ps;
         d.utilisation_to_fpga_pct = 100.0 * static_cast<double>(busy_to) / static_cast<double>(job);
         d.utilisation_from_fpga_pct = 100.0 * static_cast<double>(busy_from) / static_cast<double>(job);

@@ -43,7 +43,8 @@ struct PieceSteps {
 };
 [[nodiscard]] PieceSteps piece_steps(const metrics::MoveMetrics& piece);
 
-// `pieces`: the run's executed pieces as measured (one per packet). `keep_gaps`: keep every gap's breakdown (the
+// `pieces`: the run's executed pieces as measured (one per packet). `cp2102`: its TX log thinned to each motion
+// packet's first byte (Cp2102::thin_tx_log(host::kInitPacketBytes, host::kMotionPacketBytes)). `keep_gaps`: keep every gap's breakdown (the
 // detailed report and the dead-time plot list them), not only the sums and maxima.
 DeadTimeBreakdown dead_time_breakdown(const std::vector<PieceSteps>& pieces, TimePs t_job_start_ps,
                                       TimePs t_job_end_ps, const std::vector<fpga::PacketRecord>& records,

@@ -34,21 +34,20 @@ public:
     // Hands `f` each piece not handed yet whose packet's busy fell before until_ps (none: every accepted packet's,
     // once the run has ended).
     template <typename F>
-    void time_ended(const fpga::Top& top, std::optional<TimePs> until_ps, std::vector<metrics::MoveSpec>& moves, F f) {
-        for (; m_record < top.packet_count() && m_executed < moves.size(); ++m_record) {
+    void time_ended(const fpga::Top& top, std::optional<TimePs> until_ps, CommandedMoves& moves, F f) {
+        for (; m_record < top.packet_count() && !moves.done(); ++m_record) {
             const fpga::PacketRecord r = top.packet(m_record);
             if (!r.accepted) continue;
             if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
-            metrics::MoveSpec& m = moves[m_executed++];
+            metrics::MoveSpec m = moves.next();
             m.t_begin_ps = r.t_pkt_valid_ps + clock_period_ps(top.config());
             m.t_end_ps = r.t_busy_fall_ps;
-            f(m);
+            f(std::move(m));
         }
     }
 
 private:
     std::size_t m_record = 0;
-    std::size_t m_executed = 0;
 };
 
 // send_steps.py hard-codes NUMERATOR_X = NUMERATOR_Y = 18_750_000 (seed 000 §6).
@@ -241,6 +240,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     uart::Cp2102 cp2102("cp2102", s.link);
     cp2102.txd(w.uart_rx);
     cp2102.rxd(w.uart_tx);
+    cp2102.thin_tx_log(host::kInitPacketBytes, host::kMotionPacketBytes);  // what the dead-time split reads
     host::Sender sender("host", s.sender, cp2102, packets.init, packets.motion);
     if (job.program) {
         std::vector<std::size_t> packet_moves;
@@ -269,10 +269,12 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         vcd = std::make_unique<VcdTrace>(s, traced_pins(w, s.fpga.clk_hz), machine.traced_positions());
     }
 
-    const host::Program moves_run = job.program ? *job.program : packet_moves(segments, packets, s.job_path);
-    const RunBudget budget = run_budget(s, estimate_job(moves_run, pace(s, segments.size())));
     const host::Program* program = job.program ? &*job.program : nullptr;
-    std::vector<metrics::MoveSpec> moves = commanded_moves(program, segments, s.machine, s.interpreter.start_mm);
+    const ArchPace link_pace = pace(s, segments.size());
+    const RunBudget budget =
+        run_budget(s, program ? estimate_job(*program, link_pace)
+                              : estimate_job(packet_moves(segments, packets, s.job_path), link_pace));
+    CommandedMoves moves(program, segments, s.machine, s.interpreter.start_mm);
     // The metrics stream (their inputs dropped as they are measured) unless the whole logs are asked for, or the
     // dynamic mechanics' report reads every tool sample at the end.
     // The dead-time split reads each piece's first and last STEP: kept as the stream measures the pieces.
@@ -288,7 +290,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     ExecutedPieces executed;
     const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
         if (!feed) return;
-        executed.time_ended(fpga, now_ps, moves, [&](const metrics::MoveSpec& m) { feed->add_piece(m); });
+        executed.time_ended(fpga, now_ps, moves, [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
         feed->fold(now_ps);
     });
     if (vcd) vcd->close();
@@ -296,11 +298,11 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     ArchRun run;
     record_budget(budget, run);
     metrics::RunInput& in = run.input;
-    executed.time_ended(fpga, std::nullopt, moves, [&](const metrics::MoveSpec& m) {
+    executed.time_ended(fpga, std::nullopt, moves, [&](metrics::MoveSpec m) {
         if (feed) {
-            feed->add_piece(m);
+            feed->add_piece(std::move(m));
         } else {
-            in.moves.push_back(m);
+            in.moves.push_back(std::move(m));
         }
     });
     in.t_job_start_ps = 0;
@@ -338,7 +340,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
           {"line_baud", baud.actual_bd},
           {"line_baud_error_pct", baud.error_pct},
           {"fpga_bit_cycles", s.fpga.uart_full_bit_cycles},
-          {"bytes_to_fpga", cp2102.tx_log().size()},
+          {"bytes_to_fpga", cp2102.stats().tx_bytes},
           {"bytes_from_fpga", cp2102.rx_log().size()},
           {"utilisation_to_fpga_pct", dead.utilisation_to_fpga_pct},
           {"utilisation_from_fpga_pct", dead.utilisation_from_fpga_pct}}},

@@ -18,7 +18,7 @@ constexpr TimePs kEndOfTime = std::numeric_limits<TimePs>::max();
 }  // namespace
 
 MetricsStream::MetricsStream(RunInput shape, bool detail, PieceMeasured on_piece)
-    : m_in(std::move(shape)), m_detail(detail), m_on_piece(std::move(on_piece)) {
+    : m_in(std::move(shape)), m_detail(detail), m_on_piece(std::move(on_piece)), m_laser(m_in.t_job_start_ps) {
     if (m_in.commanded || !m_in.rate_segments.empty()) {
         throw std::invalid_argument("streaming metrics: a commanded trajectory or rate segments are not streamed");
     }
@@ -107,12 +107,25 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
         m_following.add(e.following_um);
         m_slow.add(m_in.tool[i], m_in.moves[e.move].feed_mm_per_min);
         ++m_out.path.samples;
+        m_last_sample_ps = m_in.tool[i].t_ps;
     }
     if (final) m_out.path.job_end_um = r.path.job_end_um;
 
     take_edges_before(cut_ps, first_fold, r);
     m_pieces_done += cut_piece - first_piece;
-    if (!final) drop_before(cut_ps, cut_piece);
+    if (final) return;
+    drop_before(cut_ps, cut_piece);
+    // The slow stretches are known up to the last sample (the one after it may still join or split them); without
+    // samples so far nothing is folded (with none at all, the dwell is not measured).
+    if (m_in.laser && m_last_sample_ps) fold_laser(std::min(cut_ps, *m_last_sample_ps));
+}
+
+void MetricsStream::fold_laser(TimePs horizon_ps) {
+    m_laser.fold(m_in.laser->take_before(horizon_ps), m_rapid, &m_slow.so_far(), horizon_ps);
+    const auto open = std::find_if(m_rapid.begin(), m_rapid.end(),
+                                   [horizon_ps](const TimeInterval& iv) { return iv.end > horizon_ps; });
+    m_rapid.erase(m_rapid.begin(), open);
+    m_slow.drop_ending_by(horizon_ps);
 }
 
 bool MetricsStream::two_moves_pending() const {
@@ -180,7 +193,7 @@ RunMetrics MetricsStream::finish(TimePs t_job_end_ps) {
     if (m_in.laser) {
         std::optional<std::vector<TimeInterval>> slow;
         if (out.with_tool) slow = m_slow.finish();
-        out.laser = laser_result(*m_in.laser, m_in.t_job_start_ps, t_job_end_ps, m_rapid, slow);
+        out.laser = m_laser.finish(*m_in.laser, t_job_end_ps, m_rapid, slow);
     }
     return out;
 }

@@ -33,7 +33,7 @@ public:
     [[nodiscard]] RunInput& pending() { return m_in; }
     // Everything the run records before now_ps is in pending() (both pins of an axis cut at the same instant).
     void fold(TimePs now_ps);
-    // The run has ended at t_job_end_ps: the metrics of the whole run.
+    // The run has ended at t_job_end_ps (not before a piece it has begun): the metrics of the whole run.
     [[nodiscard]] RunMetrics finish(TimePs t_job_end_ps);
 
 private:
@@ -43,6 +43,8 @@ private:
     void take_edges_before(TimePs cut_ps, bool first_fold, const RunMetrics& r);
     // Drops the measured pieces but the last (a contour neighbour) and the samples but the last before cut_ps.
     void drop_before(TimePs cut_ps, std::size_t cut_piece);
+    // Folds the laser figures up to horizon_ps and drops the laser edges, rapid windows and slow stretches read.
+    void fold_laser(TimePs horizon_ps);
 
     RunInput m_in;
     bool m_detail;
@@ -61,6 +63,8 @@ private:
     TimingFold m_timing;
     std::vector<TimeInterval> m_rapid;
     SlowStretches m_slow;
+    std::optional<TimePs> m_last_sample_ps;  // the last tool sample measured
+    LaserFold m_laser;
 };
 
 }  // namespace cnc::metrics

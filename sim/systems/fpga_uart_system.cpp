@@ -286,6 +286,8 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         feed.emplace(
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
             s.detail, [&steps_of_pieces](const metrics::MoveMetrics& p) { steps_of_pieces.push_back(piece_steps(p)); });
+        feed->reserve_moves(program ? program->moves.size() : segments.size());
+        steps_of_pieces.reserve(segments.size());
     }
     ExecutedPieces executed;
     const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {

@@ -115,9 +115,10 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
     m_pieces_done += cut_piece - first_piece;
     if (final) return;
     drop_before(cut_ps, cut_piece);
-    // The slow stretches are known up to the last sample (the one after it may still join or split them); without
-    // samples so far nothing is folded (with none at all, the dwell is not measured).
-    if (m_in.laser && m_last_sample_ps) fold_laser(std::min(cut_ps, *m_last_sample_ps));
+    // The slow stretches are known up to the last sample measured, which is before the cut (the one after it may
+    // still join or split them); without samples so far nothing is folded (with none at all, the dwell is not
+    // measured).
+    if (m_in.laser && m_last_sample_ps) fold_laser(*m_last_sample_ps);
 }
 
 void MetricsStream::fold_laser(TimePs horizon_ps) {

@@ -107,32 +107,32 @@ void Top::on_cfg_valid() {
 }
 
 std::vector<PacketRecord> Top::packets() const {
+    std::vector<PacketRecord> out;
+    out.reserve(packet_count());
+    for (std::size_t i = 0; i < packet_count(); ++i) out.push_back(packet(i));
+    return out;
+}
+
+PacketRecord Top::packet(std::size_t i) const {
     // The decoder logs a packet when it schedules pkt_valid, step_gen when pkt_valid is high: a run stopped in
     // between has one decoder entry more, which is left out until step_gen has seen it.
-    const auto& motions = pkt_dec_inst.motions();
-    const auto& moves = step_gen_inst.moves();
-    std::vector<PacketRecord> out;
-    out.reserve(moves.size());
-    for (std::size_t i = 0; i < moves.size(); ++i) {
-        const auto& m = motions[i];
-        const auto& s = moves[i];
-        PacketRecord r;
-        r.t_pkt_valid_ps = m.t_pkt_valid_ps;
-        r.motion = m.fields.motion;
-        r.steps_x = m.fields.steps_x;
-        r.steps_y = m.fields.steps_y;
-        r.feed = m.fields.feed;
-        r.accepted = s.accepted;
-        r.period_x_cycles = s.periods.x_cycles;
-        r.period_y_cycles = s.periods.y_cycles;
-        r.period_overflow = s.periods.overflow;
-        r.t_run_start_ps = s.t_run_start_ps;
-        r.t_busy_fall_ps = s.t_busy_fall_ps;
-        const auto ack = m_ack_by_busy_fall.find(s.t_busy_fall_ps);
-        if (s.accepted && ack != m_ack_by_busy_fall.end()) r.t_ack_start_ps = ack->second;
-        out.push_back(r);
-    }
-    return out;
+    const auto& m = pkt_dec_inst.motions()[i];
+    const auto& s = step_gen_inst.moves()[i];
+    PacketRecord r;
+    r.t_pkt_valid_ps = m.t_pkt_valid_ps;
+    r.motion = m.fields.motion;
+    r.steps_x = m.fields.steps_x;
+    r.steps_y = m.fields.steps_y;
+    r.feed = m.fields.feed;
+    r.accepted = s.accepted;
+    r.period_x_cycles = s.periods.x_cycles;
+    r.period_y_cycles = s.periods.y_cycles;
+    r.period_overflow = s.periods.overflow;
+    r.t_run_start_ps = s.t_run_start_ps;
+    r.t_busy_fall_ps = s.t_busy_fall_ps;
+    const auto ack = m_ack_by_busy_fall.find(s.t_busy_fall_ps);
+    if (s.accepted && ack != m_ack_by_busy_fall.end()) r.t_ack_start_ps = ack->second;
+    return r;
 }
 
 FpgaStats Top::stats() const {

@@ -3,6 +3,7 @@
 // unconnected numerator path (seed Q1). LEDR/HEX are not modelled. Besides the board pins, five internal nets
 // are exported for tracing; every output must be bound (tx to a signal that starts high: the line idles high).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <systemc>
@@ -38,6 +39,9 @@ public:
 
     // One record per pkt_valid, in order, with the ACK outcome of accepted moves.
     [[nodiscard]] std::vector<PacketRecord> packets() const;
+    // The same one at a time, so that a run can read the new ones during the simulation without copying them all.
+    [[nodiscard]] std::size_t packet_count() const { return step_gen_inst.moves().size(); }
+    [[nodiscard]] PacketRecord packet(std::size_t i) const;
     [[nodiscard]] const std::vector<InitRecord>& inits() const { return m_inits; }
     [[nodiscard]] FpgaStats stats() const;
     [[nodiscard]] std::uint8_t pkt_count() const { return m_pkt_count; }  // top.v's 8-bit completed-move count

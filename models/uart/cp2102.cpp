@@ -90,7 +90,11 @@ void Cp2102::tx_thread() {
             m_tx_fifo.pop_front();
             const TimePs t_start = t_burst + m_clk.bit_edge(j * bits);
             const TimePs t_end = t_burst + m_clk.bit_edge((j + 1) * bits);
-            m_tx_log.push_back({b.byte, b.t_write_ps, b.t_usb_ps, t_start, t_end});
+            const auto sent = static_cast<std::size_t>(m_stats.tx_bytes++);
+            m_stats.tx_line_busy_ps += t_end - t_start;
+            if (sent >= m_tx_log_first && (sent - m_tx_log_first) % m_tx_log_stride == 0) {
+                m_tx_log.push_back({b.byte, b.t_write_ps, b.t_usb_ps, t_start, t_end});
+            }
             for (const Edge& e : frame_edges(b.byte, t_start, m_clk, m_cfg.format)) {
                 wait_until(e.t_ps);
                 txd.write(e.level);

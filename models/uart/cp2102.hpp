@@ -34,6 +34,8 @@ struct Cp2102Config {
 };
 
 struct Cp2102Stats {
+    std::int64_t tx_bytes = 0;           // bytes whose start bit went out on TXD
+    TimePs tx_line_busy_ps = 0;          // their frames' time on TXD, start bit to end of stop bit
     std::int64_t tx_overflow_bytes = 0;  // host bytes dropped because the TX FIFO was full
     std::int64_t rx_overflow_bytes = 0;  // received bytes dropped because the RX FIFO was full
     std::int64_t framing_errors = 0;     // frames dropped for a low stop bit (or a parity error)
@@ -77,6 +79,13 @@ public:
     void reset_input_buffer() { m_host_rx.clear(); }
     [[nodiscard]] const sc_core::sc_event& data_event() const { return m_data_ev; }
 
+    // Keeps in tx_log() only the bytes sent at indices first, first + stride, ... (counted over every byte sent,
+    // as Cp2102Stats::tx_bytes): a reader that needs one byte per packet (fpga-uart's dead-time split reads each
+    // packet's first) keeps a long job's log short. Call before the simulation starts.
+    void thin_tx_log(std::size_t first, std::size_t stride) {
+        m_tx_log_first = first;
+        m_tx_log_stride = stride;
+    }
     [[nodiscard]] const std::vector<TxByte>& tx_log() const { return m_tx_log; }
     [[nodiscard]] const std::vector<RxByte>& rx_log() const { return m_rx_log; }
     [[nodiscard]] const Cp2102Baud& baud() const { return m_baud; }
@@ -120,6 +129,8 @@ private:
     sc_core::sc_event m_data_ev;
 
     std::vector<TxByte> m_tx_log;
+    std::size_t m_tx_log_first = 0;
+    std::size_t m_tx_log_stride = 1;  // every byte
     std::vector<RxByte> m_rx_log;
     Cp2102Stats m_stats;
 };

@@ -79,27 +79,58 @@ std::vector<TimeInterval> SlowStretches::finish() {
     return std::move(m_slow);
 }
 
+void SlowStretches::drop_ending_by(TimePs t_ps) {
+    const auto kept = std::find_if(m_slow.begin(), m_slow.end(), [t_ps](const TimeInterval& iv) { return iv.end > t_ps; });
+    m_slow.erase(m_slow.begin(), kept);
+}
+
+void LaserFold::fold(const EdgeLog& laser, const std::vector<TimeInterval>& rapid,
+                     const std::vector<TimeInterval>* slow, TimePs hi_ps) {
+    if (hi_ps < m_lo_ps) return;
+    // The on stretches lie inside the window, so each intersection counts only the window's part of an interval.
+    const std::vector<TimeInterval> on = on_intervals(laser, m_lo_ps, hi_ps);
+    m_lo_ps = hi_ps;
+    m_on_ps += total(on);
+    m_on_in_rapid_ps += total(intersect(on, rapid));
+    if (!slow) return;
+    for (const TimeInterval& iv : intersect(on, *slow)) {
+        append_merged(m_open, iv);
+        if (m_open.size() > 1) close_first_dwell();
+    }
+}
+
+void LaserFold::close_first_dwell() {
+    const TimeInterval iv = m_open.front();
+    m_open.erase(m_open.begin());
+    m_dwell_ps += iv.end - iv.begin;
+    ++m_dwell_count;
+    // The first of the longest, as std::max_element over the stretches in time order.
+    if (!m_longest || iv.end - iv.begin > m_longest->end - m_longest->begin) m_longest = iv;
+}
+
+LaserResult LaserFold::finish(const EdgeLog& laser, TimePs t_job_end_ps,
+                              const std::optional<std::vector<TimeInterval>>& rapid,
+                              const std::optional<std::vector<TimeInterval>>& slow) {
+    fold(laser, rapid.value_or(std::vector<TimeInterval>{}), slow ? &*slow : nullptr, t_job_end_ps);
+    if (!m_open.empty()) close_first_dwell();
+    LaserResult out;
+    out.on_ms = ms(m_on_ps);
+    if (!rapid) return out;
+    out.on_in_rapid_ms = ms(m_on_in_rapid_ps);
+    if (!slow) return out;
+    out.dwell_ms = ms(m_dwell_ps);
+    out.dwell_intervals = m_dwell_count;
+    if (m_longest) {
+        out.dwell_longest_ms = ms(m_longest->end - m_longest->begin);
+        out.dwell_longest_at_s = ps_to_s(m_longest->begin);
+    }
+    return out;
+}
+
 LaserResult laser_result(const EdgeLog& laser, TimePs t_job_start_ps, TimePs t_job_end_ps,
                          const std::optional<std::vector<TimeInterval>>& rapid,
                          const std::optional<std::vector<TimeInterval>>& slow) {
-    LaserResult out;
-    const std::vector<TimeInterval> on = on_intervals(laser, t_job_start_ps, t_job_end_ps);
-    out.on_ms = ms(total(on));
-    if (!rapid) return out;
-    out.on_in_rapid_ms = ms(total(intersect(on, *rapid)));
-    if (!slow) return out;
-    std::vector<TimeInterval> dwell;
-    for (const TimeInterval& iv : intersect(on, *slow)) append_merged(dwell, iv);
-    out.dwell_ms = ms(total(dwell));
-    out.dwell_intervals = dwell.size();
-    const auto longest = std::max_element(dwell.begin(), dwell.end(), [](const TimeInterval& a, const TimeInterval& b) {
-        return a.end - a.begin < b.end - b.begin;
-    });
-    if (longest != dwell.end()) {
-        out.dwell_longest_ms = ms(longest->end - longest->begin);
-        out.dwell_longest_at_s = ps_to_s(longest->begin);
-    }
-    return out;
+    return LaserFold(t_job_start_ps).finish(laser, t_job_end_ps, rapid, slow);
 }
 
 std::optional<LaserResult> compute_laser(const RunInput& in, const EdgeIndex& idx) {

@@ -39,6 +39,9 @@ public:
     void add(const ToolSample& sample, double feed_mm_per_min);
     // Sorted, disjoint; before the first and after the last sample the tool is still. Empty without samples.
     [[nodiscard]] std::vector<TimeInterval> finish();
+    // The stretches so far (up to the last sample), and dropping those that end by t_ps (LaserFold has read them).
+    [[nodiscard]] const std::vector<TimeInterval>& so_far() const { return m_slow; }
+    void drop_ending_by(TimePs t_ps);
 
 private:
     std::vector<TimeInterval> m_slow;
@@ -51,6 +54,36 @@ private:
 [[nodiscard]] LaserResult laser_result(const EdgeLog& laser, TimePs t_job_start_ps, TimePs t_job_end_ps,
                                        const std::optional<std::vector<TimeInterval>>& rapid,
                                        const std::optional<std::vector<TimeInterval>>& slow);
+
+// laser_result window by window (the streaming metrics; laser_result is the one-window case): each window's laser
+// edges, and every rapid window and slow stretch that may overlap it, are folded, so that neither the laser log nor
+// the intervals need be kept. Carried: the totals, the dwell stretch that may still grow into the next window, the
+// number of the closed ones and the longest.
+class LaserFold {
+public:
+    explicit LaserFold(TimePs t_job_start_ps) : m_lo_ps(t_job_start_ps) {}
+    // The window [last horizon, hi_ps): `laser` holds its edges (initial: the level at its start); `rapid` and
+    // `slow` every interval that begins before hi_ps and has not ended by the last horizon (slow: null without tool
+    // samples, then no dwell is measured). hi_ps must not pass the job's end; a window that ends before the last
+    // horizon is empty.
+    void fold(const EdgeLog& laser, const std::vector<TimeInterval>& rapid, const std::vector<TimeInterval>* slow,
+              TimePs hi_ps);
+    // The last window, to the job's end; `rapid` none: the run has no moves (no rapid or dwell figure).
+    [[nodiscard]] LaserResult finish(const EdgeLog& laser, TimePs t_job_end_ps,
+                                     const std::optional<std::vector<TimeInterval>>& rapid,
+                                     const std::optional<std::vector<TimeInterval>>& slow);
+
+private:
+    void close_first_dwell();
+
+    TimePs m_lo_ps;
+    TimePs m_on_ps = 0;
+    TimePs m_on_in_rapid_ps = 0;
+    TimePs m_dwell_ps = 0;           // closed stretches
+    std::size_t m_dwell_count = 0;   // closed stretches
+    std::optional<TimeInterval> m_longest;
+    std::vector<TimeInterval> m_open;  // the last dwell stretch (at most one): the next window's may join it
+};
 
 // Tool speed is piecewise constant between consecutive tool samples (distance / time); a stretch is
 // slow when that speed is zero or below kDwellSpeedFraction of the F of the move active at its start.

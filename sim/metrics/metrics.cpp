@@ -26,7 +26,7 @@ AxisMetrics axis_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t a
     am.unattributed_edges = idx.unattributed[a];
     am.runs = axis_runs(in, idx, a);
     am.driver = check_driver_timing(trace.step, trace.dir, in.limits);
-    finish_axis(am, trace.steps_per_mm);
+    finish_axis(am, trace.steps_per_mm, summarise_runs(am.runs));
     return am;
 }
 
@@ -86,12 +86,12 @@ MoveMetrics programmed_metrics(const RunInput& in, const std::vector<MoveMetrics
 
 }  // namespace
 
-void finish_axis(AxisMetrics& am, double steps_per_mm) {
+void finish_axis(AxisMetrics& am, double steps_per_mm, const AxisPulseSummary& pulse) {
     if (steps_per_mm > 0.0) {
         am.travel_mm = static_cast<double>(am.rising_edges) / steps_per_mm;
         am.net_mm = static_cast<double>(am.net_steps) / steps_per_mm;
     }
-    am.pulse = summarise_runs(am.runs);
+    am.pulse = pulse;
 }
 
 void add_axis_totals(PulseTotals& t, const AxisMetrics& am) {

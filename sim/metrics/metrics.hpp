@@ -75,9 +75,9 @@ struct RunMetrics {
     std::optional<LaserResult> laser;
 };
 
-// Shared by compute_metrics and MetricsStream: an axis's distances and pulse summary from its counts and runs, and
-// the run's worst figures over the axes.
-void finish_axis(AxisMetrics& am, double steps_per_mm);
+// Shared by compute_metrics and MetricsStream: an axis's distances from its counts and its pulse summary (of its
+// runs, which the streaming metrics keep only for the detailed report), and the run's worst figures over the axes.
+void finish_axis(AxisMetrics& am, double steps_per_mm, const AxisPulseSummary& pulse);
 void add_axis_totals(PulseTotals& t, const AxisMetrics& am);
 
 // Throws std::invalid_argument on inconsistent input (edge logs, moves or tool samples out of time order).

@@ -17,7 +17,8 @@ constexpr TimePs kEndOfTime = std::numeric_limits<TimePs>::max();
 
 }  // namespace
 
-MetricsStream::MetricsStream(RunInput shape) : m_in(std::move(shape)) {
+MetricsStream::MetricsStream(RunInput shape, bool detail, PieceMeasured on_piece)
+    : m_in(std::move(shape)), m_detail(detail), m_on_piece(std::move(on_piece)), m_laser(m_in.t_job_start_ps) {
     if (m_in.commanded || !m_in.rate_segments.empty()) {
         throw std::invalid_argument("streaming metrics: a commanded trajectory or rate segments are not streamed");
     }
@@ -31,6 +32,7 @@ MetricsStream::MetricsStream(RunInput shape) : m_in(std::move(shape)) {
         m_driver.emplace_back(m_in.limits, trace.step.initial, trace.dir.initial);
     }
     m_rising_done.assign(m_in.axes.size(), 0);
+    m_pulse.resize(m_in.axes.size());
 }
 
 void MetricsStream::fold(TimePs now_ps) {
@@ -78,7 +80,8 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
         }
         keep_max(m_out.path.endpoint_vs_command_max_um, piece.path.endpoint_vs_command_um);
         keep_max(m_out.path.endpoint_vs_program_max_um, piece.path.endpoint_vs_program_um);
-        m_out.pieces.push_back(piece);
+        if (m_on_piece) m_on_piece(piece);
+        if (m_detail) m_out.pieces.push_back(piece);
     }
     for (std::size_t g = first_group; g < end_group; ++g) {
         const MoveMetrics& mm = r.moves[g];
@@ -91,7 +94,8 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
             run.move = m_pieces_done + (*run.move - first_piece);
             run.edges_range.begin += m_rising_done[a];
             run.edges_range.end += m_rising_done[a];
-            m_axes[a].runs.push_back(run);
+            m_pulse[a].add(run);
+            if (m_detail) m_axes[a].runs.push_back(run);
         }
     }
 
@@ -103,12 +107,26 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
         m_following.add(e.following_um);
         m_slow.add(m_in.tool[i], m_in.moves[e.move].feed_mm_per_min);
         ++m_out.path.samples;
+        m_last_sample_ps = m_in.tool[i].t_ps;
     }
     if (final) m_out.path.job_end_um = r.path.job_end_um;
 
     take_edges_before(cut_ps, first_fold, r);
     m_pieces_done += cut_piece - first_piece;
-    if (!final) drop_before(cut_ps, cut_piece);
+    if (final) return;
+    drop_before(cut_ps, cut_piece);
+    // The slow stretches are known up to the last sample measured, which is before the cut (the one after it may
+    // still join or split them); without samples so far nothing is folded (with none at all, the dwell is not
+    // measured).
+    if (m_in.laser && m_last_sample_ps) fold_laser(*m_last_sample_ps);
+}
+
+void MetricsStream::fold_laser(TimePs horizon_ps) {
+    m_laser.fold(m_in.laser->take_before(horizon_ps), m_rapid, &m_slow.so_far(), horizon_ps);
+    const auto open = std::find_if(m_rapid.begin(), m_rapid.end(),
+                                   [horizon_ps](const TimeInterval& iv) { return iv.end > horizon_ps; });
+    m_rapid.erase(m_rapid.begin(), open);
+    m_slow.drop_ending_by(horizon_ps);
 }
 
 bool MetricsStream::two_moves_pending() const {
@@ -164,7 +182,7 @@ RunMetrics MetricsStream::finish(TimePs t_job_end_ps) {
     for (std::size_t a = 0; a < m_axes.size(); ++a) {
         AxisMetrics& am = m_axes[a];
         am.driver = m_driver[a].report();
-        finish_axis(am, m_in.axes[a].steps_per_mm);
+        finish_axis(am, m_in.axes[a].steps_per_mm, m_pulse[a].summary());
         add_axis_totals(out.pulse, am);
         out.axes.push_back(std::move(am));
     }
@@ -176,7 +194,7 @@ RunMetrics MetricsStream::finish(TimePs t_job_end_ps) {
     if (m_in.laser) {
         std::optional<std::vector<TimeInterval>> slow;
         if (out.with_tool) slow = m_slow.finish();
-        out.laser = laser_result(*m_in.laser, m_in.t_job_start_ps, t_job_end_ps, m_rapid, slow);
+        out.laser = m_laser.finish(*m_in.laser, t_job_end_ps, m_rapid, slow);
     }
     return out;
 }

@@ -4,6 +4,7 @@
 // neighbours) and their edges and samples are dropped. finish() gives what compute_metrics gives on the whole run.
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -14,20 +15,28 @@
 
 namespace cnc::metrics {
 
+// Each executed piece as it is measured, in order (what an architecture reads of the pieces beyond the report).
+using PieceMeasured = std::function<void(const MoveMetrics&)>;
+
 class MetricsStream {
 public:
     // `shape`: the run's axes (names, pins and their initial levels, steps per mm, polarity), its laser pin, driver
     // limits and job start, usually with no edges, samples or moves yet. Throws std::invalid_argument with a
     // commanded trajectory or rate segments (not streamed yet: spi-fpga computes its metrics at the end).
-    explicit MetricsStream(RunInput shape);
+    // `detail`: keep the per-piece records and the pulse runs, which only the detailed report lists (it grows with
+    // them anyway); without, finish() gives their summaries only (RunMetrics::pieces and AxisMetrics::runs empty).
+    MetricsStream(RunInput shape, bool detail, PieceMeasured on_piece = {});
 
+    // The number of programmed moves the run will have, when known: their records are then never copied while the
+    // list grows (a long job's largest block: at the copy it is held one and a half times).
+    void reserve_moves(std::size_t programmed_moves) { m_out.moves.reserve(programmed_moves); }
     // Where the run appends its edges, tool samples, laser edges and pieces in time order. A piece is appended when
     // it begins; its t_end_ps must be set before now_ps passes it. t_job_end_ps: the job's end once it is known,
     // until then a time not before now_ps.
     [[nodiscard]] RunInput& pending() { return m_in; }
     // Everything the run records before now_ps is in pending() (both pins of an axis cut at the same instant).
     void fold(TimePs now_ps);
-    // The run has ended at t_job_end_ps: the metrics of the whole run.
+    // The run has ended at t_job_end_ps (not before a piece it has begun): the metrics of the whole run.
     [[nodiscard]] RunMetrics finish(TimePs t_job_end_ps);
 
 private:
@@ -37,14 +46,19 @@ private:
     void take_edges_before(TimePs cut_ps, bool first_fold, const RunMetrics& r);
     // Drops the measured pieces but the last (a contour neighbour) and the samples but the last before cut_ps.
     void drop_before(TimePs cut_ps, std::size_t cut_piece);
+    // Folds the laser figures up to horizon_ps and drops the laser edges, rapid windows and slow stretches read.
+    void fold_laser(TimePs horizon_ps);
 
     RunInput m_in;
+    bool m_detail;
+    PieceMeasured m_on_piece;
     bool m_has_prev = false;          // m_in.moves.front() is the last measured piece, kept as a contour neighbour
     bool m_sample_measured = false;   // m_in.tool.front() was measured, kept as the sample before the window
     std::size_t m_pieces_done = 0;    // measured pieces
     std::size_t m_moves_done = 0;     // measured programmed moves
     std::vector<std::size_t> m_rising_done;  // [axis] rising edges dropped
-    std::vector<AxisMetrics> m_axes;         // counts, runs, sync of the measured part
+    std::vector<AxisMetrics> m_axes;         // counts, runs (detail), sync of the measured part
+    std::vector<PulseSummaryFold> m_pulse;   // [axis]
     std::vector<DriverTimingStream> m_driver;
     std::optional<TimePs> m_first_edge_ps, m_last_edge_ps;  // any axis
     RunMetrics m_out;                 // pieces, moves, sync and endpoint extrema so far
@@ -52,6 +66,8 @@ private:
     TimingFold m_timing;
     std::vector<TimeInterval> m_rapid;
     SlowStretches m_slow;
+    std::optional<TimePs> m_last_sample_ps;  // the last tool sample measured
+    LaserFold m_laser;
 };
 
 }  // namespace cnc::metrics

@@ -192,30 +192,31 @@ std::vector<PulseRun> axis_runs(const RunInput& in, const EdgeIndex& idx, std::s
     return runs;
 }
 
-AxisPulseSummary summarise_runs(const std::vector<PulseRun>& runs) {
-    AxisPulseSummary s;
-    s.runs = runs.size();
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-        const PulseRun& r = runs[i];
-        if (r.period) {
-            ++s.runs_measured;
-            if (!s.jitter_std_max_ns || r.period->std_ns > *s.jitter_std_max_ns) {
-                s.jitter_std_max_ns = r.period->std_ns;
-                s.worst_jitter_run = i;
-            }
-            keep_max(s.jitter_pp_max_ns, r.period->pp_ns);
+void PulseSummaryFold::add(const PulseRun& r) {
+    const std::size_t i = m_out.runs++;
+    if (r.period) {
+        ++m_out.runs_measured;
+        if (!m_out.jitter_std_max_ns || r.period->std_ns > *m_out.jitter_std_max_ns) {
+            m_out.jitter_std_max_ns = r.period->std_ns;
+            m_out.worst_jitter_run = i;
         }
-        if (r.tie) {
-            if (!s.tie_max_ns || r.tie->max_abs_ns > *s.tie_max_ns) {
-                s.tie_max_ns = r.tie->max_abs_ns;
-                s.worst_tie_run = i;
-            }
-            keep_max(s.tie_rms_max_ns, r.tie->rms_ns);
-            if (r.tie->period_ns > 0.0) keep_max(s.tie_max_period_frac, r.tie->max_abs_ns / r.tie->period_ns);
-        }
-        keep_worst_signed(s.rate_error_worst_pct, r.rate_error_pct);
+        keep_max(m_out.jitter_pp_max_ns, r.period->pp_ns);
     }
-    return s;
+    if (r.tie) {
+        if (!m_out.tie_max_ns || r.tie->max_abs_ns > *m_out.tie_max_ns) {
+            m_out.tie_max_ns = r.tie->max_abs_ns;
+            m_out.worst_tie_run = i;
+        }
+        keep_max(m_out.tie_rms_max_ns, r.tie->rms_ns);
+        if (r.tie->period_ns > 0.0) keep_max(m_out.tie_max_period_frac, r.tie->max_abs_ns / r.tie->period_ns);
+    }
+    keep_worst_signed(m_out.rate_error_worst_pct, r.rate_error_pct);
+}
+
+AxisPulseSummary summarise_runs(const std::vector<PulseRun>& runs) {
+    PulseSummaryFold fold;
+    for (const PulseRun& r : runs) fold.add(r);
+    return fold.summary();
 }
 
 }  // namespace cnc::metrics

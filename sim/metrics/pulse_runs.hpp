@@ -67,4 +67,15 @@ struct AxisPulseSummary {
 [[nodiscard]] std::vector<PulseRun> axis_runs(const RunInput& in, const EdgeIndex& idx, std::size_t axis);
 [[nodiscard]] AxisPulseSummary summarise_runs(const std::vector<PulseRun>& runs);
 
+// The summary folded run by run in order, so that the streaming metrics need not keep the runs (summarise_runs is
+// the one-fold case).
+class PulseSummaryFold {
+public:
+    void add(const PulseRun& r);
+    [[nodiscard]] const AxisPulseSummary& summary() const { return m_out; }
+
+private:
+    AxisPulseSummary m_out;
+};
+
 }  // namespace cnc::metrics

@@ -31,11 +31,15 @@ struct TimeSeries {
 struct ArchRun {
     metrics::RunInput input;  // empty logs and samples when the metrics streamed (`metrics` set)
     std::optional<metrics::RunMetrics> metrics;  // computed by the system itself; else run.cpp computes them from input
-    std::map<std::string, EdgeLog> lines;               // other recorded pins (busy, UART lines), by name
+    // Other recorded pins (busy, UART lines), by name; fpga-uart records them only when the whole logs are kept
+    // (Scenario::keep_run_input).
+    std::map<std::string, EdgeLog> lines;
     nlohmann::json details = nlohmann::json::object();  // architecture section of the JSON report
     std::string details_text;                           // the same, for the summary
     std::vector<Warning> warnings;  // grouped by kind in the reports (run.cpp)
-    std::vector<GapCauses> gap_causes;  // empty: the architecture reports no split (the plots draw whole gaps)
+    // Empty: the architecture reports no split (the plots draw whole gaps); fpga-uart's only for the plots
+    // (Scenario::keep_run_input).
+    std::vector<GapCauses> gap_causes;
     std::vector<TimeSeries> series;     // plotted per quantity when present (sim/plots/plot_data.hpp)
     bool ok = true;
     std::string failure;

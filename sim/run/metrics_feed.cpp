@@ -24,12 +24,12 @@ void append(EdgeLog& to, const EdgeLog& from) { to.edges.insert(to.edges.end(), 
 }  // namespace
 
 MetricsFeed::MetricsFeed(EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin,
-                         TakeSamplesBefore take_samples)
+                         TakeSamplesBefore take_samples, bool detail, metrics::PieceMeasured on_piece)
     : m_rec(rec),
       m_axes(axes),
       m_laser_pin(laser_pin),
       m_take_samples(std::move(take_samples)),
-      m_stream(shape(rec, axes, laser_pin)) {}
+      m_stream(shape(rec, axes, laser_pin), detail, std::move(on_piece)) {}
 
 void MetricsFeed::take_until(TimePs t_ps) {
     metrics::RunInput& p = m_stream.pending();

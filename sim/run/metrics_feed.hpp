@@ -24,10 +24,12 @@ using TakeSamplesBefore = std::function<std::vector<ToolSample>(TimePs)>;
 
 class MetricsFeed {
 public:
-    // Before the simulation starts: the recorder's logs give the pins' initial levels.
+    // Before the simulation starts: the recorder's logs give the pins' initial levels. `detail`, `on_piece`: as
+    // metrics::MetricsStream's.
     MetricsFeed(EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin,
-                TakeSamplesBefore take_samples);
+                TakeSamplesBefore take_samples, bool detail, metrics::PieceMeasured on_piece = {});
 
+    void reserve_moves(std::size_t programmed_moves) { m_stream.reserve_moves(programmed_moves); }
     // A piece that began, in execution order, with its t_end_ps set once it has ended.
     void add_piece(metrics::MoveSpec piece) { m_stream.pending().moves.push_back(std::move(piece)); }
     // The simulation has reached now_ps (the job still runs).

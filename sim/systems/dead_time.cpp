@@ -11,17 +11,13 @@ namespace cnc::sim {
 
 namespace {
 
-double mean_ms(const std::vector<GapBreakdown>& gaps, TimePs GapBreakdown::*part) {
-    if (gaps.empty()) return 0.0;
-    double sum = 0.0;
-    for (const GapBreakdown& g : gaps) sum += static_cast<double>(g.*part);
-    return sum / static_cast<double>(gaps.size()) / static_cast<double>(kPsPerMs);
+double mean_ms(const DeadTimeBreakdown& d, TimePs GapBreakdown::*part) {
+    if (d.gap_count == 0) return 0.0;
+    return static_cast<double>(d.sum.*part) / static_cast<double>(d.gap_count) / static_cast<double>(kPsPerMs);
 }
 
-double max_ms(const std::vector<GapBreakdown>& gaps, TimePs GapBreakdown::*part) {
-    TimePs m = 0;
-    for (const GapBreakdown& g : gaps) m = std::max(m, g.*part);
-    return static_cast<double>(m) / static_cast<double>(kPsPerMs);
+double max_ms(const DeadTimeBreakdown& d, TimePs GapBreakdown::*part) {
+    return static_cast<double>(d.max.*part) / static_cast<double>(kPsPerMs);
 }
 
 struct Part {
@@ -35,28 +31,40 @@ constexpr Part kParts[] = {{"step_tail", &GapBreakdown::step_tail_ps},     {"ack
                            {"usb_out", &GapBreakdown::usb_out_ps},         {"packet_wire", &GapBreakdown::packet_wire_ps},
                            {"fpga_setup", &GapBreakdown::fpga_setup_ps},   {"total", &GapBreakdown::total_ps}};
 
+void add_gap(DeadTimeBreakdown& d, const GapBreakdown& g, bool keep_gaps) {
+    ++d.gap_count;
+    for (const Part& p : kParts) {
+        d.sum.*p.field += g.*p.field;
+        d.max.*p.field = std::max(d.max.*p.field, g.*p.field);
+    }
+    if (keep_gaps) d.gaps.push_back(g);
+}
+
 }  // namespace
 
-DeadTimeBreakdown dead_time_breakdown(const std::vector<metrics::MoveMetrics>& pieces, TimePs t_job_start_ps,
+PieceSteps piece_steps(const metrics::MoveMetrics& piece) { return {piece.t_first_edge_ps, piece.t_last_edge_ps}; }
+
+DeadTimeBreakdown dead_time_breakdown(const std::vector<PieceSteps>& pieces, TimePs t_job_start_ps,
                                       TimePs t_job_end_ps, const std::vector<fpga::PacketRecord>& records,
-                                      const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102) {
+                                      const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102,
+                                      bool keep_gaps) {
     DeadTimeBreakdown d;
-    const auto& tx = cp2102.tx_log();
+    const auto& first_bytes = cp2102.tx_log();  // [k] motion packet k's first byte
     const auto& rx = cp2102.rx_log();
     const std::size_t moves = pieces.size();
     for (std::size_t i = 0; i + 1 < moves && i + 1 < sent.size() && i + 1 < records.size(); ++i) {
         const fpga::PacketRecord& done = records[i];
-        const std::size_t next_first = host::kInitPacketBytes + (i + 1) * host::kMotionPacketBytes;
         const fpga::PacketRecord& next = records[i + 1];
-        if (done.t_ack_start_ps < 0 || next_first >= tx.size() || sent[i + 1].t_write_ps < 0) continue;
+        if (done.t_ack_start_ps < 0 || i + 1 >= first_bytes.size() || sent[i + 1].t_write_ps < 0) continue;
+        const TimePs next_start_bit_ps = first_bytes[i + 1].t_start_bit_ps;
         // The bytes are in time order: a binary search keeps a long job's gaps linear.
         const auto ack = std::partition_point(rx.begin(), rx.end(), [&](const uart::Cp2102::RxByte& b) {
             return b.t_start_bit_ps < done.t_ack_start_ps;
         });
         if (ack == rx.end()) continue;
-        if (!pieces[i].t_last_edge_ps || !pieces[i + 1].t_first_edge_ps) continue;
-        const TimePs last_a = *pieces[i].t_last_edge_ps;
-        const TimePs first_b = *pieces[i + 1].t_first_edge_ps;
+        if (!pieces[i].t_last_ps || !pieces[i + 1].t_first_ps) continue;
+        const TimePs last_a = *pieces[i].t_last_ps;
+        const TimePs first_b = *pieces[i + 1].t_first_ps;
         GapBreakdown g;
         g.after_move = static_cast<int>(i) + 1;
         g.step_tail_ps = done.t_busy_fall_ps - last_a;
@@ -64,17 +72,16 @@ DeadTimeBreakdown dead_time_breakdown(const std::vector<metrics::MoveMetrics>& p
         g.usb_in_ps = ack->t_host_visible_ps - ack->t_stop_end_ps;
         g.job_wait_ps = sent[i + 1].wait_before_ps;
         g.host_ps = sent[i + 1].t_write_ps - ack->t_host_visible_ps - g.job_wait_ps;
-        g.usb_out_ps = tx[next_first].t_start_bit_ps - sent[i + 1].t_write_ps;
-        g.packet_wire_ps = next.t_pkt_valid_ps - tx[next_first].t_start_bit_ps;
+        g.usb_out_ps = next_start_bit_ps - sent[i + 1].t_write_ps;
+        g.packet_wire_ps = next.t_pkt_valid_ps - next_start_bit_ps;
         g.fpga_setup_ps = first_b - next.t_pkt_valid_ps;
         g.total_ps = first_b - last_a;
-        d.gaps.push_back(g);
+        add_gap(d, g, keep_gaps);
     }
     const TimePs job = t_job_end_ps - t_job_start_ps;
     if (job > 0) {
-        TimePs busy_to = 0;
+        const TimePs busy_to = cp2102.stats().tx_line_busy_ps;
         TimePs busy_from = 0;
-        for (const auto& b : tx) busy_to += b.t_stop_end_ps - b.t_start_bit_ps;
         for (const auto& b : rx) busy_from += b.t_stop_end_ps - b.t_start_bit_ps;
         d.utilisation_to_fpga_pct = 100.0 * static_cast<double>(busy_to) / static_cast<double>(job);
         d.utilisation_from_fpga_pct = 100.0 * static_cast<double>(busy_from) / static_cast<double>(job);
@@ -86,10 +93,10 @@ nlohmann::json to_json(const DeadTimeBreakdown& d, bool detail) {
     nlohmann::json mean = nlohmann::json::object();
     nlohmann::json max = nlohmann::json::object();
     for (const Part& p : kParts) {
-        mean[std::string(p.name) + "_ms"] = mean_ms(d.gaps, p.field);
-        max[std::string(p.name) + "_ms"] = max_ms(d.gaps, p.field);
+        mean[std::string(p.name) + "_ms"] = mean_ms(d, p.field);
+        max[std::string(p.name) + "_ms"] = max_ms(d, p.field);
     }
-    nlohmann::json j = {{"gaps", d.gaps.size()}, {"mean", mean}, {"max", max}};
+    nlohmann::json j = {{"gaps", d.gap_count}, {"mean", mean}, {"max", max}};
     if (!detail) return j;
     nlohmann::json gaps = nlohmann::json::array();
     for (const GapBreakdown& g : d.gaps) {
@@ -116,11 +123,11 @@ std::vector<GapCauses> gap_causes(const DeadTimeBreakdown& d) {
 }
 
 std::string summary_text(const DeadTimeBreakdown& d) {
-    std::string out = "  dead time between moves (" + std::to_string(d.gaps.size()) + " gaps), ms:   mean      max\n";
+    std::string out = "  dead time between moves (" + std::to_string(d.gap_count) + " gaps), ms:   mean      max\n";
     for (const Part& p : kParts) {
         char line[96];
-        std::snprintf(line, sizeof line, "    %-12s %28.4f %8.4f\n", p.name, mean_ms(d.gaps, p.field),
-                      max_ms(d.gaps, p.field));
+        std::snprintf(line, sizeof line, "    %-12s %28.4f %8.4f\n", p.name, mean_ms(d, p.field),
+                      max_ms(d, p.field));
         out += line;
     }
     char util[96];

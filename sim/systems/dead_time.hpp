@@ -1,6 +1,8 @@
 // Where the dead time between two fpga-uart moves goes: from the last STEP of one move to the first STEP of
 // the next, split at every hand-over of the stop-and-wait loop (seed 000 §4.4). The parts add up exactly.
 #pragma once
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,20 +30,31 @@ struct GapBreakdown {
 };
 
 struct DeadTimeBreakdown {
-    std::vector<GapBreakdown> gaps;
+    std::size_t gap_count = 0;
+    GapBreakdown sum, max;            // each part summed and at its largest over the gaps (after_move unused)
+    std::vector<GapBreakdown> gaps;   // every gap, when kept (a long job has one per packet)
     double utilisation_to_fpga_pct = 0.0;    // host -> FPGA line busy time over the job time
     double utilisation_from_fpga_pct = 0.0;
 };
 
-// `pieces`: the run's executed pieces as measured (metrics::RunMetrics::pieces, one per packet), whose first and
-// last STEP rises bound the gaps.
-DeadTimeBreakdown dead_time_breakdown(const std::vector<metrics::MoveMetrics>& pieces, TimePs t_job_start_ps,
+// An executed piece's first and last STEP rise on any axis (none: it stepped no axis), which bound the gaps.
+struct PieceSteps {
+    std::optional<TimePs> t_first_ps, t_last_ps;
+};
+[[nodiscard]] PieceSteps piece_steps(const metrics::MoveMetrics& piece);
+
+// `pieces`: the run's executed pieces as measured (one per packet). `cp2102`: its TX log thinned to each motion
+// packet's first byte (Cp2102::thin_tx_log(host::kInitPacketBytes, host::kMotionPacketBytes)). `keep_gaps`: keep every gap's breakdown (the
+// detailed report and the dead-time plot list them), not only the sums and maxima.
+DeadTimeBreakdown dead_time_breakdown(const std::vector<PieceSteps>& pieces, TimePs t_job_start_ps,
                                       TimePs t_job_end_ps, const std::vector<fpga::PacketRecord>& records,
-                                      const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102);
-// `detail`: with every gap's breakdown (per_gap); without, the mean and the max of each part.
+                                      const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102,
+                                      bool keep_gaps);
+// `detail`: with every gap's breakdown (per_gap: the gaps must have been kept); without, the mean and the max of
+// each part.
 nlohmann::json to_json(const DeadTimeBreakdown& d, bool detail);
 std::string summary_text(const DeadTimeBreakdown& d);
-// The same split per gap for the dead-time plot.
+// The same split per gap for the dead-time plot (the gaps must have been kept).
 std::vector<GapCauses> gap_causes(const DeadTimeBreakdown& d);
 
 }  // namespace cnc::sim

@@ -34,22 +34,20 @@ public:
     // Hands `f` each piece not handed yet whose packet's busy fell before until_ps (none: every accepted packet's,
     // once the run has ended).
     template <typename F>
-    void time_ended(const std::vector<fpga::PacketRecord>& records, const fpga::FpgaConfig& fpga,
-                    std::optional<TimePs> until_ps, std::vector<metrics::MoveSpec>& moves, F f) {
-        for (; m_record < records.size() && m_executed < moves.size(); ++m_record) {
-            const fpga::PacketRecord& r = records[m_record];
+    void time_ended(const fpga::Top& top, std::optional<TimePs> until_ps, CommandedMoves& moves, F f) {
+        for (; m_record < top.packet_count() && !moves.done(); ++m_record) {
+            const fpga::PacketRecord r = top.packet(m_record);
             if (!r.accepted) continue;
             if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
-            metrics::MoveSpec& m = moves[m_executed++];
-            m.t_begin_ps = r.t_pkt_valid_ps + clock_period_ps(fpga);
+            metrics::MoveSpec m = moves.next();
+            m.t_begin_ps = r.t_pkt_valid_ps + clock_period_ps(top.config());
             m.t_end_ps = r.t_busy_fall_ps;
-            f(m);
+            f(std::move(m));
         }
     }
 
 private:
     std::size_t m_record = 0;
-    std::size_t m_executed = 0;
 };
 
 // send_steps.py hard-codes NUMERATOR_X = NUMERATOR_Y = 18_750_000 (seed 000 §6).
@@ -101,11 +99,14 @@ std::vector<TracedPin> traced_pins(const Wires& w, std::int64_t fpga_clock_hz) {
             {&w.rx_valid, fpga}, {&w.ack, fpga}};
 }
 
-void record_wires(EdgeRecorder& rec, const Wires& w) {
-    for (const sc_core::sc_signal<bool>* sig :
-         {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser, &w.busy, &w.uart_rx, &w.uart_tx}) {
+// The link's lines and busy go into ArchRun::lines only when the whole logs are kept (--plots, --samples, tests):
+// a long job's UART lines are its largest log after the STEPs, and no metric reads them.
+void record_wires(EdgeRecorder& rec, const Wires& w, bool with_lines) {
+    for (const sc_core::sc_signal<bool>* sig : {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.laser}) {
         rec.watch(*sig, sig->basename());
     }
+    if (!with_lines) return;
+    for (const sc_core::sc_signal<bool>* sig : {&w.busy, &w.uart_rx, &w.uart_tx}) rec.watch(*sig, sig->basename());
 }
 
 // "segment 17 (line 20)": the packet's number, and its G-code line when the job was G-code.
@@ -239,6 +240,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     uart::Cp2102 cp2102("cp2102", s.link);
     cp2102.txd(w.uart_rx);
     cp2102.rxd(w.uart_tx);
+    cp2102.thin_tx_log(host::kInitPacketBytes, host::kMotionPacketBytes);  // what the dead-time split reads
     host::Sender sender("host", s.sender, cp2102, packets.init, packets.motion);
     if (job.program) {
         std::vector<std::size_t> packet_moves;
@@ -261,42 +263,48 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics);
     machine.bind(w.step_x, w.dir_x, w.n_enbl_x, w.step_y, w.dir_y, w.n_enbl_y, w.laser);
     EdgeRecorder rec("probes");
-    record_wires(rec, w);
+    record_wires(rec, w, s.keep_run_input);
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
         vcd = std::make_unique<VcdTrace>(s, traced_pins(w, s.fpga.clk_hz), machine.traced_positions());
     }
 
-    const host::Program moves_run = job.program ? *job.program : packet_moves(segments, packets, s.job_path);
-    const RunBudget budget = run_budget(s, estimate_job(moves_run, pace(s, segments.size())));
     const host::Program* program = job.program ? &*job.program : nullptr;
-    std::vector<metrics::MoveSpec> moves = commanded_moves(program, segments, s.machine, s.interpreter.start_mm);
+    const ArchPace link_pace = pace(s, segments.size());
+    const RunBudget budget =
+        run_budget(s, program ? estimate_job(*program, link_pace)
+                              : estimate_job(packet_moves(segments, packets, s.job_path), link_pace));
+    CommandedMoves moves(program, segments, s.machine, s.interpreter.start_mm);
     // The metrics stream (their inputs dropped as they are measured) unless the whole logs are asked for, or the
     // dynamic mechanics' report reads every tool sample at the end.
+    // The dead-time split reads each piece's first and last STEP: kept as the stream measures the pieces.
     std::optional<MetricsFeed> feed;
+    std::vector<PieceSteps> steps_of_pieces;
     if (!s.keep_run_input && machine.dynamic_x() == nullptr) {
         const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm()},
                                          {"y", "step_y", "dir_y", s.machine.y.steps_per_mm()}};
-        feed.emplace(rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); });
+        feed.emplace(
+            rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
+            s.detail, [&steps_of_pieces](const metrics::MoveMetrics& p) { steps_of_pieces.push_back(piece_steps(p)); });
+        feed->reserve_moves(program ? program->moves.size() : segments.size());
+        steps_of_pieces.reserve(segments.size());
     }
     ExecutedPieces executed;
     const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
         if (!feed) return;
-        executed.time_ended(fpga.packets(), s.fpga, now_ps, moves,
-                            [&](const metrics::MoveSpec& m) { feed->add_piece(m); });
+        executed.time_ended(fpga, now_ps, moves, [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
         feed->fold(now_ps);
     });
     if (vcd) vcd->close();
 
     ArchRun run;
     record_budget(budget, run);
-    const std::vector<fpga::PacketRecord> records = fpga.packets();
     metrics::RunInput& in = run.input;
-    executed.time_ended(records, s.fpga, std::nullopt, moves, [&](const metrics::MoveSpec& m) {
+    executed.time_ended(fpga, std::nullopt, moves, [&](metrics::MoveSpec m) {
         if (feed) {
-            feed->add_piece(m);
+            feed->add_piece(std::move(m));
         } else {
-            in.moves.push_back(m);
+            in.moves.push_back(std::move(m));
         }
     });
     in.t_job_start_ps = 0;
@@ -309,12 +317,18 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         in.tool = machine.carriage().samples();
         in.laser = rec.take("laser");
         run.metrics = metrics::compute_metrics(in);
+        for (const metrics::MoveMetrics& p : run.metrics->pieces) steps_of_pieces.push_back(piece_steps(p));
     }
-    for (const char* pin : {"busy", "uart_rx", "uart_tx"}) run.lines[pin] = rec.take(pin);
+    if (s.keep_run_input) {
+        for (const char* pin : {"busy", "uart_rx", "uart_tx"}) run.lines[pin] = rec.take(pin);
+    }
 
+    const std::vector<fpga::PacketRecord> records = fpga.packets();
+    // Every gap only for the detailed report and the plots (which keep the whole run anyway).
     const DeadTimeBreakdown dead =
-        dead_time_breakdown(run.metrics->pieces, in.t_job_start_ps, in.t_job_end_ps, records, sender.packets(), cp2102);
-    run.gap_causes = gap_causes(dead);
+        dead_time_breakdown(steps_of_pieces, in.t_job_start_ps, in.t_job_end_ps, records, sender.packets(), cp2102,
+                            s.detail || s.keep_run_input);
+    if (s.keep_run_input) run.gap_causes = gap_causes(dead);
 
     fpga_warnings(fpga, records, segments, s, run.warnings);
     const fpga::FpgaStats st = fpga.stats();
@@ -328,7 +342,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
           {"line_baud", baud.actual_bd},
           {"line_baud_error_pct", baud.error_pct},
           {"fpga_bit_cycles", s.fpga.uart_full_bit_cycles},
-          {"bytes_to_fpga", cp2102.tx_log().size()},
+          {"bytes_to_fpga", cp2102.stats().tx_bytes},
           {"bytes_from_fpga", cp2102.rx_log().size()},
           {"utilisation_to_fpga_pct", dead.utilisation_to_fpga_pct},
           {"utilisation_from_fpga_pct", dead.utilisation_from_fpga_pct}}},

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "metrics/metrics.hpp"
 #include "metrics_test_util.hpp"
 
@@ -81,6 +83,39 @@ TEST(MetricsLaser, AbsentLaserGivesNoLaserMetrics) {
     RunInput in = two_moves_with_laser({});
     in.laser.reset();
     EXPECT_FALSE(compute_metrics(in).laser.has_value());
+}
+
+// Laser on 10..60 and 70..90 ms of a 100 ms job, a rapid moving 40..75 ms, the tool slow 0..20, 30..55 and from
+// 80 ms on. By hand: on 50 + 20 = 70 ms; on in the rapid 40..60 and 70..75 = 25 ms; dwell (on and slow) 10..20,
+// 30..55 and 80..90 = 45 ms in 3 stretches, the longest 25 ms from 30 ms. Folded in windows cut at 35 and 52 ms,
+// inside the longest dwell stretch and the rapid, with the slow stretch 30..55 handed over as two touching parts
+// (as the streaming metrics drop the part they have read), the figures are the same.
+TEST(MetricsLaser, FoldedInWindowsEqualsTheWholeJob) {
+    constexpr TimePs kMs = kPsPerMs;
+    constexpr TimePs kForever = std::numeric_limits<TimePs>::max();
+    EdgeLog laser{"laser", false, {}};
+    for (const TimePs t : {10, 60, 70, 90}) laser.add(t * kMs, t == 10 || t == 70);
+    const std::vector<TimeInterval> rapid{{40 * kMs, 75 * kMs}};
+    const std::vector<TimeInterval> slow{{0, 20 * kMs}, {30 * kMs, 55 * kMs}, {80 * kMs, kForever}};
+    const LaserResult whole = laser_result(laser, 0, 100 * kMs, rapid, slow);
+
+    LaserFold fold(0);
+    EdgeLog rest = laser;
+    const std::vector<TimeInterval> slow_1{{0, 20 * kMs}, {30 * kMs, 50 * kMs}};
+    fold.fold(rest.take_before(35 * kMs), rapid, &slow_1, 35 * kMs);
+    const std::vector<TimeInterval> slow_2{{30 * kMs, 50 * kMs}, {50 * kMs, 55 * kMs}};
+    fold.fold(rest.take_before(52 * kMs), rapid, &slow_2, 52 * kMs);
+    const std::vector<TimeInterval> slow_3{{50 * kMs, 55 * kMs}, {80 * kMs, kForever}};
+    const LaserResult folded = fold.finish(rest, 100 * kMs, rapid, slow_3);
+
+    for (const LaserResult& r : {whole, folded}) {
+        EXPECT_DOUBLE_EQ(r.on_ms, 70.0);
+        EXPECT_DOUBLE_EQ(*r.on_in_rapid_ms, 25.0);
+        EXPECT_DOUBLE_EQ(*r.dwell_ms, 45.0);
+        EXPECT_EQ(r.dwell_intervals, 3U);
+        EXPECT_DOUBLE_EQ(*r.dwell_longest_ms, 25.0);
+        EXPECT_DOUBLE_EQ(*r.dwell_longest_at_s, 0.030);
+    }
 }
 
 }  // namespace

@@ -108,7 +108,11 @@ void append_window(std::vector<T>& to, const std::vector<T>& from, TimePs lo, Ti
     }
 }
 
-TEST(MetricsStream, WindowByWindowEqualsTheWholeRun) {
+// `detail`: the stream keeps the per-piece records and pulse runs; without, the default report is still the batch one.
+class MetricsStreamWindows : public ::testing::TestWithParam<bool> {};
+
+TEST_P(MetricsStreamWindows, WindowByWindowEqualsTheWholeRun) {
+    const bool detail = GetParam();
     const RunInput whole = synthetic_run();
     const RunMetrics batch = compute_metrics(whole);
     ASSERT_EQ(batch.moves.size(), 6U);  // pieces 1 and 2 are one programmed move
@@ -121,7 +125,8 @@ TEST(MetricsStream, WindowByWindowEqualsTheWholeRun) {
     shape.laser->edges.clear();
     shape.tool.clear();
     shape.moves.clear();
-    MetricsStream stream(shape);
+    std::size_t pieces_measured = 0;
+    MetricsStream stream(shape, detail, [&pieces_measured](const MoveMetrics&) { ++pieces_measured; });
     // Cuts every 370 us, one at a rise of the two-piece move (2,350 us: y's first) and one inside that pulse.
     std::vector<TimePs> cuts;
     for (TimePs c = 370 * kUs; c < whole.t_job_end_ps; c += 370 * kUs) cuts.push_back(c);
@@ -156,8 +161,13 @@ TEST(MetricsStream, WindowByWindowEqualsTheWholeRun) {
     // The measured moves' edges were dropped on the way: the x STEP log never held all of the run after the rapid.
     EXPECT_LT(fewest_kept, whole.axes[0].step.edges.size() / 2);
     const RunMetrics streamed = stream.finish(whole.t_job_end_ps);
-    EXPECT_EQ(to_json(streamed, true).dump(1), to_json(batch, true).dump(1));
+    EXPECT_EQ(to_json(streamed, detail).dump(1), to_json(batch, detail).dump(1));
+    EXPECT_EQ(pieces_measured, whole.moves.size());
+    EXPECT_EQ(streamed.pieces.size(), detail ? whole.moves.size() : 0U);
+    EXPECT_EQ(streamed.axes[0].runs.empty(), !detail);
 }
+
+INSTANTIATE_TEST_SUITE_P(DetailOrNot, MetricsStreamWindows, ::testing::Bool());
 
 }  // namespace
 }  // namespace cnc::metrics

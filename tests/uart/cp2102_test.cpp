@@ -192,3 +192,25 @@ TEST(Cp2102, IdealBaudRunsAtTheRequestedRate) {
     EXPECT_EQ(cp.tx_log()[10].t_stop_end_ps, 954'861'111);  // 110 / 115200 s, rounded down
     EXPECT_EQ(cp.in_waiting(), 11U);
 }
+
+TEST(Cp2102, ThinnedTxLogKeepsEveryStrideThByteAndCountsThemAll) {
+    sc_core::sc_signal<bool> line("line");
+    Cp2102Config cfg;
+    cfg.ideal_baud = true;
+    Cp2102 cp("cp", cfg);
+    cp.txd(line);
+    cp.rxd(line);
+    cp.thin_tx_log(1, 4);  // bytes 1, 5 and 9 of the 11
+    sc_core::sc_spawn([&] { cp.usb_write(kPacket); });
+    sc_core::sc_start(at(3 * kMs));
+    // At exactly 115200 Bd a bit is 8,680,555.5 ps: byte j starts at the edge of bit 10 j, rounded down, and the
+    // 11 back-to-back frames hold the line for 110 bits (954,861,111 ps, as IdealBaudRunsAtTheRequestedRate).
+    ASSERT_EQ(cp.tx_log().size(), 3U);
+    EXPECT_EQ(cp.tx_log()[0].byte, kPacket[1]);
+    EXPECT_EQ(cp.tx_log()[0].t_start_bit_ps, 86'805'555);
+    EXPECT_EQ(cp.tx_log()[1].byte, kPacket[5]);
+    EXPECT_EQ(cp.tx_log()[1].t_start_bit_ps, 434'027'777);  // 50 bits
+    EXPECT_EQ(cp.tx_log()[2].byte, kPacket[9]);
+    EXPECT_EQ(cp.stats().tx_bytes, 11);
+    EXPECT_EQ(cp.stats().tx_line_busy_ps, 954'861'111);
+}

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "lathe/core/ratio_list.hpp"
 #include "lathe/core/thread_metrics.hpp"
 #include "lathe/rig/lathe_rig.hpp"
+#include "systems/lathe/lathe_trace.hpp"
 
 namespace cnc::sim {
 
@@ -53,6 +55,18 @@ std::string fixed(double v, int decimals) {
     return buf;
 }
 
+// Each screen the LCD settled on, with its time: the operator's view of the run.
+void report_lcd(lathe::LatheRig& rig, nlohmann::json& d, std::ostringstream& text) {
+    nlohmann::json screens = nlohmann::json::array();
+    text << "LCD transcript (each screen the display settled on, " << fixed(lathe::kLcdSettleS * 1000.0, 0)
+         << " ms or more):\n";
+    for (const lathe::LcdScreen& screen : rig.lcd_screens()) {
+        screens.push_back({{"t_s", screen.t_s}, {"lines", {screen.lines[0], screen.lines[1]}}});
+        text << "  " << fixed(screen.t_s, 3) << " s  |" << screen.lines[0] << "|" << screen.lines[1] << "|\n";
+    }
+    d["lcd_transcript"] = screens;
+}
+
 void run_operator(lathe::LatheRig& rig, const std::vector<OperatorStep>& steps) {
     for (const OperatorStep& step : steps) {
         if (step.held != 0) rig.hold(step.held, step.hold_s);
@@ -70,8 +84,12 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
     cfg.spindle_rpm = s.spindle_rpm;
     if (s.second_pole_per_s > 0.0) cfg.motor = lathe::derive_motor(s.second_pole_per_s);
     cfg.train.backlash_mm = s.backlash_mm;
+    cfg.trace_pins = !scenario.vcd_path.empty();
+    std::optional<LatheTrace> trace;
+    if (cfg.trace_pins) trace.emplace(scenario);
     lathe::LatheRig rig(cfg);
     run_operator(rig, s.operator_steps);
+    if (trace) trace->write(rig);
 
     ArchRun out;
     nlohmann::json& d = out.details;
@@ -102,6 +120,7 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
             out.ok = false;
             out.failure = "the tuning record was not written to EEPROM within the operator script's time";
         }
+        report_lcd(rig, d, text);
         out.details_text = text.str();
         return out;
     }
@@ -183,6 +202,7 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
         out.ok = false;
         out.failure = "no cutting pass ran within the operator script";
     }
+    report_lcd(rig, d, text);
     out.details_text = text.str();
     return out;
 }

@@ -29,23 +29,6 @@ std::string m6_vcd_path() {
     return (std::filesystem::temp_directory_path() / "cncsim_lathe_scenario_test_m6.vcd").string();
 }
 
-// One M6 run for the tests that read it (25 s of CPU), with its VCD.
-const nlohmann::json& m6_report() {
-    static const nlohmann::json r = lathe_report("m6_thread", m6_vcd_path());
-    return r;
-}
-
-// §7: 1.0 mm is exactly 780/127. Check 3's bounds on the settled thread (2 revolutions left out, the default):
-// the passes end within 2 motor pulses of pass 1, and the thread's fitted pitch is within 0.1 % (1 um).
-TEST(LatheScenario, M6Thread) {
-    const nlohmann::json& r = m6_report();
-    EXPECT_EQ(r["ratio_list"]["num"], 780);
-    EXPECT_EQ(r["ratio_list"]["den"], 127);
-    ASSERT_EQ(r["passes"].size(), 3U);
-    EXPECT_LT(r["thread"]["phase_error_end_um"].get<double>(), 2 * kPulseUm);
-    EXPECT_LT(std::abs(r["thread"]["pitch_fit_error_um"].get<double>()), 1.0);
-    EXPECT_FALSE(r["following_error_grows"].get<bool>());
-}
 
 std::string trimmed(const std::string& s) { return s.substr(0, s.find_last_not_of(' ') + 1); }
 
@@ -54,8 +37,7 @@ std::string trimmed(const std::string& s) { return s.substr(0, s.find_last_not_o
 // cut menu, the pitch with the digits echoed as typed, the hand ("List length" from makelist lasts under 1 ms
 // before it), the length, then per pass "press OK to cut", doCut's "waiting for sp" and "slip: <n>" (1 s),
 // "OK to retract", doMove's "moving", and "press OK to cut" again at the end.
-TEST(LatheScenario, M6LcdTranscript) {
-    const nlohmann::json& r = m6_report();
+void expect_m6_transcript(const nlohmann::json& r) {
     std::vector<std::string> line1;
     std::vector<std::string> pitch_echo;
     for (const nlohmann::json& screen : r["lcd_transcript"]) {
@@ -88,8 +70,7 @@ TEST(LatheScenario, M6LcdTranscript) {
 // The M6 run's VCD holds the ATmega16's pins with their edges at their clock cycles: OC1A's fast PWM repeats every
 // 1024 cycles at 8 MHz (Timer1 TOP = ICR1 = 1023, clk/1: 128 us, 7812.5 Hz, seed 002 §6.2), and every LCD E pulse
 // is at least the HD44780U's PWEH, 230 ns (the firmware's sbi, nop, nop, cbi: 4 cycles = 500 ns).
-TEST(LatheScenario, M6Vcd) {
-    (void)m6_report();
+void expect_m6_vcd() {
     std::ifstream in(m6_vcd_path());
     ASSERT_TRUE(in) << m6_vcd_path();
     const cnc::metrics::VcdContents vcd = cnc::metrics::read_vcd(in, m6_vcd_path());
@@ -117,9 +98,25 @@ TEST(LatheScenario, M6Vcd) {
     std::filesystem::remove(m6_vcd_path());
 }
 
+// §7: 1.0 mm is exactly 780/127. Check 3's bounds on the settled thread (2 revolutions left out, the default):
+// the passes end within 2 motor pulses of pass 1, and the thread's fitted pitch is within 0.1 % (1 um). One run
+// (25 s of CPU) for the thread, its LCD transcript and its VCD.
+TEST(LatheScenario, M6Thread) {
+    const nlohmann::json r = lathe_report("m6_thread", m6_vcd_path());
+    EXPECT_EQ(r["ratio_list"]["num"], 780);
+    EXPECT_EQ(r["ratio_list"]["den"], 127);
+    ASSERT_EQ(r["passes"].size(), 3U);
+    EXPECT_LT(r["thread"]["phase_error_end_um"].get<double>(), 2 * kPulseUm);
+    EXPECT_LT(std::abs(r["thread"]["pitch_fit_error_um"].get<double>()), 1.0);
+    EXPECT_FALSE(r["following_error_grows"].get<bool>());
+    for (const nlohmann::json& p : r["passes"]) EXPECT_EQ(p["spindle_min_rpm"].get<double>(), 60.0);  // no cut
+    expect_m6_transcript(r);
+    expect_m6_vcd();
+}
+
 // The cutting load (scenario m6_thread_cut_load): 2000 N/mm^2 x 0.1 mm x 1.0 mm/rev = 200 N at the M6's 3 mm
 // radius = 0.6 N m; at the default 0.5 %/N m the spindle settles 0.3 % (0.18 rpm) below 60 rpm within its 10 ms
-// time constant, long before each 10 s pass ends. Without a cut (m6_thread) it stays at 60 rpm.
+// time constant, long before each 10 s pass ends (without a cut, m6_thread, it stays at 60 rpm).
 TEST(LatheScenario, M6CuttingLoadDips) {
     const nlohmann::json r = lathe_report("m6_thread_cut_load");
     EXPECT_NEAR(r["cutting_load"]["torque_nm"].get<double>(), 0.6, 1e-12);
@@ -127,7 +124,6 @@ TEST(LatheScenario, M6CuttingLoadDips) {
     ASSERT_EQ(r["passes"].size(), 3U);
     for (const nlohmann::json& p : r["passes"]) EXPECT_NEAR(p["spindle_min_rpm"].get<double>(), 59.82, 1e-6);
     EXPECT_FALSE(r["following_error_grows"].get<bool>());
-    for (const nlohmann::json& p : m6_report()["passes"]) EXPECT_EQ(p["spindle_min_rpm"].get<double>(), 60.0);
 }
 
 // §7: 2.5 mm is exactly 1950/127; 0.1 % of 2.5 mm is 2.5 um.

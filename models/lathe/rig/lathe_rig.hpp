@@ -7,11 +7,12 @@
 //
 // Lock-stepped, 1 us at a time, instead of SystemC modules around the AVR core: the plant reads EN/DIR after
 // each step and its encoder edges land on the step's cycle, so INT0/INT1 see every edge at most 1 us (8 cycles)
-// late whatever the AVR core does. A SystemC AvrCore runs the CPU ahead in quanta (160 cycles) and could only
-// deliver these inputs that late or with a quantum of 8 cycles and a context switch per microsecond; the PID
-// ticks and the spindle pulses are hundreds of us apart, so 1 us is exact enough and the loop stays a plain
-// function call (docs/architectures.md "lathe-sync"). Pins that move faster than the step (the LCD's E pulse,
-// the keypad columns) are read in the chip's output-change callback at their own cycle.
+// late whatever the AVR core does. A SystemC AvrCore runs the CPU ahead in quanta (160 cycles) and sees an input
+// only at a quantum's end, so it would deliver these edges up to 20 us late, or need a quantum of 8 cycles and a
+// context switch per microsecond; the PID ticks and the spindle pulses are hundreds of us apart, so 1 us is exact
+// enough and the loop stays a plain function call (docs/architectures.md "lathe-sync"). The LCD's E pulse (500
+// ns) is shorter than the step: the HD44780 and the pin trace read the pins in the chip's output-change callback,
+// at their own cycle; the keypad columns, held 1 ms per scan step, are read after each step.
 #pragma once
 #include <array>
 #include <cstdint>

@@ -402,6 +402,7 @@ bool AvrChip::pin_level(const Pin& p) const {
 
 void AvrChip::update_lines(Cycle c) {
     for (std::size_t i = 0; i < m_line_pins.size(); ++i) record(c, static_cast<int>(i), pin_level(m_line_pins[i]));
+    if (m_output_listener) m_output_listener(c);
 }
 
 void AvrChip::record(Cycle c, int line, bool level) {

@@ -31,6 +31,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "avr/core/avr_config.hpp"
@@ -91,6 +92,11 @@ public:
     // INT0 (PD2) / INT1 (PD3) see the edge now (MCUCR ISCn1:0). The model's own edge detector, not simavr's:
     // simavr 1.6 raises INTFn for a low pin in the reset low-level mode and keeps re-entering the vector.
     void drive_input(const Pin& pin, bool level);
+
+    // Called with the cycle of every port register write and compare output change, after it: a board model
+    // that steps slower than the pins move (the HD44780's E pulse is 3 cycles long) reads the levels it needs
+    // there with pin_level().
+    void on_output_change(std::function<void(Cycle)> listener) { m_output_listener = std::move(listener); }
 
     // A pin's level now: an output's PORT bit or connected compare output, an input's external drive or pull-up.
     [[nodiscard]] bool pin_level(const Pin& p) const;
@@ -172,6 +178,7 @@ private:
     std::array<bool, kLineCount> m_initial{};
     std::array<bool, kLineCount> m_level{};
     std::vector<LineEvent> m_events;
+    std::function<void(Cycle)> m_output_listener;
     // Externally driven input pins, [port index][bit]: -1 undriven, else the level.
     std::array<std::array<std::int8_t, 8>, 4> m_inputs{{{-1, -1, -1, -1, -1, -1, -1, -1},
                                                         {-1, -1, -1, -1, -1, -1, -1, -1},

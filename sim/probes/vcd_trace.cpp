@@ -4,7 +4,7 @@
 
 #include <sysc/kernel/sc_dynamic_processes.h>
 
-#include "common/bad_input.hpp"
+#include "probes/trace_selection.hpp"
 
 namespace cnc::sim {
 
@@ -12,46 +12,11 @@ namespace {
 
 TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
 
-// A signal the file can hold, wire or real, by name.
-struct Candidate {
-    std::string name;
-    bool on_request;
-};
-
-std::vector<Candidate> candidates(const std::vector<TracedPin>& pins, const std::vector<TracedReal>& reals) {
-    std::vector<Candidate> all;
+std::vector<TraceCandidate> candidates(const std::vector<TracedPin>& pins, const std::vector<TracedReal>& reals) {
+    std::vector<TraceCandidate> all;
     for (const TracedPin& p : pins) all.push_back({p.signal->basename(), p.on_request});
     for (const TracedReal& r : reals) all.push_back({r.signal->basename(), false});
     return all;
-}
-
-std::string allowed_names(const std::vector<Candidate>& all) {
-    std::string names;
-    for (const Candidate& c : all) names += (names.empty() ? "" : ", ") + c.name;
-    return names;
-}
-
-// The signals of the file (indices into `all`): those trace.signals names, in the order the architecture lists
-// them, or every one that is not on request.
-std::vector<std::size_t> selected(const Scenario& s, const std::vector<Candidate>& all) {
-    const std::string key = s.file + ": trace.signals";
-    for (const std::string& name : s.trace_signals) {
-        const auto named = [&](const Candidate& c) { return name == c.name; };
-        if (std::none_of(all.begin(), all.end(), named)) {
-            throw BadInput(key, "'" + name + "' is not a signal of " + s.architecture + " (allowed: " +
-                                    allowed_names(all) + ")");
-        }
-        if (std::count(s.trace_signals.begin(), s.trace_signals.end(), name) > 1) {
-            throw BadInput(key, "'" + name + "' is named twice");
-        }
-    }
-    std::vector<std::size_t> out;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        const bool named =
-            std::find(s.trace_signals.begin(), s.trace_signals.end(), all[i].name) != s.trace_signals.end();
-        if (s.trace_signals.empty() ? !all[i].on_request : named) out.push_back(i);
-    }
-    return out;
 }
 
 template <typename F>
@@ -98,8 +63,8 @@ VcdTrace::VcdTrace(const Scenario& s, const std::vector<TracedPin>& pins, const 
       m_timescale_key(s.file + ": trace.timescale"),
       m_from_ps(s.trace_from_ps),
       m_to_ps(s.trace_to_ps) {
-    const std::vector<Candidate> all = candidates(pins, reals);
-    const std::vector<std::size_t> chosen = selected(s, all);
+    const std::vector<TraceCandidate> all = candidates(pins, reals);
+    const std::vector<std::size_t> chosen = select_traced(s, all);
     for (const std::size_t k : chosen) {
         if (k < pins.size()) {
             m_signals.push_back({all[k].name, pins[k].signal->read(), pins[k].clock_hz});

@@ -134,6 +134,24 @@ void read_lathe_settings(KeyReader& r, LatheSettings& s) {
     s.backlash_mm = r.get_float("lathe.backlash_mm", 0.0, 0.0, 5.0,
                                 "lathe-sync: play of gearbox, belt and nut at the carriage, mm (seed 002 §8.2: "
                                 "size unknown)");
+    s.cut_depth_mm = r.get_float("lathe.cut.depth_mm", s.cut_depth_mm, 0.0, 10.0,
+                                 "lathe-sync: depth of cut of every pass, mm; with the feed per revolution (the "
+                                 "pitch) it makes the chip area; 0: no cutting load on the spindle (e.g. 0.1: a "
+                                 "roughing pass of a thread)");
+    s.cut_kc_n_per_mm2 = r.get_float("lathe.cut.kc_n_per_mm2", s.cut_kc_n_per_mm2, 0.0, 1e4,
+                                     "lathe-sync: specific cutting force of the workpiece, N/mm^2 (about 2000 for "
+                                     "mild steel, 800 for aluminium alloys)");
+    s.workpiece_diameter_mm = r.get_float("lathe.cut.diameter_mm", s.workpiece_diameter_mm, 0.1, 500.0,
+                                          "lathe-sync: workpiece diameter where the tool cuts, mm (the cutting "
+                                          "force acts at its radius)");
+    s.spindle_droop_pct_per_nm = r.get_float(
+        "lathe.spindle.droop_pct_per_nm", s.spindle_droop_pct_per_nm, 0.0, 100.0,
+        "lathe-sync: steady spindle speed loss per N m of cutting torque, % of lathe.spindle_rpm (the lathe's own "
+        "motor has no speed control; default: a 0.37 kW induction motor, 5 % slip at 2.5 N m, through 1:4)");
+    s.spindle_time_constant_s = r.get_float("lathe.spindle.time_constant_s", s.spindle_time_constant_s, 0.0, 10.0,
+                                            "lathe-sync: time constant of the spindle speed's response to the "
+                                            "cutting torque, s (motor and chuck inertia against the motor's "
+                                            "torque-speed slope); 0: at once");
     const std::vector<std::string> script = r.get_string_list(
         kOperatorKey, "lathe-sync: what the machinist does, in turn: keys pressed (\"131#00D\": 100 ms each, 400 ms "
                       "apart), \"wait <s>\", \"hold <key> <s>\"; keys of the 4x4 keypad 0-9 * # A B C D; empty: "

@@ -28,6 +28,12 @@ struct LatheSettings {
     int settle_revolutions = 2;
     double second_pole_per_s = 0.0; // 0: the first-order motor
     double backlash_mm = 0.0;
+    // The cutting load on the spindle (docs/metrics.md "Lathe": the estimates behind the defaults).
+    double cut_depth_mm = 0.0;  // no load unless the scenario says how deep the tool cuts
+    double cut_kc_n_per_mm2 = 2000.0;
+    double workpiece_diameter_mm = 20.0;
+    double spindle_droop_pct_per_nm = 0.5;
+    double spindle_time_constant_s = 0.01;
     std::vector<OperatorStep> operator_steps;  // lathe.operator, or the script the keys above make
 };
 

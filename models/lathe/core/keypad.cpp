@@ -16,4 +16,12 @@ KeyPos key_pos(char key) {
     return {static_cast<int>(i / 4), static_cast<int>(i % 4)};
 }
 
+std::array<bool, 4> KeypadMatrix::rows(const std::array<bool, 4>& columns) const {
+    std::array<bool, 4> high{true, true, true, true};
+    for (const KeyPos& k : m_pressed) {
+        if (!columns[static_cast<std::size_t>(k.col)]) high[static_cast<std::size_t>(k.row)] = false;
+    }
+    return high;
+}
+
 }  // namespace cnc::lathe

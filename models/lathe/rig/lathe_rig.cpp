@@ -1,5 +1,6 @@
 #include "lathe/rig/lathe_rig.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cnc::lathe {
@@ -14,6 +15,19 @@ constexpr double kFcpuHz = 8e6;  // seed 002 §6.1 F_CPU
 constexpr double kCycleS = 1.0 / kFcpuHz;
 constexpr Cycle kStepCycles = 8;  // 1 us
 
+// Seed 002 §3 pin map.
+constexpr Pin kEnA{'D', 5};  // OC1A
+constexpr Pin kDir1{'D', 0};
+constexpr Pin kDir2{'D', 1};
+constexpr Pin kMotorPulse{'D', 2};    // INT0
+constexpr Pin kSpindlePulse{'D', 3};  // INT1
+constexpr Pin kIndex{'D', 6};
+constexpr Pin kLimit{'D', 7};
+constexpr Pin kLcdD7{'A', 3};  // D4..D7 = PA0..PA3
+constexpr Pin kLcdRs{'A', 4};
+constexpr Pin kLcdRw{'A', 5};
+constexpr Pin kLcdE{'A', 6};
+
 avr::AvrCoreConfig firmware(const std::string& elf) {
     avr::AvrCoreConfig cfg;
     cfg.firmware_elf = elf;
@@ -22,43 +36,87 @@ avr::AvrCoreConfig firmware(const std::string& elf) {
     return cfg;
 }
 
+SpindleParams spindle_at(const LatheRigConfig& cfg) {
+    SpindleParams p = cfg.spindle;
+    p.rpm = cfg.spindle_rpm;
+    return p;
+}
+
 }  // namespace
 
+const std::vector<TracedPin>& traced_pins() {
+    static const std::vector<TracedPin> pins = {
+        {"oc1a_ena_pd5", kEnA},        {"dir1_in1_pd0", kDir1},     {"dir2_in2_pd1", kDir2},
+        {"int0_motor_pd2", kMotorPulse}, {"int1_spindle_pd3", kSpindlePulse}, {"index_pd6", kIndex},
+        {"limit_pd7", kLimit},         {"col1_pb7", {'B', 7}},      {"col2_pb6", {'B', 6}},
+        {"col3_pb5", {'B', 5}},        {"col4_pb4", {'B', 4}},      {"row1_pb3", {'B', 3}},
+        {"row2_pb2", {'B', 2}},        {"row3_pb1", {'B', 1}},      {"row4_pb0", {'B', 0}},
+        {"lcd_rs_pa4", kLcdRs},        {"lcd_rw_pa5", kLcdRw},      {"lcd_e_pa6", kLcdE},
+        {"lcd_d4_pa0", {'A', 0}},      {"lcd_d5_pa1", {'A', 1}},    {"lcd_d6_pa2", {'A', 2}},
+        {"lcd_d7_pa3", kLcdD7}};
+    return pins;
+}
+
+// The motor disc starts at a fall (half a pitch past a leading edge). The spindle's 40 slots fall at (k + 1/2) / 40
+// rev and its index at 1/2 + 1/80 rev: on slot 20's fall, so the firmware sees that slot's INT1 edge and the
+// index fall doCut waits for in the same 1 us step at every pass. Moved off the slot fall (by a
+// quarter, a half or three quarters of a slot pitch), the index leaves the first pass as it is, but passes 2 and 3
+// (which start from the retract's slip) swing into a limit cycle with following errors of 60 to 160 pulses
+// instead of 2. The thesis does not say where its index sits relative to the slots (docs/metrics.md "Lathe").
 LatheRig::LatheRig(const LatheRigConfig& cfg)
     : chip(firmware(cfg.firmware_elf)), motor(cfg.motor), train(cfg.train),
-      m_spindle_rev_per_s(cfg.spindle_rpm / 60.0) {
-    chip.drive_input(Pin{'A', 3}, false);  // the LCD's busy flag (D7) always reads ready
-    chip.drive_input(Pin{'D', 7}, true);   // limit switch closed (normally 1)
-    m_motor_level = motor_encoder_level();
-    chip.drive_input(Pin{'D', 2}, m_motor_level);
+      motor_encoder(kMotorSlots, 0.5), spindle_encoder(kSpindleSlots, 0.0),
+      spindle_index(1.0, -0.5 / kSpindleSlots), spindle(spindle_at(cfg)),
+      m_cut_torque_nm(cutting_torque_nm(cfg.cut, cfg.feed_mm_per_rev)) {
+    chip.on_output_change([this](Cycle c) { outputs_changed(c); });
+    drive(kLcdD7, false);  // the LCD's busy flag (D7) always reads ready
+    drive(kLimit, true);   // limit switch closed (normally 1)
+    m_motor_level = motor_encoder.y_at(0.0);
+    drive(kMotorPulse, m_motor_level);
     update_spindle(true);
+    if (cfg.trace_pins) {
+        for (const TracedPin& p : traced_pins()) m_trace_initial.push_back(chip.pin_level(p.pin));
+        m_trace_level = m_trace_initial;
+        m_trace_on = true;
+    }
 }
 
 double LatheRig::now_s() const { return static_cast<double>(chip.cycle()) * kCycleS; }
 
-double LatheRig::spindle_rev() const { return m_spindle_rev_per_s * now_s(); }
-
 bool LatheRig::pid_running() const { return chip.timer(0).divisor() != 0; }
 
-// The 74HC14 inverts the slotted opto's output: the MCU sees a falling edge when a slot's start passes. The motor
-// disc starts half a slot past one.
-bool LatheRig::motor_encoder_level() const {
-    const double slots = motor.state().angle_rad * kMotorSlots / (2 * kPi) + 0.5;
-    return slots - std::floor(slots) < 0.5;
+void LatheRig::drive(const Pin& pin, bool level) {
+    chip.drive_input(pin, level);
+    outputs_changed(chip.cycle());
 }
 
-// Spindle: kSpindleSlots = 40 slots (falling edge at each 1/40 rev) and the half-reflective index disc, high for half a
-// revolution: its falling edge is at 1/2 + 1/80 rev, halfway between two slot edges. Were it on a slot edge,
-// whether the INT1 ISR of that slot runs before or after doCut's `Error = slip` would be left to the cycle the two
-// edges happen to land on, and one pass would carry a whole B(n) (6 or 7 pulses at 1 mm) more than another.
+// The HD44780 latches on E's fall (3 cycles after its rise), and the trace wants every edge at its cycle.
+void LatheRig::outputs_changed(Cycle c) {
+    const bool e = chip.pin_level(kLcdE);
+    if (e != m_lcd_e) {
+        m_lcd_e = e;
+        std::uint8_t data = 0;
+        for (int bit = 0; bit < 4; ++bit) data |= static_cast<std::uint8_t>(chip.pin_level(Pin{'A', bit}) << bit);
+        const std::uint64_t before = lcd.changes();
+        lcd.pins(chip.pin_level(kLcdRs), chip.pin_level(kLcdRw), e, data);
+        if (lcd.changes() != before) m_transcript.changed(static_cast<double>(c) * kCycleS, lcd.lines());
+    }
+    if (!m_trace_on) return;
+    const std::vector<TracedPin>& pins = traced_pins();
+    for (std::size_t i = 0; i < pins.size(); ++i) {
+        const bool level = chip.pin_level(pins[i].pin);
+        if (level == m_trace_level[i]) continue;
+        m_trace_level[i] = level;
+        m_trace.push_back({c, static_cast<std::uint16_t>(i), level});
+    }
+}
+
 void LatheRig::update_spindle(bool force) {
-    const double rev = spindle_rev();
-    const double slots = rev * kSpindleSlots;
-    const bool slot_level = slots - std::floor(slots) < 0.5;
-    const double index_rev = rev - 0.5 / kSpindleSlots;
-    const bool index_level = index_rev - std::floor(index_rev) < 0.5;
-    if (force || slot_level != m_spindle_level) chip.drive_input(Pin{'D', 3}, slot_level);
-    if (force || index_level != m_index) chip.drive_input(Pin{'D', 6}, index_level);
+    const double rev = spindle.rev();
+    const bool slot_level = spindle_encoder.y_at(rev);
+    const bool index_level = spindle_index.y_at(rev);
+    if (force || slot_level != m_spindle_level) drive(kSpindlePulse, slot_level);
+    if (force || index_level != m_index) drive(kIndex, index_level);
     if (!force && m_spindle_level && !slot_level && pid_running() && !passes.empty()) {
         passes.back().thread.x_mm.push_back(m_cut_sign * train.carriage_mm());
         passes.back().motor_pulses.push_back(motor_pulses);
@@ -67,16 +125,14 @@ void LatheRig::update_spindle(bool force) {
     m_index = index_level;
 }
 
-// Rows read low where a pressed key's column is driven low.
 void LatheRig::update_keypad() {
-    for (int row = 0; row < 4; ++row) {
-        bool low = false;
-        for (const KeyPos& k : pressed) {
-            if (k.row == row && !chip.pin_level(Pin{'B', 7 - k.col})) low = true;
-        }
-        auto& level = m_row_level[static_cast<std::size_t>(row)];
-        if (level != static_cast<int>(!low)) chip.drive_input(Pin{'B', 3 - row}, !low);
-        level = !low;
+    std::array<bool, 4> columns{};
+    for (int col = 0; col < 4; ++col) columns[static_cast<std::size_t>(col)] = chip.pin_level(Pin{'B', 7 - col});
+    const std::array<bool, 4> rows = keypad.rows(columns);
+    for (std::size_t row = 0; row < 4; ++row) {
+        auto& level = m_row_level[row];
+        if (level != static_cast<int>(rows[row])) drive(Pin{'B', 3 - static_cast<int>(row)}, rows[row]);
+        level = rows[row];
     }
 }
 
@@ -84,11 +140,12 @@ void LatheRig::update_keypad() {
 void LatheRig::record(double dt_s) {
     const bool running = pid_running();
     if (running && !m_was_running) {
-        if (passes.empty()) m_cut_sign = chip.pin_level(Pin{'D', 0}) ? 1.0 : -1.0;  // DIR1 high: positive volts
+        if (passes.empty()) m_cut_sign = chip.pin_level(kDir1) ? 1.0 : -1.0;  // DIR1 high: positive volts
         passes.emplace_back();
         passes.back().start_s = now_s();
         passes.back().thread.x_mm.push_back(m_cut_sign * train.carriage_mm());
         passes.back().motor_pulses.push_back(motor_pulses);
+        passes.back().spindle_min_rpm = spindle.rpm();
     }
     if (running) {
         RecordedPass& p = passes.back();
@@ -96,6 +153,7 @@ void LatheRig::record(double dt_s) {
         p.pid_s += dt_s;
         if (duty >= 1023) p.at_full_s += dt_s;
         if (duty == 0) p.at_zero_s += dt_s;
+        p.spindle_min_rpm = std::min(p.spindle_min_rpm, spindle.rpm());
     }
     if (!running && m_was_running) {
         m_brake_from_mm = train.carriage_mm();
@@ -108,24 +166,26 @@ void LatheRig::record(double dt_s) {
     m_was_running = running;
 }
 
+// The tool cuts while the PID runs the pass (the machinist set the depth before pressing OK).
 void LatheRig::step() {
     const Cycle to = chip.cycle() + kStepCycles;
     const double dt = static_cast<double>(to - m_last) * kCycleS;
     m_last = to;
-    const bool en = chip.pin_level(Pin{'D', 5});
-    const bool dir1 = chip.pin_level(Pin{'D', 0});
-    const bool dir2 = chip.pin_level(Pin{'D', 1});
-    const BridgeMode mode = !en ? BridgeMode::Coast : dir1 != dir2 ? BridgeMode::Drive : BridgeMode::Brake;
-    motor.advance(dt, mode, dir1 ? kBridgeVolts : -kBridgeVolts, 0.0);
+    bridge.en_a = chip.pin_level(kEnA);
+    bridge.in1 = chip.pin_level(kDir1);
+    bridge.in2 = chip.pin_level(kDir2);
+    motor.advance(dt, bridge.mode(), bridge.drive_volts(), 0.0);
     train.follow(motor.state().angle_rad);
     chip.run_until(to);
-    const bool level = motor_encoder_level();
-    if (level != m_motor_level) chip.drive_input(Pin{'D', 2}, level);
+    spindle.advance_to(now_s(), pid_running() ? m_cut_torque_nm : 0.0);
+    const bool level = motor_encoder.y_at(motor.state().angle_rad / (2 * kPi));
+    if (level != m_motor_level) drive(kMotorPulse, level);
     if (m_motor_level && !level) ++motor_pulses;
     m_motor_level = level;
     record(dt);
     update_spindle(false);
     update_keypad();
+    m_transcript.tick(now_s());
 }
 
 void LatheRig::run_for(double s) {
@@ -143,9 +203,9 @@ void LatheRig::type(const std::string& keys) {
 }
 
 void LatheRig::hold(char key, double s) {
-    pressed = {key_pos(key)};
+    keypad.press(key);
     run_for(s);
-    pressed.clear();
+    keypad.release_all();
 }
 
 }  // namespace cnc::lathe

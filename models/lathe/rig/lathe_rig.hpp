@@ -1,19 +1,33 @@
-// Seed 002's lathe at chip level (no SystemC): the ATmega16 model running the lathe_sync firmware, the L298 and
-// the derived motor with the drive train, the motor encoder and the spindle encoder + index through the 74HC14
-// inverters, the 4x4 keypad matrix an operator presses, and an HD44780 that is always ready. Stepped 1 us at a
-// time: the plant reads EN/DIR at each step and encoder edges land on the step (the PID ticks and the spindle
-// pulses are hundreds of us apart). It records what the lathe metrics need (docs/metrics.md "Lathe"): the
-// carriage at each spindle pulse of each pass (the time the firmware's PID runs), the motor pulses, the time the
-// PID output sits at a clamp, and the carriage's overshoot after each brake.
+// Seed 002's lathe at chip level (no SystemC): the ATmega16 model running the lathe_sync firmware wired to one
+// block per part (models/lathe/core): the L298, the derived motor with the drive train, the motor encoder and the
+// spindle encoder + index through the 74HC14 inverters, the spindle with its cutting load, the 4x4 keypad matrix
+// an operator presses and the HD44780 with the transcript of what it shows. It records what the lathe metrics
+// need (docs/metrics.md "Lathe"): the carriage at each spindle pulse of each pass (the time the firmware's PID
+// runs), the motor pulses, the time the PID output sits at a clamp, and the carriage's overshoot after each brake.
+//
+// Lock-stepped, 1 us at a time, instead of SystemC modules around the AVR core: the plant reads EN/DIR after
+// each step and its encoder edges land on the step's cycle, so INT0/INT1 see every edge at most 1 us (8 cycles)
+// late whatever the AVR core does. A SystemC AvrCore runs the CPU ahead in quanta (160 cycles) and sees an input
+// only at a quantum's end, so it would deliver these edges up to 20 us late, or need a quantum of 8 cycles and a
+// context switch per microsecond; the PID ticks and the spindle pulses are hundreds of us apart, so 1 us is exact
+// enough and the loop stays a plain function call (docs/architectures.md "lathe-sync"). The LCD's E pulse (500
+// ns) is shorter than the step: the HD44780 and the pin trace read the pins in the chip's output-change callback,
+// at their own cycle; the keypad columns, held 1 ms per scan step, are read after each step.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "avr/avr_chip.hpp"
 #include "lathe/core/dc_motor.hpp"
 #include "lathe/core/drive_train.hpp"
+#include "lathe/core/hd44780.hpp"
 #include "lathe/core/keypad.hpp"
+#include "lathe/core/l298.hpp"
+#include "lathe/core/lcd_transcript.hpp"
+#include "lathe/core/slotted_encoder.hpp"
+#include "lathe/core/spindle.hpp"
 #include "lathe/core/thread_metrics.hpp"
 
 namespace cnc::lathe {
@@ -25,6 +39,10 @@ struct LatheRigConfig {
     double spindle_rpm = 0.0;
     DcMotorParams motor = derive_motor();
     DriveTrainParams train;
+    SpindleParams spindle;  // its rpm is spindle_rpm
+    CutParams cut;          // depth 0: no cutting load
+    double feed_mm_per_rev = 0.0;
+    bool trace_pins = false;  // record the pin edges (LatheRig::trace)
 };
 
 // One cutting pass as recorded: the carriage along the cut at its start and at each spindle pulse, the motor
@@ -37,6 +55,20 @@ struct RecordedPass {
     double at_full_s = 0.0;      // of which OCR1A = 1023 (the clamp PWM_TOP)
     double at_zero_s = 0.0;      // of which OCR1A = 0
     double overshoot_mm = -1.0;  // carriage travel from the PID stop to 0.6 s later (the 500 ms brake done)
+    double spindle_min_rpm = 0.0;  // the slowest the spindle turned under the cut
+};
+
+// The MCU pins the rig traces, with their signal names (LatheRig::trace).
+struct TracedPin {
+    const char* name;
+    avr::Pin pin;
+};
+[[nodiscard]] const std::vector<TracedPin>& traced_pins();
+
+struct PinEdge {
+    avr::Cycle cycle;
+    std::uint16_t pin;  // index in traced_pins()
+    bool level;
 };
 
 class LatheRig {
@@ -55,32 +87,49 @@ public:
     void hold(char key, double s);
 
     [[nodiscard]] double now_s() const;
-    [[nodiscard]] double spindle_rev() const;
     [[nodiscard]] bool pid_running() const;
+    // The screens the LCD settled on so far.
+    [[nodiscard]] const std::vector<LcdScreen>& lcd_screens() { return m_transcript.screens(now_s()); }
+    // The traced pins' levels at the start and their edges in time order (LatheRigConfig::trace_pins).
+    [[nodiscard]] const std::vector<bool>& trace_initial() const { return m_trace_initial; }
+    [[nodiscard]] const std::vector<PinEdge>& trace() const { return m_trace; }
 
     avr::AvrChip chip;
+    L298 bridge;
     DcMotor motor;
     DriveTrain train;
-    std::vector<KeyPos> pressed;
+    SlottedEncoder motor_encoder;
+    SlottedEncoder spindle_encoder;
+    SlottedEncoder spindle_index;
+    Spindle spindle;
+    KeypadMatrix keypad;
+    Hd44780 lcd;
     std::vector<RecordedPass> passes;
     long motor_pulses = 0;
 
 private:
-    [[nodiscard]] bool motor_encoder_level() const;
+    void outputs_changed(avr::Cycle c);
     void update_spindle(bool force);
     void update_keypad();
     void record(double dt_s);  // the step just run, s
+    void drive(const avr::Pin& pin, bool level);
 
-    double m_spindle_rev_per_s;
+    double m_cut_torque_nm;
+    LcdTranscript m_transcript;
     avr::Cycle m_last = 0;
     bool m_motor_level = true;
     bool m_spindle_level = true;
     bool m_index = true;
     bool m_was_running = false;
+    bool m_lcd_e = false;
     std::array<int, 4> m_row_level{-1, -1, -1, -1};  // the rows as last driven (-1: not yet)
     double m_cut_sign = 1.0;
     double m_brake_from_mm = 0.0;
     double m_brake_until_s = -1.0;
+    bool m_trace_on = false;
+    std::vector<bool> m_trace_initial;
+    std::vector<bool> m_trace_level;
+    std::vector<PinEdge> m_trace;
 };
 
 }  // namespace cnc::lathe

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "lathe/core/ratio_list.hpp"
 #include "lathe/core/thread_metrics.hpp"
 #include "lathe/rig/lathe_rig.hpp"
+#include "systems/lathe/lathe_trace.hpp"
 
 namespace cnc::sim {
 
@@ -53,6 +55,18 @@ std::string fixed(double v, int decimals) {
     return buf;
 }
 
+// Each screen the LCD settled on, with its time: the operator's view of the run.
+void report_lcd(lathe::LatheRig& rig, nlohmann::json& d, std::ostringstream& text) {
+    nlohmann::json screens = nlohmann::json::array();
+    text << "LCD transcript (each screen the display settled on, " << fixed(lathe::kLcdSettleS * 1000.0, 0)
+         << " ms or more):\n";
+    for (const lathe::LcdScreen& screen : rig.lcd_screens()) {
+        screens.push_back({{"t_s", screen.t_s}, {"lines", {screen.lines[0], screen.lines[1]}}});
+        text << "  " << fixed(screen.t_s, 3) << " s  |" << screen.lines[0] << "|" << screen.lines[1] << "|\n";
+    }
+    d["lcd_transcript"] = screens;
+}
+
 void run_operator(lathe::LatheRig& rig, const std::vector<OperatorStep>& steps) {
     for (const OperatorStep& step : steps) {
         if (step.held != 0) rig.hold(step.held, step.hold_s);
@@ -70,8 +84,16 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
     cfg.spindle_rpm = s.spindle_rpm;
     if (s.second_pole_per_s > 0.0) cfg.motor = lathe::derive_motor(s.second_pole_per_s);
     cfg.train.backlash_mm = s.backlash_mm;
+    cfg.spindle.droop_pct_per_nm = s.spindle_droop_pct_per_nm;
+    cfg.spindle.time_constant_s = s.spindle_time_constant_s;
+    cfg.cut = {s.cut_depth_mm, s.cut_kc_n_per_mm2, s.workpiece_diameter_mm};
+    cfg.feed_mm_per_rev = s.pitch_centi_mm / 100.0;
+    cfg.trace_pins = !scenario.vcd_path.empty();
+    std::optional<LatheTrace> trace;
+    if (cfg.trace_pins) trace.emplace(scenario);
     lathe::LatheRig rig(cfg);
     run_operator(rig, s.operator_steps);
+    if (trace) trace->write(rig);
 
     ArchRun out;
     nlohmann::json& d = out.details;
@@ -102,6 +124,7 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
             out.ok = false;
             out.failure = "the tuning record was not written to EEPROM within the operator script's time";
         }
+        report_lcd(rig, d, text);
         out.details_text = text.str();
         return out;
     }
@@ -117,6 +140,14 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
                        {"residual_um_per_rev", (list.pitch_produced_mm - pitch_mm) * 1000.0}};
     text << "ratio list: " << list.num << "/" << list.den << " (lambda error " << list.lambda_error
          << "), pitch cut " << fixed(list.pitch_produced_mm, 6) << " mm for " << fixed(pitch_mm, 2) << " mm\n";
+
+    const double torque_nm = lathe::cutting_torque_nm(cfg.cut, cfg.feed_mm_per_rev);
+    const double droop_rpm = s.spindle_rpm * s.spindle_droop_pct_per_nm / 100.0 * torque_nm;
+    d["cutting_load"] = {{"torque_nm", torque_nm}, {"spindle_droop_steady_rpm", droop_rpm}};
+    text << "cutting load: " << fixed(s.cut_depth_mm, 2) << " mm deep x " << fixed(cfg.feed_mm_per_rev, 2)
+         << " mm/rev at " << fixed(s.cut_kc_n_per_mm2, 0) << " N/mm^2 on " << fixed(s.workpiece_diameter_mm, 1)
+         << " mm: " << fixed(torque_nm, 3) << " N m, the spindle " << fixed(droop_rpm, 3)
+         << " rpm slower once settled\n";
 
     const double mm_per_motor_pulse = lathe::DriveTrain(cfg.train).mm_per_motor_rev() / lathe::kMotorSlots;
     std::vector<lathe::ThreadPass> thread;
@@ -137,6 +168,7 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
                           {"pid_s", p.pid_s},
                           {"pid_at_1023_s", p.at_full_s},
                           {"pid_at_0_s", p.at_zero_s},
+                          {"spindle_min_rpm", p.spindle_min_rpm},
                           {"following_error_max_pulses", max_e},
                           {"following_error_trend_pulses_per_s", trend},
                           {"overshoot_after_brake_pulses",
@@ -145,7 +177,7 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
              << fixed(p.at_full_s, 3) << " s, at 0 for " << fixed(p.at_zero_s, 3) << " s; following error max "
              << fixed(max_e, 1) << " pulses, trend " << fixed(trend, 1) << " pulses/s; overshoot after the brake "
              << (overshoot_measured ? fixed(overshoot_pulses, 1) + " pulses" : std::string("-"))
-             << "\n";
+             << "; spindle down to " << fixed(p.spindle_min_rpm, 3) << " rpm\n";
     }
     d["passes"] = passes;
     const lathe::ThreadMetrics m =
@@ -183,6 +215,7 @@ ArchRun run_lathe_sync(const Scenario& scenario, const Job&) {
         out.ok = false;
         out.failure = "no cutting pass ran within the operator script";
     }
+    report_lcd(rig, d, text);
     out.details_text = text.str();
     return out;
 }

@@ -1,0 +1,22 @@
+// Which of an architecture's traceable signals a scenario's VCD holds (trace.signals), shared by the SystemC
+// trace (vcd_trace.hpp) and the lock-stepped lathe rig's pin trace.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "scenario/scenario.hpp"
+
+namespace cnc::sim {
+
+// A signal the file can hold, wire or real, by name.
+struct TraceCandidate {
+    std::string name;
+    bool on_request = false;  // held only when trace.signals names it
+};
+
+// The signals of the file (indices into `all`): those trace.signals names, in the order the architecture lists
+// them, or every one that is not on request. BadInput naming trace.signals for an unknown or repeated name.
+[[nodiscard]] std::vector<std::size_t> select_traced(const Scenario& s, const std::vector<TraceCandidate>& all);
+
+}  // namespace cnc::sim

@@ -134,6 +134,7 @@ AxisIntegrator::AxisIntegrator(const AxisParams& params, const IntegratorToleran
 
 void AxisIntegrator::set_setpoints(const AxisSetpoints& sp) {
     m_ode.set_setpoints(sp);
+    m_after_change = true;
     m_at_rest = false;
     m_dxdt_valid = false;
 }
@@ -169,6 +170,7 @@ void AxisIntegrator::advance_to(double t_s) {
     if (!m_dxdt_valid) start_at(m_x, m_t_s);
     Dopri5 stepper;
     while (m_t_s < t_s) {
+        if (m_after_change && m_dt_after_change_s > 0.0) m_dt_s = m_dt_after_change_s;
         const double remaining = t_s - m_t_s;
         const bool last = m_dt_s >= remaining;
         const double dt = last ? remaining : m_dt_s;
@@ -185,10 +187,13 @@ void AxisIntegrator::advance_to(double t_s) {
         const double ratio = error_ratio(err, y0, dy0, dt, m_tol);
         if (ratio > 1.0) {
             m_dt_s = next_step_s(dt, ratio);
+            if (m_after_change) m_dt_after_change_s = m_dt_s;
             continue;
         }
         ++m_steps;
         const double next = std::min(next_step_s(dt, ratio), m_tol.max_step_s);
+        if (m_after_change && !last) m_dt_after_change_s = next;
+        m_after_change = false;
         if (!last || next < m_dt_s) m_dt_s = next;
         AxisState x1 = y1;
         AxisState dx1 = dy1;

@@ -57,6 +57,10 @@ private:
     bool m_dxdt_valid = false;
     double m_t_s = 0.0;
     double m_dt_s;
+    // Every set-point change starts a transient (a current ramp, the rotor's response) whose first step wants
+    // about the size it wanted after the previous change, not the size the quiet end of the last one grew to.
+    bool m_after_change = false;
+    double m_dt_after_change_s = 0.0;
     bool m_at_rest = false;
     std::int64_t m_steps = 0;
 };

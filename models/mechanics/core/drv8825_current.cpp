@@ -20,26 +20,6 @@ WindingSetpoints winding_setpoints(std::int64_t units, const DriverElectrics& dr
     return {pct.a_pct / 100.0 * drv.current_limit_a, pct.b_pct / 100.0 * drv.current_limit_a};
 }
 
-double wanted_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm, double inductance_h,
-                        const DriverElectrics& drv) {
-    return resistance_ohm * i_ref_a + emf_v + inductance_h * (i_ref_a - i_a) / drv.chop_tau_s;
-}
-
-BridgeMode bridge_mode(double wanted_v, const DriverElectrics& drv) {
-    if (wanted_v >= drv.supply_v) return BridgeMode::High;
-    if (wanted_v <= -drv.supply_v) return BridgeMode::Low;
-    return BridgeMode::Regulating;
-}
-
-double bridge_voltage_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv) {
-    switch (mode) {
-    case BridgeMode::High: return drv.supply_v;
-    case BridgeMode::Low: return -drv.supply_v;
-    case BridgeMode::Regulating: break;
-    }
-    return wanted_v;
-}
-
 double mode_margin_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv) {
     switch (mode) {
     case BridgeMode::High: return wanted_v - drv.supply_v;

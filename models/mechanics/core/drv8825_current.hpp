@@ -9,6 +9,7 @@
 // would make falling currents lag more. EN off (nENBL high) sets both set-points to 0: the bridges drive
 // the currents to zero and keep them there (no holding torque).
 #pragma once
+#include <cmath>
 #include <cstdint>
 
 namespace cnc::mech {
@@ -39,11 +40,24 @@ struct WindingSetpoints {
 enum class BridgeMode { Regulating, High, Low };
 
 // The voltage that would bring the current to its set-point within tau: R i_ref + e + L (i_ref - i) / tau.
-[[nodiscard]] double wanted_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm,
-                                      double inductance_h, const DriverElectrics& drv);
-[[nodiscard]] BridgeMode bridge_mode(double wanted_v, const DriverElectrics& drv);
+inline double wanted_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm, double inductance_h,
+                        const DriverElectrics& drv) {
+    return resistance_ohm * i_ref_a + emf_v + inductance_h * (i_ref_a - i_a) / drv.chop_tau_s;
+}
+inline BridgeMode bridge_mode(double wanted_v, const DriverElectrics& drv) {
+    if (wanted_v >= drv.supply_v) return BridgeMode::High;
+    if (wanted_v <= -drv.supply_v) return BridgeMode::Low;
+    return BridgeMode::Regulating;
+}
 // The bridge's voltage in a mode (the wanted voltage while it regulates).
-[[nodiscard]] double bridge_voltage_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv);
+inline double bridge_voltage_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv) {
+    switch (mode) {
+    case BridgeMode::High: return drv.supply_v;
+    case BridgeMode::Low: return -drv.supply_v;
+    case BridgeMode::Regulating: break;
+    }
+    return wanted_v;
+}
 // How far inside `mode` the wanted voltage is, V: >= 0 while the bridge stays in it (> 0 for Regulating).
 [[nodiscard]] double mode_margin_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv);
 // The averaged bridge voltage for one winding: the wanted voltage clamped to +-VMOT.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include <boost/numeric/odeint.hpp>
 #include <boost/numeric/odeint/external/eigen/eigen.hpp>
@@ -23,9 +24,9 @@ constexpr double kRestAlphaRad_s2 = 1e-2;
 constexpr double kRestVelocityM_s = 1e-9;
 constexpr double kRestAccelM_s2 = 1e-5;
 constexpr double kRestCurrentErrorA = 1e-5;
-// A bridge's change of mode is placed within 10 ns: the DRV8825 decides its PWM on a far coarser time scale
+// A change of mode is placed within 100 ns: the DRV8825 decides its PWM on a far coarser time scale
 // (its fixed off-time is about 30 us, SLVSA73 §7.6 tOFF).
-constexpr double kModeSwitchResolutionS = 1e-8;
+constexpr double kModeSwitchResolutionS = 1e-7;
 
 // Integrating factor (Lawson's method) for the windings whose bridge regulates during a step: such a winding
 // is integrated as z = (i - i_ref) exp(rate (t - t0)), which stays constant while the bridge regulates
@@ -103,13 +104,16 @@ double next_step_s(double dt, double err) {
 }
 
 // The time in (t0, t1] at which margin(t) turns negative, given margin(t0) = m0 >= 0 > margin(t1) = m1:
-// regula falsi with the Illinois modification, to kModeSwitchResolutionS. Returns the end of the bracket past
-// the switch, so that the next step starts in the new modes.
+// regula falsi with the Illinois modification, to kModeSwitchResolutionS. Each estimate is moved half the
+// resolution towards the side the previous one did not land on, so that a good estimate closes the bracket
+// at the next one. Returns the end of the bracket past the switch, so that the next step starts in the new
+// modes.
 template <class Margin>
 double mode_switch_time_s(const Margin& margin, double t0, double m0, double t1, double m1) {
     int kept = 0;  // which end was kept last: -1 the early one, +1 the late one
+    double bias = 0.5 * kModeSwitchResolutionS;
     while (t1 - t0 > kModeSwitchResolutionS) {
-        const double t = std::clamp((t0 * m1 - t1 * m0) / (m1 - m0), t0 + 0.25 * kModeSwitchResolutionS,
+        const double t = std::clamp((t0 * m1 - t1 * m0) / (m1 - m0) + bias, t0 + 0.25 * kModeSwitchResolutionS,
                                     t1 - 0.25 * kModeSwitchResolutionS);
         const double m = margin(t);
         if (m < 0.0) {
@@ -117,11 +121,13 @@ double mode_switch_time_s(const Margin& margin, double t0, double m0, double t1,
             m1 = m;
             if (kept == -1) m0 *= 0.5;
             kept = -1;
+            bias = -0.5 * kModeSwitchResolutionS;
         } else {
             t0 = t;
             m0 = m;
             if (kept == 1) m1 *= 0.5;
             kept = 1;
+            bias = 0.5 * kModeSwitchResolutionS;
         }
     }
     return t1;
@@ -198,14 +204,14 @@ void AxisIntegrator::advance_to(double t_s) {
         AxisState x1 = y1;
         AxisState dx1 = dy1;
         frame.leave(t1, x1, dx1);
-        const double margin1 = m_ode.mode_margin(x1, m_modes);
-        if (margin1 >= 0.0) {
+        const AxisOde::ModeMargins margins1 = m_ode.mode_margins(x1, m_modes);
+        if (*std::min_element(margins1.begin(), margins1.end()) >= 0.0) {
             m_x = x1;
             m_dxdt = dx1;
             m_t_s = t1;
             continue;
         }
-        // A bridge changed mode within the step: the step is only valid up to there. Find the time on the
+        // A part changed mode within the step: the step is only valid up to there. Find the time on the
         // step's interpolant (Dormand-Prince's dense output) and start the next step from it, in the new modes.
         auto state_at = [&](double t) {
             AxisState y;
@@ -213,8 +219,17 @@ void AxisIntegrator::advance_to(double t_s) {
             frame.leave(t, y);
             return y;
         };
-        auto margin_at = [&](double t) { return m_ode.mode_margin(state_at(t), m_modes); };
-        const double t_switch = mode_switch_time_s(margin_at, t0, m_ode.mode_margin(m_x, m_modes), t1, margin1);
+        // The margin of the parts that left their modes (the others' would mislead the secant).
+        auto crossed_margin = [&margins1](const AxisOde::ModeMargins& m) {
+            double least = std::numeric_limits<double>::infinity();
+            for (std::size_t k = 0; k < m.size(); ++k) {
+                if (margins1[k] < 0.0) least = std::min(least, m[k]);
+            }
+            return least;
+        };
+        auto margin_at = [&](double t) { return crossed_margin(m_ode.mode_margins(state_at(t), m_modes)); };
+        const double t_switch = mode_switch_time_s(margin_at, t0, crossed_margin(m_ode.mode_margins(m_x, m_modes)), t1,
+                                                   crossed_margin(margins1));
         start_at(state_at(t_switch), t_switch);
     }
     m_at_rest = converged();

@@ -68,13 +68,13 @@ AxisModes AxisOde::modes(const AxisState& x) const {
             friction_mode(x[kV], kRailStickBandM_s)};
 }
 
-double AxisOde::mode_margin(const AxisState& x, const AxisModes& modes) const {
+AxisOde::ModeMargins AxisOde::mode_margins(const AxisState& x, const AxisModes& modes) const {
     const WantedVoltages v = wanted_voltages(m_p, m_sp, x, rotor_angle(m_p.motor, x[kTheta]));
     const double vmot = m_p.driver.supply_v;
-    return std::min({mode_margin_v(modes.bridges[0], v.wanted_v[0], m_p.driver) / vmot,
-                     mode_margin_v(modes.bridges[1], v.wanted_v[1], m_p.driver) / vmot,
-                     friction_margin(modes.shaft, x[kOmega], kShaftStickBandRad_s),
-                     friction_margin(modes.rail, x[kV], kRailStickBandM_s)});
+    return {mode_margin_v(modes.bridges[0], v.wanted_v[0], m_p.driver) / vmot,
+            mode_margin_v(modes.bridges[1], v.wanted_v[1], m_p.driver) / vmot,
+            friction_margin(modes.shaft, x[kOmega], kShaftStickBandRad_s),
+            friction_margin(modes.rail, x[kV], kRailStickBandM_s)};
 }
 
 double AxisOde::regulation_rate_per_s() const {

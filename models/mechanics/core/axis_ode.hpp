@@ -52,9 +52,10 @@ public:
     [[nodiscard]] const AxisParams& params() const { return m_p; }
     // The modes at state x.
     [[nodiscard]] AxisModes modes(const AxisState& x) const;
-    // How far inside `modes` the state x is, as a fraction of VMOT or of the stick band, whichever is least:
-    // < 0 once a part has left its mode.
-    [[nodiscard]] double mode_margin(const AxisState& x, const AxisModes& modes) const;
+    // How far inside `modes` the state x is, per part (bridges a, b, shaft, rail), as a fraction of VMOT or of
+    // the stick band: < 0 once the part has left its mode.
+    using ModeMargins = std::array<double, 4>;
+    [[nodiscard]] ModeMargins mode_margins(const AxisState& x, const AxisModes& modes) const;
     // The rate at which a regulated winding's current error decays, 1/s.
     [[nodiscard]] double regulation_rate_per_s() const;
     // Kinetic energy of rotor and carriage plus the energy in the coupling and the detent, J (the winding

@@ -35,8 +35,9 @@ constexpr double kModeSwitchResolutionS = 1e-7;
 // it is.
 class CurrentFrame {
 public:
-    CurrentFrame(const AxisOde& ode, const AxisModes& modes, double t0_s)
-        : m_ode(ode), m_modes(modes), m_t0_s(t0_s), m_rate_per_s(ode.regulation_rate_per_s()) {
+    CurrentFrame(const AxisOde& ode, const AxisModes& modes, const AxisState& x0, double t0_s)
+        : m_ode(ode), m_modes(modes), m_angle(ode.params().motor, x0[kTheta]), m_t0_s(t0_s),
+          m_rate_per_s(ode.regulation_rate_per_s()) {
         const WindingSetpoints& sp = ode.setpoints().current;
         m_offset_a = {regulated(0) ? sp.a_a : 0.0, regulated(1) ? sp.b_a : 0.0};
     }
@@ -64,15 +65,19 @@ public:
             if (regulated(k)) dy[k] = -m_rate_per_s * (y[k] - m_offset_a[k]);
         }
     }
+    // The margins of the modes at a physical state within the step (axis_ode.hpp).
+    [[nodiscard]] AxisOde::ModeMargins mode_margins(const AxisState& x) const {
+        return m_ode.mode_margins(x, m_modes, m_angle.at(x[kTheta]));
+    }
     // The equations of motion in the frame.
     void operator()(const AxisState& y, AxisState& dy, double t_s) const {
         if (!regulated(0) && !regulated(1)) {
-            m_ode.derivative(y, dy, m_modes);
+            m_ode.derivative(y, dy, m_modes, m_angle.at(y[kTheta]));
             return;
         }
         AxisState x = y;
         leave(t_s, x);
-        m_ode.derivative(x, dy, m_modes);
+        m_ode.derivative(x, dy, m_modes, m_angle.at(x[kTheta]));
         for (int k = 0; k < 2; ++k) {
             if (regulated(k)) dy[k] = 0.0;  // the decay is the frame's: d/dt (i - i_ref) = -rate (i - i_ref)
         }
@@ -83,6 +88,7 @@ private:
 
     const AxisOde& m_ode;
     AxisModes m_modes;
+    RotorAngleNear m_angle;  // the shaft moves little within a step
     double m_t0_s;
     double m_rate_per_s;
     std::array<double, 2> m_offset_a{};
@@ -163,7 +169,7 @@ void AxisIntegrator::start_at(const AxisState& x, double t_s) {
     m_x = x;
     m_t_s = t_s;
     m_modes = m_ode.modes(m_x);
-    m_ode.derivative(m_x, m_dxdt, m_modes);
+    m_ode.derivative(m_x, m_dxdt, m_modes, rotor_angle(m_ode.params().motor, m_x[kTheta]));
     m_dxdt_valid = true;
 }
 
@@ -182,7 +188,7 @@ void AxisIntegrator::advance_to(double t_s) {
         const double dt = last ? remaining : m_dt_s;
         const double t0 = m_t_s;
         const double t1 = last ? t_s : t0 + dt;  // land exactly on the event time despite rounding
-        const CurrentFrame frame(m_ode, m_modes, t0);
+        const CurrentFrame frame(m_ode, m_modes, m_x, t0);
         AxisState y0 = m_x;
         AxisState dy0 = m_dxdt;
         frame.enter(y0, dy0);
@@ -204,7 +210,7 @@ void AxisIntegrator::advance_to(double t_s) {
         AxisState x1 = y1;
         AxisState dx1 = dy1;
         frame.leave(t1, x1, dx1);
-        const AxisOde::ModeMargins margins1 = m_ode.mode_margins(x1, m_modes);
+        const AxisOde::ModeMargins margins1 = frame.mode_margins(x1);
         if (*std::min_element(margins1.begin(), margins1.end()) >= 0.0) {
             m_x = x1;
             m_dxdt = dx1;
@@ -227,8 +233,8 @@ void AxisIntegrator::advance_to(double t_s) {
             }
             return least;
         };
-        auto margin_at = [&](double t) { return crossed_margin(m_ode.mode_margins(state_at(t), m_modes)); };
-        const double t_switch = mode_switch_time_s(margin_at, t0, crossed_margin(m_ode.mode_margins(m_x, m_modes)), t1,
+        auto margin_at = [&](double t) { return crossed_margin(frame.mode_margins(state_at(t))); };
+        const double t_switch = mode_switch_time_s(margin_at, t0, crossed_margin(frame.mode_margins(m_x)), t1,
                                                    crossed_margin(margins1));
         start_at(state_at(t_switch), t_switch);
     }

@@ -35,11 +35,10 @@ WantedVoltages wanted_voltages(const AxisParams& p, const AxisSetpoints& sp, con
 
 }  // namespace
 
-void AxisOde::derivative(const AxisState& x, AxisState& dxdt, const AxisModes& modes) const {
+void AxisOde::derivative(const AxisState& x, AxisState& dxdt, const AxisModes& modes, RotorAngle angle) const {
     const HybridStepperParams& m = m_p.motor;
     const double theta = x[kTheta];
     const double omega = x[kOmega];
-    const RotorAngle angle = rotor_angle(m, theta);
     const WantedVoltages v = wanted_voltages(m_p, m_sp, x, angle);
     for (int k = 0; k < 2; ++k) {
         const double bridge_v = bridge_voltage_v(modes.bridges[k], v.wanted_v[k], m_p.driver);
@@ -68,8 +67,8 @@ AxisModes AxisOde::modes(const AxisState& x) const {
             friction_mode(x[kV], kRailStickBandM_s)};
 }
 
-AxisOde::ModeMargins AxisOde::mode_margins(const AxisState& x, const AxisModes& modes) const {
-    const WantedVoltages v = wanted_voltages(m_p, m_sp, x, rotor_angle(m_p.motor, x[kTheta]));
+AxisOde::ModeMargins AxisOde::mode_margins(const AxisState& x, const AxisModes& modes, RotorAngle angle) const {
+    const WantedVoltages v = wanted_voltages(m_p, m_sp, x, angle);
     const double vmot = m_p.driver.supply_v;
     return {mode_margin_v(modes.bridges[0], v.wanted_v[0], m_p.driver) / vmot,
             mode_margin_v(modes.bridges[1], v.wanted_v[1], m_p.driver) / vmot,

@@ -45,8 +45,8 @@ public:
     explicit AxisOde(const AxisParams& params);
 
     // The equations of motion held in `modes`: smooth in the state, which the integrator's error control
-    // needs; it ends a step where the modes change.
-    void derivative(const AxisState& x, AxisState& dxdt, const AxisModes& modes) const;
+    // needs; it ends a step where the modes change. `angle`: the rotor angle of x[kTheta] (hybrid_stepper.hpp).
+    void derivative(const AxisState& x, AxisState& dxdt, const AxisModes& modes, RotorAngle angle) const;
     void set_setpoints(const AxisSetpoints& sp) { m_sp = sp; }
     [[nodiscard]] const AxisSetpoints& setpoints() const { return m_sp; }
     [[nodiscard]] const AxisParams& params() const { return m_p; }
@@ -55,7 +55,7 @@ public:
     // How far inside `modes` the state x is, per part (bridges a, b, shaft, rail), as a fraction of VMOT or of
     // the stick band: < 0 once the part has left its mode.
     using ModeMargins = std::array<double, 4>;
-    [[nodiscard]] ModeMargins mode_margins(const AxisState& x, const AxisModes& modes) const;
+    [[nodiscard]] ModeMargins mode_margins(const AxisState& x, const AxisModes& modes, RotorAngle angle) const;
     // The rate at which a regulated winding's current error decays, 1/s.
     [[nodiscard]] double regulation_rate_per_s() const;
     // Kinetic energy of rotor and carriage plus the energy in the coupling and the detent, J (the winding

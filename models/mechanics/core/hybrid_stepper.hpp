@@ -62,6 +62,25 @@ inline RotorAngle rotor_angle(const HybridStepperParams& p, double theta_rad) {
     const double psi = rotor_electrical_rad(p, theta_rad);
     return {std::sin(psi), std::cos(psi)};
 }
+// rotor_angle for shaft angles near theta0, cheaper when called many times: psi = psi0 + N_r (theta - theta0)
+// with the sine and cosine of psi0 computed once and those of the small difference rotated onto them (the libm
+// computes a small argument without range reduction; psi itself reaches hundreds of radians).
+class RotorAngleNear {
+public:
+    RotorAngleNear(const HybridStepperParams& p, double theta0_rad)
+        : m_rotor_teeth(p.rotor_teeth), m_theta0_rad(theta0_rad), m_at0(rotor_angle(p, theta0_rad)) {}
+    [[nodiscard]] RotorAngle at(double theta_rad) const {
+        const double d = m_rotor_teeth * (theta_rad - m_theta0_rad);
+        const double s = std::sin(d);
+        const double c = std::cos(d);
+        return {m_at0.sin_psi * c + m_at0.cos_psi * s, m_at0.cos_psi * c - m_at0.sin_psi * s};
+    }
+
+private:
+    double m_rotor_teeth;
+    double m_theta0_rad;
+    RotorAngle m_at0;
+};
 // Electromagnetic torque of the two winding currents, N m.
 inline double electromagnetic_torque_nm(const HybridStepperParams& p, RotorAngle a, WindingCurrents i) {
     return p.torque_constant_nm_per_a() * (-i.a_a * a.sin_psi + i.b_a * a.cos_psi);

@@ -1,10 +1,13 @@
 // Event-driven integration of one axis (axis_ode.hpp) with Boost.Odeint.
 //
-// Stepper: Dormand-Prince 5(4) (runge_kutta_dopri5) under odeint's step-size control, with absolute and
-// relative error tolerances per step (IntegratorTolerances). A winding whose DRV8825 bridge regulates is
-// integrated through an integrating factor (Lawson's method, axis_integrator.cpp): its current's 20 us decay
-// towards the set-point is exact, not stepped through, and a step that ends a current ramp ends where the
-// bridge regulates again. The set-points are constant between events,
+// Stepper: Dormand-Prince 5(4) (Boost.Odeint's runge_kutta_dopri5) under odeint's step-size rule, with
+// absolute and relative error tolerances per step (IntegratorTolerances). The equations are piecewise smooth
+// (a DRV8825 bridge regulates or sits at +-VMOT; a body is inside or outside its friction's stick band): each
+// step holds the modes of its start (AxisModes), and a step at whose end they no longer hold is cut where they
+// changed, found on the step's interpolant (Dormand-Prince's dense output), so that no step straddles a kink
+// the error control would reject again and again. A winding whose bridge regulates is integrated through an
+// integrating factor (Lawson's method, axis_integrator.cpp): its current's 20 us decay towards the set-point is
+// exact, not stepped through. The set-points are constant between events,
 // so the caller advances the state to each event time (a microstep change, an EN change, a sample) and
 // then changes them; the integrator never steps past the time it is asked for. Once the axis has come to
 // rest (speeds, accelerations and current errors below the rest thresholds) it is fast-forwarded: later
@@ -20,7 +23,7 @@ namespace cnc::mech {
 
 struct IntegratorTolerances {
     double abs_tol = 1e-8;     // per step, in the state's SI units (A, rad, rad/s, m, m/s)
-    double rel_tol = 1e-5;
+    double rel_tol = 1e-4;    // the reports change by < 0.03 um against 1e-5 (docs/mechanics.md)
     double max_step_s = 1e-3;  // never step further than this, so the step control sees every transient
 };
 
@@ -43,14 +46,21 @@ public:
 
 private:
     [[nodiscard]] bool converged() const;
+    // Continues from state x at time t, in the bridge modes of x.
+    void start_at(const AxisState& x, double t_s);
 
     AxisOde m_ode;
     IntegratorTolerances m_tol;
     AxisState m_x = AxisState::Zero();
     AxisState m_dxdt = AxisState::Zero();  // at m_x, m_t_s when m_dxdt_valid
+    AxisModes m_modes;                      // at m_x, m_t_s when m_dxdt_valid
     bool m_dxdt_valid = false;
     double m_t_s = 0.0;
     double m_dt_s;
+    // Every set-point change starts a transient (a current ramp, the rotor's response) whose first step wants
+    // about the size it wanted after the previous change, not the size the quiet end of the last one grew to.
+    bool m_after_change = false;
+    double m_dt_after_change_s = 0.0;
     bool m_at_rest = false;
     std::int64_t m_steps = 0;
 };

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "common/bad_input.hpp"
-#include "mechanics/core/friction.hpp"
 
 namespace cnc::mech {
 
@@ -13,7 +12,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinSpanM = 0.01;             // a span never gets shorter than the pulley-to-clamp distance
-constexpr double kRailStickBandM_s = 1e-4;      // the carriage may stick below 0.1 mm/s
 
 void require(bool ok, const char* what, double v) {
     if (!ok) throw BadInput("", std::string(what) + " (got " + std::to_string(v) + ")");
@@ -89,9 +87,13 @@ CouplingForces coupling_forces(const AxisLoadParams& p, double theta_rad, double
     return {};
 }
 
-double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n) {
+double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n, FrictionMode mode) {
     const double viscous = -p.rail_viscous_n_per_m_s * v_m_s;
-    return viscous + coulomb_friction(p.rail_friction_n, v_m_s, other_n + viscous, p.carriage_mass_kg, kRailStickBandM_s);
+    return viscous + coulomb_friction(mode, p.rail_friction_n, v_m_s, other_n + viscous, p.carriage_mass_kg);
+}
+
+double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n) {
+    return rail_friction_n(p, v_m_s, other_n, friction_mode(v_m_s, kRailStickBandM_s));
 }
 
 double coupling_energy_j(const AxisLoadParams& p, double theta_rad, double x_m) {

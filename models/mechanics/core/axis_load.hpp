@@ -11,6 +11,7 @@
 // motor must supply (we assume the motor always drives the load, i.e. the screw never back-drives it).
 // Rails: Coulomb friction that sticks at rest (friction.hpp) and viscous friction.
 #pragma once
+#include "mechanics/core/friction.hpp"
 
 namespace cnc::mech {
 
@@ -49,7 +50,11 @@ struct CouplingForces {
 // Forces between shaft (angle theta, speed omega) and carriage (x, v).
 [[nodiscard]] CouplingForces coupling_forces(const AxisLoadParams& p, double theta_rad, double omega_rad_s,
                                              double x_m, double v_m_s);
-// Rail friction force on the carriage at speed v (opposes it), N; `other_n`: the other forces on it.
+// The carriage may stick below 0.1 mm/s (friction.hpp).
+inline constexpr double kRailStickBandM_s = 1e-4;
+// Rail friction force on the carriage at speed v (opposes it), N; `other_n`: the other forces on it; `mode`:
+// the carriage's side of the stick band, friction_mode(v, kRailStickBandM_s) unless the integrator holds it.
+[[nodiscard]] double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n, FrictionMode mode);
 [[nodiscard]] double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n);
 // Energy stored in the coupling, J.
 [[nodiscard]] double coupling_energy_j(const AxisLoadParams& p, double theta_rad, double x_m);

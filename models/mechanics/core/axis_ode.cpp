@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
-#include "mechanics/core/friction.hpp"
 
 namespace cnc::mech {
 
@@ -19,22 +17,38 @@ AxisOde::AxisOde(const AxisParams& params) : m_p(params) {
     validate(m_p.load);
 }
 
-void AxisOde::operator()(const AxisState& x, AxisState& dxdt, double) const {
+namespace {
+
+// The voltage each winding's bridge wants at state x (drv8825_current.hpp), and the back-EMF it contains.
+struct WantedVoltages {
+    std::array<double, 2> wanted_v;
+    std::array<double, 2> emf_v;
+};
+
+WantedVoltages wanted_voltages(const AxisParams& p, const AxisSetpoints& sp, const AxisState& x, RotorAngle angle) {
+    const HybridStepperParams& m = p.motor;
+    const WindingCurrents emf = back_emf_v(m, angle, x[kOmega]);
+    return {{wanted_voltage_v(sp.current.a_a, x[kIa], emf.a_a, m.resistance_ohm, m.inductance_h, p.driver),
+             wanted_voltage_v(sp.current.b_a, x[kIb], emf.b_a, m.resistance_ohm, m.inductance_h, p.driver)},
+            {emf.a_a, emf.b_a}};
+}
+
+}  // namespace
+
+void AxisOde::derivative(const AxisState& x, AxisState& dxdt, const AxisModes& modes, RotorAngle angle) const {
     const HybridStepperParams& m = m_p.motor;
     const double theta = x[kTheta];
     const double omega = x[kOmega];
-    const RotorAngle angle = rotor_angle(m, theta);
-    const WindingCurrents emf = back_emf_v(m, angle, omega);
-    const double va = bridge_voltage_v(m_sp.current.a_a, x[kIa], emf.a_a, m.resistance_ohm, m.inductance_h, m_p.driver);
-    const double vb = bridge_voltage_v(m_sp.current.b_a, x[kIb], emf.b_a, m.resistance_ohm, m.inductance_h, m_p.driver);
-    dxdt[kIa] = (va - m.resistance_ohm * x[kIa] - emf.a_a) / m.inductance_h;
-    dxdt[kIb] = (vb - m.resistance_ohm * x[kIb] - emf.b_a) / m.inductance_h;
+    const WantedVoltages v = wanted_voltages(m_p, m_sp, x, angle);
+    for (int k = 0; k < 2; ++k) {
+        const double bridge_v = bridge_voltage_v(modes.bridges[k], v.wanted_v[k], m_p.driver);
+        dxdt[k] = (bridge_v - m.resistance_ohm * x[k] - v.emf_v[k]) / m.inductance_h;
+    }
 
     const CouplingForces f = coupling_forces(m_p.load, theta, omega, x[kX], x[kV]);
     const double other = electromagnetic_torque_nm(m, angle, {x[kIa], x[kIb]}) + detent_torque_nm(m, angle) +
                          f.on_rotor_nm - m.viscous_nm_per_rad_s * omega + m_sp.external_torque_nm;
-    const double torque =
-        other + coulomb_friction(m.coulomb_nm, omega, other, m.rotor_inertia_kgm2, kShaftStickBandRad_s);
+    const double torque = other + coulomb_friction(modes.shaft, m.coulomb_nm, omega, other, m.rotor_inertia_kgm2);
     dxdt[kTheta] = omega;
     dxdt[kOmega] = torque / m.rotor_inertia_kgm2;
     if (m_p.load.kind == DriveKind::Free) {
@@ -43,23 +57,23 @@ void AxisOde::operator()(const AxisState& x, AxisState& dxdt, double) const {
         return;
     }
     dxdt[kX] = x[kV];
-    dxdt[kV] = (f.on_carriage_n + rail_friction_n(m_p.load, x[kV], f.on_carriage_n)) / m_p.load.carriage_mass_kg;
+    dxdt[kV] = (f.on_carriage_n + rail_friction_n(m_p.load, x[kV], f.on_carriage_n, modes.rail)) / m_p.load.carriage_mass_kg;
 }
 
-AxisOde::Bridges AxisOde::bridges(const AxisState& x, const AxisState& dxdt) const {
-    const HybridStepperParams& m = m_p.motor;
-    const WindingCurrents emf = back_emf_v(m, rotor_angle(m, x[kTheta]), x[kOmega]);
-    const std::array<double, 2> ref{m_sp.current.a_a, m_sp.current.b_a};
-    const std::array<double, 2> e{emf.a_a, emf.b_a};
-    Bridges b{{false, false}, std::numeric_limits<double>::infinity()};
-    for (int k = 0; k < 2; ++k) {
-        b.regulate[k] = bridge_regulates(ref[k], x[k], e[k], m.resistance_ohm, m.inductance_h, m_p.driver);
-        if (b.regulate[k]) continue;
-        b.time_to_regulation_s = std::min(b.time_to_regulation_s,
-                                          time_to_regulation_s(ref[k], x[k], e[k], m.resistance_ohm,
-                                                               m.inductance_h, m_p.driver, dxdt[k]));
-    }
-    return b;
+AxisModes AxisOde::modes(const AxisState& x) const {
+    const WantedVoltages v = wanted_voltages(m_p, m_sp, x, rotor_angle(m_p.motor, x[kTheta]));
+    return {{bridge_mode(v.wanted_v[0], m_p.driver), bridge_mode(v.wanted_v[1], m_p.driver)},
+            friction_mode(x[kOmega], kShaftStickBandRad_s),
+            friction_mode(x[kV], kRailStickBandM_s)};
+}
+
+AxisOde::ModeMargins AxisOde::mode_margins(const AxisState& x, const AxisModes& modes, RotorAngle angle) const {
+    const WantedVoltages v = wanted_voltages(m_p, m_sp, x, angle);
+    const double vmot = m_p.driver.supply_v;
+    return {mode_margin_v(modes.bridges[0], v.wanted_v[0], m_p.driver) / vmot,
+            mode_margin_v(modes.bridges[1], v.wanted_v[1], m_p.driver) / vmot,
+            friction_margin(modes.shaft, x[kOmega], kShaftStickBandRad_s),
+            friction_margin(modes.rail, x[kV], kRailStickBandM_s)};
 }
 
 double AxisOde::regulation_rate_per_s() const {

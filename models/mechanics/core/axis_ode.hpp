@@ -13,6 +13,7 @@
 
 #include "mechanics/core/axis_load.hpp"
 #include "mechanics/core/drv8825_current.hpp"
+#include "mechanics/core/friction.hpp"
 #include "mechanics/core/hybrid_stepper.hpp"
 
 namespace cnc::mech {
@@ -26,6 +27,14 @@ struct AxisParams {
     AxisLoadParams load;
 };
 
+// The piecewise parts of the equations: each winding's bridge (drv8825_current.hpp) and each body's side of
+// its friction's stick band (friction.hpp). Within one set of modes the equations are smooth in the state.
+struct AxisModes {
+    std::array<BridgeMode, 2> bridges{};  // windings a, b
+    FrictionMode shaft = FrictionMode::Stuck;
+    FrictionMode rail = FrictionMode::Stuck;
+};
+
 struct AxisSetpoints {
     WindingSetpoints current;
     double external_torque_nm = 0.0;  // a torque applied to the shaft from outside (tests, load studies)
@@ -35,17 +44,18 @@ class AxisOde {
 public:
     explicit AxisOde(const AxisParams& params);
 
-    void operator()(const AxisState& x, AxisState& dxdt, double t_s) const;
+    // The equations of motion held in `modes`: smooth in the state, which the integrator's error control
+    // needs; it ends a step where the modes change. `angle`: the rotor angle of x[kTheta] (hybrid_stepper.hpp).
+    void derivative(const AxisState& x, AxisState& dxdt, const AxisModes& modes, RotorAngle angle) const;
     void set_setpoints(const AxisSetpoints& sp) { m_sp = sp; }
     [[nodiscard]] const AxisSetpoints& setpoints() const { return m_sp; }
     [[nodiscard]] const AxisParams& params() const { return m_p; }
-    // Per winding (a, b), whether its bridge regulates the current (drv8825_current.hpp), and the earliest
-    // time at which one at +-VMOT regulates again, estimated from the currents' rates of change in dxdt.
-    struct Bridges {
-        std::array<bool, 2> regulate;
-        double time_to_regulation_s;  // infinity if no ramping current approaches its set-point
-    };
-    [[nodiscard]] Bridges bridges(const AxisState& x, const AxisState& dxdt) const;
+    // The modes at state x.
+    [[nodiscard]] AxisModes modes(const AxisState& x) const;
+    // How far inside `modes` the state x is, per part (bridges a, b, shaft, rail), as a fraction of VMOT or of
+    // the stick band: < 0 once the part has left its mode.
+    using ModeMargins = std::array<double, 4>;
+    [[nodiscard]] ModeMargins mode_margins(const AxisState& x, const AxisModes& modes, RotorAngle angle) const;
     // The rate at which a regulated winding's current error decays, 1/s.
     [[nodiscard]] double regulation_rate_per_s() const;
     // Kinetic energy of rotor and carriage plus the energy in the coupling and the detent, J (the winding

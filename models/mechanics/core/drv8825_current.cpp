@@ -1,8 +1,6 @@
 #include "mechanics/core/drv8825_current.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include "common/bad_input.hpp"
@@ -22,33 +20,19 @@ WindingSetpoints winding_setpoints(std::int64_t units, const DriverElectrics& dr
     return {pct.a_pct / 100.0 * drv.current_limit_a, pct.b_pct / 100.0 * drv.current_limit_a};
 }
 
-namespace {
-
-double wanted_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm, double inductance_h,
-                        const DriverElectrics& drv) {
-    return resistance_ohm * i_ref_a + emf_v + inductance_h * (i_ref_a - i_a) / drv.chop_tau_s;
+double mode_margin_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv) {
+    switch (mode) {
+    case BridgeMode::High: return wanted_v - drv.supply_v;
+    case BridgeMode::Low: return -drv.supply_v - wanted_v;
+    case BridgeMode::Regulating: break;
+    }
+    return drv.supply_v - std::abs(wanted_v);
 }
-
-}  // namespace
 
 double bridge_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm, double inductance_h,
                         const DriverElectrics& drv) {
     const double wanted = wanted_voltage_v(i_ref_a, i_a, emf_v, resistance_ohm, inductance_h, drv);
-    return std::clamp(wanted, -drv.supply_v, drv.supply_v);
-}
-
-bool bridge_regulates(double i_ref_a, double i_a, double emf_v, double resistance_ohm, double inductance_h,
-                      const DriverElectrics& drv) {
-    return std::abs(wanted_voltage_v(i_ref_a, i_a, emf_v, resistance_ohm, inductance_h, drv)) < drv.supply_v;
-}
-
-double time_to_regulation_s(double i_ref_a, double i_a, double emf_v, double resistance_ohm, double inductance_h,
-                            const DriverElectrics& drv, double di_dt_a_s) {
-    const double wanted = wanted_voltage_v(i_ref_a, i_a, emf_v, resistance_ohm, inductance_h, drv);
-    const double limit = wanted > 0.0 ? drv.supply_v : -drv.supply_v;
-    const double error_at_limit_a = drv.chop_tau_s * (limit - resistance_ohm * i_ref_a - emf_v) / inductance_h;
-    const double t = ((i_ref_a - i_a) - error_at_limit_a) / di_dt_a_s;
-    return t > 0.0 ? t : std::numeric_limits<double>::infinity();
+    return bridge_voltage_v(bridge_mode(wanted, drv), wanted, drv);
 }
 
 double regulation_rate_per_s(double resistance_ohm, double inductance_h, const DriverElectrics& drv) {

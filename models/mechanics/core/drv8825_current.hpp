@@ -9,6 +9,7 @@
 // would make falling currents lag more. EN off (nENBL high) sets both set-points to 0: the bridges drive
 // the currents to zero and keep them there (no holding torque).
 #pragma once
+#include <cmath>
 #include <cstdint>
 
 namespace cnc::mech {
@@ -33,17 +34,35 @@ struct WindingSetpoints {
 // Set-points at indexer position `units` (1/32-step units, home = 0 -> 71 % / 71 %), scaled by the limit.
 [[nodiscard]] WindingSetpoints winding_setpoints(std::int64_t units, const DriverElectrics& drv, bool enabled);
 
-// Averaged bridge voltage for one winding: R i_ref + e + L (i_ref - i) / tau, clamped to +-VMOT.
+// What a winding's bridge does: it regulates (the voltage it wants is within +-VMOT) or sits at +VMOT or
+// -VMOT. While it regulates, L di/dt = -(R + L / tau)(i - i_ref): the current error decays as
+// exp(-regulation_rate t) whatever the rotor does.
+enum class BridgeMode { Regulating, High, Low };
+
+// The voltage that would bring the current to its set-point within tau: R i_ref + e + L (i_ref - i) / tau.
+inline double wanted_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm, double inductance_h,
+                        const DriverElectrics& drv) {
+    return resistance_ohm * i_ref_a + emf_v + inductance_h * (i_ref_a - i_a) / drv.chop_tau_s;
+}
+inline BridgeMode bridge_mode(double wanted_v, const DriverElectrics& drv) {
+    if (wanted_v >= drv.supply_v) return BridgeMode::High;
+    if (wanted_v <= -drv.supply_v) return BridgeMode::Low;
+    return BridgeMode::Regulating;
+}
+// The bridge's voltage in a mode (the wanted voltage while it regulates).
+inline double bridge_voltage_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv) {
+    switch (mode) {
+    case BridgeMode::High: return drv.supply_v;
+    case BridgeMode::Low: return -drv.supply_v;
+    case BridgeMode::Regulating: break;
+    }
+    return wanted_v;
+}
+// How far inside `mode` the wanted voltage is, V: >= 0 while the bridge stays in it (> 0 for Regulating).
+[[nodiscard]] double mode_margin_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv);
+// The averaged bridge voltage for one winding: the wanted voltage clamped to +-VMOT.
 [[nodiscard]] double bridge_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm,
                                       double inductance_h, const DriverElectrics& drv);
-// Whether that voltage is within +-VMOT: then L di/dt = -(R + L / tau)(i - i_ref), so the current error decays
-// as exp(-regulation_rate t) whatever the rotor does.
-[[nodiscard]] bool bridge_regulates(double i_ref_a, double i_a, double emf_v, double resistance_ohm,
-                                    double inductance_h, const DriverElectrics& drv);
-// For a bridge at +-VMOT whose current moves at di_dt towards its set-point: the time until it regulates again,
-// at the current error where the voltage it wants comes back within +-VMOT (infinity if it does not approach).
-[[nodiscard]] double time_to_regulation_s(double i_ref_a, double i_a, double emf_v, double resistance_ohm,
-                                          double inductance_h, const DriverElectrics& drv, double di_dt_a_s);
 [[nodiscard]] double regulation_rate_per_s(double resistance_ohm, double inductance_h, const DriverElectrics& drv);
 
 }  // namespace cnc::mech

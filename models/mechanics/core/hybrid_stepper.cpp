@@ -10,17 +10,12 @@ namespace cnc::mech {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kHomeElectricalRad = kPi / 4.0;  // DRV8825 home state, 45 deg (drv8825_modes.hpp)
 
 void require(bool ok, const char* what, double v) {
     if (!ok) throw BadInput("", std::string("motor ") + what + " (got " + std::to_string(v) + ")");
 }
 
 }  // namespace
-
-double HybridStepperParams::torque_constant_nm_per_a() const {
-    return holding_torque_nm / (std::sqrt(2.0) * rated_current_a);
-}
 
 double HybridStepperParams::full_step_rad() const { return kPi / (2.0 * rotor_teeth); }
 
@@ -34,30 +29,6 @@ void validate(const HybridStepperParams& p) {
     require(p.detent_torque_nm >= 0.0, "detent_torque_nm must be >= 0", p.detent_torque_nm);
     require(p.viscous_nm_per_rad_s >= 0.0, "viscous_nm_s_per_rad must be >= 0", p.viscous_nm_per_rad_s);
     require(p.coulomb_nm >= 0.0, "coulomb_nm must be >= 0", p.coulomb_nm);
-}
-
-double rotor_electrical_rad(const HybridStepperParams& p, double theta_rad) {
-    return p.rotor_teeth * theta_rad + kHomeElectricalRad;
-}
-
-RotorAngle rotor_angle(const HybridStepperParams& p, double theta_rad) {
-    const double psi = rotor_electrical_rad(p, theta_rad);
-    return {std::sin(psi), std::cos(psi)};
-}
-
-double electromagnetic_torque_nm(const HybridStepperParams& p, RotorAngle a, WindingCurrents i) {
-    return p.torque_constant_nm_per_a() * (-i.a_a * a.sin_psi + i.b_a * a.cos_psi);
-}
-
-WindingCurrents back_emf_v(const HybridStepperParams& p, RotorAngle a, double omega_rad_s) {
-    const double k = p.torque_constant_nm_per_a() * omega_rad_s;
-    return {-k * a.sin_psi, k * a.cos_psi};
-}
-
-double detent_torque_nm(const HybridStepperParams& p, RotorAngle a) {
-    const double s = a.sin_psi;
-    const double c = a.cos_psi;
-    return p.detent_torque_nm * 4.0 * s * c * (c * c - s * s);  // sin 4psi = 2 sin 2psi cos 2psi
 }
 
 double detent_energy_j(const HybridStepperParams& p, double theta_rad) {

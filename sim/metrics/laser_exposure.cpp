@@ -1,6 +1,5 @@
 #include "metrics/laser_exposure.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace cnc::metrics {
@@ -26,36 +25,46 @@ double on_time_s(const EdgeLog& laser, TimePs a, TimePs b, std::size_t& next) {
 
 }  // namespace
 
-LaserExposure laser_exposure(const std::vector<ToolSample>& tool, const EdgeLog& laser) {
-    LaserExposure e;
-    double bin_start_mm = 0.0;
-    double bin_time_s = 0.0;
-    double bin_path_mm = 0.0;
+void LaserExposureFold::close_bin(LaserExposure& e) const {
+    if (m_bin_path_mm > 0.0 && m_bin_time_s / m_bin_path_mm > e.peak_s_per_mm) {
+        e.peak_s_per_mm = m_bin_time_s / m_bin_path_mm;
+        e.peak_at_path_mm = m_bin_start_mm;
+    }
+}
+
+void LaserExposureFold::fold(Samples begin, Samples end, const EdgeLog& laser) {
     std::size_t next = 0;
-    auto close_bin = [&] {
-        if (bin_path_mm > 0.0 && bin_time_s / bin_path_mm > e.peak_s_per_mm) {
-            e.peak_s_per_mm = bin_time_s / bin_path_mm;
-            e.peak_at_path_mm = bin_start_mm;
-        }
-    };
-    for (std::size_t i = 1; i < tool.size(); ++i) {
-        const double on = on_time_s(laser, tool[i - 1].t_ps, tool[i].t_ps, next);
+    for (Samples s = begin; s != end; ++s) {
+        const std::optional<ToolSample> prev = m_last;
+        m_last = *s;
+        if (!prev) continue;
+        const double on = on_time_s(laser, prev->t_ps, s->t_ps, next);
         if (on <= 0.0) continue;
-        const double d = std::hypot(tool[i].pos.x_mm - tool[i - 1].pos.x_mm, tool[i].pos.y_mm - tool[i - 1].pos.y_mm);
-        e.on_time_s += on;
-        e.lasered_path_mm += d;
-        bin_time_s += on;
-        bin_path_mm += d;
-        if (bin_path_mm >= kExposureBinMm) {
-            close_bin();
-            bin_start_mm = e.lasered_path_mm;
-            bin_time_s = 0.0;
-            bin_path_mm = 0.0;
+        const double d = std::hypot(s->pos.x_mm - prev->pos.x_mm, s->pos.y_mm - prev->pos.y_mm);
+        m_e.on_time_s += on;
+        m_e.lasered_path_mm += d;
+        m_bin_time_s += on;
+        m_bin_path_mm += d;
+        if (m_bin_path_mm >= kExposureBinMm) {
+            close_bin(m_e);
+            m_bin_start_mm = m_e.lasered_path_mm;
+            m_bin_time_s = 0.0;
+            m_bin_path_mm = 0.0;
         }
     }
-    if (bin_path_mm >= 0.5 * kExposureBinMm) close_bin();  // a short last bin would read as a dwell
+}
+
+LaserExposure LaserExposureFold::finish() const {
+    LaserExposure e = m_e;
+    if (m_bin_path_mm >= 0.5 * kExposureBinMm) close_bin(e);  // a short last bin would read as a dwell
     e.mean_s_per_mm = e.lasered_path_mm > 0.0 ? e.on_time_s / e.lasered_path_mm : 0.0;
     return e;
+}
+
+LaserExposure laser_exposure(const std::vector<ToolSample>& tool, const EdgeLog& laser) {
+    LaserExposureFold fold;
+    fold.fold(tool.begin(), tool.end(), laser);
+    return fold.finish();
 }
 
 }  // namespace cnc::metrics

@@ -2,6 +2,8 @@
 // followed. Where the head slows down, stops or rings, a stretch gets more time than the feed gives it
 // (over-burn); a head that ideally moves at a constant feed F gives every stretch 60 / F s per mm.
 #pragma once
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "common/edge_log.hpp"
@@ -18,6 +20,27 @@ struct LaserExposure {
 };
 
 inline constexpr double kExposureBinMm = 0.5;
+
+// laser_exposure window by window (the streaming metrics; laser_exposure is the one-window case), so that neither
+// the tool samples nor the laser log need be kept. Carried: the last sample, the totals, the open bin, the peak.
+class LaserExposureFold {
+public:
+    using Samples = std::vector<ToolSample>::const_iterator;
+    // The next tool samples [begin, end) in time order (the first pairs with the previous fold's last one);
+    // `laser`: the laser pin from the previous fold's last sample on (its initial level the one there), with
+    // every edge before the last of these samples.
+    void fold(Samples begin, Samples end, const EdgeLog& laser);
+    [[nodiscard]] LaserExposure finish() const;
+
+private:
+    void close_bin(LaserExposure& e) const;
+
+    LaserExposure m_e;
+    std::optional<ToolSample> m_last;
+    double m_bin_start_mm = 0.0;
+    double m_bin_time_s = 0.0;
+    double m_bin_path_mm = 0.0;
+};
 
 // Between consecutive tool samples the tool is taken to move in a straight line at constant speed, and the
 // laser's on-time in that interval is spread over the distance covered.

@@ -101,14 +101,17 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
 
     const EdgeIndex idx = index_edges(m_in);
     const MoveTimeline timeline(m_in.moves);
-    for (std::size_t i = m_sample_measured ? 1 : 0; i < m_in.tool.size() && m_in.tool[i].t_ps < cut_ps; ++i) {
-        const SampleError e = sample_error(m_in, idx, timeline, i);
+    const std::size_t first_sample = m_sample_measured ? 1 : 0;
+    std::size_t end_sample = first_sample;
+    for (; end_sample < m_in.tool.size() && m_in.tool[end_sample].t_ps < cut_ps; ++end_sample) {
+        const SampleError e = sample_error(m_in, idx, timeline, end_sample);
         m_contour.add(e.contour_um);
         m_following.add(e.following_um);
-        m_slow.add(m_in.tool[i], m_in.moves[e.move].feed_mm_per_min);
+        m_slow.add(m_in.tool[end_sample], m_in.moves[e.move].feed_mm_per_min);
         ++m_out.path.samples;
-        m_last_sample_ps = m_in.tool[i].t_ps;
+        m_last_sample_ps = m_in.tool[end_sample].t_ps;
     }
+    fold_exposure(first_sample, end_sample);
     if (final) m_out.path.job_end_um = r.path.job_end_um;
 
     take_edges_before(cut_ps, first_fold, r);
@@ -127,6 +130,13 @@ void MetricsStream::fold_laser(TimePs horizon_ps) {
                                    [horizon_ps](const TimeInterval& iv) { return iv.end > horizon_ps; });
     m_rapid.erase(m_rapid.begin(), open);
     m_slow.drop_ending_by(horizon_ps);
+}
+
+void MetricsStream::fold_exposure(std::size_t first_sample, std::size_t end_sample) {
+    if (!m_in.laser) return;
+    const auto begin = m_in.tool.begin();
+    m_exposure.fold(begin + static_cast<std::ptrdiff_t>(first_sample), begin + static_cast<std::ptrdiff_t>(end_sample),
+                    *m_in.laser);
 }
 
 bool MetricsStream::two_moves_pending() const {
@@ -171,7 +181,10 @@ void MetricsStream::drop_before(TimePs cut_ps, std::size_t cut_piece) {
 
 RunMetrics MetricsStream::finish(TimePs t_job_end_ps) {
     m_in.t_job_end_ps = t_job_end_ps;
-    if (m_in.moves.empty()) return compute_metrics(m_in);  // nothing was measured or dropped
+    if (m_in.moves.empty()) {  // nothing was measured or dropped
+        fold_exposure(0, m_in.tool.size());
+        return compute_metrics(m_in);
+    }
     measure(kEndOfTime, true);
 
     RunMetrics out = std::move(m_out);

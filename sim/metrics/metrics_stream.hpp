@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "metrics/laser.hpp"
+#include "metrics/laser_exposure.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/move_timing.hpp"
 #include "metrics/stats.hpp"
@@ -38,6 +39,8 @@ public:
     void fold(TimePs now_ps);
     // The run has ended at t_job_end_ps (not before a piece it has begun): the metrics of the whole run.
     [[nodiscard]] RunMetrics finish(TimePs t_job_end_ps);
+    // The laser's exposure per mm of the tool's path (the dynamic mechanics' report), once finished.
+    [[nodiscard]] LaserExposure laser_exposure() const { return m_exposure.finish(); }
 
 private:
     void measure(TimePs now_ps, bool final);
@@ -48,6 +51,8 @@ private:
     void drop_before(TimePs cut_ps, std::size_t cut_piece);
     // Folds the laser figures up to horizon_ps and drops the laser edges, rapid windows and slow stretches read.
     void fold_laser(TimePs horizon_ps);
+    // Folds the exposure over the tool samples [first_sample, end_sample) of pending().
+    void fold_exposure(std::size_t first_sample, std::size_t end_sample);
 
     RunInput m_in;
     bool m_detail;
@@ -68,6 +73,7 @@ private:
     SlowStretches m_slow;
     std::optional<TimePs> m_last_sample_ps;  // the last tool sample measured
     LaserFold m_laser;
+    LaserExposureFold m_exposure;
 };
 
 }  // namespace cnc::metrics

@@ -36,6 +36,7 @@ public:
     void fold(TimePs now_ps);
     // The run has ended: everything left, and the metrics of the whole run.
     [[nodiscard]] metrics::RunMetrics finish(TimePs t_job_end_ps);
+    [[nodiscard]] metrics::LaserExposure laser_exposure() const { return m_stream.laser_exposure(); }
 
 private:
     void take_until(TimePs t_ps);

@@ -275,12 +275,11 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         run_budget(s, program ? estimate_job(*program, link_pace)
                               : estimate_job(packet_moves(segments, packets, s.job_path), link_pace));
     CommandedMoves moves(program, segments, s.machine, s.interpreter.start_mm);
-    // The metrics stream (their inputs dropped as they are measured) unless the whole logs are asked for, or the
-    // dynamic mechanics' report reads every tool sample at the end.
+    // The metrics stream (their inputs dropped as they are measured) unless the whole logs are asked for.
     // The dead-time split reads each piece's first and last STEP: kept as the stream measures the pieces.
     std::optional<MetricsFeed> feed;
     std::vector<PieceSteps> steps_of_pieces;
-    if (!s.keep_run_input && machine.dynamic_x() == nullptr) {
+    if (!s.keep_run_input) {
         const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm()},
                                          {"y", "step_y", "dir_y", s.machine.y.steps_per_mm()}};
         feed.emplace(
@@ -378,7 +377,11 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         text << format("  host at %.6f s: ", ps_to_s(m.t_ps)) << m.text << '\n';
     }
     run.details_text = text.str();
-    add_mechanics_report(machine, run);
+    if (feed) {
+        add_mechanics_report(machine, feed->laser_exposure(), run);
+    } else {
+        add_mechanics_report(machine, run);
+    }
 
     if (const std::optional<std::string> framing = framing_failure(static_cast<std::int64_t>(st.framing_errors), "FPGA",
                                                                    cp2102.stats().framing_errors)) {

@@ -29,6 +29,22 @@ std::vector<ToolSample> run_with_dwell() {
     return tool;
 }
 
+// As the streaming metrics fold it: the samples in windows ending before the given sample indices, the laser
+// edges before each window's last sample dropped after it.
+metrics::LaserExposure folded_in_windows(const std::vector<ToolSample>& tool, EdgeLog laser,
+                                         std::vector<std::size_t> cuts) {
+    metrics::LaserExposureFold fold;
+    cuts.push_back(tool.size());
+    std::size_t from = 0;
+    for (const std::size_t cut : cuts) {
+        fold.fold(tool.begin() + static_cast<std::ptrdiff_t>(from), tool.begin() + static_cast<std::ptrdiff_t>(cut),
+                  laser);
+        (void)laser.take_before(tool[cut - 1].t_ps);
+        from = cut;
+    }
+    return fold.finish();
+}
+
 }  // namespace
 
 TEST(LaserExposure, ConstantFeedGivesItsInverseAndADwellShowsAsPeak) {
@@ -52,4 +68,25 @@ TEST(LaserExposure, OnlyTheLaseredPathCounts) {
     EXPECT_NEAR(e.on_time_s, 0.5, 1e-12);
     EXPECT_NEAR(e.mean_s_per_mm, 0.1, 1e-9);
     EXPECT_NEAR(e.peak_s_per_mm, 0.1, 1e-9);
+}
+
+TEST(LaserExposure, FoldedInWindowsEqualsTheWholeJob) {
+    const std::vector<ToolSample> tool = run_with_dwell();
+    // Laser on throughout, windows ending at samples 29 (3.625 mm, inside a bin), 40 and 41 (both at 5 mm: the
+    // stop between them is the next window's first interval) and 99 (12.25 mm): the figures of the whole job
+    // derived above.
+    const metrics::LaserExposure on = folded_in_windows(tool, EdgeLog{"laser", true, {}}, {30, 41, 42, 100});
+    EXPECT_DOUBLE_EQ(on.lasered_path_mm, 20.0);
+    EXPECT_NEAR(on.on_time_s, 2.5, 1e-12);
+    EXPECT_NEAR(on.mean_s_per_mm, 0.125, 1e-12);
+    EXPECT_NEAR(on.peak_s_per_mm, 1.1, 1e-9);
+    EXPECT_DOUBLE_EQ(on.peak_at_path_mm, 5.0);
+    // Laser on from 1 s to 1.5 s, windows ending inside the on stretch (samples 44 at 1.0375 s and 59 at
+    // 1.225 s) and at the off edge's sample (81 at 1.5 s): 5 mm in 0.5 s, as above.
+    const EdgeLog laser{"laser", false, {{1'000 * kPsPerMs, true}, {1'500 * kPsPerMs, false}}};
+    const metrics::LaserExposure part = folded_in_windows(tool, laser, {45, 60, 82});
+    EXPECT_NEAR(part.lasered_path_mm, 5.0, 1e-9);
+    EXPECT_NEAR(part.on_time_s, 0.5, 1e-12);
+    EXPECT_NEAR(part.mean_s_per_mm, 0.1, 1e-9);
+    EXPECT_NEAR(part.peak_s_per_mm, 0.1, 1e-9);
 }

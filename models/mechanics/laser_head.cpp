@@ -3,11 +3,6 @@
 
 namespace cnc::mech {
 
-namespace {
-
-
-}  // namespace
-
 LaserHead::LaserHead(const sc_core::sc_module_name& name) : sc_core::sc_module(name), laser("laser") {
     SC_HAS_PROCESS(LaserHead);
     SC_METHOD(on_laser);
@@ -17,7 +12,6 @@ LaserHead::LaserHead(const sc_core::sc_module_name& name) : sc_core::sc_module(n
 
 void LaserHead::start_of_simulation() {
     m_on = laser.read();
-    m_log.initial = m_on;
     m_on_since_ps = 0;
 }
 
@@ -25,7 +19,6 @@ void LaserHead::on_laser() {
     const TimePs t = now_ps();
     const bool level = laser.read();
     if (level == m_on) return;
-    m_log.add(t, level);
     if (level)
         m_on_since_ps = t;
     else

@@ -143,6 +143,7 @@ RunMetrics compute_metrics(const RunInput& in) {
         mm.timing = std::move(out.timing.moves[m]);
         out.moves.push_back(std::move(mm));
     }
+    out.worst = worst_moves(out.moves);
     out.timing.moves.clear();
     out.path.moves.clear();
     return out;

@@ -15,6 +15,7 @@
 #include "metrics/path_accuracy.hpp"
 #include "metrics/pulse_runs.hpp"
 #include "metrics/run_input.hpp"
+#include "metrics/worst_moves.hpp"
 
 namespace cnc::metrics {
 
@@ -67,6 +68,7 @@ struct RunMetrics {
     double run_split_tolerance = 0.0;  // the analyze-mode setting the runs were split with
     std::vector<AxisMetrics> axes;
     std::vector<MoveMetrics> moves;   // programmed moves (G-code lines)
+    WorstMoves worst;                 // of the programmed moves
     std::vector<MoveMetrics> pieces;  // executed pieces (RunInput::moves): packets, chords, commands
     PulseTotals pulse;
     DriverLimits limits;

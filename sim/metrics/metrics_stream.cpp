@@ -86,6 +86,7 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
     for (std::size_t g = first_group; g < end_group; ++g) {
         const MoveMetrics& mm = r.moves[g];
         m_timing.add(m_moves_done++, mm.timing, mm.t_first_edge_ps, mm.t_last_edge_ps);
+        m_worst.add(mm);
         m_out.moves.push_back(mm);
     }
     for (std::size_t a = 0; a < m_axes.size(); ++a) {
@@ -199,6 +200,7 @@ RunMetrics MetricsStream::finish(TimePs t_job_end_ps) {
         add_axis_totals(out.pulse, am);
         out.axes.push_back(std::move(am));
     }
+    out.worst = m_worst.lists();
     out.path.contour_max_um = m_contour.max_abs();
     out.path.contour_rms_um = m_contour.rms();
     out.path.following_max_um = m_following.max_abs();

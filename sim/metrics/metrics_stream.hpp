@@ -13,6 +13,7 @@
 #include "metrics/metrics.hpp"
 #include "metrics/move_timing.hpp"
 #include "metrics/stats.hpp"
+#include "metrics/worst_moves.hpp"
 
 namespace cnc::metrics {
 
@@ -68,6 +69,7 @@ private:
     std::optional<TimePs> m_first_edge_ps, m_last_edge_ps;  // any axis
     RunMetrics m_out;                 // pieces, moves, sync and endpoint extrema so far
     MaxRms m_contour, m_following;
+    WorstMovesFold m_worst;
     TimingFold m_timing;
     std::vector<TimeInterval> m_rapid;
     SlowStretches m_slow;

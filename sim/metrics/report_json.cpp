@@ -5,7 +5,6 @@
 
 #include "common/text_format.hpp"
 #include "metrics/metrics.hpp"
-#include "metrics/worst_moves.hpp"
 
 namespace cnc::metrics {
 
@@ -193,7 +192,7 @@ json moves_json(const RunMetrics& m, const std::vector<MoveMetrics>& moves, bool
 
 // Each figure's worst moves (worst_moves.hpp): index, G-code line and the figure, rounded as in the moves.
 json worst_json(const RunMetrics& m) {
-    const WorstMoves w = worst_moves(m.moves);
+    const WorstMoves& w = m.worst;
     const struct {
         const char* key;
         const std::vector<RankedMove>& list;
@@ -205,8 +204,7 @@ json worst_json(const RunMetrics& m) {
     for (const auto& f : figures) {
         json list = json::array();
         for (const RankedMove& r : f.list) {
-            const MoveMetrics& mv = m.moves[r.move];
-            list.push_back({{"move", mv.index}, {"line", mv.line}, {f.key, rounded(r.value, f.per_unit)}});
+            list.push_back({{"move", r.index}, {"line", r.line}, {f.key, rounded(r.value, f.per_unit)}});
         }
         out[f.key] = std::move(list);
     }

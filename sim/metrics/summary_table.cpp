@@ -84,7 +84,7 @@ std::string feed_section(const RunMetrics& m) {
 
 // The worst moves of each figure side by side, one rank per row; "-" where a figure has fewer moves (or none).
 std::string worst_section(const RunMetrics& m) {
-    const WorstMoves w = worst_moves(m.moves);
+    const WorstMoves& w = m.worst;
     TextTable t({"rank", "contour max [um]", "move", "line", "following max [um]", "move", "line", "feed error [%]",
                  "move", "line"});
     const auto add = [&](std::vector<std::string>& row, const std::vector<RankedMove>& list, std::size_t rank,
@@ -93,8 +93,8 @@ std::string worst_section(const RunMetrics& m) {
             row.insert(row.end(), {"-", "-", "-"});
             return;
         }
-        const MoveMetrics& mv = m.moves[list[rank].move];
-        row.insert(row.end(), {fixed(list[rank].value, decimals), std::to_string(mv.index), std::to_string(mv.line)});
+        const RankedMove& r = list[rank];
+        row.insert(row.end(), {fixed(r.value, decimals), std::to_string(r.index), std::to_string(r.line)});
     };
     const std::size_t rows = std::max({w.contour.size(), w.following.size(), w.feed.size(), std::size_t{1}});
     for (std::size_t rank = 0; rank < rows; ++rank) {

@@ -2,36 +2,35 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+
+#include "metrics/metrics.hpp"
 
 namespace cnc::metrics {
 
-namespace {
-
-using Figure = std::optional<double> (*)(const MoveMetrics&);
-
-std::vector<RankedMove> worst(const std::vector<MoveMetrics>& moves, std::size_t n, Figure figure) {
-    std::vector<RankedMove> ranked;
-    for (std::size_t i = 0; i < moves.size(); ++i) {
-        if (const std::optional<double> v = figure(moves[i])) ranked.push_back({i, *v});
-    }
-    const auto worse = [](const RankedMove& a, const RankedMove& b) {
-        const double ma = std::fabs(a.value);
-        const double mb = std::fabs(b.value);
-        return ma > mb || (ma == mb && a.move < b.move);
-    };
-    const std::size_t k = std::min(n, ranked.size());
-    std::partial_sort(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(k), ranked.end(), worse);
-    ranked.resize(k);
-    return ranked;
+void WorstMovesFold::rank(std::vector<RankedMove>& list, const MoveMetrics& move,
+                          const std::optional<double>& figure) const {
+    if (!figure) return;
+    const RankedMove r{m_added, move.index, move.line, *figure};
+    // Later moves come last among equal magnitudes: the new one goes after every move at least as bad.
+    const auto at = std::upper_bound(list.begin(), list.end(), r, [](const RankedMove& a, const RankedMove& b) {
+        return std::fabs(a.value) > std::fabs(b.value);
+    });
+    if (static_cast<std::size_t>(at - list.begin()) >= m_n) return;
+    list.insert(at, r);
+    if (list.size() > m_n) list.pop_back();
 }
 
-}  // namespace
+void WorstMovesFold::add(const MoveMetrics& move) {
+    rank(m_lists.contour, move, move.path.contour_max_um);
+    rank(m_lists.following, move, move.path.following_max_um);
+    rank(m_lists.feed, move, move.timing.feed_error_pct);
+    ++m_added;
+}
 
 WorstMoves worst_moves(const std::vector<MoveMetrics>& moves, std::size_t n) {
-    return {worst(moves, n, [](const MoveMetrics& m) { return m.path.contour_max_um; }),
-            worst(moves, n, [](const MoveMetrics& m) { return m.path.following_max_um; }),
-            worst(moves, n, [](const MoveMetrics& m) { return m.timing.feed_error_pct; })};
+    WorstMovesFold fold(n);
+    for (const MoveMetrics& m : moves) fold.add(m);
+    return fold.lists();
 }
 
 }  // namespace cnc::metrics

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "metrics/metrics.hpp"
 #include "metrics/worst_moves.hpp"
 
 namespace cnc::metrics {
@@ -43,6 +44,22 @@ TEST(WorstMoves, TopFiveOfEachFigureWorstFirstWithoutTheMovesThatLackIt) {
     // feed by magnitude, sign kept: |3| (7), |-3| (8), |-2| (3), |1.5| (4), |0.5| (1)
     EXPECT_EQ(order(w.feed), (std::vector<std::size_t>{6, 7, 2, 3, 0}));
     EXPECT_EQ(values(w.feed), (std::vector<double>{3.0, -3.0, -2.0, 1.5, 0.5}));
+    // Each entry names its move as the report does (index, G-code line): move 7 sits on line 9.
+    EXPECT_EQ(w.contour.front().index, 7);
+    EXPECT_EQ(w.contour.front().line, 9);
+}
+
+TEST(WorstMoves, AFoldKeepsOnlyTheListedNumberWhileTheMovesComeIn) {
+    // 1000 moves with contour errors 1..1000 um, in rising order: each new move is the worst so far. A fold of 3
+    // holds the last three, 1000, 999, 998 um (moves 999, 998, 997 by position); it never holds more than 3.
+    WorstMovesFold fold(3);
+    for (int i = 1; i <= 1000; ++i) {
+        fold.add(move(i, static_cast<double>(i), std::nullopt, std::nullopt));
+        EXPECT_LE(fold.lists().contour.size(), 3U);
+    }
+    EXPECT_EQ(order(fold.lists().contour), (std::vector<std::size_t>{999, 998, 997}));
+    EXPECT_EQ(values(fold.lists().contour), (std::vector<double>{1000.0, 999.0, 998.0}));
+    EXPECT_TRUE(fold.lists().following.empty());
 }
 
 TEST(WorstMoves, FewerMovesThanListedAndNone) {

@@ -346,3 +346,19 @@ TEST(FpgaUartEstimate, ALimitSetInTheScenarioIsUsedAndNamed) {
               std::string::npos)
         << out.failure;
 }
+
+// The metrics stream by default (their inputs dropped as measured): the CLI's summary still lists them, the
+// worst moves by G-code line included. The square's job: a rapid (line 3), the 4 sides at F800 (lines 5 to 8), a
+// rapid home (line 10): 6 moves with tool samples, of which the 5 worst are listed; a feed error on the sides only.
+TEST(FpgaUartStreamed, SummaryListsTheMetricsTables) {
+    const auto out = run_shipped("square_20mm");
+    ASSERT_TRUE(out.arch.input.axes.empty());  // streamed: no whole logs kept
+    for (const char* section : {"Worst moves (move index, G-code line)", "Job timing", "Laser"}) {
+        EXPECT_NE(out.summary.find(section), std::string::npos) << section;
+    }
+    EXPECT_EQ(out.metrics.worst.following.size(), cnc::metrics::kWorstMovesListed);
+    std::vector<int> feed_lines;
+    for (const cnc::metrics::RankedMove& r : out.metrics.worst.feed) feed_lines.push_back(r.line);
+    std::sort(feed_lines.begin(), feed_lines.end());
+    EXPECT_EQ(feed_lines, (std::vector<int>{5, 6, 7, 8}));
+}

@@ -28,9 +28,9 @@ double path_speed_mm_per_s(const host::ProgrammedMove& move, const ArchPace& pac
 
 }  // namespace
 
-EstimateSum::EstimateSum(const host::Program& program, const ArchPace& pace) : m_pace(pace) {
+EstimateSum::EstimateSum(double waits_s, const ArchPace& pace) : m_pace(pace) {
     // The host waits (dwells, operator pauses, Z moves) take their own time on every architecture.
-    m_e.expected_s = pace.startup_s + pace.link_s + program.wait_s_between(0, program.move_count + 1);
+    m_e.expected_s = pace.startup_s + pace.link_s + waits_s;
 }
 
 void EstimateSum::add(const host::ProgrammedMove& move) {
@@ -46,7 +46,7 @@ JobEstimate EstimateSum::finish() const {
 }
 
 JobEstimate estimate_job(const host::Program& program, const ArchPace& pace) {
-    EstimateSum sum(program, pace);
+    EstimateSum sum(program.wait_s_between(0, program.moves.size() + 1), pace);
     for (const host::ProgrammedMove& move : program.moves) sum.add(move);
     return sum.finish();
 }

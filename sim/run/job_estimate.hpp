@@ -40,10 +40,10 @@ struct JobEstimate {
 // Every move's feed must be > 0 (the interpreter refuses F0, rapids carry the rapid feed).
 [[nodiscard]] JobEstimate estimate_job(const host::Program& program, const ArchPace& pace);
 
-// The same, one move at a time, for a streamed job: `program` is its whole summary (every wait, move_count).
+// The same, one move at a time, for a streamed job; `waits_s`: every host wait of the job.
 class EstimateSum {
 public:
-    EstimateSum(const host::Program& program, const ArchPace& pace);
+    EstimateSum(double waits_s, const ArchPace& pace);
     void add(const host::ProgrammedMove& move);
     [[nodiscard]] JobEstimate finish() const;
 

@@ -247,7 +247,7 @@ host::Program packet_moves(const std::vector<host::MotionSegment>& rows, Numerat
 JobEstimate estimate(const Scenario& s, const Job& job, Numerators n, const ArchPace& pace) {
     if (!job.program) return estimate_job(packet_moves(job.steps_file, n, s), pace);
     host::GcodeStream moves(s.job_path, s.interpreter, false);
-    EstimateSum sum(*job.program, pace);
+    EstimateSum sum(job.program->wait_s_between(0, job.program->move_count + 1), pace);
     for (std::optional<host::ProgrammedMove> m = moves.next(); m; m = moves.next()) sum.add(*m);
     return sum.finish();
 }

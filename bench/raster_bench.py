@@ -4,7 +4,8 @@
 "Speed"). Targets: 100x real time on fpga-uart, 20x on spi-fpga, peak RSS < 200 MiB, for the 10^5-line raster.
 Peak RSS is the child's own (wait4's ru_maxrss), not the script's.
 
-Usage: bench/raster_bench.py [BUILD_DIR] [LINES,...]   (default: build 1000,10000,100000)
+Usage: bench/raster_bench.py [BUILD_DIR] [LINES,...] [ARCHITECTURES,...]
+       (default: build 1000,10000,100000 fpga-uart,spi-fpga)
 Prints one Markdown row per run.
 """
 import json
@@ -32,6 +33,7 @@ def run(cncsim, scenario, report):
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else "build"
     sizes = [int(n) for n in (sys.argv[2] if len(sys.argv) > 2 else "1000,10000,100000").split(",")]
+    archs = (sys.argv[3] if len(sys.argv) > 3 else "fpga-uart,spi-fpga").split(",")
     cncsim = os.path.abspath(os.path.join(build, "sim", "cncsim"))
     print("| raster lines | architecture | simulated [s] | wall [s] | sim/wall | peak RSS [MiB] |")
     print("|---|---|---|---|---|---|")
@@ -40,7 +42,7 @@ def main():
             job = os.path.join(tmp, "raster_%d.nc" % lines)
             with open(job, "w") as f:
                 f.write(raster(lines))
-            for arch in ("fpga-uart", "spi-fpga"):
+            for arch in archs:
                 scenario = os.path.join(tmp, "raster_%d_%s.toml" % (lines, arch))
                 with open(scenario, "w") as f:
                     f.write('[scenario]\njob = "%s"\narchitecture = "%s"\n' % (job, arch))

@@ -1,5 +1,7 @@
 #include "fpga/top.hpp"
 
+#include <algorithm>
+
 namespace cnc::fpga {
 
 Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
@@ -89,11 +91,11 @@ void Top::on_busy() {
     ++m_pkt_count;
     if (m_tx_busy.read()) {  // no pending flag: the ACK is lost (seed 000 §4.3)
         ++m_acks_dropped;
-        m_ack_by_busy_fall[f * m_period_ps] = -1;
+        m_acks.push_back({f * m_period_ps, -1});
         return;
     }
     ++m_acks_sent;
-    m_ack_by_busy_fall[f * m_period_ps] = t_start;
+    m_acks.push_back({f * m_period_ps, t_start});
     m_writer.at(t_start, [this] { tx_start.write(true); });
     m_writer.at(t_start + m_period_ps, [this] { tx_start.write(false); });
 }
@@ -130,8 +132,11 @@ PacketRecord Top::packet(std::size_t i) const {
     r.period_overflow = s.periods.overflow;
     r.t_run_start_ps = s.t_run_start_ps;
     r.t_busy_fall_ps = s.t_busy_fall_ps;
-    const auto ack = m_ack_by_busy_fall.find(s.t_busy_fall_ps);
-    if (s.accepted && ack != m_ack_by_busy_fall.end()) r.t_ack_start_ps = ack->second;
+    const auto ack = std::lower_bound(m_acks.begin(), m_acks.end(), s.t_busy_fall_ps,
+                                      [](const AckAfterBusy& a, TimePs t) { return a.t_busy_fall_ps < t; });
+    if (s.accepted && ack != m_acks.end() && ack->t_busy_fall_ps == s.t_busy_fall_ps) {
+        r.t_ack_start_ps = ack->t_ack_start_ps;
+    }
     return r;
 }
 

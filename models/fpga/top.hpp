@@ -5,7 +5,6 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <systemc>
 #include <vector>
 
@@ -78,7 +77,12 @@ public:  // instance names as in top.v
 
 private:
     TimedWriter m_writer;
-    std::map<TimePs, TimePs> m_ack_by_busy_fall;  // busy fall -> tx_start edge, -1 if dropped
+    struct AckAfterBusy {
+        TimePs t_busy_fall_ps;
+        TimePs t_ack_start_ps;  // the tx_start edge, -1 if dropped
+    };
+    // One per busy fall, in time order (a sorted vector: a long job's map nodes cost three times as much).
+    std::vector<AckAfterBusy> m_acks;
     std::vector<InitRecord> m_inits;
     std::uint8_t m_pkt_count = 0;
     std::uint64_t m_acks_sent = 0;

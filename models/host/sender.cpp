@@ -9,13 +9,11 @@
 namespace cnc::host {
 
 Sender::Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
-               std::array<std::uint8_t, 9> init_packet, std::vector<OutgoingPacket> motion_packets)
-    : sc_module(name), m_cfg(cfg), m_port(port), m_init(init_packet), m_motion(std::move(motion_packets)) {
+               std::array<std::uint8_t, 9> init_packet, PacketSource& motion_packets)
+    : sc_module(name), m_cfg(cfg), m_port(port), m_init(init_packet), m_motion(motion_packets) {
     SC_HAS_PROCESS(Sender);
     SC_THREAD(run);
 }
-
-void Sender::set_waits(const UnitWaits& waits) { m_waits = waits; }
 
 namespace {
 
@@ -69,13 +67,14 @@ void Sender::run() {
     wait_ps(m_cfg.init_gap_ps);
     m_port.reset_input_buffer();
 
-    for (std::size_t i = 0; i < m_motion.size(); ++i) {
-        const int segment = static_cast<int>(i) + 1;
-        const TimePs job_wait_ps = i < m_waits.before_s.size() ? s_to_ps(m_waits.before_s[i]) : 0;
+    int segment = 0;
+    while (const std::optional<OutgoingPacket> packet = m_motion.next()) {
+        ++segment;
+        const TimePs job_wait_ps = s_to_ps(packet->wait_before_s);
         wait_ps(job_wait_ps);
         wait_ps(m_cfg.packet_processing_ps);
         SentPacket sent{segment, now_ps(), job_wait_ps, -1, false};
-        write(m_motion[i].bytes.data(), m_motion[i].bytes.size());
+        write(packet->bytes.data(), packet->bytes.size());
         const TimePs deadline = now_ps() + m_cfg.ack_timeout_ps;
         if (wait_for_ack(segment, deadline)) {
             sent.t_ack_ps = now_ps();
@@ -85,7 +84,7 @@ void Sender::run() {
         sent.timed_out = true;
         m_sent.push_back(sent);
         ++m_errors;
-        const std::string timeout = ack_timeout_text(segment, m_motion[i], m_cfg.ack_timeout_ps);
+        const std::string timeout = ack_timeout_text(segment, *packet, m_cfg.ack_timeout_ps);
         say("[ERROR] " + timeout);
         if (!m_cfg.continue_on_timeout) {
             say("Continue anyway? [y/N] N: aborted");
@@ -94,7 +93,7 @@ void Sender::run() {
             break;
         }
     }
-    if (!m_aborted) wait_ps(s_to_ps(m_waits.after_last_s));
+    if (!m_aborted) wait_ps(s_to_ps(m_motion.wait_after_last_s()));
     m_finished = true;
     m_t_end = now_ps();
 }

@@ -5,13 +5,13 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <systemc>
 
 #include "common/units.hpp"
-#include "host/core/host_waits.hpp"
 #include "uart/cp2102.hpp"
 
 namespace cnc::host {
@@ -30,6 +30,17 @@ struct OutgoingPacket {
     std::array<std::uint8_t, 11> bytes{};  // seed 000 T3.6: 11-byte motion packet
     int gcode_line = 0;                    // source line of the move (0: unknown, e.g. a steps-file row without it)
     TimePs expected_run_ps = 0;            // how long step_gen should run it (dominant steps x NUMERATOR / feed)
+    double wait_before_s = 0.0;            // the job's host wait before it (dwell, pause, Z move)
+};
+
+// The motion packets in order, made as the sender asks for them, so that a long job is never held whole.
+class PacketSource {
+public:
+    virtual ~PacketSource() = default;
+    // The next packet; none after the last.
+    [[nodiscard]] virtual std::optional<OutgoingPacket> next() = 0;
+    // The job's host wait after the last packet (asked once next() has returned none).
+    [[nodiscard]] virtual double wait_after_last_s() = 0;
 };
 
 struct SentPacket {
@@ -47,12 +58,11 @@ struct SenderMessage {
 
 class Sender : public sc_core::sc_module {
 public:
+    // Takes the motion packets from `motion_packets` (which must outlive it) one at a time as it sends them. The
+    // job's host waits (G4 dwells, M0 pauses, Z moves) are slept before the packet they come with (after the
+    // previous ACK: the host sleeps once the machine has finished), and after the last ACK.
     Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
-           std::array<std::uint8_t, 9> init_packet, std::vector<OutgoingPacket> motion_packets);
-
-    // Host waits of the job (G4 dwells, M0 pauses, Z moves), one per motion packet: slept before the packet is
-    // written (after the previous ACK: the host sleeps once the machine has finished), and after the last ACK.
-    void set_waits(const UnitWaits& waits);
+           std::array<std::uint8_t, 9> init_packet, PacketSource& motion_packets);
 
     [[nodiscard]] const std::vector<SentPacket>& packets() const { return m_sent; }
     [[nodiscard]] const std::vector<SenderMessage>& messages() const { return m_messages; }
@@ -74,8 +84,7 @@ private:
     const SenderConfig m_cfg;
     uart::Cp2102& m_port;
     const std::array<std::uint8_t, 9> m_init;
-    const std::vector<OutgoingPacket> m_motion;
-    UnitWaits m_waits;
+    PacketSource& m_motion;
     std::vector<SentPacket> m_sent;
     std::vector<SenderMessage> m_messages;
     TimePs m_t_init_write = -1;

@@ -1,6 +1,7 @@
 #include "run/job.hpp"
 
 #include <filesystem>
+#include <optional>
 
 #include "common/bad_input.hpp"
 #include "host/core/soft_limits.hpp"
@@ -21,7 +22,7 @@ void check_job_file(const Scenario& s) {
 
 }  // namespace
 
-Job load_job(const Scenario& s) {
+Job load_job(const Scenario& s, LaserSwitching switching, bool keep_moves) {
     check_job_file(s);
     if (s.architecture == "fpga-uart") check_numerators(s);
     Job job;
@@ -39,10 +40,29 @@ Job load_job(const Scenario& s) {
         if (job.steps_file.empty()) job.warnings.push_back({"empty_job", s.job_path, "the steps file has no segment"});
         return job;
     }
-    job.program = host::interpret_file(s.job_path, s.interpreter);
-    host::check_soft_limits(*job.program, s.machine);
-    check_job_limits(*job.program, s);
-    if (job.program->moves.empty()) {
+    // The checks in the order of the whole program's: the file's own problems (thrown at its end), then the first
+    // move past the soft limits, then the first past the machine's limits.
+    host::GcodeStream stream(s.job_path, s.interpreter, keep_moves);
+    JobLimits limits(s, s.job_path);
+    std::optional<BadInput> soft_breach, limit_breach;
+    for (std::size_t i = 0; const std::optional<host::ProgrammedMove> move = stream.next(); ++i) {
+        try {
+            if (!soft_breach) host::check_soft_limits(*move, s.machine, s.job_path);
+        } catch (const BadInput& e) {
+            soft_breach = e;
+        }
+        try {
+            if (!limit_breach) limits.check(*move, i, stream.program().waits);
+        } catch (const BadInput& e) {
+            limit_breach = e;
+        }
+        laser_warnings(*move, s.job_path, switching, job.move_warnings);
+    }
+    if (soft_breach) throw *soft_breach;
+    if (limit_breach) throw *limit_breach;
+    limits.finish(stream.program().waits);
+    job.program = stream.take();
+    if (job.program->move_count == 0) {
         const std::string what = "the job has no XY move (" + std::to_string(job.program->lines) +
                                  " lines: empty, or comments and words that move nothing)";
         if (s.interpreter.policy == host::GcodePolicy::Strict) {

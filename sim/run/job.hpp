@@ -7,18 +7,23 @@
 #include "common/warning.hpp"
 #include "host/core/cam.hpp"
 #include "host/core/gcode.hpp"
+#include "run/program_report.hpp"
 #include "scenario/scenario.hpp"
 
 namespace cnc::sim {
 
 struct Job {
-    std::optional<host::Program> program;         // G-code job
+    // G-code job; without its moves (Program::moves empty, move_count counts them) when the architecture streams
+    // the job: it reads them from the file again as it sends them (host::GcodeStream).
+    std::optional<host::Program> program;
     std::vector<host::MotionSegment> steps_file;   // steps-file job (fpga-uart only)
     std::vector<Warning> warnings;                 // about the job as a whole (one without a move)
+    std::vector<Warning> move_warnings;            // about its moves: the laser against the job's intent
 };
 
-// Reads the job and checks it against the machine (run/job_limits.hpp) before anything is simulated. A job
-// without a move (empty, comments only) is a warning, and bad input under scenario.gcode_policy = "strict".
-Job load_job(const Scenario& scenario);
+// Reads the job (one pass over the file, moves kept unless `keep_moves` is false) and checks it against the
+// machine (run/job_limits.hpp) before anything is simulated. A job without a move (empty, comments only) is a
+// warning, and bad input under scenario.gcode_policy = "strict".
+Job load_job(const Scenario& scenario, LaserSwitching switching, bool keep_moves);
 
 }  // namespace cnc::sim

@@ -28,17 +28,27 @@ double path_speed_mm_per_s(const host::ProgrammedMove& move, const ArchPace& pac
 
 }  // namespace
 
-JobEstimate estimate_job(const host::Program& program, const ArchPace& pace) {
-    JobEstimate e;
-    e.moves = program.moves.size();
+EstimateSum::EstimateSum(double waits_s, const ArchPace& pace) : m_pace(pace) {
     // The host waits (dwells, operator pauses, Z moves) take their own time on every architecture.
-    e.expected_s = pace.startup_s + pace.link_s + program.wait_s_between(0, program.moves.size() + 1);
-    for (const host::ProgrammedMove& move : program.moves) {
-        const double speed = path_speed_mm_per_s(move, pace);
-        e.expected_s += move.path.length_mm() / speed + (pace.ramp_s ? pace.ramp_s(speed) : 0.0);
-    }
+    m_e.expected_s = pace.startup_s + pace.link_s + waits_s;
+}
+
+void EstimateSum::add(const host::ProgrammedMove& move) {
+    const double speed = path_speed_mm_per_s(move, m_pace);
+    m_e.expected_s += move.path.length_mm() / speed + (m_pace.ramp_s ? m_pace.ramp_s(speed) : 0.0);
+    ++m_e.moves;
+}
+
+JobEstimate EstimateSum::finish() const {
+    JobEstimate e = m_e;
     e.limit_s = kLimitFactor * e.expected_s + kLimitPerMoveS * static_cast<double>(e.moves) + kLimitFixedS;
     return e;
+}
+
+JobEstimate estimate_job(const host::Program& program, const ArchPace& pace) {
+    EstimateSum sum(program.wait_s_between(0, program.moves.size() + 1), pace);
+    for (const host::ProgrammedMove& move : program.moves) sum.add(move);
+    return sum.finish();
 }
 
 std::string limit_formula(const JobEstimate& estimate) {

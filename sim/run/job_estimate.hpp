@@ -40,6 +40,18 @@ struct JobEstimate {
 // Every move's feed must be > 0 (the interpreter refuses F0, rapids carry the rapid feed).
 [[nodiscard]] JobEstimate estimate_job(const host::Program& program, const ArchPace& pace);
 
+// The same, one move at a time, for a streamed job; `waits_s`: every host wait of the job.
+class EstimateSum {
+public:
+    EstimateSum(double waits_s, const ArchPace& pace);
+    void add(const host::ProgrammedMove& move);
+    [[nodiscard]] JobEstimate finish() const;
+
+private:
+    ArchPace m_pace;
+    JobEstimate m_e;
+};
+
 // The limit's sum with this job's numbers: "2 x 5.200 s + 1 s x 6 moves + 10 s".
 [[nodiscard]] std::string limit_formula(const JobEstimate& estimate);
 

@@ -13,10 +13,6 @@ namespace {
 
 constexpr double kSecondsPerMinute = 60.0;
 
-std::string place(const host::Program& p, const host::ProgrammedMove& m) {
-    return p.filename + ":" + std::to_string(m.line);
-}
-
 // The largest |position| of an axis in mm.
 double max_position_mm(const host::AxisMachine& axis) { return host::kMaxPositionSteps / axis.steps_per_mm(); }
 
@@ -27,18 +23,18 @@ std::string position_rule(const char* axis, const host::AxisMachine& m) {
            axis + format(" at %.10g steps/mm", m.steps_per_mm());
 }
 
-void check_position(const host::Program& p, const host::ProgrammedMove& m, const char* axis,
+void check_position(const std::string& where, const char* axis,
                     const host::AxisMachine& machine, double lo_mm, double hi_mm) {
     const double limit = max_position_mm(machine);
     const double worst = std::fabs(lo_mm) > std::fabs(hi_mm) ? lo_mm : hi_mm;
     if (!(std::fabs(worst) <= limit)) {
-        throw BadInput(place(p, m), std::string(axis) + format(" %.10g mm is out of range", worst) +
+        throw BadInput(where, std::string(axis) + format(" %.10g mm is out of range", worst) +
                                         position_rule(axis, machine));
     }
 }
 
 // The slowest step rate the spi-fpga rate word can set: one step per 2^30 - 1 clocks.
-void check_spi_feed(const host::Program& p, const host::ProgrammedMove& m, const Scenario& s) {
+void check_spi_feed(const std::string& where, const host::ProgrammedMove& m, const Scenario& s) {
     if (m.kind == host::MotionKind::Rapid) return;
     const double length_mm = m.path.length_mm();
     const double dx = std::fabs(m.path.end.x_mm - m.path.start.x_mm);
@@ -51,7 +47,7 @@ void check_spi_feed(const host::Program& p, const host::ProgrammedMove& m, const
                                                     share_y * s.machine.y.steps_per_mm());
     const double slowest = spi::rate_for_period(spi::kMaxPeriodCycles, s.spi_fpga.fpga.clk_hz);
     if (steps_per_s < slowest) {
-        throw BadInput(place(p, m), format("feed %.6g mm/min steps the leading axis %.6g times a second, slower "
+        throw BadInput(where, format("feed %.6g mm/min steps the leading axis %.6g times a second, slower "
                                            "than the spi-fpga rate word's slowest step (one per 2^30 - 1 clocks: ",
                                            m.feed_mm_per_min, steps_per_s) +
                                         format("%.4g steps/s at fpga_spi.clock_hz); raise F", slowest));
@@ -67,39 +63,46 @@ std::string numerator_problem(const BadInput& e) {
 
 }  // namespace
 
-void check_job_limits(const host::Program& p, const Scenario& s) {
-    double job_s = 0.0;
-    std::size_t wait = 0;
-    for (std::size_t i = 0; i < p.moves.size(); ++i) {
-        const host::ProgrammedMove& m = p.moves[i];
-        const geom::Box box = m.path.bounds();
-        check_position(p, m, "X", s.machine.x, box.min.x_mm, box.max.x_mm);
-        check_position(p, m, "Y", s.machine.y, box.min.y_mm, box.max.y_mm);
-        const bool x_finer = s.machine.x.steps_per_mm() >= s.machine.y.steps_per_mm();
-        const host::AxisMachine& finer = x_finer ? s.machine.x : s.machine.y;
-        if (m.path.is_arc && !(m.path.radius_mm() <= max_position_mm(finer))) {
-            throw BadInput(place(p, m), format("arc radius %.10g mm (I, J or R) is out of range", m.path.radius_mm()) +
-                                            position_rule(x_finer ? "X" : "Y", finer));
-        }
-        for (; wait < p.waits.size() && p.waits[wait].before_move <= i; ++wait) job_s += p.waits[wait].seconds;
-        job_s += m.path.length_mm() / m.feed_mm_per_min * kSecondsPerMinute;
-        if (!(job_s <= kMaxJobS)) {
-            throw BadInput(place(p, m), format("the job reaches %.6g s of machine time here (at its feeds, with its "
-                                               "dwells and pauses), more than the longest job simulated, %g s "
-                                               "(11.6 days)",
-                                               job_s, kMaxJobS));
-        }
-        if (s.architecture == "spi-fpga") check_spi_feed(p, m, s);
+JobLimits::JobLimits(const Scenario& s, std::string filename) : m_s(s), m_file(std::move(filename)) {}
+
+void JobLimits::check(const host::ProgrammedMove& m, std::size_t i, const std::vector<host::HostWait>& waits) {
+    const std::string where = m_file + ":" + std::to_string(m.line);
+    const geom::Box box = m.path.bounds();
+    check_position(where, "X", m_s.machine.x, box.min.x_mm, box.max.x_mm);
+    check_position(where, "Y", m_s.machine.y, box.min.y_mm, box.max.y_mm);
+    const bool x_finer = m_s.machine.x.steps_per_mm() >= m_s.machine.y.steps_per_mm();
+    const host::AxisMachine& finer = x_finer ? m_s.machine.x : m_s.machine.y;
+    if (m.path.is_arc && !(m.path.radius_mm() <= max_position_mm(finer))) {
+        throw BadInput(where, format("arc radius %.10g mm (I, J or R) is out of range", m.path.radius_mm()) +
+                                  position_rule(x_finer ? "X" : "Y", finer));
     }
-    for (; wait < p.waits.size(); ++wait) {
-        job_s += p.waits[wait].seconds;
-        if (!(job_s <= kMaxJobS)) {
-            throw BadInput(p.filename + ":" + std::to_string(p.waits[wait].line),
+    for (; m_wait < waits.size() && waits[m_wait].before_move <= i; ++m_wait) m_job_s += waits[m_wait].seconds;
+    m_job_s += m.path.length_mm() / m.feed_mm_per_min * kSecondsPerMinute;
+    if (!(m_job_s <= kMaxJobS)) {
+        throw BadInput(where, format("the job reaches %.6g s of machine time here (at its feeds, with its "
+                                     "dwells and pauses), more than the longest job simulated, %g s "
+                                     "(11.6 days)",
+                                     m_job_s, kMaxJobS));
+    }
+    if (m_s.architecture == "spi-fpga") check_spi_feed(where, m, m_s);
+}
+
+void JobLimits::finish(const std::vector<host::HostWait>& waits) {
+    for (; m_wait < waits.size(); ++m_wait) {
+        m_job_s += waits[m_wait].seconds;
+        if (!(m_job_s <= kMaxJobS)) {
+            throw BadInput(m_file + ":" + std::to_string(waits[m_wait].line),
                            format("the job reaches %.6g s of machine time with this wait, more than the longest job "
                                   "simulated, %g s (11.6 days)",
-                                  job_s, kMaxJobS));
+                                  m_job_s, kMaxJobS));
         }
     }
+}
+
+void check_job_limits(const host::Program& p, const Scenario& s) {
+    JobLimits limits(s, p.filename);
+    for (std::size_t i = 0; i < p.moves.size(); ++i) limits.check(p.moves[i], i, p.waits);
+    limits.finish(p.waits);
 }
 
 void check_numerators(const Scenario& s) {

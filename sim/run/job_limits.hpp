@@ -4,6 +4,10 @@
 // (the atmega PC program split it into 10^10 commands), an arc of 10^24 mm radius ran as 0 steps, and a move
 // slower than the hardware's slowest step ran until the time limit.
 #pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
 #include "host/core/gcode.hpp"
 #include "scenario/scenario.hpp"
 
@@ -17,6 +21,22 @@ inline constexpr double kMaxJobS = 1e6;
 // job's time at its feeds (plus its dwells and pauses) within kMaxJobS, and on spi-fpga each cutting move's feed
 // no slower than the rate word's slowest step.
 void check_job_limits(const host::Program& program, const Scenario& s);
+
+// The same checks one move at a time, as a streamed job's moves are read. `s` must outlive it.
+class JobLimits {
+public:
+    JobLimits(const Scenario& s, std::string filename);
+    // Move number i; `waits` holds at least every wait before it (Program::waits so far).
+    void check(const host::ProgrammedMove& move, std::size_t i, const std::vector<host::HostWait>& waits);
+    // After the last move, with every wait.
+    void finish(const std::vector<host::HostWait>& waits);
+
+private:
+    const Scenario& m_s;
+    std::string m_file;
+    double m_job_s = 0.0;
+    std::size_t m_wait = 0;  // waits counted
+};
 
 // fpga-uart: the NUMERATOR of each axis (clock x 60 / steps per mm) must fit the init packet's uint32 (seed 000
 // §3.4.6); BadInput naming the machine keys that set it.

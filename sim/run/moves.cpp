@@ -5,16 +5,12 @@
 
 namespace cnc::sim {
 
-CommandedMoves::CommandedMoves(const host::Program* program, const std::vector<host::MotionSegment>& segments,
-                               const host::MachineModel& machine, geom::Vec2 start_mm)
-    : m_program(program),
-      m_segments(segments),
-      m_mm_per_step_x(machine.x.mm_per_step()),
+CommandedMoves::CommandedMoves(const host::MachineModel& machine, geom::Vec2 start_mm)
+    : m_mm_per_step_x(machine.x.mm_per_step()),
       m_mm_per_step_y(machine.y.mm_per_step()),
       m_start_mm(start_mm) {}
 
-metrics::MoveSpec CommandedMoves::next() {
-    const host::MotionSegment& seg = m_segments[m_next++];
+metrics::MoveSpec CommandedMoves::next(const host::MotionSegment& seg, const geom::Segment* programmed_path) {
     metrics::MoveSpec m;
     m.index = seg.index;
     m.line = seg.line;
@@ -24,10 +20,9 @@ metrics::MoveSpec CommandedMoves::next() {
     m_at_y += seg.steps_y;
     m.to_mm = m_start_mm + geom::Vec2{static_cast<double>(m_at_x) * m_mm_per_step_x,
                                       static_cast<double>(m_at_y) * m_mm_per_step_y};
-    const bool programmed = m_program != nullptr && seg.move >= 0;
+    const bool programmed = programmed_path != nullptr && seg.move >= 0;
     m.programmed = programmed ? seg.move : -1;
-    m.path = programmed ? m_program->moves[static_cast<std::size_t>(seg.move)].path
-                        : geom::Segment::line(m.from_mm, m.to_mm);
+    m.path = programmed ? *programmed_path : geom::Segment::line(m.from_mm, m.to_mm);
     m.feed_mm_per_min = seg.path_feed_mm_per_min;
     m.rapid = seg.motion == host::MotionKind::Rapid;
     m.steps = {seg.steps_x, seg.steps_y};
@@ -44,10 +39,14 @@ metrics::MoveSpec CommandedMoves::next() {
 std::vector<metrics::MoveSpec> commanded_moves(const host::Program* program,
                                                const std::vector<host::MotionSegment>& segments,
                                                const host::MachineModel& machine, geom::Vec2 start_mm) {
-    CommandedMoves source(program, segments, machine, start_mm);
+    CommandedMoves source(machine, start_mm);
     std::vector<metrics::MoveSpec> moves;
     moves.reserve(segments.size());
-    while (!source.done()) moves.push_back(source.next());
+    for (const host::MotionSegment& seg : segments) {
+        const bool programmed = program != nullptr && seg.move >= 0;
+        moves.push_back(
+            source.next(seg, programmed ? &program->moves[static_cast<std::size_t>(seg.move)].path : nullptr));
+    }
     return moves;
 }
 

@@ -12,25 +12,21 @@
 namespace cnc::sim {
 
 // The moves one at a time in execution order, so that a long job's run need not hold them all (the metrics take
-// each when it begins). `program` is null for a steps-file job: each segment's path is then its own straight line.
-// Both must outlive this.
+// each when it begins).
 class CommandedMoves {
 public:
-    CommandedMoves(const host::Program* program, const std::vector<host::MotionSegment>& segments,
-                   const host::MachineModel& machine, geom::Vec2 start_mm);
-    [[nodiscard]] bool done() const { return m_next == m_segments.size(); }
-    [[nodiscard]] metrics::MoveSpec next();  // not done()
+    CommandedMoves(const host::MachineModel& machine, geom::Vec2 start_mm);
+    // The next executed segment's move. `programmed_path` is the path of the programmed move it belongs to; null
+    // for a steps-file row, whose path is its own straight line.
+    [[nodiscard]] metrics::MoveSpec next(const host::MotionSegment& seg, const geom::Segment* programmed_path);
 
 private:
-    const host::Program* m_program;
-    const std::vector<host::MotionSegment>& m_segments;
     double m_mm_per_step_x, m_mm_per_step_y;
     geom::Vec2 m_start_mm;
-    std::size_t m_next = 0;
-    std::int64_t m_at_x = 0, m_at_y = 0;  // step counts before segment m_next
+    std::int64_t m_at_x = 0, m_at_y = 0;  // step counts before the next segment
 };
 
-// All of them.
+// All of them. `program` is null for a steps-file job.
 std::vector<metrics::MoveSpec> commanded_moves(const host::Program* program,
                                                const std::vector<host::MotionSegment>& segments,
                                                const host::MachineModel& machine, geom::Vec2 start_mm);

@@ -37,7 +37,7 @@ nlohmann::json program_json(const host::Program& program) {
         waits[host::to_string(c)] = {{"count", wait_count(program, c)}, {"total_s", program.wait_s(c)}};
     }
     return {{"lines", program.lines},
-            {"moves", program.moves.size()},
+            {"moves", program.move_count},
             {"ignored_by_this_machine", ignored},
             {"host_waits", waits},
             {"z_travel_mm", program.z_travel_mm}};
@@ -45,7 +45,7 @@ nlohmann::json program_json(const host::Program& program) {
 
 std::string program_text(const host::Program& program) {
     std::ostringstream t;
-    t << "G-code: " << program.lines << " lines, " << program.moves.size() << " XY moves\n";
+    t << "G-code: " << program.lines << " lines, " << program.move_count << " XY moves\n";
     if (!program.waits.empty()) {
         t << "  host waits (XY at rest):";
         for (const host::WaitCause c : kCauses) {
@@ -68,29 +68,26 @@ std::string program_text(const host::Program& program) {
     return t.str();
 }
 
-std::vector<Warning> laser_warnings(const host::Program& program, LaserSwitching switching) {
-    std::vector<Warning> out;
-    for (const host::ProgrammedMove& m : program.moves) {
-        const std::string where = program.filename + ":" + std::to_string(m.line);
-        const bool cutting = m.kind != host::MotionKind::Rapid;
-        const bool power_on = m.laser_mode != host::LaserMode::Off && (!m.power_s || *m.power_s > 0.0);
-        if (switching == LaserSwitching::ByMotionKind && cutting && !m.laser_intended()) {
-            out.push_back({"laser_on_unasked", where,
-                           "the laser burns where the job asked it off (M5 or S0 during G1/G2/G3): this hardware "
-                           "switches it on in every cutting move"});
-        }
-        if (switching == LaserSwitching::ByMotionKind && !cutting && power_on) {
-            out.push_back({"laser_power_in_rapid", where,
-                           "the job has M3/M4 with power in force during G0: this hardware switches the laser off in "
-                           "rapids (as grbl's laser mode does)"});
-        }
-        if (m.laser_mode == host::LaserMode::Dynamic && cutting) {
-            out.push_back({"laser_m4_on_off", where,
-                           "M4 (power scaled with speed) runs as plain on/off: this architecture's link carries no "
-                           "power value"});
-        }
+void laser_warnings(const host::ProgrammedMove& m, const std::string& filename, LaserSwitching switching,
+                    std::vector<Warning>& out) {
+    const std::string where = filename + ":" + std::to_string(m.line);
+    const bool cutting = m.kind != host::MotionKind::Rapid;
+    const bool power_on = m.laser_mode != host::LaserMode::Off && (!m.power_s || *m.power_s > 0.0);
+    if (switching == LaserSwitching::ByMotionKind && cutting && !m.laser_intended()) {
+        out.push_back({"laser_on_unasked", where,
+                       "the laser burns where the job asked it off (M5 or S0 during G1/G2/G3): this hardware "
+                       "switches it on in every cutting move"});
     }
-    return out;
+    if (switching == LaserSwitching::ByMotionKind && !cutting && power_on) {
+        out.push_back({"laser_power_in_rapid", where,
+                       "the job has M3/M4 with power in force during G0: this hardware switches the laser off in "
+                       "rapids (as grbl's laser mode does)"});
+    }
+    if (m.laser_mode == host::LaserMode::Dynamic && cutting) {
+        out.push_back({"laser_m4_on_off", where,
+                       "M4 (power scaled with speed) runs as plain on/off: this architecture's link carries no "
+                       "power value"});
+    }
 }
 
 }  // namespace cnc::sim

@@ -21,7 +21,8 @@ enum class LaserSwitching {
 nlohmann::json program_json(const host::Program& program);
 std::string program_text(const host::Program& program);
 
-// One warning per move where the laser differs from the job's intent, placed at its G-code line.
-std::vector<Warning> laser_warnings(const host::Program& program, LaserSwitching switching);
+// A warning where the laser of move `m` of `filename` differs from the job's intent, placed at its G-code line.
+void laser_warnings(const host::ProgrammedMove& m, const std::string& filename, LaserSwitching switching,
+                    std::vector<Warning>& out);
 
 }  // namespace cnc::sim

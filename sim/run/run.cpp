@@ -57,14 +57,11 @@ nlohmann::json warnings_json(const std::vector<Warning>& warnings, bool detail) 
 
 RunOutcome run_scenario(const Scenario& s) {
     const Architecture& architecture = find_architecture(s.architecture, s.file + ": scenario.architecture");
-    const Job job = architecture.runs_job ? load_job(s) : Job{};
+    const Job job =
+        architecture.runs_job ? load_job(s, architecture.laser_switching, !architecture.streams_job) : Job{};
     RunOutcome out;
     out.arch = architecture.run(s, job);
-    if (job.program) {
-        for (Warning& w : laser_warnings(*job.program, architecture.laser_switching)) {
-            out.arch.warnings.push_back(std::move(w));
-        }
-    }
+    out.arch.warnings.insert(out.arch.warnings.end(), job.move_warnings.begin(), job.move_warnings.end());
     out.arch.warnings.insert(out.arch.warnings.begin(), job.warnings.begin(), job.warnings.end());
     out.metrics = out.arch.metrics ? std::move(*out.arch.metrics) : metrics::compute_metrics(out.arch.input);
     const ArchRun& arch = out.arch;

@@ -1,6 +1,7 @@
 #include "systems/fpga_uart_system.hpp"
 
 #include <cstdio>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "run/metrics_feed.hpp"
 #include "run/simulate.hpp"
 #include "systems/dead_time.hpp"
+#include "systems/fpga_uart_job.hpp"
 #include "systems/link_checks.hpp"
 #include "systems/machine.hpp"
 #include "probes/vcd_trace.hpp"
@@ -26,29 +28,6 @@
 namespace cnc::sim {
 
 namespace {
-
-// The executed pieces, one per packet step_gen accepted (a packet ignored because busy carries none), in order:
-// busy rises one clock after pkt_valid (SETUP) and falls at DONE.
-class ExecutedPieces {
-public:
-    // Hands `f` each piece not handed yet whose packet's busy fell before until_ps (none: every accepted packet's,
-    // once the run has ended).
-    template <typename F>
-    void time_ended(const fpga::Top& top, std::optional<TimePs> until_ps, CommandedMoves& moves, F f) {
-        for (; m_record < top.packet_count() && !moves.done(); ++m_record) {
-            const fpga::PacketRecord r = top.packet(m_record);
-            if (!r.accepted) continue;
-            if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
-            metrics::MoveSpec m = moves.next();
-            m.t_begin_ps = r.t_pkt_valid_ps + clock_period_ps(top.config());
-            m.t_end_ps = r.t_busy_fall_ps;
-            f(std::move(m));
-        }
-    }
-
-private:
-    std::size_t m_record = 0;
-};
 
 // send_steps.py hard-codes NUMERATOR_X = NUMERATOR_Y = 18_750_000 (seed 000 §6).
 constexpr std::uint32_t kSeedScriptNumerator = 18'750'000;
@@ -68,25 +47,91 @@ struct Wires {
     sc_core::sc_signal<bool> rx_valid{"rx_valid", false}, ack{"ack", false};
 };
 
-struct Packets {
-    host::InitBytes init;
-    std::vector<host::OutgoingPacket> motion;
+// The NUMERATORs the host sends in its init packet.
+struct Numerators {
+    std::uint32_t x, y;
 };
 
-Packets encode(const Scenario& s, const std::vector<host::MotionSegment>& segments) {
-    Packets p;
-    const std::uint32_t nx =
-        s.numerator_from_machine ? host::numerator(s.machine.x.steps_per_mm(), s.fpga.clk_hz) : kSeedScriptNumerator;
-    const std::uint32_t ny =
-        s.numerator_from_machine ? host::numerator(s.machine.y.steps_per_mm(), s.fpga.clk_hz) : kSeedScriptNumerator;
-    p.init = host::encode_init(nx, ny);
-    for (const host::MotionSegment& seg : segments) {
-        const host::MotionPacket packet = host::to_packet(seg);
-        // The host expects step_gen to use the numerators it sends (whether the init packet arrives or not).
-        const fpga::MoveInputs move{packet.steps_x, packet.steps_y, packet.feed, nx, ny};
-        p.motion.push_back({host::encode_motion(packet), seg.line, fpga::run_duration_ps(move, s.fpga)});
+Numerators numerators(const Scenario& s) {
+    if (!s.numerator_from_machine) return {kSeedScriptNumerator, kSeedScriptNumerator};
+    return {host::numerator(s.machine.x.steps_per_mm(), s.fpga.clk_hz),
+            host::numerator(s.machine.y.steps_per_mm(), s.fpga.clk_hz)};
+}
+
+host::OutgoingPacket packet_of(const MadeSegment& made, Numerators n, const Scenario& s) {
+    const host::MotionPacket packet = host::to_packet(made.seg);
+    // The host expects step_gen to use the numerators it sends (whether the init packet arrives or not).
+    const fpga::MoveInputs move{packet.steps_x, packet.steps_y, packet.feed, n.x, n.y};
+    return {host::encode_motion(packet), made.seg.line, fpga::run_duration_ps(move, s.fpga), made.wait_before_s};
+}
+
+// The sender's packets, made from the job's segments as it asks for them. A segment sent waits here until
+// step_gen has run it (the metrics' commanded move); its G-code line stays for the FPGA's warnings.
+class SentPackets : public host::PacketSource {
+public:
+    SentPackets(const Scenario& s, const Job& job, Numerators n) : m_s(s), m_segments(s, job), m_numerators(n) {}
+
+    std::optional<host::OutgoingPacket> next() override {
+        std::optional<MadeSegment> made = m_segments.next();
+        if (!made) return std::nullopt;
+        host::OutgoingPacket packet = packet_of(*made, m_numerators, m_s);
+        m_lines.push_back(made->seg.line);
+        m_unexecuted.push_back(std::move(*made));
+        return packet;
     }
-    return p;
+    double wait_after_last_s() override { return m_segments.wait_after_last_s(); }
+
+    [[nodiscard]] bool unexecuted() const { return !m_unexecuted.empty(); }
+    [[nodiscard]] MadeSegment executed() {  // unexecuted()
+        MadeSegment made = std::move(m_unexecuted.front());
+        m_unexecuted.pop_front();
+        return made;
+    }
+    [[nodiscard]] const std::vector<int>& lines() const { return m_lines; }  // per packet sent
+
+private:
+    const Scenario& m_s;
+    JobSegments m_segments;
+    Numerators m_numerators;
+    std::deque<MadeSegment> m_unexecuted;
+    std::vector<int> m_lines;
+};
+
+// The executed pieces, one per packet step_gen accepted (a packet ignored because busy carries none), in order:
+// busy rises one clock after pkt_valid (SETUP) and falls at DONE.
+class ExecutedPieces {
+public:
+    // Hands `f` each piece not handed yet whose packet's busy fell before until_ps (none: every accepted packet's,
+    // once the run has ended).
+    template <typename F>
+    void time_ended(const fpga::Top& top, std::optional<TimePs> until_ps, SentPackets& sent, CommandedMoves& moves,
+                    F f) {
+        for (; m_record < top.packet_count() && sent.unexecuted(); ++m_record) {
+            const fpga::PacketRecord r = top.packet(m_record);
+            if (!r.accepted) continue;
+            if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
+            const MadeSegment made = sent.executed();
+            metrics::MoveSpec m = moves.next(made.seg, made.programmed_path ? &*made.programmed_path : nullptr);
+            m.t_begin_ps = r.t_pkt_valid_ps + clock_period_ps(top.config());
+            m.t_end_ps = r.t_busy_fall_ps;
+            f(std::move(m));
+        }
+    }
+
+private:
+    std::size_t m_record = 0;
+};
+
+// Before anything is simulated: every segment made and encoded once (the CAM's and the packet codec's BadInput),
+// counted for the job's pace.
+std::size_t count_packets(const Scenario& s, const Job& job, Numerators n) {
+    JobSegments segments(s, job);
+    std::size_t count = 0;
+    for (std::optional<MadeSegment> made = segments.next(); made; made = segments.next()) {
+        (void)packet_of(*made, n, s);
+        ++count;
+    }
+    return count;
 }
 
 // The VCD's pins, each with the clock that times its edges: the FPGA's for everything it drives; the CP2102
@@ -110,15 +155,15 @@ void record_wires(EdgeRecorder& rec, const Wires& w, bool with_lines) {
 }
 
 // "segment 17 (line 20)": the packet's number, and its G-code line when the job was G-code.
-std::string segment_place(const std::vector<host::MotionSegment>& segments, std::size_t k) {
+std::string segment_place(const std::vector<int>& lines, std::size_t k) {
     std::string where = "segment " + std::to_string(k + 1);
-    if (k < segments.size() && segments[k].line > 0) where += " (line " + std::to_string(segments[k].line) + ")";
+    if (k < lines.size() && lines[k] > 0) where += " (line " + std::to_string(lines[k]) + ")";
     return where;
 }
 
 // FPGA-side warnings: the period product the RTL cannot hold, packets lost while busy, line faults.
 void fpga_warnings(const fpga::Top& top, const std::vector<fpga::PacketRecord>& records,
-                   const std::vector<host::MotionSegment>& segments, const Scenario& s,
+                   const std::vector<int>& lines, const Scenario& s,
                    std::vector<Warning>& warnings) {
     const std::string overflow =
         std::string("(NUMERATOR/feed) x dominant steps exceeds 32 bits; step_gen as printed in the appendix wraps it") +
@@ -127,9 +172,9 @@ void fpga_warnings(const fpga::Top& top, const std::vector<fpga::PacketRecord>& 
              : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)");
     for (std::size_t k = 0; k < records.size(); ++k) {
         const fpga::PacketRecord& r = records[k];
-        if (r.period_overflow) warnings.push_back({"period_overflow", segment_place(segments, k), overflow});
+        if (r.period_overflow) warnings.push_back({"period_overflow", segment_place(lines, k), overflow});
         if (!r.accepted) {
-            warnings.push_back({"packet_lost", segment_place(segments, k), "arrived while step_gen was busy: lost"});
+            warnings.push_back({"packet_lost", segment_place(lines, k), "arrived while step_gen was busy: lost"});
         }
     }
     for (const fpga::InitRecord& i : top.inits()) {
@@ -175,14 +220,13 @@ ArchPace pace(const Scenario& s, std::size_t packets) {
 
 // A steps file has no programmed moves: its packets, as the straight lines they are, at the speed step_gen
 // runs them (so also a FeedRate 0 row of host.allow_feed_zero).
-host::Program packet_moves(const std::vector<host::MotionSegment>& rows, const Packets& packets,
-                           const std::string& file) {
+host::Program packet_moves(const std::vector<host::MotionSegment>& rows, Numerators n, const Scenario& s) {
     host::Program program;
-    program.filename = file;
+    program.filename = s.job_path;
     geom::Vec2 at{};
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const geom::Vec2 to = at + geom::Vec2{rows[i].dx_mm, rows[i].dy_mm};
-        const double run_s = ps_to_s(packets.motion[i].expected_run_ps);
+        const double run_s = ps_to_s(packet_of({rows[i], std::nullopt, 0.0}, n, s).expected_run_ps);
         // A packet step_gen does not run (no steps, or a period of 0) takes no time at any feed.
         const double feed_mm_per_min =
             run_s > 0.0 ? geom::distance(at, to) / run_s * kSecondsPerMinute : std::numeric_limits<double>::infinity();
@@ -195,7 +239,17 @@ host::Program packet_moves(const std::vector<host::MotionSegment>& rows, const P
         program.moves.push_back(move);
         at = to;
     }
+    program.move_count = program.moves.size();
     return program;
+}
+
+// The job's estimate: a G-code job's moves read from the file once more (the summary has none).
+JobEstimate estimate(const Scenario& s, const Job& job, Numerators n, const ArchPace& pace) {
+    if (!job.program) return estimate_job(packet_moves(job.steps_file, n, s), pace);
+    host::GcodeStream moves(s.job_path, s.interpreter, false);
+    EstimateSum sum(job.program->wait_s_between(0, job.program->move_count + 1), pace);
+    for (std::optional<host::ProgrammedMove> m = moves.next(); m; m = moves.next()) sum.add(*m);
+    return sum.finish();
 }
 
 nlohmann::json packet_json(const fpga::PacketRecord& r) {
@@ -231,9 +285,8 @@ void check_fpga_rate(const Scenario& s) {
 
 ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     // The seed 000 CAM (GCODE2STEPS) on the host, or the steps file it wrote.
-    const std::vector<host::MotionSegment> segments =
-        job.program ? host::cam(*job.program, s.machine, s.cam) : job.steps_file;
-    const Packets packets = encode(s, segments);
+    const Numerators n = numerators(s);
+    const std::size_t packet_count = count_packets(s, job, n);
     check_fpga_rate(s);
 
     Wires w;
@@ -241,12 +294,8 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     cp2102.txd(w.uart_rx);
     cp2102.rxd(w.uart_tx);
     cp2102.thin_tx_log(host::kInitPacketBytes, host::kMotionPacketBytes);  // what the dead-time split reads
-    host::Sender sender("host", s.sender, cp2102, packets.init, packets.motion);
-    if (job.program) {
-        std::vector<std::size_t> packet_moves;
-        for (const host::MotionSegment& seg : segments) packet_moves.push_back(static_cast<std::size_t>(seg.move));
-        sender.set_waits(host::waits_per_unit(*job.program, packet_moves));
-    }
+    SentPackets packets(s, job, n);
+    host::Sender sender("host", s.sender, cp2102, host::encode_init(n.x, n.y), packets);
     fpga::Top fpga("fpga", s.fpga);
     fpga.rx(w.uart_rx);
     fpga.tx(w.uart_tx);
@@ -269,12 +318,8 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         vcd = std::make_unique<VcdTrace>(s, traced_pins(w, s.fpga.clk_hz), machine.traced_positions());
     }
 
-    const host::Program* program = job.program ? &*job.program : nullptr;
-    const ArchPace link_pace = pace(s, segments.size());
-    const RunBudget budget =
-        run_budget(s, program ? estimate_job(*program, link_pace)
-                              : estimate_job(packet_moves(segments, packets, s.job_path), link_pace));
-    CommandedMoves moves(program, segments, s.machine, s.interpreter.start_mm);
+    const RunBudget budget = run_budget(s, estimate(s, job, n, pace(s, packet_count)));
+    CommandedMoves moves(s.machine, s.interpreter.start_mm);
     // The metrics stream (their inputs dropped as they are measured) unless the whole logs are asked for.
     // The dead-time split reads each piece's first and last STEP: kept as the stream measures the pieces.
     std::optional<MetricsFeed> feed;
@@ -285,13 +330,13 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         feed.emplace(
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
             s.detail, [&steps_of_pieces](const metrics::MoveMetrics& p) { steps_of_pieces.push_back(piece_steps(p)); });
-        feed->reserve_moves(program ? program->moves.size() : segments.size());
-        steps_of_pieces.reserve(segments.size());
+        feed->reserve_moves(job.program ? job.program->move_count : packet_count);
+        steps_of_pieces.reserve(packet_count);
     }
     ExecutedPieces executed;
     const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
         if (!feed) return;
-        executed.time_ended(fpga, now_ps, moves, [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
+        executed.time_ended(fpga, now_ps, packets, moves, [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
         feed->fold(now_ps);
     });
     if (vcd) vcd->close();
@@ -299,7 +344,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     ArchRun run;
     record_budget(budget, run);
     metrics::RunInput& in = run.input;
-    executed.time_ended(fpga, std::nullopt, moves, [&](metrics::MoveSpec m) {
+    executed.time_ended(fpga, std::nullopt, packets, moves, [&](metrics::MoveSpec m) {
         if (feed) {
             feed->add_piece(std::move(m));
         } else {
@@ -329,13 +374,13 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
                             s.detail || s.keep_run_input);
     if (s.keep_run_input) run.gap_causes = gap_causes(dead);
 
-    fpga_warnings(fpga, records, segments, s, run.warnings);
+    fpga_warnings(fpga, records, packets.lines(), s, run.warnings);
     const fpga::FpgaStats st = fpga.stats();
     const uart::Cp2102Baud& baud = cp2102.baud();
     nlohmann::json msgs = nlohmann::json::array();
     for (const host::SenderMessage& m : sender.messages()) msgs.push_back({{"t_s", ps_to_s(m.t_ps)}, {"text", m.text}});
     run.details = {
-        {"segments", segments.size()},
+        {"segments", packet_count},
         {"link",
          {{"requested_baud", s.link.requested_baud},
           {"line_baud", baud.actual_bd},

@@ -237,39 +237,50 @@ std::int64_t chord_count(double radius_mm, double sweep_rad, double tolerance_mm
     return n < 1.0 ? 1 : (n > 9.0e18 ? INT64_MAX : static_cast<std::int64_t>(n));
 }
 
-std::vector<MotionSegment> cam(const Program& program, const MachineModel& machine, const CamOptions& opt) {
+CamStream::CamStream(std::string filename, const MachineModel& machine, const CamOptions& opt)
+    : m_file(std::move(filename)), m_machine(machine), m_opt(opt) {
     validate(machine, "machine");
     if (!(std::isfinite(opt.chord_tolerance_mm) && opt.chord_tolerance_mm > 0.0)) {
         throw BadInput("cam", "chord_tolerance_mm must be > 0");
     }
-    const StepGrid grid{machine.x.steps_per_mm(), machine.y.steps_per_mm()};
-    std::vector<MotionSegment> segments;
-    if (program.moves.empty()) return segments;
+}
 
-    const std::string file_where = program.filename + ":" + std::to_string(program.moves.front().line);
-    StepPos cur = grid.round(program.moves.front().path.start, file_where);
-    for (std::size_t m = 0; m < program.moves.size(); ++m) {
-        const ProgrammedMove& move = program.moves[m];
-        const std::string where = program.filename + ":" + std::to_string(move.line);
-        for (const StepPos& p : chord_ends(move.path, cur, grid, opt, where)) {
-            MotionSegment seg;
-            seg.steps_x = p.x - cur.x;
-            seg.steps_y = p.y - cur.y;
-            if (seg.steps_x == 0 && seg.steps_y == 0) continue;  // the next chord carries the remainder
-            check_int32(seg.steps_x, where, "steps_x");
-            check_int32(seg.steps_y, where, "steps_y");
-            seg.index = static_cast<int>(segments.size()) + 1;
-            seg.motion = move.kind;
-            seg.path_feed_mm_per_min = move.feed_mm_per_min;
-            seg.move = static_cast<int>(m);
-            seg.line = move.line;
-            seg.dx_mm = static_cast<double>(seg.steps_x) / grid.spm_x;
-            seg.dy_mm = static_cast<double>(seg.steps_y) / grid.spm_y;
-            seg.feed = packet_feed(move, seg, machine, opt, where);
-            segments.push_back(seg);
-            cur = p;
-        }
+void CamStream::add(const ProgrammedMove& move, std::size_t m, std::vector<MotionSegment>& out) {
+    const StepGrid grid{m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm()};
+    const std::string where = m_file + ":" + std::to_string(move.line);
+    if (!m_started) {
+        const StepPos start = grid.round(move.path.start, where);
+        m_at_x = start.x;
+        m_at_y = start.y;
+        m_started = true;
     }
+    StepPos cur{m_at_x, m_at_y};
+    for (const StepPos& p : chord_ends(move.path, cur, grid, m_opt, where)) {
+        MotionSegment seg;
+        seg.steps_x = p.x - cur.x;
+        seg.steps_y = p.y - cur.y;
+        if (seg.steps_x == 0 && seg.steps_y == 0) continue;  // the next chord carries the remainder
+        check_int32(seg.steps_x, where, "steps_x");
+        check_int32(seg.steps_y, where, "steps_y");
+        seg.index = static_cast<int>(++m_segments);
+        seg.motion = move.kind;
+        seg.path_feed_mm_per_min = move.feed_mm_per_min;
+        seg.move = static_cast<int>(m);
+        seg.line = move.line;
+        seg.dx_mm = static_cast<double>(seg.steps_x) / grid.spm_x;
+        seg.dy_mm = static_cast<double>(seg.steps_y) / grid.spm_y;
+        seg.feed = packet_feed(move, seg, m_machine, m_opt, where);
+        out.push_back(seg);
+        cur = p;
+    }
+    m_at_x = cur.x;
+    m_at_y = cur.y;
+}
+
+std::vector<MotionSegment> cam(const Program& program, const MachineModel& machine, const CamOptions& opt) {
+    CamStream stream(program.filename, machine, opt);
+    std::vector<MotionSegment> segments;
+    for (std::size_t m = 0; m < program.moves.size(); ++m) stream.add(program.moves[m], m, segments);
     return segments;
 }
 

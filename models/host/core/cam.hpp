@@ -1,7 +1,9 @@
 // CAM of seed 000 §3.4-3.5 (GCODE2STEPS): programmed moves -> motion segments (one motion packet and one
 // steps-file row each): arcs as chords, mm -> signed steps, and the dominant-axis feed ("NUMERATOR concept").
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "host/core/gcode.hpp"
@@ -52,6 +54,24 @@ struct MotionSegment {                // one motion packet = one steps-file row
     int line = 0;                     // G-code source line (0 when unknown)
     double dx_mm = 0;                 // steps_x / steps_per_mm: the displacement the machine really makes
     double dy_mm = 0;                 // (steps-file documentation columns DX, DY)
+};
+
+// The CAM one programmed move at a time, as a streamed job's moves are read; cam() is the whole program's case.
+// Throws as cam() does. `machine` must outlive it.
+class CamStream {
+public:
+    CamStream(std::string filename, const MachineModel& machine, const CamOptions& opt);
+    // Appends the segments of programmed move number `m` (0-based; moves in program order).
+    void add(const ProgrammedMove& move, std::size_t m, std::vector<MotionSegment>& out);
+    [[nodiscard]] std::size_t segments() const { return m_segments; }  // made so far
+
+private:
+    std::string m_file;
+    const MachineModel& m_machine;
+    CamOptions m_opt;
+    bool m_started = false;
+    std::int64_t m_at_x = 0, m_at_y = 0;  // step position after the segments made
+    std::size_t m_segments = 0;
 };
 
 // Throws cnc::BadInput("file:line", ...) for an invalid machine, steps outside int32, or a packet feed

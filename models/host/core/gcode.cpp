@@ -4,9 +4,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <fstream>
+#include <memory>
 #include <map>
-#include <sstream>
 
 #include "common/bad_input.hpp"
 #include "host/core/gcode_lexer.hpp"
@@ -100,8 +101,8 @@ private:
 
 class Interpreter {
 public:
-    Interpreter(std::string filename, const InterpreterOptions& opt)
-        : m_opt(opt), m_problems(filename), m_pos(opt.start_mm) {
+    Interpreter(std::string filename, const InterpreterOptions& opt, bool keep_moves)
+        : m_opt(opt), m_keep_moves(keep_moves), m_problems(filename), m_pos(opt.start_mm) {
         m_program.filename = std::move(filename);
         if (!(std::isfinite(opt.rapid_feed_mm_per_min) && opt.rapid_feed_mm_per_min > 0.0)) {
             throw BadInput(m_program.filename, "rapid feed must be > 0 mm/min");
@@ -131,10 +132,14 @@ public:
         }
     }
 
-    Program take() {
+    // Throws every problem of the file at once; called at the program's end.
+    void check() const {
         if (m_problems.any()) m_problems.raise();
-        return std::move(m_program);
     }
+    [[nodiscard]] const Program& program() const { return m_program; }
+    [[nodiscard]] Program take() { return std::move(m_program); }
+    // The moves made since the last call, in order.
+    [[nodiscard]] std::deque<ProgrammedMove>& made() { return m_made; }
 
 private:
     // LinuxCNC: a '%' line opens the program and the next one ends it (the rest of the file is not read).
@@ -360,8 +365,10 @@ private:
         if (xy_mm > kSamePointMm) {
             // A plain XY move keeps F exactly (the CAM's packet feed rounds it).
             const double xy_feed = dz_mm == 0.0 && !inverse_time ? feed : xy_mm / minutes;
-            m_program.moves.push_back(ProgrammedMove{kind, path, xy_feed, m_laser != LaserMode::Off, m_line, m_laser,
-                                                     m_power_s, m_path_control, m_z, z_to});
+            m_made.push_back(ProgrammedMove{kind, path, xy_feed, m_laser != LaserMode::Off, m_line, m_laser, m_power_s,
+                                            m_path_control, m_z, z_to});
+            if (m_keep_moves) m_program.moves.push_back(m_made.back());
+            ++m_program.move_count;
         } else if (length_mm > kSamePointMm) {
             wait(minutes * kSecondsPerMinute, WaitCause::OtherAxes);
         }
@@ -370,7 +377,7 @@ private:
     }
 
     void wait(double seconds, WaitCause cause) {
-        if (seconds > 0.0) m_program.waits.push_back(HostWait{m_program.moves.size(), seconds, cause, m_line});
+        if (seconds > 0.0) m_program.waits.push_back(HostWait{m_program.move_count, seconds, cause, m_line});
     }
 
     bool stop(Code10 code) {
@@ -424,7 +431,9 @@ private:
     }
 
     InterpreterOptions m_opt;
+    bool m_keep_moves;
     Program m_program;
+    std::deque<ProgrammedMove> m_made;
     Problems m_problems;
     std::string m_where;
     int m_line = 0;
@@ -448,21 +457,6 @@ private:
     std::optional<double> m_feed_mm_per_min;
     std::optional<double> m_f_word;            // F as written (G93: 1 / minutes)
 };
-
-// Lines end in LF, CR LF or a lone CR (classic Mac files); a UTF-8 byte-order mark at the start is skipped.
-std::vector<std::string> split_lines(const std::string& text) {
-    std::vector<std::string> lines;
-    std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
-    for (std::size_t i = start; i < text.size(); ++i) {
-        if (text[i] == '\n' || text[i] == '\r') {
-            lines.push_back(text.substr(start, i - start));
-            if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
-            start = i + 1;
-        }
-    }
-    if (start < text.size()) lines.push_back(text.substr(start));
-    return lines;
-}
 
 }  // namespace
 
@@ -491,22 +485,88 @@ double Program::wait_s_between(std::size_t first, std::size_t last) const {
     return s;
 }
 
-Program interpret(std::istream& in, const std::string& filename, const InterpreterOptions& opt) {
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw BadInput(filename, "read error");
-    Interpreter interp(filename, opt);
-    int line = 0;
-    for (const std::string& l : split_lines(text.str())) {
-        if (!interp.line(l, ++line)) break;
+// Lines end in LF, CR LF or a lone CR (classic Mac files); a UTF-8 byte-order mark at the start is skipped.
+class GcodeStream::LineReader {
+public:
+    LineReader(std::istream& in, std::string filename) : m_in(in), m_file(std::move(filename)) {}
+
+    // The next line without its ending; false at the end of the text.
+    bool read(std::string& line) {
+        line.clear();
+        std::streambuf& buf = *m_in.rdbuf();
+        bool ended = false;
+        for (int c = buf.sbumpc(); c != std::char_traits<char>::eof(); c = buf.sbumpc()) {
+            if (c == '\n' || c == '\r') {
+                if (c == '\r' && buf.sgetc() == '\n') buf.sbumpc();
+                ended = true;
+                break;
+            }
+            line.push_back(static_cast<char>(c));
+        }
+        if (m_in.bad()) throw BadInput(m_file, "read error");
+        if (m_first && line.rfind(kByteOrderMark, 0) == 0) line.erase(0, std::char_traits<char>::length(kByteOrderMark));
+        m_first = false;
+        return ended || !line.empty();
     }
-    return interp.take();
+
+private:
+    static constexpr const char* kByteOrderMark = "\xEF\xBB\xBF";
+    std::istream& m_in;
+    std::string m_file;
+    bool m_first = true;
+};
+
+struct GcodeStream::State {
+    State(std::istream& in, const std::string& filename, const InterpreterOptions& opt, bool keep_moves)
+        : lines(in, filename), interp(filename, opt, keep_moves) {}
+    LineReader lines;
+    Interpreter interp;
+    std::string text;
+    int line = 0;
+    bool ended = false;
+};
+
+GcodeStream::GcodeStream(std::istream& in, const std::string& filename, const InterpreterOptions& opt,
+                         bool keep_moves)
+    : m_state(std::make_unique<State>(in, filename, opt, keep_moves)) {}
+
+GcodeStream::GcodeStream(const std::string& path, const InterpreterOptions& opt, bool keep_moves)
+    : m_file(std::make_unique<std::ifstream>(path, std::ios::binary)) {
+    if (!*m_file) throw BadInput(path, "cannot open G-code file");
+    m_state = std::make_unique<State>(*m_file, path, opt, keep_moves);
+}
+
+GcodeStream::~GcodeStream() = default;
+
+std::optional<ProgrammedMove> GcodeStream::next() {
+    State& st = *m_state;
+    std::deque<ProgrammedMove>& made = st.interp.made();
+    while (made.empty() && !st.ended) {
+        st.ended = !st.lines.read(st.text) || !st.interp.line(st.text, ++st.line);
+        if (st.ended) st.interp.check();
+    }
+    if (made.empty()) return std::nullopt;
+    ProgrammedMove move = made.front();
+    made.pop_front();
+    return move;
+}
+
+const Program& GcodeStream::program() const { return m_state->interp.program(); }
+
+Program GcodeStream::take() { return m_state->interp.take(); }
+
+Program interpret(std::istream& in, const std::string& filename, const InterpreterOptions& opt) {
+    GcodeStream stream(in, filename, opt, true);
+    while (stream.next()) {
+    }
+    return stream.take();
 }
 
 Program interpret_file(const std::string& path, const InterpreterOptions& opt) {
-    std::ifstream in(path);
-    if (!in) throw BadInput(path, "cannot open G-code file");
-    return interpret(in, path, opt);
+    GcodeStream stream(path, opt, true);
+    while (stream.next()) {
+    }
+    return stream.take();
 }
 
 }  // namespace cnc::host

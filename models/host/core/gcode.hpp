@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <istream>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -91,6 +92,7 @@ struct Program {
     std::vector<IgnoredWord> ignored;       // in order of first appearance
     double z_travel_mm = 0.0;               // Z travel, which the XY machines time as host waits
     int lines = 0;                          // source lines read (up to the program end)
+    std::size_t move_count = 0;             // moves made: `moves` holds them unless the program was streamed
 
     // Total seconds of the waits of one cause.
     [[nodiscard]] double wait_s(WaitCause cause) const;
@@ -99,6 +101,32 @@ struct Program {
 };
 
 const char* to_string(WaitCause cause);
+
+// The program read a line at a time, each move handed over as it is made, so that a long job need not be held
+// whole: with keep_moves = false, Program::moves stays empty and program() is the rest (lines, waits, ignored
+// words, Z travel, move_count). The problems of the file (interpret()'s BadInput) are thrown once its end is
+// read, after the moves before it have been handed over: a caller that acts on moves reads the file twice.
+class GcodeStream {
+public:
+    GcodeStream(std::istream& in, const std::string& filename, const InterpreterOptions& opt, bool keep_moves);
+    // BadInput if the file cannot be opened.
+    GcodeStream(const std::string& path, const InterpreterOptions& opt, bool keep_moves);
+    ~GcodeStream();
+    GcodeStream(const GcodeStream&) = delete;
+    GcodeStream& operator=(const GcodeStream&) = delete;
+
+    // The next move; none once the program has ended (M2/M30, the closing '%' or the end of the file).
+    [[nodiscard]] std::optional<ProgrammedMove> next();
+    // What is known of the program so far; all of it once next() has returned none.
+    [[nodiscard]] const Program& program() const;
+    [[nodiscard]] Program take();
+
+private:
+    class LineReader;
+    struct State;
+    std::unique_ptr<std::istream> m_file;
+    std::unique_ptr<State> m_state;
+};
 
 // Throws cnc::BadInput naming the file and line(s): one message for every problem of the file (unsupported
 // words with all their lines, malformed or impossible blocks), nothing executed.

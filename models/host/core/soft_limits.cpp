@@ -35,17 +35,19 @@ std::optional<std::string> soft_limit_breach(const MachineModel& machine, Machin
     return std::nullopt;
 }
 
-void check_soft_limits(const Program& program, const MachineModel& machine) {
+void check_soft_limits(const ProgrammedMove& move, const MachineModel& machine, const std::string& filename) {
     if (!machine.soft_limits) return;
-    for (const ProgrammedMove& move : program.moves) {
-        const geom::Box box = move.path.bounds();
-        for (const auto& [axis, lo, hi] : {std::tuple{MachineAxis::X, box.min.x_mm, box.max.x_mm},
-                                           std::tuple{MachineAxis::Y, box.min.y_mm, box.max.y_mm}}) {
-            if (const auto why = soft_limit_breach(machine, axis, lo, hi)) {
-                throw BadInput(program.filename + ":" + std::to_string(move.line), *why);
-            }
+    const geom::Box box = move.path.bounds();
+    for (const auto& [axis, lo, hi] : {std::tuple{MachineAxis::X, box.min.x_mm, box.max.x_mm},
+                                       std::tuple{MachineAxis::Y, box.min.y_mm, box.max.y_mm}}) {
+        if (const auto why = soft_limit_breach(machine, axis, lo, hi)) {
+            throw BadInput(filename + ":" + std::to_string(move.line), *why);
         }
     }
+}
+
+void check_soft_limits(const Program& program, const MachineModel& machine) {
+    for (const ProgrammedMove& move : program.moves) check_soft_limits(move, machine, program.filename);
 }
 
 }  // namespace cnc::host

@@ -20,5 +20,7 @@ enum class MachineAxis { X, Y };
 // Throws cnc::BadInput("file:line", ...) for the first move whose path leaves an axis' travel: lines by their
 // end points, arcs by the extremes they pass through.
 void check_soft_limits(const Program& program, const MachineModel& machine);
+// One move of `filename`, as a streamed job's moves are read.
+void check_soft_limits(const ProgrammedMove& move, const MachineModel& machine, const std::string& filename);
 
 }  // namespace cnc::host

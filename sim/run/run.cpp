@@ -95,7 +95,7 @@ RunOutcome run_scenario(const Scenario& s) {
              << ").\nThe figures below cover only what ran before it stopped; they are not a result.\n\n";
     }
     // A controller without STEP/DIR axes (the lathe's DC motor) has no pulse figures to tabulate.
-    if (!arch.input.axes.empty()) text << metrics::summary_table(m) << '\n';
+    if (!m.axes.empty()) text << metrics::summary_table(m) << '\n';
     text << (job.program ? program_text(*job.program) : std::string()) << '\n'
          << arch.details_text;
     for (const WarningGroup& g : group_warnings(arch.warnings)) text << "warning: " << summary_line(g) << '\n';

@@ -93,13 +93,16 @@ std::optional<TimePs> StepCrossings::nearest(std::int64_t count, int sign, TimeP
     return t_ps - before <= *after - t_ps ? before : *after;
 }
 
-StepCrossings step_crossings(const CommandedTrajectory& c, std::size_t axis, double steps_per_mm) {
+StepCrossings step_crossings(const CommandedTrajectory& c, std::size_t axis, double steps_per_mm, TimePs from_ps,
+                             TimePs to_ps) {
     StepCrossings out;
     const AxisFn f{c, axis, steps_per_mm, axis_of(c.origin_mm, axis)};
     const TimePs step = std::max<TimePs>(c.scan_step_ps, 1);
     TimePs t0 = c.t_begin_ps;
+    if (from_ps > t0) t0 += (from_ps - t0 - 1) / step * step;  // a crossing at from_ps ends the interval before
+    const TimePs t_stop = std::min(c.t_end_ps, to_ps);
     CommandedState s0 = commanded_at(c, t0);
-    while (t0 < c.t_end_ps) {
+    while (t0 < c.t_end_ps && t0 <= t_stop) {
         const TimePs t1 = std::min(t0 + step, c.t_end_ps);
         const CommandedState s1 = commanded_at(c, t1);
         const double v0 = f.vel(s0);

@@ -3,6 +3,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <vector>
@@ -26,6 +27,10 @@ struct StepCrossings {
 
 // Scans [t_begin, t_end] at scan_step_ps, splits a scan interval where the axis velocity changes sign (at the
 // turning point, found by bisection), and finds each crossing by safeguarded Newton iteration on the bracket.
-[[nodiscard]] StepCrossings step_crossings(const CommandedTrajectory& c, std::size_t axis, double steps_per_mm);
+// Only the scan intervals that overlap [from_ps, to_ps] are scanned (the crossings near a window of edges): a
+// crossing there is found exactly as by the whole scan, since the intervals stay on the grid from t_begin.
+[[nodiscard]] StepCrossings step_crossings(const CommandedTrajectory& c, std::size_t axis, double steps_per_mm,
+                                           TimePs from_ps = std::numeric_limits<TimePs>::min(),
+                                           TimePs to_ps = std::numeric_limits<TimePs>::max());
 
 }  // namespace cnc::metrics

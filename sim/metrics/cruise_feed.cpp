@@ -39,7 +39,12 @@ std::optional<std::pair<TimePs, TimePs>> cruise_window(const CommandedTrajectory
 }
 
 StepPosition::StepPosition(const RunInput& in, const EdgeIndex& idx)
-    : m_in(in), m_idx(idx), m_next(idx.axes.size(), 0), m_count(idx.axes.size(), 0) {}
+    : m_in(in), m_idx(idx), m_next(idx.axes.size(), 0), m_count(idx.axes.size(), 0) {
+    // A window of a streamed run starts from the counts before it.
+    if (!in.commanded) return;
+    const std::vector<std::int64_t>& before = in.commanded->count_before_steps;
+    for (std::size_t a = 0; a < m_count.size() && a < before.size(); ++a) m_count[a] = before[a];
+}
 
 void StepPosition::advance_before(TimePs t_ps) {
     for (std::size_t a = 0; a < m_idx.axes.size(); ++a) {

@@ -72,6 +72,7 @@ MoveMetrics programmed_metrics(const RunInput& in, const std::vector<MoveMetrics
             mm.steps_commanded[a] += piece.steps_commanded[a];
             mm.steps_emitted[a] += piece.steps_emitted[a];
             keep_max(mm.sync_max_abs_ns[a], piece.sync_max_abs_ns[a]);
+            if (a < mm.sync_unmatched_edges.size()) mm.sync_unmatched_edges[a] += piece.sync_unmatched_edges[a];
         }
         MovePath& path = mm.path;
         add_rms(path.following_rms_um, rms_count, piece.path);
@@ -135,6 +136,7 @@ RunMetrics compute_metrics(const RunInput& in) {
     for (std::size_t m = 0; m < in.moves.size(); ++m) {
         MoveMetrics mm = piece_metrics(in, idx, m);
         mm.sync_max_abs_ns = sync.move_axis_max_abs_ns[m];
+        if (in.commanded) mm.sync_unmatched_edges = sync.move_axis_unmatched_edges[m];
         mm.path = std::move(out.path.moves[m]);
         out.pieces.push_back(std::move(mm));
     }

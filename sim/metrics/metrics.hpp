@@ -48,6 +48,7 @@ struct MoveMetrics {
     std::vector<std::int64_t> steps_emitted;    // [axis] rising edges signed by DIR
     std::optional<TimePs> t_first_edge_ps, t_last_edge_ps;  // any axis
     std::vector<std::optional<double>> sync_max_abs_ns;     // [axis]
+    std::vector<std::size_t> sync_unmatched_edges;           // [axis], with a commanded trajectory (sync_error.hpp)
     MoveTiming timing;
     MovePath path;
 };

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <stdexcept>
 #include <utility>
 
 #include "metrics/edge_index.hpp"
@@ -15,13 +14,12 @@ namespace {
 
 constexpr TimePs kEndOfTime = std::numeric_limits<TimePs>::max();
 
+bool starts_after(TimePs t_ps, const RateSegment& s) { return t_ps < s.t_ps; }
+
 }  // namespace
 
 MetricsStream::MetricsStream(RunInput shape, bool detail, PieceMeasured on_piece)
     : m_in(std::move(shape)), m_detail(detail), m_on_piece(std::move(on_piece)), m_laser(m_in.t_job_start_ps) {
-    if (m_in.commanded || !m_in.rate_segments.empty()) {
-        throw std::invalid_argument("streaming metrics: a commanded trajectory or rate segments are not streamed");
-    }
     for (std::size_t a = 0; a < m_in.axes.size(); ++a) {
         const AxisTrace& trace = m_in.axes[a];
         AxisMetrics am;
@@ -46,6 +44,11 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
     // Until the pieces past the kept neighbour hold two programmed moves, none can be final: the batch code need
     // not run over a window that only grows (a long move spans many slices).
     if (!final && !two_moves_pending()) return;
+    if (m_in.commanded) {
+        m_in.commanded->count_before_steps.clear();
+        for (const AxisMetrics& am : m_axes) m_in.commanded->count_before_steps.push_back(am.net_steps);
+    }
+    for (const std::vector<RateSegment>& segments : m_in.rate_segments) m_rate_segmented |= !segments.empty();
     const RunMetrics r = compute_metrics(m_in);
     const std::size_t first_group = m_has_prev ? 1 : 0;
     std::vector<std::size_t> group_piece{0};  // [group] its first piece in m_in.moves
@@ -62,12 +65,16 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
                 if (m_in.moves[p].t_end_ps >= now_ps) end_group = std::min(end_group, g);
             }
         }
+        while (end_group > first_group && !cut_allowed(r, m_in.moves[group_piece[end_group]].t_begin_ps, now_ps)) {
+            --end_group;
+        }
         if (end_group <= first_group) return;
     }
     const std::size_t first_piece = group_piece[first_group];
     const std::size_t cut_piece = group_piece[end_group];
     const TimePs cut_ps = final ? kEndOfTime : m_in.moves[cut_piece].t_begin_ps;
     const bool first_fold = m_pieces_done == 0;
+    if (first_fold) count_unattributed_unmatched(r);
 
     for (std::size_t p = first_piece; p < cut_piece; ++p) {
         const MoveMetrics& piece = r.pieces[p];
@@ -77,6 +84,9 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
         for (std::size_t a = 0; a < m_axes.size(); ++a) {
             keep_max(m_axes[a].sync_max_abs_ns, piece.sync_max_abs_ns[a]);
             keep_max(m_out.pulse.sync_max_abs_ns, piece.sync_max_abs_ns[a]);
+            if (a < piece.sync_unmatched_edges.size() && m_axes[a].sync_unmatched_edges) {
+                *m_axes[a].sync_unmatched_edges += piece.sync_unmatched_edges[a];
+            }
         }
         keep_max(m_out.path.endpoint_vs_command_max_um, piece.path.endpoint_vs_command_um);
         keep_max(m_out.path.endpoint_vs_program_max_um, piece.path.endpoint_vs_program_um);
@@ -91,8 +101,11 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
     }
     for (std::size_t a = 0; a < m_axes.size(); ++a) {
         for (PulseRun run : r.axes[a].runs) {
-            if (!run.move || *run.move < first_piece || *run.move >= cut_piece) continue;
-            run.move = m_pieces_done + (*run.move - first_piece);
+            // A rate segment's run before the first piece belongs to none (first window only).
+            if (run.move ? *run.move < first_piece || *run.move >= cut_piece : !first_fold || run.t_first_ps >= cut_ps) {
+                continue;
+            }
+            if (run.move) run.move = m_pieces_done + (*run.move - first_piece);
             run.edges_range.begin += m_rising_done[a];
             run.edges_range.end += m_rising_done[a];
             m_pulse[a].add(run);
@@ -119,10 +132,42 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
     m_pieces_done += cut_piece - first_piece;
     if (final) return;
     drop_before(cut_ps, cut_piece);
+    drop_rate_segments(r, cut_ps);
     // The slow stretches are known up to the last sample measured, which is before the cut (the one after it may
     // still join or split them); without samples so far nothing is folded (with none at all, the dwell is not
     // measured).
     if (m_in.laser && m_last_sample_ps) fold_laser(*m_last_sample_ps);
+}
+
+bool MetricsStream::cut_allowed(const RunMetrics& r, TimePs cut_ps, TimePs now_ps) const {
+    // The crossings that may match an edge before the cut lie where the commanded trajectory is already known.
+    if (m_in.commanded) {
+        const CommandedTrajectory& c = *m_in.commanded;
+        if (cut_ps > c.t_end_ps - c.sync_window_ps - c.scan_step_ps) return false;
+    }
+    // A rate segment's run is measured whole, with the piece its first edge is in: every segment with an edge
+    // before the cut must have ended (the next one known and begun), so that all its edges are here.
+    for (std::size_t a = 0; a < m_in.rate_segments.size() && a < r.axes.size(); ++a) {
+        const std::vector<RateSegment>& segments = m_in.rate_segments[a];
+        if (segments.empty()) continue;
+        for (const PulseRun& run : r.axes[a].runs) {
+            if (run.t_first_ps >= cut_ps) break;
+            const auto next = std::upper_bound(segments.begin(), segments.end(), run.t_first_ps, starts_after);
+            if (next == segments.end() || next->t_ps > now_ps) return false;
+        }
+    }
+    return true;
+}
+
+void MetricsStream::count_unattributed_unmatched(const RunMetrics& r) {
+    for (std::size_t a = 0; a < m_axes.size(); ++a) {
+        if (!r.axes[a].sync_unmatched_edges) continue;
+        std::size_t in_pieces = 0;
+        for (const MoveMetrics& piece : r.pieces) {
+            if (a < piece.sync_unmatched_edges.size()) in_pieces += piece.sync_unmatched_edges[a];
+        }
+        m_axes[a].sync_unmatched_edges = *r.axes[a].sync_unmatched_edges - in_pieces;
+    }
 }
 
 void MetricsStream::fold_laser(TimePs horizon_ps) {
@@ -138,6 +183,21 @@ void MetricsStream::fold_exposure(std::size_t first_sample, std::size_t end_samp
     const auto begin = m_in.tool.begin();
     m_exposure.fold(begin + static_cast<std::ptrdiff_t>(first_sample), begin + static_cast<std::ptrdiff_t>(end_sample),
                     *m_in.laser);
+}
+
+void MetricsStream::drop_rate_segments(const RunMetrics& r, TimePs cut_ps) {
+    for (std::size_t a = 0; a < m_in.rate_segments.size() && a < r.axes.size(); ++a) {
+        std::vector<RateSegment>& segments = m_in.rate_segments[a];
+        // The segment that governs the cut stays, unless its run began before the cut and was measured whole (its
+        // edges after the cut, still in pending(), are then in no run of the next window).
+        auto keep = std::upper_bound(segments.begin(), segments.end(), cut_ps, starts_after);
+        if (keep != segments.begin()) --keep;
+        for (const PulseRun& run : r.axes[a].runs) {
+            if (run.t_first_ps >= cut_ps) break;
+            keep = std::max(keep, std::upper_bound(segments.begin(), segments.end(), run.t_first_ps, starts_after));
+        }
+        segments.erase(segments.begin(), keep);
+    }
 }
 
 bool MetricsStream::two_moves_pending() const {
@@ -177,6 +237,7 @@ void MetricsStream::drop_before(TimePs cut_ps, std::size_t cut_piece) {
         m_sample_measured = true;
     }
     m_in.moves.erase(m_in.moves.begin(), m_in.moves.begin() + static_cast<std::ptrdiff_t>(cut_piece - 1));
+
     m_has_prev = true;
 }
 
@@ -190,6 +251,7 @@ RunMetrics MetricsStream::finish(TimePs t_job_end_ps) {
 
     RunMetrics out = std::move(m_out);
     out.with_moves = true;
+    out.runs_per_rate_segment = m_rate_segmented;
     out.with_tool = out.path.samples > 0;
     out.limits = m_in.limits;
     out.run_split_tolerance = m_in.run_split_tolerance;

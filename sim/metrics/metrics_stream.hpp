@@ -2,6 +2,9 @@
 // (docs/streaming.md): the run appends what it recorded to pending() and calls fold() at its slice boundaries; the
 // programmed moves that can no longer change are measured with the batch code (compute_metrics on them and their
 // neighbours) and their edges and samples are dropped. finish() gives what compute_metrics gives on the whole run.
+// With a commanded trajectory (its t_end_ps: how far it is known so far) a window is cut a sync window before its
+// end, and with rate segments only where every segment with edges before the cut has ended: its run is measured
+// whole with the piece of its first edge (docs/streaming.md).
 #pragma once
 #include <cstddef>
 #include <functional>
@@ -23,8 +26,7 @@ using PieceMeasured = std::function<void(const MoveMetrics&)>;
 class MetricsStream {
 public:
     // `shape`: the run's axes (names, pins and their initial levels, steps per mm, polarity), its laser pin, driver
-    // limits and job start, usually with no edges, samples or moves yet. Throws std::invalid_argument with a
-    // commanded trajectory or rate segments (not streamed yet: spi-fpga computes its metrics at the end).
+    // limits and job start, usually with no edges, samples or moves yet.
     // `detail`: keep the per-piece records and the pulse runs, which only the detailed report lists (it grows with
     // them anyway); without, finish() gives their summaries only (RunMetrics::pieces and AxisMetrics::runs empty).
     MetricsStream(RunInput shape, bool detail, PieceMeasured on_piece = {});
@@ -46,8 +48,14 @@ public:
 private:
     void measure(TimePs now_ps, bool final);
     [[nodiscard]] bool two_moves_pending() const;
+    // Whether the window may end at cut_ps: the commanded trajectory known around it, no rate segment across it.
+    [[nodiscard]] bool cut_allowed(const RunMetrics& r, TimePs cut_ps, TimePs now_ps) const;
+    // The first window's edges before the first piece that no commanded step crossing matches.
+    void count_unattributed_unmatched(const RunMetrics& r);
     // Counts the edges before cut_ps (driver timing too) and drops them from pending().
     void take_edges_before(TimePs cut_ps, bool first_fold, const RunMetrics& r);
+    // Drops the rate segments whose runs are measured or have no edges.
+    void drop_rate_segments(const RunMetrics& r, TimePs cut_ps);
     // Drops the measured pieces but the last (a contour neighbour) and the samples but the last before cut_ps.
     void drop_before(TimePs cut_ps, std::size_t cut_piece);
     // Folds the laser figures up to horizon_ps and drops the laser edges, rapid windows and slow stretches read.
@@ -62,6 +70,7 @@ private:
     bool m_sample_measured = false;   // m_in.tool.front() was measured, kept as the sample before the window
     std::size_t m_pieces_done = 0;    // measured pieces
     std::size_t m_moves_done = 0;     // measured programmed moves
+    bool m_rate_segmented = false;    // runs are per rate segment (RunMetrics::runs_per_rate_segment)
     std::vector<std::size_t> m_rising_done;  // [axis] rising edges dropped
     std::vector<AxisMetrics> m_axes;         // counts, runs (detail), sync of the measured part
     std::vector<PulseSummaryFold> m_pulse;   // [axis]

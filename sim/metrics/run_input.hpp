@@ -68,6 +68,9 @@ struct CommandedTrajectory {
     // An edge farther than this from every crossing of its step is one the commanded motion does not make near
     // then (a loop's overshoot and its correction): counted as unmatched instead of a sync error.
     TimePs sync_window_ps = 100 * kPsPerMs;
+    // [axis] the step count before the input's first edge, for a window of a run measured as it runs
+    // (metrics_stream.hpp); empty: 0, the whole run.
+    std::vector<std::int64_t> count_before_steps;
 };
 
 // The step rate an axis was commanded from t_ps on (0 = stopped), for a controller that changes rates on its

@@ -16,14 +16,19 @@ SyncResult sync_to_trajectory(const RunInput& in, const EdgeIndex& idx) {
     out.axis_max_abs_ns.assign(n_axes, std::nullopt);
     out.move_axis_max_abs_ns.assign(in.moves.size(), std::vector<std::optional<double>>(n_axes));
     out.axis_unmatched_edges.assign(n_axes, std::nullopt);
+    out.move_axis_unmatched_edges.assign(in.moves.size(), std::vector<std::size_t>(n_axes, 0));
+    const CommandedTrajectory& c = *in.commanded;
     for (std::size_t a = 0; a < n_axes && a < kPathAxes; ++a) {
         const double steps_per_mm = in.axes[a].steps_per_mm;
         if (steps_per_mm <= 0.0) continue;
         std::size_t& unmatched = out.axis_unmatched_edges[a].emplace(0);
-        const StepCrossings crossings = step_crossings(*in.commanded, a, steps_per_mm);
         const AxisEdges& edges = idx.axes[a];
+        if (edges.rising.empty()) continue;
+        // Only a crossing within the sync window of an edge can match it.
+        const StepCrossings crossings = step_crossings(c, a, steps_per_mm, edges.rising.front() - c.sync_window_ps,
+                                                       edges.rising.back() + c.sync_window_ps);
         std::vector<std::optional<double>> error_ns(edges.rising.size());
-        std::int64_t count = 0;
+        std::int64_t count = a < c.count_before_steps.size() ? c.count_before_steps[a] : 0;
         for (std::size_t k = 0; k < edges.rising.size(); ++k) {
             count += edges.rising_sign[k];
             const std::optional<TimePs> t = crossings.nearest(count, edges.rising_sign[k], edges.rising[k]);
@@ -36,7 +41,10 @@ SyncResult sync_to_trajectory(const RunInput& in, const EdgeIndex& idx) {
         for (std::size_t m = 0; m < in.moves.size(); ++m) {
             const EdgeRange r = idx.by_move[a][m];
             for (std::size_t k = r.begin; k < r.end; ++k) {
-                if (!error_ns[k]) continue;
+                if (!error_ns[k]) {
+                    ++out.move_axis_unmatched_edges[m][a];
+                    continue;
+                }
                 const double e = std::fabs(*error_ns[k]);
                 keep_max(out.move_axis_max_abs_ns[m][a], e);
                 keep_max(out.axis_max_abs_ns[a], e);

@@ -21,6 +21,7 @@ struct SyncResult {
     std::optional<double> max_abs_ns;
     // Commanded trajectory only: per axis, edges with no crossing of their step within its sync window.
     std::vector<std::optional<std::size_t>> axis_unmatched_edges;  // [axis]
+    std::vector<std::vector<std::size_t>> move_axis_unmatched_edges;  // [move][axis]
 };
 
 // Uniform: edge k (k = 0..n-1) of a move on an axis is compared with t0 + k / rate_steps_per_s[axis], t0 = the

@@ -32,6 +32,8 @@ public:
     void reserve_moves(std::size_t programmed_moves) { m_stream.reserve_moves(programmed_moves); }
     // A piece that began, in execution order, with its t_end_ps set once it has ended.
     void add_piece(metrics::MoveSpec piece) { m_stream.pending().moves.push_back(std::move(piece)); }
+    // Where the run adds what else it knows so far: a commanded trajectory, rate segments (metrics_stream.hpp).
+    [[nodiscard]] metrics::RunInput& pending() { return m_stream.pending(); }
     // The simulation has reached now_ps (the job still runs).
     void fold(TimePs now_ps);
     // The run has ended: everything left, and the metrics of the whole run.

@@ -111,34 +111,24 @@ void append_window(std::vector<T>& to, const std::vector<T>& from, TimePs lo, Ti
 // `detail`: the stream keeps the per-piece records and pulse runs; without, the default report is still the batch one.
 class MetricsStreamWindows : public ::testing::TestWithParam<bool> {};
 
-TEST_P(MetricsStreamWindows, WindowByWindowEqualsTheWholeRun) {
-    const bool detail = GetParam();
-    const RunInput whole = synthetic_run();
-    const RunMetrics batch = compute_metrics(whole);
-    ASSERT_EQ(batch.moves.size(), 6U);  // pieces 1 and 2 are one programmed move
-    ASSERT_GT(batch.pulse.driver_violations, 0U);
-    ASSERT_GT(*batch.laser->dwell_ms, 0.0);
-    ASSERT_GT(*batch.laser->on_in_rapid_ms, 0.0);
-
+// Hands `whole` to a stream window by window (cut at `cuts`, the last after the job's end) as a run would: what
+// happened before each cut, the pieces begun before it, the rate segments from before it and the commanded
+// trajectory known up to it. Returns the streamed metrics; `fewest_kept`: the fewest x STEP edges the stream held
+// after a cut between the rapid's start and the job's end.
+RunMetrics stream_in_windows(const RunInput& whole, bool detail, const std::vector<TimePs>& cuts,
+                             std::size_t& pieces_measured, std::size_t& fewest_kept) {
     RunInput shape = whole;
     for (AxisTrace& a : shape.axes) a.step.edges.clear(), a.dir.edges.clear();
     shape.laser->edges.clear();
     shape.tool.clear();
     shape.moves.clear();
-    std::size_t pieces_measured = 0;
+    for (std::vector<RateSegment>& segments : shape.rate_segments) segments.clear();
+    if (shape.commanded) shape.commanded->t_end_ps = shape.commanded->t_begin_ps;
+    pieces_measured = 0;
     MetricsStream stream(shape, detail, [&pieces_measured](const MoveMetrics&) { ++pieces_measured; });
-    // Cuts every 370 us, one at a rise of the two-piece move (2,350 us: y's first) and one inside that pulse.
-    std::vector<TimePs> cuts;
-    for (TimePs c = 370 * kUs; c < whole.t_job_end_ps; c += 370 * kUs) cuts.push_back(c);
-    const TimePs tied_rise = whole.moves[1].t_begin_ps + 50 * kUs;
-    cuts.push_back(tied_rise);
-    cuts.push_back(tied_rise + 1 * kUs);
-    std::sort(cuts.begin(), cuts.end());
-    cuts.push_back(whole.t_job_end_ps + 1);
-
     TimePs lo = 0;
     std::size_t pieces_given = 0;
-    std::size_t fewest_kept = whole.axes[0].step.edges.size();
+    fewest_kept = whole.axes[0].step.edges.size();
     for (const TimePs hi : cuts) {
         RunInput& p = stream.pending();
         const auto edge_time = [](const Edge& e) { return e.t_ps; };
@@ -146,6 +136,10 @@ TEST_P(MetricsStreamWindows, WindowByWindowEqualsTheWholeRun) {
             append_window(p.axes[a].step.edges, whole.axes[a].step.edges, lo, hi, edge_time);
             append_window(p.axes[a].dir.edges, whole.axes[a].dir.edges, lo, hi, edge_time);
         }
+        for (std::size_t a = 0; a < whole.rate_segments.size(); ++a) {
+            append_window(p.rate_segments[a], whole.rate_segments[a], lo, hi, [](const RateSegment& r) { return r.t_ps; });
+        }
+        if (p.commanded) p.commanded->t_end_ps = std::min(hi, whole.commanded->t_end_ps);
         append_window(p.laser->edges, whole.laser->edges, lo, hi, edge_time);
         append_window(p.tool, whole.tool, lo, hi, [](const ToolSample& s) { return s.t_ps; });
         for (; pieces_given < whole.moves.size() && whole.moves[pieces_given].t_begin_ps < hi; ++pieces_given) {
@@ -158,13 +152,100 @@ TEST_P(MetricsStreamWindows, WindowByWindowEqualsTheWholeRun) {
         }
         lo = hi;
     }
+    return stream.finish(whole.t_job_end_ps);
+}
+
+TEST_P(MetricsStreamWindows, WindowByWindowEqualsTheWholeRun) {
+    const bool detail = GetParam();
+    const RunInput whole = synthetic_run();
+    const RunMetrics batch = compute_metrics(whole);
+    ASSERT_EQ(batch.moves.size(), 6U);  // pieces 1 and 2 are one programmed move
+    ASSERT_GT(batch.pulse.driver_violations, 0U);
+    ASSERT_GT(*batch.laser->dwell_ms, 0.0);
+    ASSERT_GT(*batch.laser->on_in_rapid_ms, 0.0);
+
+    // Cuts every 370 us, one at a rise of the two-piece move (2,350 us: y's first) and one inside that pulse.
+    std::vector<TimePs> cuts;
+    for (TimePs c = 370 * kUs; c < whole.t_job_end_ps; c += 370 * kUs) cuts.push_back(c);
+    const TimePs tied_rise = whole.moves[1].t_begin_ps + 50 * kUs;
+    cuts.push_back(tied_rise);
+    cuts.push_back(tied_rise + 1 * kUs);
+    std::sort(cuts.begin(), cuts.end());
+    cuts.push_back(whole.t_job_end_ps + 1);
+
+    std::size_t pieces_measured = 0;
+    std::size_t fewest_kept = 0;
+    const RunMetrics streamed = stream_in_windows(whole, detail, cuts, pieces_measured, fewest_kept);
     // The measured moves' edges were dropped on the way: the x STEP log never held all of the run after the rapid.
     EXPECT_LT(fewest_kept, whole.axes[0].step.edges.size() / 2);
-    const RunMetrics streamed = stream.finish(whole.t_job_end_ps);
     EXPECT_EQ(to_json(streamed, detail).dump(1), to_json(batch, detail).dump(1));
     EXPECT_EQ(pieces_measured, whole.moves.size());
     EXPECT_EQ(streamed.pieces.size(), detail ? whole.moves.size() : 0U);
     EXPECT_EQ(streamed.axes[0].runs.empty(), !detail);
+}
+
+// A planner's run (spi-fpga): the commanded trajectory, known only up to each cut, moves each piece's commanded
+// end points linearly over its steps (sync error and cruise feed against it, the step counts carried across cuts),
+// and the runs follow rate segments (one per piece and axis from its first step, a change in the middle of piece 0
+// whose run a cut splits in time, a stop at each piece's end, one before the unattributed steps).
+TEST_P(MetricsStreamWindows, PlannerRunWindowByWindowEqualsTheWholeRun) {
+    const bool detail = GetParam();
+    RunInput whole = synthetic_run();
+    struct Leg {
+        TimePs t0, t1;
+        geom::Vec2 from, to;
+    };
+    std::vector<Leg> legs;
+    whole.rate_segments.assign(2, {{50 * kUs, 10'000.0}});
+    for (const MoveSpec& m : whole.moves) {
+        // synthetic_run: steps from 50 us after the piece's begin to 30 us before its end.
+        const Leg leg{m.t_begin_ps + 50 * kUs, m.t_end_ps - 30 * kUs, m.from_mm, m.to_mm};
+        legs.push_back(leg);
+        for (std::size_t a = 0; a < 2; ++a) {
+            if (m.steps[a] == 0) continue;
+            if (&m == &whole.moves.front()) {
+                whole.rate_segments[a].push_back({leg.t0, m.rate_steps_per_s[a]});
+                whole.rate_segments[a].push_back({leg.t0 + (leg.t1 - leg.t0) / 2, m.rate_steps_per_s[a] * 1.01});
+            } else {
+                whole.rate_segments[a].push_back({leg.t0, m.rate_steps_per_s[a]});
+            }
+            whole.rate_segments[a].push_back({m.t_end_ps, 0.0});
+        }
+    }
+    CommandedTrajectory c;
+    c.t_begin_ps = 0;
+    c.t_end_ps = whole.t_job_end_ps;
+    c.scan_step_ps = 20 * kUs;
+    c.sync_window_ps = 150 * kUs;  // 1.5 x the step period: an edge matches its own crossing only
+    c.state_at = [legs](TimePs t) {
+        geom::Vec2 at{};
+        for (const Leg& leg : legs) {
+            if (t < leg.t0) return CommandedState{at, {}};
+            if (t <= leg.t1) {
+                const double f = static_cast<double>(t - leg.t0) / static_cast<double>(leg.t1 - leg.t0);
+                const double s = ps_to_s(leg.t1 - leg.t0);
+                return CommandedState{leg.from + (leg.to - leg.from) * f, (leg.to - leg.from) * (1.0 / s)};
+            }
+            at = leg.to;
+        }
+        return CommandedState{at, {}};
+    };
+    whole.commanded = c;
+    const RunMetrics batch = compute_metrics(whole);
+    ASSERT_TRUE(batch.runs_per_rate_segment);
+    ASSERT_GT(*batch.axes[0].sync_unmatched_edges, 0U);  // the unattributed steps: no commanded motion then
+    ASSERT_TRUE(batch.pulse.sync_max_abs_ns);
+    ASSERT_GT(batch.timing.feed_moves, 0U);
+
+    std::vector<TimePs> cuts;
+    for (TimePs t = 370 * kUs; t < whole.t_job_end_ps; t += 370 * kUs) cuts.push_back(t);
+    cuts.push_back(whole.t_job_end_ps + 1);
+    std::size_t pieces_measured = 0;
+    std::size_t fewest_kept = 0;
+    const RunMetrics streamed = stream_in_windows(whole, detail, cuts, pieces_measured, fewest_kept);
+    EXPECT_LT(fewest_kept, whole.axes[0].step.edges.size() / 2);
+    EXPECT_EQ(to_json(streamed, detail).dump(1), to_json(batch, detail).dump(1));
+    EXPECT_EQ(pieces_measured, whole.moves.size());
 }
 
 INSTANTIATE_TEST_SUITE_P(DetailOrNot, MetricsStreamWindows, ::testing::Bool());

@@ -14,7 +14,9 @@ namespace {
 
 cnc::sim::RunOutcome run_laser_job(const std::vector<std::string>& sets = {}) {
     const std::string path = std::string(CNC_SOURCE_DIR) + "/tests/data/laser/laser_follows_job.toml";
-    return cnc::sim::run_scenario(cnc::sim::load_scenario(path, sets));
+    cnc::sim::Scenario s = cnc::sim::load_scenario(path, sets);
+    s.keep_run_input = true;  // the tests read the laser pin's edges
+    return cnc::sim::run_scenario(s);
 }
 
 // Each wanted cut is 10 mm at F600 = 10 mm/s from rest to rest with the default 1000 mm/s^2 on both axes:

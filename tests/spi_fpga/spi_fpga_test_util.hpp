@@ -13,9 +13,13 @@ namespace cnc::test {
 
 inline constexpr TimePs kClockPs = 20'000;  // 50 MHz FPGA clock
 
+// out.arch.input keeps every edge and tool sample, as --plots and --samples ask (the metrics otherwise stream and
+// drop them as they go): the tests read them.
 inline sim::RunOutcome run_spi(const std::string& name, const std::vector<std::string>& sets = {}) {
     const std::string path = std::string(CNC_SOURCE_DIR) + "/scenarios/spi-fpga/" + name + ".toml";
-    return sim::run_scenario(sim::load_scenario(path, sets));
+    sim::Scenario s = sim::load_scenario(path, sets);
+    s.keep_run_input = true;
+    return sim::run_scenario(s);
 }
 
 // Net step count of an axis from its edge logs, over the rising edges at or before t_ps.

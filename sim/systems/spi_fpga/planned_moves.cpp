@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <utility>
 
 namespace cnc::sim {
 
@@ -19,22 +21,42 @@ geom::Vec2 on_grid(const host::servo::ServoCore& servo, geom::Vec2 p, std::array
                                     static_cast<double>(steps[1]) / c.axes[1].steps_per_mm};
 }
 
-double planned_peak_mm_per_s(const host::planner::Trajectory& traj, int move) {
-    double peak = 0.0;
-    for (const host::planner::PlannedPiece& p : traj.pieces()) {
-        if (p.move == move) peak = std::max(peak, p.speed.peak_mm_per_s);
-    }
-    return peak;
+using ClockAt = std::function<host::servo::TrajectoryClock::Reading(TimePs)>;
+
+metrics::CommandedTrajectory commanded_on(std::shared_ptr<const host::planner::Trajectory> traj, ClockAt clock_at,
+                                          const host::servo::ServoCore& servo) {
+    metrics::CommandedTrajectory c;
+    commanded_known(c, servo);
+    c.origin_mm = servo.config().origin_mm;
+    c.scan_step_ps = servo.config().period_ps;  // tau is linear within a period: axis velocities turn at most once
+    c.state_at = [traj, clock_at = std::move(clock_at)](TimePs t) {
+        const host::servo::TrajectoryClock::Reading r = clock_at(t);
+        const host::planner::Sample s = traj->at(r.tau_s);
+        return metrics::CommandedState{s.pos_mm, s.vel_mm_per_s * r.rate};
+    };
+    return c;
 }
 
 }  // namespace
 
-std::vector<metrics::MoveSpec> planned_moves(const host::Program& program, const host::planner::Trajectory& traj,
-                                             const host::servo::ServoCore& servo) {
+PlannedMoves::PlannedMoves(const host::Program& program, const host::planner::Trajectory& traj)
+    : m_program(program), m_traj(traj), m_peak_mm_per_s(program.moves.size(), 0.0) {
+    for (const host::planner::PlannedPiece& p : traj.pieces()) {
+        if (p.move < 0 || static_cast<std::size_t>(p.move) >= m_peak_mm_per_s.size()) continue;
+        double& peak = m_peak_mm_per_s[static_cast<std::size_t>(p.move)];
+        peak = std::max(peak, p.speed.peak_mm_per_s);
+    }
+}
+
+std::vector<metrics::MoveSpec> PlannedMoves::take(const host::servo::ServoCore& servo, bool ended) {
     const host::servo::TrajectoryClock& clock = servo.clock();
+    const double tau_now_s = clock.tau_at(clock.t_end_ps());
     std::vector<metrics::MoveSpec> moves;
-    for (std::size_t i = 0; i < program.moves.size(); ++i) {
-        const host::ProgrammedMove& pm = program.moves[i];
+    for (; m_next < m_program.moves.size(); ++m_next) {
+        const std::size_t i = m_next;
+        const auto& window = m_traj.move_windows()[i];
+        if (!ended && !(tau_now_s > window.second)) break;
+        const host::ProgrammedMove& pm = m_program.moves[i];
         metrics::MoveSpec m;
         m.index = static_cast<int>(i) + 1;
         m.line = pm.line;
@@ -46,7 +68,7 @@ std::vector<metrics::MoveSpec> planned_moves(const host::Program& program, const
         m.to_mm = on_grid(servo, pm.path.end, to);
         m.steps = {to[0] - from[0], to[1] - from[1]};
         m.rapid = pm.kind == host::MotionKind::Rapid;
-        const double peak = planned_peak_mm_per_s(traj, static_cast<int>(i));
+        const double peak = m_peak_mm_per_s[i];
         m.feed_mm_per_min = m.rapid && peak > 0.0 ? peak * kSecondsPerMinute : pm.feed_mm_per_min;
         const double length_mm = geom::distance(m.from_mm, m.to_mm);
         if (length_mm > 0.0) {
@@ -54,7 +76,6 @@ std::vector<metrics::MoveSpec> planned_moves(const host::Program& program, const
             m.rate_steps_per_s = {mm_per_s * static_cast<double>(std::llabs(m.steps[0])) / length_mm,
                                   mm_per_s * static_cast<double>(std::llabs(m.steps[1])) / length_mm};
         }
-        const auto& window = traj.move_windows()[i];
         m.t_begin_ps = clock.depart_time(window.first);
         m.t_end_ps = clock.depart_time(window.second);
         moves.push_back(m);
@@ -64,30 +85,31 @@ std::vector<metrics::MoveSpec> planned_moves(const host::Program& program, const
 
 metrics::CommandedTrajectory commanded_trajectory(std::shared_ptr<const host::planner::Trajectory> traj,
                                                   const host::servo::ServoCore& servo) {
-    const host::servo::TrajectoryClock clock = servo.clock();
-    metrics::CommandedTrajectory c;
-    c.t_begin_ps = clock.t_begin_ps();
-    c.t_end_ps = clock.t_end_ps();
-    c.origin_mm = servo.config().origin_mm;
-    c.scan_step_ps = servo.config().period_ps;  // tau is linear within a period: axis velocities turn at most once
-    c.state_at = [traj, clock](TimePs t) {
-        const host::servo::TrajectoryClock::Reading r = clock.at(t);
-        const host::planner::Sample s = traj->at(r.tau_s);
-        return metrics::CommandedState{s.pos_mm, s.vel_mm_per_s * r.rate};
-    };
-    return c;
+    return commanded_on(std::move(traj), [clock = servo.clock()](TimePs t) { return clock.at(t); }, servo);
 }
 
-std::vector<std::vector<metrics::RateSegment>> rate_segments(const fpga::SpiFpgaTop& fpga,
-                                                             const host::servo::ServoCore& servo) {
+metrics::CommandedTrajectory commanded_trajectory_live(std::shared_ptr<const host::planner::Trajectory> traj,
+                                                       const host::servo::ServoCore& servo) {
+    return commanded_on(std::move(traj), [&clock = servo.clock()](TimePs t) { return clock.at(t); }, servo);
+}
+
+void commanded_known(metrics::CommandedTrajectory& c, const host::servo::ServoCore& servo) {
+    c.t_begin_ps = servo.clock().t_begin_ps();
+    c.t_end_ps = servo.clock().t_end_ps();
+}
+
+std::vector<std::vector<metrics::RateSegment>> RateSegments::take(const fpga::SpiFpgaTop& fpga,
+                                                                  const host::servo::ServoCore& servo, bool ended) {
     const std::vector<host::servo::PeriodRecord>& log = servo.log();
     std::vector<std::vector<metrics::RateSegment>> out(host::servo::kAxes);
     for (std::size_t a = 0; a < host::servo::kAxes; ++a) {
         const std::vector<fpga::AppliedRate>& applied = fpga.applied(a);
-        for (std::size_t k = 0; k < applied.size();) {
+        std::size_t& k = m_next[a];
+        while (k < applied.size()) {
             // A stretch of one word (the same period and direction reloaded period after period) is one STEP train.
             std::size_t end = k + 1;
             while (end < applied.size() && applied[end].rate == applied[k].rate) ++end;
+            if (end == applied.size() && !ended) break;  // the stretch may go on
             double sum = 0.0;
             for (std::size_t i = k; i < end; ++i) {
                 if (applied[i].seq < log.size()) sum += std::fabs(log[applied[i].seq].axes[a].requested_steps_per_s);

@@ -17,17 +17,41 @@ namespace cnc::sim {
 // at a rest point (the host landing the axes) belongs to the move that ends there. Corner blends lie between
 // windows and count with the move before them (metrics MoveTimeline). End points are the programmed ones on the
 // step grid (origin + round(steps)), the targets the host lands on; a rapid's feed is its planned peak speed.
-std::vector<metrics::MoveSpec> planned_moves(const host::Program& program, const host::planner::Trajectory& traj,
-                                             const host::servo::ServoCore& servo);
+class PlannedMoves {
+public:
+    PlannedMoves(const host::Program& program, const host::planner::Trajectory& traj);
+    // The moves not taken yet whose window the trajectory clock has left, so that both ends are known (every one
+    // left once the run has `ended`).
+    [[nodiscard]] std::vector<metrics::MoveSpec> take(const host::servo::ServoCore& servo, bool ended);
 
-// The planner's state at tau(t) (velocity scaled by d tau/dt). The trajectory is shared with the closure.
+private:
+    const host::Program& m_program;
+    const host::planner::Trajectory& m_traj;
+    std::vector<double> m_peak_mm_per_s;  // [move] planned peak path speed
+    std::size_t m_next = 0;
+};
+
+// The planner's state at tau(t) (velocity scaled by d tau/dt). The trajectory is shared with the closure; the
+// clock is the servo's as it is at the call.
 metrics::CommandedTrajectory commanded_trajectory(std::shared_ptr<const host::planner::Trajectory> traj,
                                                   const host::servo::ServoCore& servo);
+// The same on the servo's clock as it runs (the servo must outlive it): known up to the clock's last knot, which
+// the caller copies into t_begin_ps/t_end_ps as the run goes (commanded_known).
+metrics::CommandedTrajectory commanded_trajectory_live(std::shared_ptr<const host::planner::Trajectory> traj,
+                                                       const host::servo::ServoCore& servo);
+void commanded_known(metrics::CommandedTrajectory& c, const host::servo::ServoCore& servo);
 
 // Per axis: one segment per stretch of one applied word (the host resends an unchanged word every period), from
 // the edge it governs from, with the mean of the host's requested |rate| over the stretch (0 for a stop word): the
-// metrics' runs, whose rate error is then the period rounding.
-std::vector<std::vector<metrics::RateSegment>> rate_segments(const fpga::SpiFpgaTop& fpga,
-                                                             const host::servo::ServoCore& servo);
+// metrics' runs, whose rate error is then the period rounding. Handed over once a stretch is closed (a different
+// word was applied; its mean is final then), every one once the run has `ended`.
+class RateSegments {
+public:
+    [[nodiscard]] std::vector<std::vector<metrics::RateSegment>> take(const fpga::SpiFpgaTop& fpga,
+                                                                      const host::servo::ServoCore& servo, bool ended);
+
+private:
+    std::array<std::size_t, host::servo::kAxes> m_next{};  // [axis] the first applied word not handed over
+};
 
 }  // namespace cnc::sim

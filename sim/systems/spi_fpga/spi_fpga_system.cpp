@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
+#include <utility>
 
 #include "common/bad_input.hpp"
 #include "fpga/spi/spi_fpga_top.hpp"
@@ -11,6 +13,7 @@
 #include "host/servo/servo_thread.hpp"
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
+#include "run/metrics_feed.hpp"
 #include "run/simulate.hpp"
 #include "spi/spi_master.hpp"
 #include "systems/machine.hpp"
@@ -136,22 +139,61 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     }
 
     const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s.spi_fpga.planner)));
-    const SimulationEnd end = simulate(budget);
+    const host::servo::ServoCore& core = host.core();
+    PlannedMoves planned(*job.program, *trajectory);
+    RateSegments segments;
+    ArchRun run;
+    metrics::RunInput& in = run.input;
+    // The metrics stream (their inputs dropped as they are measured) unless the whole logs are asked for, or the
+    // dynamic mechanics' report reads every tool sample at the end. The rate segments stay whole for --detail,
+    // whose report lists them (commanded_rates).
+    std::optional<MetricsFeed> feed;
+    const auto hand_over = [&](bool ended) {
+        for (metrics::MoveSpec& m : planned.take(core, ended)) feed->add_piece(std::move(m));
+        const std::vector<std::vector<metrics::RateSegment>> closed = segments.take(fpga, core, ended);
+        metrics::RunInput& pending = feed->pending();
+        pending.rate_segments.resize(closed.size());
+        in.rate_segments.resize(closed.size());  // the report's commanded_rates: null without --detail
+        for (std::size_t a = 0; a < closed.size(); ++a) {
+            pending.rate_segments[a].insert(pending.rate_segments[a].end(), closed[a].begin(), closed[a].end());
+            if (s.detail) in.rate_segments[a].insert(in.rate_segments[a].end(), closed[a].begin(), closed[a].end());
+        }
+        commanded_known(*pending.commanded, core);
+    };
+    if (!s.keep_run_input && machine.dynamic_x() == nullptr) {
+        const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm()},
+                                         {"y", "step_y", "dir_y", s.machine.y.steps_per_mm()}};
+        feed.emplace(
+            rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
+            s.detail);
+        feed->reserve_moves(job.program->moves.size());
+        feed->pending().commanded = commanded_trajectory_live(trajectory, core);
+    }
+    const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
+        if (!feed) return;
+        hand_over(false);
+        feed->fold(now_ps);
+    });
     if (vcd) vcd->close();
 
-    ArchRun run;
     record_budget(budget, run);
-    const host::servo::ServoCore& core = host.core();
-    metrics::RunInput& in = run.input;
-    in.axes.push_back({"x", rec.take("step_x"), rec.take("dir_x"), s.machine.x.steps_per_mm(), true});
-    in.axes.push_back({"y", rec.take("step_y"), rec.take("dir_y"), s.machine.y.steps_per_mm(), true});
-    in.moves = planned_moves(*job.program, *trajectory, core);
-    in.tool = machine.carriage().samples();
-    in.laser = rec.take("laser");
     in.t_job_start_ps = 0;
     in.t_job_end_ps = host.t_done_ps().value_or(static_cast<TimePs>(sc_core::sc_time_stamp().value()));
-    in.commanded = commanded_trajectory(trajectory, core);
-    in.rate_segments = rate_segments(fpga, core);
+    if (feed) {
+        hand_over(true);
+        run.metrics = feed->finish(in.t_job_end_ps);
+        // The axes' names label the report's commanded_rates; their edges are measured and gone.
+        in.axes.push_back({"x", {}, {}, s.machine.x.steps_per_mm(), true});
+        in.axes.push_back({"y", {}, {}, s.machine.y.steps_per_mm(), true});
+    } else {
+        in.axes.push_back({"x", rec.take("step_x"), rec.take("dir_x"), s.machine.x.steps_per_mm(), true});
+        in.axes.push_back({"y", rec.take("step_y"), rec.take("dir_y"), s.machine.y.steps_per_mm(), true});
+        in.moves = planned.take(core, true);
+        in.tool = machine.carriage().samples();
+        in.laser = rec.take("laser");
+        in.commanded = commanded_trajectory(trajectory, core);
+        in.rate_segments = segments.take(fpga, core, true);
+    }
     if (link.trace_wires) {
         for (const char* pin : {"sclk", "mosi", "miso", "ss"}) run.lines[pin] = rec.take(pin);
     }

@@ -91,8 +91,9 @@ bool AxisIntegrator::converged() const {
 void AxisIntegrator::start_at(const AxisState& x, double t_s) {
     m_front_x = x;
     m_front_t_s = t_s;
-    m_front_modes = m_ode.modes(x);
-    m_ode.derivative(x, m_front_dxdt, m_front_modes, rotor_angle(m_ode.params().motor, x[kTheta]));
+    m_front_angle = rotor_angle(m_ode.params().motor, x[kTheta]);
+    m_front_modes = m_ode.modes(x, m_front_angle);
+    m_ode.derivative(x, m_front_dxdt, m_front_modes, m_front_angle);
     m_front_valid = true;
 }
 
@@ -131,7 +132,7 @@ void AxisIntegrator::step() {
         const double dt = m_dt_s;
         const double t0 = m_front_t_s;
         const double t1 = t0 + dt;
-        const CurrentFrame frame(m_ode, m_front_modes, m_front_x, t0);
+        const CurrentFrame frame(m_ode, m_front_modes, m_front_x, m_front_angle, t0);
         AxisState y0 = m_front_x;
         AxisState dy0 = m_front_dxdt;
         frame.enter(y0, dy0);
@@ -157,6 +158,7 @@ void AxisIntegrator::step() {
         if (*std::min_element(margins1.begin(), margins1.end()) >= 0.0) {
             m_front_x = x1;
             m_front_dxdt = dx1;
+            m_front_angle = frame.angle(x1[kTheta]);
             m_front_t_s = t1;
             return;
         }

@@ -74,6 +74,7 @@ private:
     AxisState m_front_x = AxisState::Zero();
     AxisState m_front_dxdt = AxisState::Zero();  // when m_front_valid
     AxisModes m_front_modes;                      // when m_front_valid
+    RotorAngle m_front_angle;                     // of m_front_x, when m_front_valid
     double m_front_t_s = 0.0;
     bool m_front_valid = false;
     // The last accepted step, in its current frame, valid from t0 up to the front.

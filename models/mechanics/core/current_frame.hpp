@@ -19,15 +19,15 @@ namespace cnc::mech {
 
 class CurrentFrame {
 public:
-    CurrentFrame(const AxisOde& ode, const AxisModes& modes, const AxisState& x0, double t0_s)
-        : m_ode(ode), m_modes(modes), m_angle(ode.params().motor, x0[kTheta]), m_t0_s(t0_s),
+    // `angle0`: the rotor angle of x0 (hybrid_stepper.hpp).
+    CurrentFrame(const AxisOde& ode, const AxisModes& modes, const AxisState& x0, RotorAngle angle0, double t0_s)
+        : m_ode(ode), m_modes(modes), m_angle(ode.params().motor, x0[kTheta], angle0), m_t0_s(t0_s),
           m_rate_per_s(ode.regulation_rate_per_s()) {
         const WindingSetpoints& sp = ode.setpoints().current;
         m_offset_a = {regulated(0) ? sp.a_a : 0.0, regulated(1) ? sp.b_a : 0.0};
         const HybridStepperParams& motor = ode.params().motor;
         const double k = motor.torque_constant_nm_per_a() / motor.rotor_inertia_kgm2;
-        const RotorAngle a0 = m_angle.at(x0[kTheta]);
-        m_alpha_per_a = {regulated(0) ? -k * a0.sin_psi : 0.0, regulated(1) ? k * a0.cos_psi : 0.0};
+        m_alpha_per_a = {regulated(0) ? -k * angle0.sin_psi : 0.0, regulated(1) ? k * angle0.cos_psi : 0.0};
     }
 
     // The physical state and its derivative at t0 into the frame.
@@ -51,6 +51,8 @@ public:
             if (regulated(k)) dy[k] = -m_rate_per_s * (y[k] - m_offset_a[k]);
         }
     }
+    // The rotor angle of a shaft angle within the step.
+    [[nodiscard]] RotorAngle angle(double theta_rad) const { return m_angle.at(theta_rad); }
     // The margins of the modes at a physical state within the step (axis_ode.hpp).
     [[nodiscard]] AxisOde::ModeMargins mode_margins(const AxisState& x) const {
         return m_ode.mode_margins(x, m_modes, m_angle.at(x[kTheta]));

@@ -14,13 +14,14 @@ class StepSizeControl {
 public:
     // The step to try next after a step of dt with error ratio err (error / tolerance; accepted if <= 1).
     double next_step_s(double dt, double err) {
-        const double fac_err = std::pow(err, kExponent);
+        const double log_err = std::log(std::max(err, 1e-300));  // an exact step grows at the most
         if (err > 1.0) {
             m_rejected = true;
-            return dt / std::min(kMaxShrink, fac_err / kSafety);
+            return dt / std::min(kMaxShrink, std::exp(kExponent * log_err) / kSafety);
         }
-        const double fac = std::clamp(fac_err / std::pow(m_err_old, kBeta) / kSafety, kMaxGrowthInv, kMaxShrink);
-        m_err_old = std::max(err, kErrOldFloor);
+        const double fac = std::clamp(std::exp(kExponent * log_err - kBeta * m_log_err_old) / kSafety, kMaxGrowthInv,
+                                      kMaxShrink);
+        m_log_err_old = std::max(log_err, kLogErrOldFloor);
         const double next = dt / fac;
         const bool was_rejected = m_rejected;
         m_rejected = false;
@@ -33,8 +34,8 @@ private:
     static constexpr double kSafety = 0.9;
     static constexpr double kMaxShrink = 5.0;      // a step shrinks to at most 1/5 ...
     static constexpr double kMaxGrowthInv = 0.1;   // ... and grows to at most 10 x (DOPRI5's fac1, fac2)
-    static constexpr double kErrOldFloor = 1e-4;
-    double m_err_old = kErrOldFloor;
+    static constexpr double kLogErrOldFloor = -9.210340371976184;  // ln 1e-4: DOPRI5 keeps at least 1e-4
+    double m_log_err_old = kLogErrOldFloor;
     bool m_rejected = false;
 };
 

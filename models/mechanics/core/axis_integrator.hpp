@@ -1,12 +1,13 @@
 // Event-driven integration of one axis (axis_ode.hpp) with Boost.Odeint.
 //
-// Stepper: Dormand-Prince 5(4) (Boost.Odeint's runge_kutta_dopri5) under odeint's step-size rule, with
-// absolute and relative error tolerances per step (IntegratorTolerances). The equations are piecewise smooth
+// Stepper: Dormand-Prince 5(4) (Boost.Odeint's runge_kutta_dopri5) under odeint's error measure with
+// absolute and relative error tolerances per step (IntegratorTolerances) and DOPRI5's PI step-size control
+// (step_size_control.hpp). The equations are piecewise smooth
 // (a DRV8825 bridge regulates or sits at +-VMOT; a body is inside or outside its friction's stick band): each
 // step holds the modes of its start (AxisModes), and a step at whose end they no longer hold is cut where they
 // changed, found on the step's interpolant (Dormand-Prince's dense output), so that no step straddles a kink
 // the error control would reject again and again. A winding whose bridge regulates is integrated through an
-// integrating factor (Lawson's method, axis_integrator.cpp): its current's 20 us decay towards the set-point is
+// integrating factor (Lawson's method, current_frame.hpp): its current's 20 us decay towards the set-point is
 // exact, not stepped through. The set-points are constant between events, so the caller advances the state
 // to each event time (a microstep change, an EN change, a sample) and then changes them. The integrator does
 // not shorten a step to land on the time it is asked for: it takes the steps its error control chooses until

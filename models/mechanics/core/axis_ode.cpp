@@ -60,8 +60,8 @@ void AxisOde::derivative(const AxisState& x, AxisState& dxdt, const AxisModes& m
     dxdt[kV] = (f.on_carriage_n + rail_friction_n(m_p.load, x[kV], f.on_carriage_n, modes.rail)) / m_p.load.carriage_mass_kg;
 }
 
-AxisModes AxisOde::modes(const AxisState& x) const {
-    const WantedVoltages v = wanted_voltages(m_p, m_sp, x, rotor_angle(m_p.motor, x[kTheta]));
+AxisModes AxisOde::modes(const AxisState& x, RotorAngle angle) const {
+    const WantedVoltages v = wanted_voltages(m_p, m_sp, x, angle);
     return {{bridge_mode(v.wanted_v[0], m_p.driver), bridge_mode(v.wanted_v[1], m_p.driver)},
             friction_mode(x[kOmega], kShaftStickBandRad_s),
             friction_mode(x[kV], kRailStickBandM_s)};

@@ -50,8 +50,8 @@ public:
     void set_setpoints(const AxisSetpoints& sp) { m_sp = sp; }
     [[nodiscard]] const AxisSetpoints& setpoints() const { return m_sp; }
     [[nodiscard]] const AxisParams& params() const { return m_p; }
-    // The modes at state x.
-    [[nodiscard]] AxisModes modes(const AxisState& x) const;
+    // The modes at state x (`angle`: its rotor angle).
+    [[nodiscard]] AxisModes modes(const AxisState& x, RotorAngle angle) const;
     // How far inside `modes` the state x is, per part (bridges a, b, shaft, rail), as a fraction of VMOT or of
     // the stick band: < 0 once the part has left its mode.
     using ModeMargins = std::array<double, 4>;

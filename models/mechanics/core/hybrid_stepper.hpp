@@ -69,8 +69,10 @@ inline RotorAngle rotor_angle(const HybridStepperParams& p, double theta_rad) {
 // (truncation below 0.1^9 / 9! = 3e-15 relative at the bound) and cheaper than the libm's sincos.
 class RotorAngleNear {
 public:
-    RotorAngleNear(const HybridStepperParams& p, double theta0_rad)
-        : m_rotor_teeth(p.rotor_teeth), m_theta0_rad(theta0_rad), m_at0(rotor_angle(p, theta0_rad)) {}
+    // `at0`: rotor_angle(p, theta0_rad), or that of a nearby RotorAngleNear (an integration step starts where
+    // the last one ended, whose interpolation is within a rounding of the libm's value).
+    RotorAngleNear(const HybridStepperParams& p, double theta0_rad, RotorAngle at0)
+        : m_rotor_teeth(p.rotor_teeth), m_theta0_rad(theta0_rad), m_at0(at0) {}
     [[nodiscard]] RotorAngle at(double theta_rad) const {
         const double d = m_rotor_teeth * (theta_rad - m_theta0_rad);
         double s;

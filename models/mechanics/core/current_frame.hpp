@@ -1,0 +1,102 @@
+// Integrating factor (Lawson's method) for the windings whose bridge regulates during an integration step
+// (axis_integrator.hpp): such a winding is integrated as z = (i - i_ref) exp(rate (t - t0)), which stays
+// constant while the bridge regulates (drv8825_current.hpp), so the current's decay at 1/tau + R/L (about
+// 50,000 /s), stiff for an explicit method, costs no steps. A winding whose bridge sits at +-VMOT (its
+// current ramps at L/R) is integrated as it is.
+// The decaying current error also jerks the rotor: it adds K_m g(psi) z exp(-rate (t - t0)) / J to the
+// shaft's acceleration (g = -sin psi for winding a, cos psi for b). The frame carries that term's integral
+// with psi held at the step's start, omega~ = omega - K_m g(psi0) z (1 - exp(-rate (t - t0))) / (J rate),
+// an exact change of variables, so that only the part from the angle's change within the step (a few
+// per cent of it) is left to the error control: otherwise every end of a current ramp, where the winding
+// settles onto its set-point within 20 us, would force steps of that size.
+#pragma once
+#include <array>
+#include <cmath>
+
+#include "mechanics/core/axis_ode.hpp"
+
+namespace cnc::mech {
+
+class CurrentFrame {
+public:
+    // `angle0`: the rotor angle of x0 (hybrid_stepper.hpp).
+    CurrentFrame(const AxisOde& ode, const AxisModes& modes, const AxisState& x0, RotorAngle angle0, double t0_s)
+        : m_ode(ode), m_modes(modes), m_angle(ode.params().motor, x0[kTheta], angle0), m_t0_s(t0_s),
+          m_rate_per_s(ode.regulation_rate_per_s()) {
+        const WindingSetpoints& sp = ode.setpoints().current;
+        m_offset_a = {regulated(0) ? sp.a_a : 0.0, regulated(1) ? sp.b_a : 0.0};
+        const HybridStepperParams& motor = ode.params().motor;
+        const double k = motor.torque_constant_nm_per_a() / motor.rotor_inertia_kgm2;
+        m_alpha_per_a = {regulated(0) ? -k * angle0.sin_psi : 0.0, regulated(1) ? k * angle0.cos_psi : 0.0};
+    }
+
+    // The physical state and its derivative at t0 into the frame.
+    void enter(AxisState& x, AxisState& dxdt) const {
+        for (int k = 0; k < 2; ++k) {
+            if (!regulated(k)) continue;
+            const double w = x[k] - m_offset_a[k];
+            x[k] = w;
+            dxdt[k] += m_rate_per_s * w;
+        }
+        dxdt[kOmega] -= settling_alpha(x);
+    }
+    // The frame's state at t back to the physical one.
+    void leave(double t_s, AxisState& y) const { leave_with(y, decay(t_s)); }
+    // The same for a state and its derivative.
+    void leave(double t_s, AxisState& y, AxisState& dy) const {
+        const double d = decay(t_s);
+        dy[kOmega] += settling_alpha(y) * d;
+        leave_with(y, d);
+        for (int k = 0; k < 2; ++k) {
+            if (regulated(k)) dy[k] = -m_rate_per_s * (y[k] - m_offset_a[k]);
+        }
+    }
+    // The rotor angle of a shaft angle within the step.
+    [[nodiscard]] RotorAngle angle(double theta_rad) const { return m_angle.at(theta_rad); }
+    // The margins of the modes at a physical state within the step (axis_ode.hpp).
+    [[nodiscard]] AxisOde::ModeMargins mode_margins(const AxisState& x) const {
+        return m_ode.mode_margins(x, m_modes, m_angle.at(x[kTheta]));
+    }
+    // The equations of motion in the frame.
+    void operator()(const AxisState& y, AxisState& dy, double t_s) const {
+        if (!regulated(0) && !regulated(1)) {
+            m_ode.derivative(y, dy, m_modes, m_angle.at(y[kTheta]));
+            return;
+        }
+        const double d = decay(t_s);
+        AxisState x = y;
+        leave_with(x, d);
+        m_ode.derivative(x, dy, m_modes, m_angle.at(x[kTheta]));
+        for (int k = 0; k < 2; ++k) {
+            if (regulated(k)) dy[k] = 0.0;  // the decay is the frame's: d/dt (i - i_ref) = -rate (i - i_ref)
+        }
+        dy[kOmega] -= settling_alpha(y) * d;
+    }
+
+private:
+    [[nodiscard]] bool regulated(int k) const { return m_modes.bridges[k] == BridgeMode::Regulating; }
+    [[nodiscard]] double decay(double t_s) const {
+        return regulated(0) || regulated(1) ? std::exp(-m_rate_per_s * (t_s - m_t0_s)) : 1.0;
+    }
+    // The shaft acceleration of the frame's current errors at the step's start angle, rad/s2 (times the decay).
+    [[nodiscard]] double settling_alpha(const AxisState& y) const {
+        return m_alpha_per_a[0] * y[kIa] + m_alpha_per_a[1] * y[kIb];
+    }
+    void leave_with(AxisState& y, double d) const {
+        if (!regulated(0) && !regulated(1)) return;
+        y[kOmega] += settling_alpha(y) * (1.0 - d) / m_rate_per_s;
+        for (int k = 0; k < 2; ++k) {
+            if (regulated(k)) y[k] = m_offset_a[k] + y[k] * d;
+        }
+    }
+
+    const AxisOde& m_ode;
+    AxisModes m_modes;
+    RotorAngleNear m_angle;  // the shaft moves little within a step
+    double m_t0_s;
+    double m_rate_per_s;
+    std::array<double, 2> m_offset_a{};
+    std::array<double, 2> m_alpha_per_a{};  // K_m g(psi0) / J per winding, 0 for a winding that ramps
+};
+
+}  // namespace cnc::mech

@@ -25,10 +25,12 @@ void ServoThread::run() {
         const auto now = static_cast<TimePs>(sc_core::sc_time_stamp().value());
         if (wake > now) sc_core::wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(wake - now)));
         ++m_activations;
-        m_wakeups.push_back({static_cast<TimePs>(sc_core::sc_time_stamp().value()), latency});
+        const Wakeup wakeup{static_cast<TimePs>(sc_core::sc_time_stamp().value()), latency};
+        if (m_keep_wakeups) m_wakeups.push_back(wakeup);
         const PeriodRecord& rec = m_core.step(feedback);
+        m_summary.add(rec, wakeup);
         if (rec.mode == PeriodMode::Done) {
-            m_t_done_ps = m_wakeups.back().t_ps;
+            m_t_done_ps = wakeup.t_ps;
             return;
         }
         spi::Command command{{}, rec.laser_on};

@@ -12,14 +12,10 @@
 #include "host/core/planner/trajectory.hpp"
 #include "host/servo/core/latency.hpp"
 #include "host/servo/core/servo_core.hpp"
+#include "host/servo/core/servo_summary.hpp"
 #include "spi/spi_master.hpp"
 
 namespace cnc::host::servo {
-
-struct Wakeup {
-    TimePs t_ps = 0;        // actual wake-up
-    TimePs latency_ps = 0;  // after the nominal n * period
-};
 
 class ServoThread : public sc_core::sc_module {
 public:
@@ -29,7 +25,10 @@ public:
                 std::vector<bool> laser_intended, spi::SpiMaster& master);
 
     [[nodiscard]] const ServoCore& core() const { return m_core; }
-    [[nodiscard]] const std::vector<Wakeup>& wakeups() const { return m_wakeups; }  // one per log record
+    // Every wake-up, one per log record, when kept (`--detail` lists them; the summary needs none).
+    void keep_wakeups(bool keep) { m_keep_wakeups = keep; }
+    [[nodiscard]] const std::vector<Wakeup>& wakeups() const { return m_wakeups; }
+    [[nodiscard]] const ServoSummary& summary() const { return m_summary; }
     [[nodiscard]] bool finished() const { return m_t_done_ps.has_value(); }
     [[nodiscard]] std::optional<TimePs> t_done_ps() const { return m_t_done_ps; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations; }
@@ -41,7 +40,9 @@ private:
     ServoCore m_core;
     LatencyGenerator m_latency;
     spi::SpiMaster& m_master;
+    bool m_keep_wakeups = true;
     std::vector<Wakeup> m_wakeups;
+    ServoSummary m_summary;
     std::optional<TimePs> m_t_done_ps;
     std::uint64_t m_activations = 0;
 };

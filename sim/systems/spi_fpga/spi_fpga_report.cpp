@@ -18,38 +18,12 @@ using host::servo::PeriodRecord;
 using nlohmann::json;
 
 constexpr const char* kAxisNames[] = {"x", "y"};
-// Periods of the rate-log excerpt in the text summary (the JSON has every period).
-constexpr std::size_t kTextLogRows = 12;
-
 // Log values to the resolution they carry: times to the ns, rates to 1e-3 steps/s, speeds to 1e-6 mm/s.
 double seconds_ns(TimePs t) { return rounded(ps_to_s(t), 1e9); }
 
 // The period word signed by the direction bit (0 = stopped), as the rate log and the text show it.
 std::int64_t signed_period(const spi::AxisRate& w) {
     return w.forward ? static_cast<std::int64_t>(w.period_cycles) : -static_cast<std::int64_t>(w.period_cycles);
-}
-
-struct LatencyStats {
-    double min_us = 0.0;
-    double mean_us = 0.0;
-    double max_us = 0.0;
-};
-
-LatencyStats latency_stats(const std::vector<host::servo::Wakeup>& wakeups) {
-    LatencyStats s;
-    if (wakeups.empty()) return s;
-    TimePs lo = wakeups.front().latency_ps;
-    TimePs hi = lo;
-    long double sum = 0.0L;
-    for (const host::servo::Wakeup& w : wakeups) {
-        lo = std::min(lo, w.latency_ps);
-        hi = std::max(hi, w.latency_ps);
-        sum += static_cast<long double>(w.latency_ps);
-    }
-    s.min_us = ps_to_us(lo);
-    s.max_us = ps_to_us(hi);
-    s.mean_us = static_cast<double>(sum / static_cast<long double>(wakeups.size())) / static_cast<double>(kPsPerUs);
-    return s;
 }
 
 // Holds at rest points: from the first landing period to the period that found every axis landed.
@@ -117,18 +91,14 @@ json velocity_log(const std::vector<PeriodRecord>& log, const std::vector<host::
 }
 
 // The first periods with a running word: the start of the staircase.
-std::string staircase_text(const std::vector<PeriodRecord>& log, const std::vector<host::servo::Wakeup>& wakeups) {
-    std::size_t first = 0;
-    while (first < log.size() && log[first].axes[0].word.period_cycles == 0 &&
-           log[first].axes[1].word.period_cycles == 0) {
-        ++first;
-    }
+std::string staircase_text(const host::servo::ServoSummary& summary) {
     std::ostringstream os;
     os << "  rate log from the first running word (t; x, y: steps/s -> period word in clocks, signed by DIR):\n";
-    for (std::size_t i = first; i < log.size() && i < first + kTextLogRows; ++i) {
-        os << format("    %9.6f s", ps_to_s(wakeups[i].t_ps));
-        for (const AxisPeriod& a : log[i].axes) {
-            os << format("  %+10.1f -> %+11.0f", a.requested_steps_per_s, static_cast<double>(signed_period(a.word)));
+    for (const host::servo::StaircaseRow& row : summary.staircase()) {
+        os << format("    %9.6f s", ps_to_s(row.t_ps));
+        for (std::size_t a = 0; a < host::servo::kAxes; ++a) {
+            os << format("  %+10.1f -> %+11.0f", row.requested_steps_per_s[a],
+                         static_cast<double>(signed_period(row.word[a])));
         }
         os << '\n';
     }
@@ -141,21 +111,16 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
                               const fpga::SpiFpgaTop& fpga, TimePs t_job_end_ps, bool detail) {
     const host::servo::ServoCore& core = host.core();
     const host::servo::ServoConfig& cfg = core.config();
-    const std::vector<PeriodRecord>& log = core.log();
     const host::servo::ServoStats& st = core.stats();
     const spi::SpiConfig& link = master.config();
     const fpga::SpiFpgaConfig& fcfg = fpga.config();
     const std::size_t bits = spi::frame_bits(host::servo::kAxes);
     const TimePs transfer = spi::transfer_time_ps(link, bits);
     const TimePs slot = spi::transfer_slot_ps(link, bits);
-    const LatencyStats lat = latency_stats(host.wakeups());
-
-    std::size_t track = 0;
-    std::size_t land = 0;
-    for (const PeriodRecord& r : log) {
-        track += r.mode == PeriodMode::Track ? 1 : 0;
-        land += r.mode == PeriodMode::Land ? 1 : 0;
-    }
+    const host::servo::ServoSummary& sum = host.summary();
+    const double latency_min_us = ps_to_us(sum.latency_min_ps());
+    const double latency_mean_us = sum.latency_mean_ps() / static_cast<double>(kPsPerUs);
+    const double latency_max_us = ps_to_us(sum.latency_max_ps());
     const std::uint64_t rejected = fpga.slave.frame_count() - fpga.slave.accepted_count();
     const std::uint64_t drops = fpga.fifo.core().dropped();
     const std::uint64_t stretched = fpga.pulse_gen_x.stretched() + fpga.pulse_gen_y.stretched();
@@ -167,15 +132,15 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
     out.details = {
         {"servo",
          {{"period_us", ps_to_us(cfg.period_ps)},
-          {"periods", log.size()},
-          {"tracking_periods", track},
-          {"landing_periods", land},
+          {"periods", sum.periods()},
+          {"tracking_periods", sum.tracking_periods()},
+          {"landing_periods", sum.landing_periods()},
           {"latency",
            {{"distribution", to_string(cfg.latency.distribution)},
             {"bound_us", ps_to_us(cfg.latency.max_ps)},
-            {"min_us", lat.min_us},
-            {"mean_us", lat.mean_us},
-            {"max_us", lat.max_us}}},
+            {"min_us", latency_min_us},
+            {"mean_us", latency_mean_us},
+            {"max_us", latency_max_us}}},
           {"position_gain", cfg.position_gain},
           {"deadband_steps", cfg.deadband_steps},
           {"stepgen_margin", cfg.stepgen_margin},
@@ -210,6 +175,7 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
           {"words_applied", {fpga.applied(0).size(), fpga.applied(1).size()}},
           {"final_counts", {fpga.count(0), fpga.count(1)}}}}};
     if (detail) {  // one entry per servo period, or per rest point
+        const std::vector<PeriodRecord>& log = core.log();
         out.details["servo"]["holds"] = holds_json(log, host.wakeups());
         out.details["rate_log"] = rate_log(log, host.wakeups());
         out.details["velocity_log"] = velocity_log(log, host.wakeups());
@@ -218,10 +184,11 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
     std::ostringstream text;
     text << "spi-fpga host, link and FPGA\n"
          << format("  servo: %.0f us period, %.0f periods (%.0f tracking, %.0f landing)\n", ps_to_us(cfg.period_ps),
-                   static_cast<double>(log.size()), static_cast<double>(track), static_cast<double>(land))
+                   static_cast<double>(sum.periods()), static_cast<double>(sum.tracking_periods()),
+                   static_cast<double>(sum.landing_periods()))
          << "  wake-up latency " << to_string(cfg.latency.distribution)
-         << format(" <= %.1f us: min %.3f, mean %.3f, max %.3f us\n", ps_to_us(cfg.latency.max_ps), lat.min_us,
-                   lat.mean_us, lat.max_us)
+         << format(" <= %.1f us: min %.3f, mean %.3f, max %.3f us\n", ps_to_us(cfg.latency.max_ps), latency_min_us,
+                   latency_mean_us, latency_max_us)
          << format("  landing: %.0f of %.0f rest points, %.0f landing pulses", static_cast<double>(st.rest_points_landed),
                    static_cast<double>(st.rest_points), static_cast<double>(st.landing_pulses));
     if (host.t_done_ps()) text << format(", job done at %.6f s", ps_to_s(*host.t_done_ps()));
@@ -235,7 +202,7 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
                    static_cast<double>(fpga.fifo.core().max_level()), static_cast<double>(drops))
          << format(", %.0f rejected, %.0f stretched words\n", static_cast<double>(rejected),
                    static_cast<double>(stretched))
-         << staircase_text(log, host.wakeups());
+         << staircase_text(sum);
     out.text = text.str();
 
     if (drops > 0) {

@@ -116,6 +116,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     master.target(fpga.spi_target);
     host::servo::ServoThread host("host", servo_config(s), *trajectory, host::servo::laser_intent(*job.program),
                                   master);
+    host.keep_wakeups(s.detail);  // the report's summary is folded period by period; --detail lists every one
     Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics);
     machine.step_x(w.step_x);
     machine.dir_x(w.dir_x);

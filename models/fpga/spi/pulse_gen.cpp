@@ -33,6 +33,12 @@ void PulseGen::on_push() {
     schedule();
 }
 
+std::vector<AppliedRate> PulseGen::take_applied() {
+    std::vector<AppliedRate> out;
+    out.swap(m_applied);
+    return out;
+}
+
 void PulseGen::on_wake() {
     ++m_activations;
     const std::int64_t edge = now_ps() / m_period_ps;
@@ -42,6 +48,7 @@ void PulseGen::on_wake() {
             const bool stretched = m_core.load(edge, entry->rate);
             m_stretched += stretched ? 1 : 0;
             m_applied.push_back({edge, edge * m_period_ps, entry->seq, entry->rate, stretched});
+            ++m_applied_count;
             // One read per edge: a further entry is considered from the next edge.
             if (fifo->readable(m_axis, edge + 1)) m_read_due = edge + 1;
         }

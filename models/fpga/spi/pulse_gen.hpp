@@ -23,7 +23,10 @@ public:
     // `axis`: which rate word of each frame this generator takes.
     PulseGen(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg, std::size_t axis);
 
+    // The words applied and not taken yet; take_applied hands them over (a long job's would fill memory).
     [[nodiscard]] const std::vector<AppliedRate>& applied() const { return m_applied; }
+    [[nodiscard]] std::vector<AppliedRate> take_applied();
+    [[nodiscard]] std::uint64_t applied_count() const { return m_applied_count; }  // every word applied
     [[nodiscard]] std::uint64_t stretched() const { return m_stretched; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations; }
 
@@ -38,6 +41,7 @@ private:
     std::optional<std::int64_t> m_read_due;  // edge at which a readable entry should be considered
     sc_core::sc_event m_wake;
     std::vector<AppliedRate> m_applied;
+    std::uint64_t m_applied_count = 0;
     std::uint64_t m_stretched = 0;
     std::uint64_t m_activations = 0;
 };

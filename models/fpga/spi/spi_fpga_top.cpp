@@ -61,6 +61,14 @@ const std::vector<AppliedRate>& SpiFpgaTop::applied(std::size_t axis) const {
     return (axis == 0 ? pulse_gen_x : pulse_gen_y).applied();
 }
 
+std::vector<AppliedRate> SpiFpgaTop::take_applied(std::size_t axis) {
+    return (axis == 0 ? pulse_gen_x : pulse_gen_y).take_applied();
+}
+
+std::uint64_t SpiFpgaTop::applied_count(std::size_t axis) const {
+    return (axis == 0 ? pulse_gen_x : pulse_gen_y).applied_count();
+}
+
 std::int32_t SpiFpgaTop::count(std::size_t axis) const {
     return (axis == 0 ? step_counter_x : step_counter_y).count();
 }

@@ -41,7 +41,9 @@ public:
     void keep_frame_logs(bool on);
     [[nodiscard]] const std::vector<SlaveFrameRecord>& frames() const { return slave.frames(); }
     [[nodiscard]] const std::vector<FifoPushRecord>& fifo_pushes() const { return fifo.core().pushes(); }
-    [[nodiscard]] const std::vector<AppliedRate>& applied(std::size_t axis) const;
+    [[nodiscard]] const std::vector<AppliedRate>& applied(std::size_t axis) const;  // not taken yet
+    [[nodiscard]] std::vector<AppliedRate> take_applied(std::size_t axis);
+    [[nodiscard]] std::uint64_t applied_count(std::size_t axis) const;  // taken or not
     [[nodiscard]] const std::vector<AppliedFrame>& applied_frames() const { return fifo.applied(); }
     [[nodiscard]] std::int32_t count(std::size_t axis) const;  // step counter now (all updates so far)
     [[nodiscard]] std::uint64_t activations() const;  // every process wake (per edge, never per clock)

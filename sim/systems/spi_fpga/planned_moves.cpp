@@ -98,28 +98,40 @@ void commanded_known(metrics::CommandedTrajectory& c, const host::servo::ServoCo
     c.t_end_ps = servo.clock().t_end_ps();
 }
 
-std::vector<std::vector<metrics::RateSegment>> RateSegments::take(const fpga::SpiFpgaTop& fpga,
+std::vector<std::vector<metrics::RateSegment>> RateSegments::take(fpga::SpiFpgaTop& fpga,
                                                                   const host::servo::ServoCore& servo, bool ended) {
-    const std::vector<host::servo::PeriodRecord>& log = servo.log();
     std::vector<std::vector<metrics::RateSegment>> out(host::servo::kAxes);
     for (std::size_t a = 0; a < host::servo::kAxes; ++a) {
-        const std::vector<fpga::AppliedRate>& applied = fpga.applied(a);
-        std::size_t& k = m_next[a];
-        while (k < applied.size()) {
+        std::optional<Stretch>& open = m_open[a];
+        const auto close = [&] {
+            const double mean = open->rate.period_cycles == 0
+                                    ? 0.0
+                                    : open->requested_sum_steps_per_s / static_cast<double>(open->words);
+            out[a].push_back({open->t_ps, mean});
+        };
+        for (const fpga::AppliedRate& w : fpga.take_applied(a)) {
             // A stretch of one word (the same period and direction reloaded period after period) is one STEP train.
-            std::size_t end = k + 1;
-            while (end < applied.size() && applied[end].rate == applied[k].rate) ++end;
-            if (end == applied.size() && !ended) break;  // the stretch may go on
-            double sum = 0.0;
-            for (std::size_t i = k; i < end; ++i) {
-                if (applied[i].seq < log.size()) sum += std::fabs(log[applied[i].seq].axes[a].requested_steps_per_s);
+            if (open && !(w.rate == open->rate)) {
+                close();
+                open.reset();
             }
-            const double mean = applied[k].rate.period_cycles == 0 ? 0.0 : sum / static_cast<double>(end - k);
-            out[a].push_back({applied[k].t_ps, mean});
-            k = end;
+            if (!open) open = Stretch{w.t_ps, w.rate, 0.0, 0};
+            if (w.seq < servo.periods()) {
+                open->requested_sum_steps_per_s += std::fabs(servo.record(w.seq).axes[a].requested_steps_per_s);
+            }
+            ++open->words;
+            m_next_seq[a] = w.seq + 1;
+        }
+        if (ended && open) {
+            close();
+            open.reset();
         }
     }
     return out;
+}
+
+std::uint64_t RateSegments::first_needed_period() const {
+    return *std::min_element(m_next_seq.begin(), m_next_seq.end());
 }
 
 }  // namespace cnc::sim

@@ -172,7 +172,7 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
           {"fifo_drops", drops},
           {"replies_with_drop_flag", st.replies_dropped_flag},
           {"stretched_words", stretched},
-          {"words_applied", {fpga.applied(0).size(), fpga.applied(1).size()}},
+          {"words_applied", {fpga.applied_count(0), fpga.applied_count(1)}},
           {"final_counts", {fpga.count(0), fpga.count(1)}}}}};
     if (detail) {  // one entry per servo period, or per rest point
         const std::vector<PeriodRecord>& log = core.log();

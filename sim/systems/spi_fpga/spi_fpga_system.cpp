@@ -160,6 +160,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
             if (s.detail) in.rate_segments[a].insert(in.rate_segments[a].end(), closed[a].begin(), closed[a].end());
         }
         commanded_known(*pending.commanded, core);
+        if (!s.detail) host.drop_log_before(segments.first_needed_period());  // --detail lists every period
     };
     if (!s.keep_run_input && machine.dynamic_x() == nullptr) {
         const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm()},

@@ -66,9 +66,16 @@ std::array<double, kAxes> ServoCore::position_steps(geom::Vec2 pos_mm) const {
     return out;
 }
 
+void ServoCore::drop_log_before(std::uint64_t n) {
+    // Erased at the front, the vector keeps its capacity: the records held stay bounded by the most ever held.
+    const std::uint64_t k = std::min<std::uint64_t>(n > m_log_first ? n - m_log_first : 0, m_log.size());
+    m_log.erase(m_log.begin(), m_log.begin() + static_cast<std::ptrdiff_t>(k));
+    m_log_first += k;
+}
+
 const PeriodRecord& ServoCore::step(const std::optional<spi::Feedback>& feedback) {
     PeriodRecord rec;
-    rec.n = static_cast<std::int64_t>(m_log.size());
+    rec.n = static_cast<std::int64_t>(periods());
     if (feedback) {
         for (std::size_t a = 0; a < kAxes; ++a) m_count[a] = spi::widen_count(m_count[a], feedback->counts[a]);
         m_fifo_level = feedback->status.fifo_level;

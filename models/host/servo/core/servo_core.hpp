@@ -92,7 +92,12 @@ public:
     const PeriodRecord& step(const std::optional<spi::Feedback>& feedback);
 
     [[nodiscard]] bool done() const { return m_done; }
+    // The period records from log_first() on (drop_log_before drops the older ones once read).
     [[nodiscard]] const std::vector<PeriodRecord>& log() const { return m_log; }
+    [[nodiscard]] std::uint64_t log_first() const { return m_log_first; }
+    [[nodiscard]] std::uint64_t periods() const { return m_log_first + m_log.size(); }  // dropped or not
+    [[nodiscard]] const PeriodRecord& record(std::uint64_t n) const { return m_log[n - m_log_first]; }
+    void drop_log_before(std::uint64_t n);
     [[nodiscard]] const TrajectoryClock& clock() const { return m_clock; }
     [[nodiscard]] const ServoStats& stats() const { return m_stats; }
     [[nodiscard]] const std::vector<double>& rest_points_s() const { return m_rest_s; }
@@ -131,6 +136,7 @@ private:
     std::array<spi::AxisRate, kAxes> m_word_prev{};   // frame n-1
     std::array<spi::AxisRate, kAxes> m_word_prev2{};  // frame n-2
     std::vector<PeriodRecord> m_log;
+    std::uint64_t m_log_first = 0;
     TrajectoryClock m_clock;
     ServoStats m_stats;
 };

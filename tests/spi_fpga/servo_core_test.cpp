@@ -228,3 +228,31 @@ TEST(ServoCore, LaserBitCoversTheCutsStretchOfPlanOnlyAndIsOffWhileLanding) {
     EXPECT_DOUBLE_EQ(log[on.back()].tau_s - log[on.front() - 1].tau_s, 1.01);
     EXPECT_EQ(log[on.back() + 1].mode, PeriodMode::Land);
 }
+
+TEST(ServoCore, DroppedRecordsLeaveTheOthersAndThePeriodNumbersAsTheyWere) {
+    // The same job twice, one log kept whole, the other dropped every 7 periods up to 3 behind: the records left
+    // are the whole log's last ones, and the period numbers go on counting the dropped ones.
+    const Program p = program("G1 X10 Y-2 F1200\nG1 X0 Y5\n");
+    const planner::Trajectory t = planner::plan(p, planner::PlannerConfig{});
+    ServoCore whole(config(), t, laser_intent(p));
+    IdealPlant whole_plant;
+    const std::size_t periods = run(whole, whole_plant);
+    ServoCore dropped(config(), t, laser_intent(p));
+    IdealPlant plant;
+    for (std::size_t n = 0; !dropped.done(); ++n) {
+        plant.run(dropped.step(plant.feedback()), 1e-3);
+        if (n % 7 == 6) dropped.drop_log_before(n - 2);
+    }
+    ASSERT_EQ(dropped.periods(), periods);
+    ASSERT_GT(dropped.log_first(), 0U);
+    EXPECT_EQ(dropped.log().size(), periods - dropped.log_first());
+    EXPECT_LE(dropped.log().size(), 9U);  // at most 3 behind + 6 since the last drop
+    for (std::uint64_t n = dropped.log_first(); n < periods; ++n) {
+        EXPECT_EQ(dropped.record(n).n, static_cast<std::int64_t>(n));
+        EXPECT_EQ(dropped.record(n).tau_s, whole.log()[n].tau_s);
+        EXPECT_EQ(dropped.record(n).axes[0].word, whole.log()[n].axes[0].word);
+    }
+    dropped.drop_log_before(periods + 5);  // past the end: drops what there is
+    EXPECT_EQ(dropped.periods(), periods);
+    EXPECT_TRUE(dropped.log().empty());
+}

@@ -44,27 +44,36 @@ void add_gap(DeadTimeBreakdown& d, const GapBreakdown& g, bool keep_gaps) {
 
 PieceSteps piece_steps(const metrics::MoveMetrics& piece) { return {piece.t_first_edge_ps, piece.t_last_edge_ps}; }
 
-DeadTimeBreakdown dead_time_breakdown(const std::vector<PieceSteps>& pieces, TimePs t_job_start_ps,
-                                      TimePs t_job_end_ps, const std::vector<fpga::PacketRecord>& records,
-                                      const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102,
-                                      bool keep_gaps) {
-    DeadTimeBreakdown d;
+void DeadTimeFold::fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const std::vector<host::SentPacket>& sent,
+                        const uart::Cp2102& cp2102) {
     const auto& first_bytes = cp2102.tx_log();  // [k] motion packet k's first byte
     const auto& rx = cp2102.rx_log();
-    const std::size_t moves = pieces.size();
-    for (std::size_t i = 0; i + 1 < moves && i + 1 < sent.size() && i + 1 < records.size(); ++i) {
-        const fpga::PacketRecord& done = records[i];
-        const fpga::PacketRecord& next = records[i + 1];
-        if (done.t_ack_start_ps < 0 || i + 1 >= first_bytes.size() || sent[i + 1].t_write_ps < 0) continue;
+    for (;; ++m_next_gap) {
+        const std::size_t i = m_next_gap;
+        // Inputs still to come: wait for them, or at the end leave this and every later gap out.
+        if (i + 1 >= m_first_piece + m_pieces.size() || i + 1 >= sent.size() || i + 1 >= fpga.packet_count()) break;
+        const fpga::PacketRecord done = fpga.packet(i);
+        if (!ended && done.accepted && now_ps <= done.t_busy_fall_ps) break;
+        const PieceSteps& piece_a = m_pieces[i - m_first_piece];
+        const PieceSteps& piece_b = m_pieces[i + 1 - m_first_piece];
+        if (done.t_ack_start_ps < 0 || sent[i + 1].t_write_ps < 0) continue;
+        if (i + 1 >= first_bytes.size()) {
+            if (ended) continue;
+            break;
+        }
         const TimePs next_start_bit_ps = first_bytes[i + 1].t_start_bit_ps;
         // The bytes are in time order: a binary search keeps a long job's gaps linear.
         const auto ack = std::partition_point(rx.begin(), rx.end(), [&](const uart::Cp2102::RxByte& b) {
             return b.t_start_bit_ps < done.t_ack_start_ps;
         });
-        if (ack == rx.end()) continue;
-        if (!pieces[i].t_last_ps || !pieces[i + 1].t_first_ps) continue;
-        const TimePs last_a = *pieces[i].t_last_ps;
-        const TimePs first_b = *pieces[i + 1].t_first_ps;
+        if (ack == rx.end()) {
+            if (ended) continue;
+            break;
+        }
+        if (!piece_a.t_last_ps || !piece_b.t_first_ps) continue;
+        const fpga::PacketRecord next = fpga.packet(i + 1);
+        const TimePs last_a = *piece_a.t_last_ps;
+        const TimePs first_b = *piece_b.t_first_ps;
         GapBreakdown g;
         g.after_move = static_cast<int>(i) + 1;
         g.step_tail_ps = done.t_busy_fall_ps - last_a;
@@ -76,17 +85,25 @@ DeadTimeBreakdown dead_time_breakdown(const std::vector<PieceSteps>& pieces, Tim
         g.packet_wire_ps = next.t_pkt_valid_ps - next_start_bit_ps;
         g.fpga_setup_ps = first_b - next.t_pkt_valid_ps;
         g.total_ps = first_b - last_a;
-        add_gap(d, g, keep_gaps);
+        add_gap(m_d, g, m_keep_gaps);
     }
+    // Gap m_next_gap reads its own piece and the next one: the ones before are done with.
+    while (m_first_piece < m_next_gap && !m_pieces.empty()) {
+        m_pieces.pop_front();
+        ++m_first_piece;
+    }
+}
+
+DeadTimeBreakdown DeadTimeFold::finish(TimePs t_job_start_ps, TimePs t_job_end_ps, const uart::Cp2102& cp2102) {
     const TimePs job = t_job_end_ps - t_job_start_ps;
     if (job > 0) {
         const TimePs busy_to = cp2102.stats().tx_line_busy_ps;
         TimePs busy_from = 0;
-        for (const auto& b : rx) busy_from += b.t_stop_end_ps - b.t_start_bit_ps;
-        d.utilisation_to_fpga_pct = 100.0 * static_cast<double>(busy_to) / static_cast<double>(job);
-        d.utilisation_from_fpga_pct = 100.0 * static_cast<double>(busy_from) / static_cast<double>(job);
+        for (const auto& b : cp2102.rx_log()) busy_from += b.t_stop_end_ps - b.t_start_bit_ps;
+        m_d.utilisation_to_fpga_pct = 100.0 * static_cast<double>(busy_to) / static_cast<double>(job);
+        m_d.utilisation_from_fpga_pct = 100.0 * static_cast<double>(busy_from) / static_cast<double>(job);
     }
-    return d;
+    return m_d;
 }
 
 nlohmann::json to_json(const DeadTimeBreakdown& d, bool detail) {

@@ -2,13 +2,14 @@
 // the next, split at every hand-over of the stop-and-wait loop (seed 000 §4.4). The parts add up exactly.
 #pragma once
 #include <cstddef>
+#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "fpga/core/fpga_records.hpp"
+#include "fpga/top.hpp"
 #include "host/sender.hpp"
 #include "metrics/metrics.hpp"
 #include "run/arch_run.hpp"
@@ -43,13 +44,34 @@ struct PieceSteps {
 };
 [[nodiscard]] PieceSteps piece_steps(const metrics::MoveMetrics& piece);
 
-// `pieces`: the run's executed pieces as measured (one per packet). `cp2102`: its TX log thinned to each motion
-// packet's first byte (Cp2102::thin_tx_log(host::kInitPacketBytes, host::kMotionPacketBytes)). `keep_gaps`: keep every gap's breakdown (the
-// detailed report and the dead-time plot list them), not only the sums and maxima.
-DeadTimeBreakdown dead_time_breakdown(const std::vector<PieceSteps>& pieces, TimePs t_job_start_ps,
-                                      TimePs t_job_end_ps, const std::vector<fpga::PacketRecord>& records,
-                                      const std::vector<host::SentPacket>& sent, const uart::Cp2102& cp2102,
-                                      bool keep_gaps);
+// The split folded gap by gap as the run goes, so that nothing per packet stays once its gap is measured. Gap i
+// (after piece i) is folded once each input it reads is final: pieces i and i+1 measured, packet i+1 sent and its
+// ACK read (the sender logs it then), step_gen past packet i's busy fall (its ACK is decided then) and, when that
+// ACK was sent, its byte received by the CP2102. Gaps are folded in order; at the end of the run what is missing
+// stays missing and the gap is left out.
+class DeadTimeFold {
+public:
+    // `keep_gaps`: keep every gap's breakdown (the detailed report and the dead-time plot list them), not only the
+    // sums and maxima.
+    explicit DeadTimeFold(bool keep_gaps) : m_keep_gaps(keep_gaps) {}
+    // The run's executed pieces in order, as measured (one per packet).
+    void add_piece(const PieceSteps& piece) { m_pieces.push_back(piece); }
+    // Folds the gaps final at `now_ps`; `ended`: the run is over, fold every gap there is. `cp2102`: its TX log
+    // thinned to each motion packet's first byte (Cp2102::thin_tx_log(host::kInitPacketBytes,
+    // host::kMotionPacketBytes)).
+    void fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const std::vector<host::SentPacket>& sent,
+              const uart::Cp2102& cp2102);
+    // The split of the whole job (every gap must have been folded: fold(..., true, ...)).
+    [[nodiscard]] DeadTimeBreakdown finish(TimePs t_job_start_ps, TimePs t_job_end_ps, const uart::Cp2102& cp2102);
+
+private:
+    const bool m_keep_gaps;
+    DeadTimeBreakdown m_d;
+    std::deque<PieceSteps> m_pieces;   // from piece m_first_piece on: the ones gaps still to be folded read
+    std::size_t m_first_piece = 0;
+    std::size_t m_next_gap = 0;        // the gap after piece m_next_gap is the next one to fold
+};
+
 // `detail`: with every gap's breakdown (per_gap: the gaps must have been kept); without, the mean and the max of
 // each part.
 nlohmann::json to_json(const DeadTimeBreakdown& d, bool detail);

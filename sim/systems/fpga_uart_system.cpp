@@ -162,16 +162,15 @@ std::string segment_place(const std::vector<int>& lines, std::size_t k) {
 }
 
 // FPGA-side warnings: the period product the RTL cannot hold, packets lost while busy, line faults.
-void fpga_warnings(const fpga::Top& top, const std::vector<fpga::PacketRecord>& records,
-                   const std::vector<int>& lines, const Scenario& s,
+void fpga_warnings(const fpga::Top& top, const std::vector<int>& lines, const Scenario& s,
                    std::vector<Warning>& warnings) {
     const std::string overflow =
         std::string("(NUMERATOR/feed) x dominant steps exceeds 32 bits; step_gen as printed in the appendix wraps it") +
         (s.fpga.period_arithmetic == fpga::PeriodArithmetic::Wrap32
              ? " (fpga.period_arithmetic = wrap32: this run used the wrapped period)"
              : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)");
-    for (std::size_t k = 0; k < records.size(); ++k) {
-        const fpga::PacketRecord& r = records[k];
+    for (std::size_t k = 0; k < top.packet_count(); ++k) {
+        const fpga::PacketRecord r = top.packet(k);
         if (r.period_overflow) warnings.push_back({"period_overflow", segment_place(lines, k), overflow});
         if (!r.accepted) {
             warnings.push_back({"packet_lost", segment_place(lines, k), "arrived while step_gen was busy: lost"});
@@ -321,23 +320,25 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     const RunBudget budget = run_budget(s, estimate(s, job, n, pace(s, packet_count)));
     CommandedMoves moves(s.machine, s.interpreter.start_mm);
     // The metrics stream (their inputs dropped as they are measured) unless the whole logs are asked for.
-    // The dead-time split reads each piece's first and last STEP: kept as the stream measures the pieces.
+    // The dead-time split reads each piece's first and last STEP: handed to it as the stream measures the pieces,
+    // and it folds each gap once final. Every gap only for the detailed report and the plots (which keep the whole
+    // run anyway).
     std::optional<MetricsFeed> feed;
-    std::vector<PieceSteps> steps_of_pieces;
+    DeadTimeFold dead_fold(s.detail || s.keep_run_input);
     if (!s.keep_run_input) {
         const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm()},
                                          {"y", "step_y", "dir_y", s.machine.y.steps_per_mm()}};
         feed.emplace(
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
-            s.detail, [&steps_of_pieces](const metrics::MoveMetrics& p) { steps_of_pieces.push_back(piece_steps(p)); });
+            s.detail, [&dead_fold](const metrics::MoveMetrics& p) { dead_fold.add_piece(piece_steps(p)); });
         feed->reserve_moves(job.program ? job.program->move_count : packet_count);
-        steps_of_pieces.reserve(packet_count);
     }
     ExecutedPieces executed;
     const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
         if (!feed) return;
         executed.time_ended(fpga, now_ps, packets, moves, [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
         feed->fold(now_ps);
+        dead_fold.fold(now_ps, false, fpga, sender.packets(), cp2102);
     });
     if (vcd) vcd->close();
 
@@ -361,20 +362,17 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         in.tool = machine.carriage().samples();
         in.laser = rec.take("laser");
         run.metrics = metrics::compute_metrics(in);
-        for (const metrics::MoveMetrics& p : run.metrics->pieces) steps_of_pieces.push_back(piece_steps(p));
+        for (const metrics::MoveMetrics& p : run.metrics->pieces) dead_fold.add_piece(piece_steps(p));
     }
     if (s.keep_run_input) {
         for (const char* pin : {"busy", "uart_rx", "uart_tx"}) run.lines[pin] = rec.take(pin);
     }
 
-    const std::vector<fpga::PacketRecord> records = fpga.packets();
-    // Every gap only for the detailed report and the plots (which keep the whole run anyway).
-    const DeadTimeBreakdown dead =
-        dead_time_breakdown(steps_of_pieces, in.t_job_start_ps, in.t_job_end_ps, records, sender.packets(), cp2102,
-                            s.detail || s.keep_run_input);
+    dead_fold.fold(in.t_job_end_ps, true, fpga, sender.packets(), cp2102);
+    const DeadTimeBreakdown dead = dead_fold.finish(in.t_job_start_ps, in.t_job_end_ps, cp2102);
     if (s.keep_run_input) run.gap_causes = gap_causes(dead);
 
-    fpga_warnings(fpga, records, packets.lines(), s, run.warnings);
+    fpga_warnings(fpga, packets.lines(), s, run.warnings);
     const fpga::FpgaStats st = fpga.stats();
     const uart::Cp2102Baud& baud = cp2102.baud();
     nlohmann::json msgs = nlohmann::json::array();
@@ -408,7 +406,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         nlohmann::json& sent = run.details["sender"]["packets"] = nlohmann::json::array();
         for (const host::SentPacket& p : sender.packets()) sent.push_back(sent_json(p));
         nlohmann::json& received = run.details["fpga"]["packets"] = nlohmann::json::array();
-        for (const fpga::PacketRecord& r : records) received.push_back(packet_json(r));
+        for (std::size_t k = 0; k < fpga.packet_count(); ++k) received.push_back(packet_json(fpga.packet(k)));
     }
 
     std::ostringstream text;

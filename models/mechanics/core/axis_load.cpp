@@ -11,31 +11,9 @@ namespace cnc::mech {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kMinSpanM = 0.01;             // a span never gets shorter than the pulley-to-clamp distance
 
 void require(bool ok, const char* what, double v) {
     if (!ok) throw BadInput("", std::string(what) + " (got " + std::to_string(v) + ")");
-}
-
-double dead_zone(double d, double half_width) {
-    if (d > half_width) return d - half_width;
-    if (d < -half_width) return d + half_width;
-    return 0.0;
-}
-
-struct BeltStiffness {
-    double k_n_per_m;
-    double dk_dx_n_per_m2;  // 0 where a span is held at its shortest
-};
-
-// k = c/L1 + c/L2 with dL1/dx = 1, dL2/dx = -1: dk/dx = c/L2^2 - c/L1^2.
-BeltStiffness belt_stiffness(const AxisLoadParams& p, double x_m) {
-    const double total = p.belt_total_span_mm * 1e-3;
-    const double free_l1 = p.belt_home_span_mm * 1e-3 + x_m;
-    const double l1 = std::clamp(free_l1, kMinSpanM, total - kMinSpanM);
-    const double l2 = total - l1;
-    const double c = p.belt_specific_stiffness_n;
-    return {c / l1 + c / l2, l1 == free_l1 ? c / (l2 * l2) - c / (l1 * l1) : 0.0};
 }
 
 }  // namespace
@@ -64,27 +42,22 @@ void validate(const AxisLoadParams& p) {
 
 double travel_m_per_rad(const AxisLoadParams& p) { return p.travel_per_rev_mm * 1e-3 / (2.0 * kPi); }
 
-double belt_stiffness_n_per_m(const AxisLoadParams& p, double x_m) { return belt_stiffness(p, x_m).k_n_per_m; }
+Coupling::Coupling(const AxisLoadParams& p)
+    : m_kind(p.kind), m_travel_m_per_rad(travel_m_per_rad(p)), m_home_span_m(p.belt_home_span_mm * 1e-3),
+      m_total_span_m(p.belt_total_span_mm * 1e-3), m_specific_stiffness_n(p.belt_specific_stiffness_n),
+      m_damping_per_sqrt_k(2.0 * p.belt_damping_ratio * std::sqrt(p.carriage_mass_kg)),
+      m_half_backlash_m(0.5 * p.backlash_mm * 1e-3), m_screw_stiffness_n_per_m(p.screw_stiffness_n_per_m),
+      m_screw_damping_n_s_per_m(2.0 * p.screw_damping_ratio * std::sqrt(p.screw_stiffness_n_per_m * p.carriage_mass_kg)),
+      m_screw_torque_per_n(m_travel_m_per_rad / p.screw_efficiency) {}
 
-CouplingForces coupling_forces(const AxisLoadParams& p, double theta_rad, double omega_rad_s, double x_m,
-                               double v_m_s) {
-    const double r = travel_m_per_rad(p);
-    const double stretch = r * theta_rad - x_m;
-    const double stretch_rate = r * omega_rad_s - v_m_s;
-    if (p.kind == DriveKind::Belt) {
-        const BeltStiffness k = belt_stiffness(p, x_m);
-        const double c = 2.0 * p.belt_damping_ratio * std::sqrt(k.k_n_per_m * p.carriage_mass_kg);
-        const double spring = k.k_n_per_m * stretch + c * stretch_rate;
-        return {spring - 0.5 * k.dk_dx_n_per_m2 * stretch * stretch, -spring * r};
+double Coupling::energy_j(double theta_rad, double x_m) const {
+    const double stretch = m_travel_m_per_rad * theta_rad - x_m;
+    if (m_kind == DriveKind::Belt) return 0.5 * belt_stiffness_n_per_m(x_m) * stretch * stretch;
+    if (m_kind == DriveKind::Leadscrew) {
+        const double engaged = dead_zone(stretch);
+        return 0.5 * m_screw_stiffness_n_per_m * engaged * engaged;
     }
-    if (p.kind == DriveKind::Leadscrew) {
-        const double engaged = dead_zone(stretch, 0.5 * p.backlash_mm * 1e-3);
-        if (engaged == 0.0) return {};
-        const double c = 2.0 * p.screw_damping_ratio * std::sqrt(p.screw_stiffness_n_per_m * p.carriage_mass_kg);
-        const double force = p.screw_stiffness_n_per_m * engaged + c * stretch_rate;
-        return {force, -force * r / p.screw_efficiency};
-    }
-    return {};
+    return 0.0;
 }
 
 double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n, FrictionMode mode) {
@@ -94,16 +67,6 @@ double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n, Fr
 
 double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n) {
     return rail_friction_n(p, v_m_s, other_n, friction_mode(v_m_s, kRailStickBandM_s));
-}
-
-double coupling_energy_j(const AxisLoadParams& p, double theta_rad, double x_m) {
-    const double stretch = travel_m_per_rad(p) * theta_rad - x_m;
-    if (p.kind == DriveKind::Belt) return 0.5 * belt_stiffness_n_per_m(p, x_m) * stretch * stretch;
-    if (p.kind == DriveKind::Leadscrew) {
-        const double engaged = dead_zone(stretch, 0.5 * p.backlash_mm * 1e-3);
-        return 0.5 * p.screw_stiffness_n_per_m * engaged * engaged;
-    }
-    return 0.0;
 }
 
 }  // namespace cnc::mech

@@ -11,6 +11,9 @@
 // motor must supply (we assume the motor always drives the load, i.e. the screw never back-drives it).
 // Rails: Coulomb friction that sticks at rest (friction.hpp) and viscous friction.
 #pragma once
+#include <algorithm>
+#include <cmath>
+
 #include "mechanics/core/friction.hpp"
 
 namespace cnc::mech {
@@ -39,24 +42,78 @@ void validate(const AxisLoadParams& p);
 
 // Metres of carriage travel per shaft radian.
 [[nodiscard]] double travel_m_per_rad(const AxisLoadParams& p);
-// Belt stiffness at carriage position x (m from 0).
-[[nodiscard]] double belt_stiffness_n_per_m(const AxisLoadParams& p, double x_m);
 
 struct CouplingForces {
     double on_carriage_n = 0.0;  // force on the carriage, +x
     double on_rotor_nm = 0.0;    // torque the coupling puts on the shaft
 };
 
-// Forces between shaft (angle theta, speed omega) and carriage (x, v).
-[[nodiscard]] CouplingForces coupling_forces(const AxisLoadParams& p, double theta_rad, double omega_rad_s,
-                                             double x_m, double v_m_s);
+// The belt or screw between shaft and carriage, with what follows from its parameters computed once: the
+// equations of motion evaluate its forces at every stage of every integration step.
+class Coupling {
+public:
+    explicit Coupling(const AxisLoadParams& p);
+
+    // Forces between shaft (angle theta, speed omega) and carriage (x, v).
+    [[nodiscard]] CouplingForces forces(double theta_rad, double omega_rad_s, double x_m, double v_m_s) const {
+        const double stretch = m_travel_m_per_rad * theta_rad - x_m;
+        const double stretch_rate = m_travel_m_per_rad * omega_rad_s - v_m_s;
+        if (m_kind == DriveKind::Belt) {
+            const BeltStiffness k = belt_stiffness(x_m);
+            const double spring = k.k_n_per_m * stretch + m_damping_per_sqrt_k * std::sqrt(k.k_n_per_m) * stretch_rate;
+            return {spring - 0.5 * k.dk_dx_n_per_m2 * stretch * stretch, -spring * m_travel_m_per_rad};
+        }
+        if (m_kind == DriveKind::Leadscrew) {
+            const double engaged = dead_zone(stretch);
+            if (engaged == 0.0) return {};
+            const double force = m_screw_stiffness_n_per_m * engaged + m_screw_damping_n_s_per_m * stretch_rate;
+            return {force, -force * m_screw_torque_per_n};
+        }
+        return {};
+    }
+    // Belt stiffness at carriage position x (m from 0).
+    [[nodiscard]] double belt_stiffness_n_per_m(double x_m) const { return belt_stiffness(x_m).k_n_per_m; }
+    // Energy stored in the coupling, J.
+    [[nodiscard]] double energy_j(double theta_rad, double x_m) const;
+
+private:
+    struct BeltStiffness {
+        double k_n_per_m;
+        double dk_dx_n_per_m2;  // 0 where a span is held at its shortest
+    };
+    // k = c/L1 + c/L2 with dL1/dx = 1, dL2/dx = -1: dk/dx = c/L2^2 - c/L1^2.
+    [[nodiscard]] BeltStiffness belt_stiffness(double x_m) const {
+        const double free_l1 = m_home_span_m + x_m;
+        const double l1 = std::clamp(free_l1, kMinSpanM, m_total_span_m - kMinSpanM);
+        const double inv_l1 = 1.0 / l1;
+        const double inv_l2 = 1.0 / (m_total_span_m - l1);
+        const double c = m_specific_stiffness_n;
+        return {c * (inv_l1 + inv_l2), l1 == free_l1 ? c * (inv_l2 * inv_l2 - inv_l1 * inv_l1) : 0.0};
+    }
+    // The screw's travel beyond the backlash either way (0 within it).
+    [[nodiscard]] double dead_zone(double d) const {
+        if (d > m_half_backlash_m) return d - m_half_backlash_m;
+        if (d < -m_half_backlash_m) return d + m_half_backlash_m;
+        return 0.0;
+    }
+
+    static constexpr double kMinSpanM = 0.01;  // a span never gets shorter than the pulley-to-clamp distance
+    DriveKind m_kind;
+    double m_travel_m_per_rad;
+    double m_home_span_m;
+    double m_total_span_m;
+    double m_specific_stiffness_n;
+    double m_damping_per_sqrt_k;  // the belt's damping 2 zeta sqrt(k m) over sqrt(k)
+    double m_half_backlash_m;
+    double m_screw_stiffness_n_per_m;
+    double m_screw_damping_n_s_per_m;
+    double m_screw_torque_per_n;  // travel per radian over the screw's efficiency
+};
 // The carriage may stick below 0.1 mm/s (friction.hpp).
 inline constexpr double kRailStickBandM_s = 1e-4;
 // Rail friction force on the carriage at speed v (opposes it), N; `other_n`: the other forces on it; `mode`:
 // the carriage's side of the stick band, friction_mode(v, kRailStickBandM_s) unless the integrator holds it.
 [[nodiscard]] double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n, FrictionMode mode);
 [[nodiscard]] double rail_friction_n(const AxisLoadParams& p, double v_m_s, double other_n);
-// Energy stored in the coupling, J.
-[[nodiscard]] double coupling_energy_j(const AxisLoadParams& p, double theta_rad, double x_m);
 
 }  // namespace cnc::mech

@@ -57,14 +57,28 @@ public:
     using ModeMargins = std::array<double, 4>;
     [[nodiscard]] ModeMargins mode_margins(const AxisState& x, const AxisModes& modes, RotorAngle angle) const;
     // The rate at which a regulated winding's current error decays, 1/s.
-    [[nodiscard]] double regulation_rate_per_s() const;
+    [[nodiscard]] double regulation_rate_per_s() const { return m_rate_per_s; }
+    // The shaft acceleration per ampere of torque-producing current, K_m / J, rad/(s2 A).
+    [[nodiscard]] double alpha_per_a() const { return m_km_nm_per_a * m_inv_inertia_per_kgm2; }
     // Kinetic energy of rotor and carriage plus the energy in the coupling and the detent, J (the winding
     // inductances' energy is not included: the energy check runs with the windings off).
     [[nodiscard]] double mechanical_energy_j(const AxisState& x) const;
 
 private:
+    struct WantedVoltages;
+    // The voltage each winding's bridge wants at state x (drv8825_current.hpp), and the back-EMF it contains.
+    [[nodiscard]] WantedVoltages wanted_voltages(const AxisState& x, RotorAngle angle) const;
+
     AxisParams m_p;
     AxisSetpoints m_sp;
+    // What the equations need of the parameters, computed once: they run at every stage of every step.
+    Coupling m_coupling;
+    double m_km_nm_per_a;
+    double m_l_per_tau_ohm;  // L / tau of the chopper's averaging (drv8825_current.hpp)
+    double m_inv_inductance_per_h;
+    double m_inv_inertia_per_kgm2;
+    double m_inv_mass_per_kg;
+    double m_rate_per_s;
 };
 
 }  // namespace cnc::mech

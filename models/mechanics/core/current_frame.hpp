@@ -25,8 +25,7 @@ public:
           m_rate_per_s(ode.regulation_rate_per_s()) {
         const WindingSetpoints& sp = ode.setpoints().current;
         m_offset_a = {regulated(0) ? sp.a_a : 0.0, regulated(1) ? sp.b_a : 0.0};
-        const HybridStepperParams& motor = ode.params().motor;
-        const double k = motor.torque_constant_nm_per_a() / motor.rotor_inertia_kgm2;
+        const double k = ode.alpha_per_a();
         m_alpha_per_a = {regulated(0) ? -k * angle0.sin_psi : 0.0, regulated(1) ? k * angle0.cos_psi : 0.0};
     }
 

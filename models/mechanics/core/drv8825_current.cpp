@@ -20,18 +20,9 @@ WindingSetpoints winding_setpoints(std::int64_t units, const DriverElectrics& dr
     return {pct.a_pct / 100.0 * drv.current_limit_a, pct.b_pct / 100.0 * drv.current_limit_a};
 }
 
-double mode_margin_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv) {
-    switch (mode) {
-    case BridgeMode::High: return wanted_v - drv.supply_v;
-    case BridgeMode::Low: return -drv.supply_v - wanted_v;
-    case BridgeMode::Regulating: break;
-    }
-    return drv.supply_v - std::abs(wanted_v);
-}
-
 double bridge_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm, double inductance_h,
                         const DriverElectrics& drv) {
-    const double wanted = wanted_voltage_v(i_ref_a, i_a, emf_v, resistance_ohm, inductance_h, drv);
+    const double wanted = wanted_voltage_v(i_ref_a, i_a, emf_v, resistance_ohm, inductance_h / drv.chop_tau_s);
     return bridge_voltage_v(bridge_mode(wanted, drv), wanted, drv);
 }
 

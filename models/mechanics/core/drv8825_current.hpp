@@ -39,10 +39,10 @@ struct WindingSetpoints {
 // exp(-regulation_rate t) whatever the rotor does.
 enum class BridgeMode { Regulating, High, Low };
 
-// The voltage that would bring the current to its set-point within tau: R i_ref + e + L (i_ref - i) / tau.
-inline double wanted_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm, double inductance_h,
-                        const DriverElectrics& drv) {
-    return resistance_ohm * i_ref_a + emf_v + inductance_h * (i_ref_a - i_a) / drv.chop_tau_s;
+// The voltage that would bring the current to its set-point within tau: R i_ref + e + L (i_ref - i) / tau
+// (`l_per_tau`: L / tau, which the equations of motion compute once).
+inline double wanted_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm, double l_per_tau_ohm) {
+    return resistance_ohm * i_ref_a + emf_v + l_per_tau_ohm * (i_ref_a - i_a);
 }
 inline BridgeMode bridge_mode(double wanted_v, const DriverElectrics& drv) {
     if (wanted_v >= drv.supply_v) return BridgeMode::High;
@@ -59,7 +59,14 @@ inline double bridge_voltage_v(BridgeMode mode, double wanted_v, const DriverEle
     return wanted_v;
 }
 // How far inside `mode` the wanted voltage is, V: >= 0 while the bridge stays in it (> 0 for Regulating).
-[[nodiscard]] double mode_margin_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv);
+[[nodiscard]] inline double mode_margin_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv) {
+    switch (mode) {
+    case BridgeMode::High: return wanted_v - drv.supply_v;
+    case BridgeMode::Low: return -drv.supply_v - wanted_v;
+    case BridgeMode::Regulating: break;
+    }
+    return drv.supply_v - std::abs(wanted_v);
+}
 // The averaged bridge voltage for one winding: the wanted voltage clamped to +-VMOT.
 [[nodiscard]] double bridge_voltage_v(double i_ref_a, double i_a, double emf_v, double resistance_ohm,
                                       double inductance_h, const DriverElectrics& drv);

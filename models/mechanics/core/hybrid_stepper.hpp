@@ -94,13 +94,14 @@ private:
     double m_theta0_rad;
     RotorAngle m_at0;
 };
-// Electromagnetic torque of the two winding currents, N m.
-inline double electromagnetic_torque_nm(const HybridStepperParams& p, RotorAngle a, WindingCurrents i) {
-    return p.torque_constant_nm_per_a() * (-i.a_a * a.sin_psi + i.b_a * a.cos_psi);
+// Electromagnetic torque of the two winding currents, N m (`km`: torque_constant_nm_per_a(), which the
+// equations of motion compute once).
+inline double electromagnetic_torque_nm(double km_nm_per_a, RotorAngle a, WindingCurrents i) {
+    return km_nm_per_a * (-i.a_a * a.sin_psi + i.b_a * a.cos_psi);
 }
 // Back-EMF of the two windings at rotor speed omega, V.
-inline WindingCurrents back_emf_v(const HybridStepperParams& p, RotorAngle a, double omega_rad_s) {
-    const double k = p.torque_constant_nm_per_a() * omega_rad_s;
+inline WindingCurrents back_emf_v(double km_nm_per_a, RotorAngle a, double omega_rad_s) {
+    const double k = km_nm_per_a * omega_rad_s;
     return {-k * a.sin_psi, k * a.cos_psi};
 }
 // Detent torque, N m: -T_det sin(4 N_r theta) = T_det sin(4 psi) (4 N_r theta = 4 psi - pi).

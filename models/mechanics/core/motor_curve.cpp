@@ -37,12 +37,12 @@ double synchronous_torque_nm(const AxisParams& p, int microsteps, double full_st
         const WindingSetpoints sp = winding_setpoints(k * units_per_microstep, p.driver, true);
         const double theta = omega * t - load_angle_rad / m.rotor_teeth;
         const RotorAngle angle = rotor_angle(m, theta);
-        const WindingCurrents emf = back_emf_v(m, angle, omega);
+        const WindingCurrents emf = back_emf_v(m.torque_constant_nm_per_a(), angle, omega);
         const double va = bridge_voltage_v(sp.a_a, x[0], emf.a_a, m.resistance_ohm, m.inductance_h, p.driver);
         const double vb = bridge_voltage_v(sp.b_a, x[1], emf.b_a, m.resistance_ohm, m.inductance_h, p.driver);
         d[0] = (va - m.resistance_ohm * x[0] - emf.a_a) / m.inductance_h;
         d[1] = (vb - m.resistance_ohm * x[1] - emf.b_a) / m.inductance_h;
-        d[2] = electromagnetic_torque_nm(m, angle, {x[0], x[1]});
+        d[2] = electromagnetic_torque_nm(m.torque_constant_nm_per_a(), angle, {x[0], x[1]});
     };
     const WindingSetpoints start = winding_setpoints(0, p.driver, true);
     Currents x{start.a_a, start.b_a, 0.0};

@@ -1,5 +1,7 @@
 // Planning a job a move at a time (plan_stream.hpp) must give the whole program's plan exactly: the same pieces,
 // profiles, times and move windows, bit for bit, so that a streamed spi-fpga run reports what a whole one does.
+#include <algorithm>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,26 +50,37 @@ void expect_same(const std::vector<PlannedPiece>& got, const std::vector<Planned
     }
 }
 
-void chunked_equals_whole(const PlannerConfig& cfg) {
-    const Program program = gcode(mixed_job(), test::kRapidAboveTheAxes_mm_per_min);
-    const Trajectory whole = plan(program, cfg);
-
-    PlanStream stream(cfg, program.filename);
-    std::vector<PlannedPiece> pieces;
-    std::vector<std::pair<double, double>> windows;
-    std::size_t most_moves_ahead = 0;  // moves read past the last one whose window is known
+// The host waits before move i, then move i, for every move; the waits after the last move; then the end.
+void feed(PlanStream& stream, const Program& program, const std::function<void(std::size_t)>& after_move) {
     std::size_t w = 0;
     for (std::size_t i = 0; i < program.moves.size(); ++i) {
         for (; w < program.waits.size() && program.waits[w].before_move <= i; ++w) {
             stream.add_wait(program.waits[w].seconds);
         }
         stream.add_move(program.moves[i]);
-        for (PlannedPiece& p : stream.take_pieces()) pieces.push_back(std::move(p));
-        for (const auto& win : stream.take_windows()) windows.push_back(win);
-        most_moves_ahead = std::max(most_moves_ahead, i + 1 - windows.size());
+        after_move(i);
     }
     for (; w < program.waits.size(); ++w) stream.add_wait(program.waits[w].seconds);
     stream.finish();
+}
+
+void chunked_equals_whole(const PlannerConfig& cfg) {
+    const Program program = gcode(mixed_job(), test::kRapidAboveTheAxes_mm_per_min);
+    // The whole program read before anything is planned: one look-ahead pass over every piece.
+    PlanStream whole_stream(cfg, program.filename);
+    feed(whole_stream, program, [](std::size_t) {});
+    const Trajectory whole(whole_stream.take_pieces(), whole_stream.take_windows(), whole_stream.rest_mm(),
+                           whole_stream.end_hold_s());
+
+    PlanStream stream(cfg, program.filename);
+    std::vector<PlannedPiece> pieces;
+    std::vector<std::pair<double, double>> windows;
+    std::size_t most_moves_ahead = 0;  // moves read past the last one whose window is known
+    feed(stream, program, [&](std::size_t i) {
+        for (PlannedPiece& p : stream.take_pieces()) pieces.push_back(std::move(p));
+        for (const auto& win : stream.take_windows()) windows.push_back(win);
+        most_moves_ahead = std::max(most_moves_ahead, i + 1 - windows.size());
+    });
     for (PlannedPiece& p : stream.take_pieces()) pieces.push_back(std::move(p));
     for (const auto& win : stream.take_windows()) windows.push_back(win);
 
@@ -80,6 +93,8 @@ void chunked_equals_whole(const PlannerConfig& cfg) {
     // the one that closes it and the move whose blend may cut it) has been read.
     EXPECT_LE(most_moves_ahead, static_cast<std::size_t>(cfg.lookahead_moves) + 2);
     EXPECT_GT(program.moves.size(), static_cast<std::size_t>(cfg.lookahead_moves) + 2);
+    // plan() takes the pieces move by move too.
+    expect_same(plan(program, cfg).pieces(), whole.pieces());
 }
 
 TEST(PlanStream, ChunkByChunkEqualsTheWholeProgramTrapezoidal) {

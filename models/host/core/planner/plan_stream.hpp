@@ -1,8 +1,8 @@
 // The planner (planner.hpp) fed a programmed move at a time: each piece is handed over as soon as its speed
 // profile is final, that is once the moves its look-ahead window needs have been read (lookahead.hpp), so a long
 // job is planned in chunks as it is read and only the window is held. The pieces, their times and the moves'
-// windows equal the whole program's plan exactly (the same operations in the same order): plan() is the case
-// where everything is read before anything is taken.
+// windows equal the whole program's plan exactly (the same operations in the same order) whenever they are taken:
+// everything read before the first take is the whole program planned in one pass.
 #pragma once
 #include <cstddef>
 #include <deque>

@@ -38,6 +38,46 @@ TEST(TrajectoryClock, LinearBetweenKnotsHeldInHoldsDepartsAtTheHoldsEnd) {
     EXPECT_THROW(c.add(5 * kPsPerMs, 1e-3), std::logic_error);
 }
 
+// Dropping the knots behind a reader must leave what it still reads as the whole clock reads it (exact doubles,
+// exact times), both when the time bound and when the tau bound decides, and a hold at the cut.
+TEST(TrajectoryClock, DroppedKnotsLeaveTheReadingsFromTheCutOnAsTheyWere) {
+    TrajectoryClock whole;
+    TrajectoryClock cut;
+    for (TrajectoryClock* c : {&whole, &cut}) {
+        c->add(kPsPerMs, 0.0);  // the first knot at 1 ms: t_begin must stay there
+        c->add(2 * kPsPerMs, 1e-3);
+        c->add(3 * kPsPerMs, 1.5e-3);  // clamped at a rest point
+        c->add(4 * kPsPerMs, 1.5e-3);  // hold
+        c->add(5 * kPsPerMs, 1.5e-3);  // hold
+        c->add(6 * kPsPerMs, 2.5e-3);
+        c->add(7 * kPsPerMs, 3.5e-3);
+    }
+    // The tau bound decides: knots up to 4.5 ms are before t, but only those with tau <= 1.5e-3 may go (the last
+    // kept is the hold's last knot, at 5 ms).
+    cut.drop_before(6500 * kPsPerUs, 1.6e-3);
+    EXPECT_EQ(cut.size(), 3U);
+    EXPECT_EQ(cut.t_begin_ps(), kPsPerMs);
+    EXPECT_EQ(cut.depart_time(1.5e-3), whole.depart_time(1.5e-3));  // the hold's end: 5 ms
+    EXPECT_EQ(cut.depart_time(1.5e-3), 5 * kPsPerMs);
+    for (const double tau : {1.6e-3, 2.0e-3, 2.5e-3, 3.1e-3, 9.0e-3}) {
+        EXPECT_EQ(cut.depart_time(tau), whole.depart_time(tau)) << tau;
+    }
+    // The time bound decides: the last knot at or before 6.2 ms is the one at 6 ms.
+    cut.drop_before(6200 * kPsPerUs, 9.0);
+    EXPECT_EQ(cut.size(), 2U);
+    for (const TimePs t : {6200 * kPsPerUs, 6500 * kPsPerUs, 7 * kPsPerMs, 8 * kPsPerMs}) {
+        EXPECT_EQ(cut.at(t).tau_s, whole.at(t).tau_s) << t;
+        EXPECT_EQ(cut.at(t).rate, whole.at(t).rate) << t;
+    }
+    // The last knot always stays: the clock goes on from it.
+    cut.drop_before(9 * kPsPerMs, 9.0);
+    EXPECT_EQ(cut.size(), 1U);
+    EXPECT_EQ(cut.t_end_ps(), 7 * kPsPerMs);
+    cut.add(8 * kPsPerMs, 4.5e-3);
+    whole.add(8 * kPsPerMs, 4.5e-3);
+    EXPECT_EQ(cut.at(7500 * kPsPerUs).tau_s, whole.at(7500 * kPsPerUs).tau_s);
+}
+
 namespace {
 
 Program program(const std::string& text) {

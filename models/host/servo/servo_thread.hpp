@@ -30,6 +30,7 @@ public:
     [[nodiscard]] const std::vector<Wakeup>& wakeups() const { return m_wakeups; }
     [[nodiscard]] const ServoSummary& summary() const { return m_summary; }
     void drop_log_before(std::uint64_t n) { m_core.drop_log_before(n); }  // records read by everyone who needs them
+    void drop_clock_before(TimePs t_ps, double tau_s) { m_core.drop_clock_before(t_ps, tau_s); }
     [[nodiscard]] bool finished() const { return m_t_done_ps.has_value(); }
     [[nodiscard]] std::optional<TimePs> t_done_ps() const { return m_t_done_ps; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations; }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <limits>
 #include <utility>
 
 namespace cnc::sim {
@@ -11,6 +12,7 @@ namespace cnc::sim {
 namespace {
 
 constexpr double kSecondsPerMinute = 60.0;
+constexpr TimePs kEndOfTime = std::numeric_limits<TimePs>::max();
 
 // The programmed point on the step grid (what the host lands on).
 geom::Vec2 on_grid(const host::servo::ServoCore& servo, geom::Vec2 p, std::array<std::int64_t, 2>& steps) {
@@ -55,6 +57,7 @@ std::vector<metrics::MoveSpec> PlannedMoves::take(const host::servo::ServoCore& 
     for (; m_next < m_program.moves.size(); ++m_next) {
         const std::size_t i = m_next;
         const auto& window = m_traj.move_windows()[i];
+        if (!m_next_begin_ps && (ended || tau_now_s > window.first)) m_next_begin_ps = clock.depart_time(window.first);
         if (!ended && !(tau_now_s > window.second)) break;
         const host::ProgrammedMove& pm = m_program.moves[i];
         metrics::MoveSpec m;
@@ -76,11 +79,32 @@ std::vector<metrics::MoveSpec> PlannedMoves::take(const host::servo::ServoCore& 
             m.rate_steps_per_s = {mm_per_s * static_cast<double>(std::llabs(m.steps[0])) / length_mm,
                                   mm_per_s * static_cast<double>(std::llabs(m.steps[1])) / length_mm};
         }
-        m.t_begin_ps = clock.depart_time(window.first);
+        m.t_begin_ps = *m_next_begin_ps;
         m.t_end_ps = clock.depart_time(window.second);
+        m_next_begin_ps.reset();
         moves.push_back(m);
     }
     return moves;
+}
+
+PlannedMoves::ClockNeeded PlannedMoves::clock_needed() const {
+    if (m_next >= m_program.moves.size()) return {kEndOfTime, std::numeric_limits<double>::infinity()};
+    const auto& window = m_traj.move_windows()[m_next];
+    if (!m_next_begin_ps) return {kEndOfTime, window.first};
+    return {*m_next_begin_ps, window.second};
+}
+
+TimePs commanded_read_from(const metrics::RunInput& pending, TimePs now_ps) {
+    TimePs first_ps = now_ps;
+    if (!pending.moves.empty()) first_ps = std::min(first_ps, pending.moves.front().t_begin_ps);
+    if (!pending.tool.empty()) first_ps = std::min(first_ps, pending.tool.front().t_ps);
+    for (const metrics::AxisTrace& axis : pending.axes) {
+        for (const EdgeLog* log : {&axis.step, &axis.dir}) {
+            if (!log->edges.empty()) first_ps = std::min(first_ps, log->edges.front().t_ps);
+        }
+    }
+    const metrics::CommandedTrajectory& c = *pending.commanded;
+    return first_ps - c.sync_window_ps - c.scan_step_ps;
 }
 
 metrics::CommandedTrajectory commanded_trajectory(std::shared_ptr<const host::planner::Trajectory> traj,

@@ -25,12 +25,26 @@ public:
     // left once the run has `ended`).
     [[nodiscard]] std::vector<metrics::MoveSpec> take(const host::servo::ServoCore& servo, bool ended);
 
+    // What take() still reads of the trajectory clock: at(t) from t_ps on, depart_time(tau) from tau_s on.
+    struct ClockNeeded {
+        TimePs t_ps;
+        double tau_s;
+    };
+    [[nodiscard]] ClockNeeded clock_needed() const;
+
 private:
     const host::Program& m_program;
     const host::planner::Trajectory& m_traj;
     std::vector<double> m_peak_mm_per_s;  // [move] planned peak path speed
     std::size_t m_next = 0;
+    // The next move's start, read as soon as the clock has left it, so that the knots before it can go.
+    std::optional<TimePs> m_next_begin_ps;
 };
+
+// The earliest time the streaming metrics may still read the commanded trajectory at, once they have folded up to
+// now_ps: a sync window and a scan step (step_crossings' grid) before the first piece, tool sample or STEP/DIR edge
+// they still hold, or before now_ps (what comes later is later).
+TimePs commanded_read_from(const metrics::RunInput& pending, TimePs now_ps);
 
 // The planner's state at tau(t) (velocity scaled by d tau/dt). The trajectory is shared with the closure; the
 // clock is the servo's as it is at the call.

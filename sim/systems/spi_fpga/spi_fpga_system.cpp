@@ -175,6 +175,9 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
         if (!feed) return;
         hand_over(false);
         feed->fold(now_ps);
+        // The clock's knots that neither the metrics nor the moves still to be handed over read.
+        const PlannedMoves::ClockNeeded needed = planned.clock_needed();
+        host.drop_clock_before(std::min(commanded_read_from(feed->pending(), now_ps), needed.t_ps), needed.tau_s);
     });
     if (vcd) vcd->close();
 

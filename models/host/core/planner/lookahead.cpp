@@ -8,22 +8,32 @@
 namespace cnc::host::planner {
 
 std::vector<double> boundary_speeds(const std::vector<LookaheadPiece>& pieces, Profile shape, int lookahead_moves) {
-    const std::size_t n = pieces.size();
-    std::vector<double> speeds(n + 1, 0.0);
-    std::size_t window_end = 0;  // one past the window's last piece
-    for (std::size_t k = 0; k < n; ++k) {
-        const long long last_visible = static_cast<long long>(pieces[k].last_move_needed) + lookahead_moves - 1;
-        window_end = std::max(window_end, k + 1);
-        while (window_end < n && pieces[window_end].last_move_needed <= last_visible) ++window_end;
-        // Backward from rest at the window's end to the end of piece k.
-        double exit_cap = 0.0;
-        for (std::size_t j = window_end; --j > k;) {
-            exit_cap = std::min(pieces[j].entry_cap_mm_per_s,
-                                reachable_speed(shape, exit_cap, pieces[j].length_mm, pieces[j].limits));
-        }
-        speeds[k + 1] = std::min(exit_cap, reachable_speed(shape, speeds[k], pieces[k].length_mm, pieces[k].limits));
-    }
+    Lookahead look(shape, lookahead_moves);
+    for (const LookaheadPiece& p : pieces) look.add(p);
+    std::vector<double> speeds{0.0};
+    while (const std::optional<double> exit = look.next_exit(true)) speeds.push_back(*exit);
     return speeds;
+}
+
+std::optional<double> Lookahead::next_exit(bool ended) {
+    if (m_pieces.empty()) return std::nullopt;
+    const LookaheadPiece& piece = m_pieces.front();
+    const long long last_visible = static_cast<long long>(piece.last_move_needed) + m_lookahead_moves - 1;
+    m_window_end = std::max<std::size_t>(m_window_end, 1);
+    while (m_window_end < m_pieces.size() && m_pieces[m_window_end].last_move_needed <= last_visible) ++m_window_end;
+    // A later piece may still join the window.
+    if (m_window_end == m_pieces.size() && !ended) return std::nullopt;
+    // Backward from rest at the window's end to the end of the piece.
+    double exit_cap = 0.0;
+    for (std::size_t j = m_window_end; --j > 0;) {
+        exit_cap = std::min(m_pieces[j].entry_cap_mm_per_s,
+                            reachable_speed(m_shape, exit_cap, m_pieces[j].length_mm, m_pieces[j].limits));
+    }
+    const double exit = std::min(exit_cap, reachable_speed(m_shape, m_entry_mm_per_s, piece.length_mm, piece.limits));
+    m_pieces.pop_front();
+    --m_window_end;
+    m_entry_mm_per_s = exit;
+    return exit;
 }
 
 }  // namespace cnc::host::planner

@@ -99,6 +99,8 @@ public:
     [[nodiscard]] const PeriodRecord& record(std::uint64_t n) const { return m_log[n - m_log_first]; }
     void drop_log_before(std::uint64_t n);
     [[nodiscard]] const TrajectoryClock& clock() const { return m_clock; }
+    // The clock's knots no reader needs any more (TrajectoryClock::drop_before).
+    void drop_clock_before(TimePs t_ps, double tau_s) { m_clock.drop_before(t_ps, tau_s); }
     [[nodiscard]] const ServoStats& stats() const { return m_stats; }
     [[nodiscard]] const std::vector<double>& rest_points_s() const { return m_rest_s; }
     // Landing target of rest point i, per axis (counts).

@@ -11,8 +11,19 @@ void TrajectoryClock::add(TimePs t_ps, double tau_s) {
     if (!m_t.empty() && (t_ps < m_t.back() || tau_s < m_tau.back())) {
         throw std::logic_error("TrajectoryClock: knots must not go back in time");
     }
+    if (m_t.empty()) m_t_first_ps = t_ps;  // drop_before always keeps a knot
     m_t.push_back(t_ps);
     m_tau.push_back(tau_s);
+}
+
+void TrajectoryClock::drop_before(TimePs t_ps, double tau_s) {
+    const auto by_t = std::upper_bound(m_t.begin(), m_t.end(), t_ps) - m_t.begin();
+    const auto by_tau = std::upper_bound(m_tau.begin(), m_tau.end(), tau_s) - m_tau.begin();
+    const std::ptrdiff_t keep_from = std::min(by_t, by_tau) - 1;  // the last knot at or before both
+    if (keep_from <= 0) return;
+    // Erased at the front, the vectors keep their capacity: the knots held stay bounded by the most ever held.
+    m_t.erase(m_t.begin(), m_t.begin() + keep_from);
+    m_tau.erase(m_tau.begin(), m_tau.begin() + keep_from);
 }
 
 TrajectoryClock::Reading TrajectoryClock::at(TimePs t_ps) const {

@@ -26,11 +26,16 @@ public:
     [[nodiscard]] Reading at(TimePs t_ps) const;
     // The last time at which tau(t) <= tau: when the clock leaves tau (the end of a hold there).
     [[nodiscard]] TimePs depart_time(double tau_s) const;
-    [[nodiscard]] TimePs t_begin_ps() const { return m_t.empty() ? 0 : m_t.front(); }
+    // The first knot's time, also once it is dropped.
+    [[nodiscard]] TimePs t_begin_ps() const { return m_t_first_ps; }
     [[nodiscard]] TimePs t_end_ps() const { return m_t.empty() ? 0 : m_t.back(); }
-    [[nodiscard]] std::size_t size() const { return m_t.size(); }
+    [[nodiscard]] std::size_t size() const { return m_t.size(); }  // the knots kept
+    // Drops the knots before the last one at or before both t_ps and tau_s, so that at(t) for t >= t_ps and
+    // depart_time(tau) for tau >= tau_s read as before (a long job's clock then holds only what is still read).
+    void drop_before(TimePs t_ps, double tau_s);
 
 private:
+    TimePs m_t_first_ps = 0;
     std::vector<TimePs> m_t;
     std::vector<double> m_tau;
 };

@@ -226,11 +226,12 @@ private:
 };
 
 MoveRecords MoveRecords::spilled(std::size_t axes, const std::string& dir) {
-    std::string path = (dir.empty() ? temp_dir() : dir) + "/cncsim-moves-XXXXXX";
+    const std::string folder = dir.empty() ? temp_dir() : dir;
+    std::string path = folder + "/cncsim-moves-XXXXXX";
     const int fd = ::mkstemp(path.data());
     if (fd < 0) {
-        throw MoveRecordsError("cannot create a temporary file for the programmed moves' records (" + path +
-                               "): " + std::strerror(errno));
+        throw MoveRecordsError("cannot create a temporary file in " + folder + " for the programmed moves' records: " +
+                               std::strerror(errno));
     }
     ::unlink(path.c_str());
     return spilled_to(axes, fd, path);

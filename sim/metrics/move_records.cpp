@@ -257,10 +257,6 @@ void MoveRecords::append(const MoveMetrics& move) {
     }
 }
 
-void MoveRecords::reserve(std::size_t moves) {
-    if (!m_spill) m_memory.reserve(moves);
-}
-
 std::size_t MoveRecords::size() const { return m_spill ? m_spill->size() : m_memory.size(); }
 
 void MoveRecords::for_each(const std::function<void(const MoveMetrics&)>& visit) const {

@@ -39,7 +39,6 @@ public:
 
     // The next programmed move, in job order.
     void append(const MoveMetrics& move);
-    void reserve(std::size_t moves);  // in memory: sized once instead of grown by doubling
     [[nodiscard]] std::size_t size() const;
     [[nodiscard]] bool empty() const { return size() == 0; }
     // One pass over the moves in order (as many as the reader needs); the record handed over lives for the call.

@@ -68,7 +68,7 @@ int cmd_run(const std::string& scenario_path, const std::vector<std::string>& se
         samples_file->close();
     }
     if (report_file) {
-        report_file->stream() << cnc::metrics::report_text(out.report);
+        cnc::sim::write_report(report_file->stream(), out);
         report_file->close();
     }
     if (out.ok) cnc::sim::write_run_plots(out, s, plots, plot_data);  // a failed run's figures are no result
@@ -269,6 +269,9 @@ int dispatch(int argc, char* argv[]) {
         std::cerr << "cncsim: " << e.what() << '\n';
         return kExitBadInput;
     } catch (const cnc::sim::OutputError& e) {
+        std::cerr << "cncsim: run failed: " << e.what() << '\n';
+        return kExitRunFailed;
+    } catch (const cnc::metrics::MoveRecordsError& e) {
         std::cerr << "cncsim: run failed: " << e.what() << '\n';
         return kExitRunFailed;
     } catch (const std::exception& e) {

@@ -132,7 +132,8 @@ RunMetrics compute_metrics(const RunInput& in) {
     out.laser = compute_laser(in, idx);
     // Per-move records are most of a long job's metrics: sized once instead of grown by doubling.
     out.pieces.reserve(in.moves.size());
-    out.moves.reserve(programmed.size());
+    std::vector<MoveMetrics> moves;
+    moves.reserve(programmed.size());
     for (std::size_t m = 0; m < in.moves.size(); ++m) {
         MoveMetrics mm = piece_metrics(in, idx, m);
         mm.sync_max_abs_ns = sync.move_axis_max_abs_ns[m];
@@ -143,9 +144,10 @@ RunMetrics compute_metrics(const RunInput& in) {
     for (std::size_t m = 0; m < programmed.size(); ++m) {
         MoveMetrics mm = programmed_metrics(in, out.pieces, programmed[m]);
         mm.timing = std::move(out.timing.moves[m]);
-        out.moves.push_back(std::move(mm));
+        moves.push_back(std::move(mm));
     }
-    out.worst = worst_moves(out.moves);
+    out.worst = worst_moves(moves);
+    out.moves = MoveRecords(std::move(moves));
     out.timing.moves.clear();
     out.path.moves.clear();
     return out;

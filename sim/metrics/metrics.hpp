@@ -3,6 +3,8 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +13,8 @@
 
 #include "metrics/driver_timing.hpp"
 #include "metrics/laser.hpp"
+#include "metrics/move_metrics.hpp"
+#include "metrics/move_records.hpp"
 #include "metrics/move_timing.hpp"
 #include "metrics/path_accuracy.hpp"
 #include "metrics/pulse_runs.hpp"
@@ -36,23 +40,6 @@ struct AxisMetrics {
     DriverTimingReport driver;
 };
 
-// A programmed move (RunMetrics::moves) or one executed piece of it (RunMetrics::pieces): a programmed move sums
-// its pieces' steps and takes the worst of their figures; timing is defined on programmed moves only.
-struct MoveMetrics {
-    int index = 0;  // programmed move: 1-based in the job (a steps-file row: the row); piece: the piece's own
-    int line = 0;
-    std::size_t pieces = 1;
-    bool rapid = false;
-    double feed_mm_per_min = 0.0;
-    std::vector<std::int64_t> steps_commanded;  // [axis]
-    std::vector<std::int64_t> steps_emitted;    // [axis] rising edges signed by DIR
-    std::optional<TimePs> t_first_edge_ps, t_last_edge_ps;  // any axis
-    std::vector<std::optional<double>> sync_max_abs_ns;     // [axis]
-    std::vector<std::size_t> sync_unmatched_edges;           // [axis], with a commanded trajectory (sync_error.hpp)
-    MoveTiming timing;
-    MovePath path;
-};
-
 // Worst over all axes.
 struct PulseTotals {
     std::optional<double> jitter_std_max_ns, jitter_pp_max_ns;
@@ -68,7 +55,7 @@ struct RunMetrics {
     bool runs_per_rate_segment = false;  // RunInput::rate_segments given: runs are its segments, not moves
     double run_split_tolerance = 0.0;  // the analyze-mode setting the runs were split with
     std::vector<AxisMetrics> axes;
-    std::vector<MoveMetrics> moves;   // programmed moves (G-code lines)
+    MoveRecords moves;                // programmed moves (G-code lines)
     WorstMoves worst;                 // of the programmed moves
     std::vector<MoveMetrics> pieces;  // executed pieces (RunInput::moves): packets, chords, commands
     PulseTotals pulse;
@@ -85,10 +72,27 @@ void add_axis_totals(PulseTotals& t, const AxisMetrics& am);
 
 // Throws std::invalid_argument on inconsistent input (edge logs, moves or tool samples out of time order).
 [[nodiscard]] RunMetrics compute_metrics(const RunInput& in);
+// Where the JSON report's per-move columns of the programmed moves go: into the json, or left null there for
+// write_move_columns() to write from RunMetrics::moves straight to the file (a long job's largest part of the
+// report: as json values it would hold the records a second time).
+enum class MoveColumns { InJson, Streamed };
 // `detail` false: without the pulse runs and the dead-time gaps (cncsim run without --detail); analyze writes all.
-[[nodiscard]] nlohmann::json to_json(const RunMetrics& m, bool detail = true);
+[[nodiscard]] nlohmann::json to_json(const RunMetrics& m, bool detail = true, MoveColumns columns = MoveColumns::InJson);
+// The programmed moves' columns as report_text() writes to_json()'s "moves" at `depth`: one pass over the
+// records per column.
+void write_move_columns(std::ostream& out, const RunMetrics& m, bool detail, int depth);
 [[nodiscard]] std::string summary_table(const RunMetrics& m);
-// The JSON report as the file holds it: indented, with each array of plain values on one line.
+
+// A member of the report written from elsewhere: at `path` (object keys from the top) the json holds a
+// placeholder, and `write(out, depth)` writes the value instead.
+struct StreamedMember {
+    std::vector<std::string> path;
+    std::function<void(std::ostream& out, int depth)> write;
+};
+// The JSON report as the file holds it: indented by kReportIndent per level, with each array of plain values on one
+// line.
+inline constexpr int kReportIndent = 2;
+void write_report_text(std::ostream& out, const nlohmann::json& report, const StreamedMember* member = nullptr);
 [[nodiscard]] std::string report_text(const nlohmann::json& report);
 
 }  // namespace cnc::metrics

@@ -31,6 +31,7 @@ MetricsStream::MetricsStream(RunInput shape, bool detail, PieceMeasured on_piece
     }
     m_rising_done.assign(m_in.axes.size(), 0);
     m_pulse.resize(m_in.axes.size());
+    m_out.moves = MoveRecords::spilled(m_in.axes.size());
 }
 
 void MetricsStream::fold(TimePs now_ps) {
@@ -52,7 +53,7 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
     const RunMetrics r = compute_metrics(m_in);
     const std::size_t first_group = m_has_prev ? 1 : 0;
     std::vector<std::size_t> group_piece{0};  // [group] its first piece in m_in.moves
-    for (const MoveMetrics& mm : r.moves) group_piece.push_back(group_piece.back() + mm.pieces);
+    r.moves.for_each([&group_piece](const MoveMetrics& mm) { group_piece.push_back(group_piece.back() + mm.pieces); });
     std::size_t end_group = r.moves.size();
     if (!final) {
         std::size_t last_with_edge = first_group;
@@ -97,7 +98,7 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
         const MoveMetrics& mm = r.moves[g];
         m_timing.add(m_moves_done++, mm.timing, mm.t_first_edge_ps, mm.t_last_edge_ps);
         m_worst.add(mm);
-        m_out.moves.push_back(mm);
+        m_out.moves.append(mm);
     }
     for (std::size_t a = 0; a < m_axes.size(); ++a) {
         for (PulseRun run : r.axes[a].runs) {

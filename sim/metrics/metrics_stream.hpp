@@ -27,13 +27,11 @@ class MetricsStream {
 public:
     // `shape`: the run's axes (names, pins and their initial levels, steps per mm, polarity), its laser pin, driver
     // limits and job start, usually with no edges, samples or moves yet.
+    // The programmed moves' records go to a temporary file as they are measured (move_records.hpp).
     // `detail`: keep the per-piece records and the pulse runs, which only the detailed report lists (it grows with
     // them anyway); without, finish() gives their summaries only (RunMetrics::pieces and AxisMetrics::runs empty).
     MetricsStream(RunInput shape, bool detail, PieceMeasured on_piece = {});
 
-    // The number of programmed moves the run will have, when known: their records are then never copied while the
-    // list grows (a long job's largest block: at the copy it is held one and a half times).
-    void reserve_moves(std::size_t programmed_moves) { m_out.moves.reserve(programmed_moves); }
     // Where the run appends its edges, tool samples, laser edges and pieces in time order. A piece is appended when
     // it begins; its t_end_ps must be set before now_ps passes it. t_job_end_ps: the job's end once it is known,
     // until then a time not before now_ps.

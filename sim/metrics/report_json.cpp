@@ -2,6 +2,10 @@
 // grows with the moves only; the pulse runs (one per piece and axis, or per rate word: per servo period), the
 // dead-time gaps and the executed pieces of the programmed moves come with `detail`.
 #include <cstddef>
+#include <functional>
+#include <map>
+#include <ostream>
+#include <string>
 
 #include "common/text_format.hpp"
 #include "metrics/metrics.hpp"
@@ -169,12 +173,20 @@ const AxisColumn kAxisColumns[] = {
 // The moves as columns, one array per field in move order (per axis: one per axis name), so that a long job's
 // moves are a few lines of the report file (report_text.cpp) instead of one record of 20 keys per move.
 // `programmed`: the programmed moves; else the pieces (no timing columns).
-json moves_json(const RunMetrics& m, const std::vector<MoveMetrics>& moves, bool detail, bool programmed) {
+void for_each_move(const MoveRecords& moves, const std::function<void(const MoveMetrics&)>& visit) {
+    moves.for_each(visit);
+}
+void for_each_move(const std::vector<MoveMetrics>& moves, const std::function<void(const MoveMetrics&)>& visit) {
+    for (const MoveMetrics& mv : moves) visit(mv);
+}
+
+template <typename Moves>
+json moves_json(const RunMetrics& m, const Moves& moves, bool detail, bool programmed) {
     json cols = json::object();
     for (const MoveColumn& c : kMoveColumns) {
         if ((c.detail && !detail) || (c.programmed_only && !programmed)) continue;
         json values = json::array();
-        for (const MoveMetrics& mv : moves) values.push_back(c.value(mv));
+        for_each_move(moves, [&](const MoveMetrics& mv) { values.push_back(c.value(mv)); });
         cols[c.key] = std::move(values);
     }
     for (const AxisColumn& c : kAxisColumns) {
@@ -182,12 +194,44 @@ json moves_json(const RunMetrics& m, const std::vector<MoveMetrics>& moves, bool
         json per_axis = json::object();
         for (std::size_t a = 0; a < m.axes.size(); ++a) {
             json values = json::array();
-            for (const MoveMetrics& mv : moves) values.push_back(c.value(mv, a));
+            for_each_move(moves, [&](const MoveMetrics& mv) { values.push_back(c.value(mv, a)); });
             per_axis[m.axes[a].name] = std::move(values);
         }
         cols[c.key] = std::move(per_axis);
     }
     return cols;
+}
+
+// The writers of an object's members by key, in the order nlohmann keeps an object's keys (std::string's), each
+// handed its value's depth; written as report_text() writes an object.
+using MemberWriters = std::map<std::string, std::function<void(int depth)>>;
+
+void write_object(std::ostream& out, const MemberWriters& members, int depth) {
+    if (members.empty()) {
+        out << "{}";
+        return;
+    }
+    out << "{\n";
+    bool first = true;
+    for (const auto& [key, write] : members) {
+        if (!first) out << ",\n";
+        first = false;
+        out << std::string(static_cast<std::size_t>((depth + 1) * kReportIndent), ' ') << json(key).dump() << ": ";
+        write(depth + 1);
+    }
+    out << '\n' << std::string(static_cast<std::size_t>(depth * kReportIndent), ' ') << '}';
+}
+
+// A column on one line, as report_text() writes an array of plain values: one pass over the records.
+void write_column(std::ostream& out, const MoveRecords& moves, const std::function<json(const MoveMetrics&)>& value) {
+    out << '[';
+    bool first = true;
+    moves.for_each([&](const MoveMetrics& mv) {
+        if (!first) out << ',';
+        first = false;
+        out << value(mv).dump();
+    });
+    out << ']';
 }
 
 // Each figure's worst moves (worst_moves.hpp): index, G-code line and the figure, rounded as in the moves.
@@ -226,8 +270,8 @@ json job_json(const RunMetrics& m, bool detail) {
     if (detail) {
         json gaps = json::array();
         for (const DeadGap& g : t.gaps) {
-            gaps.push_back({{"after_move", m.moves[g.after_move].index},
-                            {"before_move", m.moves[g.before_move].index},
+            gaps.push_back({{"after_move", m.moves.at(g.after_move).index},
+                            {"before_move", m.moves.at(g.before_move).index},
                             {"dead_ms", ps_to_s(g.dead_ps) * 1e3}});
         }
         j["dead_times"] = std::move(gaps);
@@ -247,7 +291,28 @@ json laser_json(const std::optional<LaserResult>& l) {
 
 }  // namespace
 
-nlohmann::json to_json(const RunMetrics& m, bool detail) {
+void write_move_columns(std::ostream& out, const RunMetrics& m, bool detail, int depth) {
+    MemberWriters columns;
+    for (const MoveColumn& c : kMoveColumns) {
+        if (c.detail && !detail) continue;
+        columns[c.key] = [&out, &m, &c](int) { write_column(out, m.moves, c.value); };
+    }
+    for (const AxisColumn& c : kAxisColumns) {
+        if (c.detail && !detail) continue;
+        columns[c.key] = [&out, &m, &c](int axes_depth) {
+            MemberWriters per_axis;
+            for (std::size_t a = 0; a < m.axes.size(); ++a) {
+                per_axis[m.axes[a].name] = [&out, &m, &c, a](int) {
+                    write_column(out, m.moves, [&c, a](const MoveMetrics& mv) { return c.value(mv, a); });
+                };
+            }
+            write_object(out, per_axis, axes_depth);
+        };
+    }
+    write_object(out, columns, depth);
+}
+
+nlohmann::json to_json(const RunMetrics& m, bool detail, MoveColumns columns) {
     json axes = json::array();
     for (const AxisMetrics& a : m.axes) axes.push_back(axis_json(a, m.limits, detail));
     const PulseTotals& p = m.pulse;
@@ -267,7 +332,7 @@ nlohmann::json to_json(const RunMetrics& m, bool detail) {
             {"run_split_tolerance",
              m.with_moves || m.runs_per_rate_segment ? json(nullptr) : json(m.run_split_tolerance)},
             {"axes", axes},
-            {"moves", moves_json(m, m.moves, detail, true)},
+            {"moves", columns == MoveColumns::InJson ? moves_json(m, m.moves, detail, true) : json(nullptr)},
             {"worst_moves", worst_json(m)},
             {"path",
              {{"tool_samples", path.samples},

@@ -151,11 +151,11 @@ void write_pulses(const RunInput& in, const metrics::RunMetrics& m, const metric
 class CommandedSpeed {
 public:
     CommandedSpeed(const RunInput& in, const metrics::RunMetrics& m) : m_in(in) {
-        for (const metrics::MoveMetrics& mv : m.moves) {
-            if (!mv.t_first_edge_ps || !mv.timing.motion_time_s) continue;
+        m.moves.for_each([this](const metrics::MoveMetrics& mv) {
+            if (!mv.t_first_edge_ps || !mv.timing.motion_time_s) return;
             m_spans.push_back({*mv.t_first_edge_ps, *mv.t_first_edge_ps + s_to_ps(*mv.timing.motion_time_s),
                                mv.feed_mm_per_min / kSecondsPerMinute});
-        }
+        });
     }
     double at(TimePs t_ps) {  // called with rising t_ps
         if (m_in.commanded) return geom::norm(metrics::commanded_at(*m_in.commanded, t_ps).vel_mm_per_s);

@@ -29,7 +29,6 @@ public:
     MetricsFeed(EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin,
                 TakeSamplesBefore take_samples, bool detail, metrics::PieceMeasured on_piece = {});
 
-    void reserve_moves(std::size_t programmed_moves) { m_stream.reserve_moves(programmed_moves); }
     // A piece that began, in execution order, with its t_end_ps set once it has ended.
     void add_piece(metrics::MoveSpec piece) { m_stream.pending().moves.push_back(std::move(piece)); }
     // Where the run adds what else it knows so far: a commanded trajectory, rate segments (metrics_stream.hpp).

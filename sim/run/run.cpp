@@ -68,9 +68,10 @@ RunOutcome run_scenario(const Scenario& s) {
     const metrics::RunMetrics& m = out.metrics;
 
     out.ok = arch.ok;
+    out.detail = s.detail;
     out.failure = arch.failure;
     out.report = {{"scenario", scenario_json(s, arch)},
-                  {"metrics", metrics::to_json(m, s.detail)},
+                  {"metrics", metrics::to_json(m, s.detail, metrics::MoveColumns::Streamed)},
                   {s.architecture, arch.details},
                   {"warnings", warnings_json(arch.warnings, s.detail)},
                   {"gcode", job.program ? program_json(*job.program) : nlohmann::json(nullptr)},
@@ -98,6 +99,13 @@ RunOutcome run_scenario(const Scenario& s) {
     for (const WarningGroup& g : group_warnings(arch.warnings)) text << "warning: " << summary_line(g) << '\n';
     out.summary = text.str();
     return out;
+}
+
+void write_report(std::ostream& out, const RunOutcome& run) {
+    const metrics::StreamedMember moves{{"metrics", "moves"}, [&run](std::ostream& os, int depth) {
+                                            metrics::write_move_columns(os, run.metrics, run.detail, depth);
+                                        }};
+    metrics::write_report_text(out, run.report, &moves);
 }
 
 }  // namespace cnc::sim

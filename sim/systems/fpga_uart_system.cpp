@@ -331,7 +331,6 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         feed.emplace(
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
             s.detail, [&dead_fold](const metrics::MoveMetrics& p) { dead_fold.add_piece(piece_steps(p)); });
-        feed->reserve_moves(job.program ? job.program->move_count : packet_count);
     }
     ExecutedPieces executed;
     const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {

@@ -204,7 +204,8 @@ TEST_P(SpiFpgaLanding, CountsEqualTheCommandAtEveryRestPoint) {
         }
     }
     if (exact_stop) {
-        for (const auto& mm : out.metrics.moves) EXPECT_EQ(mm.steps_emitted, mm.steps_commanded) << mm.index;
+        out.metrics.moves.for_each(
+            [](const auto& mm) { EXPECT_EQ(mm.steps_emitted, mm.steps_commanded) << mm.index; });
     }
     EXPECT_EQ(*out.metrics.path.job_end_um, 0.0);
     const auto& servo = out.report["spi-fpga"]["servo"];

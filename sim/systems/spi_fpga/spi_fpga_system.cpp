@@ -168,7 +168,6 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
         feed.emplace(
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
             s.detail);
-        feed->reserve_moves(job.program->moves.size());
         feed->pending().commanded = commanded_trajectory_live(trajectory, core);
     }
     const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {

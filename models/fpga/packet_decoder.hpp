@@ -1,10 +1,11 @@
 // packet_decoder (seed 000 §5.3, Π.4): bytes from uart_rx -> registered motion/init fields with a one-clock
 // pkt_valid/cfg_valid, and the 100 ms inter-byte watchdog as one timed event instead of a counter.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <systemc>
-#include <vector>
 
+#include "common/record_log.hpp"
 #include "fpga/core/fpga_config.hpp"
 #include "fpga/core/packet_decoder_core.hpp"
 #include "fpga/timed_writer.hpp"
@@ -31,7 +32,9 @@ public:
         MotionFields fields;
     };
     // Every completed motion packet, in order (one per pkt_valid pulse).
-    [[nodiscard]] const std::vector<MotionOut>& motions() const { return m_motions; }
+    [[nodiscard]] const RecordLog<MotionOut>& motions() const { return m_motions; }
+    // The packets before index `end` have been read: they go.
+    void drop_motions_before(std::size_t end) { m_motions.drop_before(end); }
     [[nodiscard]] std::uint64_t watchdog_resets() const { return m_watchdog_resets; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations + m_writer.activations(); }
 
@@ -44,7 +47,7 @@ private:
     PacketDecoderCore m_core;
     sc_core::sc_event m_watchdog;
     TimedWriter m_writer;
-    std::vector<MotionOut> m_motions;
+    RecordLog<MotionOut> m_motions;
     std::uint64_t m_watchdog_resets = 0;
     std::uint64_t m_activations = 0;
 };

@@ -2,11 +2,12 @@
 // it builds the move's edge schedule (core/step_schedule.hpp) and wakes once per edge time; pkt_valid while not
 // IDLE is logged as lost; cfg_valid latches the numerators only in IDLE.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <systemc>
-#include <vector>
 
+#include "common/record_log.hpp"
 #include "fpga/core/fpga_config.hpp"
 #include "fpga/core/step_schedule.hpp"
 #include "fpga/timed_writer.hpp"
@@ -37,7 +38,9 @@ public:
         TimePs t_run_start_ps = -1;  // -1: ignored or zero-length
         TimePs t_busy_fall_ps = -1;
     };
-    [[nodiscard]] const std::vector<Move>& moves() const { return m_moves; }
+    [[nodiscard]] const RecordLog<Move>& moves() const { return m_moves; }
+    // The moves before index `end` have been read: they go.
+    void drop_moves_before(std::size_t end) { m_moves.drop_before(end); }
     // True if the FSM is IDLE at clock edge `edge` (so it would accept pkt_valid / cfg_valid there).
     [[nodiscard]] bool idle_at_edge(std::int64_t edge) const { return edge >= m_idle_from; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations; }
@@ -60,7 +63,7 @@ private:
     std::optional<StepSchedule> m_schedule;
     std::optional<PinEdge> m_next;
     sc_core::sc_event m_edge_due;
-    std::vector<Move> m_moves;
+    RecordLog<Move> m_moves;
     std::uint64_t m_activations = 0;
 };
 

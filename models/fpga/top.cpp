@@ -1,6 +1,7 @@
 #include "fpga/top.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 namespace cnc::fpga {
 
@@ -110,9 +111,23 @@ void Top::on_cfg_valid() {
 
 std::vector<PacketRecord> Top::packets() const {
     std::vector<PacketRecord> out;
-    out.reserve(packet_count());
-    for (std::size_t i = 0; i < packet_count(); ++i) out.push_back(packet(i));
+    for (std::size_t i = step_gen_inst.moves().first(); i < packet_count(); ++i) out.push_back(packet(i));
     return out;
+}
+
+void Top::drop_packets_before(std::size_t end) {
+    const auto& moves = step_gen_inst.moves();
+    // A dropped move's ACK is the one at its busy fall; a later move's busy falls later.
+    TimePs last_busy_fall_ps = -1;
+    for (std::size_t i = moves.first(); i < end && i < moves.size(); ++i) {
+        if (moves[i].accepted) last_busy_fall_ps = moves[i].t_busy_fall_ps;
+    }
+    const auto kept = std::partition_point(m_acks.begin(), m_acks.end(), [&](const AckAfterBusy& a) {
+        return a.t_busy_fall_ps <= last_busy_fall_ps;
+    });
+    m_acks.drop_before(m_acks.first() + static_cast<std::size_t>(std::distance(m_acks.begin(), kept)));
+    pkt_dec_inst.drop_motions_before(end);
+    step_gen_inst.drop_moves_before(end);
 }
 
 PacketRecord Top::packet(std::size_t i) const {

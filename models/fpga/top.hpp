@@ -8,6 +8,7 @@
 #include <systemc>
 #include <vector>
 
+#include "common/record_log.hpp"
 #include "fpga/core/fpga_config.hpp"
 #include "fpga/core/fpga_records.hpp"
 #include "fpga/laser_ctrl.hpp"
@@ -36,11 +37,14 @@ public:
 
     Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg);
 
-    // One record per pkt_valid, in order, with the ACK outcome of accepted moves.
+    // One record per pkt_valid, in order, with the ACK outcome of accepted moves (the ones not dropped yet).
     [[nodiscard]] std::vector<PacketRecord> packets() const;
-    // The same one at a time, so that a run can read the new ones during the simulation without copying them all.
+    // The same one at a time, so that a run can read the new ones during the simulation without copying them all:
+    // every pkt_valid step_gen has seen, the dropped ones included, and record i (not dropped yet).
     [[nodiscard]] std::size_t packet_count() const { return step_gen_inst.moves().size(); }
     [[nodiscard]] PacketRecord packet(std::size_t i) const;
+    // Every reader has read the records before index `end`: the decoder's, step_gen's and their ACKs go.
+    void drop_packets_before(std::size_t end);
     [[nodiscard]] const std::vector<InitRecord>& inits() const { return m_inits; }
     [[nodiscard]] FpgaStats stats() const;
     [[nodiscard]] std::uint8_t pkt_count() const { return m_pkt_count; }  // top.v's 8-bit completed-move count
@@ -81,8 +85,8 @@ private:
         TimePs t_busy_fall_ps;
         TimePs t_ack_start_ps;  // the tx_start edge, -1 if dropped
     };
-    // One per busy fall, in time order (a sorted vector: a long job's map nodes cost three times as much).
-    std::vector<AckAfterBusy> m_acks;
+    // One per busy fall, in time order (a sorted log: a long job's map nodes cost three times as much).
+    RecordLog<AckAfterBusy> m_acks;
     std::vector<InitRecord> m_inits;
     std::uint8_t m_pkt_count = 0;
     std::uint64_t m_acks_sent = 0;

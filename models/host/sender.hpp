@@ -4,6 +4,7 @@
 // latency); the USB and UART timing belongs to the CP2102 model it writes through.
 #pragma once
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -11,6 +12,7 @@
 
 #include <systemc>
 
+#include "common/record_log.hpp"
 #include "common/units.hpp"
 #include "uart/cp2102.hpp"
 
@@ -64,7 +66,10 @@ public:
     Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
            std::array<std::uint8_t, 9> init_packet, PacketSource& motion_packets);
 
-    [[nodiscard]] const std::vector<SentPacket>& packets() const { return m_sent; }
+    // Every packet sent, numbered over the whole run (size() counts the dropped ones too).
+    [[nodiscard]] const RecordLog<SentPacket>& packets() const { return m_sent; }
+    // The reader has read the packets before index `end`: they go.
+    void drop_packets_before(std::size_t end) { m_sent.drop_before(end); }
     [[nodiscard]] const std::vector<SenderMessage>& messages() const { return m_messages; }
     [[nodiscard]] bool finished() const { return m_finished; }
     [[nodiscard]] bool aborted() const { return m_aborted; }
@@ -85,7 +90,7 @@ private:
     uart::Cp2102& m_port;
     const std::array<std::uint8_t, 9> m_init;
     PacketSource& m_motion;
-    std::vector<SentPacket> m_sent;
+    RecordLog<SentPacket> m_sent;
     std::vector<SenderMessage> m_messages;
     TimePs m_t_init_write = -1;
     TimePs m_t_end = -1;

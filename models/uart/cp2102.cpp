@@ -118,6 +118,11 @@ void Cp2102::on_rxd() {
     m_rx_decide_ev.notify(ps(decision_offset_ps(m_clk, m_cfg.format)));
 }
 
+void Cp2102::log_rx(const RxByte& b) {
+    m_stats.rx_line_busy_ps += b.t_stop_end_ps - b.t_start_bit_ps;
+    m_rx_log.push_back(b);
+}
+
 void Cp2102::rx_decide() {
     const TimePs now = now_ps();
     m_rx_busy = false;
@@ -131,7 +136,7 @@ void Cp2102::rx_decide() {
             // The CP2102 flags the error in its line status and discards the character: it never reaches
             // the host's read buffer (the VCP driver's default error handling).
             ++m_stats.framing_errors;
-            m_rx_log.push_back({f.byte, m_rx_fall_ps, f.t_stop_end_ps, -1, true});
+            log_rx({f.byte, m_rx_fall_ps, f.t_stop_end_ps, -1, true});
             return;
         case RxStatus::Ok:
             break;
@@ -142,13 +147,13 @@ void Cp2102::rx_decide() {
     const auto in_chip = static_cast<std::size_t>(std::distance(first_in_chip, m_usb_in.end()));
     if (in_chip >= m_cfg.rx_fifo_bytes) {
         ++m_stats.rx_overflow_bytes;
-        m_rx_log.push_back({f.byte, m_rx_fall_ps, f.t_stop_end_ps, -1, false});
+        log_rx({f.byte, m_rx_fall_ps, f.t_stop_end_ps, -1, false});
         return;
     }
     const TimePs t_usb = next_frame_start(f.t_stop_end_ps, m_cfg.usb_frame_ps);
     const TimePs t_visible = t_usb + m_cfg.usb_latency_ps;
     m_usb_in.push_back({f.byte, t_usb, t_visible});
-    m_rx_log.push_back({f.byte, m_rx_fall_ps, f.t_stop_end_ps, t_visible, false});
+    log_rx({f.byte, m_rx_fall_ps, f.t_stop_end_ps, t_visible, false});
     m_rx_deliver_ev.notify(ps(t_visible - now));  // an earlier pending notification is kept
 }
 

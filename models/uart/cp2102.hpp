@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "common/edge_log.hpp"
+#include "common/record_log.hpp"
 #include "common/units.hpp"
 #include "uart/core/cp2102_baud.hpp"
 #include "uart/core/uart_frame.hpp"
@@ -36,6 +37,7 @@ struct Cp2102Config {
 struct Cp2102Stats {
     std::int64_t tx_bytes = 0;           // bytes whose start bit went out on TXD
     TimePs tx_line_busy_ps = 0;          // their frames' time on TXD, start bit to end of stop bit
+    TimePs rx_line_busy_ps = 0;          // the frames of the bytes in the RX log on RXD, start bit to end of stop bit
     std::int64_t tx_overflow_bytes = 0;  // host bytes dropped because the TX FIFO was full
     std::int64_t rx_overflow_bytes = 0;  // received bytes dropped because the RX FIFO was full
     std::int64_t framing_errors = 0;     // frames dropped for a low stop bit (or a parity error)
@@ -86,8 +88,12 @@ public:
         m_tx_log_first = first;
         m_tx_log_stride = stride;
     }
-    [[nodiscard]] const std::vector<TxByte>& tx_log() const { return m_tx_log; }
-    [[nodiscard]] const std::vector<RxByte>& rx_log() const { return m_rx_log; }
+    // Every byte logged, numbered over the whole run (size() counts the dropped ones too).
+    [[nodiscard]] const RecordLog<TxByte>& tx_log() const { return m_tx_log; }
+    [[nodiscard]] const RecordLog<RxByte>& rx_log() const { return m_rx_log; }
+    // The reader has read the bytes before index `end`: they go.
+    void drop_tx_log_before(std::size_t end) { m_tx_log.drop_before(end); }
+    void drop_rx_log_before(std::size_t end) { m_rx_log.drop_before(end); }
     [[nodiscard]] const Cp2102Baud& baud() const { return m_baud; }
     [[nodiscard]] const Cp2102Stats& stats() const { return m_stats; }
 
@@ -109,6 +115,7 @@ private:
     void rx_decide();        // SC_METHOD: the receiver's decision at the last stop-bit sample
     void rx_deliver();       // SC_METHOD: received bytes become visible to the host
     void wait_until(TimePs t_ps);
+    void log_rx(const RxByte& b);
 
     Cp2102Config m_cfg;
     Cp2102Baud m_baud;
@@ -128,10 +135,10 @@ private:
     sc_core::sc_event m_rx_deliver_ev;
     sc_core::sc_event m_data_ev;
 
-    std::vector<TxByte> m_tx_log;
+    RecordLog<TxByte> m_tx_log;
     std::size_t m_tx_log_first = 0;
     std::size_t m_tx_log_stride = 1;  // every byte
-    std::vector<RxByte> m_rx_log;
+    RecordLog<RxByte> m_rx_log;
     Cp2102Stats m_stats;
 };
 

@@ -28,21 +28,25 @@ constexpr std::size_t kBufferBytes = 64 * 1024;
 class RowWriter {
 public:
     explicit RowWriter(unsigned char* at) : m_at(at) {}
+    template <typename Stored, typename T>
+    void as(const T& v) {
+        field(static_cast<Stored>(v));
+    }
     template <typename T>
-    void put(const T& v) {
+    void field(const T& v) {
         static_assert(std::is_arithmetic_v<T>);
         std::memcpy(m_at, &v, sizeof v);
         m_at += sizeof v;
     }
     template <typename T>
-    void put(const std::optional<T>& v) {
-        put<std::uint8_t>(v ? 1 : 0);
-        put(v.value_or(T{}));
+    void field(const std::optional<T>& v) {
+        as<std::uint8_t>(v.has_value());
+        field(v.value_or(T{}));
     }
     template <typename T>
-    void put(const std::vector<T>& v, std::size_t slots) {
-        put<std::uint8_t>(static_cast<std::uint8_t>(v.size()));
-        for (std::size_t i = 0; i < slots; ++i) put(i < v.size() ? v[i] : T{});
+    void field(const std::vector<T>& v, std::size_t slots) {
+        as<std::uint8_t>(v.size());
+        for (std::size_t i = 0; i < slots; ++i) field(i < v.size() ? v[i] : T{});
     }
 
 private:
@@ -52,28 +56,34 @@ private:
 class RowReader {
 public:
     explicit RowReader(const unsigned char* at) : m_at(at) {}
+    template <typename Stored, typename T>
+    void as(T& v) {
+        Stored stored{};
+        field(stored);
+        v = static_cast<T>(stored);
+    }
     template <typename T>
-    void get(T& v) {
+    void field(T& v) {
         static_assert(std::is_arithmetic_v<T>);
         std::memcpy(&v, m_at, sizeof v);
         m_at += sizeof v;
     }
     template <typename T>
-    void get(std::optional<T>& v) {
+    void field(std::optional<T>& v) {
         std::uint8_t present = 0;
         T value{};
-        get(present);
-        get(value);
+        field(present);
+        field(value);
         v = present != 0 ? std::optional<T>(value) : std::nullopt;
     }
     template <typename T>
-    void get(std::vector<T>& v, std::size_t slots) {
+    void field(std::vector<T>& v, std::size_t slots) {
         std::uint8_t n = 0;
-        get(n);
+        field(n);
         v.resize(n);
         for (std::size_t i = 0; i < slots; ++i) {
             T value{};
-            get(value);
+            field(value);
             if (i < n) v[i] = value;
         }
     }
@@ -81,6 +91,31 @@ public:
 private:
     const unsigned char* m_at;
 };
+
+// The row's fields in their order, for writing (RowWriter, a const move) and reading back (RowReader).
+template <typename Row, typename Move>
+void row_fields(Row& r, Move& m, std::size_t axes) {
+    r.template as<std::int32_t>(m.index);
+    r.template as<std::int32_t>(m.line);
+    r.template as<std::uint64_t>(m.pieces);
+    r.template as<std::uint8_t>(m.rapid);
+    r.template as<std::uint8_t>(m.timing.below_feed);
+    r.field(m.feed_mm_per_min);
+    r.field(m.t_first_edge_ps);
+    r.field(m.t_last_edge_ps);
+    r.field(m.timing.motion_time_s);
+    r.field(m.timing.achieved_feed_mm_per_min);
+    r.field(m.timing.feed_error_pct);
+    r.template as<std::uint64_t>(m.path.samples);
+    r.field(m.path.contour_max_um);
+    r.field(m.path.following_max_um);
+    r.field(m.path.following_rms_um);
+    r.field(m.path.endpoint_vs_command_um);
+    r.field(m.path.endpoint_vs_program_um);
+    r.field(m.steps_commanded, axes);
+    r.field(m.steps_emitted, axes);
+    r.field(m.sync_max_abs_ns, axes);
+}
 
 std::string temp_dir() {
     const char* dir = std::getenv("TMPDIR");
@@ -108,26 +143,7 @@ public:
         const std::size_t at = m_buffer.size();
         m_buffer.resize(at + m_row_size);
         RowWriter w(m_buffer.data() + at);
-        w.put<std::int32_t>(m.index);
-        w.put<std::int32_t>(m.line);
-        w.put<std::uint64_t>(m.pieces);
-        w.put<std::uint8_t>(m.rapid ? 1 : 0);
-        w.put<std::uint8_t>(m.timing.below_feed ? 1 : 0);
-        w.put(m.feed_mm_per_min);
-        w.put(m.t_first_edge_ps);
-        w.put(m.t_last_edge_ps);
-        w.put(m.timing.motion_time_s);
-        w.put(m.timing.achieved_feed_mm_per_min);
-        w.put(m.timing.feed_error_pct);
-        w.put<std::uint64_t>(m.path.samples);
-        w.put(m.path.contour_max_um);
-        w.put(m.path.following_max_um);
-        w.put(m.path.following_rms_um);
-        w.put(m.path.endpoint_vs_command_um);
-        w.put(m.path.endpoint_vs_program_um);
-        w.put(m.steps_commanded, m_axes);
-        w.put(m.steps_emitted, m_axes);
-        w.put(m.sync_max_abs_ns, m_axes);
+        row_fields(w, m, m_axes);
         ++m_rows;
     }
 
@@ -186,35 +202,7 @@ private:
 
     void decode(const unsigned char* at, MoveMetrics& m) const {
         RowReader r(at);
-        std::int32_t index = 0, line = 0;
-        std::uint64_t pieces = 0, samples = 0;
-        std::uint8_t rapid = 0, below_feed = 0;
-        r.get(index);
-        r.get(line);
-        r.get(pieces);
-        r.get(rapid);
-        r.get(below_feed);
-        m.index = index;
-        m.line = line;
-        m.pieces = pieces;
-        m.rapid = rapid != 0;
-        m.timing.below_feed = below_feed != 0;
-        r.get(m.feed_mm_per_min);
-        r.get(m.t_first_edge_ps);
-        r.get(m.t_last_edge_ps);
-        r.get(m.timing.motion_time_s);
-        r.get(m.timing.achieved_feed_mm_per_min);
-        r.get(m.timing.feed_error_pct);
-        r.get(samples);
-        m.path.samples = samples;
-        r.get(m.path.contour_max_um);
-        r.get(m.path.following_max_um);
-        r.get(m.path.following_rms_um);
-        r.get(m.path.endpoint_vs_command_um);
-        r.get(m.path.endpoint_vs_program_um);
-        r.get(m.steps_commanded, m_axes);
-        r.get(m.steps_emitted, m_axes);
-        r.get(m.sync_max_abs_ns, m_axes);
+        row_fields(r, m, m_axes);
     }
 
     std::size_t m_axes;

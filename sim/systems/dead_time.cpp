@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 
 #include "host/core/packet_codec.hpp"
@@ -44,7 +45,7 @@ void add_gap(DeadTimeBreakdown& d, const GapBreakdown& g, bool keep_gaps) {
 
 PieceSteps piece_steps(const metrics::MoveMetrics& piece) { return {piece.t_first_edge_ps, piece.t_last_edge_ps}; }
 
-void DeadTimeFold::fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const std::vector<host::SentPacket>& sent,
+void DeadTimeFold::fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const RecordLog<host::SentPacket>& sent,
                         const uart::Cp2102& cp2102) {
     const auto& first_bytes = cp2102.tx_log();  // [k] motion packet k's first byte
     const auto& rx = cp2102.rx_log();
@@ -70,6 +71,7 @@ void DeadTimeFold::fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const 
             if (ended) continue;
             break;
         }
+        m_next_rx_byte = rx.first() + static_cast<std::size_t>(std::distance(rx.begin(), ack));
         if (!piece_a.t_last_ps || !piece_b.t_first_ps) continue;
         const fpga::PacketRecord next = fpga.packet(i + 1);
         const TimePs last_a = *piece_a.t_last_ps;
@@ -98,8 +100,7 @@ DeadTimeBreakdown DeadTimeFold::finish(TimePs t_job_start_ps, TimePs t_job_end_p
     const TimePs job = t_job_end_ps - t_job_start_ps;
     if (job > 0) {
         const TimePs busy_to = cp2102.stats().tx_line_busy_ps;
-        TimePs busy_from = 0;
-        for (const auto& b : cp2102.rx_log()) busy_from += b.t_stop_end_ps - b.t_start_bit_ps;
+        const TimePs busy_from = cp2102.stats().rx_line_busy_ps;
         m_d.utilisation_to_fpga_pct = 100.0 * static_cast<double>(busy_to) / static_cast<double>(job);
         m_d.utilisation_from_fpga_pct = 100.0 * static_cast<double>(busy_from) / static_cast<double>(job);
     }

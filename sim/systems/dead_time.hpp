@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/record_log.hpp"
 #include "fpga/top.hpp"
 #include "host/sender.hpp"
 #include "metrics/metrics.hpp"
@@ -59,8 +60,12 @@ public:
     // Folds the gaps final at `now_ps`; `ended`: the run is over, fold every gap there is. `cp2102`: its TX log
     // thinned to each motion packet's first byte (Cp2102::thin_tx_log(host::kInitPacketBytes,
     // host::kMotionPacketBytes)).
-    void fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const std::vector<host::SentPacket>& sent,
+    void fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const RecordLog<host::SentPacket>& sent,
               const uart::Cp2102& cp2102);
+    // What the gaps still to fold read, from which on the records must be kept: the FPGA's packets, the sender's
+    // and the CP2102's (thinned) TX log from packet next_packet(), its RX log from byte next_rx_byte().
+    [[nodiscard]] std::size_t next_packet() const { return m_next_gap; }
+    [[nodiscard]] std::size_t next_rx_byte() const { return m_next_rx_byte; }
     // The split of the whole job (every gap must have been folded: fold(..., true, ...)).
     [[nodiscard]] DeadTimeBreakdown finish(TimePs t_job_start_ps, TimePs t_job_end_ps, const uart::Cp2102& cp2102);
 
@@ -70,6 +75,7 @@ private:
     std::deque<PieceSteps> m_pieces;   // from piece m_first_piece on: the ones gaps still to be folded read
     std::size_t m_first_piece = 0;
     std::size_t m_next_gap = 0;        // the gap after piece m_next_gap is the next one to fold
+    std::size_t m_next_rx_byte = 0;    // the last ACK found: a later gap's ACK is not before it
 };
 
 // `detail`: with every gap's breakdown (per_gap: the gaps must have been kept); without, the mean and the max of

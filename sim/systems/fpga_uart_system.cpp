@@ -1,5 +1,6 @@
 #include "systems/fpga_uart_system.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <deque>
 #include <limits>
@@ -8,6 +9,7 @@
 #include <sstream>
 #include <utility>
 
+#include "common/record_log.hpp"
 #include "common/text_format.hpp"
 #include "fpga/core/step_schedule.hpp"
 #include "fpga/top.hpp"
@@ -66,7 +68,7 @@ host::OutgoingPacket packet_of(const MadeSegment& made, Numerators n, const Scen
 }
 
 // The sender's packets, made from the job's segments as it asks for them. A segment sent waits here until
-// step_gen has run it (the metrics' commanded move); its G-code line stays for the FPGA's warnings.
+// step_gen has run it (the metrics' commanded move); its G-code line until the FPGA's warnings have read it.
 class SentPackets : public host::PacketSource {
 public:
     SentPackets(const Scenario& s, const Job& job, Numerators n) : m_s(s), m_segments(s, job), m_numerators(n) {}
@@ -87,14 +89,15 @@ public:
         m_unexecuted.pop_front();
         return made;
     }
-    [[nodiscard]] const std::vector<int>& lines() const { return m_lines; }  // per packet sent
+    [[nodiscard]] const RecordLog<int>& lines() const { return m_lines; }  // per packet sent
+    void drop_lines_before(std::size_t end) { m_lines.drop_before(end); }
 
 private:
     const Scenario& m_s;
     JobSegments m_segments;
     Numerators m_numerators;
     std::deque<MadeSegment> m_unexecuted;
-    std::vector<int> m_lines;
+    RecordLog<int> m_lines;
 };
 
 // The executed pieces, one per packet step_gen accepted (a packet ignored because busy carries none), in order:
@@ -117,6 +120,9 @@ public:
             f(std::move(m));
         }
     }
+
+    // The first packet record not read yet.
+    [[nodiscard]] std::size_t next_record() const { return m_record; }
 
 private:
     std::size_t m_record = 0;
@@ -155,27 +161,51 @@ void record_wires(EdgeRecorder& rec, const Wires& w, bool with_lines) {
 }
 
 // "segment 17 (line 20)": the packet's number, and its G-code line when the job was G-code.
-std::string segment_place(const std::vector<int>& lines, std::size_t k) {
+std::string segment_place(const RecordLog<int>& lines, std::size_t k) {
     std::string where = "segment " + std::to_string(k + 1);
     if (k < lines.size() && lines[k] > 0) where += " (line " + std::to_string(lines[k]) + ")";
     return where;
 }
 
-// FPGA-side warnings: the period product the RTL cannot hold, packets lost while busy, line faults.
-void fpga_warnings(const fpga::Top& top, const std::vector<int>& lines, const Scenario& s,
-                   std::vector<Warning>& warnings) {
-    const std::string overflow =
-        std::string("(NUMERATOR/feed) x dominant steps exceeds 32 bits; step_gen as printed in the appendix wraps it") +
-        (s.fpga.period_arithmetic == fpga::PeriodArithmetic::Wrap32
-             ? " (fpga.period_arithmetic = wrap32: this run used the wrapped period)"
-             : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)");
-    for (std::size_t k = 0; k < top.packet_count(); ++k) {
-        const fpga::PacketRecord r = top.packet(k);
-        if (r.period_overflow) warnings.push_back({"period_overflow", segment_place(lines, k), overflow});
-        if (!r.accepted) {
-            warnings.push_back({"packet_lost", segment_place(lines, k), "arrived while step_gen was busy: lost"});
+// FPGA-side warnings: the period product the RTL cannot hold and packets lost while busy, read packet by packet
+// as step_gen sees them (what they read of a packet is final then), so that the records can go; then the init
+// packets and the line faults, at the end.
+class FpgaWarnings {
+public:
+    explicit FpgaWarnings(const Scenario& s)
+        : m_s(s),
+          m_overflow(std::string("(NUMERATOR/feed) x dominant steps exceeds 32 bits; step_gen as printed in the "
+                                 "appendix wraps it") +
+                     (s.fpga.period_arithmetic == fpga::PeriodArithmetic::Wrap32
+                          ? " (fpga.period_arithmetic = wrap32: this run used the wrapped period)"
+                          : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)")) {}
+
+    // Reads the packets step_gen has seen since the last call.
+    void read(const fpga::Top& top, const RecordLog<int>& lines) {
+        for (; m_next < top.packet_count(); ++m_next) {
+            const fpga::PacketRecord r = top.packet(m_next);
+            if (r.period_overflow) m_packets.push_back({"period_overflow", segment_place(lines, m_next), m_overflow});
+            if (!r.accepted) {
+                m_packets.push_back(
+                    {"packet_lost", segment_place(lines, m_next), "arrived while step_gen was busy: lost"});
+            }
         }
     }
+    // The first packet not read yet.
+    [[nodiscard]] std::size_t next_packet() const { return m_next; }
+    // Every packet read: their warnings, then the init packets' and the FPGA's counters'.
+    void finish(const fpga::Top& top, std::vector<Warning>& warnings) const;
+
+private:
+    const Scenario& m_s;
+    const std::string m_overflow;
+    std::vector<Warning> m_packets;
+    std::size_t m_next = 0;
+};
+
+void FpgaWarnings::finish(const fpga::Top& top, std::vector<Warning>& warnings) const {
+    const Scenario& s = m_s;
+    warnings.insert(warnings.end(), m_packets.begin(), m_packets.end());
     for (const fpga::InitRecord& i : top.inits()) {
         if (!i.applied) {
             const char* why =
@@ -197,6 +227,18 @@ void fpga_warnings(const fpga::Top& top, const std::vector<int>& lines, const Sc
     if (st.acks_dropped > 0) {
         warnings.push_back({"acks_dropped", "", std::to_string(st.acks_dropped) + " ACKs dropped (uart_tx busy)"});
     }
+}
+
+// The models' per-packet records that every reader has read go: the metrics' pieces, the dead-time split and the
+// warnings read them once. The detailed report lists every packet step_gen saw and the sender sent: kept.
+void hand_over_read(const ExecutedPieces& executed, const DeadTimeFold& dead_fold, const FpgaWarnings& warnings,
+                    bool detail, fpga::Top& fpga, host::Sender& sender, uart::Cp2102& cp2102, SentPackets& packets) {
+    cp2102.drop_tx_log_before(dead_fold.next_packet());
+    cp2102.drop_rx_log_before(dead_fold.next_rx_byte());
+    packets.drop_lines_before(warnings.next_packet());
+    if (detail) return;
+    fpga.drop_packets_before(std::min({executed.next_record(), dead_fold.next_packet(), warnings.next_packet()}));
+    sender.drop_packets_before(dead_fold.next_packet());
 }
 
 // The fpga-uart side of the job estimate: send_steps.py's settle and init gap, then per packet its trip over
@@ -333,11 +375,14 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
             s.detail, [&dead_fold](const metrics::MoveMetrics& p) { dead_fold.add_piece(piece_steps(p)); });
     }
     ExecutedPieces executed;
+    FpgaWarnings warnings(s);
     const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
         if (!feed) return;
         executed.time_ended(fpga, now_ps, packets, moves, [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
         feed->fold(now_ps);
         dead_fold.fold(now_ps, false, fpga, sender.packets(), cp2102);
+        warnings.read(fpga, packets.lines());
+        hand_over_read(executed, dead_fold, warnings, s.detail, fpga, sender, cp2102, packets);
     });
     if (vcd) vcd->close();
 
@@ -371,7 +416,8 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     const DeadTimeBreakdown dead = dead_fold.finish(in.t_job_start_ps, in.t_job_end_ps, cp2102);
     if (s.keep_run_input) run.gap_causes = gap_causes(dead);
 
-    fpga_warnings(fpga, packets.lines(), s, run.warnings);
+    warnings.read(fpga, packets.lines());
+    warnings.finish(fpga, run.warnings);
     const fpga::FpgaStats st = fpga.stats();
     const uart::Cp2102Baud& baud = cp2102.baud();
     nlohmann::json msgs = nlohmann::json::array();

@@ -88,6 +88,38 @@ TEST(FpgaVsReference, MixedStreamFromTheCp2102) {
     expect_mixed_stream_records(bench.top);
 }
 
+// A run that drops its packet records as it reads them (fpga-uart) must see the later ones as a run that keeps
+// them all: the mixed stream twice, side by side, one dropping at 25 ms what it has seen (packets 0-9, the lost
+// packet 8 among them), before packet 10 (its ACK sent) and 11 (accepted during that ACK, its own ACK dropped).
+TEST(FpgaVsReference, PacketRecordsDroppedMidRunLeaveTheLaterOnesAsTheyWere) {
+    const FpgaConfig cfg;
+    UartWave w = cp2102_sender();
+    const std::int64_t last = mixed_stream(w);
+    FpgaBench whole("whole", cfg, w.changes());
+    FpgaBench dropping("dropping", cfg, w.changes());
+    dropping.run_to_edge(edge_of(25 * kMs));
+    const std::size_t seen = dropping.top.packet_count();
+    ASSERT_EQ(seen, 10U);
+    dropping.top.drop_packets_before(seen);
+    dropping.run_to_edge(last);
+    expect_mixed_stream_records(whole.top);
+    const auto all = whole.top.packets();
+    const auto kept = dropping.top.packets();
+    EXPECT_EQ(dropping.top.packet_count(), all.size());
+    ASSERT_EQ(kept.size(), all.size() - seen);
+    for (std::size_t j = 0; j < kept.size(); ++j) {
+        const PacketRecord& a = all[seen + j];
+        const PacketRecord& b = kept[j];
+        EXPECT_EQ(b.t_pkt_valid_ps, a.t_pkt_valid_ps) << j;
+        EXPECT_EQ(b.steps_x, a.steps_x) << j;
+        EXPECT_EQ(b.steps_y, a.steps_y) << j;
+        EXPECT_EQ(b.accepted, a.accepted) << j;
+        EXPECT_EQ(b.period_x_cycles, a.period_x_cycles) << j;
+        EXPECT_EQ(b.t_busy_fall_ps, a.t_busy_fall_ps) << j;
+        EXPECT_EQ(b.t_ack_start_ps, a.t_ack_start_ps) << j;
+    }
+}
+
 TEST(FpgaVsReference, ShortAndZeroPeriods) {
     const FpgaConfig cfg;
     UartWave w = cp2102_sender();

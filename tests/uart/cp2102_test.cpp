@@ -214,3 +214,27 @@ TEST(Cp2102, ThinnedTxLogKeepsEveryStrideThByteAndCountsThemAll) {
     EXPECT_EQ(cp.stats().tx_bytes, 11);
     EXPECT_EQ(cp.stats().tx_line_busy_ps, 954'861'111);
 }
+
+TEST(Cp2102, DroppedLogBytesLeaveTheOthersAndTheCounts) {
+    sc_core::sc_signal<bool> line("line");
+    Cp2102Config cfg;
+    cfg.ideal_baud = true;
+    Cp2102 cp("cp", cfg);
+    cp.txd(line);
+    cp.rxd(line);
+    sc_core::sc_spawn([&] { cp.usb_write(kPacket); });
+    sc_core::sc_start(at(3 * kMs));
+    cp.drop_rx_log_before(6);
+    cp.drop_tx_log_before(2);
+    // Every byte still counted and numbered as before: 11 looped back, the kept ones at their indices.
+    EXPECT_EQ(cp.rx_log().size(), 11U);
+    EXPECT_EQ(cp.rx_log().first(), 6U);
+    EXPECT_EQ(cp.rx_log()[6].byte, kPacket[6]);
+    EXPECT_EQ(cp.tx_log().size(), 11U);
+    EXPECT_EQ(cp.tx_log()[2].t_start_bit_ps, 173'611'111);  // 20 bits at exactly 115200 Bd, rounded down
+    // The received frames' line time, the dropped ones included: 110 bits (954,861,111 ps, as
+    // IdealBaudRunsAtTheRequestedRate), each frame timed by the receiver from its own start edge and rounded down
+    // to the ps, so up to 1 ps short per frame.
+    EXPECT_LE(cp.stats().rx_line_busy_ps, 954'861'111);
+    EXPECT_GE(cp.stats().rx_line_busy_ps, 954'861'111 - 11);
+}

@@ -30,11 +30,11 @@ void read_lathe(KeyReader& r, Scenario& s, const std::filesystem::path&) { read_
 const std::vector<Architecture>& architectures() {
     // The seed 000 FPGA and the seed 003 head switch the laser by motion code; the seed 004 frame carries the
     // job's laser bit. The seed 002 lathe runs no job (its laser switching is never asked). fpga-uart reads a G-code
-    // job again as it sends it; the others plan it whole.
+    // job again as it sends it, spi-fpga as its servo consumes the plan; atmega plans it whole.
     static const std::vector<Architecture> list = {
         {"fpga-uart", read_fpga_uart, run_fpga_uart, true, LaserSwitching::ByMotionKind, true},
         {"atmega", read_atmega, run_atmega, true, LaserSwitching::ByMotionKind, false},
-        {"spi-fpga", read_spi_fpga, run_spi_fpga, true, LaserSwitching::FollowsJob, false},
+        {"spi-fpga", read_spi_fpga, run_spi_fpga, true, LaserSwitching::FollowsJob, true},
         {"lathe-sync", read_lathe, run_lathe_sync, false, LaserSwitching::FollowsJob, false},
     };
     return list;

@@ -1,13 +1,16 @@
-// Planning a job a move at a time (plan_stream.hpp) must give the whole program's plan exactly: the same pieces,
-// profiles, times and move windows, bit for bit, so that a streamed spi-fpga run reports what a whole one does.
+// Planning a job a move at a time (plan_stream.hpp), and reading it as far as it is asked for (plan_feed.hpp), must
+// give the whole program's plan exactly: the same pieces, profiles, times and move windows, bit for bit, so that a
+// streamed spi-fpga run reports what a whole one does.
 #include <algorithm>
 #include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "host/core/planner/plan_feed.hpp"
 #include "host/core/planner/plan_stream.hpp"
 #include "planner_test_util.hpp"
+#include "support/fed_job.hpp"
 
 namespace cnc::host::planner {
 namespace {
@@ -111,6 +114,87 @@ TEST(PlanStream, ChunkByChunkEqualsTheWholeProgramExactStop) {
     PlannerConfig cfg = config(BlendMode::ExactStop);
     cfg.lookahead_moves = 1;
     chunked_equals_whole(cfg);
+}
+
+// The planned peak path speed of programmed move i: the fastest of its pieces in the whole plan (0 without one).
+double peak_of(const Trajectory& whole, std::size_t i) {
+    double peak = 0.0;
+    for (const PlannedPiece& p : whole.pieces()) {
+        if (p.move == static_cast<int>(i)) peak = std::max(peak, p.speed.peak_mm_per_s);
+    }
+    return peak;
+}
+
+// A reader walking through the job (every 1 ms and at every piece boundary), dropping the pieces and the moves
+// behind it, reads the whole program's state at every time, and each move's window and peak speed once the walk
+// has left the window; the feed holds no more than the look-ahead's pieces around the walk.
+void fed_equals_whole(const PlannerConfig& cfg) {
+    InterpreterOptions opt;
+    opt.rapid_feed_mm_per_min = test::kRapidAboveTheAxes_mm_per_min;
+    const Program program = gcode(mixed_job(), opt.rapid_feed_mm_per_min);
+    const Trajectory whole = plan(program, cfg);
+    cnc::test::FedJob fed(mixed_job(), cfg, opt);
+
+    std::vector<double> times;
+    for (double t = 0.0; t < whole.duration_s(); t += 1e-3) times.push_back(t);
+    for (const PlannedPiece& p : whole.pieces()) {
+        times.push_back(p.t_begin_s);
+        times.push_back(p.t_end_s);
+    }
+    times.push_back(whole.duration_s());
+    std::sort(times.begin(), times.end());
+
+    std::size_t next_move = 0;
+    std::size_t most_pieces = 0;
+    for (const double t : times) {
+        SCOPED_TRACE("t = " + std::to_string(t));
+        const Sample got = fed.plan.at(t);
+        const Sample want = whole.at(t);
+        EXPECT_EQ(got.pos_mm.x_mm, want.pos_mm.x_mm);
+        EXPECT_EQ(got.pos_mm.y_mm, want.pos_mm.y_mm);
+        EXPECT_EQ(got.vel_mm_per_s.x_mm, want.vel_mm_per_s.x_mm);
+        EXPECT_EQ(got.vel_mm_per_s.y_mm, want.vel_mm_per_s.y_mm);
+        EXPECT_EQ(got.acc_mm_per_s2.x_mm, want.acc_mm_per_s2.x_mm);
+        EXPECT_EQ(got.acc_mm_per_s2.y_mm, want.acc_mm_per_s2.y_mm);
+        EXPECT_EQ(got.path_speed_mm_per_s, want.path_speed_mm_per_s);
+        EXPECT_EQ(got.move, want.move);
+        for (; next_move < program.moves.size() && whole.move_windows()[next_move].second < t; ++next_move) {
+            const FedMove* m = fed.plan.move(next_move);
+            ASSERT_NE(m, nullptr);
+            EXPECT_EQ(m->window, whole.move_windows()[next_move]);
+            EXPECT_EQ(m->peak_mm_per_s, peak_of(whole, next_move));
+            EXPECT_EQ(m->move.line, program.moves[next_move].line);
+            fed.plan.drop_moves_before(next_move + 1);
+        }
+        fed.plan.drop_before(t);
+        most_pieces = std::max(most_pieces, fed.plan.trajectory().pieces().size());
+    }
+    EXPECT_TRUE(fed.plan.complete());
+    EXPECT_EQ(fed.plan.trajectory().duration_s(), whole.duration_s());
+    EXPECT_EQ(next_move, program.moves.size());
+    EXPECT_EQ(fed.plan.move(program.moves.size()), nullptr);
+    // Each move gives at most two pieces (its own and the blend after it); a piece is final once its look-ahead
+    // window and two moves more are read (the stream's test above).
+    EXPECT_LE(most_pieces, 2 * (static_cast<std::size_t>(cfg.lookahead_moves) + 3));
+    EXPECT_LT(most_pieces, whole.pieces().size() / 4);
+}
+
+TEST(PlanFeed, ReadAsFarAsAskedEqualsTheWholeProgramTrapezoidal) {
+    PlannerConfig cfg = config(BlendMode::Continuous);
+    cfg.lookahead_moves = 4;
+    fed_equals_whole(cfg);
+}
+
+TEST(PlanFeed, ReadAsFarAsAskedEqualsTheWholeProgramJerkLimited) {
+    PlannerConfig cfg = config(BlendMode::Continuous, Profile::JerkLimited);
+    cfg.lookahead_moves = 6;  // the job is a few windows long
+    fed_equals_whole(cfg);
+}
+
+TEST(PlanFeed, ReadAsFarAsAskedEqualsTheWholeProgramExactStop) {
+    PlannerConfig cfg = config(BlendMode::ExactStop);
+    cfg.lookahead_moves = 1;
+    fed_equals_whole(cfg);
 }
 
 }  // namespace

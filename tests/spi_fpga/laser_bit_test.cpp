@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <string>
 
 #include "host/core/gcode.hpp"
 #include "host/core/planner/planner.hpp"
 #include "host/servo/core/laser_bit.hpp"
+#include "support/fed_job.hpp"
 
 using namespace cnc::host;
 using namespace cnc::host::servo;
@@ -35,7 +37,8 @@ TEST(LaserIntent, CuttingMovesUnderM3OrM4WithPowerOnly) {
 TEST(LaserBit, ExactStopFollowsEachMoveAndIsOffAtRest) {
     // Moves: 0 cut X0->10 on [0, 1.01]; 1 Y0->10 under M5 [1.01, 2.02]; 2 G0 X0; 3 Y10->0 under M3 S1000 (S stays
     // in force through M5); then a 1 s dwell after the last move.
-    const Program p = program("M3 S1000\nG1 X10 F600\nM5\nG1 Y10\nM3\nG0 X0\nG1 Y0\nG4 P1\n");
+    const std::string text = "M3 S1000\nG1 X10 F600\nM5\nG1 Y10\nM3\nG0 X0\nG1 Y0\nG4 P1\n";
+    const Program p = program(text);
     const planner::Trajectory t = planner::plan(p, planner_config(planner::BlendMode::ExactStop));
     ASSERT_EQ(t.move_windows().size(), 4U);
     const double first_end = t.move_windows()[0].second;
@@ -43,7 +46,9 @@ TEST(LaserBit, ExactStopFollowsEachMoveAndIsOffAtRest) {
     const double rapid_begin = t.move_windows()[2].first;
     const double last_begin = t.move_windows()[3].first;
     const double last_end = t.move_windows()[3].second;
-    LaserBit bit(t, laser_intent(p));
+    // The bit reads the plan as it is read (the times above are the whole plan's).
+    cnc::test::FedJob fed(text, planner_config(planner::BlendMode::ExactStop));
+    LaserBit bit(fed.plan, laser_intent(p));
     EXPECT_FALSE(bit.next(0.0, 0.0));      // period 0: the clock has not moved
     EXPECT_TRUE(bit.next(0.0, 0.001));
     EXPECT_TRUE(bit.next(first_end - 0.001, first_end));  // reaching the rest point: the move ending there
@@ -58,7 +63,8 @@ TEST(LaserBit, ExactStopFollowsEachMoveAndIsOffAtRest) {
 
 TEST(LaserBit, ACornerBlendKeepsThePreviousBitOnlyIntoAMoveThatWantsTheLaser) {
     // Continuous: two 90-degree corners blended; the laser is wanted in the first two moves, M5 in the third.
-    const Program p = program("M3 S1000\nG1 X10 F600\nG1 Y10\nM5\nG1 X0\n");
+    const std::string text = "M3 S1000\nG1 X10 F600\nG1 Y10\nM5\nG1 X0\n";
+    const Program p = program(text);
     const planner::Trajectory t = planner::plan(p, planner_config(planner::BlendMode::Continuous));
     std::vector<const planner::PlannedPiece*> blends;
     for (const planner::PlannedPiece& piece : t.pieces()) {
@@ -68,14 +74,16 @@ TEST(LaserBit, ACornerBlendKeepsThePreviousBitOnlyIntoAMoveThatWantsTheLaser) {
     const double mid0 = (blends[0]->t_begin_s + blends[0]->t_end_s) / 2;
     const double mid1 = (blends[1]->t_begin_s + blends[1]->t_end_s) / 2;
     const double move1_mid = (t.move_windows()[1].first + t.move_windows()[1].second) / 2;
-    LaserBit bit(t, laser_intent(p));
+    cnc::test::FedJob fed(text, planner_config(planner::BlendMode::Continuous));
+    LaserBit bit(fed.plan, laser_intent(p));
     EXPECT_TRUE(bit.next(0.0, 0.5));
     EXPECT_TRUE(bit.next(0.5, mid0));  // between two wanted moves, after an on period: on
     EXPECT_TRUE(bit.next(mid0, move1_mid));
     EXPECT_FALSE(bit.next(move1_mid, mid1));  // into the M5 move: off already in the blend
     EXPECT_FALSE(bit.next(mid1, t.move_windows()[2].first + 0.01));
     // The blend between the two wanted moves after an off period stays off: it follows the period before it.
-    LaserBit from_off(t, laser_intent(p));
+    cnc::test::FedJob fed_again(text, planner_config(planner::BlendMode::Continuous));
+    LaserBit from_off(fed_again.plan, laser_intent(p));
     EXPECT_FALSE(from_off.next(0.0, 0.0));
     EXPECT_FALSE(from_off.next(mid0, mid0 + 1e-6));
 }

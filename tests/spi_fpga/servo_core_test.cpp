@@ -5,12 +5,16 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "host/core/gcode.hpp"
 #include "host/core/planner/planner.hpp"
 #include "host/servo/core/rate_word.hpp"
 #include "host/servo/core/servo_core.hpp"
 #include "host/servo/core/trajectory_clock.hpp"
+#include "support/fed_job.hpp"
 
 using cnc::kPsPerMs;
 using cnc::kPsPerUs;
@@ -85,6 +89,29 @@ Program program(const std::string& text) {
     return interpret(in, "test.nc", InterpreterOptions{});
 }
 
+// What the servo knows of `text` before it starts, from a read of its own (as the spi-fpga run reads the job ahead).
+ServoJob job_ahead(const std::string& text, const planner::PlannerConfig& pc) {
+    cnc::test::FedJob ahead(text, pc);
+    return {laser_intent(program(text)), count_rest_points(ahead.plan)};
+}
+
+// The rest points one after the other as a servo finds them: searched up to a horizon that runs on by 1 ms (a
+// period) at a time, the pieces behind it dropped, until the last.
+std::vector<double> rest_points_found(const std::string& text, const planner::PlannerConfig& pc) {
+    cnc::test::FedJob fed(text, pc);
+    std::vector<double> out;
+    std::optional<double> after;
+    for (double until = 0.0; until < 100.0; until += 1e-3) {
+        while (const std::optional<double> r = next_rest_point(fed.plan, after, until)) {
+            out.push_back(*r);
+            after = r;
+        }
+        if (!out.empty() && last_rest_point(fed.plan, out.back())) break;
+        fed.plan.drop_before(until);
+    }
+    return out;
+}
+
 ServoConfig config() {
     ServoConfig c;
     for (AxisServoConfig& a : c.axes) a = {160.0, 100.0, 1000.0};
@@ -138,40 +165,62 @@ std::size_t run(ServoCore& core, IdealPlant& plant, std::size_t limit = 100'000)
 
 }  // namespace
 
-TEST(RestPoints, EveryStopOfThePlanAndItsEnd) {
+// The rest points found as the plan is read equal the whole plan's stops (its move windows' ends where the plan
+// stops there: every move in exact stop, a reversal and a host wait in continuous mode) and its end, and the count
+// read ahead of a run is theirs.
+TEST(RestPoints, EveryStopOfThePlanAndItsEndFoundAsThePlanIsRead) {
     planner::PlannerConfig pc;
     pc.mode = planner::BlendMode::ExactStop;
-    const planner::Trajectory t = planner::plan(program("G1 X10 F1200\nG1 X10 Y10\nG1 X0 Y10\n"), pc);
-    const std::vector<double> r = rest_points(t);
+    const std::string square = "G1 X10 F1200\nG1 X10 Y10\nG1 X0 Y10\n";
+    const planner::Trajectory t = planner::plan(program(square), pc);
+    const std::vector<double> r = rest_points_found(square, pc);
     ASSERT_EQ(r.size(), 3U);
-    for (std::size_t i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(r[i], t.move_windows()[i].second);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(r[i], t.move_windows()[i].second);
+    EXPECT_EQ(job_ahead(square, pc).rest_points, 3U);
+
     pc.mode = planner::BlendMode::Continuous;
-    const planner::Trajectory c = planner::plan(program("G1 X10 F1200\nG1 X20\nG1 X10\n"), pc);
-    const std::vector<double> rc = rest_points(c);  // colinear: no stop; reversal: stop; end
-    ASSERT_EQ(rc.size(), 2U);
-    EXPECT_DOUBLE_EQ(rc[0], c.move_windows()[1].second);
-    EXPECT_DOUBLE_EQ(rc[1], c.duration_s());
-    EXPECT_EQ(rest_points(planner::plan(program(""), pc)), std::vector<double>{0.0});
+    const std::string reversal = "G1 X10 F1200\nG1 X20\nG1 X10\n";  // colinear: no stop; reversal: stop; end
+    const planner::Trajectory c = planner::plan(program(reversal), pc);
+    EXPECT_EQ(rest_points_found(reversal, pc), (std::vector<double>{c.move_windows()[1].second, c.duration_s()}));
+    EXPECT_EQ(job_ahead(reversal, pc).rest_points, 2U);
+
+    // A dwell between two moves is a stop; one after the last move makes the plan's end a rest point of its own.
+    const std::string dwells = "G1 X10 F1200\nG4 P0.5\nG1 X20\nG4 P0.25\n";
+    const planner::Trajectory d = planner::plan(program(dwells), pc);
+    EXPECT_EQ(rest_points_found(dwells, pc),
+              (std::vector<double>{d.move_windows()[0].second, d.move_windows()[1].second, d.duration_s()}));
+    EXPECT_EQ(d.duration_s(), d.move_windows()[1].second + 0.25);
+    EXPECT_EQ(job_ahead(dwells, pc).rest_points, 3U);
+
+    EXPECT_EQ(rest_points_found("", pc), std::vector<double>{0.0});
+    EXPECT_EQ(job_ahead("", pc).rest_points, 1U);
 }
 
 TEST(ServoCore, FollowsOnePeriodBehindAndLandsExactlyAtEveryRestPoint) {
     planner::PlannerConfig pc;
     pc.mode = planner::BlendMode::ExactStop;
-    const Program p = program("G1 X10.003 Y-2 F1200\nG1 X0 Y5.0031\n");
-    const planner::Trajectory t = planner::plan(p, pc);
-    ServoCore core(config(), t, laser_intent(p));
+    const std::string text = "G1 X10.003 Y-2 F1200\nG1 X0 Y5.0031\n";
+    cnc::test::FedJob fed(text, pc);
+    ServoCore core(config(), fed.plan, job_ahead(text, pc));
     IdealPlant plant;
-    run(core, plant);
-    ASSERT_TRUE(core.done());
+    // Each rest point held and its landing target, as the core heads for them.
+    std::vector<std::pair<double, std::array<std::int64_t, 2>>> rests;
+    while (!core.done()) {
+        plant.run(core.step(plant.feedback()), 1e-3);
+        if (core.rest_point_s() && (rests.empty() || rests.back().first != *core.rest_point_s())) {
+            rests.emplace_back(*core.rest_point_s(), core.target());
+        }
+    }
     EXPECT_EQ(core.stats().rest_points, 2U);
     EXPECT_EQ(core.stats().rest_points_landed, 2U);
     // targets: round(10.003 x 160) = 1600 (1600.48), -320; 0, round(5.0031 x 160) = 800 (800.496)
-    EXPECT_EQ(core.target(0), (std::array<std::int64_t, 2>{1600, -320}));
-    EXPECT_EQ(core.target(1), (std::array<std::int64_t, 2>{0, 800}));
+    ASSERT_EQ(rests.size(), 2U);
+    EXPECT_EQ(rests[0].second, (std::array<std::int64_t, 2>{1600, -320}));
+    EXPECT_EQ(rests[1].second, (std::array<std::int64_t, 2>{0, 800}));
     EXPECT_EQ(plant.m_count, (std::array<std::int64_t, 2>{0, 800}));
     // The hold: tau stays at the first rest point until the first record that tracks again.
     const std::vector<PeriodRecord>& log = core.log();
-    const double r0 = core.rest_points_s()[0];
+    const double r0 = rests[0].first;
     std::size_t first_land = 0;
     while (log[first_land].mode != PeriodMode::Land) ++first_land;
     EXPECT_DOUBLE_EQ(log[first_land - 1].tau_s, r0);  // the period that reached it still tracked
@@ -196,9 +245,9 @@ TEST(ServoCore, LandingPulsesAreSingleAndSeparatedByTwoStops) {
     // A generator running 3 % slow leaves the axes short at every stop: landing pulses make up the difference.
     planner::PlannerConfig pc;
     pc.mode = planner::BlendMode::ExactStop;
-    const Program p = program("G1 X20 Y10 F3000\n");
-    const planner::Trajectory t = planner::plan(p, pc);
-    ServoCore core(config(), t, laser_intent(p));
+    const std::string text = "G1 X20 Y10 F3000\n";
+    cnc::test::FedJob fed(text, pc);
+    ServoCore core(config(), fed.plan, job_ahead(text, pc));
     IdealPlant plant(0.97);
     run(core, plant);
     ASSERT_TRUE(core.done());
@@ -223,9 +272,9 @@ TEST(ServoCore, LandingPulsesAreSingleAndSeparatedByTwoStops) {
 TEST(ServoCore, AStandingAxisCorrectsAnyErrorPastHalfAStep) {
     // Y must stay at 0 while X moves; a plant that once loses... here: Y starts 1 step off (count -1 injected).
     planner::PlannerConfig pc;
-    const Program p = program("G1 X20 F600\n");
-    const planner::Trajectory t = planner::plan(p, pc);
-    ServoCore core(config(), t, laser_intent(p));
+    const std::string text = "G1 X20 F600\n";
+    cnc::test::FedJob fed(text, pc);
+    ServoCore core(config(), fed.plan, job_ahead(text, pc));
     IdealPlant plant;
     plant.m_count[1] = -1;
     std::size_t n = 0;
@@ -245,9 +294,9 @@ TEST(ServoCore, LaserBitCoversTheCutsStretchOfPlanOnlyAndIsOffWhileLanding) {
     // Exact stop; the cut X0->10 at F600 takes 10 / 10 + 10 / 1000 = 1.01 s, the Y move under M5 the same.
     planner::PlannerConfig pc;
     pc.mode = planner::BlendMode::ExactStop;
-    const Program p = program("M3 S1000\nG1 X10 F600\nM5\nG1 Y10\n");
-    const planner::Trajectory t = planner::plan(p, pc);
-    ServoCore core(config(), t, laser_intent(p));
+    const std::string text = "M3 S1000\nG1 X10 F600\nM5\nG1 Y10\n";
+    cnc::test::FedJob fed(text, pc);
+    ServoCore core(config(), fed.plan, job_ahead(text, pc));
     IdealPlant plant;
     run(core, plant);
     ASSERT_TRUE(core.done());
@@ -272,12 +321,14 @@ TEST(ServoCore, LaserBitCoversTheCutsStretchOfPlanOnlyAndIsOffWhileLanding) {
 TEST(ServoCore, DroppedRecordsLeaveTheOthersAndThePeriodNumbersAsTheyWere) {
     // The same job twice, one log kept whole, the other dropped every 7 periods up to 3 behind: the records left
     // are the whole log's last ones, and the period numbers go on counting the dropped ones.
-    const Program p = program("G1 X10 Y-2 F1200\nG1 X0 Y5\n");
-    const planner::Trajectory t = planner::plan(p, planner::PlannerConfig{});
-    ServoCore whole(config(), t, laser_intent(p));
+    const std::string text = "G1 X10 Y-2 F1200\nG1 X0 Y5\n";
+    const planner::PlannerConfig pc;
+    cnc::test::FedJob fed(text, pc);
+    ServoCore whole(config(), fed.plan, job_ahead(text, pc));
     IdealPlant whole_plant;
     const std::size_t periods = run(whole, whole_plant);
-    ServoCore dropped(config(), t, laser_intent(p));
+    cnc::test::FedJob fed_again(text, pc);
+    ServoCore dropped(config(), fed_again.plan, job_ahead(text, pc));
     IdealPlant plant;
     for (std::size_t n = 0; !dropped.done(); ++n) {
         plant.run(dropped.step(plant.feedback()), 1e-3);

@@ -4,12 +4,11 @@
 
 namespace cnc::host::servo {
 
-ServoThread::ServoThread(const sc_core::sc_module_name& name, const ServoConfig& cfg,
-                         const planner::Trajectory& trajectory, std::vector<bool> laser_intended,
-                         spi::SpiMaster& master)
+ServoThread::ServoThread(const sc_core::sc_module_name& name, const ServoConfig& cfg, planner::PlanFeed& plan,
+                         ServoJob job, spi::SpiMaster& master)
     : sc_module(name),
       m_cfg(cfg),
-      m_core(m_cfg, trajectory, std::move(laser_intended)),
+      m_core(m_cfg, plan, std::move(job)),
       m_latency(cfg.latency, cfg.seed),
       m_master(master) {
     SC_HAS_PROCESS(ServoThread);

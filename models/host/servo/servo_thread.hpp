@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/units.hpp"
-#include "host/core/planner/trajectory.hpp"
+#include "host/core/planner/plan_feed.hpp"
 #include "host/servo/core/latency.hpp"
 #include "host/servo/core/servo_core.hpp"
 #include "host/servo/core/servo_summary.hpp"
@@ -19,10 +19,9 @@ namespace cnc::host::servo {
 
 class ServoThread : public sc_core::sc_module {
 public:
-    // `trajectory` and `master` must outlive the simulation; `laser_intended`: one entry per programmed move
-    // (laser_intent(program)).
-    ServoThread(const sc_core::sc_module_name& name, const ServoConfig& cfg, const planner::Trajectory& trajectory,
-                std::vector<bool> laser_intended, spi::SpiMaster& master);
+    // `plan` and `master` must outlive the simulation.
+    ServoThread(const sc_core::sc_module_name& name, const ServoConfig& cfg, planner::PlanFeed& plan, ServoJob job,
+                spi::SpiMaster& master);
 
     [[nodiscard]] const ServoCore& core() const { return m_core; }
     // Every wake-up, one per log record, when kept (`--detail` lists them; the summary needs none).

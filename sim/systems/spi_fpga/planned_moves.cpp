@@ -41,25 +41,16 @@ metrics::CommandedTrajectory commanded_on(std::shared_ptr<const host::planner::T
 
 }  // namespace
 
-PlannedMoves::PlannedMoves(const host::Program& program, const host::planner::Trajectory& traj)
-    : m_program(program), m_traj(traj), m_peak_mm_per_s(program.moves.size(), 0.0) {
-    for (const host::planner::PlannedPiece& p : traj.pieces()) {
-        if (p.move < 0 || static_cast<std::size_t>(p.move) >= m_peak_mm_per_s.size()) continue;
-        double& peak = m_peak_mm_per_s[static_cast<std::size_t>(p.move)];
-        peak = std::max(peak, p.speed.peak_mm_per_s);
-    }
-}
-
 std::vector<metrics::MoveSpec> PlannedMoves::take(const host::servo::ServoCore& servo, bool ended) {
     const host::servo::TrajectoryClock& clock = servo.clock();
     const double tau_now_s = clock.tau_at(clock.t_end_ps());
     std::vector<metrics::MoveSpec> moves;
-    for (; m_next < m_program.moves.size(); ++m_next) {
+    for (; const host::planner::FedMove* fed = m_plan.move(m_next); ++m_next) {
         const std::size_t i = m_next;
-        const auto& window = m_traj.move_windows()[i];
+        const auto& window = fed->window;
         if (!m_next_begin_ps && (ended || tau_now_s > window.first)) m_next_begin_ps = clock.depart_time(window.first);
         if (!ended && !(tau_now_s > window.second)) break;
-        const host::ProgrammedMove& pm = m_program.moves[i];
+        const host::ProgrammedMove& pm = fed->move;
         metrics::MoveSpec m;
         m.index = static_cast<int>(i) + 1;
         m.line = pm.line;
@@ -71,7 +62,7 @@ std::vector<metrics::MoveSpec> PlannedMoves::take(const host::servo::ServoCore& 
         m.to_mm = on_grid(servo, pm.path.end, to);
         m.steps = {to[0] - from[0], to[1] - from[1]};
         m.rapid = pm.kind == host::MotionKind::Rapid;
-        const double peak = m_peak_mm_per_s[i];
+        const double peak = fed->peak_mm_per_s;
         m.feed_mm_per_min = m.rapid && peak > 0.0 ? peak * kSecondsPerMinute : pm.feed_mm_per_min;
         const double length_mm = geom::distance(m.from_mm, m.to_mm);
         if (length_mm > 0.0) {
@@ -84,12 +75,14 @@ std::vector<metrics::MoveSpec> PlannedMoves::take(const host::servo::ServoCore& 
         m_next_begin_ps.reset();
         moves.push_back(m);
     }
+    m_plan.drop_moves_before(m_next);
     return moves;
 }
 
-PlannedMoves::ClockNeeded PlannedMoves::clock_needed() const {
-    if (m_next >= m_program.moves.size()) return {kEndOfTime, std::numeric_limits<double>::infinity()};
-    const auto& window = m_traj.move_windows()[m_next];
+PlannedMoves::ClockNeeded PlannedMoves::clock_needed() {
+    const host::planner::FedMove* fed = m_plan.move(m_next);
+    if (fed == nullptr) return {kEndOfTime, std::numeric_limits<double>::infinity()};
+    const auto& window = fed->window;
     if (!m_next_begin_ps) return {kEndOfTime, window.first};
     return {*m_next_begin_ps, window.second};
 }

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fpga/spi/spi_fpga_top.hpp"
-#include "host/core/gcode.hpp"
+#include "host/core/planner/plan_feed.hpp"
 #include "host/core/planner/trajectory.hpp"
 #include "host/servo/core/servo_core.hpp"
 #include "metrics/run_input.hpp"
@@ -20,9 +20,10 @@ namespace cnc::sim {
 // step grid (origin + round(steps)), the targets the host lands on; a rapid's feed is its planned peak speed.
 class PlannedMoves {
 public:
-    PlannedMoves(const host::Program& program, const host::planner::Trajectory& traj);
+    // `plan` must outlive this; the moves taken are dropped from it.
+    explicit PlannedMoves(host::planner::PlanFeed& plan) : m_plan(plan) {}
     // The moves not taken yet whose window the trajectory clock has left, so that both ends are known (every one
-    // left once the run has `ended`).
+    // left once the run has `ended`: the rest of the job is planned then).
     [[nodiscard]] std::vector<metrics::MoveSpec> take(const host::servo::ServoCore& servo, bool ended);
 
     // What take() still reads of the trajectory clock: at(t) from t_ps on, depart_time(tau) from tau_s on.
@@ -30,12 +31,10 @@ public:
         TimePs t_ps;
         double tau_s;
     };
-    [[nodiscard]] ClockNeeded clock_needed() const;
+    [[nodiscard]] ClockNeeded clock_needed();
 
 private:
-    const host::Program& m_program;
-    const host::planner::Trajectory& m_traj;
-    std::vector<double> m_peak_mm_per_s;  // [move] planned peak path speed
+    host::planner::PlanFeed& m_plan;
     std::size_t m_next = 0;
     // The next move's start, read as soon as the clock has left it, so that the knots before it can go.
     std::optional<TimePs> m_next_begin_ps;

@@ -7,9 +7,7 @@
 
 #include "common/bad_input.hpp"
 #include "fpga/spi/spi_fpga_top.hpp"
-#include "host/core/planner/planner.hpp"
 #include "host/core/planner/speed_profile.hpp"
-#include "host/servo/core/laser_bit.hpp"
 #include "host/servo/servo_thread.hpp"
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
@@ -18,6 +16,7 @@
 #include "spi/spi_master.hpp"
 #include "systems/machine.hpp"
 #include "systems/spi_fpga/planned_moves.hpp"
+#include "systems/spi_fpga/spi_fpga_job.hpp"
 #include "systems/spi_fpga/spi_fpga_report.hpp"
 #include "systems/mechanics_report.hpp"
 
@@ -89,8 +88,10 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
                        "holds only the fpga-uart packets)");
     }
     check_rate_limits(s.spi_fpga, s.machine, s.file);
-    const auto trajectory =
-        std::make_shared<const host::planner::Trajectory>(host::planner::plan(*job.program, s.spi_fpga.planner));
+    JobAhead ahead = read_job_ahead(s, job, pace(s.spi_fpga.planner));
+    const std::shared_ptr<host::planner::PlanFeed> plan = open_plan(s);
+    // The commanded trajectory's readings share the plan (they are read after the run).
+    const std::shared_ptr<const host::planner::Trajectory> trajectory(plan, &plan->trajectory());
 
     spi::SpiConfig link = s.spi_fpga.link;
     link.trace_wires = link.trace_wires || trace_names_any(s, {"sclk", "mosi", "miso", "ss"});
@@ -114,8 +115,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     fpga.dir_y(w.dir_y);
     fpga.laser(w.laser);
     master.target(fpga.spi_target);
-    host::servo::ServoThread host("host", servo_config(s), *trajectory, host::servo::laser_intent(*job.program),
-                                  master);
+    host::servo::ServoThread host("host", servo_config(s), *plan, std::move(ahead.servo), master);
     host.keep_wakeups(s.detail);  // the report's summary is folded period by period; --detail lists every one
     Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics);
     machine.step_x(w.step_x);
@@ -139,9 +139,9 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
                                          machine.traced_positions());
     }
 
-    const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s.spi_fpga.planner)));
+    const RunBudget budget = run_budget(s, ahead.estimate);
     const host::servo::ServoCore& core = host.core();
-    PlannedMoves planned(*job.program, *trajectory);
+    PlannedMoves planned(*plan);
     RateSegments segments;
     ArchRun run;
     metrics::RunInput& in = run.input;
@@ -174,9 +174,12 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
         if (!feed) return;
         hand_over(false);
         feed->fold(now_ps);
-        // The clock's knots that neither the metrics nor the moves still to be handed over read.
+        // The clock's knots that neither the metrics nor the moves still to be handed over read, and the pieces of
+        // plan behind the metrics (the servo and the laser bit read from the clock's tau on).
+        const TimePs read_from_ps = commanded_read_from(feed->pending(), now_ps);
         const PlannedMoves::ClockNeeded needed = planned.clock_needed();
-        host.drop_clock_before(std::min(commanded_read_from(feed->pending(), now_ps), needed.t_ps), needed.tau_s);
+        host.drop_clock_before(std::min(read_from_ps, needed.t_ps), needed.tau_s);
+        plan->drop_before(core.clock().tau_at(read_from_ps));
     });
     if (vcd) vcd->close();
 

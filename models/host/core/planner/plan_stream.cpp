@@ -86,7 +86,6 @@ void PlanStream::finish() {
     m_finished = true;
     schedule(true);
     for (; !m_sources.empty(); m_sources.pop_front()) m_windows.emplace_back(m_t_s, m_t_s);
-    m_rest_mm = m_first_kept_start_mm.value_or(m_first_start_mm.value_or(geom::Vec2{}));
     m_end_hold_s = m_waits_s;
 }
 

@@ -34,8 +34,11 @@ public:
     [[nodiscard]] std::vector<PlannedPiece> take_pieces();
     // The windows (Trajectory::move_windows) of the programmed moves, in order, known and not taken yet.
     [[nodiscard]] std::vector<std::pair<double, double>> take_windows();
-    // After finish(): where the tool stands without pieces, and the host's waits after the last piece.
-    [[nodiscard]] geom::Vec2 rest_mm() const { return m_rest_mm; }
+    // Where the tool stands before the first piece: final once a piece has been taken, or after finish().
+    [[nodiscard]] geom::Vec2 rest_mm() const {
+        return m_first_kept_start_mm.value_or(m_first_start_mm.value_or(geom::Vec2{}));
+    }
+    // After finish(): the host's waits after the last piece.
     [[nodiscard]] double end_hold_s() const { return m_end_hold_s; }
 
 private:
@@ -86,7 +89,6 @@ private:
     double m_entry_mm_per_s = 0.0;
     std::vector<PlannedPiece> m_pieces;
     std::vector<std::pair<double, double>> m_windows;
-    geom::Vec2 m_rest_mm{};
     double m_end_hold_s = 0.0;
 };
 

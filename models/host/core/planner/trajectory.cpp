@@ -12,6 +12,19 @@ Trajectory::Trajectory(std::vector<PlannedPiece> pieces, std::vector<std::pair<d
       m_rest_mm(rest_mm),
       m_end_hold_s(end_hold_s) {}
 
+void Trajectory::append(std::vector<PlannedPiece> pieces, geom::Vec2 rest_mm) {
+    m_pieces.insert(m_pieces.end(), std::make_move_iterator(pieces.begin()), std::make_move_iterator(pieces.end()));
+    m_rest_mm = rest_mm;
+}
+
+void Trajectory::drop_before(double t_s) {
+    const auto it = std::upper_bound(m_pieces.begin(), m_pieces.end(), t_s,
+                                     [](double time, const PlannedPiece& p) { return time < p.t_begin_s; });
+    if (it == m_pieces.begin()) return;
+    // Erased at the front, the vector keeps its capacity: the pieces held stay bounded by the most ever held.
+    m_pieces.erase(m_pieces.begin(), std::prev(it));
+}
+
 Sample Trajectory::at(double t_s) const {
     const double t = std::clamp(t_s, 0.0, duration_s());
     if (m_pieces.empty() || t < m_pieces.front().t_begin_s) return Sample{t, m_rest_mm, {}, {}, 0.0, -1};

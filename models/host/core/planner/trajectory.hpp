@@ -34,6 +34,13 @@ public:
     // leave gaps between them (host waits): the tool rests at the end of the piece before.
     Trajectory(std::vector<PlannedPiece> pieces, std::vector<std::pair<double, double>> move_windows,
                geom::Vec2 rest_mm, double end_hold_s = 0.0);
+    // A trajectory planned as it is read (plan_feed.hpp): no pieces and no move windows yet.
+    Trajectory() = default;
+    // The next pieces in path order, and where the tool stands before the first piece (final once a piece is known).
+    void append(std::vector<PlannedPiece> pieces, geom::Vec2 rest_mm);
+    void set_end_hold(double end_hold_s) { m_end_hold_s = end_hold_s; }
+    // Drops the pieces before the one at(t_s) reads, so that at(t) for t >= t_s reads as before.
+    void drop_before(double t_s);
 
     [[nodiscard]] double duration_s() const {
         return (m_pieces.empty() ? 0.0 : m_pieces.back().t_end_s) + m_end_hold_s;
@@ -41,15 +48,16 @@ public:
     // State at t, clamped to [0, duration]; O(log pieces). At a boundary time the later piece is used.
     [[nodiscard]] Sample at(double t_s) const;
     [[nodiscard]] const std::vector<PlannedPiece>& pieces() const { return m_pieces; }
-    // Time span of each programmed move's own piece. Corner blends lie between the windows (they belong to no
+    // Time span of each programmed move's own piece (none for a trajectory planned as it is read: PlanFeed hands
+    // each move's window over with the move). Corner blends lie between the windows (they belong to no
     // move); a move skipped as shorter than 1e-9 mm, or consumed entirely by its two blends, gets an empty window.
     [[nodiscard]] const std::vector<std::pair<double, double>>& move_windows() const { return m_move_windows; }
 
 private:
     std::vector<PlannedPiece> m_pieces;
     std::vector<std::pair<double, double>> m_move_windows;
-    geom::Vec2 m_rest_mm;
-    double m_end_hold_s;
+    geom::Vec2 m_rest_mm{};
+    double m_end_hold_s = 0.0;
 };
 
 }  // namespace cnc::host::planner

@@ -12,25 +12,30 @@ std::vector<bool> laser_intent(const Program& program) {
     return out;
 }
 
-LaserBit::LaserBit(const planner::Trajectory& trajectory, std::vector<bool> intended)
-    : m_traj(trajectory), m_intended(std::move(intended)) {}
+LaserBit::LaserBit(planner::PlanFeed& plan, std::vector<bool> intended)
+    : m_plan(plan), m_intended(std::move(intended)) {}
 
 bool LaserBit::next(double tau_prev_s, double tau_s) {
     if (!(tau_s > tau_prev_s)) return m_on = false;
-    const std::vector<planner::PlannedPiece>& pieces = m_traj.pieces();
+    m_plan.plan_past(tau_s);
+    const std::vector<planner::PlannedPiece>& pieces = m_plan.trajectory().pieces();
     // The first piece ending at or after tau: the stretch ends in it unless it only begins at or after tau.
     const auto it = std::lower_bound(pieces.begin(), pieces.end(), tau_s,
                                      [](const planner::PlannedPiece& p, double t) { return p.t_end_s < t; });
     if (it == pieces.end() || it->t_begin_s >= tau_s) return m_on = false;
-    if (it->move < 0) return m_on = m_on && wanted_after(it);
+    if (it->move < 0) return m_on = m_on && wanted_after(static_cast<std::size_t>(it - pieces.begin()));
     return m_on = m_intended.at(static_cast<std::size_t>(it->move));
 }
 
-bool LaserBit::wanted_after(std::vector<planner::PlannedPiece>::const_iterator blend) const {
-    const std::vector<planner::PlannedPiece>& pieces = m_traj.pieces();
-    const auto next =
-        std::find_if(blend, pieces.end(), [](const planner::PlannedPiece& p) { return p.move >= 0; });
-    return next != pieces.end() && m_intended.at(static_cast<std::size_t>(next->move));
+bool LaserBit::wanted_after(std::size_t blend) {
+    // Indices, not iterators: planning more appends to the pieces.
+    const std::vector<planner::PlannedPiece>& pieces = m_plan.trajectory().pieces();
+    for (std::size_t i = blend;; ++i) {
+        while (i == pieces.size()) {
+            if (!m_plan.plan_next()) return false;
+        }
+        if (pieces[i].move >= 0) return m_intended.at(static_cast<std::size_t>(pieces[i].move));
+    }
 }
 
 }  // namespace cnc::host::servo

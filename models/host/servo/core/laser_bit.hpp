@@ -12,10 +12,11 @@
 //     no piece runs (a host wait, after the last move): off, the tool is at rest.
 // A stretch that crosses a piece boundary takes the piece it ends in (a move shorter than a period may be missed).
 #pragma once
+#include <cstddef>
 #include <vector>
 
 #include "host/core/gcode.hpp"
-#include "host/core/planner/trajectory.hpp"
+#include "host/core/planner/plan_feed.hpp"
 
 namespace cnc::host::servo {
 
@@ -24,18 +25,18 @@ namespace cnc::host::servo {
 
 class LaserBit {
 public:
-    // `trajectory` must outlive this; `intended` has one entry per programmed move.
-    LaserBit(const planner::Trajectory& trajectory, std::vector<bool> intended);
+    // `plan` must outlive this; `intended` has one entry per programmed move.
+    LaserBit(planner::PlanFeed& plan, std::vector<bool> intended);
 
     // The bit of the period in which the trajectory clock went from tau_prev_s to tau_s.
     bool next(double tau_prev_s, double tau_s);
 
 private:
-    // Whether the first programmed move after piece `blend` wants the laser (a move its two blends consumed has
-    // no piece of its own).
-    [[nodiscard]] bool wanted_after(std::vector<planner::PlannedPiece>::const_iterator blend) const;
+    // Whether the first programmed move after the piece at index `blend` wants the laser (a move its two blends
+    // consumed has no piece of its own), planning as far as that move.
+    [[nodiscard]] bool wanted_after(std::size_t blend);
 
-    const planner::Trajectory& m_traj;
+    planner::PlanFeed& m_plan;
     std::vector<bool> m_intended;
     bool m_on = false;  // the previous period's bit
 };

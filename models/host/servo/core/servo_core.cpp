@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "host/servo/core/rate_word.hpp"
@@ -29,32 +30,59 @@ const char* to_string(PeriodMode m) {
     return "?";
 }
 
-std::vector<double> rest_points(const planner::Trajectory& trajectory) {
-    std::vector<double> out;
-    for (const planner::PlannedPiece& p : trajectory.pieces()) {
-        if (p.speed.exit_mm_per_s <= kRestSpeedMmPerS && (out.empty() || p.t_end_s > out.back())) {
-            out.push_back(p.t_end_s);
-        }
+std::optional<double> next_rest_point(planner::PlanFeed& plan, std::optional<double> after_s, double until_s) {
+    plan.plan_past(until_s);
+    const std::vector<planner::PlannedPiece>& pieces = plan.trajectory().pieces();
+    const auto later = [&](double t_s) { return !after_s || t_s > *after_s; };
+    auto it = pieces.begin();
+    if (after_s) {
+        it = std::partition_point(pieces.begin(), pieces.end(),
+                                  [&](const planner::PlannedPiece& p) { return !later(p.t_end_s); });
     }
-    if (out.empty() || out.back() < trajectory.duration_s()) out.push_back(trajectory.duration_s());
-    return out;
+    for (; it != pieces.end() && !(it->t_end_s > until_s); ++it) {
+        if (it->speed.exit_mm_per_s <= kRestSpeedMmPerS) return it->t_end_s;
+    }
+    // The plan's end is one too when the host waits after the last piece (planned whole: no piece ends after it).
+    if (it == pieces.end() && plan.complete()) {
+        const double end_s = plan.trajectory().duration_s();
+        if (later(end_s) && !(end_s > until_s)) return end_s;
+    }
+    return std::nullopt;
 }
 
-ServoCore::ServoCore(const ServoConfig& cfg, const planner::Trajectory& trajectory,
-                     std::vector<bool> laser_intended)
+bool last_rest_point(planner::PlanFeed& plan, double rest_s) {
+    plan.plan_past(rest_s);
+    return plan.complete() && !(rest_s < plan.trajectory().duration_s());
+}
+
+std::uint64_t count_rest_points(planner::PlanFeed& plan) {
+    std::uint64_t n = 0;
+    std::optional<double> after_s;
+    // The horizon runs to the end of what is planned: the pieces behind it have been searched and go.
+    for (double until_s = 0.0;;) {
+        if (const std::optional<double> r = next_rest_point(plan, after_s, until_s)) {
+            ++n;
+            after_s = r;
+            continue;
+        }
+        const double planned_s = plan.complete() ? plan.trajectory().duration_s()
+                                                 : plan.trajectory().pieces().back().t_end_s;
+        if (!(until_s < planned_s)) return n;
+        plan.drop_before(until_s);
+        plan.drop_moves_before(std::numeric_limits<std::size_t>::max());
+        until_s = planned_s;
+    }
+}
+
+ServoCore::ServoCore(const ServoConfig& cfg, planner::PlanFeed& plan, ServoJob job)
     : m_cfg(cfg),
-      m_traj(trajectory),
+      m_plan(plan),
       m_period_s(period_s(cfg)),
       m_land_period_cycles(landing_period_cycles(cfg)),
-      m_rest_s(rest_points(trajectory)),
-      m_laser(trajectory, std::move(laser_intended)) {
+      m_laser(plan, std::move(job.laser_intended)) {
     for (std::size_t a = 0; a < kAxes; ++a) m_params[a] = stepgen_params(cfg, a);
-    for (const double r : m_rest_s) {
-        const std::array<double, kAxes> p = position_steps(m_traj.at(r).pos_mm);
-        m_targets.push_back({std::llround(p[0]), std::llround(p[1])});
-    }
-    m_stats.rest_points = m_rest_s.size();
-    const std::array<double, kAxes> start = position_steps(m_traj.at(0.0).pos_mm);
+    m_stats.rest_points = job.rest_points;
+    const std::array<double, kAxes> start = position_steps(m_plan.at(0.0).pos_mm);
     for (std::size_t a = 0; a < kAxes; ++a) m_law[a].old_pos_cmd_steps = start[a];
 }
 
@@ -88,30 +116,36 @@ const PeriodRecord& ServoCore::step(const std::optional<spi::Feedback>& feedback
         rec.mode = PeriodMode::Done;
         return finish(rec);
     }
-    if (m_landing) {
+    if (m_rest_s) {
         if (!land(rec)) return finish(rec);
         ++m_stats.rest_points_landed;
-        if (m_rest_index + 1 == m_rest_s.size()) {
+        if (last_rest_point(m_plan, *m_rest_s)) {
             m_done = true;
             rec.mode = PeriodMode::Done;
             return finish(rec);
         }
-        ++m_rest_index;
-        m_landing = false;
-        const std::array<double, kAxes> at = position_steps(m_traj.at(m_tau_s).pos_mm);
+        m_rest_s.reset();
+        const std::array<double, kAxes> at = position_steps(m_plan.at(m_tau_s).pos_mm);
         for (std::size_t a = 0; a < kAxes; ++a) m_law[a] = StepgenState{at[a], 0.0};
     }
+    // The clock runs a period on (not in period 0), up to the next rest point: the first after tau, which is
+    // past the last one landed on (tau never passes a rest point).
     const double tau_prev = m_tau_s;
-    if (rec.n > 0) m_tau_s = std::min(m_tau_s + m_period_s, m_rest_s[m_rest_index]);
+    const double tau_next = rec.n > 0 ? m_tau_s + m_period_s : m_tau_s;
+    m_rest_s = next_rest_point(m_plan, rec.n > 0 ? std::optional<double>(m_tau_s) : std::nullopt, tau_next);
+    if (m_rest_s) {
+        const std::array<double, kAxes> p = position_steps(m_plan.at(*m_rest_s).pos_mm);
+        m_target = {std::llround(p[0]), std::llround(p[1])};
+    }
+    if (rec.n > 0) m_tau_s = m_rest_s ? std::min(tau_next, *m_rest_s) : tau_next;
     track(rec);
     rec.laser_on = m_laser.next(tau_prev, m_tau_s);
-    if (m_tau_s >= m_rest_s[m_rest_index]) m_landing = true;
     return finish(rec);
 }
 
 void ServoCore::track(PeriodRecord& rec) {
     rec.mode = PeriodMode::Track;
-    const planner::Sample s = m_traj.at(m_tau_s);
+    const planner::Sample s = m_plan.at(m_tau_s);
     rec.path_speed_mm_per_s = s.path_speed_mm_per_s;
     const std::array<double, kAxes> cmd = position_steps(s.pos_mm);
     for (std::size_t a = 0; a < kAxes; ++a) {
@@ -136,11 +170,11 @@ bool ServoCore::count_is_exact(std::size_t axis) const {
 bool ServoCore::land(PeriodRecord& rec) {
     rec.mode = PeriodMode::Land;
     rec.laser_on = m_laser.next(m_tau_s, m_tau_s);  // the clock is held: off
-    const std::array<std::int64_t, kAxes>& target = m_targets[m_rest_index];
+    const std::array<std::int64_t, kAxes>& target = m_target;
     bool all_landed = true;
     for (std::size_t a = 0; a < kAxes; ++a) {
         AxisPeriod& ap = rec.axes[a];
-        ap.pos_cmd_steps = position_steps(m_traj.at(m_tau_s).pos_mm)[a];
+        ap.pos_cmd_steps = position_steps(m_plan.at(m_tau_s).pos_mm)[a];
         ap.word = spi::AxisRate{0, true};
         const bool settled = count_is_exact(a);
         const std::int64_t d = target[a] - m_count[a];

@@ -45,7 +45,7 @@
 #include <optional>
 #include <vector>
 
-#include "host/core/planner/trajectory.hpp"
+#include "host/core/planner/plan_feed.hpp"
 #include "host/servo/core/laser_bit.hpp"
 #include "host/servo/core/servo_config.hpp"
 #include "host/servo/core/stepgen_law.hpp"
@@ -83,10 +83,16 @@ struct ServoStats {
     std::uint64_t replies_rejected_flag = 0;  // replies reporting a rejected frame
 };
 
+// What the servo knows of the whole job before it starts (the job read once ahead of the run).
+struct ServoJob {
+    std::vector<bool> laser_intended;  // one entry per programmed move (laser_intent(program))
+    std::uint64_t rest_points = 0;     // of the whole plan (count_rest_points), for the report
+};
+
 class ServoCore {
 public:
-    // `laser_intended`: one entry per programmed move (laser_intent(program)).
-    ServoCore(const ServoConfig& cfg, const planner::Trajectory& trajectory, std::vector<bool> laser_intended);
+    // `plan` (which must outlive this) is read as the clock runs: each rest point once the servo heads for it.
+    ServoCore(const ServoConfig& cfg, planner::PlanFeed& plan, ServoJob job);
 
     // One servo period. `feedback`: the reply of the previous transfer (nullopt in the first period).
     const PeriodRecord& step(const std::optional<spi::Feedback>& feedback);
@@ -102,11 +108,10 @@ public:
     // The clock's knots no reader needs any more (TrajectoryClock::drop_before).
     void drop_clock_before(TimePs t_ps, double tau_s) { m_clock.drop_before(t_ps, tau_s); }
     [[nodiscard]] const ServoStats& stats() const { return m_stats; }
-    [[nodiscard]] const std::vector<double>& rest_points_s() const { return m_rest_s; }
-    // Landing target of rest point i, per axis (counts).
-    [[nodiscard]] const std::array<std::int64_t, kAxes>& target(std::size_t rest_point) const {
-        return m_targets[rest_point];
-    }
+    // The rest point the clock is held at while the axes land on it (none while tracking), and its landing
+    // target per axis (counts).
+    [[nodiscard]] std::optional<double> rest_point_s() const { return m_rest_s; }
+    [[nodiscard]] const std::array<std::int64_t, kAxes>& target() const { return m_target; }
     [[nodiscard]] std::array<double, kAxes> position_steps(geom::Vec2 pos_mm) const;
     [[nodiscard]] const ServoConfig& config() const { return m_cfg; }
 
@@ -119,17 +124,15 @@ private:
     const PeriodRecord& finish(PeriodRecord& rec);
 
     const ServoConfig m_cfg;
-    const planner::Trajectory& m_traj;
+    planner::PlanFeed& m_plan;
     const double m_period_s;
     const std::uint32_t m_land_period_cycles;
     std::array<StepgenParams, kAxes> m_params{};
-    std::vector<double> m_rest_s;
-    std::vector<std::array<std::int64_t, kAxes>> m_targets;
     LaserBit m_laser;
 
-    std::size_t m_rest_index = 0;
+    std::optional<double> m_rest_s;  // landing
+    std::array<std::int64_t, kAxes> m_target{};
     double m_tau_s = 0.0;
-    bool m_landing = false;
     bool m_done = false;
     bool m_have_feedback = false;
     std::uint32_t m_fifo_level = 0;
@@ -143,7 +146,13 @@ private:
     ServoStats m_stats;
 };
 
-// The plan's rest points (see above), sorted; {0} for an empty plan.
-[[nodiscard]] std::vector<double> rest_points(const planner::Trajectory& trajectory);
+// The plan's first rest point (see above) after `after_s` (the first of all without) if it is at or before
+// `until_s`, planned as far as that; none otherwise. An empty plan has one, at 0; the last is the plan's end.
+[[nodiscard]] std::optional<double> next_rest_point(planner::PlanFeed& plan, std::optional<double> after_s,
+                                                    double until_s);
+// Whether rest point `rest_s` is the plan's last (the end of the job).
+[[nodiscard]] bool last_rest_point(planner::PlanFeed& plan, double rest_s);
+// Every rest point of the plan, planned to its end (the pieces and moves searched dropped as it goes).
+[[nodiscard]] std::uint64_t count_rest_points(planner::PlanFeed& plan);
 
 }  // namespace cnc::host::servo

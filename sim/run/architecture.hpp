@@ -23,7 +23,7 @@ struct Architecture {
     ArchRun (*run)(const Scenario& s, const Job& job);
     bool runs_job;  // the host runs scenario.job (G-code or steps file); false: the architecture scripts itself
     LaserSwitching laser_switching;  // how the job's laser words reach the head (program warnings)
-    // The run reads a G-code job's moves from the file as it sends them (Job::program keeps no moves).
+    // The run reads a G-code job's moves from the file again as it runs (Job::program keeps no moves).
     bool streams_job;
 };
 

@@ -18,7 +18,8 @@
 // - Look-ahead (lookahead.hpp): while a piece runs, the machine must be able to stop at the end of the
 //   lookahead_moves programmed moves starting with its own: backward pass per piece over that window, forward
 //   pass with the acceleration limit; O(pieces * window). The plan of a piece therefore needs the program only up
-//   to the end of its window: plan_stream.hpp plans a job a move at a time, of which plan() is the whole-program case.
+//   to the end of its window: plan_stream.hpp plans a job a move at a time, of which plan() is the whole-program case,
+//   and plan_feed.hpp reads and plans it only as far as its readers ask.
 // - Moves shorter than 1e-9 mm are skipped.
 #pragma once
 #include "host/core/gcode.hpp"

@@ -10,6 +10,8 @@
 //     the times at which the plan comes to rest: every programmed move end in exact-stop mode, reversals and
 //     corners without a blend in continuous mode, and the job end. The host holds tau at a rest point until
 //     every axis has landed on it (below), then runs on: an in-position check before the next move starts.
+//     The plan is read as the clock runs (planner::PlanFeed): the next rest point is looked for only up to
+//     tau_{n-1} + T, and its landing target worked out once it is found.
 //  3. Tracking (stepgen_law.hpp, per axis, in steps from the origin): pos_cmd = planner position at tau_n;
 //     pos_fb = the snapshot count + the rate of the word sent last period x T (the full-duplex reply is one
 //     period old: the host extrapolates with the rate it commanded itself, which makes the loop hm2's, whose read

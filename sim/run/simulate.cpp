@@ -17,6 +17,10 @@ namespace {
 constexpr TimePs kFirstSlicePs = 10 * kPsPerMs;
 constexpr double kSliceWallMinS = 0.05;
 constexpr double kSliceWallMaxS = 0.2;
+// ... and at most this much simulated time: the streaming metrics hold a slice's edges and samples until it ends,
+// so memory must not depend on how fast the machine ran the slices before (a slice doubled in a light stretch of a
+// job held 30 MiB of a raster's edges). At 200x real time this is 5 ms of wall time.
+constexpr TimePs kSliceMaxPs = kPsPerSec;
 // The largest scenario.max_sim_s (11.6 days), also for a job whose estimate is longer: TimePs holds 106 days.
 constexpr double kMaxLimitS = 1e6;
 
@@ -72,7 +76,7 @@ SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& fin
         progress.update(ps_to_s(now_ps()), wall_s);
         if (check_ps == 0) {
             const double slice_wall_s = wall_s - slice_start_s;
-            if (slice_wall_s < kSliceWallMinS) slice_ps = std::min(2 * slice_ps, budget.limit_ps);
+            if (slice_wall_s < kSliceWallMinS) slice_ps = std::min({2 * slice_ps, budget.limit_ps, kSliceMaxPs});
             if (slice_wall_s > kSliceWallMaxS && slice_ps > 1) slice_ps /= 2;
         }
     }

@@ -214,6 +214,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
         feed.emplace(
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
             s.detail);
+        // Every fold comes right after the pins were read up to its instant: what they hold is all before it.
         feed->take_edges_with([&pins](const std::string& pin, TimePs) { return pins.hand_over(pin); });
     }
     std::size_t handed = 0;  // motion windows handed to the metrics

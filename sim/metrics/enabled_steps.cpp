@@ -4,27 +4,33 @@
 
 namespace cnc::metrics {
 
-EdgeLog enabled_steps(const EdgeLog& step, const EdgeLog& enable, EnableLevel active) {
-    const bool enabled_level = active == EnableLevel::ActiveHigh;
+EnabledStepsFold::EnabledStepsFold(bool enable_initial, EnableLevel active)
+    : m_enabled_level(active == EnableLevel::ActiveHigh), m_enabled(enable_initial == m_enabled_level) {}
+
+EdgeLog EnabledStepsFold::add(const EdgeLog& step, const EdgeLog& enable) {
     EdgeLog out;
     out.name = step.name;
     out.initial = false;
     std::size_t e = 0;
-    bool enabled = enable.initial == enabled_level;
-    bool in_pulse = false;
     for (const Edge& s : step.edges) {
         while (e < enable.edges.size() && enable.edges[e].t_ps < s.t_ps) {
-            enabled = enable.edges[e++].level == enabled_level;
+            m_enabled = enable.edges[e++].level == m_enabled_level;
         }
-        if (s.level && enabled) {
+        if (s.level && m_enabled) {
             out.add(s.t_ps, true);
-            in_pulse = true;
-        } else if (!s.level && in_pulse) {
+            m_in_pulse = true;
+        } else if (!s.level && m_in_pulse) {
             out.add(s.t_ps, false);
-            in_pulse = false;
+            m_in_pulse = false;
         }
     }
+    // The next piece's STEP edges come after every enable edge of this one.
+    if (!enable.edges.empty()) m_enabled = enable.edges.back().level == m_enabled_level;
     return out;
+}
+
+EdgeLog enabled_steps(const EdgeLog& step, const EdgeLog& enable, EnableLevel active) {
+    return EnabledStepsFold(enable.initial, active).add(step, enable);
 }
 
 }  // namespace cnc::metrics

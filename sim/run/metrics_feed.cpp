@@ -12,7 +12,8 @@ metrics::RunInput shape(const EdgeRecorder& rec, const std::vector<AxisPins>& ax
     for (const AxisPins& a : axes) {
         const EdgeLog& step = rec.log(a.step_pin);
         const EdgeLog& dir = rec.log(a.dir_pin);
-        in.axes.push_back({a.name, {step.name, step.initial, {}}, {dir.name, dir.initial, {}}, a.steps_per_mm, true});
+        in.axes.push_back({a.name, {step.name, step.initial, {}}, {dir.name, dir.initial, {}}, a.steps_per_mm,
+                           a.dir_high_is_positive});
     }
     const EdgeLog& laser = rec.log(laser_pin);
     in.laser = EdgeLog{laser.name, laser.initial, {}};
@@ -25,19 +26,19 @@ void append(EdgeLog& to, const EdgeLog& from) { to.edges.insert(to.edges.end(), 
 
 MetricsFeed::MetricsFeed(EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin,
                          TakeSamplesBefore take_samples, bool detail, metrics::PieceMeasured on_piece)
-    : m_rec(rec),
-      m_axes(axes),
+    : m_axes(axes),
       m_laser_pin(laser_pin),
       m_take_samples(std::move(take_samples)),
+      m_take_edges([&rec](const std::string& pin, TimePs t_ps) { return rec.take_before(pin, t_ps); }),
       m_stream(shape(rec, axes, laser_pin), detail, std::move(on_piece)) {}
 
 void MetricsFeed::take_until(TimePs t_ps) {
     metrics::RunInput& p = m_stream.pending();
     for (std::size_t a = 0; a < m_axes.size(); ++a) {
-        append(p.axes[a].step, m_rec.take_before(m_axes[a].step_pin, t_ps));
-        append(p.axes[a].dir, m_rec.take_before(m_axes[a].dir_pin, t_ps));
+        append(p.axes[a].step, m_take_edges(m_axes[a].step_pin, t_ps));
+        append(p.axes[a].dir, m_take_edges(m_axes[a].dir_pin, t_ps));
     }
-    append(*p.laser, m_rec.take_before(m_laser_pin, t_ps));
+    append(*p.laser, m_take_edges(m_laser_pin, t_ps));
     const std::vector<ToolSample> samples = m_take_samples(t_ps);
     p.tool.insert(p.tool.end(), samples.begin(), samples.end());
 }

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/tool_sample.hpp"
@@ -17,10 +18,14 @@ struct AxisPins {
     std::string name;  // x, y
     std::string step_pin, dir_pin;  // recorder pin names
     double steps_per_mm = 0.0;
+    bool dir_high_is_positive = true;
 };
 
 // The carriage's tool samples taken before a time, handed over and forgotten there (mech::Carriage).
 using TakeSamplesBefore = std::function<std::vector<ToolSample>(TimePs)>;
+// A pin's edges before a time, handed over and forgotten there: the recorder's (EdgeRecorder::take_before), or what
+// an architecture made of them (atmega: the STEP pulses its drivers take).
+using TakeEdgesBefore = std::function<EdgeLog(const std::string& pin, TimePs)>;
 
 class MetricsFeed {
 public:
@@ -29,6 +34,8 @@ public:
     MetricsFeed(EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin,
                 TakeSamplesBefore take_samples, bool detail, metrics::PieceMeasured on_piece = {});
 
+    // Where the edges come from instead of the recorder (whose logs still give the pins' initial levels).
+    void take_edges_with(TakeEdgesBefore take_edges) { m_take_edges = std::move(take_edges); }
     // A piece that began, in execution order, with its t_end_ps set once it has ended.
     void add_piece(metrics::MoveSpec piece) { m_stream.pending().moves.push_back(std::move(piece)); }
     // Where the run adds what else it knows so far: a commanded trajectory, rate segments (metrics_stream.hpp).
@@ -42,10 +49,10 @@ public:
 private:
     void take_until(TimePs t_ps);
 
-    EdgeRecorder& m_rec;
     std::vector<AxisPins> m_axes;
     std::string m_laser_pin;
     TakeSamplesBefore m_take_samples;
+    TakeEdgesBefore m_take_edges;
     metrics::MetricsStream m_stream;
 };
 

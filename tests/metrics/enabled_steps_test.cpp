@@ -28,5 +28,22 @@ TEST(EnabledSteps, ActiveHighEnableIsTheMirror) {
     EXPECT_EQ(enabled_steps(kStep, enable, EnableLevel::ActiveLow).rising(), (std::vector<TimePs>{10, 50}));
 }
 
+// Read in pieces cut anywhere (inside a pulse, at an enable change, with enable edges after a piece's last STEP
+// edge), the fold gives the whole run's pulses.
+TEST(EnabledSteps, FoldedPieceByPieceEqualsTheWholeRun) {
+    const EdgeLog n_enbl{"n_enbl_x", false, {{30, true}, {55, false}}};  // the second case above
+    const EdgeLog whole = enabled_steps(kStep, n_enbl, EnableLevel::ActiveLow);
+    for (TimePs cut = 0; cut <= 70; ++cut) {
+        EdgeLog step = kStep;
+        EdgeLog enable = n_enbl;
+        EnabledStepsFold fold(enable.initial, EnableLevel::ActiveLow);
+        EdgeLog got = fold.add(step.take_before(cut), enable.take_before(cut));
+        const EdgeLog rest = fold.add(step.take_before(100), enable.take_before(100));
+        got.edges.insert(got.edges.end(), rest.edges.begin(), rest.edges.end());
+        EXPECT_EQ(got.rising(), whole.rising()) << "cut at " << cut;
+        EXPECT_EQ(got.falling(), whole.falling()) << "cut at " << cut;
+    }
+}
+
 }  // namespace
 }  // namespace cnc::metrics

@@ -44,12 +44,6 @@ std::vector<TimePs> transfer_arrivals(const AtmegaFacts& f) {
     return at;
 }
 
-std::int64_t steps_in(const EdgeLog& steps, TimePs from_ps, TimePs to_ps) {
-    std::int64_t n = 0;
-    for (const Edge& e : steps.edges) n += e.level && e.t_ps > from_ps && e.t_ps < to_ps;
-    return n;
-}
-
 nlohmann::json motion_json(const AtmegaFacts& f, s3::CommandId id, const s3::Motion& m, const MotionWindow* w) {
     const s3::TimerClock clk;
     nlohmann::json j = {{"line", m.line},
@@ -108,7 +102,7 @@ ChordGaps chord_gaps(const AtmegaFacts& f) {
         if (ready <= prev.t_end_ps) continue;
         ++g.late;
         g.wait_max_ps = std::max(g.wait_max_ps, w.t_begin_ps - prev.t_end_ps);
-        g.y_steps_waiting += steps_in(f.y_steps, prev.t_end_ps, w.t_begin_ps);
+        g.y_steps_waiting += w.y_steps_before_begin - prev.y_steps_through_end;
     }
     return g;
 }

@@ -29,7 +29,6 @@ struct AtmegaFacts {
     const uart::Cp2102& cp2102;
     const avr::AvrCore& mcu;
     const std::vector<MotionWindow>& windows;
-    const EdgeLog& y_steps;  // Y steps the driver took (enabled)
     std::string firmware;
     double mcu_baud = 0.0;   // f_cpu / (16 (UBRR0 + 1))
 };

@@ -2,21 +2,24 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
 #include "common/text_format.hpp"
 #include "host/core/seed003/firmware_busy.hpp"
 #include "host/pc_program.hpp"
-#include "metrics/enabled_steps.hpp"
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
+#include "run/metrics_feed.hpp"
 #include "run/moves.hpp"
 #include "run/simulate.hpp"
 #include "systems/atmega/atmega_report.hpp"
 #include "systems/atmega/firmware_usart.hpp"
-#include "systems/atmega/motion_windows.hpp"
+#include "systems/atmega/atmega_pins.hpp"
 #include "systems/link_checks.hpp"
 #include "systems/machine.hpp"
 #include "systems/mechanics_report.hpp"
@@ -76,24 +79,17 @@ uart::Cp2102Config link_config(const Scenario& s) {
     return link;
 }
 
-// The metrics' moves: one per motion that ran, its window from the PORTB pins. A G00 runs each axis at v_max
-// on its own (the seed's dog-leg), so its commanded per-axis rates are v_max, not the path feed split.
-std::vector<metrics::MoveSpec> executed_moves(const Scenario& s, const Job& job, const s3::Plan& plan,
-                                              const std::vector<MotionWindow>& windows) {
-    std::vector<metrics::MoveSpec> moves = commanded_moves(&*job.program, s3::motion_segments(plan, s.machine),
-                                                           s.machine, s.interpreter.start_mm);
-    moves.resize(windows.size());
-    for (std::size_t i = 0; i < windows.size(); ++i) {
-        metrics::MoveSpec& m = moves[i];
-        m.t_begin_ps = windows[i].t_begin_ps;
-        m.t_end_ps = windows[i].t_end_ps;
-        if (m.rapid) {
-            const double v_mm_per_s = m.feed_mm_per_min / 60.0;
-            m.rate_steps_per_s = {m.steps[0] != 0 ? v_mm_per_s * s.machine.x.steps_per_mm() : 0.0,
-                                  m.steps[1] != 0 ? v_mm_per_s * s.machine.y.steps_per_mm() : 0.0};
-        }
+// The metrics' move of a motion that ran, its window from the PORTB pins. A G00 runs each axis at v_max on its
+// own (the seed's dog-leg), so its commanded per-axis rates are v_max, not the path feed split.
+metrics::MoveSpec executed_move(const Scenario& s, metrics::MoveSpec m, const MotionWindow& window) {
+    m.t_begin_ps = window.t_begin_ps;
+    m.t_end_ps = window.t_end_ps;
+    if (m.rapid) {
+        const double v_mm_per_s = m.feed_mm_per_min / 60.0;
+        m.rate_steps_per_s = {m.steps[0] != 0 ? v_mm_per_s * s.machine.x.steps_per_mm() : 0.0,
+                              m.steps[1] != 0 ? v_mm_per_s * s.machine.y.steps_per_mm() : 0.0};
     }
-    return moves;
+    return m;
 }
 
 // The programmed move of each transfer; M30 belongs to none (the waits after the last move come before it).
@@ -193,47 +189,86 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     Machine machine("machine", s.machine, driver, s.interpreter.start_mm, s.mechanics);
     machine.bind(w.step_x, w.dir_x, w.n_enbl_x, w.step_y, w.dir_y, w.n_enbl_y, w.laser);
     EdgeRecorder rec("probes");
-    for (const sc_core::sc_signal<bool>* sig : w.all()) rec.watch(*sig, sig->basename());
+    for (const sc_core::sc_signal<bool>* sig : {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.n_enbl_x, &w.n_enbl_y,
+                                                &w.laser}) {
+        rec.watch(*sig, sig->basename());
+    }
+    if (s.keep_run_input) {  // the link's lines: only the tests read them
+        for (const sc_core::sc_signal<bool>* sig : {&w.uart_rx, &w.uart_tx}) rec.watch(*sig, sig->basename());
+    }
     std::unique_ptr<VcdTrace> vcd;
     if (!s.vcd_path.empty()) {
         vcd = std::make_unique<VcdTrace>(s, traced_pins(w, avr_cfg.f_cpu_hz), machine.traced_positions());
     }
 
     const RunBudget budget = run_budget(s, estimate_job(*job.program, pace(s, link, transfers)));
-    const SimulationEnd end =
-        simulate(budget, [&] { return mcu.stopped() || link_failure(mcu, cp2102, pc).has_value(); }, kStopCheckPs);
+    // The pins are read slice by slice and the metrics stream (their inputs dropped as they are measured), unless
+    // the whole logs are asked for: then they are read once, at the end, for the batch metrics.
+    AtmegaPins pins(rec, plan, s.keep_run_input);
+    const std::vector<metrics::MoveSpec> commanded =
+        commanded_moves(&*job.program, s3::motion_segments(plan, s.machine), s.machine, s.interpreter.start_mm);
+    std::optional<MetricsFeed> feed;
+    if (!s.keep_run_input) {
+        const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm(), false},
+                                         {"y", "step_y", "dir_y", s.machine.y.steps_per_mm(), false}};
+        feed.emplace(
+            rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
+            s.detail);
+        // Every fold comes right after the pins were read up to its instant: what they hold is all before it.
+        feed->take_edges_with([&pins](const std::string& pin, TimePs) { return pins.hand_over(pin); });
+    }
+    std::size_t handed = 0;  // motion windows handed to the metrics
+    const auto hand_ended_moves = [&] {
+        for (; handed < pins.windows().size(); ++handed) {
+            feed->add_piece(executed_move(s, commanded[handed], pins.windows()[handed]));
+        }
+    };
+    const SimulationEnd end = simulate(
+        budget, [&] { return mcu.stopped() || link_failure(mcu, cp2102, pc).has_value(); }, kStopCheckPs,
+        [&](TimePs now_ps) {
+            if (!feed) return;
+            pins.read_before(now_ps);
+            hand_ended_moves();
+            feed->fold(now_ps);
+        });
     const TimePs t_now = end.t_ps;
     if (vcd) vcd->close();
 
     ArchRun run;
     record_budget(budget, run);
-    const std::vector<MotionWindow> windows = motion_windows(
-        plan, {rec.log("n_enbl_x"), rec.log("n_enbl_y"), rec.log("dir_x"), rec.log("dir_y"), rec.log("laser")},
-        t_now);
+    pins.read_before(std::numeric_limits<TimePs>::max());
+    pins.finish(t_now);
     metrics::RunInput& in = run.input;
-    const auto driven = [&rec](const char* step, const char* n_enbl) {  // the DRV8825's nENBL is active low
-        return metrics::enabled_steps(rec.log(step), rec.log(n_enbl), metrics::EnableLevel::ActiveLow);
-    };
-    in.axes.push_back(
-        {"x", driven("step_x", "n_enbl_x"), rec.take("dir_x"), s.machine.x.steps_per_mm(), false});
-    in.axes.push_back(
-        {"y", driven("step_y", "n_enbl_y"), rec.take("dir_y"), s.machine.y.steps_per_mm(), false});
-    in.moves = executed_moves(s, job, plan, windows);
-    in.tool = machine.carriage().samples();
-    in.laser = rec.take("laser");
     in.t_job_start_ps = 0;
     in.t_job_end_ps = mcu.chip().stop_cycle() ? mcu.cycle_ps(*mcu.chip().stop_cycle()) : t_now;
-    for (const char* pin : {"uart_rx", "uart_tx", "n_enbl_x", "n_enbl_y"}) run.lines[pin] = rec.take(pin);
-    run.lines["step_x_pin"] = rec.take("step_x");  // the raw pins: the timers toggle them while EN is high too
-    run.lines["step_y_pin"] = rec.take("step_y");
+    if (feed) {
+        hand_ended_moves();
+        run.metrics = feed->finish(in.t_job_end_ps);
+    } else {
+        in.axes.push_back({"x", pins.hand_over("step_x"), pins.hand_over("dir_x"), s.machine.x.steps_per_mm(), false});
+        in.axes.push_back({"y", pins.hand_over("step_y"), pins.hand_over("dir_y"), s.machine.y.steps_per_mm(), false});
+        for (std::size_t i = 0; i < pins.windows().size(); ++i) {
+            in.moves.push_back(executed_move(s, commanded[i], pins.windows()[i]));
+        }
+        in.tool = machine.carriage().samples();
+        in.laser = pins.hand_over("laser");
+        for (const char* pin : {"uart_rx", "uart_tx"}) run.lines[pin] = rec.take(pin);
+        for (const char* pin : {"n_enbl_x", "n_enbl_y"}) run.lines[pin] = pins.take_raw(pin);
+        run.lines["step_x_pin"] = pins.take_raw("step_x");  // the raw pins: the timers toggle them while EN is high too
+        run.lines["step_y_pin"] = pins.take_raw("step_y");
+    }
 
     run.warnings = plan.warnings;
-    const AtmegaFacts facts{plan, s.machine, pc, cp2102, mcu, windows, in.axes[1].step, avr_cfg.firmware_elf,
+    const AtmegaFacts facts{plan, s.machine, pc, cp2102, mcu, pins.windows(), avr_cfg.firmware_elf,
                             mcu.chip().rx_clock().baud()};
     for (Warning& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
     run.details = details_json(facts, s.detail);
     run.details_text = details_text(facts);
-    add_mechanics_report(machine, run);
+    if (feed) {
+        add_mechanics_report(machine, feed->laser_exposure(), run);
+    } else {
+        add_mechanics_report(machine, run);
+    }
 
     if (const std::optional<std::string> why = link_failure(mcu, cp2102, pc)) {
         run.ok = false;

@@ -1,24 +1,21 @@
 #include "systems/atmega/motion_windows.hpp"
 
-#include <algorithm>
 #include <map>
-#include <optional>
+#include <utility>
 
 namespace cnc::sim {
 
-namespace {
-
 namespace s3 = host::seed003;
 
-// The PORTB pins at one instant where any of them changed.
-struct PortEvent {
-    TimePs t_ps = 0;
-    bool en_x_high = false;
-    bool en_y_high = false;
-    bool en_x_rise_alone = false;  // the end of an ISR count: nothing but EN_X, rising
-};
+namespace {
 
-std::vector<PortEvent> port_events(const PortbLines& l) {
+bool both_high(bool en_x_high, bool en_y_high) { return en_x_high && en_y_high; }
+
+}  // namespace
+
+MotionWindowFold::MotionWindowFold(const s3::Plan& plan) : m_plan(plan), m_command(command_from(0)) {}
+
+void MotionWindowFold::add(const PortbLines& l, const EdgeLog& y_steps) {
     enum Line { EnX, EnY, Other };
     std::map<TimePs, std::vector<std::pair<Line, bool>>> at;
     const std::pair<const EdgeLog*, Line> logs[] = {
@@ -26,7 +23,9 @@ std::vector<PortEvent> port_events(const PortbLines& l) {
     for (const auto& [log, line] : logs) {
         for (const Edge& e : log->edges) at[e.t_ps].emplace_back(line, e.level);
     }
-    std::vector<PortEvent> events;
+    const std::vector<TimePs> y_rises = y_steps.rising();
+    std::size_t y_before = 0;   // rises before the event
+    std::size_t y_through = 0;  // rises up to it
     bool en_x = l.en_x.initial;
     bool en_y = l.en_y.initial;
     for (const auto& [t, changes] : at) {
@@ -43,76 +42,85 @@ std::vector<PortEvent> port_events(const PortbLines& l) {
                 others = true;
             }
         }
-        events.push_back({t, en_x, en_y, en_x_rose && !others});
+        while (y_before < y_rises.size() && y_rises[y_before] < t) ++y_before;
+        while (y_through < y_rises.size() && y_rises[y_through] <= t) ++y_through;
+        add(PortEvent{t, en_x, en_y, en_x_rose && !others, m_y_steps + static_cast<std::int64_t>(y_before),
+                      m_y_steps + static_cast<std::int64_t>(y_through)});
     }
-    return events;
+    m_y_steps += static_cast<std::int64_t>(y_rises.size());
 }
 
-bool both_high(const PortEvent& e) { return e.en_x_high && e.en_y_high; }
-
-class Walker {
-public:
-    Walker(std::vector<PortEvent> events, TimePs t_sim_end_ps) : m_ev(std::move(events)), m_t_sim_end(t_sim_end_ps) {}
-
-    // First event at or after the cursor matching `pred`.
-    template <class Pred>
-    std::optional<std::size_t> find(std::size_t from, Pred pred) const {
-        for (std::size_t i = from; i < m_ev.size(); ++i) {
-            if (pred(m_ev[i])) return i;
+void MotionWindowFold::add(const PortEvent& e) {
+    const bool both = both_high(e.en_x_high, e.en_y_high);
+    if (!m_running) {
+        if (m_command && !both) {
+            m_open = MotionWindow{*m_command, 0, 0, 0, true, 0, 0};
+            begin(e);
         }
-        return std::nullopt;
+        return;
     }
-    [[nodiscard]] TimePs t(std::size_t i) const { return m_ev[i].t_ps; }
-    [[nodiscard]] TimePs t_sim_end() const { return m_t_sim_end; }
+    if (arc() && !last_motion()) {
+        if (e.en_x_rise_alone) {
+            if (!m_isr) m_isr = e;
+            return;
+        }
+        // The reload: the next chord starts here.
+        close(m_isr ? m_isr->t_ps : e.t_ps, m_isr ? m_isr->y_through : e.y_through, true);
+        m_open.motion += 1;
+        begin(e);
+        return;
+    }
+    if (arc() && e.en_x_rise_alone && !m_isr) m_isr = e;
+    if (!both) return;
+    close(m_isr ? m_isr->t_ps : e.t_ps, m_isr ? m_isr->y_through : e.y_through, true);
+    m_running = false;
+    m_command = command_from(m_open.command + 1);
+}
 
-private:
-    std::vector<PortEvent> m_ev;
-    TimePs m_t_sim_end;
-};
+void MotionWindowFold::finish(TimePs t_sim_end_ps) {
+    if (!m_running) return;
+    // An unfinished chord that is not its arc's last may have ended at its ISR all the same.
+    const bool chord_ended = arc() && !last_motion() && m_isr;
+    close(chord_ended ? m_isr->t_ps : t_sim_end_ps, chord_ended ? m_isr->y_through : m_y_steps, false);
+    m_running = false;
+}
 
-}  // namespace
+std::optional<std::size_t> MotionWindowFold::command_from(std::size_t from) const {
+    for (std::size_t c = from; c < m_plan.commands.size(); ++c) {
+        if (!m_plan.commands[c].motions.empty()) return c;
+    }
+    return std::nullopt;
+}
+
+void MotionWindowFold::begin(const PortEvent& e) {
+    m_open.t_begin_ps = e.t_ps;
+    m_open.y_steps_before_begin = e.y_before;
+    m_isr.reset();
+    m_running = true;
+}
+
+void MotionWindowFold::close(TimePs t_end_ps, std::int64_t y_through, bool complete) {
+    m_open.t_end_ps = t_end_ps;
+    m_open.y_steps_through_end = y_through;
+    m_open.complete = complete;
+    m_windows.push_back(m_open);
+}
+
+// Whether the motion under way is an arc's chord: its end is the ISR's (a G00 or G01 is one motion: plan.cpp).
+bool MotionWindowFold::arc() const {
+    const s3::CommandId id = m_plan.commands[m_open.command].id;
+    return id == s3::CommandId::G02 || id == s3::CommandId::G03;
+}
+
+bool MotionWindowFold::last_motion() const {
+    return m_open.motion + 1 == m_plan.commands[m_open.command].motions.size();
+}
 
 std::vector<MotionWindow> motion_windows(const s3::Plan& plan, const PortbLines& lines, TimePs t_sim_end_ps) {
-    const Walker w(port_events(lines), t_sim_end_ps);
-    std::vector<MotionWindow> out;
-    std::size_t cursor = 0;
-    for (std::size_t c = 0; c < plan.commands.size(); ++c) {
-        const s3::Command& cmd = plan.commands[c];
-        if (cmd.motions.empty()) continue;
-        const auto start = w.find(cursor, [](const PortEvent& e) { return !both_high(e); });
-        if (!start) break;
-        const bool arc = cmd.id == s3::CommandId::G02 || cmd.id == s3::CommandId::G03;
-        std::size_t at = *start;
-        for (std::size_t m = 0; m < cmd.motions.size(); ++m) {
-            MotionWindow win{c, m, w.t(at), w.t_sim_end(), false};
-            const bool last = m + 1 == cmd.motions.size();
-            if (arc && !last) {
-                const auto isr = w.find(at + 1, [](const PortEvent& e) { return e.en_x_rise_alone; });
-                const auto next = w.find(at + 1, [](const PortEvent& e) { return !e.en_x_rise_alone; });
-                if (!next) {
-                    if (isr) win.t_end_ps = w.t(*isr);
-                    out.push_back(win);
-                    return out;
-                }
-                win.t_end_ps = isr && *isr < *next ? w.t(*isr) : w.t(*next);
-                win.complete = true;
-                out.push_back(win);
-                at = *next;
-                continue;
-            }
-            const auto end = w.find(at + 1, both_high);
-            if (!end) {
-                out.push_back(win);
-                return out;
-            }
-            const auto isr = arc ? w.find(at + 1, [](const PortEvent& e) { return e.en_x_rise_alone; }) : std::nullopt;
-            win.t_end_ps = isr && *isr <= *end ? w.t(*isr) : w.t(*end);
-            win.complete = true;
-            out.push_back(win);
-            cursor = *end + 1;
-        }
-    }
-    return out;
+    MotionWindowFold fold(plan);
+    fold.add(lines, EdgeLog{});
+    fold.finish(t_sim_end_ps);
+    return fold.windows();
 }
 
 }  // namespace cnc::sim

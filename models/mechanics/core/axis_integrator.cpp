@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace cnc::mech {
@@ -88,10 +89,12 @@ bool AxisIntegrator::converged() const {
            std::abs(x[kIa] - sp.a_a) < kRestCurrentErrorA && std::abs(x[kIb] - sp.b_a) < kRestCurrentErrorA;
 }
 
-void AxisIntegrator::start_at(const AxisState& x, double t_s) {
+void AxisIntegrator::start_at(const AxisState& x, double t_s) { start_at(x, t_s, rotor_angle(m_ode.params().motor, x[kTheta])); }
+
+void AxisIntegrator::start_at(const AxisState& x, double t_s, RotorAngle angle) {
     m_front_x = x;
     m_front_t_s = t_s;
-    m_front_angle = rotor_angle(m_ode.params().motor, x[kTheta]);
+    m_front_angle = angle;
     m_front_modes = m_ode.modes(x, m_front_angle);
     m_ode.derivative(x, m_front_dxdt, m_front_modes, m_front_angle);
     m_front_valid = true;
@@ -132,14 +135,14 @@ void AxisIntegrator::step() {
         const double dt = m_dt_s;
         const double t0 = m_front_t_s;
         const double t1 = t0 + dt;
-        const CurrentFrame frame(m_ode, m_front_modes, m_front_x, m_front_angle, t0);
+        const CurrentFrame frame(m_ode, m_front_modes, m_front_x, m_front_angle, t0, dt);
         AxisState y0 = m_front_x;
         AxisState dy0 = m_front_dxdt;
         frame.enter(y0, dy0);
         AxisState y1;
         AxisState dy1;
         AxisState err;
-        m_stepper.do_step(frame, y0, dy0, t0, y1, dy1, dt, err);
+        m_stepper.do_step(std::cref(frame), y0, dy0, t0, y1, dy1, dt, err);  // odeint copies a system per call
         const double ratio = error_ratio(err, y0, dy0, dt, m_tol);
         if (ratio > 1.0) {
             m_dt_s = m_step_control.next_step_s(dt, ratio);
@@ -177,7 +180,8 @@ void AxisIntegrator::step() {
         m_front_t_s = t1;
         auto margin_at = [&](double t) { return crossed_margin(frame.mode_margins(state_in_step(t))); };
         const double t_switch = mode_switch_time_s(margin_at, t0, margin0, t1, crossed_margin(margins1));
-        start_at(state_in_step(t_switch), t_switch);
+        const AxisState x_switch = state_in_step(t_switch);
+        start_at(x_switch, t_switch, frame.angle(x_switch[kTheta]));
         return;
     }
 }

@@ -58,8 +58,11 @@ private:
                                                               boost::numeric::odeint::vector_space_algebra>;
 
     [[nodiscard]] bool converged() const;
-    // Continues from state x at time t, in the modes of x.
+    // Continues from state x at time t, in the modes of x (`angle`: the rotor angle of x, if known from the
+    // step that spans t; else the libm's, which also ends the carried angle's rounding drift at each
+    // set-point change).
     void start_at(const AxisState& x, double t_s);
+    void start_at(const AxisState& x, double t_s, RotorAngle angle);
     // One accepted step from the front (a rejected try is retried smaller).
     void step();
     // The state at t within the last step (its interpolant, or its end).

@@ -81,14 +81,15 @@ private:
         double k_n_per_m;
         double dk_dx_n_per_m2;  // 0 where a span is held at its shortest
     };
-    // k = c/L1 + c/L2 with dL1/dx = 1, dL2/dx = -1: dk/dx = c/L2^2 - c/L1^2.
+    // k = c/L1 + c/L2 = c (L1 + L2) / (L1 L2) with dL1/dx = 1, dL2/dx = -1:
+    // dk/dx = c/L2^2 - c/L1^2 = c (L1 + L2)(L1 - L2) / (L1 L2)^2 (one division: they run at every stage).
     [[nodiscard]] BeltStiffness belt_stiffness(double x_m) const {
         const double free_l1 = m_home_span_m + x_m;
         const double l1 = std::clamp(free_l1, kMinSpanM, m_total_span_m - kMinSpanM);
-        const double inv_l1 = 1.0 / l1;
-        const double inv_l2 = 1.0 / (m_total_span_m - l1);
-        const double c = m_specific_stiffness_n;
-        return {c * (inv_l1 + inv_l2), l1 == free_l1 ? c * (inv_l2 * inv_l2 - inv_l1 * inv_l1) : 0.0};
+        const double l2 = m_total_span_m - l1;
+        const double inv_l1_l2 = 1.0 / (l1 * l2);
+        const double k = m_specific_stiffness_n * (l1 + l2) * inv_l1_l2;
+        return {k, l1 == free_l1 ? k * (l1 - l2) * inv_l1_l2 : 0.0};
     }
     // The screw's travel beyond the backlash either way (0 within it).
     [[nodiscard]] double dead_zone(double d) const {

@@ -23,8 +23,10 @@ DynamicAxis::DynamicAxis(const AxisParams& params, const IntegratorTolerances& t
 }
 
 void DynamicAxis::advance(TimePs t_ps) const {
+    if (t_ps == m_tracked_ps) return;  // a second query at the same instant: nothing moved
     m_integrator.advance_to(ps_to_s(t_ps));
     track_load_angle(t_ps);
+    m_tracked_ps = t_ps;
 }
 
 double DynamicAxis::lag_electrical_rad() const {
@@ -59,6 +61,7 @@ void DynamicAxis::on_microstep(TimePs t_ps, std::int64_t microstep_index, int mi
     advance(t_ps);
     const std::int64_t previous = m_units;
     m_units = microstep_index * (kIndexerUnitsPerFullStep / microsteps_per_full_step);
+    m_tracked_ps = -1;  // the command moved: the load angle changed at this instant
     track_ripple(t_ps, previous);
     apply_setpoints();
 }
@@ -82,6 +85,7 @@ void DynamicAxis::on_enable(TimePs t_ps, bool enabled) {
     advance(t_ps);
     if (enabled && !m_enabled) m_slip_periods = std::llround(lag_electrical_rad() / (2.0 * kPi));
     m_enabled = enabled;
+    m_tracked_ps = -1;
     apply_setpoints();
 }
 

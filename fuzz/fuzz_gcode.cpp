@@ -1,6 +1,7 @@
 // libFuzzer harness: a G-code job through the interpreter (both policies), the soft limits, and the host planner
 // of each architecture: fpga-uart's CAM (and its steps file written and read back), the atmega PC program's plan
-// (its bytes and motion segments) and the spi-fpga trajectory planner (sampled as the servo thread samples it).
+// (its bytes and motion segments) and the spi-fpga trajectory planner (sampled as the servo thread samples it),
+// planned both whole and as it is read (PlanFeed), which must agree bit for bit.
 // Only cnc::BadInput may leave the library code; anything else (another exception, a sanitizer report, a
 // broken invariant below) is a finding.
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -15,6 +17,7 @@
 #include "host/core/cam.hpp"
 #include "host/core/gcode.hpp"
 #include "host/core/machine.hpp"
+#include "host/core/planner/plan_feed.hpp"
 #include "host/core/planner/planner.hpp"
 #include "host/core/seed003/plan.hpp"
 #include "host/core/soft_limits.hpp"
@@ -74,24 +77,54 @@ void atmega_pc_program(const Program& program, const MachineModel& machine) {
     (void)seed003::motion_segments(plan, machine);
 }
 
-void spi_fpga_planner(const Program& program, const MachineModel& machine, planner::Profile profile,
-                      planner::BlendMode mode) {
+bool same_sample(const planner::Sample& a, const planner::Sample& b) {
+    return a.t_s == b.t_s && a.pos_mm.x_mm == b.pos_mm.x_mm && a.pos_mm.y_mm == b.pos_mm.y_mm &&
+           a.vel_mm_per_s.x_mm == b.vel_mm_per_s.x_mm && a.vel_mm_per_s.y_mm == b.vel_mm_per_s.y_mm &&
+           a.path_speed_mm_per_s == b.path_speed_mm_per_s && a.move == b.move;
+}
+
+// The servo's reading of the job (sim/systems/spi_fpga): samples in time order, each move's window as the laser bit
+// asks for it, what lies behind dropped.
+void read_as_fed(const std::string& text, const planner::PlannerConfig& cfg, const planner::Trajectory& whole) {
+    std::istringstream in(text);
+    planner::PlanFeed feed(cfg, std::make_unique<GcodeStream>(in, "fuzz.nc", InterpreterOptions{}, false));
+    const double duration_s = whole.duration_s();
+    constexpr int kSamples = 64;
+    for (int i = 0; i <= kSamples; ++i) {
+        const double t_s = duration_s * i / kSamples;
+        check(same_sample(feed.at(t_s), whole.at(t_s)), "the fed plan samples as the whole plan");
+        feed.drop_before(t_s);
+    }
+    const auto& windows = whole.move_windows();
+    for (std::size_t i = 0; i < windows.size(); ++i) {
+        const planner::FedMove* m = feed.move(i);
+        check(m != nullptr && m->window == windows[i], "the fed plan's move windows as the whole plan's");
+        feed.drop_moves_before(i);
+    }
+    check(feed.move(windows.size()) == nullptr, "the fed plan has the whole plan's moves");
+}
+
+void spi_fpga_planner(const std::string& text, const Program& program, const MachineModel& machine,
+                      planner::Profile profile, planner::BlendMode mode) {
     planner::PlannerConfig cfg;
     cfg.x = machine.x.limits;
     cfg.y = machine.y.limits;
     cfg.profile = profile;
     cfg.mode = mode;
+    planner::Trajectory t;
     try {
-        const planner::Trajectory t = planner::plan(program, cfg);
-        const double duration_s = t.duration_s();
-        check(std::isfinite(duration_s) && duration_s >= 0.0, "trajectory duration finite");
-        constexpr int kSamples = 64;
-        for (int i = 0; i <= kSamples; ++i) {
-            const planner::Sample s = t.at(duration_s * i / kSamples);
-            check(std::isfinite(s.pos_mm.x_mm) && std::isfinite(s.pos_mm.y_mm), "trajectory sample finite");
-        }
+        t = planner::plan(program, cfg);
     } catch (const cnc::BadInput&) {
+        return;
     }
+    const double duration_s = t.duration_s();
+    check(std::isfinite(duration_s) && duration_s >= 0.0, "trajectory duration finite");
+    constexpr int kSamples = 64;
+    for (int i = 0; i <= kSamples; ++i) {
+        const planner::Sample s = t.at(duration_s * i / kSamples);
+        check(std::isfinite(s.pos_mm.x_mm) && std::isfinite(s.pos_mm.y_mm), "trajectory sample finite");
+    }
+    read_as_fed(text, cfg, t);
 }
 
 }  // namespace
@@ -117,7 +150,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (program.moves.size() > kMaxMoves) return 0;
     fpga_uart_cam(program, machine);
     atmega_pc_program(program, machine);
-    spi_fpga_planner(program, machine, planner::Profile::Trapezoidal, planner::BlendMode::Continuous);
-    spi_fpga_planner(program, machine, planner::Profile::JerkLimited, planner::BlendMode::ExactStop);
+    spi_fpga_planner(text, program, machine, planner::Profile::Trapezoidal, planner::BlendMode::Continuous);
+    spi_fpga_planner(text, program, machine, planner::Profile::JerkLimited, planner::BlendMode::ExactStop);
     return 0;
 }

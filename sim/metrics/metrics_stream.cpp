@@ -95,7 +95,7 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
         if (m_detail) m_out.pieces.push_back(piece);
     }
     for (std::size_t g = first_group; g < end_group; ++g) {
-        const MoveMetrics& mm = r.moves[g];
+        MoveMetrics mm = r.moves[g];
         m_timing.add(m_moves_done++, mm.timing, mm.t_first_edge_ps, mm.t_last_edge_ps);
         m_worst.add(mm);
         m_out.moves.append(mm);

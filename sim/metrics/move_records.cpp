@@ -18,7 +18,8 @@ namespace {
 // presence byte and its value; a vector of up to `axes` values is a count byte and `axes` slots.
 constexpr std::size_t kOptSize = 1 + sizeof(double);
 constexpr std::size_t kFixedSize = 2 * sizeof(std::int32_t) + sizeof(std::uint64_t) + 2 + sizeof(double) +
-                                   2 * (1 + sizeof(TimePs)) + 3 * kOptSize + sizeof(std::uint64_t) + 5 * kOptSize;
+                                   2 * (1 + sizeof(TimePs)) + 3 * kOptSize + (1 + sizeof(std::size_t)) +
+                                   (1 + sizeof(TimePs)) + sizeof(std::uint64_t) + 5 * kOptSize;
 constexpr std::size_t kPerAxisSize = 2 * sizeof(std::int64_t) + kOptSize;
 constexpr std::size_t kVectorCounts = 3;
 // Rows gathered before a write and read per pread: large enough that a pass costs few system calls, small
@@ -106,6 +107,8 @@ void row_fields(Row& r, Move& m, std::size_t axes) {
     r.field(m.timing.motion_time_s);
     r.field(m.timing.achieved_feed_mm_per_min);
     r.field(m.timing.feed_error_pct);
+    r.field(m.timing.dead_after_move);
+    r.field(m.timing.dead_before_ps);
     r.template as<std::uint64_t>(m.path.samples);
     r.field(m.path.contour_max_um);
     r.field(m.path.following_max_um);
@@ -253,6 +256,16 @@ void MoveRecords::for_each(const std::function<void(const MoveMetrics&)>& visit)
         return;
     }
     for (const MoveMetrics& m : m_memory) visit(m);
+}
+
+std::vector<DeadGap> dead_gaps(const MoveRecords& moves) {
+    std::vector<DeadGap> gaps;
+    std::size_t i = 0;
+    moves.for_each([&](const MoveMetrics& m) {
+        if (m.timing.dead_before_ps) gaps.push_back({*m.timing.dead_after_move, i, *m.timing.dead_before_ps});
+        ++i;
+    });
+    return gaps;
 }
 
 MoveMetrics MoveRecords::at(std::size_t i) const {

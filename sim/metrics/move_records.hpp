@@ -52,4 +52,7 @@ private:
     std::unique_ptr<Spill> m_spill;
 };
 
+// The dead-time gaps between the programmed moves, in job order (a detailed report's list: held whole).
+[[nodiscard]] std::vector<DeadGap> dead_gaps(const MoveRecords& moves);
+
 }  // namespace cnc::metrics

@@ -79,7 +79,7 @@ std::optional<double> cruise_feed_mm_per_min(const RunInput& in, const Programme
 
 }  // namespace
 
-void TimingFold::add(std::size_t move, const MoveTiming& mt, std::optional<TimePs> t_first_edge_ps,
+void TimingFold::add(std::size_t move, MoveTiming& mt, std::optional<TimePs> t_first_edge_ps,
                      std::optional<TimePs> t_last_edge_ps) {
     if (mt.motion_time_s) m_out.motion_time_s = m_out.motion_time_s.value_or(0.0) + *mt.motion_time_s;
     m_out.below_feed_moves += mt.below_feed ? 1 : 0;
@@ -89,10 +89,14 @@ void TimingFold::add(std::size_t move, const MoveTiming& mt, std::optional<TimeP
         m_feed_abs_sum += std::fabs(*mt.feed_error_pct);
         keep_max(m_out.feed_error_max_abs_pct, std::fabs(*mt.feed_error_pct));
     }
+    mt.dead_after_move.reset();
+    mt.dead_before_ps.reset();
     if (!t_first_edge_ps) return;
     if (m_previous) {
         const TimePs dead = *t_first_edge_ps - m_previous_last_edge_ps;
-        m_out.gaps.push_back({*m_previous, move, dead});
+        mt.dead_after_move = *m_previous;
+        mt.dead_before_ps = dead;
+        ++m_out.gap_count;
         m_dead_total_ps += dead;
         keep_max(m_out.dead_max_ms, ps_to_s(dead) * 1e3);
     }
@@ -107,9 +111,9 @@ TimingResult TimingFold::finish(TimePs t_job_start_ps, TimePs t_job_end_ps, std:
         out.feed_error_mean_pct = m_feed_sum / static_cast<double>(out.feed_moves);
         out.feed_error_mean_abs_pct = m_feed_abs_sum / static_cast<double>(out.feed_moves);
     }
-    if (!out.gaps.empty()) {
+    if (out.gap_count > 0) {
         out.dead_total_ms = ps_to_s(m_dead_total_ps) * 1e3;
-        out.dead_mean_ms = *out.dead_total_ms / static_cast<double>(out.gaps.size());
+        out.dead_mean_ms = *out.dead_total_ms / static_cast<double>(out.gap_count);
     }
     // A controller that goes on stepping after its host stopped (an aborted run: its metrics are partial) keeps
     // the job open to its last edge, so that motion <= job and the tail >= 0 on every run.

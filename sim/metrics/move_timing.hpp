@@ -11,6 +11,12 @@
 
 namespace cnc::metrics {
 
+struct DeadGap {
+    std::size_t after_move = 0;   // index into the programmed moves
+    std::size_t before_move = 0;
+    TimePs dead_ps = 0;           // first rising edge of before_move - last rising edge of after_move (any axis)
+};
+
 struct MoveTiming {
     // From the programmed move's first rising edge to its last one plus the period that edge closes (latest over
     // the axes; an axis with one edge: its commanded period), so a constant-period run of n edges takes exactly n
@@ -23,12 +29,11 @@ struct MoveTiming {
     std::optional<double> achieved_feed_mm_per_min;
     std::optional<double> feed_error_pct;  // (achieved - F) / F
     bool below_feed = false;               // planner: a cutting move whose commanded speed never reached F
-};
-
-struct DeadGap {
-    std::size_t after_move = 0;   // index into the programmed moves
-    std::size_t before_move = 0;
-    TimePs dead_ps = 0;           // first rising edge of before_move - last rising edge of after_move (any axis)
+    // The dead-time gap that ends at this move's first edge, from the last edge of the previous programmed move
+    // with edges (`dead_after_move`, index into the programmed moves); none for the first move with edges and
+    // moves without. Kept with the move, so that the gaps of a long job are spilled with its moves (MoveRecords).
+    std::optional<std::size_t> dead_after_move;
+    std::optional<TimePs> dead_before_ps;
 };
 
 struct TimingResult {
@@ -40,7 +45,7 @@ struct TimingResult {
     std::optional<double> feed_error_max_abs_pct;
     double job_time_s = 0.0;                        // t_job_end - t_job_start
     std::optional<double> motion_time_s;            // sum of the per-move motion times
-    std::vector<DeadGap> gaps;                      // between consecutive programmed moves that emit steps
+    std::size_t gap_count = 0;  // gaps between consecutive programmed moves that emit steps (dead_gaps())
     std::optional<double> dead_total_ms, dead_mean_ms, dead_max_ms;
     std::optional<double> lead_in_ms;  // job start to the first rising STEP edge (any axis)
     std::optional<double> tail_ms;     // last rising STEP edge to the job end
@@ -51,8 +56,9 @@ struct TimingResult {
 // streaming metrics fold them as they close and drop them.
 class TimingFold {
 public:
-    // Programmed move `move` (index into the run's programmed moves) with its timing and first and last edge.
-    void add(std::size_t move, const MoveTiming& mt, std::optional<TimePs> t_first_edge_ps,
+    // Programmed move `move` (index into the run's programmed moves) with its timing and first and last edge; sets
+    // the move's gap (MoveTiming::dead_*).
+    void add(std::size_t move, MoveTiming& mt, std::optional<TimePs> t_first_edge_ps,
              std::optional<TimePs> t_last_edge_ps);
     // `first_edge_ps`, `last_edge_ps`: the run's first and last rising edge on any axis (none: no edges).
     [[nodiscard]] TimingResult finish(TimePs t_job_start_ps, TimePs t_job_end_ps, std::optional<TimePs> first_edge_ps,

@@ -263,13 +263,13 @@ json job_json(const RunMetrics& m, bool detail) {
               {"motion_time_s", opt(t.motion_time_s)},
               {"lead_in_ms", of_moves(opt(t.lead_in_ms))},
               {"tail_ms", of_moves(opt(t.tail_ms))},
-              {"dead_gaps", of_moves(t.gaps.size())},
+              {"dead_gaps", of_moves(t.gap_count)},
               {"dead_total_ms", opt(t.dead_total_ms)},
               {"dead_mean_ms", opt(t.dead_mean_ms)},
               {"dead_max_ms", opt(t.dead_max_ms)}};
     if (detail) {
         json gaps = json::array();
-        for (const DeadGap& g : t.gaps) {
+        for (const DeadGap& g : dead_gaps(m.moves)) {
             gaps.push_back({{"after_move", m.moves.at(g.after_move).index},
                             {"before_move", m.moves.at(g.before_move).index},
                             {"dead_ms", ps_to_s(g.dead_ps) * 1e3}});

@@ -114,7 +114,7 @@ std::string job_section(const RunMetrics& m) {
     // Without moves (analyze) the job is only the span of the traced edges: no lead-in, tail or gaps to count.
     const auto of_moves = [&m](std::optional<double> v) { return m.with_moves ? v : std::nullopt; };
     t.add_row({fixed(j.job_time_s, 6), fixed(j.motion_time_s, 6), fixed(of_moves(j.lead_in_ms), 3),
-               fixed(of_moves(j.tail_ms), 3), m.with_moves ? count(j.gaps.size()) : "-", fixed(j.dead_total_ms, 3),
+               fixed(of_moves(j.tail_ms), 3), m.with_moves ? count(j.gap_count) : "-", fixed(j.dead_total_ms, 3),
                fixed(j.dead_mean_ms, 3), fixed(j.dead_max_ms, 3)});
     return t.render(m.with_moves ? "Job timing" : "Job timing (the span of the traced edges)");
 }

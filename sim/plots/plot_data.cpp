@@ -201,8 +201,9 @@ std::vector<std::string> write_dead_time(const metrics::RunMetrics& m, const Arc
     std::map<std::size_t, const GapCauses*> by_move;
     for (const GapCauses& g : run.gap_causes) by_move[g.after_move] = &g;
     std::vector<std::string> causes;
+    const std::vector<metrics::DeadGap> gaps = metrics::dead_gaps(m.moves);
     const bool split =
-        !m.timing.gaps.empty() && std::all_of(m.timing.gaps.begin(), m.timing.gaps.end(),
+        !gaps.empty() && std::all_of(gaps.begin(), gaps.end(),
                                               [&](const metrics::DeadGap& g) { return by_move.count(g.after_move); });
     if (split) {
         for (const auto& part : by_move.begin()->second->parts_ms) causes.push_back(part.first);
@@ -210,8 +211,8 @@ std::vector<std::string> write_dead_time(const metrics::RunMetrics& m, const Arc
     std::string header = "gap after_move total_ms";
     for (const std::string& c : causes) header += ' ' + c + "_ms";
     std::ofstream out = open(dir / "dead_time.dat", header);
-    for (std::size_t k = 0; k < m.timing.gaps.size(); ++k) {
-        const metrics::DeadGap& g = m.timing.gaps[k];
+    for (std::size_t k = 0; k < gaps.size(); ++k) {
+        const metrics::DeadGap& g = gaps[k];
         out << k + 1 << ' ' << g.after_move + 1 << ' '
             << num(static_cast<double>(g.dead_ps) / static_cast<double>(kPsPerMs));
         if (split) {

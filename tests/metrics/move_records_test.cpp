@@ -34,6 +34,10 @@ std::vector<MoveMetrics> varied_moves(std::size_t n) {
         if (i % 4 != 3) m.timing.achieved_feed_mm_per_min = 599.0 + x;
         if (i % 4 == 1) m.timing.feed_error_pct = -x / 11.0;
         m.timing.below_feed = i % 6 == 1;
+        if (i % 3 != 0) {
+            m.timing.dead_after_move = i - 1;
+            m.timing.dead_before_ps = TimePs{999'983} * k;
+        }
         m.path.samples = 10 * i;
         if (i % 2 == 1) m.path.contour_max_um = x * 1.5;
         if (i % 3 == 2) m.path.following_max_um = -x;
@@ -60,6 +64,8 @@ void expect_same(const MoveMetrics& got, const MoveMetrics& want) {
     EXPECT_EQ(got.timing.achieved_feed_mm_per_min, want.timing.achieved_feed_mm_per_min);
     EXPECT_EQ(got.timing.feed_error_pct, want.timing.feed_error_pct);
     EXPECT_EQ(got.timing.below_feed, want.timing.below_feed);
+    EXPECT_EQ(got.timing.dead_after_move, want.timing.dead_after_move);
+    EXPECT_EQ(got.timing.dead_before_ps, want.timing.dead_before_ps);
     EXPECT_EQ(got.path.samples, want.path.samples);
     EXPECT_EQ(got.path.contour_max_um, want.path.contour_max_um);
     EXPECT_EQ(got.path.following_max_um, want.path.following_max_um);
@@ -106,6 +112,26 @@ TEST(MoveRecords, InMemoryAndSpilledGiveTheSameRowsPassAfterPass) {
     expect_same(spilled.at(kMoves), moves[5]);
     // The file was unlinked when it was made: nothing in its folder, whatever happens to the run.
     EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+TEST(MoveRecords, TheDeadGapsAreTheMovesWithOneInOrderSpilledOrNot) {
+    const std::vector<MoveMetrics> moves = varied_moves(kMoves);
+    MoveRecords memory;
+    MoveRecords spilled = MoveRecords::spilled(2, test_dir("MoveRecords.TheDeadGaps").string());
+    for (const MoveMetrics& m : moves) {
+        memory.append(m);
+        spilled.append(m);
+    }
+    for (const MoveRecords* records : {&memory, &spilled}) {
+        const std::vector<DeadGap> gaps = dead_gaps(*records);
+        ASSERT_EQ(gaps.size(), kMoves - (kMoves + 2) / 3);  // every move but each third one
+        for (const DeadGap& g : gaps) {
+            ASSERT_NE(g.before_move % 3, 0U);
+            EXPECT_EQ(g.after_move, g.before_move - 1);
+            EXPECT_EQ(g.dead_ps, *moves[g.before_move].timing.dead_before_ps);
+        }
+        for (std::size_t k = 1; k < gaps.size(); ++k) EXPECT_LT(gaps[k - 1].before_move, gaps[k].before_move);
+    }
 }
 
 TEST(MoveRecords, AFullDiskFailsTheAppendOrTheReadNamingTheFile) {

@@ -81,8 +81,9 @@ TEST(MetricsMoveTiming, PiecesOfOneProgrammedMoveAreTimedAsOneMove) {
     EXPECT_NEAR(*m.moves[0].timing.feed_error_pct, -100.0 / 21.0, 1e-9);
     // Move 2: 5 periods at F: no error. One gap, between the programmed moves: 24 - 21 = 3 ms.
     EXPECT_NEAR(*m.moves[1].timing.feed_error_pct, 0.0, 1e-9);
-    ASSERT_EQ(m.timing.gaps.size(), 1U);
-    EXPECT_EQ(m.timing.gaps[0].dead_ps, 3 * kPsPerMs);
+    const std::vector<DeadGap> gaps = dead_gaps(m.moves);
+    ASSERT_EQ(gaps.size(), 1U);
+    EXPECT_EQ(gaps[0].dead_ps, 3 * kPsPerMs);
     EXPECT_NEAR(*m.timing.motion_time_s, 0.026, 1e-12);
 }
 
@@ -99,10 +100,11 @@ TEST(MetricsMoveTiming, DeadTimeBetweenMovesAndJobTotals) {
     in.t_job_start_ps = 0;
     in.t_job_end_ps = 20 * kPsPerMs;
     const RunMetrics m = compute_metrics(in);
-    ASSERT_EQ(m.timing.gaps.size(), 1U);
-    EXPECT_EQ(m.timing.gaps[0].after_move, 0U);
-    EXPECT_EQ(m.timing.gaps[0].before_move, 2U);
-    EXPECT_EQ(m.timing.gaps[0].dead_ps, 2'500 * kPsPerUs);
+    const std::vector<DeadGap> gaps = dead_gaps(m.moves);
+    ASSERT_EQ(gaps.size(), 1U);
+    EXPECT_EQ(gaps[0].after_move, 0U);
+    EXPECT_EQ(gaps[0].before_move, 2U);
+    EXPECT_EQ(gaps[0].dead_ps, 2'500 * kPsPerUs);
     EXPECT_DOUBLE_EQ(*m.timing.dead_total_ms, 2.5);
     EXPECT_DOUBLE_EQ(*m.timing.dead_mean_ms, 2.5);
     EXPECT_DOUBLE_EQ(*m.timing.dead_max_ms, 2.5);

@@ -124,8 +124,9 @@ TEST(SpiFpgaBlending, ContinuousHasNoDeadTimeBetweenColinearMoves) {
     std::size_t last = v.size() - 1;
     while (last > 0 && v[last].get<double>() == 0.0) --last;
     for (std::size_t i = first; i <= last; ++i) ASSERT_GT(v[i].get<double>(), 0.0) << i;
-    ASSERT_EQ(out.metrics.timing.gaps.size(), 2U);
-    for (const auto& g : out.metrics.timing.gaps) EXPECT_EQ(g.dead_ps, 15'625 * kClockPs);  // 3200 steps/s
+    const auto gaps = cnc::metrics::dead_gaps(out.metrics.moves);
+    ASSERT_EQ(gaps.size(), 2U);
+    for (const auto& g : gaps) EXPECT_EQ(g.dead_ps, 15'625 * kClockPs);  // 3200 steps/s
     EXPECT_EQ(out.report["spi-fpga"]["servo"]["rest_points"].get<int>(), 1);
 }
 
@@ -152,8 +153,9 @@ TEST(SpiFpgaBlending, ExactStopRestsAtEveryJoin) {
         EXPECT_GE(zeros, 2U);
     }
     // the joins cost dead time: from the last step of a move to the first of the next, at least two periods
-    ASSERT_EQ(out.metrics.timing.gaps.size(), 2U);
-    for (const auto& g : out.metrics.timing.gaps) EXPECT_GE(g.dead_ps, 2 * kPsPerMs);
+    const auto gaps = cnc::metrics::dead_gaps(out.metrics.moves);
+    ASSERT_EQ(gaps.size(), 2U);
+    for (const auto& g : gaps) EXPECT_GE(g.dead_ps, 2 * kPsPerMs);
 }
 
 TEST(SpiFpgaBlending, ContinuousCornersStayWithinTheBlendTolerance) {

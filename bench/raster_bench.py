@@ -3,7 +3,7 @@
 (bench/make_raster_job.py) of 10^3, 10^4 and 10^5 lines on fpga-uart and spi-fpga (atmega when named: it runs
 about 7x real time, so `build 1000,10000 atmega`), VCD off (bounded-memory issue,
 "Speed"). Targets: 100x real time on fpga-uart, 20x on spi-fpga, peak RSS < 200 MiB, for the 10^5-line raster.
-Peak RSS is the child's own (wait4's ru_maxrss), not the script's.
+Peak RSS is cncsim's own (child_peak_rss, built in BUILD_DIR/bench), not the script's.
 
 Usage: bench/raster_bench.py [BUILD_DIR] [LINES,...] [ARCHITECTURES,...]
        (default: build 1000,10000,100000 fpga-uart,spi-fpga)
@@ -14,28 +14,26 @@ import os
 import subprocess
 import sys
 import tempfile
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from child_rss import run_measured  # noqa: E402
 from make_raster_job import raster  # noqa: E402
 
 
-def run(cncsim, scenario, report):
-    start = time.monotonic()
-    child = subprocess.Popen([cncsim, "run", scenario, "--report", report, "--progress", "off"],
-                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    _, status, usage = os.wait4(child.pid, 0)
-    wall_s = time.monotonic() - start
-    if os.waitstatus_to_exitcode(status) != 0:
-        sys.exit("cncsim failed on %s: %s" % (scenario, child.stderr.read().decode()))
-    return wall_s, usage.ru_maxrss / 1024.0  # KiB -> MiB
+def run(build, scenario, report):
+    cncsim = os.path.abspath(os.path.join(build, "sim", "cncsim"))
+    launcher = os.path.abspath(os.path.join(build, "bench", "child_peak_rss"))
+    code, wall_s, rss_mib, err = run_measured(
+        launcher, [cncsim, "run", scenario, "--report", report, "--progress", "off"], stderr=subprocess.PIPE)
+    if code != 0:
+        sys.exit("cncsim failed on %s: %s" % (scenario, err.decode()))
+    return wall_s, rss_mib
 
 
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else "build"
     sizes = [int(n) for n in (sys.argv[2] if len(sys.argv) > 2 else "1000,10000,100000").split(",")]
     archs = (sys.argv[3] if len(sys.argv) > 3 else "fpga-uart,spi-fpga").split(",")
-    cncsim = os.path.abspath(os.path.join(build, "sim", "cncsim"))
     print("| raster lines | architecture | simulated [s] | wall [s] | sim/wall | peak RSS [MiB] |")
     print("|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
@@ -48,7 +46,7 @@ def main():
                 with open(scenario, "w") as f:
                     f.write('[scenario]\njob = "%s"\narchitecture = "%s"\n' % (job, arch))
                 report = os.path.join(tmp, "report.json")
-                wall_s, rss_mib = run(cncsim, scenario, report)
+                wall_s, rss_mib = run(build, scenario, report)
                 with open(report) as f:
                     sim_s = json.load(f)["metrics"]["job"]["job_time_s"]
                 print("| %d | %s | %.1f | %.2f | %.0fx | %.1f |" % (lines, arch, sim_s, wall_s, sim_s / wall_s, rss_mib),

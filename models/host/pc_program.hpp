@@ -21,6 +21,7 @@
 
 #include <systemc>
 
+#include "common/record_log.hpp"
 #include "common/units.hpp"
 #include "host/core/host_waits.hpp"
 #include "host/core/seed003/plan.hpp"
@@ -71,7 +72,10 @@ public:
     void set_waits(const UnitWaits& waits);
 
     [[nodiscard]] const std::vector<seed003::Transfer>& transfers() const { return m_transfers; }
-    [[nodiscard]] const std::vector<PcWrite>& writes() const { return m_writes; }
+    // Every byte written, numbered over the whole run (size() counts the dropped ones too).
+    [[nodiscard]] const RecordLog<PcWrite>& writes() const { return m_writes; }
+    // The reader has read the writes before index `end`: they go.
+    void drop_writes_before(std::size_t end) { m_writes.drop_before(end); }
     [[nodiscard]] bool finished() const { return m_finished; }
     [[nodiscard]] TimePs t_end_ps() const { return m_t_end; }  // the last byte was written (-1: not yet)
     [[nodiscard]] const std::optional<LinkFailure>& failure() const { return m_failure; }
@@ -90,7 +94,7 @@ private:
     const ConfirmTimeouts m_timeouts;
     std::size_t m_job_bytes = 0;
     UnitWaits m_waits;
-    std::vector<PcWrite> m_writes;
+    RecordLog<PcWrite> m_writes;
     bool m_finished = false;
     TimePs m_t_end = -1;
     std::optional<LinkFailure> m_failure;

@@ -36,7 +36,7 @@ TEST(AvrChip, InterruptDrivenSerialEchoesALineBackToBack) {
     // the CP2102 (57 553.96 Bd) is echoed after its '\n'; the UDRE interrupt (a level interrupt) refills UDR0 as
     // soon as each byte moves to the shift register, so the six frames follow each other exactly 2720 cycles
     // apart (10 bits of 272 cycles).
-    AvrBench b(config_for(AVR_FW_USART_IRQ_ECHO_ELF));
+    AvrBench b(config_with_usart_logs(AVR_FW_USART_IRQ_ECHO_ELF));
     cnc::uart::Cp2102 cp("cp", cnc::uart::Cp2102Config{57'600});
     cp.txd(b.rxd);
     cp.rxd(*b.signals[kTxdLine]);

@@ -29,6 +29,13 @@ inline AvrCoreConfig config_for(const std::string& elf) {
     return cfg;
 }
 
+// For the tests that read UsartUnit::tx_log() / rx_log().
+inline AvrCoreConfig config_with_usart_logs(const std::string& elf) {
+    AvrCoreConfig cfg = config_for(elf);
+    cfg.keep_usart_logs = true;
+    return cfg;
+}
+
 class AvrBench {
 public:
     explicit AvrBench(const AvrCoreConfig& cfg) : avr("avr", cfg) {

@@ -50,7 +50,7 @@ TEST(AvrUsart, TransmitsTenBitFramesBackToBackAtTheBitClock) {
     // at w1 into the idle transmitter: the shift register loads it at the next tick s1 (start bit, UDRE0 set
     // again). The firmware writes 0xA3 and 0x0F as soon as it sees UDRE0; each loads when the previous stop
     // bit ends: s2 = s1 + 2720, s3 = s2 + 2720. TXC0 is set when the last stop bit ends, at s3 + 2720.
-    AvrBench b(config_for(AVR_FW_USART_TX_ELF));
+    AvrBench b(config_with_usart_logs(AVR_FW_USART_TX_ELF));
     b.run_until_ps(cnc::kPsPerMs);
     const Cycle a = first_rise(b, "dir_x") + 1;
     const Cycle w1 = first_rise(b, "dir_y") + 1;
@@ -98,7 +98,7 @@ TEST(AvrUsart, ReceivesFromTheCp2102AtItsOwnBaudRate) {
     // bit, 2.2 % slower than the AVR's 58 823.5 Bd. The AVR samples at its own 272-cycle bit clock from the
     // start edge; the stop bit is sampled at 9.5 * 272 = 2584 cycles, inside the sender's stop bit (which
     // starts at 9 * 278 = 2502): no framing error. RXC0 rises at that decision cycle.
-    AvrBench b(config_for(AVR_FW_USART_ECHO_ELF));
+    AvrBench b(config_with_usart_logs(AVR_FW_USART_ECHO_ELF));
     cnc::uart::Cp2102 cp("cp", cnc::uart::Cp2102Config{57'600});
     cp.txd(b.rxd);
     cp.rxd(*b.signals[kTxdLine]);
@@ -151,7 +151,7 @@ TEST(AvrUsart, ASenderSixPercentSlowGivesAFramingError) {
     //   5 % slow (17.85 us): the sample falls in the stop bit (160.65..178.5 us): 0x41 arrives intact;
     //   6 % fast (15.98 us): the stop bit is sampled after the frame (idle, high), so no framing error, but
     //     bit 7 is sampled in the sender's stop bit (143.82..159.8 us) and reads 1: 0xC1.
-    AvrBench b(config_for(AVR_FW_USART_ECHO_ELF));
+    AvrBench b(config_with_usart_logs(AVR_FW_USART_ECHO_ELF));
     drive_frames(b.rxd, {{3 * cnc::kPsPerMs, 0x41, 18'020'000},
                          {4 * cnc::kPsPerMs, 0x41, 17'850'000},
                          {5 * cnc::kPsPerMs, 0x41, 15'980'000}});

@@ -19,6 +19,9 @@ struct AvrCoreConfig {
     // is exact: the AVR never runs past a pending frame's decision cycle). AvrCore also keeps it below the
     // receiver's decision delay minus 8 cycles (9.5 bit times: 2576 at UBRR0 = 16; 144 at the reset UBRR0 = 0).
     std::uint32_t quantum_cycles = 160;
+    // UsartUnit::tx_log() / rx_log(): a record per byte, read only by the AVR model's tests, so a long job keeps
+    // none unless asked (the counts are in UsartStats).
+    bool keep_usart_logs = false;
     std::string where = "avr.firmware";  // names the scenario key in bad-input messages
 };
 

@@ -21,7 +21,7 @@ constexpr std::uint8_t kRxb8 = 0x02;  // UCSR0B.RXB80 (read only)
 
 }  // namespace
 
-UsartUnit::UsartUnit(UsartSink& sink) : m_sink(sink) {}
+UsartUnit::UsartUnit(UsartSink& sink, bool keep_logs) : m_sink(sink), m_keep_logs(keep_logs) {}
 
 std::int64_t UsartUnit::bit_cycles() const {
     return ((m_ucsra_rw & kU2x) != 0 ? 8 : 16) * (static_cast<std::int64_t>(m_ubrr) + 1);  // Table 20-1
@@ -79,7 +79,7 @@ void UsartUnit::load(Cycle c) {
     s.start = c;
     s.bit = bit_cycles();
     s.log_index = m_tx_buffer->log_index;
-    m_tx_log[s.log_index].start_cycle = c;
+    if (s.log_index) m_tx_log[*s.log_index].start_cycle = c;
     m_tx_buffer.reset();
     m_load_at.reset();
     m_shift = s;
@@ -104,7 +104,7 @@ void UsartUnit::advance_to(Cycle c) {
             ++s.next;
             continue;
         }
-        m_tx_log[s.log_index].end_cycle = *t;
+        if (s.log_index) m_tx_log[*s.log_index].end_cycle = *t;
         ++m_stats.tx_frames;
         m_shift.reset();
         if (m_tx_buffer) {
@@ -122,8 +122,11 @@ void UsartUnit::write_udr(Cycle c, std::uint8_t v) {
         ++m_stats.tx_ignored_writes;
         return;
     }
-    m_tx_buffer = TxBuffered{v, m_tx_log.size()};
-    m_tx_log.push_back({v, c, -1, -1});
+    m_tx_buffer = TxBuffered{v, std::nullopt};
+    if (m_keep_logs) {
+        m_tx_buffer->log_index = m_tx_log.size();
+        m_tx_log.push_back({v, c, -1, -1});
+    }
     if (!m_shift) m_load_at = next_bit_tick_after(c);
     m_sink.usart_flags(c);
 }
@@ -186,7 +189,7 @@ void UsartUnit::receive(Cycle start, Cycle decision, const uart::RxFrame& frame)
     advance_to(decision);
     UsartRxRecord rec{frame.byte, start, decision, frame.status, false};
     if (frame.status == uart::RxStatus::FalseStart) {
-        m_rx_log.push_back(rec);
+        if (m_keep_logs) m_rx_log.push_back(rec);
         return;
     }
     if (!rx_enabled_at(start) || !rx_enabled_at(decision)) {
@@ -204,7 +207,7 @@ void UsartUnit::receive(Cycle start, Cycle decision, const uart::RxFrame& frame)
         rec.stored = true;
         m_sink.usart_flags(decision);
     }
-    m_rx_log.push_back(rec);
+    if (m_keep_logs) m_rx_log.push_back(rec);
 }
 
 }  // namespace cnc::avr

@@ -64,7 +64,8 @@ struct UsartRxRecord {
 
 class UsartUnit {
 public:
-    explicit UsartUnit(UsartSink& sink);
+    // keep_logs: tx_log() and rx_log() record every byte (AvrCoreConfig::keep_usart_logs); otherwise they stay empty.
+    UsartUnit(UsartSink& sink, bool keep_logs);
 
     void write_udr(Cycle c, std::uint8_t v);
     std::uint8_t read_udr(Cycle c);
@@ -113,7 +114,7 @@ private:
         Cycle start = 0;
         std::int64_t bit = 1;
         std::size_t next = 1;  // next bit boundary to process (bits.size() = end of the frame)
-        std::size_t log_index = 0;
+        std::optional<std::size_t> log_index;  // none when the logs are not kept
     };
     [[nodiscard]] bool tx_enabled() const;
     [[nodiscard]] Cycle next_bit_tick_after(Cycle c) const;
@@ -121,6 +122,7 @@ private:
     void set_txd(Cycle c, bool level);
 
     UsartSink& m_sink;
+    const bool m_keep_logs;
     std::uint8_t m_ucsra_rw = 0;  // U2X0, MPCM0
     std::uint8_t m_ucsrb = 0;
     std::uint8_t m_ucsrc = 0x06;  // reset value: 8N1 (§20.11.4)
@@ -128,7 +130,7 @@ private:
     Cycle m_baud_origin = 0;  // last UBRR0L write (power-on: cycle 0)
     struct TxBuffered {
         std::uint8_t byte;
-        std::size_t log_index;
+        std::optional<std::size_t> log_index;
     };
     std::optional<TxBuffered> m_tx_buffer;
     std::optional<Cycle> m_load_at;  // the idle shift register loads the buffer at this bit-clock tick

@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "common/text_format.hpp"
-#include "uart/core/line_receiver.hpp"
 
 namespace cnc::sim {
 
@@ -29,19 +28,6 @@ std::string id_name(s3::CommandId id) {
         case s3::CommandId::M30: return "M30";
     }
     return "?";
-}
-
-// When the MCU's receiver had the last byte of each transfer (the middle of its stop bit at the MCU's bit
-// clock), by transfer index.
-std::vector<TimePs> transfer_arrivals(const AtmegaFacts& f) {
-    std::vector<TimePs> at(f.pc.transfers().size(), -1);
-    const auto& tx = f.cp2102.tx_log();
-    const auto& writes = f.pc.writes();
-    const TimePs decision_ps = uart::decision_offset_ps(f.mcu.chip().rx_clock(), f.mcu.chip().rx_format());
-    for (std::size_t j = 0; j < writes.size() && j < tx.size(); ++j) {
-        at[writes[j].transfer] = tx[j].t_start_bit_ps + decision_ps;
-    }
-    return at;
 }
 
 nlohmann::json motion_json(const AtmegaFacts& f, s3::CommandId id, const s3::Motion& m, const MotionWindow* w) {
@@ -86,27 +72,6 @@ nlohmann::json commands_json(const AtmegaFacts& f) {
 
 }  // namespace
 
-ChordGaps chord_gaps(const AtmegaFacts& f) {
-    ChordGaps g;
-    const std::vector<TimePs> arrival = transfer_arrivals(f);
-    std::map<std::pair<std::size_t, std::size_t>, std::size_t> transfer_of;
-    const auto& tr = f.pc.transfers();
-    for (std::size_t i = 0; i < tr.size(); ++i) {
-        if (tr[i].motion >= 0) transfer_of[{tr[i].command, static_cast<std::size_t>(tr[i].motion)}] = i;
-    }
-    for (std::size_t k = 1; k < f.windows.size(); ++k) {
-        const MotionWindow& prev = f.windows[k - 1];
-        const MotionWindow& w = f.windows[k];
-        if (w.command != prev.command || w.motion == 0) continue;
-        const TimePs ready = arrival[transfer_of.at({w.command, w.motion})];
-        if (ready <= prev.t_end_ps) continue;
-        ++g.late;
-        g.wait_max_ps = std::max(g.wait_max_ps, w.t_begin_ps - prev.t_end_ps);
-        g.y_steps_waiting += w.y_steps_before_begin - prev.y_steps_through_end;
-    }
-    return g;
-}
-
 std::vector<Warning> link_warnings(const AtmegaFacts& f) {
     std::vector<Warning> w;
     const avr::AvrCoreStats st = f.mcu.stats();
@@ -118,7 +83,7 @@ std::vector<Warning> link_warnings(const AtmegaFacts& f) {
         w.push_back({"cp2102_framing_errors", "",
                      std::to_string(f.cp2102.stats().framing_errors) + " UART framing errors at the CP2102"});
     }
-    const ChordGaps gaps = chord_gaps(f);
+    const ChordGaps& gaps = f.gaps;
     if (gaps.late > 0) {
         w.push_back({"late_chords", "",
                      std::to_string(gaps.late) + " chords started late (their bytes came after the chord before "
@@ -130,7 +95,7 @@ std::vector<Warning> link_warnings(const AtmegaFacts& f) {
 nlohmann::json details_json(const AtmegaFacts& f, bool detail) {
     const uart::Cp2102Baud& baud = f.cp2102.baud();
     const avr::AvrCoreStats st = f.mcu.stats();
-    const ChordGaps gaps = chord_gaps(f);
+    const ChordGaps& gaps = f.gaps;
     nlohmann::json j = {{"firmware", f.firmware},
                         {"link",
                          {{"requested_baud", baud.requested},
@@ -164,7 +129,7 @@ nlohmann::json details_json(const AtmegaFacts& f, bool detail) {
 std::string details_text(const AtmegaFacts& f) {
     const uart::Cp2102Baud& baud = f.cp2102.baud();
     const avr::AvrCoreStats st = f.mcu.stats();
-    const ChordGaps gaps = chord_gaps(f);
+    const ChordGaps& gaps = f.gaps;
     std::map<std::string, std::pair<int, std::size_t>> per_id;  // commands, motions
     for (const s3::Command& c : f.plan.commands) {
         auto& n = per_id[id_name(c.id)];

@@ -11,16 +11,11 @@
 #include "common/warning.hpp"
 #include "host/core/seed003/plan.hpp"
 #include "host/pc_program.hpp"
+#include "systems/atmega/chord_gaps.hpp"
 #include "systems/atmega/motion_windows.hpp"
 #include "uart/cp2102.hpp"
 
 namespace cnc::sim {
-
-struct ChordGaps {
-    int late = 0;             // chords whose last byte the MCU received after the chord before had ended
-    TimePs wait_max_ps = 0;   // longest end-of-chord to reload gap
-    std::int64_t y_steps_waiting = 0;  // Y steps the driver took in those gaps
-};
 
 struct AtmegaFacts {
     const host::seed003::Plan& plan;
@@ -28,12 +23,12 @@ struct AtmegaFacts {
     const host::PcProgram& pc;
     const uart::Cp2102& cp2102;
     const avr::AvrCore& mcu;
-    const std::vector<MotionWindow>& windows;
+    const std::vector<MotionWindow>& windows;  // read with `detail` only
+    const ChordGaps& gaps;
     std::string firmware;
     double mcu_baud = 0.0;   // f_cpu / (16 (UBRR0 + 1))
 };
 
-[[nodiscard]] ChordGaps chord_gaps(const AtmegaFacts& f);
 // Framing errors at either end, chords that started late.
 [[nodiscard]] std::vector<Warning> link_warnings(const AtmegaFacts& f);
 [[nodiscard]] nlohmann::json details_json(const AtmegaFacts& f, bool detail);

@@ -18,11 +18,14 @@
 #include "run/moves.hpp"
 #include "run/simulate.hpp"
 #include "systems/atmega/atmega_report.hpp"
+#include "systems/atmega/chord_gaps.hpp"
+#include "systems/atmega/link_bytes.hpp"
 #include "systems/atmega/firmware_usart.hpp"
 #include "systems/atmega/atmega_pins.hpp"
 #include "systems/link_checks.hpp"
 #include "systems/machine.hpp"
 #include "systems/mechanics_report.hpp"
+#include "uart/core/line_receiver.hpp"
 #include "uart/cp2102.hpp"
 
 namespace cnc::sim {
@@ -217,6 +220,11 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
         // Every fold comes right after the pins were read up to its instant: what they hold is all before it.
         feed->take_edges_with([&pins](const std::string& pin, TimePs) { return pins.hand_over(pin); });
     }
+    ChordGapFold chord_gaps(pc.transfers());
+    const auto read_link = [&] {
+        read_link_bytes(pc, cp2102, uart::decision_offset_ps(mcu.chip().rx_clock(), mcu.chip().rx_format()),
+                        [&](std::size_t transfer, TimePs t_ps) { chord_gaps.add_byte(transfer, t_ps); });
+    };
     std::size_t handed = 0;  // motion windows handed to the metrics
     const auto hand_ended_moves = [&] {
         for (; handed < pins.windows().size(); ++handed) {
@@ -226,8 +234,10 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     const SimulationEnd end = simulate(
         budget, [&] { return mcu.stopped() || link_failure(mcu, cp2102, pc).has_value(); }, kStopCheckPs,
         [&](TimePs now_ps) {
+            read_link();
             if (!feed) return;
             pins.read_before(now_ps);
+            chord_gaps.add_windows(pins.windows(), false);
             hand_ended_moves();
             feed->fold(now_ps);
         });
@@ -238,6 +248,8 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     record_budget(budget, run);
     pins.read_before(std::numeric_limits<TimePs>::max());
     pins.finish(t_now);
+    read_link();
+    chord_gaps.add_windows(pins.windows(), true);
     metrics::RunInput& in = run.input;
     in.t_job_start_ps = 0;
     in.t_job_end_ps = mcu.chip().stop_cycle() ? mcu.cycle_ps(*mcu.chip().stop_cycle()) : t_now;
@@ -259,7 +271,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     }
 
     run.warnings = plan.warnings;
-    const AtmegaFacts facts{plan, s.machine, pc, cp2102, mcu, pins.windows(), avr_cfg.firmware_elf,
+    const AtmegaFacts facts{plan, s.machine, pc, cp2102, mcu, pins.windows(), chord_gaps.gaps(), avr_cfg.firmware_elf,
                             mcu.chip().rx_clock().baud()};
     for (Warning& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
     run.details = details_json(facts, s.detail);

@@ -27,9 +27,9 @@ public:
 };
 
 struct Fixture {
-    Fixture() { rec.unit = &u; }
+    explicit Fixture(bool keep_logs = true) : u(rec, keep_logs) { rec.unit = &u; }  // most tests read the logs
     Recorder rec;
-    UsartUnit u{rec, true};  // the tests read the logs
+    UsartUnit u;
     void setup_58823(Cycle c) {  // seed 003 §2.4: UBRR0 = 16, U2X0 = 0, RXEN0 | TXEN0, 8N1
         u.write_ubrrh(c, 0);
         u.write_ubrrl(c, 16);
@@ -93,6 +93,29 @@ TEST(AvrUsartUnit, TransmitterTimingAndFlags) {
     EXPECT_EQ(f.u.tx_log()[1].write_cycle, 400);
     EXPECT_EQ(f.u.tx_log()[1].start_cycle, 3092);
     EXPECT_EQ(f.u.tx_log()[1].end_cycle, 5812);
+}
+
+// Without the logs (a long job's run), the line, the flags and the counts are those of a unit that keeps them:
+// TransmitterTimingAndFlags' bytes, and one received byte.
+TEST(AvrUsartUnit, WithoutTheLogsTheLineAndTheCountsAreTheSame) {
+    Fixture logged;
+    Fixture bare(false);
+    for (Fixture* f : {&logged, &bare}) {
+        f->setup_58823(100);
+        f->u.write_udr(150, 0x00);
+        f->u.write_udr(400, 0xFF);
+        f->u.advance_to(20'000);
+        f->u.receive(20'000, 22'584, frame(0x41));  // the stop bit's middle: 9.5 bits of 272 cycles on
+    }
+    EXPECT_EQ(bare.rec.txd, logged.rec.txd);
+    EXPECT_EQ(bare.rec.flag_changes, logged.rec.flag_changes);
+    EXPECT_EQ(bare.u.stats().tx_frames, 2);
+    EXPECT_EQ(bare.u.stats().rx_frames, 1);
+    EXPECT_EQ(bare.u.read_udr(22'584), 0x41);
+    EXPECT_EQ(logged.u.tx_log().size(), 2U);
+    EXPECT_EQ(logged.u.rx_log().size(), 1U);
+    EXPECT_TRUE(bare.u.tx_log().empty());
+    EXPECT_TRUE(bare.u.rx_log().empty());
 }
 
 TEST(AvrUsartUnit, WritesWithTheTransmitterOffAreIgnored) {

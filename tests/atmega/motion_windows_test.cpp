@@ -102,7 +102,7 @@ std::vector<MotionWindow> fold_in_slices(const s3::Plan& plan, Pins p, EdgeLog y
         fold.add({en_x, en_y, dir_x, dir_y, head}, y.take_before(cut));
     }
     fold.finish(t_end);
-    return fold.windows();
+    return {fold.windows().begin(), fold.windows().end()};
 }
 
 }  // namespace

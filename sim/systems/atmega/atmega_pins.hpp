@@ -23,7 +23,8 @@ public:
     void read_before(TimePs t_ps);
     // The run stopped at t_sim_end_ps, everything read: the motion under way ends there.
     void finish(TimePs t_sim_end_ps) { m_windows.finish(t_sim_end_ps); }
-    [[nodiscard]] const std::vector<MotionWindow>& windows() const { return m_windows.windows(); }
+    [[nodiscard]] const RecordLog<MotionWindow>& windows() const { return m_windows.windows(); }
+    void drop_windows_before(std::size_t end) { m_windows.drop_windows_before(end); }
 
     // The edges read and not handed over yet of a pin the metrics read: step_x and step_y (the pulses the
     // drivers act on), dir_x, dir_y, laser.

@@ -1,6 +1,5 @@
 #include "systems/atmega/atmega_report.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <sstream>

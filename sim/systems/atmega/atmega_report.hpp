@@ -23,7 +23,7 @@ struct AtmegaFacts {
     const host::PcProgram& pc;
     const uart::Cp2102& cp2102;
     const avr::AvrCore& mcu;
-    const std::vector<MotionWindow>& windows;  // read with `detail` only
+    const RecordLog<MotionWindow>& windows;  // read with `detail` only (kept whole then)
     const ChordGaps& gaps;
     std::string firmware;
     double mcu_baud = 0.0;   // f_cpu / (16 (UBRR0 + 1))

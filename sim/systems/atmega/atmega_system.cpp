@@ -220,6 +220,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
         // Every fold comes right after the pins were read up to its instant: what they hold is all before it.
         feed->take_edges_with([&pins](const std::string& pin, TimePs) { return pins.hand_over(pin); });
     }
+    // The late chords are folded as the bytes and the windows come, so that neither is kept for the whole run.
     ChordGapFold chord_gaps(pc.transfers());
     const auto read_link = [&] {
         read_link_bytes(pc, cp2102, uart::decision_offset_ps(mcu.chip().rx_clock(), mcu.chip().rx_format()),
@@ -239,6 +240,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
             pins.read_before(now_ps);
             chord_gaps.add_windows(pins.windows(), false);
             hand_ended_moves();
+            if (!s.detail) pins.drop_windows_before(std::min(handed, chord_gaps.next_window()));  // --detail lists them
             feed->fold(now_ps);
         });
     const TimePs t_now = end.t_ps;

@@ -29,7 +29,7 @@ std::size_t ChordGapFold::transfer_of(const MotionWindow& w) {
                            std::to_string(w.motion));
 }
 
-void ChordGapFold::add_windows(const std::vector<MotionWindow>& windows, bool ended) {
+void ChordGapFold::add_windows(const RecordLog<MotionWindow>& windows, bool ended) {
     for (; m_next_window < windows.size(); ++m_next_window) {
         const MotionWindow& w = windows[m_next_window];
         if (m_prev && w.command == m_prev->command && w.motion != 0) {

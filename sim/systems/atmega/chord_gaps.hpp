@@ -4,11 +4,13 @@
 // be dropped once read.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <optional>
 #include <utility>
 #include <vector>
 
+#include "common/record_log.hpp"
 #include "common/units.hpp"
 #include "host/core/seed003/plan.hpp"
 #include "systems/atmega/motion_windows.hpp"
@@ -30,7 +32,7 @@ public:
     void add_byte(std::size_t transfer, TimePs t_ps);
     // The windows from next_window() on, in plan order. A chord is judged once a byte of a later transfer has
     // come, or, with `ended` (no byte comes any more), at once: the chords not judged yet wait for the next call.
-    void add_windows(const std::vector<MotionWindow>& windows, bool ended);
+    void add_windows(const RecordLog<MotionWindow>& windows, bool ended);
     [[nodiscard]] std::size_t next_window() const { return m_next_window; }
     [[nodiscard]] const ChordGaps& gaps() const { return m_gaps; }
 

@@ -120,7 +120,7 @@ std::vector<MotionWindow> motion_windows(const s3::Plan& plan, const PortbLines&
     MotionWindowFold fold(plan);
     fold.add(lines, EdgeLog{});
     fold.finish(t_sim_end_ps);
-    return fold.windows();
+    return {fold.windows().begin(), fold.windows().end()};
 }
 
 }  // namespace cnc::sim

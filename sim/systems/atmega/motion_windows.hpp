@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "common/edge_log.hpp"
+#include "common/record_log.hpp"
 #include "host/core/seed003/plan.hpp"
 
 namespace cnc::sim {
@@ -51,8 +52,11 @@ public:
     void add(const PortbLines& lines, const EdgeLog& y_steps);
     // The run stopped at t_sim_end_ps: the motion under way, if any, ends there (incomplete).
     void finish(TimePs t_sim_end_ps);
-    // The windows of the motions that started and ended (after finish(): every one that started), in plan order.
-    [[nodiscard]] const std::vector<MotionWindow>& windows() const { return m_windows; }
+    // The windows of the motions that started and ended (after finish(): every one that started), in plan order,
+    // numbered over the whole run (size() counts the dropped ones too).
+    [[nodiscard]] const RecordLog<MotionWindow>& windows() const { return m_windows; }
+    // The readers have read the windows before index `end`: they go.
+    void drop_windows_before(std::size_t end) { m_windows.drop_before(end); }
 
 private:
     // The PORTB pins at one instant where any of them changed, with the Y steps before and up to it.
@@ -79,7 +83,7 @@ private:
     bool m_running = false;                         // a motion of m_command is under way
     MotionWindow m_open;                            // that motion
     std::optional<PortEvent> m_isr;                 // its ISR end, once seen
-    std::vector<MotionWindow> m_windows;
+    RecordLog<MotionWindow> m_windows;
 };
 
 // Windows of the motions that started, in plan order. `t_sim_end_ps` closes a motion the run did not finish.

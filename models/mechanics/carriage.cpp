@@ -1,8 +1,8 @@
 #include "mechanics/carriage.hpp"
 #include "common/sc_time.hpp"
 
-#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "common/bad_input.hpp"
@@ -11,14 +11,15 @@ namespace cnc::mech {
 
 namespace {
 
-void require_complete(const CarriageAxis& a, const char* axis) {
-    if (a.step_event == nullptr || a.drive == nullptr)
-        throw BadInput("", std::string("carriage axis ") + axis + " needs a step event and a drive");
+void require_complete(const CarriageAxis& a, const char* axis, bool worker_thread) {
+    if (a.step_event == nullptr || a.drive == nullptr || (worker_thread && a.motor == nullptr))
+        throw BadInput("", std::string("carriage axis ") + axis + " needs a step event and a drive" +
+                               (worker_thread ? " and a motor" : ""));
 }
 
 const CarriageConfig& checked(const CarriageConfig& cfg) {
-    require_complete(cfg.x, "x");
-    require_complete(cfg.y, "y");
+    require_complete(cfg.x, "x", cfg.worker_thread);
+    require_complete(cfg.y, "y", cfg.worker_thread);
     return cfg;
 }
 
@@ -26,12 +27,20 @@ void write_position(PositionSignal& signal, double mm) {
     if (std::abs(mm - signal.read()) > kPositionSignalResolutionMm) signal.write(mm);
 }
 
+// The sampling period in the kernel's picoseconds, as sc_time rounds it.
+TimePs period_ps(double sample_hz) {
+    if (sample_hz <= 0.0) return 0;
+    return static_cast<TimePs>(sc_core::sc_time(1.0 / sample_hz, sc_core::SC_SEC).value());
+}
+
 }  // namespace
 
 Carriage::Carriage(const sc_core::sc_module_name& name, const CarriageConfig& cfg)
     : sc_core::sc_module(name), m_cfg(checked(cfg)),
-      m_carriage_x_mm("carriage_x_mm", position().x_mm),
-      m_carriage_y_mm("carriage_y_mm", position().y_mm) {
+      m_sampler(*cfg.x.drive, *cfg.y.drive, cfg.origin, period_ps(cfg.sample_hz)),
+      m_carriage_x_mm("carriage_x_mm", cfg.worker_thread ? 0.0 : position().x_mm),
+      m_carriage_y_mm("carriage_y_mm", cfg.worker_thread ? 0.0 : position().y_mm) {
+    if (cfg.worker_thread) m_worker = std::make_unique<MechanicsWorker>(*cfg.x.motor, *cfg.y.motor, m_sampler);
     SC_HAS_PROCESS(Carriage);
     SC_METHOD(on_step);
     sensitive << *cfg.x.step_event << *cfg.y.step_event;
@@ -41,47 +50,62 @@ Carriage::Carriage(const sc_core::sc_module_name& name, const CarriageConfig& cf
     dont_initialize();
 }
 
-void Carriage::on_step() {
-    sample();
-    if (m_cfg.sample_hz > 0.0 && !m_periodic_armed) {
-        m_periodic_armed = true;
-        m_period_ev.notify(sc_core::sc_time(1.0 / m_cfg.sample_hz, sc_core::SC_SEC));
+void Carriage::start_of_simulation() {
+    if (m_worker) {
+        m_worker->start(now_ps());
+        return;
     }
+    m_sampler.on_start(now_ps());
+    write_positions();
+}
+
+void Carriage::on_step() {
+    const TimePs t = now_ps();
+    if (m_worker) {
+        m_worker->step(t);
+        return;
+    }
+    if (const std::optional<TimePs> next = m_sampler.on_step(t)) m_period_ev.notify(ps_time(*next - t));
+    write_positions();
 }
 
 // Stops once both axes are at rest, so that a finished job leaves the kernel without events.
 void Carriage::on_period() {
-    sample();
-    if (m_cfg.x.drive->at_rest() && m_cfg.y.drive->at_rest()) {
-        m_periodic_armed = false;
-        return;
-    }
-    m_period_ev.notify(sc_core::sc_time(1.0 / m_cfg.sample_hz, sc_core::SC_SEC));
+    const TimePs t = now_ps();
+    if (const std::optional<TimePs> next = m_sampler.on_period(t)) m_period_ev.notify(ps_time(*next - t));
+    write_positions();
+}
+
+void Carriage::write_positions() {
+    const geom::Vec2& pos = m_sampler.samples().back().pos;
+    write_position(m_carriage_x_mm, pos.x_mm);
+    write_position(m_carriage_y_mm, pos.y_mm);
 }
 
 geom::Vec2 Carriage::position() const {
+    if (m_cfg.worker_thread) throw std::logic_error("the carriage's position is the worker's while it runs");
     const TimePs t = now_ps();
     return m_cfg.origin + geom::Vec2{m_cfg.x.drive->carriage_mm(t), m_cfg.y.drive->carriage_mm(t)};
 }
 
-void Carriage::start_of_simulation() { sample(); }
-
-std::vector<ToolSample> Carriage::take_samples_before(TimePs t_ps) {
-    const auto end = std::lower_bound(m_samples.begin(), m_samples.end(), t_ps,
-                                      [](const ToolSample& s, TimePs t) { return s.t_ps < t; });
-    std::vector<ToolSample> taken(m_samples.begin(), end);
-    m_samples.erase(m_samples.begin(), end);
-    return taken;
+const std::vector<ToolSample>& Carriage::samples() const {
+    return m_worker ? m_worker->samples_left() : m_sampler.samples();
 }
 
-void Carriage::sample() {
-    const ToolSample s{now_ps(), position()};
-    if (!m_samples.empty() && m_samples.back().t_ps == s.t_ps)
-        m_samples.back() = s;
-    else
-        m_samples.push_back(s);
-    write_position(m_carriage_x_mm, s.pos.x_mm);
-    write_position(m_carriage_y_mm, s.pos.y_mm);
+std::vector<ToolSample> Carriage::take_samples_before(TimePs t_ps) {
+    if (!m_worker) return m_sampler.take_before(t_ps);
+    // Every call up to now has been made: the worker may take the samples before now while the simulation runs on.
+    if (sc_core::sc_is_running() || sc_core::sc_get_status() == sc_core::SC_PAUSED) m_worker->mark(now_ps());
+    return m_worker->take_before(t_ps);
+}
+
+std::optional<MechanicsWorker::End> Carriage::finish(TimePs bound_ps, bool bound_inclusive) {
+    if (!m_worker) return std::nullopt;
+    return m_worker->finish(bound_ps, bound_inclusive);
+}
+
+double WorkerMotor::shaft_angle_deg(TimePs) const {
+    throw std::logic_error("a motor on the mechanics worker is not read while it runs");
 }
 
 }  // namespace cnc::mech

@@ -1,10 +1,14 @@
-// The XY carriage: each axis is a drive (an ideal motor on a rigid transmission, or a dynamic axis model);
-// the tool position is sampled at every step of either axis (DESIGN.md §4: contour error is sampled at every
-// step event) and, with sample_hz > 0, periodically in between for as long as an axis is not at rest (a
-// dynamic carriage keeps moving between steps: it lags, rings and settles). At each sample the position goes
-// to the real-valued signals carriage_x_mm / carriage_y_mm (what the VCD traces) when it has moved by more than
-// kPositionSignalResolutionMm since the value they hold.
+// The XY carriage: each axis is a drive (an ideal motor on a rigid transmission, or a dynamic axis model); the
+// tool position is sampled as tool_sampler.hpp says (at every step event and, with sample_hz > 0, periodically
+// while an axis moves). At each sample the position goes to the real-valued signals carriage_x_mm /
+// carriage_y_mm (what the VCD traces) when it has moved by more than kPositionSignalResolutionMm since the value
+// they hold.
+// With `worker_thread` the axes run on a thread of their own (mechanics_worker.hpp): the drivers reach the motors
+// through WorkerMotor, the carriage hands the worker the instants of the steps, and the samples come from the
+// worker; the position signals are then not written (a run that traces them keeps the axes on its thread).
 #pragma once
+#include <memory>
+#include <optional>
 #include <systemc>
 #include <vector>
 
@@ -12,12 +16,16 @@
 #include "common/tool_sample.hpp"
 #include "common/units.hpp"
 #include "mechanics/core/carriage_drive.hpp"
+#include "mechanics/core/mechanics_worker.hpp"
+#include "mechanics/core/motor.hpp"
+#include "mechanics/core/tool_sampler.hpp"
 
 namespace cnc::mech {
 
 struct CarriageAxis {
     const sc_core::sc_event* step_event = nullptr;  // the axis driver's step_event()
     const CarriageDrive* drive = nullptr;
+    StepperMotor* motor = nullptr;  // with worker_thread: the motor the worker drives (the driver has a WorkerMotor)
 };
 
 struct CarriageConfig {
@@ -25,6 +33,7 @@ struct CarriageConfig {
     CarriageAxis y;
     geom::Vec2 origin{};  // tool position (machine mm) with both shafts at 0 deg
     double sample_hz = 0.0;  // periodic samples while an axis moves; 0: at step events only
+    bool worker_thread = false;
 };
 
 using ToolSample = cnc::ToolSample;
@@ -40,30 +49,52 @@ class Carriage : public sc_core::sc_module {
 public:
     Carriage(const sc_core::sc_module_name& name, const CarriageConfig& cfg);
 
-    // Tool position now.
+    // Tool position now (not with the worker thread).
     [[nodiscard]] geom::Vec2 position() const;
-    // One sample at t = 0, then one per time stamp at which either axis stepped: steps of X and Y at the
-    // same instant give one sample (the later one overwrites), so a diagonal step is not seen as an L.
-    [[nodiscard]] const std::vector<ToolSample>& samples() const { return m_samples; }
+    // Every sample not handed over (with the worker thread: after finish()).
+    [[nodiscard]] const std::vector<ToolSample>& samples() const;
     // Hands over the samples taken before t_ps and forgets them, for metrics that measure as the run goes (a
-    // sample at t_ps or later may still be overwritten by a step at its instant, so it stays).
+    // sample at t_ps or later may still be overwritten by a step at its instant, so it stays). t_ps no later than
+    // the simulation's time.
     [[nodiscard]] std::vector<ToolSample> take_samples_before(TimePs t_ps);
+    // The simulation has stopped. With the worker thread: the periodic samples up to the bound (before it, or also
+    // at it with `bound_inclusive`) are taken, the thread ends and the axes may be read again; what it says of the
+    // periodic samples. Nothing without the worker thread (the kernel took them).
+    std::optional<MechanicsWorker::End> finish(TimePs bound_ps, bool bound_inclusive);
+    // With the worker thread: where the drivers' WorkerMotors send their calls.
+    [[nodiscard]] MechanicsWorker& worker() { return *m_worker; }
     // The tool position in machine mm, per axis, updated at the samples (resolution above).
     [[nodiscard]] const PositionSignal& carriage_x_mm() const { return m_carriage_x_mm; }
     [[nodiscard]] const PositionSignal& carriage_y_mm() const { return m_carriage_y_mm; }
 
 private:
     void start_of_simulation() override;
-    void sample();
     void on_step();
     void on_period();
+    void write_positions();
 
     CarriageConfig m_cfg;
-    std::vector<ToolSample> m_samples;
+    ToolSampler m_sampler;
+    std::unique_ptr<MechanicsWorker> m_worker;
     sc_core::sc_event m_period_ev;
-    bool m_periodic_armed = false;
     PositionSignal m_carriage_x_mm;
     PositionSignal m_carriage_y_mm;
+};
+
+// A driver's motor when the axes run on the worker thread: its calls go to the worker, for the axis's motor.
+class WorkerMotor : public StepperMotor {
+public:
+    WorkerMotor(Carriage& carriage, int axis) : m_carriage(carriage), m_axis(axis) {}
+    void on_microstep(TimePs t_ps, std::int64_t microstep_index, int microsteps_per_full_step) override {
+        m_carriage.worker().microstep(m_axis, t_ps, microstep_index, microsteps_per_full_step);
+    }
+    void on_enable(TimePs t_ps, bool enabled) override { m_carriage.worker().enable(m_axis, t_ps, enabled); }
+    // The worker's axis is not to be read while it runs (the carriage's samples are).
+    [[nodiscard]] double shaft_angle_deg(TimePs t_ps) const override;
+
+private:
+    Carriage& m_carriage;
+    int m_axis;
 };
 
 }  // namespace cnc::mech

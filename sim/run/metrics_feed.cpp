@@ -44,6 +44,10 @@ void MetricsFeed::take_until(TimePs t_ps) {
 }
 
 void MetricsFeed::fold(TimePs now_ps) {
+    if (m_behind) {
+        std::swap(now_ps, m_slice_end_ps);
+        if (now_ps < 0) return;
+    }
     take_until(now_ps);
     m_stream.pending().t_job_end_ps = now_ps;
     m_stream.fold(now_ps);

@@ -40,6 +40,10 @@ public:
     void add_piece(metrics::MoveSpec piece) { m_stream.pending().moves.push_back(std::move(piece)); }
     // Where the run adds what else it knows so far: a commanded trajectory, rate segments (metrics_stream.hpp).
     [[nodiscard]] metrics::RunInput& pending() { return m_stream.pending(); }
+    // Each fold measures up to the time the previous one was told, a slice behind the simulation: for a carriage
+    // whose axes run on a worker thread (mech::Carriage), which integrates the slice just simulated while the
+    // simulation runs the next one, instead of the simulation waiting for it at every slice.
+    void stay_a_slice_behind() { m_behind = true; }
     // The simulation has reached now_ps (the job still runs).
     void fold(TimePs now_ps);
     // The run has ended: everything left, and the metrics of the whole run.
@@ -54,6 +58,8 @@ private:
     TakeSamplesBefore m_take_samples;
     TakeEdgesBefore m_take_edges;
     metrics::MetricsStream m_stream;
+    bool m_behind = false;
+    TimePs m_slice_end_ps = -1;  // with m_behind: the time the last fold was told
 };
 
 }  // namespace cnc::sim

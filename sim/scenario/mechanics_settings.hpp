@@ -17,6 +17,7 @@ enum class MechanicsModel { Ideal, Dynamic };
 struct MechanicsSettings {
     MechanicsModel model = MechanicsModel::Ideal;
     double sample_hz = 1000.0;  // tool samples between step events (dynamic model)
+    bool worker_thread = true;  // dynamic model: the axes integrated on a thread of their own (mech::Carriage)
     mech::IntegratorTolerances tolerances;
     mech::DriverElectrics driver;
     mech::HybridStepperParams motor;

@@ -350,7 +350,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     fpga.cfg_valid(w.cfg_valid);
     fpga.rx_valid(w.rx_valid);
     fpga.tx_start(w.ack);
-    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics);
+    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics, !s.vcd_path.empty());
     machine.bind(w.step_x, w.dir_x, w.n_enbl_x, w.step_y, w.dir_y, w.n_enbl_y, w.laser);
     EdgeRecorder rec("probes");
     record_wires(rec, w, s.keep_run_input);
@@ -373,10 +373,11 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         feed.emplace(
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
             s.detail, [&dead_fold](const metrics::MoveMetrics& p) { dead_fold.add_piece(piece_steps(p)); });
+        if (machine.mechanics_on_worker()) feed->stay_a_slice_behind();
     }
     ExecutedPieces executed;
     FpgaWarnings warnings(s);
-    const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
+    SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
         if (!feed) return;
         executed.time_ended(fpga, now_ps, packets, moves, [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
         feed->fold(now_ps);
@@ -385,6 +386,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         hand_over_read(executed, dead_fold, warnings, s.detail, fpga, sender, cp2102, packets);
     });
     if (vcd) vcd->close();
+    machine.finish_mechanics(end, budget.limit_ps, false);
 
     ArchRun run;
     record_budget(budget, run);
@@ -397,7 +399,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         }
     });
     in.t_job_start_ps = 0;
-    in.t_job_end_ps = sender.finished() ? sender.t_end_ps() : static_cast<TimePs>(sc_core::sc_time_stamp().value());
+    in.t_job_end_ps = sender.finished() ? sender.t_end_ps() : end.t_ps;
     if (feed) {
         run.metrics = feed->finish(in.t_job_end_ps);
     } else {

@@ -16,6 +16,7 @@
 #include "mechanics/drv8825.hpp"
 #include "mechanics/laser_head.hpp"
 #include "probes/vcd_trace.hpp"
+#include "run/simulate.hpp"
 #include "scenario/mechanics_settings.hpp"
 
 namespace cnc::sim {
@@ -42,8 +43,10 @@ public:
     sc_core::sc_in<bool> step_y, dir_y, n_enbl_y;
     sc_core::sc_in<bool> laser;
 
+    // `positions_traced`: the run writes a VCD, which traces the carriage's position signals, so the dynamic axes
+    // stay on the simulation's thread (mechanics.worker_thread).
     Machine(const sc_core::sc_module_name& name, const host::MachineModel& model, const mech::Drv8825Config& driver,
-            geom::Vec2 origin_mm, const MechanicsSettings& mechanics);
+            geom::Vec2 origin_mm, const MechanicsSettings& mechanics, bool positions_traced);
 
     // Binds every input pin to the controller's wires (the same names in every architecture).
     void bind(sc_core::sc_signal<bool>& step_x_wire, sc_core::sc_signal<bool>& dir_x_wire,
@@ -58,13 +61,24 @@ public:
     [[nodiscard]] const mech::LaserHead& laser_head() const { return m_head; }
     // The carriage position per axis for the VCD: carriage_x_mm, carriage_y_mm (real-valued).
     [[nodiscard]] std::vector<TracedReal> traced_positions() const;
+    // The simulation has stopped (simulate()'s `end`, with the run's time limit; `runs_to_time`: it was simulated
+    // with a check period, in slices that run to their end). With the axes on the worker thread, the worker takes
+    // its last periodic samples as the kernel would have (they kept the kernel running until both axes were at
+    // rest, or to the limit), `end` becomes what the kernel would have said with them, and the axes may be read.
+    // Call it before reading the carriage's last samples or the dynamic axes.
+    void finish_mechanics(SimulationEnd& end, TimePs limit_ps, bool runs_to_time);
+    // Whether the dynamic axes run on the carriage's worker thread.
+    [[nodiscard]] bool mechanics_on_worker() const { return m_worker_thread; }
     // The dynamic axis models (nullptr with the ideal mechanics).
     [[nodiscard]] const mech::DynamicAxis* dynamic_x() const { return m_axis_x.dynamic; }
     [[nodiscard]] const mech::DynamicAxis* dynamic_y() const { return m_axis_y.dynamic; }
 
 private:
+    bool m_worker_thread;
     ModeStraps m_modes_x, m_modes_y;
     AxisMechanics m_axis_x, m_axis_y;
+    // With the worker thread: the drivers' motors, which hand their calls to the carriage's worker.
+    std::unique_ptr<mech::WorkerMotor> m_worker_motor_x, m_worker_motor_y;
     mech::Drv8825 m_drv_x, m_drv_y;
     mech::Carriage m_carriage;
     mech::LaserHead m_head;

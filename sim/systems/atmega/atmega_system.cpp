@@ -189,7 +189,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     mcu.rxd(w.uart_rx);
     mech::Drv8825Config driver = s.driver;
     driver.dir_high_is_positive = false;  // seed 003 §2.2: DIR 0 = CW = +X / +Y
-    Machine machine("machine", s.machine, driver, s.interpreter.start_mm, s.mechanics);
+    Machine machine("machine", s.machine, driver, s.interpreter.start_mm, s.mechanics, !s.vcd_path.empty());
     machine.bind(w.step_x, w.dir_x, w.n_enbl_x, w.step_y, w.dir_y, w.n_enbl_y, w.laser);
     EdgeRecorder rec("probes");
     for (const sc_core::sc_signal<bool>* sig : {&w.step_x, &w.dir_x, &w.step_y, &w.dir_y, &w.n_enbl_x, &w.n_enbl_y,
@@ -217,6 +217,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
         feed.emplace(
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
             s.detail);
+        if (machine.mechanics_on_worker()) feed->stay_a_slice_behind();
         // Every fold comes right after the pins were read up to its instant: what they hold is all before it.
         feed->take_edges_with([&pins](const std::string& pin, TimePs) { return pins.hand_over(pin); });
     }
@@ -232,7 +233,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
             feed->add_piece(executed_move(s, commanded[handed], pins.windows()[handed]));
         }
     };
-    const SimulationEnd end = simulate(
+    SimulationEnd end = simulate(
         budget, [&] { return mcu.stopped() || link_failure(mcu, cp2102, pc).has_value(); }, kStopCheckPs,
         [&](TimePs now_ps) {
             read_link();
@@ -245,6 +246,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
         });
     const TimePs t_now = end.t_ps;
     if (vcd) vcd->close();
+    machine.finish_mechanics(end, budget.limit_ps, true);
 
     ArchRun run;
     record_budget(budget, run);

@@ -117,7 +117,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     master.target(fpga.spi_target);
     host::servo::ServoThread host("host", servo_config(s), *plan, std::move(ahead.servo), master);
     host.keep_wakeups(s.detail);  // the report's summary is folded period by period; --detail lists every one
-    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics);
+    Machine machine("machine", s.machine, s.driver, s.interpreter.start_mm, s.mechanics, !s.vcd_path.empty());
     machine.step_x(w.step_x);
     machine.dir_x(w.dir_x);
     machine.n_enbl_x(w.n_enbl_x);
@@ -170,7 +170,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
             s.detail);
         feed->pending().commanded = commanded_trajectory_live(trajectory, core);
     }
-    const SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
+    SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
         if (!feed) return;
         hand_over(false);
         feed->fold(now_ps);
@@ -182,10 +182,11 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
         plan->drop_before(core.clock().tau_at(read_from_ps));
     });
     if (vcd) vcd->close();
+    machine.finish_mechanics(end, budget.limit_ps, false);
 
     record_budget(budget, run);
     in.t_job_start_ps = 0;
-    in.t_job_end_ps = host.t_done_ps().value_or(static_cast<TimePs>(sc_core::sc_time_stamp().value()));
+    in.t_job_end_ps = host.t_done_ps().value_or(end.t_ps);
     if (feed) {
         hand_over(true);
         run.metrics = feed->finish(in.t_job_end_ps);

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Wall time of the ideal and the dynamic mechanics (issue 10's speed target): fpga-uart square and
-# six-segment, atmega square; best of 3 runs each, with the job's simulated time and the real-time factor, the
-# CPU time (user + system: less disturbed than the wall time by other work on a shared machine) and the dynamic
-# runs' integration steps (both axes; deterministic).
+# Wall time of the ideal and the dynamic mechanics (issue 10's speed target), the latter with its worker thread
+# (the default) and without ("dynamic-1"): fpga-uart square and six-segment, atmega square; best of 3 runs each,
+# with the job's simulated time and the real-time factor, the CPU time (user + system: less disturbed than the
+# wall time by other work on a shared machine; with the worker thread, both threads' time) and the dynamic runs'
+# integration steps (both axes; deterministic).
 # Then the peak memory of the dynamic square at the default tolerances and at tolerances 1000 x tighter (several
 # times the integration steps): it must not grow with them.
 # usage: bench/mechanics_bench.sh [build/sim/cncsim]
@@ -13,7 +14,10 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 printf '%-28s %-8s %9s %9s %9s %10s %12s\n' scenario model "sim [s]" "wall [s]" "CPU [s]" "x real" "int. steps"
 for scenario in scenarios/fpga-uart/square_20mm.toml scenarios/fpga-uart/six_segment.toml scenarios/atmega/square_20mm.toml; do
-  for model in ideal dynamic; do
+  # "dynamic-1": the dynamic mechanics on the simulation's thread (mechanics.worker_thread = false)
+  for model in ideal dynamic dynamic-1; do
+    sets=(--set mechanics.model=${model%-1})
+    if [ "$model" = dynamic-1 ]; then sets+=(--set mechanics.worker_thread=false); fi
     best=""
     best_cpu=""
     for _ in 1 2 3; do
@@ -23,7 +27,7 @@ for scenario in scenarios/fpga-uart/square_20mm.toml scenarios/fpga-uart/six_seg
 t = time.monotonic(); p = subprocess.Popen(sys.argv[1:], stdout=subprocess.DEVNULL)
 _, status, r = os.wait4(p.pid, 0); p.returncode = os.waitstatus_to_exitcode(status)
 assert p.returncode == 0, p.returncode; print(time.monotonic() - t, r.ru_utime + r.ru_stime)' \
-        "$CNCSIM" run "$scenario" --set mechanics.model=$model --progress off --report "$tmp/r.json")
+        "$CNCSIM" run "$scenario" "${sets[@]}" --progress off --report "$tmp/r.json")
       if [ -z "$best" ] || [ "$(echo "$wall < $best" | bc -l)" = 1 ]; then best=$wall; fi
       if [ -z "$best_cpu" ] || [ "$(echo "$cpu < $best_cpu" | bc -l)" = 1 ]; then best_cpu=$cpu; fi
     done

@@ -25,7 +25,7 @@ namespace cnc::mech {
 
 class MechanicsWorker {
 public:
-    // `motors`: X and Y, driven by the worker only; `sampler` reads the same axes.
+    // `x`, `y`: the axes' motors, driven by the worker only until finish(); `sampler` reads the same axes.
     MechanicsWorker(StepperMotor& x, StepperMotor& y, ToolSampler& sampler);
     ~MechanicsWorker();
     MechanicsWorker(const MechanicsWorker&) = delete;
@@ -89,11 +89,10 @@ private:
     std::vector<Command> m_queue;
     std::vector<ToolSample> m_ready;  // samples final and not yet handed over
     TimePs m_synced_ps = -1;           // every sample before this is in m_ready
-    bool m_ended = false;
     std::exception_ptr m_error;
-    End m_end;
-    // The worker's side.
+    // The worker's side (m_end the caller's after the thread has ended).
     std::optional<TimePs> m_next_periodic_ps;
+    End m_end;
 
     std::thread m_thread;
     bool m_finished = false;

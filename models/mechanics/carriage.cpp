@@ -95,7 +95,7 @@ const std::vector<ToolSample>& Carriage::samples() const {
 std::vector<ToolSample> Carriage::take_samples_before(TimePs t_ps) {
     if (!m_worker) return m_sampler.take_before(t_ps);
     // Every call up to now has been made: the worker may take the samples before now while the simulation runs on.
-    if (sc_core::sc_is_running() || sc_core::sc_get_status() == sc_core::SC_PAUSED) m_worker->mark(now_ps());
+    m_worker->mark(now_ps());
     return m_worker->take_before(t_ps);
 }
 

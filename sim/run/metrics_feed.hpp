@@ -42,7 +42,8 @@ public:
     [[nodiscard]] metrics::RunInput& pending() { return m_stream.pending(); }
     // Each fold measures up to the time the previous one was told, a slice behind the simulation: for a carriage
     // whose axes run on a worker thread (mech::Carriage), which integrates the slice just simulated while the
-    // simulation runs the next one, instead of the simulation waiting for it at every slice.
+    // simulation runs the next one, instead of the simulation waiting for it at every slice. The edges must then
+    // be taken by their time (the recorder's take_before).
     void stay_a_slice_behind() { m_behind = true; }
     // The simulation has reached now_ps (the job still runs).
     void fold(TimePs now_ps);

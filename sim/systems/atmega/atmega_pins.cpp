@@ -41,11 +41,8 @@ void AtmegaPins::read_before(TimePs t_ps) {
     for (const char* pin : {"n_enbl_x", "n_enbl_y", "step_x", "step_y"}) append(m_raw[pin], read[pin]);
 }
 
-EdgeLog AtmegaPins::hand_over(const std::string& pin) {
-    EdgeLog& unread = m_unread.at(pin);
-    EdgeLog out = std::move(unread);
-    unread = EdgeLog{out.name, out.edges.empty() ? out.initial : out.edges.back().level, {}};
-    return out;
+EdgeLog AtmegaPins::hand_over(const std::string& pin, TimePs before_ps) {
+    return m_unread.at(pin).take_before(before_ps);
 }
 
 EdgeLog AtmegaPins::take_raw(const std::string& pin) { return std::move(m_raw.at(pin)); }

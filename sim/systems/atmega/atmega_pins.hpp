@@ -3,6 +3,7 @@
 // held with the DIR and laser edges until the metrics take them. What is read is dropped from the recorder, so a
 // streamed run keeps one slice of edges; read once at the end, the logs are the whole run's.
 #pragma once
+#include <limits>
 #include <map>
 #include <string>
 
@@ -26,9 +27,10 @@ public:
     [[nodiscard]] const RecordLog<MotionWindow>& windows() const { return m_windows.windows(); }
     void drop_windows_before(std::size_t end) { m_windows.drop_windows_before(end); }
 
-    // The edges read and not handed over yet of a pin the metrics read: step_x and step_y (the pulses the
-    // drivers act on), dir_x, dir_y, laser.
-    [[nodiscard]] EdgeLog hand_over(const std::string& pin);
+    // The edges read and not handed over yet of a pin the metrics read, those before `before_ps`: step_x and
+    // step_y (the pulses the drivers act on), dir_x, dir_y, laser.
+    [[nodiscard]] EdgeLog hand_over(const std::string& pin,
+                                    TimePs before_ps = std::numeric_limits<TimePs>::max());
     // With keep_raw: a raw pin's whole log (n_enbl_x, n_enbl_y, step_x, step_y).
     [[nodiscard]] EdgeLog take_raw(const std::string& pin);
 

@@ -218,8 +218,8 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
             s.detail);
         if (machine.mechanics_on_worker()) feed->stay_a_slice_behind();
-        // Every fold comes right after the pins were read up to its instant: what they hold is all before it.
-        feed->take_edges_with([&pins](const std::string& pin, TimePs) { return pins.hand_over(pin); });
+        // Every fold comes right after the pins were read up to its instant: the edges before it are all there.
+        feed->take_edges_with([&pins](const std::string& pin, TimePs t_ps) { return pins.hand_over(pin, t_ps); });
     }
     // The late chords are folded as the bytes and the windows come, so that neither is kept for the whole run.
     ChordGapFold chord_gaps(pc.transfers());

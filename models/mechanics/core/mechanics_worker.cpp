@@ -1,6 +1,5 @@
 #include "mechanics/core/mechanics_worker.hpp"
 
-#include <algorithm>
 #include <iterator>
 #include <limits>
 #include <utility>
@@ -48,17 +47,13 @@ void MechanicsWorker::mark(TimePs t_ps) {
 }
 
 std::vector<ToolSample> MechanicsWorker::take_before(TimePs t_ps) {
-    if (!m_finished) mark(t_ps);
+    mark(t_ps);
     std::unique_lock<std::mutex> lock(m_mutex);
     if (!m_finished) {
         m_cv_synced.wait(lock, [&] { return m_synced_ps >= t_ps || m_error; });
         if (m_error) std::rethrow_exception(m_error);
     }
-    const auto end = std::lower_bound(m_ready.begin(), m_ready.end(), t_ps,
-                                      [](const ToolSample& s, TimePs t) { return s.t_ps < t; });
-    std::vector<ToolSample> taken(m_ready.begin(), end);
-    m_ready.erase(m_ready.begin(), end);
-    return taken;
+    return take_samples_before(m_ready, t_ps);
 }
 
 MechanicsWorker::End MechanicsWorker::finish(TimePs bound_ps, bool bound_inclusive) {

@@ -1,7 +1,5 @@
 #include "mechanics/core/tool_sampler.hpp"
 
-#include <algorithm>
-
 namespace cnc::mech {
 
 ToolSampler::ToolSampler(const CarriageDrive& x, const CarriageDrive& y, geom::Vec2 origin_mm, TimePs period_ps)
@@ -25,13 +23,7 @@ std::optional<TimePs> ToolSampler::on_period(TimePs t_ps) {
     return t_ps + m_period_ps;
 }
 
-std::vector<ToolSample> ToolSampler::take_before(TimePs t_ps) {
-    const auto end = std::lower_bound(m_samples.begin(), m_samples.end(), t_ps,
-                                      [](const ToolSample& s, TimePs t) { return s.t_ps < t; });
-    std::vector<ToolSample> taken(m_samples.begin(), end);
-    m_samples.erase(m_samples.begin(), end);
-    return taken;
-}
+std::vector<ToolSample> ToolSampler::take_before(TimePs t_ps) { return take_samples_before(m_samples, t_ps); }
 
 void ToolSampler::sample(TimePs t_ps) {
     const ToolSample s{t_ps, m_origin_mm + geom::Vec2{m_x.carriage_mm(t_ps), m_y.carriage_mm(t_ps)}};

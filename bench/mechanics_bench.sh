@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Wall time of the ideal and the dynamic mechanics (issue 10's speed target), the latter with its worker thread
-# (the default) and without ("dynamic-1"): fpga-uart square and six-segment, atmega square; best of 3 runs each,
+# Wall time of the ideal and the dynamic mechanics (issue 10's speed target), the latter with its worker threads
+# (one per axis, the default) and without ("dynamic-1"): fpga-uart square and six-segment, atmega square; best of 3 runs each,
 # with the job's simulated time and the real-time factor, the CPU time (user + system: less disturbed than the
-# wall time by other work on a shared machine; with the worker thread, both threads' time) and the dynamic runs'
+# wall time by other work on a shared machine; with the worker threads, all threads' time) and the dynamic runs'
 # integration steps (both axes; deterministic).
 # Then the peak memory of the dynamic square at the default tolerances and at tolerances 1000 x tighter (several
 # times the integration steps): it must not grow with them.

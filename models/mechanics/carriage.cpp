@@ -40,32 +40,39 @@ Carriage::Carriage(const sc_core::sc_module_name& name, const CarriageConfig& cf
       m_sampler(*cfg.x.drive, *cfg.y.drive, cfg.origin, period_ps(cfg.sample_hz)),
       m_carriage_x_mm("carriage_x_mm", cfg.worker_thread ? 0.0 : position().x_mm),
       m_carriage_y_mm("carriage_y_mm", cfg.worker_thread ? 0.0 : position().y_mm) {
-    if (cfg.worker_thread) m_worker = std::make_unique<MechanicsWorker>(*cfg.x.motor, *cfg.y.motor, m_sampler);
+    if (cfg.worker_thread) {
+        m_worker = std::make_unique<MechanicsWorker>(MechanicsWorker::Axis{cfg.x.motor, cfg.x.drive},
+                                                     MechanicsWorker::Axis{cfg.y.motor, cfg.y.drive}, cfg.origin,
+                                                     period_ps(cfg.sample_hz));
+    }
     SC_HAS_PROCESS(Carriage);
     SC_METHOD(on_step);
     sensitive << *cfg.x.step_event << *cfg.y.step_event;
+    dont_initialize();
+    SC_METHOD(on_enable);
+    for (const CarriageAxis* a : {&cfg.x, &cfg.y}) {
+        if (a->enable_event != nullptr) sensitive << *a->enable_event;
+    }
     dont_initialize();
     SC_METHOD(on_period);
     sensitive << m_period_ev;
     dont_initialize();
 }
 
-void Carriage::start_of_simulation() {
-    if (m_worker) {
-        m_worker->start(now_ps());
-        return;
-    }
-    m_sampler.on_start(now_ps());
-    write_positions();
-}
+void Carriage::start_of_simulation() { on_event(&MechanicsWorker::start, &ToolSampler::on_start); }
 
-void Carriage::on_step() {
+void Carriage::on_step() { on_event(&MechanicsWorker::step, &ToolSampler::on_step); }
+
+void Carriage::on_enable() { on_event(&MechanicsWorker::enable_changed, &ToolSampler::on_enable); }
+
+void Carriage::on_event(void (MechanicsWorker::*to_worker)(TimePs),
+                        std::optional<TimePs> (ToolSampler::*to_sampler)(TimePs)) {
     const TimePs t = now_ps();
     if (m_worker) {
-        m_worker->step(t);
+        ((*m_worker).*to_worker)(t);
         return;
     }
-    if (const std::optional<TimePs> next = m_sampler.on_step(t)) m_period_ev.notify(ps_time(*next - t));
+    if (const std::optional<TimePs> next = (m_sampler.*to_sampler)(t)) m_period_ev.notify(ps_time(*next - t));
     write_positions();
 }
 
@@ -98,6 +105,8 @@ std::vector<ToolSample> Carriage::take_samples_before(TimePs t_ps) {
     m_worker->mark(now_ps());
     return m_worker->take_before(t_ps);
 }
+
+TimePs Carriage::samples_ready_ps() { return m_worker ? m_worker->ready_ps(now_ps()) : now_ps(); }
 
 std::optional<MechanicsWorker::End> Carriage::finish(TimePs bound_ps, bool bound_inclusive) {
     if (!m_worker) return std::nullopt;

@@ -1,6 +1,6 @@
 // The XY carriage: each axis is a drive (an ideal motor on a rigid transmission, or a dynamic axis model); the
 // tool position is sampled as tool_sampler.hpp says (at every step event and, with sample_hz > 0, periodically
-// while an axis moves). At each sample the position goes to the real-valued signals carriage_x_mm /
+// while an axis moves, from the start, a step or an enable change on). At each sample the position goes to the real-valued signals carriage_x_mm /
 // carriage_y_mm (what the VCD traces) when it has moved by more than kPositionSignalResolutionMm since the value
 // they hold.
 // With `worker_thread` the axes run on a thread of their own (mechanics_worker.hpp): the drivers reach the motors
@@ -26,6 +26,7 @@ struct CarriageAxis {
     const sc_core::sc_event* step_event = nullptr;  // the axis driver's step_event()
     const CarriageDrive* drive = nullptr;
     StepperMotor* motor = nullptr;  // with worker_thread: the motor the worker drives (the driver has a WorkerMotor)
+    const sc_core::sc_event* enable_event = nullptr;  // the axis driver's enable_event(), if it has one
 };
 
 struct CarriageConfig {
@@ -57,6 +58,9 @@ public:
     // sample at t_ps or later may still be overwritten by a step at its instant, so it stays). t_ps no later than
     // the simulation's time.
     [[nodiscard]] std::vector<ToolSample> take_samples_before(TimePs t_ps);
+    // The latest time before which take_samples_before() need not wait (with the worker thread: for the workers
+    // to get there; without, now).
+    [[nodiscard]] TimePs samples_ready_ps();
     // The simulation has stopped. With the worker thread: the periodic samples up to the bound (before it, or also
     // at it with `bound_inclusive`) are taken, the thread ends and the axes may be read again; what it says of the
     // periodic samples. Nothing without the worker thread (the kernel took them).
@@ -70,6 +74,11 @@ public:
 private:
     void start_of_simulation() override;
     void on_step();
+    void on_enable();
+    // An event of the sampler's (the start, a step, an enable change): to the worker, or to the sampler, whose
+    // periodic samples it may start.
+    void on_event(void (MechanicsWorker::*to_worker)(TimePs),
+                  std::optional<TimePs> (ToolSampler::*to_sampler)(TimePs));
     void on_period();
     void write_positions();
 

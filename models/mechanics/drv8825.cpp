@@ -60,7 +60,10 @@ void Drv8825::on_dir() {
     m_dir_change_ps = t;
 }
 
-void Drv8825::on_enable() { m_motor.on_enable(now_ps(), !n_enbl.read()); }
+void Drv8825::on_enable() {
+    m_motor.on_enable(now_ps(), !n_enbl.read());
+    m_enable_ev.notify(sc_core::SC_ZERO_TIME);
+}
 
 void Drv8825::on_step() {
     const TimePs t = now_ps();

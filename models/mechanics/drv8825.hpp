@@ -55,6 +55,8 @@ public:
     [[nodiscard]] const TimingStats& timing() const { return m_checker.stats(); }
     // Notified (delta) after every change of the commanded position, for position samplers.
     [[nodiscard]] const sc_core::sc_event& step_event() const { return m_step_ev; }
+    // Notified (delta) after every change of nENBL, for position samplers (the currents, so the rotor, change).
+    [[nodiscard]] const sc_core::sc_event& enable_event() const { return m_enable_ev; }
     void add_traces(sc_core::sc_trace_file* tf) const;
 
 private:
@@ -70,6 +72,7 @@ private:
     std::int64_t m_position = 0;
     Drv8825Stats m_stats;
     sc_core::sc_event m_step_ev;
+    sc_core::sc_event m_enable_ev;
 
     bool m_dir_level = false;       // DIR as last seen by on_dir
     bool m_dir_before = false;      // DIR before its last change

@@ -1,11 +1,18 @@
 #include "run/metrics_feed.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 
 namespace cnc::sim {
 
 namespace {
+
+// How far the metrics may fall behind the simulation, in slices (each at most a second of simulated time:
+// simulate.cpp), while they wait for the carriage's samples: the edges and the workers' calls of those slices are
+// held until then. Two let one axis's worker integrate a move while the other's still works through the move
+// before (a square's sides); more only hold more for the metrics to measure once the simulation has ended.
+constexpr std::size_t kSlicesBehind = 2;
 
 metrics::RunInput shape(const EdgeRecorder& rec, const std::vector<AxisPins>& axes, const std::string& laser_pin) {
     metrics::RunInput in;
@@ -44,9 +51,14 @@ void MetricsFeed::take_until(TimePs t_ps) {
 }
 
 void MetricsFeed::fold(TimePs now_ps) {
-    if (m_behind) {
-        std::swap(now_ps, m_slice_end_ps);
-        if (now_ps < 0) return;
+    if (m_ready) {
+        m_slice_ends_ps.push_back(now_ps);
+        now_ps = m_ready();
+        if (m_slice_ends_ps.size() > kSlicesBehind)
+            now_ps = std::max(now_ps, m_slice_ends_ps[m_slice_ends_ps.size() - 1 - kSlicesBehind]);
+        while (!m_slice_ends_ps.empty() && m_slice_ends_ps.front() <= now_ps) m_slice_ends_ps.pop_front();
+        if (now_ps <= m_measured_ps) return;
+        m_measured_ps = now_ps;
     }
     take_until(now_ps);
     m_stream.pending().t_job_end_ps = now_ps;

@@ -3,6 +3,7 @@
 // the architecture says have ended. What the metrics have measured is dropped, so the logs stay short.
 #pragma once
 #include <cstddef>
+#include <deque>
 #include <functional>
 #include <string>
 #include <utility>
@@ -23,6 +24,8 @@ struct AxisPins {
 
 // The carriage's tool samples taken before a time, handed over and forgotten there (mech::Carriage).
 using TakeSamplesBefore = std::function<std::vector<ToolSample>(TimePs)>;
+// The latest time before which the carriage's tool samples can be taken without waiting (mech::Carriage).
+using SamplesReady = std::function<TimePs()>;
 // A pin's edges before a time, handed over and forgotten there: the recorder's (EdgeRecorder::take_before), or what
 // an architecture made of them (atmega: the STEP pulses its drivers take).
 using TakeEdgesBefore = std::function<EdgeLog(const std::string& pin, TimePs)>;
@@ -40,11 +43,11 @@ public:
     void add_piece(metrics::MoveSpec piece) { m_stream.pending().moves.push_back(std::move(piece)); }
     // Where the run adds what else it knows so far: a commanded trajectory, rate segments (metrics_stream.hpp).
     [[nodiscard]] metrics::RunInput& pending() { return m_stream.pending(); }
-    // Each fold measures up to the time the previous one was told, a slice behind the simulation: for a carriage
-    // whose axes run on a worker thread (mech::Carriage), which integrates the slice just simulated while the
-    // simulation runs the next one, instead of the simulation waiting for it at every slice. The edges must then
-    // be taken by their time (the recorder's take_before).
-    void stay_a_slice_behind() { m_behind = true; }
+    // Each fold measures up to where the carriage's samples are ready without waiting (`ready`), but never more
+    // than kSlicesBehind slices behind the simulation: for a carriage whose axes run on worker threads
+    // (mech::Carriage), which integrate what the simulation has run while it runs on, instead of the simulation
+    // waiting for them at every slice. The edges must then be taken by their time (the recorder's take_before).
+    void stay_behind(SamplesReady ready) { m_ready = std::move(ready); }
     // The simulation has reached now_ps (the job still runs).
     void fold(TimePs now_ps);
     // The run has ended: everything left, and the metrics of the whole run.
@@ -59,8 +62,9 @@ private:
     TakeSamplesBefore m_take_samples;
     TakeEdgesBefore m_take_edges;
     metrics::MetricsStream m_stream;
-    bool m_behind = false;
-    TimePs m_slice_end_ps = -1;  // with m_behind: the time the last fold was told
+    SamplesReady m_ready;
+    std::deque<TimePs> m_slice_ends_ps;  // with m_ready: the ends of the slices not yet measured to
+    TimePs m_measured_ps = -1;           // with m_ready: where the last fold measured to
 };
 
 }  // namespace cnc::sim

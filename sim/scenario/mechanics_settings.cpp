@@ -58,7 +58,7 @@ void read_mechanics_settings(KeyReader& r, MechanicsSettings& s) {
     s.sample_hz = r.get_float("mechanics.sample_hz", s.sample_hz, 1.0, 1e6,
                               "dynamic model: tool samples per second for the metrics, besides one at every step");
     s.worker_thread = r.get_bool("mechanics.worker_thread", s.worker_thread,
-                                 "dynamic model: integrate the axes on a thread of their own, beside the simulation "
+                                 "dynamic model: integrate each axis on a thread of its own, beside the simulation "
                                  "(the same results; not with --vcd, which traces the carriage from the simulation)");
     s.tolerances.abs_tol = r.get_float("mechanics.abs_tol", s.tolerances.abs_tol, 1e-15, 1e-2,
                                        "dynamic model: absolute error per integration step (A, rad, rad/s, m, m/s)");

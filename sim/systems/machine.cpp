@@ -67,8 +67,10 @@ Machine::Machine(const sc_core::sc_module_name& name, const host::MachineModel& 
       m_worker_motor_y(m_worker_thread ? std::make_unique<mech::WorkerMotor>(m_carriage, 1) : nullptr),
       m_drv_x("drv8825_x", driver, m_worker_thread ? *m_worker_motor_x : *m_axis_x.motor),
       m_drv_y("drv8825_y", driver, m_worker_thread ? *m_worker_motor_y : *m_axis_y.motor),
-      m_carriage("carriage", mech::CarriageConfig{{&m_drv_x.step_event(), &m_axis_x.drive(), m_axis_x.motor.get()},
-                                                  {&m_drv_y.step_event(), &m_axis_y.drive(), m_axis_y.motor.get()},
+      m_carriage("carriage", mech::CarriageConfig{{&m_drv_x.step_event(), &m_axis_x.drive(), m_axis_x.motor.get(),
+                                                   &m_drv_x.enable_event()},
+                                                  {&m_drv_y.step_event(), &m_axis_y.drive(), m_axis_y.motor.get(),
+                                                   &m_drv_y.enable_event()},
                                                   origin_mm,
                                                   mechanics.model == MechanicsModel::Dynamic ? mechanics.sample_hz
                                                                                              : 0.0,

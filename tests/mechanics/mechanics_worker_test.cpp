@@ -1,4 +1,4 @@
-// The carriage's sampling (tool_sampler.hpp) and the mechanics worker thread (mechanics_worker.hpp), with a fake
+// The carriage's sampling (tool_sampler.hpp) and the mechanics worker threads (mechanics_worker.hpp), with a fake
 // axis whose position and rest are known at every time: the expected samples are worked out by hand below.
 #include <gtest/gtest.h>
 
@@ -51,55 +51,67 @@ std::vector<TimePs> times(const std::vector<ToolSample>& samples) {
     return t;
 }
 
-// X steps at 0.5 and 1.2 ms, Y at 1.2 ms too, periodic samples every 1 ms. The first step arms them at 1.5 ms;
-// X is at rest from 3.7 ms, Y from 3.7 ms, so the samples at 1.5, 2.5 and 3.5 ms see motion and the one at 4.5 ms
-// rest: the last. The steps at 1.2 ms give one sample.
-TEST(ToolSampler, PeriodicSamplesFromTheFirstStepUntilBothAxesRest) {
+// The start arms the periodic samples on the 1 ms grid; X steps at 0.5 and 1.2 ms, Y at 1.2 ms too. X is at rest
+// from 3.7 ms, Y from 3.7 ms (2.5 ms after their last microsteps), so the samples at 1, 2 and 3 ms see motion and
+// the one at 4 ms rest: the last. The steps at 1.2 ms give one sample.
+TEST(ToolSampler, PeriodicSamplesOnTheGridFromTheStartUntilBothAxesRest) {
     FakeAxis x;
     FakeAxis y;
     ToolSampler sampler(x, y, {10.0, 20.0}, kMs);
-    sampler.on_start(0);
+    ASSERT_EQ(sampler.on_start(0), std::optional<TimePs>(kMs));
     x.on_microstep(kMs / 2, 3, 32);
-    ASSERT_EQ(sampler.on_step(kMs / 2), std::optional<TimePs>(3 * kMs / 2));
+    EXPECT_EQ(sampler.on_step(kMs / 2), std::nullopt);  // already armed
+    ASSERT_EQ(sampler.on_period(kMs), std::optional<TimePs>(2 * kMs));
     x.on_microstep(6 * kMs / 5, 4, 32);
-    EXPECT_EQ(sampler.on_step(6 * kMs / 5), std::nullopt);  // already armed
+    EXPECT_EQ(sampler.on_step(6 * kMs / 5), std::nullopt);
     y.on_microstep(6 * kMs / 5, -2, 32);
     EXPECT_EQ(sampler.on_step(6 * kMs / 5), std::nullopt);
-    std::optional<TimePs> next = 3 * kMs / 2;
+    std::optional<TimePs> next = 2 * kMs;
     std::vector<TimePs> periodic;
     while (next) {
         periodic.push_back(*next);
         next = sampler.on_period(*next);
     }
-    EXPECT_EQ(periodic, (std::vector<TimePs>{3 * kMs / 2, 5 * kMs / 2, 7 * kMs / 2, 9 * kMs / 2}));
+    EXPECT_EQ(periodic, (std::vector<TimePs>{2 * kMs, 3 * kMs, 4 * kMs}));
     EXPECT_EQ(times(sampler.samples()),
-              (std::vector<TimePs>{0, kMs / 2, 6 * kMs / 5, 3 * kMs / 2, 5 * kMs / 2, 7 * kMs / 2, 9 * kMs / 2}));
-    EXPECT_DOUBLE_EQ(sampler.samples()[2].pos.x_mm, 14.0);  // the later step at 1.2 ms overwrote the first
-    EXPECT_DOUBLE_EQ(sampler.samples()[2].pos.y_mm, 18.0);
-    // A step after the rest arms them again, one period after it.
-    x.on_microstep(6 * kMs, 5, 32);
-    EXPECT_EQ(sampler.on_step(6 * kMs), std::optional<TimePs>(7 * kMs));
-    EXPECT_EQ(times(sampler.take_before(5 * kMs / 2)), (std::vector<TimePs>{0, kMs / 2, 6 * kMs / 5, 3 * kMs / 2}));
-    EXPECT_EQ(times(sampler.samples()), (std::vector<TimePs>{5 * kMs / 2, 7 * kMs / 2, 9 * kMs / 2, 6 * kMs}));
+              (std::vector<TimePs>{0, kMs / 2, kMs, 6 * kMs / 5, 2 * kMs, 3 * kMs, 4 * kMs}));
+    EXPECT_DOUBLE_EQ(sampler.samples()[3].pos.x_mm, 14.0);  // the later step at 1.2 ms overwrote the first
+    EXPECT_DOUBLE_EQ(sampler.samples()[3].pos.y_mm, 18.0);
+    // A step after the rest arms them again, at the next grid time; so does an enable change, without a sample.
+    x.on_microstep(6 * kMs + kMs / 4, 5, 32);
+    EXPECT_EQ(sampler.on_step(6 * kMs + kMs / 4), std::optional<TimePs>(7 * kMs));
+    EXPECT_EQ(sampler.on_period(7 * kMs), std::optional<TimePs>(8 * kMs));
+    EXPECT_EQ(sampler.on_period(8 * kMs), std::optional<TimePs>(9 * kMs));
+    EXPECT_EQ(sampler.on_period(9 * kMs), std::nullopt);
+    EXPECT_EQ(sampler.on_enable(10 * kMs), std::optional<TimePs>(11 * kMs));
+    EXPECT_EQ(sampler.on_enable(21 * kMs / 2), std::nullopt);  // already armed
+    EXPECT_EQ(times(sampler.take_before(2 * kMs)), (std::vector<TimePs>{0, kMs / 2, kMs, 6 * kMs / 5}));
+    EXPECT_EQ(times(sampler.samples()),
+              (std::vector<TimePs>{2 * kMs, 3 * kMs, 4 * kMs, 6 * kMs + kMs / 4, 7 * kMs, 8 * kMs, 9 * kMs}));
 }
 
 TEST(ToolSampler, WithoutAPeriodOnlyTheStartAndTheSteps) {
     FakeAxis x;
     FakeAxis y;
     ToolSampler sampler(x, y, {}, 0);
-    sampler.on_start(0);
+    EXPECT_EQ(sampler.on_start(0), std::nullopt);
     EXPECT_EQ(sampler.on_step(kMs), std::nullopt);
+    EXPECT_EQ(sampler.on_enable(2 * kMs), std::nullopt);
     EXPECT_EQ(times(sampler.samples()), (std::vector<TimePs>{0, kMs}));
 }
 
-// The worker's run of the sequence of the first test: the same samples, the same calls on each axis in the same
-// order, the periodic sample at 2.5 ms before a microstep at that instant (the kernel's order: a timed event
-// before the STEP edge's delta cycles), and the rest then seen before it.
-TEST(MechanicsWorker, MakesTheSynchronousCallsInTheirOrder) {
+// The workers' run of a sequence like the first test's, Y stepping at 2.5 ms too: the samples the synchronous
+// sampler takes of the same calls (run here on two other fake axes), and on each axis the calls worked out by
+// hand: its microsteps, a reading at the start and every step of either axis, and one at each grid time at which
+// it does not rest (Y is not read at 1 ms: it rests until its first microstep).
+TEST(MechanicsWorker, ReadsEachAxisWhereTheSamplerWillWantIt) {
     FakeAxis x;
     FakeAxis y;
-    ToolSampler sampler(x, y, {10.0, 20.0}, kMs);
-    MechanicsWorker worker(x, y, sampler);
+    MechanicsWorker worker({&x, &x}, {&y, &y}, {10.0, 20.0}, kMs);
+    FakeAxis sync_x;
+    FakeAxis sync_y;
+    ToolSampler sampler(sync_x, sync_y, {10.0, 20.0}, kMs);
+
     worker.start(0);
     worker.microstep(0, kMs / 2, 3, 32);
     worker.step(kMs / 2);
@@ -111,22 +123,42 @@ TEST(MechanicsWorker, MakesTheSynchronousCallsInTheirOrder) {
     worker.step(5 * kMs / 2);
     worker.mark(4 * kMs);
     const MechanicsWorker::End end = worker.finish(9 * kMs / 2, false);
-    EXPECT_EQ(end.last_periodic_ps, std::optional<TimePs>(7 * kMs / 2));
-    EXPECT_TRUE(end.periodic_past_bound);  // Y moved at 2.5 ms: at rest only from 5.0 ms
-    EXPECT_EQ(times(worker.samples_left()), (std::vector<TimePs>{6 * kMs / 5, 3 * kMs / 2, 5 * kMs / 2, 7 * kMs / 2}));
-    EXPECT_DOUBLE_EQ(worker.samples_left()[2].pos.y_mm, 19.0);  // the step at 2.5 ms overwrote its periodic sample
-    EXPECT_EQ(x.m_calls, (std::vector<TimePs>{-0, kMs / 2, -kMs / 2, 6 * kMs / 5, -6 * kMs / 5, -3 * kMs / 2,
-                                               -5 * kMs / 2, -5 * kMs / 2, -7 * kMs / 2}));
-    EXPECT_EQ(y.m_calls, (std::vector<TimePs>{-0, -kMs / 2, 6 * kMs / 5, -6 * kMs / 5, -3 * kMs / 2, -5 * kMs / 2,
-                                               5 * kMs / 2, -5 * kMs / 2, -7 * kMs / 2}));
+
+    (void)sampler.on_start(0);
+    sync_x.on_microstep(kMs / 2, 3, 32);
+    (void)sampler.on_step(kMs / 2);
+    (void)sampler.on_period(kMs);
+    sync_x.on_microstep(6 * kMs / 5, 4, 32);
+    sync_y.on_microstep(6 * kMs / 5, -2, 32);
+    (void)sampler.on_step(6 * kMs / 5);
+    (void)sampler.on_period(2 * kMs);
+    sync_y.on_microstep(5 * kMs / 2, -1, 32);
+    (void)sampler.on_step(5 * kMs / 2);
+    (void)sampler.on_period(3 * kMs);
+    EXPECT_EQ(sampler.on_period(4 * kMs), std::optional<TimePs>(5 * kMs));  // Y moves until 5.0 ms
+    EXPECT_EQ(times(sampler.take_before(kMs)), (std::vector<TimePs>{0, kMs / 2}));
+
+    EXPECT_EQ(end.last_periodic_ps, std::optional<TimePs>(4 * kMs));
+    EXPECT_TRUE(end.periodic_past_bound);
+    ASSERT_EQ(times(worker.samples_left()),
+              (std::vector<TimePs>{kMs, 6 * kMs / 5, 2 * kMs, 5 * kMs / 2, 3 * kMs, 4 * kMs}));
+    ASSERT_EQ(times(sampler.samples()), times(worker.samples_left()));
+    for (std::size_t k = 0; k < sampler.samples().size(); ++k) {
+        EXPECT_DOUBLE_EQ(worker.samples_left()[k].pos.x_mm, sampler.samples()[k].pos.x_mm);
+        EXPECT_DOUBLE_EQ(worker.samples_left()[k].pos.y_mm, sampler.samples()[k].pos.y_mm);
+    }
+    EXPECT_DOUBLE_EQ(worker.samples_left()[3].pos.y_mm, 19.0);  // Y's step at 2.5 ms
+    EXPECT_EQ(x.m_calls, (std::vector<TimePs>{-0, kMs / 2, -kMs / 2, -kMs, 6 * kMs / 5, -6 * kMs / 5, -2 * kMs,
+                                               -5 * kMs / 2, -3 * kMs, -4 * kMs}));
+    EXPECT_EQ(y.m_calls, (std::vector<TimePs>{-0, -kMs / 2, 6 * kMs / 5, -6 * kMs / 5, -2 * kMs, 5 * kMs / 2,
+                                               -5 * kMs / 2, -3 * kMs, -4 * kMs}));
 }
 
 TEST(MechanicsWorker, TheBoundTakesThePeriodicSampleAtItWhenInclusive) {
     for (const bool inclusive : {false, true}) {
         FakeAxis x;
         FakeAxis y;
-        ToolSampler sampler(x, y, {}, kMs);
-        MechanicsWorker worker(x, y, sampler);
+        MechanicsWorker worker({&x, &x}, {&y, &y}, {}, kMs);
         worker.start(0);
         worker.microstep(0, 0, 1, 32);
         worker.step(0);
@@ -136,12 +168,26 @@ TEST(MechanicsWorker, TheBoundTakesThePeriodicSampleAtItWhenInclusive) {
     }
 }
 
-TEST(MechanicsWorker, AFaultOnTheWorkerReachesTheSimulation) {
+// The metrics ask, without waiting, how far the samples are ready: never past the last mark, and past it once
+// both workers have got there.
+TEST(MechanicsWorker, SaysHowFarTheSamplesAreReady) {
+    FakeAxis x;
+    FakeAxis y;
+    MechanicsWorker worker({&x, &x}, {&y, &y}, {}, kMs);
+    worker.start(0);
+    worker.microstep(0, kMs, 1, 32);
+    worker.step(kMs);
+    EXPECT_LE(worker.ready_ps(2 * kMs), 2 * kMs);
+    EXPECT_EQ(times(worker.take_before(2 * kMs)), (std::vector<TimePs>{0, kMs}));
+    EXPECT_EQ(worker.ready_ps(2 * kMs), 2 * kMs);
+    (void)worker.finish(3 * kMs, true);
+}
+
+TEST(MechanicsWorker, AFaultOnAWorkerReachesTheSimulation) {
     FakeAxis x;
     FakeAxis y;
     x.m_throw_at_ps = 2 * kMs;
-    ToolSampler sampler(x, y, {}, kMs);
-    MechanicsWorker worker(x, y, sampler);
+    MechanicsWorker worker({&x, &x}, {&y, &y}, {}, kMs);
     worker.start(0);
     worker.microstep(0, 2 * kMs, 1, 32);
     EXPECT_THROW((void)worker.take_before(3 * kMs), std::runtime_error);

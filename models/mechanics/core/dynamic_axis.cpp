@@ -24,8 +24,11 @@ DynamicAxis::DynamicAxis(const AxisParams& params, const IntegratorTolerances& t
 
 void DynamicAxis::advance(TimePs t_ps) const {
     if (t_ps == m_tracked_ps) return;  // a second query at the same instant: nothing moved
+    const bool resting = m_integrator.at_rest();
     m_integrator.advance_to(ps_to_s(t_ps));
-    track_load_angle(t_ps);
+    // A resting axis is where it came to rest, its load angle what it was then: asking it again records nothing,
+    // so that how often it is asked while it rests (the other axis's steps and samples) changes none of its figures.
+    if (!resting) track_load_angle(t_ps);
     m_tracked_ps = t_ps;
 }
 

@@ -5,13 +5,22 @@ namespace cnc::mech {
 ToolSampler::ToolSampler(const CarriageDrive& x, const CarriageDrive& y, geom::Vec2 origin_mm, TimePs period_ps)
     : m_x(x), m_y(y), m_origin_mm(origin_mm), m_period_ps(period_ps) {}
 
-void ToolSampler::on_start(TimePs t_ps) { sample(t_ps); }
+std::optional<TimePs> ToolSampler::on_start(TimePs t_ps) {
+    sample(t_ps);
+    return start_periodic(t_ps);
+}
 
 std::optional<TimePs> ToolSampler::on_step(TimePs t_ps) {
     sample(t_ps);
+    return start_periodic(t_ps);
+}
+
+std::optional<TimePs> ToolSampler::on_enable(TimePs t_ps) { return start_periodic(t_ps); }
+
+std::optional<TimePs> ToolSampler::start_periodic(TimePs t_ps) {
     if (m_period_ps <= 0 || m_periodic) return std::nullopt;
     m_periodic = true;
-    return t_ps + m_period_ps;
+    return first_edge_after(t_ps, m_period_ps) * m_period_ps;
 }
 
 std::optional<TimePs> ToolSampler::on_period(TimePs t_ps) {

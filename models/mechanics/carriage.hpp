@@ -1,11 +1,12 @@
 // The XY carriage: each axis is a drive (an ideal motor on a rigid transmission, or a dynamic axis model); the
 // tool position is sampled as tool_sampler.hpp says (at every step event and, with sample_hz > 0, periodically
-// while an axis moves, from the start, a step or an enable change on). At each sample the position goes to the real-valued signals carriage_x_mm /
-// carriage_y_mm (what the VCD traces) when it has moved by more than kPositionSignalResolutionMm since the value
-// they hold.
-// With `worker_thread` the axes run on a thread of their own (mechanics_worker.hpp): the drivers reach the motors
-// through WorkerMotor, the carriage hands the worker the instants of the steps, and the samples come from the
-// worker; the position signals are then not written (a run that traces them keeps the axes on its thread).
+// while an axis moves, from the start, a step or an enable change on). At each sample the position goes to the
+// real-valued signals carriage_x_mm / carriage_y_mm (what the VCD traces) when it has moved by more than
+// kPositionSignalResolutionMm since the value they hold.
+// With `worker_thread` each axis runs on a thread of its own (mechanics_worker.hpp): the drivers reach the motors
+// through WorkerMotor, the carriage hands the workers the instants of the steps and enable changes, and the
+// samples come from the workers' readings; the position signals are then not written (a run that traces them
+// keeps the axes on its thread).
 #pragma once
 #include <memory>
 #include <optional>

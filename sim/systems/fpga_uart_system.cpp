@@ -373,7 +373,8 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         feed.emplace(
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
             s.detail, [&dead_fold](const metrics::MoveMetrics& p) { dead_fold.add_piece(piece_steps(p)); });
-        if (machine.mechanics_on_worker()) feed->stay_behind([&machine] { return machine.carriage().samples_ready_ps(); });
+        if (machine.mechanics_on_worker())
+            feed->stay_behind([&machine] { return machine.carriage().samples_ready_ps(); });
     }
     ExecutedPieces executed;
     FpgaWarnings warnings(s);

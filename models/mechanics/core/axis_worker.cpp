@@ -102,11 +102,7 @@ void AxisWorker::periodic_until(TimePs t_ps, bool inclusive) {
         m_next_grid_ps += m_period_ps;
     }
     // At rest until a call of this axis moves it: the grid times up to t pass unread.
-    if (due()) {
-        const std::int64_t first_not_passed = inclusive ? first_edge_after(t_ps, m_period_ps)
-                                                        : (t_ps + m_period_ps - 1) / m_period_ps;
-        m_next_grid_ps = first_not_passed * m_period_ps;
-    }
+    if (due()) m_next_grid_ps = first_edge_after(inclusive ? t_ps : t_ps - 1, m_period_ps) * m_period_ps;
 }
 
 void AxisWorker::read(TimePs t_ps, bool periodic) {

@@ -40,7 +40,7 @@ struct AxisReading {
 
 class AxisWorker {
 public:
-    // `axis`: 0 = X, 1 = Y; `motor` and `drive`: the axis, driven by this thread only until finished();
+    // `axis`: 0 = X, 1 = Y; `motor` and `drive`: the axis, driven by this thread only until join();
     // `period_ps`: the periodic samples' grid (0: none).
     AxisWorker(int axis, StepperMotor& motor, const CarriageDrive& drive, TimePs period_ps);
     ~AxisWorker();

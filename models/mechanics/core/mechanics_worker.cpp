@@ -42,7 +42,8 @@ void MechanicsWorker::Replay::drop_used() {
 MechanicsWorker::MechanicsWorker(Axis x, Axis y, geom::Vec2 origin_mm, TimePs period_ps)
     : m_sampler(m_replay[0], m_replay[1], origin_mm, period_ps) {
     const Axis axes[2] = {x, y};
-    for (int a = 0; a < 2; ++a) m_workers[a] = std::make_unique<AxisWorker>(a, *axes[a].motor, *axes[a].drive, period_ps);
+    for (int a = 0; a < 2; ++a)
+        m_workers[a] = std::make_unique<AxisWorker>(a, *axes[a].motor, *axes[a].drive, period_ps);
     m_batch.reserve(kBatchCommands);
 }
 

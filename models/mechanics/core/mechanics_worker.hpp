@@ -1,4 +1,4 @@
-// The dynamic mechanics on threads of their own, one per axis (docs/mechanics.md, "Speed"). The carriage's models
+// The dynamic mechanics on threads of their own, one per axis (docs/mechanics.md, "The worker threads"). The carriage's models
 // are open loop: no architecture reads the carriage back, only the metrics read its samples. So the simulation
 // hands the workers its drivers' calls (a microstep, an enable change) and the instants of the steps as it makes
 // them and runs on, while each axis is integrated behind it on a thread of its own (axis_worker.hpp), reading its

@@ -217,7 +217,8 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
         feed.emplace(
             rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
             s.detail);
-        if (machine.mechanics_on_worker()) feed->stay_behind([&machine] { return machine.carriage().samples_ready_ps(); });
+        if (machine.mechanics_on_worker())
+            feed->stay_behind([&machine] { return machine.carriage().samples_ready_ps(); });
         // Every fold comes right after the pins were read up to its instant: the edges before it are all there.
         feed->take_edges_with([&pins](const std::string& pin, TimePs t_ps) { return pins.hand_over(pin, t_ps); });
     }

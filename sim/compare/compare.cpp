@@ -27,6 +27,7 @@ struct Row {
     const char* pointer;  // JSON pointer into a run report
     const char* format;   // printf format of the value
     bool setting = false; // what the run was given (shown for a failed run too), not a result
+    bool in_arch_section = false;  // the pointer is into the architecture's own section (report[arch])
 };
 
 // The machine each run used, then the headline numbers of DESIGN.md §4 in the order a reader compares them.
@@ -53,16 +54,25 @@ constexpr Row kRows[] = {
     {"contour error rms [um]", "/metrics/path/contour_rms_um", "%.2f"},
     {"following error max [um]", "/metrics/path/following_max_um", "%.2f"},
     {"job end error [um]", "/metrics/path/job_end_um", "%.2f"},
+    // The dynamic mechanics' (none with the ideal carriage): 90 electrical degrees is pull-out, a slip 4 full steps.
+    {"lost full steps X", "/mechanics/x/lost_full_steps", "%.0f", false, true},
+    {"lost full steps Y", "/mechanics/y/lost_full_steps", "%.0f", false, true},
+    {"peak load angle X [el. deg]", "/mechanics/x/peak_load_angle_electrical_deg", "%.1f", false, true},
+    {"peak load angle Y [el. deg]", "/mechanics/y/peak_load_angle_electrical_deg", "%.1f", false, true},
     {"DRV8825 violations", "/metrics/pulse/driver_violations", "%.0f"},
     {"laser dwell [ms]", "/metrics/laser/dwell_ms", "%.3f"},
     {"laser on in rapids [ms]", "/metrics/laser/on_in_rapid_ms", "%.3f"},
 };
 
+nlohmann::json::json_pointer where(const Row& row, const CompareColumn& c) {
+    return nlohmann::json::json_pointer(row.in_arch_section ? "/" + c.architecture + row.pointer : row.pointer);
+}
+
 // A failed run's figures cover only what ran before it stopped: never shown as a result (its JSON keeps them
 // apart as partial_metrics).
 std::string cell(const CompareColumn& c, const Row& row) {
     if (c.report.is_null() || (c.exit_code != 0 && !row.setting)) return "-";
-    const nlohmann::json::json_pointer ptr(row.pointer);
+    const nlohmann::json::json_pointer ptr = where(row, c);
     if (!c.report.contains(ptr) || !c.report.at(ptr).is_number()) return "-";
     return format(row.format, c.report.at(ptr).get<double>());
 }
@@ -197,7 +207,7 @@ nlohmann::json compare_json(const std::vector<CompareColumn>& columns) {
         nlohmann::json metrics = nlohmann::json::object();
         for (const Row& row : kRows) {
             if (row.setting) continue;
-            const nlohmann::json::json_pointer ptr(row.pointer);
+            const nlohmann::json::json_pointer ptr = where(row, c);
             metrics[row.pointer + 1] =
                 !c.report.is_null() && c.report.contains(ptr) ? c.report.at(ptr) : nlohmann::json(nullptr);
         }

@@ -58,8 +58,8 @@ void MetricsFeed::fold(TimePs now_ps) {
             now_ps = std::max(now_ps, m_slice_ends_ps[m_slice_ends_ps.size() - 1 - kSlicesBehind]);
         while (!m_slice_ends_ps.empty() && m_slice_ends_ps.front() <= now_ps) m_slice_ends_ps.pop_front();
         if (now_ps <= m_measured_ps) return;
-        m_measured_ps = now_ps;
     }
+    m_measured_ps = now_ps;
     take_until(now_ps);
     m_stream.pending().t_job_end_ps = now_ps;
     m_stream.fold(now_ps);

@@ -50,6 +50,8 @@ public:
     void stay_behind(SamplesReady ready) { m_ready = std::move(ready); }
     // The simulation has reached now_ps (the job still runs).
     void fold(TimePs now_ps);
+    // How far the folds have measured: what comes after it is still to be read (-1: nothing yet).
+    [[nodiscard]] TimePs measured_ps() const { return m_measured_ps; }
     // The run has ended: everything left, and the metrics of the whole run.
     [[nodiscard]] metrics::RunMetrics finish(TimePs t_job_end_ps);
     [[nodiscard]] metrics::LaserExposure laser_exposure() const { return m_stream.laser_exposure(); }
@@ -64,7 +66,7 @@ private:
     metrics::MetricsStream m_stream;
     SamplesReady m_ready;
     std::deque<TimePs> m_slice_ends_ps;  // with m_ready: the ends of the slices not yet measured to
-    TimePs m_measured_ps = -1;           // with m_ready: where the last fold measured to
+    TimePs m_measured_ps = -1;
 };
 
 }  // namespace cnc::sim

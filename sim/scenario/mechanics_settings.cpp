@@ -49,7 +49,7 @@ void read_load(KeyReader& r, const std::string& axis, mech::AxisLoadParams& l, d
 }  // namespace
 
 void read_mechanics_settings(KeyReader& r, MechanicsSettings& s) {
-    s.model = r.get_choice("mechanics.model", "ideal", {"ideal", "dynamic"},
+    s.model = r.get_choice("mechanics.model", "dynamic", {"ideal", "dynamic"},
                            "ideal: the carriage moves exactly one microstep per step (exact step-count studies); "
                            "dynamic: DRV8825 currents, hybrid stepper, belt or screw and carriage integrated "
                            "(docs/mechanics.md)") == "dynamic"

@@ -15,7 +15,7 @@ namespace cnc::sim {
 enum class MechanicsModel { Ideal, Dynamic };
 
 struct MechanicsSettings {
-    MechanicsModel model = MechanicsModel::Ideal;
+    MechanicsModel model = MechanicsModel::Dynamic;
     double sample_hz = 1000.0;  // tool samples between step events (dynamic model)
     bool worker_thread = true;  // dynamic model: the axes integrated on a thread of their own (mech::Carriage)
     mech::IntegratorTolerances tolerances;

@@ -17,7 +17,7 @@
 #include "host/sender.hpp"
 #include "probes/edge_recorder.hpp"
 #include "run/moves.hpp"
-#include "run/metrics_feed.hpp"
+#include "systems/carriage_feed.hpp"
 #include "run/simulate.hpp"
 #include "systems/dead_time.hpp"
 #include "systems/fpga_uart_job.hpp"
@@ -370,11 +370,8 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
     if (!s.keep_run_input) {
         const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm()},
                                          {"y", "step_y", "dir_y", s.machine.y.steps_per_mm()}};
-        feed.emplace(
-            rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
-            s.detail, [&dead_fold](const metrics::MoveMetrics& p) { dead_fold.add_piece(piece_steps(p)); });
-        if (machine.mechanics_on_worker())
-            feed->stay_behind([&machine] { return machine.carriage().samples_ready_ps(); });
+        feed_on_carriage(feed, rec, axes, machine, s.detail,
+                         [&dead_fold](const metrics::MoveMetrics& p) { dead_fold.add_piece(piece_steps(p)); });
     }
     ExecutedPieces executed;
     FpgaWarnings warnings(s);
@@ -468,11 +465,7 @@ ArchRun run_fpga_uart(const Scenario& s, const Job& job) {
         text << format("  host at %.6f s: ", ps_to_s(m.t_ps)) << m.text << '\n';
     }
     run.details_text = text.str();
-    if (feed) {
-        add_mechanics_report(machine, feed->laser_exposure(), run);
-    } else {
-        add_mechanics_report(machine, run);
-    }
+    add_mechanics_report(machine, feed, run);
 
     if (const std::optional<std::string> framing = framing_failure(static_cast<std::int64_t>(st.framing_errors), "FPGA",
                                                                    cp2102.stats().framing_errors)) {

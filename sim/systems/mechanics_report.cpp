@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/text_format.hpp"
+#include "metrics/laser_exposure.hpp"
 
 namespace cnc::sim {
 
@@ -51,17 +52,13 @@ void add_series(const char* axis, const mech::DynamicAxisStats& st, ArchRun& run
 
 }  // namespace
 
-void add_mechanics_report(const Machine& machine, ArchRun& run) {
-    if (machine.dynamic_x() == nullptr || machine.dynamic_y() == nullptr) return;
-    add_mechanics_report(
-        machine, run.input.laser ? metrics::laser_exposure(run.input.tool, *run.input.laser) : metrics::LaserExposure{},
-        run);
-}
-
-void add_mechanics_report(const Machine& machine, const metrics::LaserExposure& e, ArchRun& run) {
+void add_mechanics_report(const Machine& machine, const std::optional<MetricsFeed>& feed, ArchRun& run) {
     const mech::DynamicAxis* x = machine.dynamic_x();
     const mech::DynamicAxis* y = machine.dynamic_y();
     if (x == nullptr || y == nullptr) return;
+    const metrics::LaserExposure e = feed                ? feed->laser_exposure()
+                                     : run.input.laser ? metrics::laser_exposure(run.input.tool, *run.input.laser)
+                                                       : metrics::LaserExposure{};
     run.details["mechanics"] = {
         {"model", "dynamic"},
         {"x", axis_json(*x)},

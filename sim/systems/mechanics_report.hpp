@@ -2,15 +2,16 @@
 // load angle and the velocity ripple, and the laser's exposure per mm of the path the carriage followed.
 // Nothing is added with the ideal mechanics.
 #pragma once
-#include "metrics/laser_exposure.hpp"
+#include <optional>
+
 #include "run/arch_run.hpp"
+#include "run/metrics_feed.hpp"
 #include "systems/machine.hpp"
 
 namespace cnc::sim {
 
-// Adds details["mechanics"] and a summary section; `exposure`: the laser's, as the streaming metrics folded it.
-void add_mechanics_report(const Machine& machine, const metrics::LaserExposure& exposure, ArchRun& run);
-// The same after run.input.tool and run.input.laser are set (the whole run kept), the exposure computed from them.
-void add_mechanics_report(const Machine& machine, ArchRun& run);
+// Adds details["mechanics"] and a summary section. The laser's exposure: as `feed`, the run's streaming metrics,
+// folded it; without a feed (the whole run kept) computed from run.input.tool and run.input.laser, set by then.
+void add_mechanics_report(const Machine& machine, const std::optional<MetricsFeed>& feed, ArchRun& run);
 
 }  // namespace cnc::sim

@@ -1,5 +1,6 @@
 // Whole atmega runs (PC program -> CP2102 -> ATmega328P running the seed 003 firmware -> DRV8825 -> belts)
-// against the seed 003 numbers.
+// against the seed 003 numbers. The checks that work a position out of step counts set mechanics.model=ideal: a
+// carriage that moves one microstep per step, so the firmware's counting alone decides where the tool is.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,7 +71,7 @@ TEST(AtmegaDiagonal, RatesFollowTheEightBitWordsNotTheCommandedRatio) {
     const std::int64_t y_excess = y_steps - 7 * 160;
     ASSERT_EQ(y_excess, 23);
 
-    const auto out = run_atmega("diagonal_20x7", {"trace.detail=true"});
+    const auto out = run_atmega("diagonal_20x7", {"mechanics.model=ideal", "trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& motion = out.report.at("atmega").at("commands").at(0).at("motions").at(0);
     EXPECT_EQ(motion.at("ocr"), nlohmann::json({ocr_x, ocr_y}));
@@ -98,7 +99,7 @@ TEST(AtmegaDiagonal, RatesFollowTheEightBitWordsNotTheCommandedRatio) {
 // The 45 degree diagonal: both axes get OCR 3, so the ratio is exact and the path straight, but the speed is
 // the OCR 3 speed on each axis (12.207 mm/s), 3.6 % above the commanded 11.785 mm/s.
 TEST(AtmegaDiagonal, FortyFiveDegreesKeepsTheRatio) {
-    const auto out = run_atmega("diagonal_45");
+    const auto out = run_atmega("diagonal_45", {"mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& move = out.metrics.moves.at(0);
     EXPECT_EQ(move.steps_emitted, (std::vector<std::int64_t>{3200, 3200}));
@@ -110,7 +111,7 @@ TEST(AtmegaDiagonal, FortyFiveDegreesKeepsTheRatio) {
 // Check 3, circle: 180 chords of 2 degrees, Y never counted: each chord's Y error stays in the machine. The
 // contour error is reported on the chords (the G00 before it is a dog-leg and has its own).
 TEST(AtmegaCircle, ChordsRunAndContourErrorIsReported) {
-    const auto out = run_atmega("circle_r10");
+    const auto out = run_atmega("circle_r10", {"mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& chords = out.report.at("atmega").at("chords");
     EXPECT_EQ(chords.at("late"), 0);  // F600: a 2-degree chord takes 35 ms, its 4 bytes 12 ms
@@ -143,7 +144,7 @@ TEST(AtmegaCircle, ShortChordsStarveAndYKeepsStepping) {
 
 // Check 2: 420 mm = 67200 steps does not fit the 16-bit counter: split into two commands, with a warning.
 TEST(AtmegaLongMove, SplitAndReported) {
-    const auto out = run_atmega("long_move");
+    const auto out = run_atmega("long_move", {"mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
     EXPECT_TRUE(has_warning(out, "G00 count 67200 exceeds the 16-bit step counter (409.6 mm at 160 steps/mm)"));
     EXPECT_EQ(out.metrics.axes[0].net_steps, 67200);
@@ -155,7 +156,7 @@ TEST(AtmegaLongMove, SplitAndReported) {
 
 // Check 2, as the seed's registers would take it: 67200 mod 65536 = 1664 steps, and the metrics show the miss.
 TEST(AtmegaLongMove, WrappedAsTheSeedWouldIsReported) {
-    const auto out = run_atmega("long_move", {"atmega.long_moves=wrap"});
+    const auto out = run_atmega("long_move", {"atmega.long_moves=wrap", "mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
     EXPECT_TRUE(has_warning(out, "sent modulo 65536 as 1664"));
     EXPECT_EQ(out.metrics.axes[0].net_steps, 1664);
@@ -202,7 +203,7 @@ TEST(AtmegaLink, DefaultLinkBaudIs57600) {
 // (dx = 0) is timed by X's timer at Y's OCR, so Y is exact too; move 4 asks v_x 13.33 and v_y 12.47 mm/s, both
 // truncate to OCR 2, so Y makes as many steps as X: 4132 for 3864, 1.675 mm past the end point.
 TEST(AtmegaJobs, SixSegmentCountsWhatTheFirmwareCounts) {
-    const auto out = run_atmega("six_segment", {"trace.detail=true"});
+    const auto out = run_atmega("six_segment", {"mechanics.model=ideal", "trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const std::vector<std::vector<std::int64_t>> emitted = {{4257, 15889}, {0, 8000}, {2317, -5034},
                                                             {4132, 4132},  {-3807, -6829}, {6000, 0}};

@@ -92,6 +92,52 @@ TEST(AxisDynamics, ExternalTorqueDisplacesAlongTheTorqueAngleCurve) {
     EXPECT_NEAR(angle_rad, expected, 0.01 * expected);
 }
 
+TEST(AxisDynamics, ARotorThatMovedWhileDisabledSlipsWhenEnabledAgain) {
+    // The driver ignores STEP while disabled, so the command holds at 0. A torque of 4.2 mN m against the 2e-3
+    // N m s/rad damping turns the free rotor at 2.1 rad/s (time constant J / b = 1.7 ms) for 50 ms: about 6 deg,
+    // 3.3 full steps, past the unstable equilibrium at 2 full steps (half an electrical period, 3.6 deg) and short
+    // of the one after (10.8 deg). Enabled again, it is pulled into the next period: 4 full steps ahead of the
+    // command (7.2 deg), counted at the enable.
+    const AxisParams p = bare_rotor();
+    DynamicAxis axis(p);
+    axis.on_enable(0, true);
+    axis.on_enable(kSettlePs, false);
+    axis.set_external_torque(kSettlePs, 4.2e-3);
+    axis.set_external_torque(kSettlePs + 50 * kPsPerMs, 0.0);
+    const TimePs enable_ps = 2 * kSettlePs;
+    const double coasted_deg = axis.shaft_angle_deg(enable_ps);
+    ASSERT_GT(coasted_deg, 2 * 1.8);
+    ASSERT_LT(coasted_deg, 6 * 1.8);
+    EXPECT_EQ(axis.stats().lost_full_steps, 0);  // nothing counted while disabled
+    axis.on_enable(enable_ps, true);
+    EXPECT_NEAR(axis.shaft_angle_deg(enable_ps + kSettlePs), 4 * 1.8, 1e-6 * 1.8);
+    EXPECT_EQ(axis.stats().lost_full_steps, 4);
+    ASSERT_EQ(axis.stats().events.size(), 1U);
+    EXPECT_EQ(axis.stats().events[0].t_ps, enable_ps);
+    EXPECT_EQ(axis.stats().events[0].full_steps, -4);  // ahead of the command
+}
+
+TEST(AxisDynamics, ARotorOnTheUnstableEquilibriumSlipsOnceNotToAndFro) {
+    // The command is set 2 full steps and one microstep (182.8 electrical deg) ahead of the rotor while the driver
+    // is off, then the driver comes on and single microsteps move the command to 177.2 deg and back, all at one
+    // instant: the rotor, on the unstable equilibrium, has not slipped either way. Left there, it falls back by a
+    // whole period, 4 full steps behind the command, counted once it is 45 deg past the unstable point.
+    const AxisParams p = bare_rotor();
+    DynamicAxis axis(p);
+    axis.on_enable(0, true);
+    axis.on_enable(kSettlePs, false);
+    const TimePs t = 2 * kSettlePs;
+    axis.on_microstep(t, 65, 32);
+    axis.on_enable(t, true);
+    axis.on_microstep(t, 63, 32);
+    axis.on_microstep(t, 65, 32);
+    EXPECT_EQ(axis.stats().lost_full_steps, 0);
+    EXPECT_NEAR(axis.shaft_angle_deg(t + kSettlePs), (65.0 / 32.0 - 4.0) * 1.8, 1e-6 * 1.8);
+    EXPECT_EQ(axis.stats().lost_full_steps, 4);
+    ASSERT_EQ(axis.stats().events.size(), 1U);
+    EXPECT_EQ(axis.stats().events[0].full_steps, 4);  // behind the command
+}
+
 TEST(AxisDynamics, BeltCarriageRingsAtItsNaturalFrequency) {
     // Check 3. Shaft held (rotor inertia 1000 kg m2 against a carriage reflecting 3.8 kg x (6.37 mm)^2),
     // no damping or friction, carriage at 200 mm released 10 um off the belt's neutral position.

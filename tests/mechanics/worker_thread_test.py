@@ -25,6 +25,8 @@ RUNS = [
     ("atmega/diagonal_45.toml", ["--detail"]),
     ("spi-fpga/square_20mm.toml", []),
     ("spi-fpga/circle_r10.toml", []),
+    ("spi-fpga/six_segment.toml", ["--detail"]),
+    ("spi-fpga/square_at_next_pulse.toml", []),
 ]
 
 

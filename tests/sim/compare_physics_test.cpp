@@ -21,6 +21,8 @@ const std::string kCompare = std::string(CNC_SOURCE_DIR) + "/scenarios/compare/"
 constexpr double kStepsPerMm = 160.0;               // seed 000 machine: 200 full steps x 32 / (20 teeth x 2 mm)
 constexpr double kStepUm = 1000.0 / kStepsPerMm;    // 6.25 um
 constexpr double kFpgaClockNs = 20.0;               // fpga.clock_hz 50 MHz (seed 000 CLOCK_50)
+// A carriage that moves one microstep per step: where the tool is follows from the step counts alone.
+const std::string kIdealMechanics = " --set mechanics.model=ideal";
 
 struct Comparison {
     nlohmann::json columns;  // compare --format json
@@ -139,22 +141,22 @@ TEST_F(ComparePhysics, SpiFpgaContinuousModeHasNoDeadTimeBetweenColinearMoves) {
 // 4132 x 3864-step diagonal runs both axes at OCR 2/2, so Y makes X's 4132 steps: 268 steps = 1.675 mm past.
 TEST_F(ComparePhysics, JobEndErrorIsZeroStepsWithIdealMechanics) {
     for (const char* job : {"square_20mm", "diagonal_45"}) {
-        const Comparison c = run(kCompare + job + ".toml", "fpga-uart,atmega,spi-fpga");
+        const Comparison c = run(kCompare + job + ".toml" + kIdealMechanics, "fpga-uart,atmega,spi-fpga");
         for (const char* arch : {"fpga-uart", "atmega", "spi-fpga"}) {
             EXPECT_EQ(c.metric(arch, "metrics/path/job_end_um"), 0.0) << job << " " << arch;
         }
     }
     for (const char* job : {"six_segment", "circle_r10", "fast_80mm_s"}) {
-        const Comparison c = run(kCompare + job + ".toml", "fpga-uart,spi-fpga");
+        const Comparison c = run(kCompare + job + ".toml" + kIdealMechanics, "fpga-uart,spi-fpga");
         for (const char* arch : {"fpga-uart", "spi-fpga"}) {
             EXPECT_EQ(c.metric(arch, "metrics/path/job_end_um"), 0.0) << job << " " << arch;
         }
     }
-    const Comparison six = run(kCompare + "six_segment.toml", "atmega");
+    const Comparison six = run(kCompare + "six_segment.toml" + kIdealMechanics, "atmega");
     EXPECT_NEAR(six.metric("atmega", "metrics/path/job_end_um"), (4132 - 3864) * kStepUm, 1e-6);
 }
 
-// The orderings of contour error the models produce:
+// The orderings of contour error the controllers produce on a carriage that moves one microstep per step:
 // - square (axis-parallel lines): fpga-uart and atmega step one axis while the other holds, so every tool sample is
 //   on the programmed line: 0. spi-fpga blends each corner within planner.path_tolerance_mm (G64 P, 0.05 mm), so its
 //   error is the blend's, above 0 and at most 50 um plus the half step the counts round to.
@@ -164,13 +166,13 @@ TEST_F(ComparePhysics, JobEndErrorIsZeroStepsWithIdealMechanics) {
 //   arc along each chord: far beyond both bounds.
 TEST_F(ComparePhysics, ContourErrorOrderings) {
     const double blend_bound_um = 50.0 + kStepUm / 2.0;
-    const Comparison square = run(kCompare + "square_20mm.toml", "fpga-uart,atmega,spi-fpga");
+    const Comparison square = run(kCompare + "square_20mm.toml" + kIdealMechanics, "fpga-uart,atmega,spi-fpga");
     EXPECT_LT(square.metric("fpga-uart", "metrics/path/contour_max_um"), 1e-6);  // 0 up to the mm -> um rounding
     EXPECT_LT(square.metric("atmega", "metrics/path/contour_max_um"), 1e-6);
     EXPECT_GT(square.metric("spi-fpga", "metrics/path/contour_max_um"), 0.0);
     EXPECT_LE(square.metric("spi-fpga", "metrics/path/contour_max_um"), blend_bound_um);
 
-    const Comparison circle = run(kCompare + "circle_r10.toml", "fpga-uart,atmega,spi-fpga");
+    const Comparison circle = run(kCompare + "circle_r10.toml" + kIdealMechanics, "fpga-uart,atmega,spi-fpga");
     const double chord_bound_um = 2.0 + kStepUm + 0.001;
     const double fpga = circle.metric("fpga-uart", "metrics/path/contour_max_um");
     const double spi = circle.metric("spi-fpga", "metrics/path/contour_max_um");

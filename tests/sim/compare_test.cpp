@@ -28,7 +28,9 @@ double metric(const nlohmann::json& column, const char* key) { return column.at(
 // What each architecture costs on one job: dead time (stop-and-wait vs one byte per confirm vs a servo loop),
 // feed accuracy (packet feed vs 8-bit OCR vs period word) and following error (the servo loop's lag).
 TEST(CompareSquare, EachArchitectureShowsItsOwnCost) {
-    const auto cols = run_compare_json(std::string(CNC_SOURCE_DIR) + "/scenarios/fpga-uart/square_20mm.toml");
+    // Ideal mechanics: every controller that counts its steps ends the job on the point, to the step.
+    const auto cols = run_compare_json(std::string(CNC_SOURCE_DIR) +
+                                       "/scenarios/fpga-uart/square_20mm.toml --set mechanics.model=ideal");
     ASSERT_EQ(cols.size(), 3U);
     const auto& fpga = cols.at(0);
     const auto& avr = cols.at(1);

@@ -1,4 +1,6 @@
-// Whole fpga-uart runs against the seed 000 numbers (issue checks 2 to 7).
+// Whole fpga-uart runs against the seed 000 numbers (issue checks 2 to 7). The checks that work a position out of
+// step counts set mechanics.model=ideal: a carriage that moves one microstep per step, so step_gen's staircase
+// alone decides where the tool is.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -204,7 +206,7 @@ TEST(FpgaUartDiagonal, FeedErrorOfTheIntegerFeedAndTruncatedPeriod) {
 // Check 6: the circle's contour error stays within the chord tolerance plus one step, and is what the staircase
 // of step_gen over the chords gives (7.796 um, on four chords, one per quadrant).
 TEST(FpgaUartCircle, ContourErrorWithinChordTolerancePlusOneStep) {
-    const auto out = run_shipped("circle_r10", {"trace.detail=true"});
+    const auto out = run_shipped("circle_r10", {"mechanics.model=ideal", "trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     ASSERT_TRUE(out.metrics.path.contour_max_um.has_value());
     ASSERT_TRUE(out.metrics.path.contour_rms_um.has_value());
@@ -221,7 +223,7 @@ TEST(FpgaUartCircle, ContourErrorWithinChordTolerancePlusOneStep) {
 // circle: with the step_gen staircase the contour error then exceeds tolerance + one step (9.641 um), within the
 // bound that adds the ends' rounding: 2 + 6.25 + 6.25 x sqrt(2) / 2 = 12.67 um.
 TEST(FpgaUartCircle, SeedRoundingOfChordEndsExceedsTheBound) {
-    const auto out = run_shipped("circle_r10", {"host.chord_ends=round", "trace.detail=true"});
+    const auto out = run_shipped("circle_r10", {"host.chord_ends=round", "mechanics.model=ideal", "trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     EXPECT_NEAR(*out.metrics.path.contour_max_um,
                 circle_staircase_contour_max_um(out.report.at("fpga-uart").at("fpga").at("packets")), 1e-6);
@@ -232,7 +234,7 @@ TEST(FpgaUartCircle, SeedRoundingOfChordEndsExceedsTheBound) {
 
 // The 32-bit period product (seed 000 §5.4, Q3): 187,500 clocks x 73,600 steps = 1.38e10 does not fit.
 TEST(FpgaUartOverflow, ExactPeriodByDefaultAndAWarning) {
-    const auto out = run_shipped("overflow_slow_diagonal", {"trace.detail=true"});
+    const auto out = run_shipped("overflow_slow_diagonal", {"mechanics.model=ideal", "trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& p = out.report.at("fpga-uart").at("fpga").at("packets").at(0);
     EXPECT_EQ(p.at("period_cycles"), nlohmann::json({187'500, 8'625'000}));  // 187,500 x 73,600 / 1,600
@@ -282,7 +284,8 @@ TEST(FpgaUartLongMove, SeedFaithfulSenderReportsAckTimeout) {
 // A calibrated steps/mm reaches the CAM, the NUMERATOR and the carriage: X at 100 and Y at 50 steps/mm.
 TEST(FpgaUartCalibratedMachine, StepsPerMmDrivesStepsAndCarriage) {
     const auto out = run_shipped(
-        "worked_347", {"machine.x.steps_per_mm=100", "machine.y.steps_per_mm=50", "trace.detail=true"}, true);
+        "worked_347",
+        {"machine.x.steps_per_mm=100", "machine.y.steps_per_mm=50", "mechanics.model=ideal", "trace.detail=true"}, true);
     ASSERT_TRUE(out.ok) << out.failure;
     EXPECT_EQ(out.arch.input.axes[0].step.rising().size(), 1'000U);        // 10 mm x 100
     EXPECT_EQ(out.arch.input.axes[1].step.rising().size(), 2U * 5 * 50);  // 5 mm out and back at 50

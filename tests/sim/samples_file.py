@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """`cncsim run --samples FILE` writes the tool samples as a CSV a user can load (bounded-memory issue, part 2).
 
-Runs scenarios/fpga-uart/square_20mm.toml and loads the file with the csv module. Goldens from the job
+Runs scenarios/fpga-uart/square_20mm.toml with the ideal mechanics (one microstep per step, so the rows follow from
+the step counts) and loads the file with the csv module. Goldens from the job
 (scenarios/jobs/square_20mm.nc) on the scenario's 160 steps/mm machine, starting at 0,0: G0 to 10,10 is 1,600 steps
 on each axis at one rate (equal counts, equal NUMERATOR and feed: step_gen gives both the same period, so X and Y
 step at the same instants and the carriage takes one sample per instant), the four 20 mm sides 3,200 steps each on
@@ -25,7 +26,7 @@ def main():
     if os.path.exists(path):
         os.remove(path)
     subprocess.run([cncsim, "run", os.path.join(source, "scenarios/fpga-uart/square_20mm.toml"), "--samples", path,
-                    "--progress", "off"], check=True, stdout=subprocess.DEVNULL)
+                    "--set", "mechanics.model=ideal", "--progress", "off"], check=True, stdout=subprocess.DEVNULL)
     with open(path, newline="") as f:
         reader = csv.reader(f)
         header = next(reader)

@@ -1,4 +1,6 @@
 // Whole spi-fpga runs (issue 4 checks 1, 2, 4 and 5): servo thread -> SPI -> FPGA -> DRV8825 machine -> metrics.
+// The checks that work a position out of step counts set mechanics.model=ideal: a carriage that moves one microstep
+// per step, so the plan and the counts alone decide where the tool is.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -161,14 +163,14 @@ TEST(SpiFpgaBlending, ExactStopRestsAtEveryJoin) {
 TEST(SpiFpgaBlending, ContinuousCornersStayWithinTheBlendTolerance) {
     // The square's 90 degree corners blended within 0.05 mm of the corner: the tool stays within the tolerance
     // (on the 6.25 um step grid a job can in general land up to one step beyond it: six-segment reaches 54.3 um).
-    const auto out = run_spi("square_20mm");
+    const auto out = run_spi("square_20mm", {"mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
     EXPECT_LE(*out.metrics.path.contour_max_um, 50.0 + 1e-6);
     EXPECT_GT(*out.metrics.path.contour_max_um, 30.0);  // the blends do cut the corners (0.05 / sqrt 2 = 35 um)
 }
 
 TEST(SpiFpgaBlending, ExactStopCornersAreSharp) {
-    const auto out = run_spi("square_exact_stop");
+    const auto out = run_spi("square_exact_stop", {"mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
     EXPECT_LE(*out.metrics.path.contour_max_um, 6.25 * std::sqrt(2.0) + 1e-9);
 }
@@ -193,7 +195,8 @@ class SpiFpgaLanding : public ::testing::TestWithParam<LandingCase> {};
 TEST_P(SpiFpgaLanding, CountsEqualTheCommandAtEveryRestPoint) {
     const LandingCase c = GetParam();
     const auto out = run_spi(c.scenario, {std::string("planner.mode=\"") + c.mode + "\"",
-                                          "host.latency_max_us=" + std::to_string(c.latency_us)});
+                                          "host.latency_max_us=" + std::to_string(c.latency_us),
+                                          "mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& in = out.arch.input;
     const bool exact_stop = std::string(c.mode) == "exact-stop";
@@ -235,7 +238,7 @@ INSTANTIATE_TEST_SUITE_P(
 // rate_apply = at-next-pulse: frames queue behind long STEP periods and the full FIFO drops them; the report warns,
 // and the landing still ends on the target because it waits for an empty FIFO before trusting a count.
 TEST(SpiFpgaAtNextPulse, FramesDropButTheJobStillEndsOnTheTarget) {
-    const auto out = run_spi("square_at_next_pulse");
+    const auto out = run_spi("square_at_next_pulse", {"mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
     EXPECT_GT(out.report["spi-fpga"]["fpga"]["fifo_drops"].get<int>(), 100);
     EXPECT_EQ(out.report["spi-fpga"]["fpga"]["fifo_max_level"].get<int>(), 4);

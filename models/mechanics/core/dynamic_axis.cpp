@@ -13,6 +13,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadToDeg = 180.0 / kPi;
 constexpr int kFullStepsPerElectricalPeriod = 4;  // two-phase motor: 4 x 90 electrical deg
+// A slip counts once the rotor is past the unstable equilibrium, half a period from its own, by this much more: a
+// rotor hovering on it, pushed to and fro by single microsteps (2.8 electrical deg at 1/32), has not slipped.
+constexpr double kSlipHysteresisRad = kPi / 4.0;
 // Steps further apart than this are starts from rest, not a commanded speed (1/32 step at 0.1 s: 2 mm/min).
 constexpr TimePs kRippleMaxStepGapPs = 100 * kPsPerMs;
 
@@ -40,14 +43,14 @@ double DynamicAxis::lag_electrical_rad() const {
 void DynamicAxis::track_load_angle(TimePs t_ps) const {
     if (!m_enabled) return;
     const double lag_rad = lag_electrical_rad();
-    const auto periods = static_cast<std::int64_t>(std::llround(lag_rad / (2.0 * kPi)));
-    if (periods != m_slip_periods) {
+    if (std::abs(lag_rad - 2.0 * kPi * static_cast<double>(m_slip_periods)) > kPi + kSlipHysteresisRad) {
+        const auto periods = static_cast<std::int64_t>(std::llround(lag_rad / (2.0 * kPi)));
         const int steps = static_cast<int>(periods - m_slip_periods) * kFullStepsPerElectricalPeriod;
         m_stats.lost_full_steps += std::abs(steps);
         if (m_stats.events.size() < kMaxLostStepEvents) m_stats.events.push_back({t_ps, steps});
         m_slip_periods = periods;
     }
-    const double load_angle_deg = std::abs(lag_rad - 2.0 * kPi * static_cast<double>(periods)) * kRadToDeg;
+    const double load_angle_deg = std::abs(lag_rad - 2.0 * kPi * static_cast<double>(m_slip_periods)) * kRadToDeg;
     m_stats.load_angle_deg_trace.add(t_ps, load_angle_deg);
     if (load_angle_deg > m_stats.peak_load_angle_deg) {
         m_stats.peak_load_angle_deg = load_angle_deg;
@@ -86,10 +89,17 @@ void DynamicAxis::track_ripple(TimePs t_ps, std::int64_t previous_units) {
 
 void DynamicAxis::on_enable(TimePs t_ps, bool enabled) {
     advance(t_ps);
-    if (enabled && !m_enabled) m_slip_periods = std::llround(lag_electrical_rad() / (2.0 * kPi));
+    // No new reference at re-enabling: the driver ignores STEP while disabled, so the commanded position held, and a
+    // rotor that coasted or was pushed more than half an electrical period meanwhile is pulled into another period
+    // than the commanded one: steps lost (a carriage coasting after its driver is switched off mid-motion), counted
+    // at the enable.
     m_enabled = enabled;
     m_tracked_ps = -1;
     apply_setpoints();
+    if (enabled) {
+        track_load_angle(t_ps);
+        m_tracked_ps = t_ps;
+    }
 }
 
 void DynamicAxis::set_external_torque(TimePs t_ps, double torque_nm) {

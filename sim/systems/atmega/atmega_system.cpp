@@ -14,7 +14,7 @@
 #include "host/pc_program.hpp"
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
-#include "run/metrics_feed.hpp"
+#include "systems/carriage_feed.hpp"
 #include "run/moves.hpp"
 #include "run/simulate.hpp"
 #include "systems/atmega/atmega_report.hpp"
@@ -214,11 +214,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     if (!s.keep_run_input) {
         const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm(), false},
                                          {"y", "step_y", "dir_y", s.machine.y.steps_per_mm(), false}};
-        feed.emplace(
-            rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
-            s.detail);
-        if (machine.mechanics_on_worker())
-            feed->stay_behind([&machine] { return machine.carriage().samples_ready_ps(); });
+        feed_on_carriage(feed, rec, axes, machine, s.detail);
         // Every fold comes right after the pins were read up to its instant: the edges before it are all there.
         feed->take_edges_with([&pins](const std::string& pin, TimePs t_ps) { return pins.hand_over(pin, t_ps); });
     }
@@ -281,11 +277,7 @@ ArchRun run_atmega(const Scenario& s, const Job& job) {
     for (Warning& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
     run.details = details_json(facts, s.detail);
     run.details_text = details_text(facts);
-    if (feed) {
-        add_mechanics_report(machine, feed->laser_exposure(), run);
-    } else {
-        add_mechanics_report(machine, run);
-    }
+    add_mechanics_report(machine, feed, run);
 
     if (const std::optional<std::string> why = link_failure(mcu, cp2102, pc)) {
         run.ok = false;

@@ -87,8 +87,8 @@ PlannedMoves::ClockNeeded PlannedMoves::clock_needed() {
     return {*m_next_begin_ps, window.second};
 }
 
-TimePs commanded_read_from(const metrics::RunInput& pending, TimePs now_ps) {
-    TimePs first_ps = now_ps;
+TimePs commanded_read_from(const metrics::RunInput& pending, TimePs measured_ps) {
+    TimePs first_ps = measured_ps;
     if (!pending.moves.empty()) first_ps = std::min(first_ps, pending.moves.front().t_begin_ps);
     if (!pending.tool.empty()) first_ps = std::min(first_ps, pending.tool.front().t_ps);
     for (const metrics::AxisTrace& axis : pending.axes) {

@@ -40,10 +40,10 @@ private:
     std::optional<TimePs> m_next_begin_ps;
 };
 
-// The earliest time the streaming metrics may still read the commanded trajectory at, once they have folded up to
-// now_ps: a sync window and a scan step (step_crossings' grid) before the first piece, tool sample or STEP/DIR edge
-// they still hold, or before now_ps (what comes later is later).
-TimePs commanded_read_from(const metrics::RunInput& pending, TimePs now_ps);
+// The earliest time the streaming metrics may still read the commanded trajectory at, once they have measured up to
+// measured_ps: a sync window and a scan step (step_crossings' grid) before the first piece, tool sample or STEP/DIR
+// edge they still hold, or before measured_ps (what comes later is later).
+TimePs commanded_read_from(const metrics::RunInput& pending, TimePs measured_ps);
 
 // The planner's state at tau(t) (velocity scaled by d tau/dt). The trajectory is shared with the closure; the
 // clock is the servo's as it is at the call.

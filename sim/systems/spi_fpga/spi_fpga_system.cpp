@@ -11,7 +11,7 @@
 #include "host/servo/servo_thread.hpp"
 #include "probes/edge_recorder.hpp"
 #include "probes/vcd_trace.hpp"
-#include "run/metrics_feed.hpp"
+#include "systems/carriage_feed.hpp"
 #include "run/simulate.hpp"
 #include "spi/spi_master.hpp"
 #include "systems/machine.hpp"
@@ -145,9 +145,8 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     RateSegments segments;
     ArchRun run;
     metrics::RunInput& in = run.input;
-    // The metrics stream (their inputs dropped as they are measured) unless the whole logs are asked for, or the
-    // dynamic mechanics' report reads every tool sample at the end. The rate segments stay whole for --detail,
-    // whose report lists them (commanded_rates).
+    // The metrics stream (their inputs dropped as they are measured) unless the whole logs are asked for. The rate
+    // segments stay whole for --detail, whose report lists them (commanded_rates).
     std::optional<MetricsFeed> feed;
     const auto hand_over = [&](bool ended) {
         for (metrics::MoveSpec& m : planned.take(core, ended)) feed->add_piece(std::move(m));
@@ -162,21 +161,20 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
         commanded_known(*pending.commanded, core);
         if (!s.detail) host.drop_log_before(segments.first_needed_period());  // --detail lists every period
     };
-    if (!s.keep_run_input && machine.dynamic_x() == nullptr) {
+    if (!s.keep_run_input) {
         const std::vector<AxisPins> axes{{"x", "step_x", "dir_x", s.machine.x.steps_per_mm()},
                                          {"y", "step_y", "dir_y", s.machine.y.steps_per_mm()}};
-        feed.emplace(
-            rec, axes, "laser", [&machine](TimePs t_ps) { return machine.carriage().take_samples_before(t_ps); },
-            s.detail);
+        feed_on_carriage(feed, rec, axes, machine, s.detail);
         feed->pending().commanded = commanded_trajectory_live(trajectory, core);
     }
     SimulationEnd end = simulate(budget, {}, 0, [&](TimePs now_ps) {
         if (!feed) return;
         hand_over(false);
         feed->fold(now_ps);
-        // The clock's knots that neither the metrics nor the moves still to be handed over read, and the pieces of
-        // plan behind the metrics (the servo and the laser bit read from the clock's tau on).
-        const TimePs read_from_ps = commanded_read_from(feed->pending(), now_ps);
+        // The clock's knots that neither the metrics (behind the simulation while the carriage's samples are not
+        // ready) nor the moves still to be handed over read, and the pieces of plan behind the metrics (the servo
+        // and the laser bit read from the clock's tau on).
+        const TimePs read_from_ps = commanded_read_from(feed->pending(), std::max<TimePs>(0, feed->measured_ps()));
         const PlannedMoves::ClockNeeded needed = planned.clock_needed();
         host.drop_clock_before(std::min(read_from_ps, needed.t_ps), needed.tau_s);
         plan->drop_before(core.clock().tau_at(read_from_ps));
@@ -209,7 +207,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
     SpiFpgaReport report = spi_fpga_report(host, master, fpga, in.t_job_end_ps, s.detail);
     run.details = std::move(report.details);
     run.details_text = std::move(report.text);
-    add_mechanics_report(machine, run);
+    add_mechanics_report(machine, feed, run);
     run.warnings = std::move(report.warnings);
     if (!host.finished()) {
         run.ok = false;

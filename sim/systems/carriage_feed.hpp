@@ -11,7 +11,7 @@
 namespace cnc::sim {
 
 // Starts `feed` before the simulation (the recorder's logs give the pins' initial levels); the laser pin is "laser".
-MetricsFeed& feed_on_carriage(std::optional<MetricsFeed>& feed, EdgeRecorder& rec, const std::vector<AxisPins>& axes,
-                              Machine& machine, bool detail, metrics::PieceMeasured on_piece = {});
+void feed_on_carriage(std::optional<MetricsFeed>& feed, EdgeRecorder& rec, const std::vector<AxisPins>& axes,
+                      Machine& machine, bool detail, metrics::PieceMeasured on_piece = {});
 
 }  // namespace cnc::sim

@@ -94,12 +94,8 @@ void DynamicAxis::on_enable(TimePs t_ps, bool enabled) {
     // than the commanded one: steps lost (a carriage coasting after its driver is switched off mid-motion), counted
     // at the enable.
     m_enabled = enabled;
-    m_tracked_ps = -1;
     apply_setpoints();
-    if (enabled) {
-        track_load_angle(t_ps);
-        m_tracked_ps = t_ps;
-    }
+    if (enabled) track_load_angle(t_ps);
 }
 
 void DynamicAxis::set_external_torque(TimePs t_ps, double torque_nm) {

@@ -70,7 +70,7 @@ private:
     mutable AxisIntegrator m_integrator;
     mutable DynamicAxisStats m_stats;
     mutable std::int64_t m_slip_periods = 0;  // electrical periods the rotor has slipped (signed)
-    mutable TimePs m_tracked_ps = -1;          // the time of the last advance, until the set-points change
+    mutable TimePs m_tracked_ps = -1;          // the time of the last advance, until the command moves
     std::int64_t m_units = 0;                  // commanded indexer position, 1/32 step
     TimePs m_last_microstep_ps = -1;
     double m_ripple_sum_sq = 0.0;

@@ -174,7 +174,7 @@ ArchRun run_spi_fpga(const Scenario& s, const Job& job) {
         // The clock's knots that neither the metrics (behind the simulation while the carriage's samples are not
         // ready) nor the moves still to be handed over read, and the pieces of plan behind the metrics (the servo
         // and the laser bit read from the clock's tau on).
-        const TimePs read_from_ps = commanded_read_from(feed->pending(), std::max<TimePs>(0, feed->measured_ps()));
+        const TimePs read_from_ps = commanded_read_from(feed->pending(), feed->measured_ps());
         const PlannedMoves::ClockNeeded needed = planned.clock_needed();
         host.drop_clock_before(std::min(read_from_ps, needed.t_ps), needed.tau_s);
         plan->drop_before(core.clock().tau_at(read_from_ps));

@@ -30,10 +30,6 @@ struct ScratchFile {
 
 }  // namespace
 
-// The loader links the SystemC models whose settings it fills, and libsystemc refers to sc_main; nothing here
-// elaborates a model, so it is never called.
-int sc_main(int, char**) { return 0; }
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const ScratchFile scratch;
     const std::string input(reinterpret_cast<const char*>(data), size);

@@ -1,4 +1,4 @@
-// libFuzzer harness: the VCD reader of `cncsim analyze` (metrics/vcd_reader.hpp). Only cnc::BadInput may leave
+// libFuzzer harness: the VCD reader of `cncsim analyze` (metrics/vcd/vcd_reader.hpp). Only cnc::BadInput may leave
 // it, and every edge log it returns is in time order.
 #include <cstddef>
 #include <cstdint>
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "common/bad_input.hpp"
-#include "metrics/vcd_reader.hpp"
+#include "metrics/vcd/vcd_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));

@@ -17,15 +17,16 @@
 #include "common/bad_input.hpp"
 #include "compare/compare.hpp"
 #include "compare/compare_outputs.hpp"
-#include "metrics/analyze_input.hpp"
-#include "metrics/commanded_rates.hpp"
+#include "metrics/vcd/analyze_input.hpp"
+#include "metrics/pulse/commanded_rates.hpp"
 #include "metrics/metrics.hpp"
-#include "metrics/vcd_reader.hpp"
+#include "metrics/report/report.hpp"
+#include "metrics/vcd/vcd_reader.hpp"
 #include "motor_curve_cmd.hpp"
 #include "output/output_file.hpp"
 #include "output/samples_csv.hpp"
 #include "plots/run_plots.hpp"
-#include "run/architecture.hpp"
+#include "architectures/catalog.hpp"
 #include "run/run.hpp"
 #include "scenario/scenario.hpp"
 
@@ -125,11 +126,12 @@ int cmd_analyze(const std::string& vcd_path, const std::vector<cnc::metrics::Axi
     return kExitOk;
 }
 
-// The architectures `compare` can put side by side: those that run the scenario's job.
-std::string job_architectures(const std::string& separator = ", ") {
+// The architectures `compare` can put side by side: those that run the scenario's job (`shown`: and that it shows
+// unless asked, all but the baseline).
+std::string job_architectures(const std::string& separator = ", ", bool shown = false) {
     std::string text;
-    for (const cnc::sim::Architecture& a : cnc::sim::architectures()) {
-        if (a.runs_job) text += (text.empty() ? "" : separator) + std::string(a.name);
+    for (const cnc::sim::Architecture* a : cnc::sim::architectures()) {
+        if (a->job_use().runs_job && !(shown && a->baseline())) text += (text.empty() ? "" : separator) + a->name();
     }
     return text;
 }
@@ -139,7 +141,7 @@ int cmd_compare(const std::string& scenario_path, const std::string& archs, cons
     std::vector<std::string> list;
     std::stringstream ss(archs);
     for (std::string a; std::getline(ss, a, ',');) {
-        if (!cnc::sim::find_architecture(a, "--arch " + a).runs_job) {
+        if (!cnc::sim::find_architecture(a, "--arch " + a).job_use().runs_job) {
             throw cnc::BadInput("--arch " + a, "compares the architectures that run a job (" + job_architectures() +
                                                "); " + a + " does not");
         }
@@ -153,16 +155,16 @@ int cmd_compare(const std::string& scenario_path, const std::string& archs, cons
         std::filesystem::create_directories(out_dir);
     }
     const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-    const auto columns = cnc::sim::run_compare(self, scenario_path, list, sets, out_dir);
+    const cnc::sim::Comparison comparison = cnc::sim::run_compare(self, scenario_path, list, sets, out_dir);
     const cnc::sim::TableFormat format = format_name == "markdown" ? cnc::sim::TableFormat::Markdown
                                          : format_name == "csv"    ? cnc::sim::TableFormat::Csv
                                          : format_name == "json"   ? cnc::sim::TableFormat::Json
                                                                    : cnc::sim::TableFormat::Text;
-    std::cout << cnc::sim::compare_table(columns, format);
-    if (!report.empty()) write_json(report, cnc::sim::compare_json(columns));
-    if (!out_dir.empty()) cnc::sim::write_compare_outputs(columns, scenario_path, sets, scenario.job_path, out_dir);
+    std::cout << cnc::sim::compare_table(comparison, format);
+    if (!report.empty()) write_json(report, cnc::sim::compare_json(comparison));
+    if (!out_dir.empty()) cnc::sim::write_compare_outputs(comparison, scenario_path, sets, scenario.job_path, out_dir);
     int worst = kExitOk;
-    for (const auto& c : columns) worst = std::max(worst, c.exit_code == kExitBadInput ? kExitBadInput : c.exit_code);
+    for (const auto& c : comparison.columns) worst = std::max(worst, c.exit_code == kExitBadInput ? kExitBadInput : c.exit_code);
     return worst;
 }
 
@@ -227,11 +229,19 @@ int dispatch(int argc, char* argv[]) {
                         "its command changed, not by period");
     analyze->add_option("--report", report, "write the JSON report to this file");
 
-    std::string archs = job_architectures(",");
+    std::string archs = job_architectures(",", true);
     std::string table_format = "text";
     CLI::App* compare = app.add_subcommand("compare", "the same job and machine on several architectures, side by side");
     compare->add_option("scenario", scenario, "scenario file (TOML); its architecture is overridden")->required();
-    compare->add_option("--arch", archs, "architectures, comma-separated")->capture_default_str();
+    const cnc::sim::Architecture* baseline = cnc::sim::baseline_architecture();
+    compare
+        ->add_option("--arch", archs,
+                     "architectures, comma-separated" +
+                         (baseline != nullptr ? "; " + baseline->name() +
+                                                    ", the baseline of the rows measured over it, runs with every "
+                                                    "comparison and is a column when named here"
+                                              : std::string()))
+        ->capture_default_str();
     compare->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
     compare->add_option("--format", table_format, "table format")
         ->check(CLI::IsMember({"text", "markdown", "csv", "json"}))

@@ -15,19 +15,9 @@
 #include "mechanics/core/drv8825_modes.hpp"
 #include "mechanics/core/drv8825_timing.hpp"
 #include "mechanics/core/motor.hpp"
+#include "mechanics/core/drv8825_config.hpp"
 
 namespace cnc::mech {
-
-struct Drv8825Config {
-    DriverLimits limits{};
-    // false (default): every rising edge while enabled is a step, whatever its timing (violations are only
-    // counted). true: a pulse whose preceding low time < tWL is ignored at its rising edge, and a pulse whose
-    // high time < tWH is retracted at its falling edge (the motor is commanded back to where it was: the
-    // model cannot know a pulse is too short before it ends, so it moves on the rise as for a valid pulse).
-    // This is the pessimistic reading of the data sheet minimums; real chips often accept shorter pulses.
-    bool strict = false;
-    bool dir_high_is_positive = true;  // seed 000 §8: the DIR-to-direction mapping depends on the wiring
-};
 
 struct Drv8825Stats {
     std::int64_t steps = 0;             // steps that moved the indexer (net of strict-mode retractions)

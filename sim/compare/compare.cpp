@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "common/text_format.hpp"
+#include "architectures/catalog.hpp"
 #include "compare/spawn.hpp"
 
 namespace cnc::sim {
@@ -28,6 +29,9 @@ struct Row {
     const char* format;   // printf format of the value
     bool setting = false; // what the run was given (shown for a failed run too), not a result
     bool in_arch_section = false;  // the pointer is into the architecture's own section (report[arch])
+    // Followed, with a baseline run, by the column's value minus the baseline's: what the controller adds to the
+    // machine's own figure.
+    bool over_baseline = false;
 };
 
 // The machine each run used, then the headline numbers of DESIGN.md §4 in the order a reader compares them.
@@ -50,7 +54,7 @@ constexpr Row kRows[] = {
     {"rate error worst [%]", "/metrics/pulse/rate_error_worst_pct", "%+.4f"},
     {"sync error max [us]", "/metrics/pulse/sync_max_us", "%.1f"},
     {"feed error max [%]", "/metrics/feed/feed_error_max_abs_pct", "%.4f"},
-    {"contour error max [um]", "/metrics/path/contour_max_um", "%.2f"},
+    {"contour error max [um]", "/metrics/path/contour_max_um", "%.2f", false, false, true},
     {"contour error rms [um]", "/metrics/path/contour_rms_um", "%.2f"},
     {"following error max [um]", "/metrics/path/following_max_um", "%.2f"},
     {"job end error [um]", "/metrics/path/job_end_um", "%.2f"},
@@ -68,13 +72,48 @@ nlohmann::json::json_pointer where(const Row& row, const CompareColumn& c) {
     return nlohmann::json::json_pointer(row.in_arch_section ? "/" + c.architecture + row.pointer : row.pointer);
 }
 
+// The row's figure of a run, when its report has one.
+std::optional<double> figure(const CompareColumn& c, const Row& row) {
+    if (c.report.is_null()) return std::nullopt;
+    const nlohmann::json::json_pointer ptr = where(row, c);
+    if (!c.report.contains(ptr) || !c.report.at(ptr).is_number()) return std::nullopt;
+    return c.report.at(ptr).get<double>();
+}
+
 // A failed run's figures cover only what ran before it stopped: never shown as a result (its JSON keeps them
 // apart as partial_metrics).
 std::string cell(const CompareColumn& c, const Row& row) {
-    if (c.report.is_null() || (c.exit_code != 0 && !row.setting)) return "-";
-    const nlohmann::json::json_pointer ptr = where(row, c);
-    if (!c.report.contains(ptr) || !c.report.at(ptr).is_number()) return "-";
-    return format(row.format, c.report.at(ptr).get<double>());
+    const std::optional<double> v = figure(c, row);
+    if (!v || (c.exit_code != 0 && !row.setting)) return "-";
+    return format(row.format, *v);
+}
+
+// The column's figure minus the baseline's, when both runs have it.
+std::optional<double> over(const CompareColumn& c, const Row& row, const CompareColumn& baseline) {
+    const std::optional<double> v = figure(c, row);
+    const std::optional<double> b = figure(baseline, row);
+    if (!v || !b) return std::nullopt;
+    return *v - *b;
+}
+
+std::string over_cell(const CompareColumn& c, const Row& row, const CompareColumn& baseline) {
+    const std::optional<double> d = over(c, row, baseline);
+    if (!d || c.exit_code != 0 || baseline.exit_code != 0) return "-";
+    return format(row.format, *d);
+}
+
+// "contour error max over ideal [um]": the row's label with the baseline named before its unit.
+std::string over_label(const Row& row, const std::string& baseline) {
+    const std::string label = row.label;
+    const auto unit = label.rfind(" [");
+    return label.substr(0, unit) + " over " + baseline + (unit == std::string::npos ? "" : label.substr(unit));
+}
+
+// Its key in a column's JSON metrics: "metrics/path/contour_max_um" -> "metrics/path/contour_max_over_ideal_um".
+std::string over_key(const Row& row, const std::string& baseline) {
+    const std::string key = row.pointer + 1;
+    const auto unit = key.rfind('_');
+    return key.substr(0, unit) + "_over_" + baseline + (unit == std::string::npos ? "" : key.substr(unit));
 }
 
 // The smallest magnitude as printed, when at least two cells have a value and they are not all the same.
@@ -132,15 +171,20 @@ std::string status(const CompareColumn& c) {
     return c.exit_code == 2 ? "bad input" : "failed";
 }
 
-std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::string& scenario,
-                                       const std::vector<std::string>& architectures,
-                                       const std::vector<std::string>& sets, const std::string& out_dir) {
-    fs::path dir(out_dir);
-    if (out_dir.empty()) {
-        std::string dir_template = (fs::temp_directory_path() / "cncsim-compare-XXXXXX").string();
-        if (mkdtemp(dir_template.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder");
-        dir = dir_template;
-    }
+Comparison run_compare(const std::string& self_exe, const std::string& scenario,
+                       const std::vector<std::string>& asked, const std::vector<std::string>& sets,
+                       const std::string& out_dir) {
+    // The baseline runs too when it is not asked for; its report alone, in the temporary folder.
+    std::vector<std::string> architectures = asked;
+    const Architecture* baseline = baseline_architecture();
+    const bool hidden_baseline =
+        baseline != nullptr && std::find(asked.begin(), asked.end(), baseline->name()) == asked.end();
+    if (hidden_baseline) architectures.push_back(baseline->name());
+    std::string dir_template = (fs::temp_directory_path() / "cncsim-compare-XXXXXX").string();
+    if (mkdtemp(dir_template.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder");
+    const fs::path temp_dir = dir_template;
+    const auto with_outputs = [&](std::size_t k) { return !out_dir.empty() && k < asked.size(); };
+    const auto report_dir = [&](std::size_t k) { return with_outputs(k) ? fs::path(out_dir) : temp_dir; };
     std::vector<CompareColumn> columns(architectures.size());
     std::map<pid_t, std::size_t> running;
     std::vector<std::chrono::steady_clock::time_point> started(architectures.size());
@@ -153,7 +197,8 @@ std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::s
             columns[next].architecture = arch;
             std::cerr << "cncsim compare: " << arch << " running" << std::endl;
             started[next] = std::chrono::steady_clock::now();
-            running[spawn_child(child_args(self_exe, scenario, arch, sets, dir / (arch + ".json"), out_dir))] = next;
+            running[spawn_child(child_args(self_exe, scenario, arch, sets, report_dir(next) / (arch + ".json"),
+                                           with_outputs(next) ? out_dir : ""))] = next;
             ++next;
         }
         int exit_code = 0;
@@ -166,7 +211,7 @@ std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::s
         ++done;
         c.exit_code = exit_code;
         c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started[k]).count();
-        std::ifstream in(dir / (c.architecture + ".json"));
+        std::ifstream in(report_dir(k) / (c.architecture + ".json"));
         if (in) c.report = nlohmann::json::parse(in, nullptr, false);
         if (c.report.is_discarded()) c.report = nullptr;
         std::string ratio;
@@ -177,11 +222,28 @@ std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::s
         std::cerr << "cncsim compare: " << c.architecture << " " << status(c) << format(" after %.1f s", c.wall_s)
                   << ratio << " [" << done << '/' << architectures.size() << " done]" << std::endl;
     }
-    if (out_dir.empty()) fs::remove_all(dir);
-    return columns;
+    fs::remove_all(temp_dir);
+    Comparison out;
+    if (hidden_baseline) {
+        out.baseline = std::move(columns.back());
+        columns.pop_back();
+    }
+    out.columns = std::move(columns);
+    return out;
 }
 
-std::vector<TableRow> table_rows(const std::vector<CompareColumn>& columns) {
+const CompareColumn* Comparison::baseline_column() const {
+    if (baseline) return &*baseline;
+    const Architecture* b = baseline_architecture();
+    for (const CompareColumn& c : columns) {
+        if (b != nullptr && c.architecture == b->name()) return &c;
+    }
+    return nullptr;
+}
+
+std::vector<TableRow> table_rows(const Comparison& comparison) {
+    const std::vector<CompareColumn>& columns = comparison.columns;
+    const CompareColumn* baseline = comparison.baseline_column();
     std::vector<TableRow> rows;
     TableRow st{"status", {}, std::vector<bool>(columns.size(), false)};
     for (const CompareColumn& c : columns) st.cells.push_back(status(c));
@@ -191,18 +253,31 @@ std::vector<TableRow> table_rows(const std::vector<CompareColumn>& columns) {
         for (const CompareColumn& c : columns) r.cells.push_back(cell(c, row));
         r.best = best_cells(r.cells);
         rows.push_back(r);
+        if (!row.over_baseline || baseline == nullptr) continue;
+        TableRow o{over_label(row, baseline->architecture), {}, {}};
+        for (const CompareColumn& c : columns) o.cells.push_back(over_cell(c, row, *baseline));
+        o.best = best_cells(o.cells);
+        rows.push_back(o);
     }
     return rows;
 }
 
-nlohmann::json compare_json(const std::vector<CompareColumn>& columns) {
+nlohmann::json compare_json(const Comparison& comparison) {
+    const std::vector<CompareColumn>& columns = comparison.columns;
+    const CompareColumn* baseline = comparison.baseline_column();
+    // Each table row's key, in the order of table_rows (after the status).
+    std::vector<std::string> keys;
+    for (const Row& row : kRows) {
+        keys.emplace_back(row.pointer + 1);
+        if (row.over_baseline && baseline != nullptr) keys.push_back(over_key(row, baseline->architecture));
+    }
     nlohmann::json out = nlohmann::json::array();
-    const std::vector<TableRow> rows = table_rows(columns);
+    const std::vector<TableRow> rows = table_rows(comparison);
     for (std::size_t k = 0; k < columns.size(); ++k) {
         const CompareColumn& c = columns[k];
         nlohmann::json best = nlohmann::json::array();
         for (std::size_t r = 1; r < rows.size(); ++r) {  // rows[0] is the status
-            if (rows[r].best[k]) best.push_back(kRows[r - 1].pointer + 1);
+            if (rows[r].best[k]) best.push_back(keys[r - 1]);
         }
         nlohmann::json metrics = nlohmann::json::object();
         for (const Row& row : kRows) {
@@ -210,6 +285,9 @@ nlohmann::json compare_json(const std::vector<CompareColumn>& columns) {
             const nlohmann::json::json_pointer ptr = where(row, c);
             metrics[row.pointer + 1] =
                 !c.report.is_null() && c.report.contains(ptr) ? c.report.at(ptr) : nlohmann::json(nullptr);
+            if (!row.over_baseline || baseline == nullptr) continue;
+            const std::optional<double> d = over(c, row, *baseline);
+            metrics[over_key(row, baseline->architecture)] = d ? nlohmann::json(*d) : nlohmann::json(nullptr);
         }
         nlohmann::json column = {{"architecture", c.architecture},
                                  {"status", status(c)},
@@ -232,8 +310,9 @@ nlohmann::json compare_json(const std::vector<CompareColumn>& columns) {
     return out;
 }
 
-std::string compare_table(const std::vector<CompareColumn>& columns, TableFormat format_kind) {
-    if (format_kind == TableFormat::Json) return compare_json(columns).dump(2) + "\n";
+std::string compare_table(const Comparison& comparison, TableFormat format_kind) {
+    if (format_kind == TableFormat::Json) return compare_json(comparison).dump(2) + "\n";
+    const std::vector<CompareColumn>& columns = comparison.columns;
     std::vector<std::string> head = {"metric"};
     for (const CompareColumn& c : columns) head.push_back(c.architecture);
     std::vector<std::vector<std::string>> rows = {head};
@@ -243,7 +322,7 @@ std::string compare_table(const std::vector<CompareColumn>& columns, TableFormat
         head.push_back("best");
         rows = {head};
     }
-    for (const TableRow& tr : table_rows(columns)) {
+    for (const TableRow& tr : table_rows(comparison)) {
         std::vector<std::string> r = {tr.label};
         std::vector<std::string> best_names;
         for (std::size_t i = 0; i < tr.cells.size(); ++i) {

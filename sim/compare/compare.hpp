@@ -1,6 +1,7 @@
 // cncsim compare: one job on one machine through several architectures, side by side (DESIGN.md §6). Each
 // architecture runs in its own child process (`cncsim run`), since SystemC allows one elaboration per process.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,14 +16,24 @@ struct CompareColumn {
     double wall_s = 0.0;      // the child's wall time
 };
 
+// The columns asked for, and the baseline architecture's run (Architecture::baseline) when it is not one of them:
+// the rows that measure each column over it read it.
+struct Comparison {
+    std::vector<CompareColumn> columns;
+    std::optional<CompareColumn> baseline;
+    // The baseline's run, shown or not; null without one.
+    [[nodiscard]] const CompareColumn* baseline_column() const;
+};
+
 enum class TableFormat { Text, Markdown, Csv, Json };
 
-// Runs `self_exe run SCENARIO --set scenario.architecture=A [--set ...] --report R` for each architecture, as many
-// at once as the machine has cores. With `out_dir`, R is out_dir/A.json and each child also writes out_dir/A.vcd
-// and its plot data in out_dir/data/A/; without, R is a temporary file.
-std::vector<CompareColumn> run_compare(const std::string& self_exe, const std::string& scenario,
-                                       const std::vector<std::string>& architectures,
-                                       const std::vector<std::string>& sets, const std::string& out_dir = "");
+// Runs `self_exe run SCENARIO --set scenario.architecture=A [--set ...] --report R` for each architecture, and for
+// the baseline architecture when it is not one of them, as many at once as the machine has cores. With `out_dir`,
+// R is out_dir/A.json and each child also writes out_dir/A.vcd and its plot data in out_dir/data/A/ (the baseline,
+// when it is not asked for, writes none of them); without, R is a temporary file.
+Comparison run_compare(const std::string& self_exe, const std::string& scenario,
+                       const std::vector<std::string>& architectures, const std::vector<std::string>& sets,
+                       const std::string& out_dir = "");
 
 // One metric row: its label (unit in brackets), a cell per column ("-" when the run has no such figure) and which
 // cells hold the row's best value (the smallest magnitude among two or more that differ).
@@ -31,12 +42,13 @@ struct TableRow {
     std::vector<std::string> cells;
     std::vector<bool> best;
 };
-std::vector<TableRow> table_rows(const std::vector<CompareColumn>& columns);
+// With a baseline run, each row marked Row::over_baseline is followed by the column's value minus the baseline's.
+std::vector<TableRow> table_rows(const Comparison& comparison);
 std::string status(const CompareColumn& c);
 
 // The comparison table: one row per metric, one column per architecture; best values marked (text: a trailing
 // `*`, Markdown: bold, CSV: a last column naming the best architectures, JSON: each column's `best` metrics).
-std::string compare_table(const std::vector<CompareColumn>& columns, TableFormat format);
-nlohmann::json compare_json(const std::vector<CompareColumn>& columns);
+std::string compare_table(const Comparison& comparison, TableFormat format);
+nlohmann::json compare_json(const Comparison& comparison);
 
 }  // namespace cnc::sim

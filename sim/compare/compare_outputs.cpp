@@ -33,17 +33,17 @@ std::string read_file(const std::string& path) {
 
 }  // namespace
 
-void write_compare_outputs(const std::vector<CompareColumn>& columns, const std::string& scenario_path,
+void write_compare_outputs(const Comparison& comparison, const std::string& scenario_path,
                            const std::vector<std::string>& sets, const std::string& job_path,
                            const std::string& out_dir) {
     const fs::path dir(out_dir);
-    write_file(dir / "table.md", compare_table(columns, TableFormat::Markdown));
-    write_file(dir / "table.csv", compare_table(columns, TableFormat::Csv));
-    write_file(dir / "table.json", compare_table(columns, TableFormat::Json));
+    write_file(dir / "table.md", compare_table(comparison, TableFormat::Markdown));
+    write_file(dir / "table.csv", compare_table(comparison, TableFormat::Csv));
+    write_file(dir / "table.json", compare_table(comparison, TableFormat::Json));
 
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::string> archs;
-    for (const CompareColumn& c : columns) archs.push_back(c.architecture);
+    for (const CompareColumn& c : comparison.columns) archs.push_back(c.architecture);
     const std::vector<Plot> plots = render_plots(load_plot_runs(dir, archs), dir);
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
     std::cerr << "cncsim compare: " << plots.size() << format(" plots rendered in %.2f s", wall.count()) << std::endl;
@@ -55,7 +55,7 @@ void write_compare_outputs(const std::vector<CompareColumn>& columns, const std:
     }
     if (job.job_lines > kJobLinesShown)
         job.job_text += format("... (%zu more lines)\n", job.job_lines - kJobLinesShown);
-    write_file(dir / "index.html", html_report(columns, plots, job));
+    write_file(dir / "index.html", html_report(comparison, plots, job));
 }
 
 }  // namespace cnc::sim

@@ -9,7 +9,7 @@
 namespace cnc::sim {
 
 // job_path: the scenario's job, resolved. Prints the plotting time on stderr.
-void write_compare_outputs(const std::vector<CompareColumn>& columns, const std::string& scenario_path,
+void write_compare_outputs(const Comparison& comparison, const std::string& scenario_path,
                            const std::vector<std::string>& sets, const std::string& job_path,
                            const std::string& out_dir);
 

@@ -36,14 +36,14 @@ constexpr const char* kStyle =
     "td.best{font-weight:bold;background:#eaf6ea}pre{background:#f6f6f6;padding:6px;overflow:auto;max-height:20em}"
     "img{max-width:100%;border:1px solid #ddd}.arch{border-bottom:4px solid}";
 
-void table_html(std::ostream& os, const std::vector<CompareColumn>& columns) {
+void table_html(std::ostream& os, const Comparison& comparison) {
     os << "<table>\n<tr><th>metric</th>";
-    for (const CompareColumn& c : columns) {
+    for (const CompareColumn& c : comparison.columns) {
         os << "<th class=\"arch\" style=\"border-bottom-color:" << arch_colour(c.architecture) << "\">"
            << escape(c.architecture) << "</th>";
     }
     os << "</tr>\n";
-    for (const TableRow& r : table_rows(columns)) {
+    for (const TableRow& r : table_rows(comparison)) {
         os << "<tr><td>" << escape(r.label) << "</td>";
         for (std::size_t i = 0; i < r.cells.size(); ++i) {
             os << "<td class=\"n" << (r.best[i] ? " best" : "") << "\">" << escape(r.cells[i]) << "</td>";
@@ -81,7 +81,8 @@ void warnings_html(std::ostream& os, const std::vector<CompareColumn>& columns) 
 
 }  // namespace
 
-std::string html_report(const std::vector<CompareColumn>& columns, const std::vector<Plot>& plots, const HtmlJob& job) {
+std::string html_report(const Comparison& comparison, const std::vector<Plot>& plots, const HtmlJob& job) {
+    const std::vector<CompareColumn>& columns = comparison.columns;
     std::ostringstream os;
     os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>cncsim compare: "
        << escape(job.scenario_file) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n"
@@ -91,7 +92,7 @@ std::string html_report(const std::vector<CompareColumn>& columns, const std::ve
     os << "; every architecture runs it with only <code>scenario.architecture</code> changed.</p>\n<pre>"
        << escape(job.scenario_text) << "</pre>\n<p>Job <code>" << escape(job.job_file) << "</code>, " << job.job_lines
        << " lines:</p>\n<pre>" << escape(job.job_text) << "</pre>\n<h2>Comparison</h2>\n";
-    table_html(os, columns);
+    table_html(os, comparison);
     os << "<p>The same table: <a href=\"table.md\">table.md</a>, <a href=\"table.csv\">table.csv</a>, "
           "<a href=\"table.json\">table.json</a>. Each architecture's report and trace:";
     for (const CompareColumn& c : columns) {

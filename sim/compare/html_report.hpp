@@ -18,6 +18,6 @@ struct HtmlJob {
     std::size_t job_lines = 0;
 };
 
-std::string html_report(const std::vector<CompareColumn>& columns, const std::vector<Plot>& plots, const HtmlJob& job);
+std::string html_report(const Comparison& comparison, const std::vector<Plot>& plots, const HtmlJob& job);
 
 }  // namespace cnc::sim

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <utility>
 
-#include "metrics/edge_index.hpp"
-#include "metrics/programmed_moves.hpp"
+#include "metrics/pulse/edge_index.hpp"
+#include "metrics/timing/programmed_moves.hpp"
 #include "metrics/stats.hpp"
-#include "metrics/sync_error.hpp"
+#include "metrics/pulse/sync_error.hpp"
 
 namespace cnc::metrics {
 

@@ -1,25 +1,23 @@
-// The metrics of one run (DESIGN.md §4), computed the same way for every architecture and for any VCD:
-// compute_metrics() gathers the families, to_json() is the report, summary_table() is what the CLI prints.
+// The metrics of one run (docs/metrics.md), computed the same way for every architecture and for any VCD:
+// compute_metrics() gathers the families (pulse, path, timing, laser); report/report.hpp writes them.
 #pragma once
 #include <cstddef>
 #include <cstdint>
-#include <functional>
-#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "metrics/driver_timing.hpp"
-#include "metrics/laser.hpp"
+#include "metrics/pulse/driver_timing.hpp"
+#include "metrics/laser/laser.hpp"
 #include "metrics/move_metrics.hpp"
-#include "metrics/move_records.hpp"
-#include "metrics/move_timing.hpp"
-#include "metrics/path_accuracy.hpp"
-#include "metrics/pulse_runs.hpp"
+#include "metrics/timing/move_records.hpp"
+#include "metrics/timing/move_timing.hpp"
+#include "metrics/path/path_accuracy.hpp"
+#include "metrics/pulse/pulse_runs.hpp"
 #include "metrics/run_input.hpp"
-#include "metrics/worst_moves.hpp"
+#include "metrics/timing/worst_moves.hpp"
 
 namespace cnc::metrics {
 
@@ -72,27 +70,4 @@ void add_axis_totals(PulseTotals& t, const AxisMetrics& am);
 
 // Throws std::invalid_argument on inconsistent input (edge logs, moves or tool samples out of time order).
 [[nodiscard]] RunMetrics compute_metrics(const RunInput& in);
-// Where the JSON report's per-move columns of the programmed moves go: into the json, or left null there for
-// write_move_columns() to write from RunMetrics::moves straight to the file (a long job's largest part of the
-// report: as json values it would hold the records a second time).
-enum class MoveColumns { InJson, Streamed };
-// `detail` false: without the pulse runs and the dead-time gaps (cncsim run without --detail); analyze writes all.
-[[nodiscard]] nlohmann::json to_json(const RunMetrics& m, bool detail = true, MoveColumns columns = MoveColumns::InJson);
-// The programmed moves' columns as report_text() writes to_json()'s "moves" at `depth`: one pass over the
-// records per column.
-void write_move_columns(std::ostream& out, const RunMetrics& m, bool detail, int depth);
-[[nodiscard]] std::string summary_table(const RunMetrics& m);
-
-// A member of the report written from elsewhere: at `path` (object keys from the top) the json holds a
-// placeholder, and `write(out, depth)` writes the value instead.
-struct StreamedMember {
-    std::vector<std::string> path;
-    std::function<void(std::ostream& out, int depth)> write;
-};
-// The JSON report as the file holds it: indented by kReportIndent per level, with each array of plain values on one
-// line.
-inline constexpr int kReportIndent = 2;
-void write_report_text(std::ostream& out, const nlohmann::json& report, const StreamedMember* member = nullptr);
-[[nodiscard]] std::string report_text(const nlohmann::json& report);
-
 }  // namespace cnc::metrics

@@ -5,8 +5,8 @@
 #include <optional>
 #include <vector>
 
-#include "metrics/move_timing.hpp"
-#include "metrics/path_accuracy.hpp"
+#include "metrics/timing/move_timing.hpp"
+#include "metrics/path/path_accuracy.hpp"
 #include "metrics/run_input.hpp"
 
 namespace cnc::metrics {

@@ -12,7 +12,7 @@
 #include "common/geometry.hpp"
 #include "common/tool_sample.hpp"
 #include "common/units.hpp"
-#include "metrics/driver_timing.hpp"
+#include "metrics/pulse/driver_timing.hpp"
 
 namespace cnc::metrics {
 

@@ -9,10 +9,10 @@
 #include <stdexcept>
 
 #include "metrics/commanded.hpp"
-#include "metrics/edge_index.hpp"
-#include "metrics/path_accuracy.hpp"
-#include "metrics/programmed_moves.hpp"
-#include "metrics/pulse_runs.hpp"
+#include "metrics/pulse/edge_index.hpp"
+#include "metrics/path/path_accuracy.hpp"
+#include "metrics/timing/programmed_moves.hpp"
+#include "metrics/pulse/pulse_runs.hpp"
 
 namespace cnc::sim {
 
@@ -76,7 +76,7 @@ struct ToolRow {
 };
 
 // Returns the worst-contour sample of the feed moves (of any move if there are only rapids), for the zoomed inset:
-// where the cutting differs most, which a controller's own rapid path (the atmega's dog-leg G0) would hide.
+// where the cutting differs most, which a controller's own rapid path (seed 003's dog-leg G0) would hide.
 std::optional<ToolRow> write_tool(const RunInput& in, const metrics::EdgeIndex& idx, const fs::path& dir) {
     std::ofstream out = open(dir / "tool.dat", "t_s x_mm y_mm travel_mm contour_um following_um");
     if (in.tool.empty() || in.moves.empty()) return std::nullopt;

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "architectures/catalog.hpp"
 #include "common/text_format.hpp"
 #include "compare/spawn.hpp"
 
@@ -169,7 +170,7 @@ std::optional<Script> simple_plot(const std::vector<PlotRun>& runs, const fs::pa
     return s;
 }
 
-// Errors that differ by orders of magnitude between runs (atmega's millimetres, fpga-uart's micrometres) share a
+// Errors that differ by orders of magnitude between runs (millimetres on one, micrometres on another) share a
 // log axis, floored at 0.01 um so that exact runs stay on the plot.
 constexpr double kLogFloorUm = 0.01;
 constexpr double kLogSpan = 20.0;
@@ -314,10 +315,7 @@ std::vector<Script> scripts(const std::vector<PlotRun>& runs, const fs::path& ou
 }  // namespace
 
 std::string arch_colour(const std::string& architecture) {
-    if (architecture == "fpga-uart") return "#0072b2";
-    if (architecture == "atmega") return "#d55e00";
-    if (architecture == "spi-fpga") return "#009e73";
-    return "#000000";
+    return find_architecture(architecture, "plot of " + architecture).plot_colour();
 }
 
 std::vector<PlotRun> load_plot_runs(const fs::path& out_dir, const std::vector<std::string>& architectures) {

@@ -20,7 +20,7 @@ struct Plot {
     std::string title, xlabel, ylabel;
 };
 
-// The same colour for an architecture in every plot and on the HTML page (Okabe-Ito, colour-blind safe).
+// An architecture's colour in every plot and on the HTML page (Architecture::plot_colour).
 std::string arch_colour(const std::string& architecture);
 
 // Reads data_dir/meta.json of each architecture under `out_dir`.

@@ -2,7 +2,7 @@
 // machine names, at trace.timescale, the pins trace.signals names (by default every pin but those traced only on
 // request) and the carriage's real-valued positions (TracedReal), in the window trace.from_s .. trace.to_s. Edges
 // of pins timed by a clock with a whole-ps period (FPGA 50 MHz, AVR 16 MHz) are exact, and a timescale that would
-// round them is refused; the others are written at the nearest tick (metrics/vcd_writer.hpp). The file is an
+// round them is refused; the others are written at the nearest tick (metrics/vcd/vcd_writer.hpp). The file is an
 // OutputFile: complete, or not there.
 #pragma once
 #include <cstdint>
@@ -13,7 +13,7 @@
 
 #include <systemc>
 
-#include "metrics/vcd_writer.hpp"
+#include "metrics/vcd/vcd_writer.hpp"
 #include "output/output_file.hpp"
 #include "scenario/scenario.hpp"
 

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "architectures/catalog.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/soft_limits.hpp"
 #include "host/core/steps_file.hpp"
@@ -20,20 +21,30 @@ void check_job_file(const Scenario& s) {
     if (std::filesystem::is_directory(st)) throw BadInput(s.job_key, s.job_path + " is a folder, not a job file");
 }
 
+// The architectures that take a steps file, for messages.
+std::string steps_file_architectures() {
+    std::string names;
+    for (const Architecture* a : architectures()) {
+        if (a->job_use().takes_steps_file) names += (names.empty() ? "" : ", ") + a->name();
+    }
+    return names;
+}
+
 }  // namespace
 
-Job load_job(const Scenario& s, LaserSwitching switching, bool keep_moves) {
+Job load_job(const Scenario& s, const Architecture& architecture) {
     check_job_file(s);
-    if (s.architecture == "fpga-uart") check_numerators(s);
+    architecture.check_machine(s);
+    const JobUse use = architecture.job_use();
     Job job;
     if (s.job_format == JobFormat::Steps) {
+        if (!use.takes_steps_file) {
+            throw BadInput(s.file + ": scenario.job", architecture.name() + " needs a G-code job: a steps file (seed 000's packet "
+                                      "list) holds no programmed moves for its host, and runs only on " +
+                                      steps_file_architectures());
+        }
         job.steps_file = host::load_steps_file(s.job_path);
         for (host::MotionSegment& seg : job.steps_file) {
-            if (seg.feed == 0 && !s.allow_feed_zero) {
-                throw BadInput(s.job_path + ": segment " + std::to_string(seg.index),
-                               "FeedRate 0 (allowed 1 .. 65535; host.allow_feed_zero = true sends it as the appendix "
-                               "RTL would run it: 62500 clocks per step on both axes)");
-            }
             seg.dx_mm = static_cast<double>(seg.steps_x) / s.machine.x.steps_per_mm();
             seg.dy_mm = static_cast<double>(seg.steps_y) / s.machine.y.steps_per_mm();
         }
@@ -42,8 +53,8 @@ Job load_job(const Scenario& s, LaserSwitching switching, bool keep_moves) {
     }
     // The checks in the order of the whole program's: the file's own problems (thrown at its end), then the first
     // move past the soft limits, then the first past the machine's limits.
-    host::GcodeStream stream(s.job_path, s.interpreter, keep_moves);
-    JobLimits limits(s, s.job_path);
+    host::GcodeStream stream(s.job_path, s.interpreter, !use.streams_job);
+    JobLimits limits(s, architecture, s.job_path);
     std::optional<BadInput> soft_breach, limit_breach;
     for (std::size_t i = 0; const std::optional<host::ProgrammedMove> move = stream.next(); ++i) {
         try {
@@ -56,7 +67,7 @@ Job load_job(const Scenario& s, LaserSwitching switching, bool keep_moves) {
         } catch (const BadInput& e) {
             limit_breach = e;
         }
-        laser_warnings(*move, s.job_path, switching, job.move_warnings);
+        laser_warnings(*move, s.job_path, use.laser_switching, job.move_warnings);
     }
     if (soft_breach) throw *soft_breach;
     if (limit_breach) throw *limit_breach;

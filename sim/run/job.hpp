@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "architectures/architecture.hpp"
 #include "common/warning.hpp"
 #include "host/core/cam.hpp"
 #include "host/core/gcode.hpp"
@@ -16,14 +17,15 @@ struct Job {
     // G-code job; without its moves (Program::moves empty, move_count counts them) when the architecture streams
     // the job: it reads them from the file again as it sends them (host::GcodeStream).
     std::optional<host::Program> program;
-    std::vector<host::MotionSegment> steps_file;   // steps-file job (fpga-uart only)
+    std::vector<host::MotionSegment> steps_file;   // steps-file job (JobUse::takes_steps_file)
     std::vector<Warning> warnings;                 // about the job as a whole (one without a move)
     std::vector<Warning> move_warnings;            // about its moves: the laser against the job's intent
 };
 
-// Reads the job (one pass over the file, moves kept unless `keep_moves` is false) and checks it against the
-// machine (run/job_limits.hpp) before anything is simulated. A job without a move (empty, comments only) is a
-// warning, and bad input under scenario.gcode_policy = "strict".
-Job load_job(const Scenario& scenario, LaserSwitching switching, bool keep_moves);
+// Reads the job as `architecture` takes it (one pass over the file, the moves kept unless it streams the job) and
+// checks it against the machine (run/job_limits.hpp, Architecture::check_machine and check_move) before anything
+// is simulated. A job without a move (empty, comments only) is a warning, and bad input under
+// scenario.gcode_policy = "strict".
+Job load_job(const Scenario& scenario, const Architecture& architecture);
 
 }  // namespace cnc::sim

@@ -6,7 +6,7 @@
 //
 // A move's length is its path (arcs by arc length); its speed is its programmed feed (rapids at the rapid feed
 // the interpreter gives them), held to what each axis can do (ArchPace). The limit's margins cover what the
-// estimate leaves out: the fpga-uart packet feed rounded to whole mm/min (up to 2x slower at the lowest
+// estimate leaves out: the seed 000 packet feed rounded to whole mm/min (up to 2x slower at the lowest
 // feeds), the speed changes of an architecture that has no ramp_s. A run that needs more is stuck or far off its
 // job; scenario.max_sim_s set in the scenario replaces the limit.
 #pragma once
@@ -21,13 +21,13 @@ namespace cnc::sim {
 
 // What an architecture does to a job's time beyond the programmed moves at their feeds.
 struct ArchPace {
-    // Fastest each axis steps, mm/s (atmega: the OCR = 0 rate; spi-fpga: the planner's axis limit). A line's
+    // Fastest each axis steps, mm/s (seed 003: the OCR = 0 rate; a planner: its axis limit). A line's
     // path speed is held so that no axis exceeds its own; an arc's to the smaller of the two (its tangent turns).
     double max_speed_x_mm_per_s = std::numeric_limits<double>::infinity();
     double max_speed_y_mm_per_s = std::numeric_limits<double>::infinity();
     double startup_s = 0.0;  // before the first move: port settle, init packet
     double link_s = 0.0;     // every command's trip over the host link, counted as if nothing overlapped it
-    // Time to speed up to and stop from a move's speed beyond length / speed (spi-fpga's planner); none if empty.
+    // Time to speed up to and stop from a move's speed beyond length / speed (a planner's ramps); none if empty.
     std::function<double(double speed_mm_per_s)> ramp_s;
 };
 

@@ -1,4 +1,4 @@
-// Hands what a run records to its streaming metrics (metrics/metrics_stream.hpp) at each slice boundary of
+// Hands what a run records to its streaming metrics (metrics/streaming/metrics_stream.hpp) at each slice boundary of
 // simulate(): the STEP/DIR and laser edges the recorder took so far, the carriage's new tool samples, and the pieces
 // the architecture says have ended. What the metrics have measured is dropped, so the logs stay short.
 #pragma once
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "common/tool_sample.hpp"
-#include "metrics/metrics_stream.hpp"
+#include "metrics/streaming/metrics_stream.hpp"
 #include "probes/edge_recorder.hpp"
 
 namespace cnc::sim {
@@ -27,7 +27,7 @@ using TakeSamplesBefore = std::function<std::vector<ToolSample>(TimePs)>;
 // The latest time before which the carriage's tool samples can be taken without waiting (mech::Carriage).
 using SamplesReady = std::function<TimePs()>;
 // A pin's edges before a time, handed over and forgotten there: the recorder's (EdgeRecorder::take_before), or what
-// an architecture made of them (atmega: the STEP pulses its drivers take).
+// an architecture made of them (the STEP pulses its drivers take while their EN lets them).
 using TakeEdgesBefore = std::function<EdgeLog(const std::string& pin, TimePs)>;
 
 class MetricsFeed {

@@ -7,16 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "architectures/architecture.hpp"
 #include "common/warning.hpp"
 #include "host/core/gcode.hpp"
 
 namespace cnc::sim {
-
-// How an architecture's hardware switches the laser.
-enum class LaserSwitching {
-    ByMotionKind,  // on in every cutting move, off in rapids, whatever M3/M5/S say (seed 000 FPGA, seed 003 head)
-    FollowsJob,    // on when the job's M3/M4 and S say so, off in rapids (the spi-fpga frame's laser bit)
-};
 
 nlohmann::json program_json(const host::Program& program);
 std::string program_text(const host::Program& program);

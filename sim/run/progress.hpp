@@ -15,7 +15,7 @@ enum class ProgressStyle {
 
 class Progress {
 public:
-    // `label` names the run in every line ("atmega"), so that the lines of several runs can share a stream.
+    // `label` names the run in every line (its architecture), so that the lines of several runs can share a stream.
     Progress(std::ostream& out, ProgressStyle style, double expected_s, std::string label = "");
 
     // Between simulation slices: simulated seconds so far, wall seconds since the simulation started.

@@ -1,11 +1,14 @@
 #include "run/run.hpp"
 
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 
-#include "metrics/commanded_rates.hpp"
+#include "metrics/pulse/commanded_rates.hpp"
 #include "metrics/metrics.hpp"
-#include "run/architecture.hpp"
+#include "metrics/report/report.hpp"
+#include "architectures/catalog.hpp"
+#include "architectures/registry.hpp"
 #include "run/job.hpp"
 #include "run/program_report.hpp"
 
@@ -53,14 +56,23 @@ nlohmann::json warnings_json(const std::vector<Warning>& warnings, bool detail) 
     return out;
 }
 
+// The registry entry named by scenario.architecture runs it.
+template <typename... Entries>
+ArchRun run_architecture(const Scenario& s, const Job& job, EntryList<Entries...>) {
+    ArchRun run;
+    const bool ran = ((s.architecture == Entries::architecture().name() ? (run = Entries::run(s, job), true) : false) ||
+                      ...);
+    if (!ran) throw std::logic_error("no registry entry runs " + s.architecture);
+    return run;
+}
+
 }  // namespace
 
 RunOutcome run_scenario(const Scenario& s) {
     const Architecture& architecture = find_architecture(s.architecture, s.file + ": scenario.architecture");
-    const Job job =
-        architecture.runs_job ? load_job(s, architecture.laser_switching, !architecture.streams_job) : Job{};
+    const Job job = architecture.job_use().runs_job ? load_job(s, architecture) : Job{};
     RunOutcome out;
-    out.arch = architecture.run(s, job);
+    out.arch = run_architecture(s, job, Registry{});
     out.arch.warnings.insert(out.arch.warnings.end(), job.move_warnings.begin(), job.move_warnings.end());
     out.arch.warnings.insert(out.arch.warnings.begin(), job.warnings.begin(), job.warnings.end());
     out.metrics = out.arch.metrics ? std::move(*out.arch.metrics) : metrics::compute_metrics(out.arch.input);

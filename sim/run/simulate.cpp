@@ -45,7 +45,7 @@ SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& fin
                        const std::function<void(TimePs)>& after_slice) {
     Progress progress(std::cerr, budget.progress, budget.estimate.expected_s, budget.label);
     const auto start = std::chrono::steady_clock::now();
-    // A model asked every check_ps never starves (the atmega's timers run on): each slice runs to its end, as
+    // A model asked every check_ps never starves (an MCU's timers run on): each slice runs to its end, as
     // one bounded sc_start per check always did. Otherwise a slice stops at its last event, as one
     // sc_start(limit, SC_EXIT_ON_STARVATION) would, so that the run ends where the model went quiet.
     const sc_core::sc_starvation_policy policy =

@@ -30,7 +30,7 @@ struct SimulationEnd {
 // and the model runs exactly as under one sc_start. `finished` (may be empty) is asked every `check_ps` of
 // simulated time (the slices are then that long, from time 0); without it the slices grow or shrink to about
 // a tenth of a second of wall time each. `after_slice` (may be empty) is called after each slice with the simulated
-// time reached: where a run hands what it recorded to its streaming metrics (metrics/metrics_stream.hpp).
+// time reached: where a run hands what it recorded to its streaming metrics (metrics/streaming/metrics_stream.hpp).
 SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& finished = {}, TimePs check_ps = 0,
                        const std::function<void(TimePs)>& after_slice = {});
 

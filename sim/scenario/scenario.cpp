@@ -13,8 +13,8 @@
 #include "common/text_format.hpp"
 #include "common/units.hpp"
 #include "host/core/soft_limits.hpp"
-#include "metrics/vcd_timescale.hpp"
-#include "run/architecture.hpp"
+#include "metrics/vcd/vcd_timescale.hpp"
+#include "architectures/catalog.hpp"
 
 namespace cnc::sim {
 
@@ -57,7 +57,8 @@ void read_axis_limits(KeyReader& r, const std::string& axis, host::AxisLimits& l
                                          "axis velocity limit, mm/s, > 0 (LinuxCNC MAX_VELOCITY): every architecture holds its moves to it",
                                          "an axis that may not move cannot follow any move");
     lim.max_accel_mm_per_s2 = positive(r, p + "max_accel_mm_per_s2", lim.max_accel_mm_per_s2, 1e7,
-                                       "axis acceleration limit, mm/s^2, > 0 (LinuxCNC MAX_ACCELERATION): spi-fpga (fpga-uart and atmega have no ramps)",
+                                       "axis acceleration limit, mm/s^2, > 0 (LinuxCNC MAX_ACCELERATION): the trajectory planner's (a controller "
+                                       "without ramps steps at full rate from the first step)",
                                        "an axis that cannot accelerate never leaves rest");
     lim.max_jerk_mm_per_s3 = positive(r, p + "max_jerk_mm_per_s3", lim.max_jerk_mm_per_s3, 1e10,
                                       "axis jerk limit, mm/s^3, > 0 (planner.profile = jerk-limited only)",
@@ -107,31 +108,14 @@ void check_start(const KeyReader& r, geom::Vec2 start_mm, const host::MachineMod
     }
 }
 
-// The FPGA model refuses values its RTL registers cannot hold; name the scenario key that set them.
-void check_fpga(const KeyReader& r, const fpga::FpgaConfig& cfg) {
-    try {
-        fpga::validate(cfg);
-    } catch (const BadInput& e) {
-        const std::string what = e.what();
-        const std::pair<const char*, const char*> keys[] = {
-            {"clk_hz", "fpga.clock_hz"},          {"uart_full_bit_cycles", "fpga.uart_baud"},
-            {"uart_half_bit_cycles", "fpga.uart_baud"}, {"watchdog_cycles", "fpga.watchdog_ms"},
-            {"pulse_high_cycles", "fpga.pulse_high_cycles"}, {"dir_settle_cycles", "fpga.dir_settle_cycles"}};
-        for (const auto& [field, key] : keys) {
-            if (what.find(field) != std::string::npos) r.fail(key, what);
-        }
-        throw;
-    }
-}
-
 // Which pins the VCD holds, and when: a window of a long job keeps the file to the part of interest.
 void read_trace_window(KeyReader& r, Scenario& s) {
     s.trace_signals = r.get_string_list(
         "trace.signals",
         "pins and signals the VCD holds, by name (README \"VCD traces\": the pins of each architecture, and the "
         "real-valued carriage_x_mm, carriage_y_mm); an unknown name is refused with the allowed ones; []: all of "
-        "them except spi-fpga's sclk, mosi, miso and ss, which are driven bit by bit only when named here (or with "
-        "spi.trace_wires = true)");
+        "them except the SPI wires sclk, mosi, miso and ss, which are driven bit by bit only when named here (or "
+        "with spi.trace_wires = true)");
     constexpr double kMaxTraceS = 1e6;  // the largest scenario.max_sim_s
     const double from_s = r.get_float("trace.from_s", 0.0, 0.0, kMaxTraceS,
                                       "start of the VCD's window, s of simulated time: the file holds the levels at "
@@ -167,29 +151,6 @@ void reject_moved_keys(const KeyReader& r) {
 }
 }  // namespace
 
-void read_fpga_settings(KeyReader& r, fpga::FpgaConfig& cfg) {
-    cfg.clk_hz = static_cast<std::uint32_t>(
-        r.get_int("fpga.clock_hz", cfg.clk_hz, 1'000'000, 500'000'000, "FPGA clock, Hz (CLOCK_50)"));
-    const auto fpga_baud = r.get_int("fpga.uart_baud", 115'200, 300, 10'000'000,
-                                     "baud rate the FPGA UART was built for (bit = clock/baud cycles)");
-    cfg.uart_full_bit_cycles = static_cast<std::uint32_t>(cfg.clk_hz / fpga_baud);
-    cfg.uart_half_bit_cycles = cfg.uart_full_bit_cycles / 2;
-    cfg.watchdog_cycles = static_cast<std::uint32_t>(
-        r.get_float("fpga.watchdog_ms", 100.0, 0.001, 10000.0, "packet_decoder inter-byte watchdog, ms") * 1e-3 *
-        cfg.clk_hz);
-    cfg.pulse_high_cycles = static_cast<std::uint32_t>(
-        r.get_int("fpga.pulse_high_cycles", cfg.pulse_high_cycles, 1, 1'000'000, "STEP high time, clocks"));
-    cfg.dir_settle_cycles = static_cast<std::uint32_t>(
-        r.get_int("fpga.dir_settle_cycles", cfg.dir_settle_cycles, 1, 511, "DIR to first STEP wait, clocks"));
-    cfg.init_packet_wired = r.get_bool("fpga.init_packet_wired", cfg.init_packet_wired,
-                                       "init packet reaches step_gen (false: appendix top.v leaves it open)");
-    cfg.period_arithmetic = r.get_choice("fpga.period_arithmetic", "exact", {"exact", "wrap32"},
-                                         "subordinate period product: exact, or the appendix's 32-bit wrap") == "exact"
-                                ? fpga::PeriodArithmetic::Exact
-                                : fpga::PeriodArithmetic::Wrap32;
-    check_fpga(r, cfg);
-}
-
 namespace {
 
 // Reads every key (registering its documentation); `base` resolves relative paths.
@@ -198,7 +159,7 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     Scenario s;
     s.file = file;
     s.name = r.get_string("scenario.name", fs::path(file).stem().string(), "name shown in reports");
-    s.architecture = r.get_choice("scenario.architecture", "fpga-uart", architecture_names(),
+    s.architecture = r.get_choice("scenario.architecture", architecture_names().front(), architecture_names(),
                                   "controller architecture (docs/architectures.md)");
     const std::string job = r.get_string("scenario.job", "",
                                          "job file, relative to the scenario: G-code, or a seed 000 steps file");
@@ -232,56 +193,14 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.interpreter.rapid_feed_mm_per_min = r.get_float(
         "machine.rapid_feed_mm_per_min", s.interpreter.rapid_feed_mm_per_min, 1.0, 65535.0,
         "G0 speed, mm/min, of every architecture (seed 000 test log: 1200), held to the axis velocity limits: "
-        "the fpga-uart G0 packet feed, each axis's speed in an atmega G00 (the seed's dog-leg), the spi-fpga "
-        "planner's G0 path speed");
+        "the seed 000 G0 packet feed, each axis's speed in a seed 003 G00 (its dog-leg), the trajectory planner's "
+        "G0 path speed");
     check_start(r, s.interpreter.start_mm, s.machine);
 
     s.driver.strict = r.get_bool("driver.strict", s.driver.strict,
                                  "DRV8825 drops STEP pulses that break tWH/tWL (false: counts every rising edge)");
     read_mechanics_settings(r, s.mechanics);
 
-    s.link.requested_baud = static_cast<std::uint32_t>(
-        r.get_int("link.baud", s.link.requested_baud, 300, 921'600, "baud rate the host asks the CP2102 for"));
-    s.link.ideal_baud = r.get_bool("link.ideal_baud", s.link.ideal_baud,
-                                   "line at exactly the requested rate (false: the CP2102's 24 MHz divider rate)");
-    s.link.usb_latency_ps = s_to_ps(1e-3 * r.get_float("link.usb_latency_ms", 1.0, 0.0, 1000.0,
-                                                              "host driver latency for received bytes, ms"));
-    s.link.usb_frame_ps = s_to_ps(1e-6 * r.get_float("link.usb_frame_us", 1000.0, 1.0, 100000.0,
-                                                           "USB frame interval, us (full speed: 1000)"));
-
-    s.sender.settle_ps = s_to_ps(r.get_float("host.settle_s", 0.3, 0.0, 60.0,
-                                                   "wait after opening the port, s (send_steps.py: 0.3)"));
-    s.sender.init_gap_ps = s_to_ps(r.get_float("host.init_gap_s", 0.05, 0.0, 60.0,
-                                                     "wait after the init packet, s (send_steps.py: 0.05)"));
-    s.sender.ack_timeout_ps = s_to_ps(r.get_float("host.ack_timeout_s", 10.0, 0.001, 1e5,
-                                                        "ACK timeout per motion packet, s (send_steps.py: 10)"));
-    s.sender.packet_processing_ps = s_to_ps(1e-6 * r.get_float(
-        "host.packet_processing_us", 200.0, 0.0, 1e6, "host work between an ACK and the next write, us"));
-    s.sender.write_latency_ps = s_to_ps(1e-6 * r.get_float(
-        "host.write_latency_us", 100.0, 0.0, 1e6, "OS latency from write() to the USB request, us"));
-    s.sender.continue_on_timeout =
-        r.get_choice("host.on_timeout", "abort", {"abort", "continue"},
-                     "after an ACK timeout: abort (the script's prompt answered N) or continue") == "continue";
-    s.allow_feed_zero = r.get_bool("host.allow_feed_zero", false,
-                                   "send FeedRate 0 from a steps file as the appendix allows (step_gen then uses "
-                                   "62500 clocks per step on both axes); false: refused, as the text requires");
-    s.numerator_from_machine =
-        r.get_choice("host.numerator", "machine", {"machine", "seed-constant"},
-                     "init packet NUMERATOR: from the machine model, or send_steps.py's constant 18750000") ==
-        "machine";
-    s.cam.chord_tolerance_mm = r.get_float("host.chord_tolerance_mm", s.cam.chord_tolerance_mm, 1e-6, 10.0,
-                                           "max distance of an arc chord from the arc, mm");
-    s.cam.chord_ends = r.get_choice("host.chord_ends", "on-arc", {"on-arc", "round"},
-                                    "chord end points: the grid point nearest the arc, or each axis rounded "
-                                    "(seed 000 sec. 3.4.4)") == "on-arc"
-                           ? host::ChordEnds::OnArc
-                           : host::ChordEnds::Round;
-    s.cam.feed_rounding = r.get_choice("host.feed_rounding", "round", {"round", "truncate"},
-                                       "packet feed from the dominant-axis feed") == "round"
-                              ? host::FeedRounding::Round
-                              : host::FeedRounding::Truncate;
-    s.cam.correct_rapid_feed = r.get_bool("host.correct_rapid_feed", s.cam.correct_rapid_feed,
-                                          "G0 feed reduced to the dominant axis like G1");
     s.interpreter.operator_pause_s = r.get_float(
         "host.operator_pause_s", s.interpreter.operator_pause_s, 0.0, 1e6,
         "time an operator takes to resume after M0/M1/M60 (the job pauses that long), s");
@@ -290,7 +209,10 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                                   ? host::FeedUnit::MmPerMinute
                                   : host::FeedUnit::MmPerSecond;
 
-    for (const Architecture& a : architectures()) a.read_settings(r, s, base);
+    for (const Architecture* a : architectures()) {
+        std::shared_ptr<const ArchSettings> settings = a->read_settings(r, s, base);
+        if (a->name() == s.architecture) s.arch_settings = std::move(settings);
+    }
 
     s.vcd_path = r.get_string("trace.vcd", "", "VCD file to write (relative to the working directory); empty: none");
     s.vcd_timescale_fs = *metrics::parse_vcd_timescale_fs(r.get_choice(
@@ -336,7 +258,7 @@ Scenario load_scenario(const std::string& path, const std::vector<std::string>& 
     KeyReader reader(root, path, overridden);
     Scenario s = read(reader, path, fs::path(path).parent_path());
     reader.reject_unknown_keys();
-    if (s.job_path.empty() && find_architecture(s.architecture, path).runs_job) {
+    if (s.job_path.empty() && find_architecture(s.architecture, path).job_use().runs_job) {
         reader.fail("scenario.job", "missing: the job file to run is required");
     }
     return s;

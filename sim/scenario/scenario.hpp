@@ -1,26 +1,22 @@
-// A scenario: one job on one machine through one controller architecture, with every model parameter.
-// Loaded from TOML (DESIGN.md §5), overridden by --set, validated in one place (scenario.cpp).
+// A scenario: one job on one machine through one controller architecture, with every model parameter. Loaded from
+// TOML, overridden by --set, validated in one place: the keys every architecture shares here (scenario.cpp), each
+// architecture's own keys in its folder (architectures/<name>/), kept for the chosen one (Scenario::settings).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "architectures/architecture.hpp"
 #include "common/geometry.hpp"
 #include "common/units.hpp"
-#include "fpga/core/fpga_config.hpp"
-#include "host/core/cam.hpp"
 #include "host/core/gcode.hpp"
 #include "host/core/machine.hpp"
-#include "host/sender.hpp"
-#include "mechanics/drv8825.hpp"
+#include "mechanics/core/drv8825_config.hpp"
 #include "run/progress.hpp"
-#include "scenario/atmega_settings.hpp"
 #include "scenario/key_reader.hpp"
-#include "scenario/lathe_settings.hpp"
 #include "scenario/mechanics_settings.hpp"
-#include "scenario/spi_fpga_settings.hpp"
-#include "uart/cp2102.hpp"
 
 namespace cnc::sim {
 
@@ -29,7 +25,7 @@ enum class JobFormat { GCode, Steps };
 struct Scenario {
     std::string file;           // the scenario file as given
     std::string name;
-    std::string architecture;   // fpga-uart
+    std::string architecture;   // scenario.architecture (architectures/registry.hpp)
     std::string job_path;       // resolved against the scenario's folder
     std::string job_key;        // where scenario.job was set ("s.toml:3: scenario.job", "--set scenario.job")
     JobFormat job_format = JobFormat::GCode;
@@ -38,17 +34,10 @@ struct Scenario {
 
     host::MachineModel machine;
     host::InterpreterOptions interpreter;
-    host::CamOptions cam;
-    host::SenderConfig sender;
-    bool numerator_from_machine = true;
-    bool allow_feed_zero = false;
-    uart::Cp2102Config link;
-    fpga::FpgaConfig fpga;
     mech::Drv8825Config driver;
     MechanicsSettings mechanics;
-    AtmegaSettings atmega;
-    SpiFpgaSettings spi_fpga;
-    LatheSettings lathe;
+    // The chosen architecture's own keys, read by its Architecture::read_settings.
+    std::shared_ptr<const ArchSettings> arch_settings;
 
     std::string vcd_path;       // empty: no VCD
     std::int64_t vcd_timescale_fs = 100'000;  // trace.timescale
@@ -61,13 +50,16 @@ struct Scenario {
     // Set by the CLI for --plots, --plot-data and --samples, which read every edge and tool sample after the run:
     // the logs are then kept whole instead of being dropped as the metrics stream (docs/streaming.md).
     bool keep_run_input = false;
+
+    // The chosen architecture's settings as its own type (std::bad_cast for another architecture's).
+    template <typename Settings>
+    [[nodiscard]] const Settings& settings() const {
+        return dynamic_cast<const Settings&>(*arch_settings);
+    }
 };
 
 // Reads and validates; throws BadInput naming the file, line and key.
 Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides);
-
-// The fpga.* keys of the seed 000 FPGA (the fpga-uart architecture), validated against its registers.
-void read_fpga_settings(KeyReader& r, fpga::FpgaConfig& cfg);
 
 // Every scenario key with its type, default, range and meaning, in reading order.
 std::vector<KeyDoc> scenario_keys();

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "systems/atmega/chord_gaps.hpp"
+#include "architectures/atmega/chord_gaps.hpp"
 
 using cnc::RecordLog;
 using cnc::TimePs;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "host/pc_program.hpp"
-#include "systems/atmega/link_bytes.hpp"
+#include "architectures/atmega/link_bytes.hpp"
 #include "uart/cp2102.hpp"
 
 using cnc::TimePs;

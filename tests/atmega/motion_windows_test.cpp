@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "systems/atmega/motion_windows.hpp"
+#include "architectures/atmega/motion_windows.hpp"
 
 namespace s3 = cnc::host::seed003;
 using cnc::EdgeLog;

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "metrics/vcd_reader.hpp"
+#include "metrics/vcd/vcd_reader.hpp"
 #include "run/run.hpp"
 #include "scenario/scenario.hpp"
 

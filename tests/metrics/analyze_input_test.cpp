@@ -3,9 +3,10 @@
 #include <sstream>
 
 #include "common/bad_input.hpp"
-#include "metrics/analyze_input.hpp"
+#include "metrics/vcd/analyze_input.hpp"
 #include "metrics/metrics.hpp"
-#include "metrics/vcd_writer.hpp"
+#include "metrics/report/report.hpp"
+#include "metrics/vcd/vcd_writer.hpp"
 #include "metrics_test_util.hpp"
 
 namespace cnc::metrics {

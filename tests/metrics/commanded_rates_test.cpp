@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "metrics/commanded_rates.hpp"
+#include "metrics/pulse/commanded_rates.hpp"
 #include "support/bad_input_message.hpp"
 
 namespace cnc::metrics {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "metrics/driver_timing.hpp"
+#include "metrics/pulse/driver_timing.hpp"
 #include "metrics_test_util.hpp"
 
 namespace cnc::metrics {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "metrics/enabled_steps.hpp"
+#include "metrics/pulse/enabled_steps.hpp"
 
 namespace cnc::metrics {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "metrics/laser_exposure.hpp"
+#include "metrics/laser/laser_exposure.hpp"
 
 using namespace cnc;
 

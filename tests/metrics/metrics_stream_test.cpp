@@ -5,7 +5,8 @@
 #include <vector>
 
 #include "metrics/metrics.hpp"
-#include "metrics/metrics_stream.hpp"
+#include "metrics/report/report.hpp"
+#include "metrics/streaming/metrics_stream.hpp"
 #include "metrics_test_util.hpp"
 
 namespace cnc::metrics {

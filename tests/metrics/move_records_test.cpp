@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "metrics/move_records.hpp"
+#include "metrics/timing/move_records.hpp"
 
 namespace cnc::metrics {
 namespace {

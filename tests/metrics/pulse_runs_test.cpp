@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "metrics/metrics.hpp"
-#include "metrics/pulse_runs.hpp"
+#include "metrics/pulse/pulse_runs.hpp"
 #include "metrics_test_util.hpp"
 
 namespace cnc::metrics {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "metrics/metrics.hpp"
+#include "metrics/report/report.hpp"
 #include "metrics_test_util.hpp"
 
 namespace cnc::metrics {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "metrics/metrics.hpp"
+#include "metrics/report/report.hpp"
 
 namespace cnc::metrics {
 namespace {

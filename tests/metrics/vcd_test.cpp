@@ -3,9 +3,9 @@
 #include <sstream>
 
 #include "common/bad_input.hpp"
-#include "metrics/vcd_reader.hpp"
-#include "metrics/vcd_timescale.hpp"
-#include "metrics/vcd_writer.hpp"
+#include "metrics/vcd/vcd_reader.hpp"
+#include "metrics/vcd/vcd_timescale.hpp"
+#include "metrics/vcd/vcd_writer.hpp"
 
 namespace cnc::metrics {
 namespace {

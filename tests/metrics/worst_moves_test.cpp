@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "metrics/metrics.hpp"
-#include "metrics/worst_moves.hpp"
+#include "metrics/timing/worst_moves.hpp"
 
 namespace cnc::metrics {
 namespace {

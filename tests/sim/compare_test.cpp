@@ -78,7 +78,7 @@ TEST(CompareTable, BestValueOfEachRowIsMarked) {
     };
     const std::vector<cnc::sim::CompareColumn> cols = {
         col("fpga-uart", 8.0, 0.02, 0.0), col("atmega", 7.0, -0.01, 0.0), col("spi-fpga", 7.0, 24.0, 0.0)};
-    const std::string md = cnc::sim::compare_table(cols, cnc::sim::TableFormat::Markdown);
+    const std::string md = cnc::sim::compare_table(cnc::sim::Comparison{cols, std::nullopt}, cnc::sim::TableFormat::Markdown);
     EXPECT_NE(md.find("| job time [s]                   |    8.0000 |  **7.0000** | **7.0000** |"),
               std::string::npos)
         << md;
@@ -88,11 +88,11 @@ TEST(CompareTable, BestValueOfEachRowIsMarked) {
     EXPECT_NE(md.find("| TIE max [ns]                   |     0.000 |       0.000 |      0.000 |"),
               std::string::npos)
         << md;
-    const std::string csv = cnc::sim::compare_table(cols, cnc::sim::TableFormat::Csv);
+    const std::string csv = cnc::sim::compare_table(cnc::sim::Comparison{cols, std::nullopt}, cnc::sim::TableFormat::Csv);
     EXPECT_NE(csv.find("\"job time [s]\",\"8.0000\",\"7.0000\",\"7.0000\",\"atmega spi-fpga\""),
               std::string::npos)
         << csv;
-    const nlohmann::json j = cnc::sim::compare_json(cols);
+    const nlohmann::json j = cnc::sim::compare_json(cnc::sim::Comparison{cols, std::nullopt});
     EXPECT_EQ(j.at(1).at("best"), nlohmann::json({"metrics/job/job_time_s", "metrics/pulse/rate_error_worst_pct"}));
 }
 
@@ -132,11 +132,11 @@ TEST(CompareSquare, TheMachineRapidSpeedHoldsEveryArchitecture) {
 TEST(CompareTable, MarkdownHasAColumnPerArchitectureAndDashesForMissingValues) {
     cnc::sim::CompareColumn a{"fpga-uart", 0, {{"metrics", {{"job", {{"job_time_s", 1.5}}}}}}};
     cnc::sim::CompareColumn b{"atmega", 2, nullptr};
-    const std::string md = cnc::sim::compare_table({a, b}, cnc::sim::TableFormat::Markdown);
+    const std::string md = cnc::sim::compare_table(cnc::sim::Comparison{{a, b}, std::nullopt}, cnc::sim::TableFormat::Markdown);
     EXPECT_NE(md.find("| metric                         | fpga-uart |    atmega |"), std::string::npos) << md;
     EXPECT_NE(md.find("| status                         |        ok | bad input |"), std::string::npos) << md;
     EXPECT_NE(md.find("| job time [s]                   |    1.5000 |         - |"), std::string::npos) << md;
-    EXPECT_NE(cnc::sim::compare_table({a}, cnc::sim::TableFormat::Csv).find("\"job time [s]\",\"1.5000\""),
+    EXPECT_NE(cnc::sim::compare_table(cnc::sim::Comparison{{a}, std::nullopt}, cnc::sim::TableFormat::Csv).find("\"job time [s]\",\"1.5000\""),
               std::string::npos);
 }
 
@@ -147,10 +147,10 @@ TEST(CompareTable, StatesTheMachineOfEveryRunEvenAFailedOne) {
     const nlohmann::json report = {{"scenario", {{"machine", machine}}},
                                    {"metrics", {{"job", {{"job_time_s", 1.5}}}}}};
     cnc::sim::CompareColumn failed{"fpga-uart", 1, report};
-    const std::string md = cnc::sim::compare_table({failed}, cnc::sim::TableFormat::Markdown);
+    const std::string md = cnc::sim::compare_table(cnc::sim::Comparison{{failed}, std::nullopt}, cnc::sim::TableFormat::Markdown);
     EXPECT_NE(md.find("| machine: X steps/mm            |  160.0000 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| machine: X velocity max [mm/s] |     100.0 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| machine: rapid speed [mm/min]  |    1200.0 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| job time [s]                   |         - |"), std::string::npos) << md;
-    EXPECT_EQ(cnc::sim::compare_json({failed}).at(0).at("machine"), machine);
+    EXPECT_EQ(cnc::sim::compare_json(cnc::sim::Comparison{{failed}, std::nullopt}).at(0).at("machine"), machine);
 }

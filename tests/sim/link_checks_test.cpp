@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "support/bad_input_message.hpp"
-#include "systems/link_checks.hpp"
+#include "architectures/serial_host/link_checks.hpp"
 
 using namespace cnc::sim;
 using cnc::test::bad_input_message;

@@ -13,6 +13,27 @@
 namespace cnc::sim {
 namespace {
 
+// An architecture that takes the job as the seed 000 FPGA does (the laser by motion kind), whole or streamed.
+class JobReader final : public Architecture {
+public:
+    explicit JobReader(bool streams) : m_streams(streams) {}
+    [[nodiscard]] std::string name() const override { return "job-reader"; }
+    [[nodiscard]] JobUse job_use() const override { return {true, false, LaserSwitching::ByMotionKind, m_streams}; }
+    [[nodiscard]] std::shared_ptr<const ArchSettings> read_settings(KeyReader&, const Scenario&,
+                                                                    const std::filesystem::path&) const override {
+        return nullptr;
+    }
+    [[nodiscard]] std::string plot_colour() const override { return "#000000"; }
+
+private:
+    bool m_streams;
+};
+
+const Architecture& architecture(bool keep_moves) {
+    static const JobReader whole(false), streamed(true);
+    return keep_moves ? static_cast<const Architecture&>(whole) : streamed;
+}
+
 // A scenario on the default machine with 100 mm of X travel, and its job, in the test's own folder.
 Scenario scenario_with_job(const std::string& name, const std::string& gcode) {
     const std::string job = test::test_path(name + ".nc");
@@ -24,7 +45,7 @@ Scenario scenario_with_job(const std::string& name, const std::string& gcode) {
 
 std::string load_error(const Scenario& s, bool keep_moves) {
     try {
-        (void)load_job(s, LaserSwitching::ByMotionKind, keep_moves);
+        (void)load_job(s, architecture(keep_moves));
     } catch (const BadInput& e) {
         return e.what();
     }
@@ -50,7 +71,7 @@ TEST(LoadJob, TheFilesProblemsThenTheSoftLimitsThenTheMachineLimitsWhateverTheir
 TEST(LoadJob, AStreamingArchitectureKeepsTheSummaryAndTheMoveWarnings) {
     // Two XY moves, the second cutting under M5 (line 3): the seed 000 FPGA burns it anyway.
     const Scenario s = scenario_with_job("summary", "G0 X1\nM5\nG1 X2 F600\nM30\n");
-    const Job streamed = load_job(s, LaserSwitching::ByMotionKind, false);
+    const Job streamed = load_job(s, architecture(false));
     ASSERT_TRUE(streamed.program.has_value());
     EXPECT_TRUE(streamed.program->moves.empty());
     EXPECT_EQ(streamed.program->move_count, 2u);
@@ -58,7 +79,7 @@ TEST(LoadJob, AStreamingArchitectureKeepsTheSummaryAndTheMoveWarnings) {
     ASSERT_EQ(streamed.move_warnings.size(), 1u);
     EXPECT_EQ(streamed.move_warnings[0].kind, "laser_on_unasked");
     EXPECT_NE(streamed.move_warnings[0].where.find(":3"), std::string::npos) << streamed.move_warnings[0].where;
-    const Job whole = load_job(s, LaserSwitching::ByMotionKind, true);
+    const Job whole = load_job(s, architecture(true));
     EXPECT_EQ(whole.program->moves.size(), 2u);
     EXPECT_EQ(whole.move_warnings.size(), 1u);
 }

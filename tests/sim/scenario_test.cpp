@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/bad_input.hpp"
+#include "architectures/fpga_uart/fpga_uart_settings.hpp"
 #include "scenario/scenario.hpp"
 #include "support/test_path.hpp"
 
@@ -35,11 +36,11 @@ TEST(Scenario, DefaultsAreTheSeed000ReferenceMachine) {
     EXPECT_EQ(s.architecture, "fpga-uart");
     EXPECT_DOUBLE_EQ(s.machine.x.steps_per_mm(), 160.0);
     EXPECT_DOUBLE_EQ(s.machine.y.steps_per_mm(), 160.0);
-    EXPECT_EQ(s.link.requested_baud, 115'200U);
-    EXPECT_EQ(s.fpga.uart_full_bit_cycles, 434U);
-    EXPECT_EQ(s.fpga.uart_half_bit_cycles, 217U);
-    EXPECT_EQ(s.fpga.watchdog_cycles, 5'000'000U);
-    EXPECT_EQ(s.sender.ack_timeout_ps, 10 * cnc::kPsPerSec);
+    EXPECT_EQ(s.settings<cnc::sim::FpgaUartSettings>().serial.link.requested_baud, 115'200U);
+    EXPECT_EQ(s.settings<cnc::sim::FpgaUartSettings>().fpga.uart_full_bit_cycles, 434U);
+    EXPECT_EQ(s.settings<cnc::sim::FpgaUartSettings>().fpga.uart_half_bit_cycles, 217U);
+    EXPECT_EQ(s.settings<cnc::sim::FpgaUartSettings>().fpga.watchdog_cycles, 5'000'000U);
+    EXPECT_EQ(s.settings<cnc::sim::FpgaUartSettings>().serial.sender.ack_timeout_ps, 10 * cnc::kPsPerSec);
     EXPECT_EQ(s.job_format, cnc::sim::JobFormat::GCode);
     EXPECT_EQ(s.job_path, cnc::test::test_path("square.nc"));  // relative to the scenario's folder
 }
@@ -48,9 +49,9 @@ TEST(Scenario, SetOverridesTypedValuesAndBareStrings) {
     const auto s = cnc::sim::load_scenario(
         write_scenario("set", kJob),
         {"link.baud=57600", "machine.x.microsteps=16", "host.on_timeout=continue", "scenario.job=other.steps"});
-    EXPECT_EQ(s.link.requested_baud, 57'600U);
+    EXPECT_EQ(s.settings<cnc::sim::FpgaUartSettings>().serial.link.requested_baud, 57'600U);
     EXPECT_DOUBLE_EQ(s.machine.x.steps_per_mm(), 80.0);
-    EXPECT_TRUE(s.sender.continue_on_timeout);
+    EXPECT_TRUE(s.settings<cnc::sim::FpgaUartSettings>().serial.sender.continue_on_timeout);
     EXPECT_EQ(s.job_format, cnc::sim::JobFormat::Steps);
 }
 

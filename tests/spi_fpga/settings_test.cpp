@@ -1,10 +1,11 @@
-// The spi-fpga scenario keys (sim/scenario/spi_fpga_settings.cpp): defaults, units, and the refusals that name
+// The spi-fpga scenario keys (sim/architectures/spi_fpga/spi_fpga_settings.cpp): defaults, units, and the refusals that name
 // the key (issue 4 check 6 at the loader level; the CLI's exit code 2 is checked by the bad_input ctests).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <fstream>
 
+#include "architectures/spi_fpga/spi_fpga_settings.hpp"
 #include "common/bad_input.hpp"
 #include "scenario/scenario.hpp"
 #include "support/test_path.hpp"
@@ -35,7 +36,7 @@ std::string load_error(const std::string& text, const std::vector<std::string>& 
 
 TEST(SpiFpgaSettings, Defaults) {
     const auto s = cnc::sim::load_scenario(write_scenario("defaults", kJob), {});
-    const auto& c = s.spi_fpga;
+    const auto& c = s.settings<cnc::sim::SpiFpgaSettings>();
     EXPECT_EQ(c.servo.period_ps, 1'000 * kPsPerUs);
     EXPECT_EQ(c.servo.latency.max_ps, 50 * kPsPerUs);
     EXPECT_EQ(c.servo.latency.distribution, cnc::host::servo::LatencyDistribution::Exponential);
@@ -63,12 +64,12 @@ TEST(SpiFpgaSettings, TheIssuesCommandLineKeys) {
                                            {"host.servo_period_us=500", "host.latency_max_us=80",
                                             "planner.mode=\"exact-stop\"", "fpga_spi.rate_apply=\"at-next-pulse\"",
                                             "machine.y.max_velocity_mm_per_s=50", "spi.sclk_hz=2500000"});
-    EXPECT_EQ(s.spi_fpga.servo.period_ps, 500 * kPsPerUs);
-    EXPECT_EQ(s.spi_fpga.servo.latency.max_ps, 80 * kPsPerUs);
-    EXPECT_EQ(s.spi_fpga.planner.mode, cnc::host::planner::BlendMode::ExactStop);
-    EXPECT_EQ(s.spi_fpga.fpga.rate_apply, cnc::fpga::RateApply::AtNextPulse);
-    EXPECT_DOUBLE_EQ(s.spi_fpga.planner.y.max_velocity_mm_per_s, 50.0);
-    EXPECT_EQ(s.spi_fpga.link.sclk_hz, 2'500'000U);
+    EXPECT_EQ(s.settings<cnc::sim::SpiFpgaSettings>().servo.period_ps, 500 * kPsPerUs);
+    EXPECT_EQ(s.settings<cnc::sim::SpiFpgaSettings>().servo.latency.max_ps, 80 * kPsPerUs);
+    EXPECT_EQ(s.settings<cnc::sim::SpiFpgaSettings>().planner.mode, cnc::host::planner::BlendMode::ExactStop);
+    EXPECT_EQ(s.settings<cnc::sim::SpiFpgaSettings>().fpga.rate_apply, cnc::fpga::RateApply::AtNextPulse);
+    EXPECT_DOUBLE_EQ(s.settings<cnc::sim::SpiFpgaSettings>().planner.y.max_velocity_mm_per_s, 50.0);
+    EXPECT_EQ(s.settings<cnc::sim::SpiFpgaSettings>().link.sclk_hz, 2'500'000U);
 }
 
 TEST(SpiFpgaSettings, EveryKeyIsDocumentedAndNoneClashesWithFpgaUart) {

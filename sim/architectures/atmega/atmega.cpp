@@ -1,0 +1,32 @@
+#include "architectures/atmega/atmega.hpp"
+
+#include "architectures/atmega/atmega_settings.hpp"
+
+namespace cnc::sim::atmega {
+
+namespace {
+
+class Atmega final : public Architecture {
+public:
+    [[nodiscard]] std::string name() const override { return "atmega"; }
+    // The head's pin follows the motion code (seed 003 §4.3); the PC program plans the job whole before it sends it.
+    [[nodiscard]] JobUse job_use() const override { return {true, false, LaserSwitching::ByMotionKind, false}; }
+
+    [[nodiscard]] std::shared_ptr<const ArchSettings> read_settings(
+        KeyReader& r, const Scenario&, const std::filesystem::path& base) const override {
+        auto s = std::make_shared<AtmegaSettings>();
+        read_atmega_settings(r, *s, base);
+        return s;
+    }
+
+    [[nodiscard]] std::string plot_colour() const override { return "#d55e00"; }
+};
+
+}  // namespace
+
+const Architecture& Entry::architecture() {
+    static const Atmega a;
+    return a;
+}
+
+}  // namespace cnc::sim::atmega

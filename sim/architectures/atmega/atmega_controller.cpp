@@ -1,0 +1,311 @@
+#include "architectures/atmega/atmega.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "architectures/atmega/atmega_pins.hpp"
+#include "architectures/atmega/atmega_report.hpp"
+#include "architectures/atmega/atmega_settings.hpp"
+#include "architectures/atmega/chord_gaps.hpp"
+#include "architectures/atmega/firmware_usart.hpp"
+#include "architectures/atmega/link_bytes.hpp"
+#include "architectures/serial_host/link_checks.hpp"
+#include "avr/avr_core.hpp"
+#include "common/bad_input.hpp"
+#include "common/text_format.hpp"
+#include "host/core/seed003/firmware_busy.hpp"
+#include "host/pc_program.hpp"
+#include "run/controller.hpp"
+#include "run/machine_run.hpp"
+#include "run/moves.hpp"
+#include "uart/core/line_receiver.hpp"
+#include "uart/cp2102.hpp"
+
+namespace cnc::sim::atmega {
+
+namespace {
+
+namespace s3 = host::seed003;
+
+// The chip's timers run on after M30 (cli; sleep): the run ends when the firmware has stopped, checked this often.
+constexpr TimePs kStopCheckPs = 10 * kPsPerMs;
+
+// The link's wires (the machine's pins are the run's: run/machine.hpp); the VCD and the analyze scripts rely on the
+// names (docs/architectures.md "Pins").
+struct Wires {
+    sc_core::sc_signal<bool> uart_rx{"uart_rx", true};  // CP2102 TXD -> PD0 RXD; idles high
+    sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // PD1 TXD -> CP2102 RXD
+};
+
+std::string firmware_path(const AtmegaSettings& a) {
+    if (!a.firmware.empty()) return a.firmware;
+    return a.g01_timer2_prescaler == 256 ? CNC_SEED003_T2CS110_ELF : CNC_SEED003_ELF;
+}
+
+avr::AvrCoreConfig avr_config(const Scenario& s, const AtmegaSettings& a) {
+    avr::AvrCoreConfig cfg;
+    cfg.firmware_elf = firmware_path(a);
+    cfg.pins = avr::parse_pin_map(a.pins, s.file + ": avr.pins");
+    cfg.where = s.file + ": avr.firmware";
+    cfg.quantum_cycles = a.quantum_cycles;
+    return cfg;
+}
+
+uart::Cp2102Config link_config(const AtmegaSettings& a) {
+    uart::Cp2102Config link = a.serial.link;
+    if (!a.link_baud_set) link.requested_baud = s3::kSeedBaud;  // seed 003 §3.4: CBR_57600
+    return link;
+}
+
+// The metrics' move of a motion that ran, its window from the PORTB pins. A G00 runs each axis at v_max on its
+// own (the seed's dog-leg), so its commanded per-axis rates are v_max, not the path feed split.
+metrics::MoveSpec executed_move(const Scenario& s, metrics::MoveSpec m, const MotionWindow& window) {
+    m.t_begin_ps = window.t_begin_ps;
+    m.t_end_ps = window.t_end_ps;
+    if (m.rapid) {
+        const double v_mm_per_s = m.feed_mm_per_min / 60.0;
+        m.rate_steps_per_s = {m.steps[0] != 0 ? v_mm_per_s * s.machine.x.steps_per_mm() : 0.0,
+                              m.steps[1] != 0 ? v_mm_per_s * s.machine.y.steps_per_mm() : 0.0};
+    }
+    return m;
+}
+
+// The programmed move of each transfer; M30 belongs to none (the waits after the last move come before it).
+std::vector<std::size_t> transfer_moves(const s3::Plan& plan, const std::vector<s3::Transfer>& transfers,
+                                        std::size_t n_moves) {
+    std::vector<std::size_t> out;
+    for (const s3::Transfer& t : transfers) {
+        const std::vector<s3::Motion>& motions = plan.commands[t.command].motions;
+        out.push_back(motions.empty() ? n_moves : static_cast<std::size_t>(motions.front().move));
+    }
+    return out;
+}
+
+// This architecture's side of the job estimate. An axis steps at most at OCR = 0, f / 2N (48.8 mm/s at 160 steps/mm):
+// a faster feed runs at that rate. (The truncated OCR otherwise only makes moves faster: OCR + 1 <= f / (2 N
+// v/s).) CAD2G settles, then writes every byte after the confirm of the one before: per byte the write latency,
+// a USB frame out, the byte and its confirm on the line, a frame in and the driver latency; per transfer the
+// PC's work. The chords of an arc overlap the previous chord's motion, so this counts them twice: an upper bound.
+ArchPace pace(const Scenario& s, const AtmegaSettings& a, const uart::Cp2102Config& link,
+              const std::vector<s3::Transfer>& transfers) {
+    ArchPace p;
+    // The PC program also holds every speed to the machine's velocity limits.
+    p.max_speed_x_mm_per_s = std::min(s3::speed_mm_per_s(0, s.machine.x.mm_per_step(), a.pc.timer),
+                                      s.machine.x.limits.max_velocity_mm_per_s);
+    p.max_speed_y_mm_per_s = std::min(s3::speed_mm_per_s(0, s.machine.y.mm_per_step(), a.pc.timer),
+                                      s.machine.y.limits.max_velocity_mm_per_s);
+    p.startup_s = ps_to_s(a.serial.sender.settle_ps);
+    const double byte_s = ps_to_s(host::byte_round_trip_ps(a.serial.sender, link));
+    for (const s3::Transfer& t : transfers) {
+        p.link_s += ps_to_s(a.serial.sender.packet_processing_ps) + static_cast<double>(t.bytes.size()) * byte_s;
+    }
+    return p;
+}
+
+// The firmware's USART against the CP2102's rate, before anything is simulated (serial_host/link_checks.hpp).
+void check_firmware_rate(const Scenario& s, const AtmegaSettings& a, const uart::Cp2102Config& link,
+                         const avr::AvrCoreConfig& avr_cfg) {
+    const std::optional<FirmwareUsart> usart = probe_firmware_usart(avr_cfg);
+    if (!usart) return;
+    const std::string firmware =
+        a.firmware.empty() ? "the seed 003 firmware" : "the firmware " + avr_cfg.firmware_elf;
+    check_line_rates(s.file + ": link.baud, avr.firmware", cp2102_end(link),
+                     {usart->baud, firmware + "'s USART0 at " + usart->text(avr_cfg.f_cpu_hz)});
+}
+
+host::ConfirmTimeouts confirm_timeouts(const AtmegaSettings& a, const uart::Cp2102Config& link, const s3::Plan& plan,
+                                       const std::vector<s3::Transfer>& transfers) {
+    host::ConfirmTimeouts t;
+    t.round_trip_ps = host::byte_round_trip_ps(a.serial.sender, link);
+    for (const double busy_s : s3::motion_before_next_confirm_s(plan, transfers, a.pc.timer)) {
+        t.motion_after_ps.push_back(s_to_ps(busy_s));
+    }
+    return t;
+}
+
+// Why the link does not work, once it is clear: frames garbled at either end, or the PC program's protocol check
+// (which names the firmware it checked).
+std::optional<std::string> link_failure(const avr::AvrCore& mcu, const uart::Cp2102& cp2102,
+                                        const host::PcProgram& pc) {
+    if (auto framing = framing_failure(mcu.stats().usart.rx_framing_errors, "MCU", cp2102.stats().framing_errors)) {
+        return framing;
+    }
+    if (pc.failure()) return pc.failure()->reason + " (avr.firmware " + mcu.config().firmware_elf + ")";
+    return std::nullopt;
+}
+
+// The seed 003 system between the job and the machine's pins: the PC program (CAD2G) through the CP2102, the
+// ATmega328P running its firmware, which drives STEP, DIR, EN and the head.
+class AtmegaController final : public Controller {
+public:
+    // `plan`, `avr_cfg`, `link`: checked_plan().
+    AtmegaController(const Scenario& s, const Job& job, MachinePins& pins, s3::Plan plan, avr::AvrCoreConfig avr_cfg,
+                     uart::Cp2102Config link)
+        : m_s(s),
+          m_a(s.settings<AtmegaSettings>()),
+          m_job(job),
+          m_plan(std::move(plan)),
+          m_avr_cfg(std::move(avr_cfg)),
+          m_link(link),
+          m_transfers(s3::transfers(m_plan)),
+          m_cp2102("cp2102", m_link),
+          m_pc("host", m_a.serial.sender, m_cp2102, m_transfers, confirm_timeouts(m_a, m_link, m_plan, m_transfers)),
+          m_mcu("atmega328p", m_avr_cfg),
+          m_commanded(commanded_moves(&*job.program, s3::motion_segments(m_plan, s.machine), s.machine,
+                                      s.interpreter.start_mm)),
+          m_chord_gaps(m_pc.transfers()) {
+        m_cp2102.txd(m_wires.uart_rx);
+        m_cp2102.rxd(m_wires.uart_tx);
+        m_pc.set_waits(
+            host::waits_per_unit(*job.program, transfer_moves(m_plan, m_transfers, job.program->moves.size())));
+        m_mcu.step_x(pins.step_x);
+        m_mcu.dir_x(pins.dir_x);
+        m_mcu.en_x(pins.n_enbl_x);
+        m_mcu.step_y(pins.step_y);
+        m_mcu.dir_y(pins.dir_y);
+        m_mcu.en_y(pins.n_enbl_y);
+        m_mcu.head(pins.laser);  // PB1, the HEADER bit of the start byte
+        m_mcu.txd(m_wires.uart_tx);
+        m_mcu.rxd(m_wires.uart_rx);
+    }
+
+    // The AVR times every pin it drives; the CP2102 (uart_rx) starts its frames when USB delivers the bytes.
+    [[nodiscard]] MachinePinClocks pin_clocks() const override { return {m_avr_cfg.f_cpu_hz, m_avr_cfg.f_cpu_hz}; }
+    [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
+        return {{&m_wires.uart_rx, std::nullopt}, {&m_wires.uart_tx, m_avr_cfg.f_cpu_hz}};
+    }
+    // Seed 003 §2.2: DIR 0 = CW = +X / +Y.
+    [[nodiscard]] bool dir_high_is_positive() const override { return false; }
+    // The firmware switches each driver off once its axis has counted its steps (seed 003 §4.2-4.3).
+    [[nodiscard]] bool drives_enable() const override { return true; }
+    // The pins are read slice by slice as the metrics stream; with the whole logs kept, once, at the end. The link's
+    // lines only then: only the tests read them.
+    void record(EdgeRecorder& rec, bool whole_logs) override {
+        m_whole_logs = whole_logs;
+        m_pins.emplace(rec, m_plan, whole_logs);
+        if (!whole_logs) return;
+        for (const sc_core::sc_signal<bool>* sig : {&m_wires.uart_rx, &m_wires.uart_tx}) {
+            rec.watch(*sig, sig->basename());
+        }
+    }
+
+    [[nodiscard]] JobEstimate estimate() const override {
+        return estimate_job(*m_job.program, pace(m_s, m_a, m_link, m_transfers));
+    }
+    [[nodiscard]] TimePs stop_check_ps() const override { return kStopCheckPs; }
+    [[nodiscard]] bool stopped() override { return m_mcu.stopped() || link_failure(m_mcu, m_cp2102, m_pc).has_value(); }
+    // Every fold comes right after the pins were read up to its instant: the edges before it are all there.
+    void feed_started(MetricsFeed& feed) override {
+        feed.take_edges_with([this](const std::string& pin, TimePs t_ps) { return m_pins->hand_over(pin, t_ps); });
+    }
+    // The late chords are folded as the bytes and the windows come, so that neither is kept for the whole run.
+    void slice_ended(TimePs now_ps, MetricsFeed* feed) override {
+        read_link();
+        if (feed == nullptr) return;
+        m_pins->read_before(now_ps);
+        m_chord_gaps.add_windows(m_pins->windows(), false);
+        hand_ended_moves(*feed);
+        if (!m_s.detail) m_pins->drop_windows_before(std::min(m_handed, m_chord_gaps.next_window()));  // --detail
+        feed->fold(now_ps);
+    }
+
+    void simulation_ended(TimePs stop_ps) override {
+        m_stop_ps = stop_ps;
+        m_pins->read_before(std::numeric_limits<TimePs>::max());
+        m_pins->finish(stop_ps);
+        read_link();
+        m_chord_gaps.add_windows(m_pins->windows(), true);
+    }
+    [[nodiscard]] TimePs job_end_ps(TimePs stop_ps) const override {
+        return m_mcu.chip().stop_cycle() ? m_mcu.cycle_ps(*m_mcu.chip().stop_cycle()) : stop_ps;
+    }
+    void finish_feed(MetricsFeed& feed) override { hand_ended_moves(feed); }
+    void finish_input(metrics::RunInput& in, bool streamed) override {
+        if (streamed) return;
+        for (std::size_t i = 0; i < m_pins->windows().size(); ++i) {
+            in.moves.push_back(executed_move(m_s, m_commanded[i], m_pins->windows()[i]));
+        }
+    }
+    // The STEP pulses the drivers act on (nENBL low), and the DIR and laser edges.
+    [[nodiscard]] EdgeLog take_edges(EdgeRecorder&, const std::string& pin) override { return m_pins->hand_over(pin); }
+    void take_lines(EdgeRecorder& rec, std::map<std::string, EdgeLog>& lines) override {
+        if (!m_whole_logs) return;
+        for (const char* pin : {"uart_rx", "uart_tx"}) lines[pin] = rec.take(pin);
+        for (const char* pin : {"n_enbl_x", "n_enbl_y"}) lines[pin] = m_pins->take_raw(pin);
+        lines["step_x_pin"] = m_pins->take_raw("step_x");  // the raw pins: the timers toggle them while EN is high too
+        lines["step_y_pin"] = m_pins->take_raw("step_y");
+    }
+    void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override;
+
+private:
+    void read_link() {
+        read_link_bytes(m_pc, m_cp2102, uart::decision_offset_ps(m_mcu.chip().rx_clock(), m_mcu.chip().rx_format()),
+                        [&](std::size_t transfer, TimePs t_ps) { m_chord_gaps.add_byte(transfer, t_ps); });
+    }
+    void hand_ended_moves(MetricsFeed& feed) {
+        for (; m_handed < m_pins->windows().size(); ++m_handed) {
+            feed.add_piece(executed_move(m_s, m_commanded[m_handed], m_pins->windows()[m_handed]));
+        }
+    }
+
+    const Scenario& m_s;
+    const AtmegaSettings& m_a;
+    const Job& m_job;
+    const s3::Plan m_plan;
+    const avr::AvrCoreConfig m_avr_cfg;
+    const uart::Cp2102Config m_link;
+    const std::vector<s3::Transfer> m_transfers;
+    Wires m_wires;
+    uart::Cp2102 m_cp2102;
+    host::PcProgram m_pc;
+    avr::AvrCore m_mcu;
+    const std::vector<metrics::MoveSpec> m_commanded;
+    std::optional<AtmegaPins> m_pins;  // once the recorder watches the pins
+    ChordGapFold m_chord_gaps;
+    std::size_t m_handed = 0;  // motion windows handed to the metrics
+    TimePs m_stop_ps = 0;
+    bool m_whole_logs = false;
+};
+
+void AtmegaController::report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) {
+    run.warnings = m_plan.warnings;
+    const AtmegaFacts facts{m_plan,         m_s.machine,
+                            m_pc,           m_cp2102,
+                            m_mcu,          m_pins->windows(),
+                            m_chord_gaps.gaps(), m_avr_cfg.firmware_elf,
+                            m_mcu.chip().rx_clock().baud()};
+    for (Warning& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
+    run.details = details_json(facts, m_s.detail);
+    run.details_text = details_text(facts);
+
+    if (const std::optional<std::string> why = link_failure(m_mcu, m_cp2102, m_pc)) {
+        run.ok = false;
+        run.failure = *why + format(" (run stopped at %.3f s of simulated time)", ps_to_s(m_stop_ps));
+    } else if (!m_pc.finished()) {
+        run.ok = false;
+        run.failure = m_mcu.stopped() ? "the firmware stopped before the PC program had sent the job"
+                                      : "the job did not finish: " + time_limit_text(budget, end);
+    } else if (!m_mcu.stopped()) {
+        run.ok = false;
+        run.failure = "the firmware did not reach M30: " + time_limit_text(budget, end);
+    }
+}
+
+}  // namespace
+
+ArchRun Entry::run(const Scenario& s, const Job& job) {
+    return run_on_machine(s, job, [](const Scenario& sc, const Job& j, MachinePins& pins) {
+        const AtmegaSettings& a = sc.settings<AtmegaSettings>();
+        s3::Plan plan = s3::plan_program(*j.program, sc.machine, a.pc);
+        avr::AvrCoreConfig avr_cfg = avr_config(sc, a);
+        const uart::Cp2102Config link = link_config(a);
+        check_firmware_rate(sc, a, link, avr_cfg);
+        return std::make_unique<AtmegaController>(sc, j, pins, std::move(plan), std::move(avr_cfg), link);
+    });
+}
+
+}  // namespace cnc::sim::atmega

@@ -1,0 +1,160 @@
+#include "architectures/atmega/atmega_report.hpp"
+
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "common/text_format.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+namespace s3 = host::seed003;
+
+std::string hex(std::uint8_t b) {
+    char text[8];
+    std::snprintf(text, sizeof text, "0x%02X", b);
+    return text;
+}
+
+std::string id_name(s3::CommandId id) {
+    switch (id) {
+        case s3::CommandId::G00: return "G00";
+        case s3::CommandId::G01: return "G01";
+        case s3::CommandId::G02: return "G02";
+        case s3::CommandId::G03: return "G03";
+        case s3::CommandId::M30: return "M30";
+    }
+    return "?";
+}
+
+nlohmann::json motion_json(const AtmegaFacts& f, s3::CommandId id, const s3::Motion& m, const MotionWindow* w) {
+    const s3::TimerClock clk;
+    nlohmann::json j = {{"line", m.line},
+                        {"steps", {m.steps_x, m.steps_y}},
+                        {"count_x", m.count_x},
+                        {"ocr", {m.ocr_x.value, m.ocr_y.value}},
+                        {"ocr_exact", {m.ocr_x.exact, m.ocr_y.exact}},
+                        {"portb", hex(m.portb)},
+                        {"speed_asked_mm_per_s", {m.speed_x_mm_per_s, m.speed_y_mm_per_s}},
+                        {"speed_of_words_mm_per_s",
+                         {s3::speed_mm_per_s(m.ocr_x.value, f.machine.x.mm_per_step(), clk),
+                          s3::speed_mm_per_s(m.ocr_y.value, f.machine.y.mm_per_step(), clk)}},
+                        {"x_timebase", m.x_timebase},
+                        {"wrapped", m.wrapped}};
+    if (id == s3::CommandId::G00) j["count_y"] = m.count_y;
+    if (m.chord >= 0) j["chord"] = m.chord;
+    if (w != nullptr) {
+        j["t_begin_s"] = ps_to_s(w->t_begin_ps);
+        j["t_end_s"] = ps_to_s(w->t_end_ps);
+        j["complete"] = w->complete;
+    }
+    return j;
+}
+
+nlohmann::json commands_json(const AtmegaFacts& f) {
+    std::map<std::pair<std::size_t, std::size_t>, const MotionWindow*> window_of;
+    for (const MotionWindow& w : f.windows) window_of[{w.command, w.motion}] = &w;
+    nlohmann::json commands = nlohmann::json::array();
+    for (std::size_t c = 0; c < f.plan.commands.size(); ++c) {
+        const s3::Command& cmd = f.plan.commands[c];
+        nlohmann::json motions = nlohmann::json::array();
+        for (std::size_t m = 0; m < cmd.motions.size(); ++m) {
+            const auto w = window_of.find({c, m});
+            motions.push_back(motion_json(f, cmd.id, cmd.motions[m], w == window_of.end() ? nullptr : w->second));
+        }
+        commands.push_back({{"id", id_name(cmd.id)}, {"bytes", s3::command_bytes(cmd).size()}, {"motions", motions}});
+    }
+    return commands;
+}
+
+}  // namespace
+
+std::vector<Warning> link_warnings(const AtmegaFacts& f) {
+    std::vector<Warning> w;
+    const avr::AvrCoreStats st = f.mcu.stats();
+    if (st.usart.rx_framing_errors > 0) {
+        w.push_back({"mcu_framing_errors", "",
+                     std::to_string(st.usart.rx_framing_errors) + " UART framing errors at the MCU"});
+    }
+    if (f.cp2102.stats().framing_errors > 0) {
+        w.push_back({"cp2102_framing_errors", "",
+                     std::to_string(f.cp2102.stats().framing_errors) + " UART framing errors at the CP2102"});
+    }
+    const ChordGaps& gaps = f.gaps;
+    if (gaps.late > 0) {
+        w.push_back({"late_chords", "",
+                     std::to_string(gaps.late) + " chords started late (their bytes came after the chord before "
+                     "had ended): Y took " + std::to_string(gaps.y_steps_waiting) + " steps meanwhile"});
+    }
+    return w;
+}
+
+nlohmann::json details_json(const AtmegaFacts& f, bool detail) {
+    const uart::Cp2102Baud& baud = f.cp2102.baud();
+    const avr::AvrCoreStats st = f.mcu.stats();
+    const ChordGaps& gaps = f.gaps;
+    nlohmann::json j = {{"firmware", f.firmware},
+                        {"link",
+                         {{"requested_baud", baud.requested},
+                          {"line_baud", baud.actual_bd},
+                          {"line_baud_error_pct", baud.error_pct},
+                          {"mcu_baud", f.mcu_baud},
+                          {"mcu_vs_line_pct", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0},
+                          {"bytes_to_mcu", f.cp2102.tx_log().size()},
+                          {"bytes_from_mcu", f.cp2102.rx_log().size()},
+                          {"framing_errors_at_mcu", st.usart.rx_framing_errors},
+                          {"framing_errors_at_host", f.cp2102.stats().framing_errors},
+                          {"frames_lost_at_mcu", st.usart.rx_lost_disabled + st.usart.rx_overruns}}},
+                        {"pc",
+                         {{"transfers", f.pc.transfers().size()},
+                          {"bytes_written", f.pc.writes().size()},
+                          {"finished", f.pc.finished()},
+                          {"stopped", f.pc.failure() ? nlohmann::json(f.pc.failure()->reason) : nlohmann::json(nullptr)},
+                          {"t_stopped_s",
+                           f.pc.failure() ? nlohmann::json(ps_to_s(f.pc.failure()->t_ps)) : nlohmann::json(nullptr)},
+                          {"t_end_s",
+                           f.pc.finished() ? nlohmann::json(ps_to_s(f.pc.t_end_ps())) : nlohmann::json(nullptr)}}},
+                        {"mcu", {{"cycles", st.cycles}, {"stopped", f.mcu.stopped()}}},
+                        {"chords",
+                         {{"late", gaps.late},
+                          {"wait_max_ms", static_cast<double>(gaps.wait_max_ps) / static_cast<double>(kPsPerMs)},
+                          {"y_steps_waiting", gaps.y_steps_waiting}}}};
+    if (detail) j["commands"] = commands_json(f);  // one record per command and chord: they grow with the job
+    return j;
+}
+
+std::string details_text(const AtmegaFacts& f) {
+    const uart::Cp2102Baud& baud = f.cp2102.baud();
+    const avr::AvrCoreStats st = f.mcu.stats();
+    const ChordGaps& gaps = f.gaps;
+    std::map<std::string, std::pair<int, std::size_t>> per_id;  // commands, motions
+    for (const s3::Command& c : f.plan.commands) {
+        auto& n = per_id[id_name(c.id)];
+        ++n.first;
+        n.second += c.motions.size();
+    }
+    std::ostringstream t;
+    t << "atmega link and host\n"
+      << format("  line %.2f Bd (%+.3f %% vs requested), MCU USART %.1f Bd: ", baud.actual_bd, baud.error_pct,
+                f.mcu_baud)
+      << format("%+.3f %% against the line\n", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0)
+      << "  PC wrote " << f.pc.writes().size() << " bytes, one per confirm"
+      << (f.pc.failure() ? format(" (stopped at %.3f s: ", ps_to_s(f.pc.failure()->t_ps)) + f.pc.failure()->reason + ")"
+                         : std::string())
+      << "; framing errors at the MCU " << st.usart.rx_framing_errors
+      << ", at the CP2102 " << f.cp2102.stats().framing_errors << '\n'
+      << "  commands:";
+    for (const auto& [id, n] : per_id) {
+        t << ' ' << id << " x" << n.first;
+        if (id == "G02" || id == "G03") t << " (" << n.second << " chords)";
+    }
+    t << '\n'
+      << "  chords with late data " << gaps.late
+      << format(", longest wait %.3f ms, Y steps while waiting ", static_cast<double>(gaps.wait_max_ps) / 1e9)
+      << gaps.y_steps_waiting << '\n';
+    return t.str();
+}
+
+}  // namespace cnc::sim

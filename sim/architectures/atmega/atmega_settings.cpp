@@ -1,0 +1,36 @@
+#include "architectures/atmega/atmega_settings.hpp"
+
+namespace cnc::sim {
+
+void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem::path& base) {
+    read_serial_host_settings(r, s.serial);
+    const std::string fw = r.get_string(
+        "avr.firmware", "",
+        "atmega: ATmega328P firmware ELF, relative to the scenario; empty: the seed 003 firmware of this build");
+    s.firmware = fw.empty() ? std::string() : (base / fw).lexically_normal().string();
+    s.pins = r.get_string("avr.pins", "",
+                          "atmega: pins of the machine signals, \"step_x=PD6, dir_x=PB0, en_x=PB2, step_y=PB3, "
+                          "dir_y=PB5, en_y=PB4, head=PB1\" (seed 003 §2.2); entries left out keep these");
+    s.quantum_cycles = static_cast<std::uint32_t>(
+        r.get_int("avr.quantum_cycles", s.quantum_cycles, 1, 1'000'000,
+                  "atmega: AVR cycles run ahead of SystemC time between replays of its pin changes (speed only: "
+                  "outputs keep their exact cycle)"));
+    s.g01_timer2_prescaler = static_cast<int>(r.get_int(
+        "atmega.g01_timer2_prescaler", s.g01_timer2_prescaler, 256, 1024,
+        "atmega: Timer2 prescaler of the built firmware's G01: 1024 (what the PC computes with), or 256 "
+        "(App. A3's TCCR2B = 0b110 as listed: Y runs 4x fast)"));
+    if (s.g01_timer2_prescaler != 1024 && s.g01_timer2_prescaler != 256) {
+        r.fail("atmega.g01_timer2_prescaler", std::to_string(s.g01_timer2_prescaler) + " is not 1024 or 256");
+    }
+    s.pc.arc_step_deg = r.get_float("atmega.arc_step_deg", s.pc.arc_step_deg, 0.01, 90.0,
+                                    "atmega: largest angle of an arc chord, degrees (seed 003 §5.4.3 stepangle, "
+                                    "value not given); chords are cut shorter when DXL would exceed 255 steps");
+    s.pc.long_moves = r.get_choice("atmega.long_moves", "split", {"split", "wrap"},
+                                   "atmega: a count above 16 bits (409.6 mm at 1/32): split into commands, or sent "
+                                   "modulo 65536 as the seed's registers take it (a warning either way)") == "split"
+                          ? host::seed003::LongMoves::Split
+                          : host::seed003::LongMoves::Wrap;
+    s.link_baud_set = r.has("link.baud");
+}
+
+}  // namespace cnc::sim

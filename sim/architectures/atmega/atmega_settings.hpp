@@ -1,0 +1,32 @@
+// Scenario keys of the atmega architecture (seed 003), read into one struct by read_atmega_settings(): the host's
+// link and program (serial_host: [link] and host.settle_s .. host.on_timeout), [avr] for the simulated ATmega328P
+// (firmware, pins), [atmega] for the seed 003 PC program and firmware build.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "architectures/architecture.hpp"
+#include "architectures/serial_host/serial_host_settings.hpp"
+#include "host/core/seed003/plan.hpp"
+#include "scenario/key_reader.hpp"
+
+namespace cnc::sim {
+
+struct AtmegaSettings final : ArchSettings {
+    SerialHostSettings serial;
+    std::string firmware;     // avr.firmware resolved against the scenario's folder; empty: the built seed 003 ELF
+    std::string pins;         // avr.pins, "signal=pin, ..."; empty: seed 003's pin map
+    // avr.quantum_cycles. 1600 (100 us), not AvrCoreConfig's 160: the outputs are exact at any value and the only
+    // input, RXD, is decoded exactly, so a longer quantum costs nothing here; it runs the square job 25 % faster.
+    std::uint32_t quantum_cycles = 1600;
+    int g01_timer2_prescaler = 1024;  // which built seed 003 ELF: 1024, or 256 (App. A3's CS = 110 as listed)
+    host::seed003::PcOptions pc;
+    // link.baud set by the scenario: otherwise the PC program asks for 57600 (seed 003 §3.4 CBR_57600), not the
+    // Cp2102Config default of seed 000.
+    bool link_baud_set = false;
+};
+
+void read_atmega_settings(KeyReader& r, AtmegaSettings& settings, const std::filesystem::path& base);
+
+}  // namespace cnc::sim

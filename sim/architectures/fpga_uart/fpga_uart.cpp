@@ -1,0 +1,63 @@
+#include "architectures/fpga_uart/fpga_uart.hpp"
+
+#include <string>
+#include <utility>
+
+#include "architectures/fpga_uart/fpga_uart_settings.hpp"
+#include "common/bad_input.hpp"
+#include "common/text_format.hpp"
+#include "host/core/packet_codec.hpp"
+#include "scenario/scenario.hpp"
+
+namespace cnc::sim::fpga_uart {
+
+namespace {
+
+// The model's message without its "machine: " place, which the scenario keys replace.
+std::string numerator_problem(const BadInput& e) {
+    const std::string what = e.what();
+    const auto colon = what.find(": ");
+    return colon == std::string::npos ? what : what.substr(colon + 2);
+}
+
+class FpgaUart final : public Architecture {
+public:
+    [[nodiscard]] std::string name() const override { return "fpga-uart"; }
+    // The FPGA switches the laser by motion code (laser_ctrl); the host reads a G-code job again as it sends it.
+    [[nodiscard]] JobUse job_use() const override { return {true, true, LaserSwitching::ByMotionKind, true}; }
+
+    [[nodiscard]] std::shared_ptr<const ArchSettings> read_settings(KeyReader& r, const Scenario&,
+                                                                    const std::filesystem::path&) const override {
+        auto s = std::make_shared<FpgaUartSettings>();
+        read_fpga_uart_settings(r, *s);
+        return s;
+    }
+
+    // The NUMERATOR of each axis (clock x 60 / steps per mm) must fit the init packet's uint32 (seed 000 §3.4.6).
+    void check_machine(const Scenario& s) const override {
+        const FpgaUartSettings& own = s.settings<FpgaUartSettings>();
+        if (!own.numerator_from_machine) return;
+        for (const auto& [axis, machine] : {std::pair{"x", &s.machine.x}, std::pair{"y", &s.machine.y}}) {
+            try {
+                (void)host::numerator(machine->steps_per_mm(), own.fpga.clk_hz);
+            } catch (const BadInput& e) {
+                const std::string p = std::string("machine.") + axis + ".";
+                throw BadInput(s.file + ": " + p + "steps_per_mm (or " + p + "step_angle_deg, microsteps and the "
+                                   "transmission keys), fpga.clock_hz",
+                               format("%.10g steps/mm: ", machine->steps_per_mm()) + numerator_problem(e) +
+                                   "; host.numerator = \"seed-constant\" sends the script's constant instead");
+            }
+        }
+    }
+
+    [[nodiscard]] std::string plot_colour() const override { return "#0072b2"; }
+};
+
+}  // namespace
+
+const Architecture& Entry::architecture() {
+    static const FpgaUart a;
+    return a;
+}
+
+}  // namespace cnc::sim::fpga_uart

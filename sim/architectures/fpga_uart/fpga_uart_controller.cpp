@@ -1,0 +1,512 @@
+#include <algorithm>
+#include <cstdio>
+#include <deque>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <utility>
+
+#include "architectures/fpga_uart/dead_time.hpp"
+#include "architectures/fpga_uart/fpga_uart.hpp"
+#include "architectures/fpga_uart/fpga_uart_settings.hpp"
+#include "architectures/fpga_uart/job_segments.hpp"
+#include "architectures/serial_host/link_checks.hpp"
+#include "common/bad_input.hpp"
+#include "common/record_log.hpp"
+#include "common/text_format.hpp"
+#include "fpga/core/step_schedule.hpp"
+#include "fpga/top.hpp"
+#include "host/core/packet_codec.hpp"
+#include "host/sender.hpp"
+#include "run/controller.hpp"
+#include "run/machine_run.hpp"
+#include "run/moves.hpp"
+#include "uart/cp2102.hpp"
+
+namespace cnc::sim::fpga_uart {
+
+namespace {
+
+// send_steps.py hard-codes NUMERATOR_X = NUMERATOR_Y = 18_750_000 (seed 000 §6).
+constexpr std::uint32_t kSeedScriptNumerator = 18'750'000;
+
+// The link's wires and the FPGA's internal strobes (the machine's pins are the run's: run/machine.hpp); the VCD
+// and the analyze scripts rely on the names (docs/architectures.md "Pins").
+struct Wires {
+    sc_core::sc_signal<bool> uart_rx{"uart_rx", true};  // CP2102 TXD -> FPGA rx (GPIO_0[0]); idles high
+    sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // FPGA tx (GPIO_0[1]) -> CP2102 RXD
+    sc_core::sc_signal<bool> busy{"busy", false};
+    sc_core::sc_signal<bool> pkt_valid{"pkt_valid", false}, cfg_valid{"cfg_valid", false};
+    sc_core::sc_signal<bool> rx_valid{"rx_valid", false}, ack{"ack", false};
+};
+
+// The NUMERATORs the host sends in its init packet.
+struct Numerators {
+    std::uint32_t x, y;
+};
+
+Numerators numerators(const Scenario& s, const FpgaUartSettings& f) {
+    if (!f.numerator_from_machine) return {kSeedScriptNumerator, kSeedScriptNumerator};
+    return {host::numerator(s.machine.x.steps_per_mm(), f.fpga.clk_hz),
+            host::numerator(s.machine.y.steps_per_mm(), f.fpga.clk_hz)};
+}
+
+host::OutgoingPacket packet_of(const MadeSegment& made, Numerators n, const FpgaUartSettings& f) {
+    const host::MotionPacket packet = host::to_packet(made.seg);
+    // The host expects step_gen to use the numerators it sends (whether the init packet arrives or not).
+    const fpga::MoveInputs move{packet.steps_x, packet.steps_y, packet.feed, n.x, n.y};
+    return {host::encode_motion(packet), made.seg.line, fpga::run_duration_ps(move, f.fpga), made.wait_before_s};
+}
+
+// The sender's packets, made from the job's segments as it asks for them. A segment sent waits here until
+// step_gen has run it (the metrics' commanded move); its G-code line until the FPGA's warnings have read it.
+class SentPackets : public host::PacketSource {
+public:
+    SentPackets(const Scenario& s, const Job& job, Numerators n)
+        : m_settings(s.settings<FpgaUartSettings>()), m_segments(s, job), m_numerators(n) {}
+
+    std::optional<host::OutgoingPacket> next() override {
+        std::optional<MadeSegment> made = m_segments.next();
+        if (!made) return std::nullopt;
+        host::OutgoingPacket packet = packet_of(*made, m_numerators, m_settings);
+        m_lines.push_back(made->seg.line);
+        m_unexecuted.push_back(std::move(*made));
+        return packet;
+    }
+    double wait_after_last_s() override { return m_segments.wait_after_last_s(); }
+
+    [[nodiscard]] bool unexecuted() const { return !m_unexecuted.empty(); }
+    [[nodiscard]] MadeSegment executed() {  // unexecuted()
+        MadeSegment made = std::move(m_unexecuted.front());
+        m_unexecuted.pop_front();
+        return made;
+    }
+    [[nodiscard]] const RecordLog<int>& lines() const { return m_lines; }  // per packet sent
+    void drop_lines_before(std::size_t end) { m_lines.drop_before(end); }
+
+private:
+    const FpgaUartSettings& m_settings;
+    JobSegments m_segments;
+    Numerators m_numerators;
+    std::deque<MadeSegment> m_unexecuted;
+    RecordLog<int> m_lines;
+};
+
+// The executed pieces, one per packet step_gen accepted (a packet ignored because busy carries none), in order:
+// busy rises one clock after pkt_valid (SETUP) and falls at DONE.
+class ExecutedPieces {
+public:
+    // Hands `f` each piece not handed yet whose packet's busy fell before until_ps (none: every accepted packet's,
+    // once the run has ended).
+    template <typename F>
+    void time_ended(const fpga::Top& top, std::optional<TimePs> until_ps, SentPackets& sent, CommandedMoves& moves,
+                    F f) {
+        for (; m_record < top.packet_count() && sent.unexecuted(); ++m_record) {
+            const fpga::PacketRecord r = top.packet(m_record);
+            if (!r.accepted) continue;
+            if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
+            const MadeSegment made = sent.executed();
+            metrics::MoveSpec m = moves.next(made.seg, made.programmed_path ? &*made.programmed_path : nullptr);
+            m.t_begin_ps = r.t_pkt_valid_ps + clock_period_ps(top.config());
+            m.t_end_ps = r.t_busy_fall_ps;
+            f(std::move(m));
+        }
+    }
+
+    // The first packet record not read yet.
+    [[nodiscard]] std::size_t next_record() const { return m_record; }
+
+private:
+    std::size_t m_record = 0;
+};
+
+// A steps file's FeedRate 0 (seed 000 T3.6 allows 1 .. 65535; the appendix RTL would run 0 as 62500 clocks per step)
+// is sent only when the scenario asks for it.
+void check_steps_feeds(const Scenario& s, const Job& job, const FpgaUartSettings& f) {
+    if (f.allow_feed_zero) return;
+    for (const host::MotionSegment& seg : job.steps_file) {
+        if (seg.feed == 0) {
+            throw BadInput(s.job_path + ": segment " + std::to_string(seg.index),
+                           "FeedRate 0 (allowed 1 .. 65535; host.allow_feed_zero = true sends it as the appendix "
+                           "RTL would run it: 62500 clocks per step on both axes)");
+        }
+    }
+}
+
+// Before anything is simulated: every segment made and encoded once (the CAM's and the packet codec's BadInput),
+// counted for the job's pace.
+std::size_t count_packets(const Scenario& s, const Job& job, Numerators n) {
+    const FpgaUartSettings& f = s.settings<FpgaUartSettings>();
+    JobSegments segments(s, job);
+    std::size_t count = 0;
+    for (std::optional<MadeSegment> made = segments.next(); made; made = segments.next()) {
+        (void)packet_of(*made, n, f);
+        ++count;
+    }
+    return count;
+}
+
+// "segment 17 (line 20)": the packet's number, and its G-code line when the job was G-code.
+std::string segment_place(const RecordLog<int>& lines, std::size_t k) {
+    std::string where = "segment " + std::to_string(k + 1);
+    if (k < lines.size() && lines[k] > 0) where += " (line " + std::to_string(lines[k]) + ")";
+    return where;
+}
+
+// FPGA-side warnings: the period product the RTL cannot hold and packets lost while busy, read packet by packet
+// as step_gen sees them (what they read of a packet is final then), so that the records can go; then the init
+// packets and the line faults, at the end.
+class FpgaWarnings {
+public:
+    explicit FpgaWarnings(const FpgaUartSettings& f)
+        : m_settings(f),
+          m_overflow(std::string("(NUMERATOR/feed) x dominant steps exceeds 32 bits; step_gen as printed in the "
+                                 "appendix wraps it") +
+                     (f.fpga.period_arithmetic == fpga::PeriodArithmetic::Wrap32
+                          ? " (fpga.period_arithmetic = wrap32: this run used the wrapped period)"
+                          : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)")) {}
+
+    // Reads the packets step_gen has seen since the last call.
+    void read(const fpga::Top& top, const RecordLog<int>& lines) {
+        for (; m_next < top.packet_count(); ++m_next) {
+            const fpga::PacketRecord r = top.packet(m_next);
+            if (r.period_overflow) m_packets.push_back({"period_overflow", segment_place(lines, m_next), m_overflow});
+            if (!r.accepted) {
+                m_packets.push_back(
+                    {"packet_lost", segment_place(lines, m_next), "arrived while step_gen was busy: lost"});
+            }
+        }
+    }
+    // The first packet not read yet.
+    [[nodiscard]] std::size_t next_packet() const { return m_next; }
+    // Every packet read: their warnings, then the init packets' and the FPGA's counters'.
+    void finish(const fpga::Top& top, std::vector<Warning>& warnings) const;
+
+private:
+    const FpgaUartSettings& m_settings;
+    const std::string m_overflow;
+    std::vector<Warning> m_packets;
+    std::size_t m_next = 0;
+};
+
+void FpgaWarnings::finish(const fpga::Top& top, std::vector<Warning>& warnings) const {
+    const FpgaUartSettings& f = m_settings;
+    warnings.insert(warnings.end(), m_packets.begin(), m_packets.end());
+    for (const fpga::InitRecord& i : top.inits()) {
+        if (!i.applied) {
+            const char* why =
+                f.fpga.init_packet_wired ? " (step_gen was busy)" : " (fpga.init_packet_wired = false, as appendix top.v)";
+            warnings.push_back({"init_not_applied", "",
+                                "init packet (NUMERATOR " + std::to_string(i.num_x) + "/" + std::to_string(i.num_y) +
+                                    ") did not reach step_gen" + why});
+        }
+    }
+    const fpga::FpgaStats st = top.stats();
+    if (st.framing_errors > 0) {
+        warnings.push_back(
+            {"fpga_framing_errors", "", std::to_string(st.framing_errors) + " UART framing errors at the FPGA"});
+    }
+    if (st.watchdog_resets > 0) {
+        warnings.push_back(
+            {"watchdog_resets", "", std::to_string(st.watchdog_resets) + " packet_decoder watchdog resets"});
+    }
+    if (st.acks_dropped > 0) {
+        warnings.push_back({"acks_dropped", "", std::to_string(st.acks_dropped) + " ACKs dropped (uart_tx busy)"});
+    }
+}
+
+// The models' per-packet records that every reader has read go: the metrics' pieces, the dead-time split and the
+// warnings read them once. The detailed report lists every packet step_gen saw and the sender sent: kept.
+void hand_over_read(const ExecutedPieces& executed, const DeadTimeFold& dead_fold, const FpgaWarnings& warnings,
+                    bool detail, fpga::Top& fpga, host::Sender& sender, uart::Cp2102& cp2102, SentPackets& packets) {
+    cp2102.drop_tx_log_before(dead_fold.next_packet());
+    cp2102.drop_rx_log_before(dead_fold.next_rx_byte());
+    packets.drop_lines_before(warnings.next_packet());
+    if (detail) return;
+    fpga.drop_packets_before(std::min({executed.next_record(), dead_fold.next_packet(), warnings.next_packet()}));
+    sender.drop_packets_before(dead_fold.next_packet());
+}
+
+// The fpga-uart side of the job estimate: send_steps.py's settle and init gap, then per packet its trip over
+// the link: the host's work and write latency, the USB frames out and in, the driver latency, and the packet
+// and its ACK on the line (4.3 ms at 115200 Bd; the README's dead-time table measures 4.35 ms per gap).
+ArchPace pace(const Scenario& s, const FpgaUartSettings& f, std::size_t packets) {
+    constexpr double kBitsPerByte = 10.0;  // 8N1
+    constexpr double kTripBytes = host::kMotionPacketBytes + 1.0;  // the packet and its ACK
+    ArchPace p;
+    p.max_speed_x_mm_per_s = s.machine.x.limits.max_velocity_mm_per_s;  // the CAM holds the packet feed to them
+    p.max_speed_y_mm_per_s = s.machine.y.limits.max_velocity_mm_per_s;
+    p.startup_s = ps_to_s(f.serial.sender.settle_ps + f.serial.sender.init_gap_ps);
+    const double trip_s =
+        ps_to_s(f.serial.sender.packet_processing_ps + f.serial.sender.write_latency_ps + 2 * f.serial.link.usb_frame_ps +
+                f.serial.link.usb_latency_ps) +
+        kTripBytes * kBitsPerByte / static_cast<double>(f.serial.link.requested_baud);
+    p.link_s = static_cast<double>(packets) * trip_s;
+    return p;
+}
+
+// A steps file has no programmed moves: its packets, as the straight lines they are, at the speed step_gen
+// runs them (so also a FeedRate 0 row of host.allow_feed_zero).
+host::Program packet_moves(const std::vector<host::MotionSegment>& rows, Numerators n, const Scenario& s,
+                           const FpgaUartSettings& f) {
+    host::Program program;
+    program.filename = s.job_path;
+    geom::Vec2 at{};
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const geom::Vec2 to = at + geom::Vec2{rows[i].dx_mm, rows[i].dy_mm};
+        const double run_s = ps_to_s(packet_of({rows[i], std::nullopt, 0.0}, n, f).expected_run_ps);
+        // A packet step_gen does not run (no steps, or a period of 0) takes no time at any feed.
+        const double feed_mm_per_min =
+            run_s > 0.0 ? geom::distance(at, to) / run_s * kSecondsPerMinute : std::numeric_limits<double>::infinity();
+        host::ProgrammedMove move{};
+        move.kind = rows[i].motion;
+        move.path = geom::Segment::line(at, to);
+        move.feed_mm_per_min = feed_mm_per_min;
+        move.laser_on = rows[i].motion != host::MotionKind::Rapid;
+        move.line = rows[i].line;
+        program.moves.push_back(move);
+        at = to;
+    }
+    program.move_count = program.moves.size();
+    return program;
+}
+
+// The job's estimate: a G-code job's moves read from the file once more (the summary has none).
+JobEstimate estimate(const Scenario& s, const FpgaUartSettings& f, const Job& job, Numerators n, const ArchPace& pace) {
+    if (!job.program) return estimate_job(packet_moves(job.steps_file, n, s, f), pace);
+    host::GcodeStream moves(s.job_path, s.interpreter, false);
+    EstimateSum sum(job.program->wait_s_between(0, job.program->move_count + 1), pace);
+    for (std::optional<host::ProgrammedMove> m = moves.next(); m; m = moves.next()) sum.add(*m);
+    return sum.finish();
+}
+
+nlohmann::json packet_json(const fpga::PacketRecord& r) {
+    return {{"t_pkt_valid_s", ps_to_s(r.t_pkt_valid_ps)},
+            {"motion", r.motion},
+            {"steps", {r.steps_x, r.steps_y}},
+            {"feed", r.feed},
+            {"accepted", r.accepted},
+            {"period_cycles", {r.period_x_cycles, r.period_y_cycles}},
+            {"period_overflow", r.period_overflow},
+            {"t_run_start_s", ps_to_s(r.t_run_start_ps)},
+            {"t_busy_fall_s", ps_to_s(r.t_busy_fall_ps)},
+            {"t_ack_start_s", r.t_ack_start_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(r.t_ack_start_ps))}};
+}
+
+nlohmann::json sent_json(const host::SentPacket& p) {
+    return {{"segment", p.segment},
+            {"t_write_s", ps_to_s(p.t_write_ps)},
+            {"t_ack_s", p.t_ack_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(p.t_ack_ps))},
+            {"timed_out", p.timed_out}};
+}
+
+// The FPGA UART's rate (clock / FULL_BIT) against the CP2102's, before anything is simulated.
+void check_fpga_rate(const Scenario& s, const FpgaUartSettings& f) {
+    const double fpga_bd = static_cast<double>(f.fpga.clk_hz) / f.fpga.uart_full_bit_cycles;
+    check_line_rates(s.file + ": link.baud, fpga.uart_baud", cp2102_end(f.serial.link),
+                     {fpga_bd, format("the FPGA UART at %.2f Bd (fpga.uart_baud: ", fpga_bd) +
+                                   format("%g MHz / %.0f clocks a bit)", f.fpga.clk_hz / 1e6,
+                                          static_cast<double>(f.fpga.uart_full_bit_cycles))});
+}
+
+// The seed 000 system between the job and the machine's pins: the CAM (GCODE2STEPS) on the host, or the steps file
+// it wrote, send_steps.py through the CP2102, the FPGA.
+class FpgaUartController final : public Controller {
+public:
+    // `n` and `packet_count`: checked_packets().
+    FpgaUartController(const Scenario& s, const Job& job, MachinePins& pins, Numerators n, std::size_t packet_count)
+        : m_s(s),
+          m_f(s.settings<FpgaUartSettings>()),
+          m_job(job),
+          m_numerators(n),
+          m_packet_count(packet_count),
+          m_cp2102("cp2102", m_f.serial.link),
+          m_packets(s, job, m_numerators),
+          m_sender("host", m_f.serial.sender, m_cp2102, host::encode_init(m_numerators.x, m_numerators.y), m_packets),
+          m_fpga("fpga", m_f.fpga),
+          m_moves(s.machine, s.interpreter.start_mm),
+          // Every gap only for the detailed report and the plots (which keep the whole run anyway).
+          m_dead_fold(s.detail || s.keep_run_input),
+          m_warnings(m_f) {
+        m_cp2102.txd(m_wires.uart_rx);
+        m_cp2102.rxd(m_wires.uart_tx);
+        m_cp2102.thin_tx_log(host::kInitPacketBytes, host::kMotionPacketBytes);  // what the dead-time split reads
+        m_fpga.rx(m_wires.uart_rx);
+        m_fpga.tx(m_wires.uart_tx);
+        m_fpga.dir_x(pins.dir_x);
+        m_fpga.step_x(pins.step_x);
+        m_fpga.dir_y(pins.dir_y);
+        m_fpga.step_y(pins.step_y);
+        m_fpga.laser(pins.laser);
+        m_fpga.busy(m_wires.busy);
+        m_fpga.pkt_valid(m_wires.pkt_valid);
+        m_fpga.cfg_valid(m_wires.cfg_valid);
+        m_fpga.rx_valid(m_wires.rx_valid);
+        m_fpga.tx_start(m_wires.ack);
+    }
+
+    // The FPGA times everything it drives and drives no EN pin; the CP2102 (uart_rx) starts its frames when USB
+    // delivers the bytes.
+    [[nodiscard]] MachinePinClocks pin_clocks() const override { return {m_f.fpga.clk_hz, std::nullopt}; }
+    [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
+        const std::optional<std::int64_t> fpga = m_f.fpga.clk_hz;
+        const Wires& w = m_wires;
+        return {{&w.uart_rx, {}},     {&w.uart_tx, fpga},  {&w.busy, fpga},
+                {&w.pkt_valid, fpga}, {&w.cfg_valid, fpga}, {&w.rx_valid, fpga},
+                {&w.ack, fpga}};
+    }
+    // The link's lines and busy go into ArchRun::lines only when the whole logs are kept (--plots, --samples,
+    // tests): a long job's UART lines are its largest log after the STEPs, and no metric reads them.
+    void record(EdgeRecorder& rec, bool whole_logs) override {
+        m_whole_logs = whole_logs;
+        if (!whole_logs) return;
+        for (const sc_core::sc_signal<bool>* sig : {&m_wires.busy, &m_wires.uart_rx, &m_wires.uart_tx}) {
+            rec.watch(*sig, sig->basename());
+        }
+    }
+
+    [[nodiscard]] JobEstimate estimate() const override {
+        return fpga_uart::estimate(m_s, m_f, m_job, m_numerators, pace(m_s, m_f, m_packet_count));
+    }
+    // The dead-time split reads each piece's first and last STEP: handed to it as the stream measures the pieces,
+    // and it folds each gap once final.
+    [[nodiscard]] metrics::PieceMeasured on_piece_measured() override {
+        return [this](const metrics::MoveMetrics& p) { m_dead_fold.add_piece(piece_steps(p)); };
+    }
+    void slice_ended(TimePs now_ps, MetricsFeed* feed) override {
+        if (feed == nullptr) return;
+        m_executed.time_ended(m_fpga, now_ps, m_packets, m_moves,
+                              [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
+        feed->fold(now_ps);
+        m_dead_fold.fold(now_ps, false, m_fpga, m_sender.packets(), m_cp2102);
+        m_warnings.read(m_fpga, m_packets.lines());
+        hand_over_read(m_executed, m_dead_fold, m_warnings, m_s.detail, m_fpga, m_sender, m_cp2102, m_packets);
+    }
+
+    [[nodiscard]] TimePs job_end_ps(TimePs stop_ps) const override {
+        return m_sender.finished() ? m_sender.t_end_ps() : stop_ps;
+    }
+    void finish_feed(MetricsFeed& feed) override {
+        m_executed.time_ended(m_fpga, std::nullopt, m_packets, m_moves,
+                              [&](metrics::MoveSpec m) { feed.add_piece(std::move(m)); });
+    }
+    void finish_input(metrics::RunInput& in, bool streamed) override {
+        if (streamed) return;
+        m_executed.time_ended(m_fpga, std::nullopt, m_packets, m_moves,
+                              [&](metrics::MoveSpec m) { in.moves.push_back(std::move(m)); });
+    }
+    void measured(const metrics::RunMetrics& m) override {
+        for (const metrics::MoveMetrics& p : m.pieces) m_dead_fold.add_piece(piece_steps(p));
+    }
+    void take_lines(EdgeRecorder& rec, std::map<std::string, EdgeLog>& lines) override {
+        if (!m_whole_logs) return;
+        for (const char* pin : {"busy", "uart_rx", "uart_tx"}) lines[pin] = rec.take(pin);
+    }
+    void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override;
+
+private:
+    const Scenario& m_s;
+    const FpgaUartSettings& m_f;
+    const Job& m_job;
+    Numerators m_numerators;
+    std::size_t m_packet_count;
+    Wires m_wires;
+    uart::Cp2102 m_cp2102;
+    SentPackets m_packets;
+    host::Sender m_sender;
+    fpga::Top m_fpga;
+    CommandedMoves m_moves;
+    DeadTimeFold m_dead_fold;
+    ExecutedPieces m_executed;
+    FpgaWarnings m_warnings;
+    bool m_whole_logs = false;
+};
+
+void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) {
+    const Scenario& s = m_s;
+    const metrics::RunInput& in = run.input;
+    m_dead_fold.fold(in.t_job_end_ps, true, m_fpga, m_sender.packets(), m_cp2102);
+    const DeadTimeBreakdown dead = m_dead_fold.finish(in.t_job_start_ps, in.t_job_end_ps, m_cp2102);
+    if (s.keep_run_input) run.gap_causes = gap_causes(dead);
+
+    m_warnings.read(m_fpga, m_packets.lines());
+    m_warnings.finish(m_fpga, run.warnings);
+    const fpga::FpgaStats st = m_fpga.stats();
+    const uart::Cp2102Baud& baud = m_cp2102.baud();
+    nlohmann::json msgs = nlohmann::json::array();
+    for (const host::SenderMessage& m : m_sender.messages()) {
+        msgs.push_back({{"t_s", ps_to_s(m.t_ps)}, {"text", m.text}});
+    }
+    run.details = {
+        {"segments", m_packet_count},
+        {"link",
+         {{"requested_baud", m_f.serial.link.requested_baud},
+          {"line_baud", baud.actual_bd},
+          {"line_baud_error_pct", baud.error_pct},
+          {"fpga_bit_cycles", m_f.fpga.uart_full_bit_cycles},
+          {"bytes_to_fpga", m_cp2102.stats().tx_bytes},
+          {"bytes_from_fpga", m_cp2102.rx_log().size()},
+          {"utilisation_to_fpga_pct", dead.utilisation_to_fpga_pct},
+          {"utilisation_from_fpga_pct", dead.utilisation_from_fpga_pct}}},
+        {"sender",
+         {{"packets_sent", m_sender.packets().size()},
+          {"errors", m_sender.errors()},
+          {"aborted", m_sender.aborted()},
+          {"finished", m_sender.finished()},
+          {"t_end_s", ps_to_s(m_sender.t_end_ps())},
+          {"messages", msgs}}},
+        {"fpga",
+         {{"bytes_received", st.bytes_received},
+          {"framing_errors", st.framing_errors},
+          {"watchdog_resets", st.watchdog_resets},
+          {"acks_sent", st.acks_sent},
+          {"acks_dropped", st.acks_dropped}}},
+        {"dead_time", to_json(dead, s.detail)}};
+    if (s.detail) {  // one record per packet: they grow with the job
+        nlohmann::json& sent = run.details["sender"]["packets"] = nlohmann::json::array();
+        for (const host::SentPacket& p : m_sender.packets()) sent.push_back(sent_json(p));
+        nlohmann::json& received = run.details["fpga"]["packets"] = nlohmann::json::array();
+        for (std::size_t k = 0; k < m_fpga.packet_count(); ++k) received.push_back(packet_json(m_fpga.packet(k)));
+    }
+
+    std::ostringstream text;
+    text << "fpga-uart link and host\n"
+         << format("  line %.1f Bd (%+.3f %% vs requested), FPGA bit %.0f clocks\n", baud.actual_bd, baud.error_pct,
+                   m_f.fpga.uart_full_bit_cycles)
+         << "  packets sent " << m_sender.packets().size() << ", ACK timeouts " << m_sender.errors()
+         << ", FPGA ACKs " << st.acks_sent << " (dropped " << st.acks_dropped << ")\n"
+         << summary_text(dead);
+    for (const host::SenderMessage& m : m_sender.messages()) {
+        text << format("  host at %.6f s: ", ps_to_s(m.t_ps)) << m.text << '\n';
+    }
+    run.details_text = text.str();
+
+    if (const std::optional<std::string> framing = framing_failure(static_cast<std::int64_t>(st.framing_errors),
+                                                                   "FPGA", m_cp2102.stats().framing_errors)) {
+        run.ok = false;
+        run.failure = *framing;
+    } else if (m_sender.aborted()) {
+        run.ok = false;
+        run.failure =
+            "ACK timeout at " + m_sender.abort_reason() + "; send_steps.py stops here (host.on_timeout = abort)";
+    } else if (!m_sender.finished()) {
+        run.ok = false;
+        run.failure = "the job did not finish: " + time_limit_text(budget, end);
+    }
+}
+
+}  // namespace
+
+ArchRun Entry::run(const Scenario& s, const Job& job) {
+    return run_on_machine(s, job, [](const Scenario& sc, const Job& j, MachinePins& pins) {
+        const FpgaUartSettings& f = sc.settings<FpgaUartSettings>();
+        check_steps_feeds(sc, j, f);
+        const Numerators n = numerators(sc, f);
+        const std::size_t packet_count = count_packets(sc, j, n);
+        check_fpga_rate(sc, f);
+        return std::make_unique<FpgaUartController>(sc, j, pins, n, packet_count);
+    });
+}
+
+}  // namespace cnc::sim::fpga_uart

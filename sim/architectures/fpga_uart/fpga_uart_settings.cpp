@@ -1,0 +1,83 @@
+#include "architectures/fpga_uart/fpga_uart_settings.hpp"
+
+#include <string>
+#include <utility>
+
+#include "common/bad_input.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+// The FPGA model refuses values its RTL registers cannot hold; name the scenario key that set them.
+void check_fpga(const KeyReader& r, const fpga::FpgaConfig& cfg) {
+    try {
+        fpga::validate(cfg);
+    } catch (const BadInput& e) {
+        const std::string what = e.what();
+        const std::pair<const char*, const char*> keys[] = {
+            {"clk_hz", "fpga.clock_hz"},          {"uart_full_bit_cycles", "fpga.uart_baud"},
+            {"uart_half_bit_cycles", "fpga.uart_baud"}, {"watchdog_cycles", "fpga.watchdog_ms"},
+            {"pulse_high_cycles", "fpga.pulse_high_cycles"}, {"dir_settle_cycles", "fpga.dir_settle_cycles"}};
+        for (const auto& [field, key] : keys) {
+            if (what.find(field) != std::string::npos) r.fail(key, what);
+        }
+        throw;
+    }
+}
+
+void read_host(KeyReader& r, FpgaUartSettings& s) {
+    s.allow_feed_zero = r.get_bool("host.allow_feed_zero", false,
+                                   "send FeedRate 0 from a steps file as the appendix allows (step_gen then uses "
+                                   "62500 clocks per step on both axes); false: refused, as the text requires");
+    s.numerator_from_machine =
+        r.get_choice("host.numerator", "machine", {"machine", "seed-constant"},
+                     "init packet NUMERATOR: from the machine model, or send_steps.py's constant 18750000") ==
+        "machine";
+    s.cam.chord_tolerance_mm = r.get_float("host.chord_tolerance_mm", s.cam.chord_tolerance_mm, 1e-6, 10.0,
+                                           "max distance of an arc chord from the arc, mm");
+    s.cam.chord_ends = r.get_choice("host.chord_ends", "on-arc", {"on-arc", "round"},
+                                    "chord end points: the grid point nearest the arc, or each axis rounded "
+                                    "(seed 000 sec. 3.4.4)") == "on-arc"
+                           ? host::ChordEnds::OnArc
+                           : host::ChordEnds::Round;
+    s.cam.feed_rounding = r.get_choice("host.feed_rounding", "round", {"round", "truncate"},
+                                       "packet feed from the dominant-axis feed") == "round"
+                              ? host::FeedRounding::Round
+                              : host::FeedRounding::Truncate;
+    s.cam.correct_rapid_feed = r.get_bool("host.correct_rapid_feed", s.cam.correct_rapid_feed,
+                                          "G0 feed reduced to the dominant axis like G1");
+}
+
+void read_fpga(KeyReader& r, fpga::FpgaConfig& cfg) {
+    cfg.clk_hz = static_cast<std::uint32_t>(
+        r.get_int("fpga.clock_hz", cfg.clk_hz, 1'000'000, 500'000'000, "FPGA clock, Hz (CLOCK_50)"));
+    const auto fpga_baud = r.get_int("fpga.uart_baud", 115'200, 300, 10'000'000,
+                                     "baud rate the FPGA UART was built for (bit = clock/baud cycles)");
+    cfg.uart_full_bit_cycles = static_cast<std::uint32_t>(cfg.clk_hz / fpga_baud);
+    cfg.uart_half_bit_cycles = cfg.uart_full_bit_cycles / 2;
+    cfg.watchdog_cycles = static_cast<std::uint32_t>(
+        r.get_float("fpga.watchdog_ms", 100.0, 0.001, 10000.0, "packet_decoder inter-byte watchdog, ms") * 1e-3 *
+        cfg.clk_hz);
+    cfg.pulse_high_cycles = static_cast<std::uint32_t>(
+        r.get_int("fpga.pulse_high_cycles", cfg.pulse_high_cycles, 1, 1'000'000, "STEP high time, clocks"));
+    cfg.dir_settle_cycles = static_cast<std::uint32_t>(
+        r.get_int("fpga.dir_settle_cycles", cfg.dir_settle_cycles, 1, 511, "DIR to first STEP wait, clocks"));
+    cfg.init_packet_wired = r.get_bool("fpga.init_packet_wired", cfg.init_packet_wired,
+                                       "init packet reaches step_gen (false: appendix top.v leaves it open)");
+    cfg.period_arithmetic = r.get_choice("fpga.period_arithmetic", "exact", {"exact", "wrap32"},
+                                         "subordinate period product: exact, or the appendix's 32-bit wrap") == "exact"
+                                ? fpga::PeriodArithmetic::Exact
+                                : fpga::PeriodArithmetic::Wrap32;
+    check_fpga(r, cfg);
+}
+
+}  // namespace
+
+void read_fpga_uart_settings(KeyReader& r, FpgaUartSettings& s) {
+    read_serial_host_settings(r, s.serial);
+    read_host(r, s);
+    read_fpga(r, s.fpga);
+}
+
+}  // namespace cnc::sim

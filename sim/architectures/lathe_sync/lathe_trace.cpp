@@ -1,0 +1,52 @@
+#include "architectures/lathe_sync/lathe_trace.hpp"
+
+#include <algorithm>
+
+#include "probes/trace_selection.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+constexpr std::int64_t kFcpuHz = 8'000'000;     // seed 002 §6.1
+constexpr TimePs kCyclePs = 1'000'000'000'000 / kFcpuHz;  // 125 ns
+
+}  // namespace
+
+LatheTrace::LatheTrace(const Scenario& s) : m_s(s) {
+    std::vector<TraceCandidate> all;
+    for (const lathe::TracedPin& p : lathe::traced_pins()) all.push_back({p.name, false});
+    m_chosen = select_traced(s, all);
+    for (const std::size_t i : m_chosen) m_signals.push_back({all[i].name, false, kFcpuHz});
+    metrics::check_vcd_signals(s.vcd_timescale_fs, m_signals, s.file + ": trace.timescale");
+    m_file.emplace(s.vcd_path, "the VCD");
+}
+
+// The levels at trace.from_s are the rig's initial ones updated by every edge before it.
+void LatheTrace::write(const lathe::LatheRig& rig) {
+    std::vector<lathe::PinEdge> edges = rig.trace();
+    std::stable_sort(edges.begin(), edges.end(),
+                     [](const lathe::PinEdge& a, const lathe::PinEdge& b) { return a.cycle < b.cycle; });
+    std::vector<int> slot(lathe::traced_pins().size(), -1);  // traced pin -> signal index
+    for (std::size_t k = 0; k < m_chosen.size(); ++k) {
+        slot[m_chosen[k]] = static_cast<int>(k);
+        m_signals[k].initial = rig.trace_initial()[m_chosen[k]];
+    }
+    const TimePs end_ps = static_cast<TimePs>(rig.chip.cycle()) * kCyclePs;
+    const TimePs to_ps = m_s.trace_to_ps ? std::min(*m_s.trace_to_ps, end_ps) : end_ps;
+    std::size_t e = 0;
+    for (; e < edges.size() && static_cast<TimePs>(edges[e].cycle) * kCyclePs < m_s.trace_from_ps; ++e) {
+        if (slot[edges[e].pin] >= 0) m_signals[static_cast<std::size_t>(slot[edges[e].pin])].initial = edges[e].level;
+    }
+    metrics::VcdWriter vcd(m_file->stream(), m_s.vcd_timescale_fs, m_signals, m_s.file + ": trace.timescale",
+                           m_s.trace_from_ps);
+    for (; e < edges.size(); ++e) {
+        const TimePs t_ps = static_cast<TimePs>(edges[e].cycle) * kCyclePs;
+        if (t_ps > to_ps) break;
+        if (slot[edges[e].pin] >= 0) vcd.change(t_ps, static_cast<std::size_t>(slot[edges[e].pin]), edges[e].level);
+    }
+    vcd.finish(std::max(to_ps, m_s.trace_from_ps));
+    m_file->close();
+}
+
+}  // namespace cnc::sim

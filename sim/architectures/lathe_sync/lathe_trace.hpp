@@ -1,0 +1,32 @@
+// The lathe-sync run's VCD (trace.vcd, --vcd): the ATmega16's pins as the rig recorded them (lathe::traced_pins:
+// OC1A's PWM to the L298's EnA, DIR1/DIR2, the encoder pulses at INT0/INT1, the index, the limit switch, the
+// keypad's columns and rows, the LCD's RS, R/W, E and D4..D7), each edge at its 8 MHz clock cycle, with
+// trace.signals, trace.from_s / trace.to_s and trace.timescale as for the other architectures.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "lathe/rig/lathe_rig.hpp"
+#include "metrics/vcd/vcd_writer.hpp"
+#include "output/output_file.hpp"
+#include "scenario/scenario.hpp"
+
+namespace cnc::sim {
+
+class LatheTrace {
+public:
+    // Before the run: BadInput naming trace.signals or trace.timescale for a name or unit the trace cannot take,
+    // the file when it cannot be written.
+    explicit LatheTrace(const Scenario& s);
+
+    // After the run: writes the rig's edges (LatheRigConfig::trace_pins) and closes the file.
+    void write(const lathe::LatheRig& rig);
+
+private:
+    const Scenario& m_s;
+    std::vector<std::size_t> m_chosen;  // indices into lathe::traced_pins()
+    std::vector<metrics::VcdSignal> m_signals;
+    std::optional<OutputFile> m_file;
+};
+
+}  // namespace cnc::sim

@@ -1,0 +1,84 @@
+#include "run/mechanics_report.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+
+#include "common/text_format.hpp"
+#include "metrics/laser/laser_exposure.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+nlohmann::json axis_json(const mech::DynamicAxis& axis) {
+    const mech::DynamicAxisStats& st = axis.stats();
+    nlohmann::json times = nlohmann::json::array();
+    for (const mech::LostStepEvent& e : st.events) times.push_back({{"t_s", ps_to_s(e.t_ps)}, {"full_steps", e.full_steps}});
+    return {{"lost_full_steps", st.lost_full_steps},
+            {"lost_step_events", times},
+            {"peak_load_angle_electrical_deg", st.peak_load_angle_deg},
+            {"peak_load_angle_t_s", ps_to_s(st.peak_load_angle_ps)},
+            {"velocity_ripple_rms_mm_per_s", st.velocity_ripple_rms_mm_s},
+            {"velocity_ripple_peak_mm_per_s", st.velocity_ripple_peak_mm_s},
+            {"integration_steps", axis.integrator().steps_taken()}};
+}
+
+std::string axis_text(const char* name, const mech::DynamicAxisStats& st) {
+    std::ostringstream t;
+    t << "  " << name << ": lost " << st.lost_full_steps << " full steps";
+    if (!st.events.empty()) t << " (first at " << format("%.6f", ps_to_s(st.events.front().t_ps)) << " s)";
+    t << ", peak load angle " << format("%.1f", st.peak_load_angle_deg) << " electrical deg at "
+      << format("%.6f", ps_to_s(st.peak_load_angle_ps)) << " s, velocity ripple rms "
+      << format("%.3f", st.velocity_ripple_rms_mm_s) << " / peak " << format("%.3f", st.velocity_ripple_peak_mm_s)
+      << " mm/s\n";
+    return t.str();
+}
+
+// The load angle's peaks and the lost full steps (cumulative) over time, per axis: what the plots draw.
+void add_series(const char* axis, const mech::DynamicAxisStats& st, ArchRun& run) {
+    run.series.push_back({"load angle [electrical deg]", axis, st.load_angle_deg_trace.points()});
+    TimeSeries lost{"lost full steps [cumulative]", axis, {{0, 0.0}}};
+    std::int64_t total = 0;
+    for (const mech::LostStepEvent& e : st.events) {
+        total += std::abs(e.full_steps);
+        lost.points.emplace_back(e.t_ps, static_cast<double>(total));
+    }
+    // Past kMaxLostStepEvents only the count goes on: the last point holds the whole of it.
+    const TimePs end_ps = std::max(run.input.t_job_end_ps, lost.points.back().first);
+    lost.points.emplace_back(end_ps, static_cast<double>(st.lost_full_steps));
+    run.series.push_back(std::move(lost));
+}
+
+}  // namespace
+
+void add_mechanics_report(const Machine& machine, const std::optional<MetricsFeed>& feed, ArchRun& run) {
+    const mech::DynamicAxis* x = machine.dynamic_x();
+    const mech::DynamicAxis* y = machine.dynamic_y();
+    if (x == nullptr || y == nullptr) return;
+    const metrics::LaserExposure e = feed                ? feed->laser_exposure()
+                                     : run.input.laser ? metrics::laser_exposure(run.input.tool, *run.input.laser)
+                                                       : metrics::LaserExposure{};
+    run.details["mechanics"] = {
+        {"model", "dynamic"},
+        {"x", axis_json(*x)},
+        {"y", axis_json(*y)},
+        {"laser_exposure",
+         {{"lasered_path_mm", e.lasered_path_mm},
+          {"mean_s_per_mm", e.mean_s_per_mm},
+          {"peak_s_per_mm", e.peak_s_per_mm},
+          {"peak_at_lasered_path_mm", e.peak_at_path_mm},
+          {"bin_mm", metrics::kExposureBinMm}}}};
+    std::ostringstream t;
+    t << "Mechanics (dynamic): the carriage position above comes from the axis models; contour and following "
+         "error include their lag and ringing\n"
+      << axis_text("x", x->stats()) << axis_text("y", y->stats()) << "  laser exposure: mean "
+      << format("%.4f", e.mean_s_per_mm) << " s/mm over " << format("%.2f", e.lasered_path_mm) << " mm, peak "
+      << format("%.4f", e.peak_s_per_mm) << " s/mm (" << format("%.1f", metrics::kExposureBinMm) << " mm bin at "
+      << format("%.2f", e.peak_at_path_mm) << " mm of lasered path)\n";
+    run.details_text += t.str();
+    add_series("x", x->stats(), run);
+    add_series("y", y->stats(), run);
+}
+
+}  // namespace cnc::sim

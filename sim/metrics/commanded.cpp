@@ -59,17 +59,21 @@ TimePs crossing(const AxisFn& f, TimePs lo, TimePs hi, double c_lo, double c_hi,
     return hi;
 }
 
+// The first level is found with exact comparisons: c_lo + 0.5 rounds (0.49999999999999994 + 0.5 is 1.0), and a
+// first n taken from that sum skipped the level just above c_lo. n +- 0.5 is exact for any step count.
 void add_crossings(const AxisFn& f, TimePs lo, TimePs hi, double c_lo, double c_hi, StepCrossings& out) {
     if (c_hi > c_lo) {
         // levels n - 1/2 in (c_lo, c_hi]
-        for (auto n = static_cast<std::int64_t>(std::floor(c_lo + 0.5)) + 1;
-             static_cast<double>(n) - 0.5 <= c_hi; ++n) {
+        auto n = static_cast<std::int64_t>(std::floor(c_lo - 0.5));
+        while (static_cast<double>(n) - 0.5 <= c_lo) ++n;
+        for (; static_cast<double>(n) - 0.5 <= c_hi; ++n) {
             out.up[n].push_back(crossing(f, lo, hi, c_lo, c_hi, static_cast<double>(n) - 0.5));
         }
     } else if (c_hi < c_lo) {
         // levels n + 1/2 in [c_hi, c_lo)
-        for (auto n = static_cast<std::int64_t>(std::ceil(c_lo - 0.5)) - 1;
-             static_cast<double>(n) + 0.5 >= c_hi; --n) {
+        auto n = static_cast<std::int64_t>(std::ceil(c_lo + 0.5));
+        while (static_cast<double>(n) + 0.5 >= c_lo) --n;
+        for (; static_cast<double>(n) + 0.5 >= c_hi; --n) {
             out.down[n].push_back(crossing(f, lo, hi, c_lo, c_hi, static_cast<double>(n) + 0.5));
         }
     }

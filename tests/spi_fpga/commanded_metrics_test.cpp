@@ -94,6 +94,31 @@ TEST(StepCrossings, RampCrossesEachHalfStepOnceUpToAPicosecond) {
     }
 }
 
+// A scan point one ulp under a half-step level: the planner's diagonal at 1000 mm/s^2 puts the square's first X step
+// there (0.0031249999999999997 mm at 2.5 ms, 0.49999999999999994 steps), and 0.49999999999999994 + 0.5 rounds to
+// 1.0. Here x(t) = that position + 1 mm/s (t - 2.5 ms), both ways: the level is crossed in the interval that starts
+// at the point, and found there.
+TEST(StepCrossings, ALevelOneUlpAboveAScanPointIsNotSkipped) {
+    const double under_half_step = std::nextafter(0.5, 0.0);
+    for (const double sign : {1.0, -1.0}) {
+        CommandedTrajectory c;
+        c.t_begin_ps = 0;
+        c.t_end_ps = 4 * kPsPerMs;
+        c.scan_step_ps = 100 * kPsPerUs;
+        c.state_at = [sign, under_half_step](TimePs t) {
+            const double x = under_half_step / kStepsPerMm + (cnc::ps_to_s(t) - 0.0025);
+            return CommandedState{{sign * x, 0.0}, {sign * 1.0, 0.0}};
+        };
+        ASSERT_EQ(sign * c.state_at(2'500 * kPsPerUs).pos_mm.x_mm * kStepsPerMm, under_half_step);
+        const StepCrossings x = step_crossings(c, 0, kStepsPerMm);
+        const std::int64_t count = sign > 0 ? 1 : -1;  // the step through +-0.5
+        const auto& levels = sign > 0 ? x.up : x.down;
+        ASSERT_EQ(levels.count(count), 1U) << sign;
+        // 1 ulp of position at 160 steps/s is far under a picosecond: the first ps past 2.5 ms.
+        EXPECT_EQ(levels.at(count).front(), 2'500 * kPsPerUs + 1) << sign;
+    }
+}
+
 TEST(StepCrossings, ATurningPointInsideAScanStepSplitsTheInterval) {
     // A = 1 mm (160 steps) at 1 Hz: up to 160 at 0.25 s, down to -160 at 0.75 s, back to 0 at 1 s. A 300 ms scan
     // step puts both turning points inside intervals.

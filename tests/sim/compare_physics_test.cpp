@@ -182,3 +182,33 @@ TEST_F(ComparePhysics, ContourErrorOrderings) {
     EXPECT_LE(spi, blend_bound_um);
     EXPECT_GT(avr, blend_bound_um);
 }
+
+// The ideal architecture is the machine's own motion: with the dynamic carriage on the circle, no architecture
+// follows the path closer (each one's controller can only add to the carriage's lag and ringing), and each one's
+// row "contour error max over ideal" is its contour error max minus the ideal's.
+TEST_F(ComparePhysics, NoArchitectureFollowsTheCircleCloserThanTheIdealController) {
+    const Comparison c = run(kCompare + "circle_r10.toml", "ideal,fpga-uart,atmega,spi-fpga");
+    const char* contour = "metrics/path/contour_max_um";
+    const char* over = "metrics/path/contour_max_over_ideal_um";
+    const double ideal = c.metric("ideal", contour);
+    EXPECT_EQ(c.metric("ideal", over), 0.0);
+    for (const char* arch : {"fpga-uart", "atmega", "spi-fpga"}) {
+        EXPECT_EQ(c.column(arch).at("status"), "ok") << arch;
+        EXPECT_LE(ideal, c.metric(arch, contour)) << arch;
+        EXPECT_DOUBLE_EQ(c.metric(arch, over), c.metric(arch, contour) - ideal) << arch;
+    }
+}
+
+// compare runs the ideal controller with every comparison for that row, and shows it as a column only when asked.
+TEST_F(ComparePhysics, TheIdealControllerIsABaselineColumnOnlyWhenAsked) {
+    const Comparison c = run(kCompare + "square_20mm.toml", "fpga-uart,spi-fpga");
+    ASSERT_EQ(c.columns.size(), 2U);
+    const double over = c.metric("spi-fpga", "metrics/path/contour_max_over_ideal_um");
+    EXPECT_FALSE(fs::exists(c.out / "ideal.json"));
+    EXPECT_FALSE(fs::exists(c.out / "data" / "ideal"));
+    const Comparison with = run(kCompare + "square_20mm.toml", "spi-fpga,ideal");  // the same folder
+    ASSERT_EQ(with.columns.size(), 2U);
+    EXPECT_DOUBLE_EQ(over, with.metric("spi-fpga", "metrics/path/contour_max_um") -
+                               with.metric("ideal", "metrics/path/contour_max_um"));
+    EXPECT_TRUE(fs::exists(with.out / "data" / "ideal"));
+}

@@ -195,7 +195,8 @@ Comparison run_compare(const std::string& self_exe, const std::string& scenario,
         while (next < architectures.size() && running.size() < cores) {
             const std::string& arch = architectures[next];
             columns[next].architecture = arch;
-            std::cerr << "cncsim compare: " << arch << " running" << std::endl;
+            std::cerr << "cncsim compare: " << arch << (next < asked.size() ? "" : " (baseline)") << " running"
+                      << std::endl;
             started[next] = std::chrono::steady_clock::now();
             running[spawn_child(child_args(self_exe, scenario, arch, sets, report_dir(next) / (arch + ".json"),
                                            with_outputs(next) ? out_dir : ""))] = next;

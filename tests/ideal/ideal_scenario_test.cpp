@@ -162,3 +162,17 @@ TEST(IdealRun, SixSegmentMetricsAreAPerfectQuantisers) { expect_quantiser_metric
 
 }  // namespace
 }  // namespace cnc::sim
+
+namespace cnc::sim {
+namespace {
+
+// A simulated-time limit shorter than the job stops the run there: failed, its job end where it stopped.
+TEST(IdealRun, AJobPastTheTimeLimitFails) {
+    const RunOutcome out = run_ideal("square_20mm", {"scenario.max_sim_s=1"});
+    EXPECT_FALSE(out.ok);
+    EXPECT_EQ(out.failure.rfind("the job did not finish: stopped at ", 0), 0U) << out.failure;
+    EXPECT_LE(out.arch.input.t_job_end_ps, 1'000 * kPsPerMs);
+}
+
+}  // namespace
+}  // namespace cnc::sim

@@ -41,12 +41,16 @@ public:
         SC_THREAD(drive);
     }
 
+    // Every edge of the job has been driven.
+    [[nodiscard]] bool finished() const { return m_finished; }
+
 private:
     void drive() {
         for (std::optional<TimedEdge> e = m_edges.next(); e; e = m_edges.next()) {
             wait_ps(e->t_ps - now_ps());
             pin(e->pin).write(e->level);
         }
+        m_finished = true;
     }
     sc_core::sc_out<bool>& pin(Pin p) {
         switch (p) {
@@ -60,6 +64,7 @@ private:
     }
 
     IdealEdges& m_edges;
+    bool m_finished = false;
 };
 
 // The whole job planned once before the run (the planner's BadInput before anything is simulated): its end.
@@ -120,7 +125,9 @@ public:
         const TimePs end_ps = std::max(stop_ps, m_end_ps);
         if (end_ps > m_clock.t_end_ps()) m_clock.add(end_ps, ps_to_s(end_ps));
     }
-    [[nodiscard]] TimePs job_end_ps(TimePs) const override { return m_end_ps; }
+    [[nodiscard]] TimePs job_end_ps(TimePs stop_ps) const override {
+        return m_generator.finished() ? m_end_ps : stop_ps;
+    }
     void finish_feed(MetricsFeed& feed) override { hand_over(feed, std::numeric_limits<TimePs>::max(), true); }
     void finish_input(metrics::RunInput& in, bool streamed) override {
         if (streamed) {
@@ -131,11 +138,15 @@ public:
         in.commanded = commanded_trajectory(m_trajectory, m_clock, m_grid.origin_mm, kScanStepPs);
         in.rate_segments = m_edges.take_rate_segments(std::numeric_limits<TimePs>::max());
     }
-    void report(ArchRun& run, const RunBudget&, const SimulationEnd&) override {
+    void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override {
         const double duration_s = ps_to_s(m_end_ps);
         run.details = {{"trajectory_s", duration_s}, {"scan_step_us", ps_to_us(kScanStepPs)}};
         run.details_text = format("ideal: the planned trajectory, %.6f s, stepped at its half-step crossings\n",
                                   duration_s);
+        if (!m_generator.finished()) {
+            run.ok = false;
+            run.failure = "the job did not finish: " + time_limit_text(budget, end);
+        }
     }
 
 private:

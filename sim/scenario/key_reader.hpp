@@ -1,5 +1,5 @@
 // Typed, documented, validated access to a scenario's TOML tables. Every getter registers its key (type,
-// default, range, unit, doc) so that one code path both validates a scenario and generates the README's
+// default, range, unit, doc) so that one code path both validates a scenario and generates the
 // scenario reference; keys a scenario sets that no getter read are reported as unknown.
 #pragma once
 #include <cstdint>
@@ -65,7 +65,7 @@ std::string override_key(const std::string& assignment);
 // TOML value is taken as a bare string (paths). Creates intermediate tables.
 void apply_override(toml::table& root, const std::string& assignment);
 
-// Markdown table of the keys (the README's scenario reference).
+// Markdown table of the keys (docs/scenario-reference.md).
 std::string keys_markdown(const std::vector<KeyDoc>& docs);
 
 }  // namespace cnc::sim

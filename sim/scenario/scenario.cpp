@@ -112,7 +112,7 @@ void check_start(const KeyReader& r, geom::Vec2 start_mm, const host::MachineMod
 void read_trace_window(KeyReader& r, Scenario& s) {
     s.trace_signals = r.get_string_list(
         "trace.signals",
-        "pins and signals the VCD holds, by name (README \"VCD traces\": the pins of each architecture, and the "
+        "pins and signals the VCD holds, by name (docs/vcd.md: the pins of each architecture, and the "
         "real-valued carriage_x_mm, carriage_y_mm); an unknown name is refused with the allowed ones; []: all of "
         "them except the SPI wires sclk, mosi, miso and ss, which are driven bit by bit only when named here (or "
         "with spi.trace_wires = true)");
@@ -144,8 +144,8 @@ void reject_moved_keys(const KeyReader& r) {
     }
     for (const auto& [old_key, new_key] : moved) {
         if (r.has(old_key)) {
-            r.fail(old_key, "replaced by " + new_key + ": one machine for every architecture (README, "
-                            "\"Which keys apply to which architecture\")");
+            r.fail(old_key, "replaced by " + new_key + ": one machine for every architecture "
+                            "(docs/scenario-reference.md, \"Which keys apply to which architecture\")");
         }
     }
 }

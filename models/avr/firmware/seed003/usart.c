@@ -10,7 +10,7 @@
 
 void usart_init(void) {
     /* The seed writes UBRR0L, UCSR0B, UCSR0C in that order; UCSR0C first changes nothing on the chip (its reset
-     * value is already 8N1) and keeps simulators that latch the rate at the UBRR write (toolchain.md §3) right. */
+     * value is already 8N1) and keeps simulators that latch the rate at the UBRR write (simavr 1.6 does) right. */
     UCSR0C = _BV(UCSZ01) | _BV(UCSZ00); /* 0x06: asynchronous, 8 data bits, no parity, 1 stop bit */
     UBRR0H = 0;
     UBRR0L = UBRR_VALUE;

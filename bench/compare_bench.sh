@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Speed of `cncsim compare` with its plots (issue 11): the three architectures on the radius-10 circle, --out with
+# Speed of `cncsim compare` with its plots: the three architectures on the radius-10 circle, --out with
 # every plot, report and VCD. Target: under 30 s wall on the 2-core project machine. Prints one Markdown row per
 # repetition: the whole command's wall time, each architecture's simulated time over its own wall time (they run
 # side by side, as many at once as there are cores), and the time gnuplot took for the plots.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Speed of the lathe-sync architecture (issue 12): the three-pass M6 thread of scenarios/lathe-sync/m6_thread.toml,
+# Speed of the lathe-sync architecture: the three-pass M6 thread of scenarios/lathe-sync/m6_thread.toml,
 # target >= 3x real time. Usage: bench/lathe_bench.sh [build dir] [repetitions]. Prints one Markdown row: the
 # machine time simulated, the wall time of the whole cncsim process (median of the repetitions), their ratio and
 # the peak memory.

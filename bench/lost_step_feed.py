@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 10, check 9: the six-segment shape on seed 000's machine with the dynamic mechanics.
+"""The six-segment shape on seed 000's machine with the dynamic mechanics.
 
 For each architecture: the full steps lost at F4800 (80 mm/s, the seed's target speed) and, when some are
 lost, the highest feed at which none are, found by bisection on the model (every move of the job, rapids

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Wall time of the ideal and the dynamic mechanics (issue 10's speed target), the latter with its worker threads
+# Wall time of the ideal and the dynamic mechanics against their speed target, the latter with its worker threads
 # (one per axis, the default) and without ("dynamic-1"): fpga-uart square and six-segment, atmega square; best of 3 runs each,
 # with the job's simulated time and the real-time factor, the CPU time (user + system: less disturbed than the
 # wall time by other work on a shared machine; with the worker threads, all threads' time) and the dynamic runs'

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Wall time, simulated time per wall second and peak memory of cncsim against job length: a laser raster
 (bench/make_raster_job.py) of 10^3, 10^4 and 10^5 lines on fpga-uart and spi-fpga (atmega when named: it runs
-about 7x real time, so `build 1000,10000 atmega`), VCD off (bounded-memory issue,
-"Speed"). Targets: 100x real time on fpga-uart, 20x on spi-fpga, peak RSS < 200 MiB, for the 10^5-line raster.
+about 7x real time, so `build 1000,10000 atmega`), VCD off.
+Targets: 100x real time on fpga-uart, 20x on spi-fpga, peak RSS < 200 MiB, for the 10^5-line raster.
 Peak RSS is cncsim's own (child_peak_rss, built in BUILD_DIR/bench), not the script's. Each run with each carriage
 model named (mechanics.model: the dynamic default, and the ideal one the targets were first met with).
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Speed of the whole cncsim process. Targets: fpga-uart six-segment job >= 100x real time (issue 2) and the
-# atmega square job >= 5x (issue 3) and spi-fpga square >= 100x (issue 4), VCD off; the 41,289-line laser pocket
-# of the G-code corpus >= 100x on fpga-uart and >= 20x on spi-fpga, and the atmega rate on a 4,379-line
-# milling-style job (bench/make_milling_job.sh), reported (real jobs issue). Those targets were set and met with the
+# Speed of the whole cncsim process. Targets: fpga-uart six-segment job >= 100x real time, the atmega square job
+# >= 5x and spi-fpga square >= 100x, VCD off; the 41,289-line laser pocket of the G-code corpus >= 100x on
+# fpga-uart and >= 20x on spi-fpga, and the atmega rate on a 4,379-line milling-style job
+# (bench/make_milling_job.sh), reported. Those targets were set and met with the
 # ideal carriage, then the default; each configuration runs with each carriage model named (mechanics.model).
 # Usage: bench/run_bench.sh [build dir] [repetitions] [models]. Prints one Markdown row per configuration and model:
 # simulated seconds per wall second and STEP edges per wall second (median of the repetitions), and peak memory.

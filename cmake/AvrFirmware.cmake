@@ -1,5 +1,5 @@
 # add_avr_firmware(NAME MCU <mcu> F_CPU <hz> SOURCES <c files> [DEFINES <NAME=value>...] [DEPENDS <headers>...])
-# Cross-compiles an AVR firmware with avr-gcc (toolchain.md §5) into ${CMAKE_CURRENT_BINARY_DIR}/NAME.elf, built
+# Cross-compiles an AVR firmware with avr-gcc into ${CMAKE_CURRENT_BINARY_DIR}/NAME.elf, built
 # by the target NAME. The ELF path is the target property AVR_ELF: use $<TARGET_PROPERTY:NAME,AVR_ELF> (tests do
 # so in a compile definition). The firmware gets F_CPU and CNC_MCU_NAME (the MCU name as a string) defined, for
 # simavr's .mmcu section: AVR_MCU(F_CPU, CNC_MCU_NAME); the simavr-avr link flags place that section outside

@@ -14,12 +14,12 @@
 #include <string>
 
 #include "common/bad_input.hpp"
+#include "host/core/cad2g/plan.hpp"
 #include "host/core/cam.hpp"
 #include "host/core/gcode.hpp"
 #include "host/core/machine.hpp"
 #include "host/core/planner/plan_feed.hpp"
 #include "host/core/planner/planner.hpp"
-#include "host/core/seed003/plan.hpp"
 #include "host/core/soft_limits.hpp"
 #include "host/core/steps_file.hpp"
 
@@ -67,14 +67,14 @@ void fpga_uart_cam(const Program& program, const MachineModel& machine) {
 }
 
 void atmega_pc_program(const Program& program, const MachineModel& machine) {
-    seed003::Plan plan;
+    cad2g::Plan plan;
     try {
-        plan = seed003::plan_program(program, machine, seed003::PcOptions{});
+        plan = cad2g::plan_program(program, machine, cad2g::PcOptions{});
     } catch (const cnc::BadInput&) {
         return;
     }
-    (void)seed003::transfers(plan);
-    (void)seed003::motion_segments(plan, machine);
+    (void)cad2g::transfers(plan);
+    (void)cad2g::motion_segments(plan, machine);
 }
 
 bool same_sample(const planner::Sample& a, const planner::Sample& b) {

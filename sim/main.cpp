@@ -1,4 +1,4 @@
-// cncsim: the command line (DESIGN.md §6). Exit codes: 0 ok, 1 run failed, 2 bad input.
+// cncsim: the command line. Exit codes: 0 ok, 1 run failed, 2 bad input.
 #include <unistd.h>
 
 #include <cerrno>
@@ -185,7 +185,7 @@ int check_stdout(int code) {
 int dispatch(int argc, char* argv[]) {
     CLI::App app{"cncsim: co-simulation of CNC / laser motion-control architectures"};
     app.require_subcommand(1);
-    // The SystemC release too: results can differ between kernels (toolchain.md §1 pins 2.3.4).
+    // The SystemC release too: results can differ between kernels (the project is built and tested on 2.3.4).
     app.set_version_flag("--version", std::string("cncsim ") + CNCSIM_VERSION + "\nSystemC " + sc_core::sc_release(),
                          "print the cncsim and SystemC versions and exit");
 

@@ -33,12 +33,12 @@ constexpr int kVecUsartUdre = 19;
 constexpr int kVecUsartTx = 20;
 
 void quiet_logger(avr_t*, const int level, const char* format, va_list ap) {
-    if (level <= LOG_ERROR) std::vfprintf(stderr, format, ap);  // toolchain.md §3: errors only, to stderr
+    if (level <= LOG_ERROR) std::vfprintf(stderr, format, ap);  // errors only, and to stderr: stdout is cncsim's
 }
 
 constexpr avr_cycle_count_t kInterruptResponseCycles = 4;
 
-void no_sleep(avr_t*, avr_cycle_count_t) {}  // toolchain.md pitfall 1: the default usleep()s to wall time
+void no_sleep(avr_t*, avr_cycle_count_t) {}  // simavr's default usleep()s to follow the wall clock
 
 avr_cycle_count_t no_op_timer(avr_t*, avr_cycle_count_t, void*) { return 0; }
 
@@ -98,7 +98,7 @@ AvrChip::AvrChip(const AvrCoreConfig& cfg)
     std::free(fw.eeprom);
     m_avr->frequency = cfg.f_cpu_hz;
     m_avr->sleep = no_sleep;
-    std::uint32_t flags = 0;  // toolchain.md pitfall 2 (simavr's UART is bypassed, but keep it quiet anyway)
+    std::uint32_t flags = 0;  // not the default POLL_SLEEP|STDIO (simavr's UART is bypassed, but keep it quiet)
     avr_ioctl(m_avr, AVR_IOCTL_UART_SET_FLAGS('0'), &flags);
 
     TimerSink& sink = *this;
@@ -321,7 +321,7 @@ void AvrChip::vector_cleared(avr_int_vector_t* v) {
 void AvrChip::vector_entered(avr_int_vector_t* v) {
     if (m_map.mcu == Mcu::Atmega16) external_interrupt_entered(v->vector);
     // Datasheet "Interrupt Response Time": pushing the return address takes at least 4 cycles before the vector
-    // runs; libsimavr 1.6's avr_service_interrupts drops that count (toolchain.md), which put every edge an ISR
+    // runs; libsimavr 1.6's avr_service_interrupts drops that count, which put every edge an ISR
     // writes 4 cycles early. (Waking from sleep costs 4 more on silicon, not modelled: no firmware here sleeps
     // with interrupts on.)
     m_avr->cycle += kInterruptResponseCycles;

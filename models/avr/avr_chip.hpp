@@ -4,15 +4,15 @@
 //
 // What runs where:
 //   * libsimavr executes the instructions, the interrupt controller, the I/O ports and the other peripherals.
-//   * Timer0, Timer1, Timer2 and USART0 are NOT simavr's: their I/O registers are re-routed (avr->io[] read and
-//     write handlers replaced after avr_init) to TimerUnit / UsartUnit, which are driven by one simavr cycle
-//     timer at their next event. simavr 1.6's own timer model registers no timer when prescaler*(OCR+1) <= 1
-//     (no compare match with OCR = 0 at /1), drops a TCNT written while the clock is stopped when the clock
-//     starts (peers.md §7), ignores the free-running prescaler and compare match blocking, mishandles an OCR
-//     written below TCNT in CTC mode and reads a stopped timer's TCNT as 0; its USART sends a byte in 11 bit
-//     times (toolchain.md pitfall 4), clears UDRE0 for a whole byte time, latches the baud rate at the UBRR0L
-//     write, raises RXC0 one such byte time after a byte is injected on UART_IRQ_INPUT, and has no line level
-//     at all. Replacing the units is simpler and more exact than patching them.
+//   * Timer0, Timer1, Timer2 and USART0 are NOT simavr's: their I/O registers are re-routed (avr->io[] read and write
+//     handlers replaced after avr_init) to TimerUnit / UsartUnit, which are driven by one simavr cycle timer at their
+//     next event. simavr 1.6's own timer model registers no timer when prescaler*(OCR+1) <= 1 (no compare match with
+//     OCR = 0 at /1), drops a TCNT written while the clock is stopped when the clock starts (grbl's step pulse reset
+//     relies on it), ignores the free-running prescaler and compare match blocking, mishandles an OCR written below
+//     TCNT in CTC mode and reads a stopped timer's TCNT as 0; its USART sends a byte in 11 bit times (it always counts
+//     a parity bit), clears UDRE0 for a whole byte time, latches the baud rate at the UBRR0L write, raises RXC0 one
+//     such byte time after a byte is injected on UART_IRQ_INPUT, and has no line level at all. Replacing the units is
+//     simpler and more exact than patching them.
 //   * Interrupt flags still go through simavr's vectors (avr_raise_interrupt / avr_clear_interrupt). simavr only
 //     queues an interrupt whose enable bit is set at the moment it is raised, so writes to TIMSKn and UCSR0B
 //     re-raise flags that are already set, and RXC0 / UDRE0 (level interrupts on silicon) are re-raised after

@@ -3,7 +3,7 @@
 //
 // Outputs. Each signal of the pin map (avr.pins) is an sc_out<bool> port, and so is TXD; every change is written
 // at exactly cycle * 62.5 ns (16 MHz). The AVR runs ahead of SystemC time by at most a quantum of cycles
-// (AvrCoreConfig::quantum_cycles, toolchain.md §3 temporal decoupling), then its recorded output changes are
+// (AvrCoreConfig::quantum_cycles: temporal decoupling), then its recorded output changes are
 // replayed at their exact times and the thread waits until SystemC time equals the AVR's time again.
 // A port pin's level is its OCnx output while a timer's COM bits connect it and its DDR bit is set, else its
 // PORT bit (an input pin is pulled up by PORT = 1, or floats and is pulled low by the DRV8825's pull-downs).

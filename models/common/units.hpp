@@ -1,5 +1,5 @@
-// Time and unit conventions shared by every model: SystemC-free, integer picoseconds,
-// so that 20 ns FPGA cycles and 62.5 ns AVR cycles are exact (DESIGN.md §3).
+// Time and unit conventions shared by every model: SystemC-free, integer picoseconds (SystemC's default time
+// resolution), so that 20 ns FPGA cycles and 62.5 ns AVR cycles are exact.
 #pragma once
 #include <cstdint>
 

@@ -54,9 +54,9 @@ TimePs byte_round_trip_ps(const SenderConfig& cfg, const uart::Cp2102Config& lin
 }
 
 PcProgram::PcProgram(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
-                     std::vector<seed003::Transfer> transfers, ConfirmTimeouts timeouts)
+                     std::vector<cad2g::Transfer> transfers, ConfirmTimeouts timeouts)
     : sc_module(name), m_cfg(cfg), m_port(port), m_transfers(std::move(transfers)), m_timeouts(std::move(timeouts)) {
-    for (const seed003::Transfer& t : m_transfers) m_job_bytes += t.bytes.size();
+    for (const cad2g::Transfer& t : m_transfers) m_job_bytes += t.bytes.size();
     SC_HAS_PROCESS(PcProgram);
     SC_THREAD(run);
 }
@@ -80,7 +80,7 @@ bool PcProgram::wait_for_confirm(TimePs deadline_ps, TimePs timeout_ps, const st
         sc_core::wait(ps_time(deadline_ps - now), m_port.data_event());
     }
     const std::uint8_t b = *m_port.read_byte();
-    if (b == seed003::kConfirmByte) return true;
+    if (b == cad2g::kConfirmByte) return true;
     stop_on_mismatch(b, place);
     return false;
 }

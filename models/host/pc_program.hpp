@@ -11,7 +11,7 @@
 //    (up to kShownBytes, as text and hex, read for as long as that many take to arrive);
 //  - no confirm within the confirm timeout is a dead link or firmware: the program stops and says after which
 //    byte. The timeout after a byte is its round trip (byte_round_trip_ps), plus, after the last byte of a
-//    transfer, the motion the firmware runs before it asks for the next one (host/core/seed003/firmware_busy.hpp),
+//    transfer, the motion the firmware runs before it asks for the next one (host/core/cad2g/firmware_busy.hpp),
 //    plus kConfirmMarginPs; before the first byte (after the settle) the round trip and the margin.
 #pragma once
 #include <cstdint>
@@ -23,8 +23,8 @@
 
 #include "common/record_log.hpp"
 #include "common/units.hpp"
+#include "host/core/cad2g/plan.hpp"
 #include "host/core/host_waits.hpp"
-#include "host/core/seed003/plan.hpp"
 #include "host/sender.hpp"
 #include "uart/cp2102.hpp"
 
@@ -45,7 +45,7 @@ inline constexpr std::size_t kShownBytes = 32;
 
 struct ConfirmTimeouts {
     TimePs round_trip_ps = 0;             // byte_round_trip_ps()
-    std::vector<TimePs> motion_after_ps;  // per transfer: seed003::motion_before_next_confirm_s()
+    std::vector<TimePs> motion_after_ps;  // per transfer: cad2g::motion_before_next_confirm_s()
 };
 
 struct PcWrite {
@@ -65,13 +65,13 @@ class PcProgram : public sc_core::sc_module {
 public:
     // Uses the timing fields of SenderConfig: settle_ps, packet_processing_ps, write_latency_ps.
     PcProgram(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
-              std::vector<seed003::Transfer> transfers, ConfirmTimeouts timeouts);
+              std::vector<cad2g::Transfer> transfers, ConfirmTimeouts timeouts);
 
     // Host waits of the job (G4 dwells, M0 pauses, Z moves), one per transfer: slept after the confirm that
     // asks for its first byte (the firmware sends it once the previous motion has ended) and before the write.
     void set_waits(const UnitWaits& waits);
 
-    [[nodiscard]] const std::vector<seed003::Transfer>& transfers() const { return m_transfers; }
+    [[nodiscard]] const std::vector<cad2g::Transfer>& transfers() const { return m_transfers; }
     // Every byte written, numbered over the whole run (size() counts the dropped ones too).
     [[nodiscard]] const RecordLog<PcWrite>& writes() const { return m_writes; }
     // The reader has read the writes before index `end`: they go.
@@ -90,7 +90,7 @@ private:
 
     const SenderConfig m_cfg;
     uart::Cp2102& m_port;
-    const std::vector<seed003::Transfer> m_transfers;
+    const std::vector<cad2g::Transfer> m_transfers;
     const ConfirmTimeouts m_timeouts;
     std::size_t m_job_bytes = 0;
     UnitWaits m_waits;

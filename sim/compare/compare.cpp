@@ -34,7 +34,7 @@ struct Row {
     bool over_baseline = false;
 };
 
-// The machine each run used, then the headline numbers of DESIGN.md §4 in the order a reader compares them.
+// The machine each run used, then the headline numbers of docs/metrics.md in the order a reader compares them.
 constexpr Row kRows[] = {
     {"machine: X steps/mm", "/scenario/machine/x/steps_per_mm", "%.4f", true},
     {"machine: X velocity max [mm/s]", "/scenario/machine/x/max_velocity_mm_per_s", "%.1f", true},

@@ -1,4 +1,4 @@
-// cncsim compare: one job on one machine through several architectures, side by side (DESIGN.md §6). Each
+// cncsim compare: one job on one machine through several architectures, side by side. Each
 // architecture runs in its own child process (`cncsim run`), since SystemC allows one elaboration per process.
 #pragma once
 #include <optional>

@@ -1,5 +1,5 @@
 // What the metrics are computed from: the STEP/DIR edge logs of each axis (as a logic analyser sees
-// them), and, for a simulated run, the executed moves, the tool positions and the laser pin (DESIGN.md §4).
+// them), and, for a simulated run, the executed moves, the tool positions and the laser pin (docs/metrics.md).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -47,10 +47,10 @@ struct MoveSpec {
     TimePs t_end_ps = 0;
 };
 
-// The commanded timed trajectory of a controller with a trajectory planner (DESIGN.md §4: "the planner's continuous
-// profile where there is acceleration"): where the tool should be at each time, as the controller's own clock runs
-// it. With it, following error is measured against it and sync error of every STEP edge against the time it
-// crosses that step (sync_error.hpp), instead of the uniform motion at F from each move's first step.
+// The commanded timed trajectory of a controller with a trajectory planner (docs/metrics.md: sync and following error
+// "with a planner"): where the tool should be at each time, as the controller's own clock runs it. With it, following
+// error is measured against it and sync error of every STEP edge against the time it crosses that step
+// (sync_error.hpp), instead of the uniform motion at F from each move's first step.
 struct CommandedState {
     geom::Vec2 pos_mm;
     geom::Vec2 vel_mm_per_s;  // d pos / dt (0 while the trajectory is held)

@@ -1,4 +1,4 @@
-// Scenario keys of the physical mechanics (issue 10): which model drives the carriage ([mechanics] model,
+// Scenario keys of the physical mechanics (docs/mechanics.md): which model drives the carriage ([mechanics] model,
 // sample rate, integrator), the DRV8825's current regulation ([driver]), the motor ([motor], the same on both
 // axes) and each axis's load ([mechanics.x], [mechanics.y]). read_mechanics_settings() reads them into one
 // struct; axis_params() combines them with the machine's transmission into the axis model's parameters.

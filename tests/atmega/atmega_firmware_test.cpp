@@ -35,7 +35,7 @@ TEST(AtmegaFirmware, FirstStepComesAFixedTimeAfterTheStartByte) {
     EXPECT_EQ(pin.rising().size(), 3200U);  // the timer stopped with the count: no pulse while disabled
 }
 
-// Check 3: a hardware toggle has no jitter: every period is exactly 2 N (OCR + 1) cycles, TIE 0.
+// A hardware toggle has no jitter: every period is exactly 2 N (OCR + 1) cycles, TIE 0.
 TEST(AtmegaFirmware, StepPeriodsAreExactlyTwoNTimesOcrPlusOneCycles) {
     const auto out = run_atmega("speed_10_45");
     const auto rising = out.arch.input.axes[0].step.rising();

@@ -17,7 +17,7 @@ using cnc::test::periods;
 using cnc::test::run_atmega;
 using cnc::test::step_period_ps;
 
-// Check 1 (thesis eqs. 5.1-5.2): 10.45 mm/s at 1/32 -> OCR0A 3 -> 12.207 mm/s measured from the STEP edges.
+// Seed 003 eqs. 5.1-5.2: 10.45 mm/s at 1/32 -> OCR0A 3 -> 12.207 mm/s measured from the STEP edges.
 // The rate error is 1953.125 / 1672 - 1 = +16.81 % (the thesis's rounded 12.20 mm/s gives +16.7 %).
 TEST(AtmegaSpeed, ThesisOcr3MeasuredFromTheStepEdges) {
     const auto out = run_atmega("speed_10_45", {"trace.detail=true"});
@@ -39,7 +39,7 @@ TEST(AtmegaSpeed, ThesisOcr3MeasuredFromTheStepEdges) {
 
 
 
-// Check 3: G1 X20 Y7 at 10 mm/s, every figure from seed 003's arithmetic (spec §4.3-4.6), not from the run:
+// G1 X20 Y7 at 10 mm/s, every figure from seed 003's arithmetic (§5.2.4, §5.4, §5.5, App. A2-A4), not from the run:
 // - PC maths (eqs. 4.74-4.77): dz = sqrt(20^2 + 7^2) = sqrt(449) mm, v_x = 10 x 20/dz = 9.4388 mm/s,
 //   v_y = 10 x 7/dz = 3.3036 mm/s; OCR = f/(2 N v/s) - 1 truncated, f = 16 MHz, N = 1024, s = 1/160 mm:
 //   OCR0A = 5.174 - 1 -> 4, OCR2A = 14.782 - 1 -> 13.
@@ -108,7 +108,7 @@ TEST(AtmegaDiagonal, FortyFiveDegreesKeepsTheRatio) {
                 1e-6);
 }
 
-// Check 3, circle: 180 chords of 2 degrees, Y never counted: each chord's Y error stays in the machine. The
+// The circle: 180 chords of 2 degrees, Y never counted: each chord's Y error stays in the machine. The
 // contour error is reported on the chords (the G00 before it is a dog-leg and has its own).
 TEST(AtmegaCircle, ChordsRunAndContourErrorIsReported) {
     const auto out = run_atmega("circle_r10", {"mechanics.model=ideal"});
@@ -142,7 +142,7 @@ TEST(AtmegaCircle, ShortChordsStarveAndYKeepsStepping) {
     EXPECT_TRUE(has_warning(out, "chords started late"));
 }
 
-// Check 2: 420 mm = 67200 steps does not fit the 16-bit counter: split into two commands, with a warning.
+// 420 mm = 67200 steps does not fit the 16-bit counter: split into two commands, with a warning.
 TEST(AtmegaLongMove, SplitAndReported) {
     const auto out = run_atmega("long_move", {"mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
@@ -154,7 +154,7 @@ TEST(AtmegaLongMove, SplitAndReported) {
     EXPECT_EQ(*out.metrics.path.job_end_um, 0.0);
 }
 
-// Check 2, as the seed's registers would take it: 67200 mod 65536 = 1664 steps, and the metrics show the miss.
+// The same move as the seed's registers would take it: 67200 mod 65536 = 1664 steps, and the metrics show the miss.
 TEST(AtmegaLongMove, WrappedAsTheSeedWouldIsReported) {
     const auto out = run_atmega("long_move", {"atmega.long_moves=wrap", "mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
@@ -163,7 +163,7 @@ TEST(AtmegaLongMove, WrappedAsTheSeedWouldIsReported) {
     EXPECT_NEAR(*out.metrics.path.job_end_um, 65536 * 6.25, 1e-6);  // 409.6 mm short
 }
 
-// Check 4: the MCU transmits at UBRR0 = 16: 272 cycles (17 us) a bit, 58 823.5 Bd. The confirm is 0x06.
+// The MCU transmits at UBRR0 = 16: 272 cycles (17 us) a bit, 58 823.5 Bd. The confirm is 0x06.
 TEST(AtmegaLink, UsartRunsAt58823BaudAndDeliversEveryByte) {
     const auto out = run_atmega("square_20mm");
     ASSERT_TRUE(out.ok) << out.failure;

@@ -11,12 +11,12 @@ using cnc::TimePs;
 using cnc::sim::ChordGapFold;
 using cnc::sim::ChordGaps;
 using cnc::sim::MotionWindow;
-namespace s3 = cnc::host::seed003;
+namespace cad2g = cnc::host::cad2g;
 
 namespace {
 
 // A G01 (command 0), then an arc of three chords (command 1) and its terminator.
-const std::vector<s3::Transfer> kTransfers{{0, 0, {}}, {1, 0, {}}, {1, 1, {}}, {1, 2, {}}, {1, -1, {}}};
+const std::vector<cad2g::Transfer> kTransfers{{0, 0, {}}, {1, 0, {}}, {1, 1, {}}, {1, 2, {}}, {1, -1, {}}};
 
 // The windows as MotionWindowFold gives them (command, motion, begin, end, complete, Y steps before the begin and
 // through the end). Chord 0 ends at 400 and chord 1 is reloaded at 405, Y stepping twice meanwhile (5 -> 7);

@@ -14,7 +14,7 @@
 #include "uart/cp2102.hpp"
 
 using cnc::TimePs;
-namespace s3 = cnc::host::seed003;
+namespace cad2g = cnc::host::cad2g;
 
 namespace {
 
@@ -32,7 +32,7 @@ struct Handed {
 }  // namespace
 
 TEST(AtmegaLinkBytes, DroppedAsReadHoldAByteInFlightAndKeepTheCounts) {
-    const std::vector<s3::Transfer> transfers{{0, 0, {0x01, 0x10, 0x20, 0x30, 0x40, 0x50}},
+    const std::vector<cad2g::Transfer> transfers{{0, 0, {0x01, 0x10, 0x20, 0x30, 0x40, 0x50}},
                                               {1, 0, {0x02, 0x11, 0x21, 0x31}},
                                               {1, 1, {0x12, 0x22, 0x32, 0x42}}};
     const cnc::uart::Cp2102Config link;
@@ -48,7 +48,7 @@ TEST(AtmegaLinkBytes, DroppedAsReadHoldAByteInFlightAndKeepTheCounts) {
                             {cnc::host::byte_round_trip_ps(sender, link), {}});
     sc_core::sc_spawn([&] {  // the first confirm once the port has settled, then one per byte received
         sc_core::wait(at(sender.settle_ps + kMs));
-        const std::uint8_t confirm = s3::kConfirmByte;
+        const std::uint8_t confirm = cad2g::kConfirmByte;
         mcu.usb_write(&confirm, 1);
         for (;;) {
             sc_core::wait(mcu.data_event());

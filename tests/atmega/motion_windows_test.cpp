@@ -6,7 +6,7 @@
 
 #include "architectures/atmega/motion_windows.hpp"
 
-namespace s3 = cnc::host::seed003;
+namespace cad2g = cnc::host::cad2g;
 using cnc::EdgeLog;
 using cnc::sim::MotionWindow;
 
@@ -14,11 +14,11 @@ namespace {
 
 EdgeLog log(const char* name, bool initial, std::vector<cnc::Edge> edges) { return EdgeLog{name, initial, edges}; }
 
-s3::Plan g01_then_arc_of_three() {
-    s3::Plan p;
-    p.commands.push_back({s3::CommandId::G01, {s3::Motion{}}});
-    p.commands.push_back({s3::CommandId::G03, {s3::Motion{}, s3::Motion{}, s3::Motion{}}});
-    p.commands.push_back({s3::CommandId::M30, {}});
+cad2g::Plan g01_then_arc_of_three() {
+    cad2g::Plan p;
+    p.commands.push_back({cad2g::CommandId::G01, {cad2g::Motion{}}});
+    p.commands.push_back({cad2g::CommandId::G03, {cad2g::Motion{}, cad2g::Motion{}, cad2g::Motion{}}});
+    p.commands.push_back({cad2g::CommandId::M30, {}});
     return p;
 }
 
@@ -92,8 +92,8 @@ EdgeLog y_pulses() {
 }
 
 // The fold fed the pins cut at `cuts` (each slice's logs as EdgeRecorder::take_before hands them over).
-std::vector<MotionWindow> fold_in_slices(const s3::Plan& plan, Pins p, EdgeLog y, const std::vector<cnc::TimePs>& cuts,
-                                         cnc::TimePs t_end) {
+std::vector<MotionWindow> fold_in_slices(const cad2g::Plan& plan, Pins p, EdgeLog y,
+                                         const std::vector<cnc::TimePs>& cuts, cnc::TimePs t_end) {
     cnc::sim::MotionWindowFold fold(plan);
     for (const cnc::TimePs cut : cuts) {
         const EdgeLog en_x = p.en_x.take_before(cut), en_y = p.en_y.take_before(cut);
@@ -120,7 +120,7 @@ TEST(MotionWindows, FedSliceBySliceEqualsTheWholeRun) {
                 << "cut at " << t;
         }
     }
-    const s3::Plan plan = g01_then_arc_of_three();
+    const cad2g::Plan plan = g01_then_arc_of_three();
     cnc::sim::MotionWindowFold fold(plan);
     Pins q = arc_pins();
     const auto read_before = [&](cnc::TimePs cut) {

@@ -1,5 +1,5 @@
 // The ATmega16 (seed 002: 8 MHz) on the AVR model: the timer modes of the seed's firmware, INT0/INT1 on falling
-// edges, and the interrupt response time on both MCUs (issue 12 check 5). Expected cycles from the ATmega16
+// edges, and the interrupt response time on both MCUs. Expected cycles from the ATmega16
 // datasheet (doc2466) rules quoted in each test; the test firmwares are models/avr/firmware/tests/m16_*.c.
 #include <gtest/gtest.h>
 

@@ -82,8 +82,8 @@ TEST(AvrTimerFidelity, CtcWithOcrZeroTogglesAtEveryTimerClock) {
 }
 
 TEST(AvrTimerFidelity, CtcWithOcrZeroAndNoPrescalerTogglesEveryCycle) {
-    // CTC, OCR2A = 0, N = 1: a match at every cycle, OC2A toggles every cycle (8 MHz square wave). Stock
-    // libsimavr 1.6 computes prescaler * (OCR + 1) = 1, registers no timer and never toggles (peers.md §7 bug 1).
+    // CTC, OCR2A = 0, N = 1: a match at every cycle, OC2A toggles every cycle (8 MHz square wave). Stock libsimavr 1.6
+    // computes prescaler * (OCR + 1) = 1, registers no timer and never toggles (so grbl's stepper never starts).
     AvrBench b(config_for(AVR_FW_CTC_T2_OCR0_N1_ELF));
     b.run_until_ps(100 * cnc::kPsPerUs);
     const Cycle w = first_rise(b, "dir_x") + 1;  // sts TCCR2B
@@ -113,7 +113,7 @@ TEST(AvrTimerFidelity, Timer1OcrZeroCompareInterruptRuns) {
 TEST(AvrTimerFidelity, TcntWrittenWhileStoppedIsWhereCountingStarts) {
     // Timer0 stopped, TCNT0 = 150, OCR0A = 200, N = 8, prescaler released at g: the counter counts on from 150
     // and the first compare match comes after (OCR - TCNT + 1) * N = 51 * 8 = 408 cycles, then every
-    // 201 * 8 = 1608. Stock libsimavr 1.6 restarts from 0 (peers.md §7 bug 2): first edge after 1608 cycles.
+    // 201 * 8 = 1608. Stock libsimavr 1.6 restarts from 0 (drops the preload): first edge after 1608 cycles.
     AvrBench b(config_for(AVR_FW_PRELOAD_T0_ELF));
     b.run_until_ps(2 * cnc::kPsPerMs);
     const Cycle g = first_rise(b, "dir_x") - 1;

@@ -80,7 +80,7 @@ std::vector<Cycle> toggle_cycles(const std::vector<PinState>& pins) {
 
 TEST(AvrTimerUnit, Timer1CtcPeriodIsOcrPlusOneTicks) {
     // Timer1 mode 4 (CTC, TOP = OCR1A = 1599), N = 1, COM1A = toggle: OCF1A and a toggle every 1600 cycles
-    // (the 10 kHz ISR of toolchain.md §3), first at start + 1600.
+    // (the 10 kHz ISR of firmware/tests/bench_idle.c), first at start + 1600.
     Fixture f(kTimer1);
     f.unit.write_ocr(0, Channel::A, 1599);
     f.unit.write_tccra(0, 0x40);        // COM1A0

@@ -88,7 +88,7 @@ def main():
                     failures.append("count of %s is %d for %d lines" % (w["word"], w["count"], len(w["lines"])))
             if r["gcode"]["moves"] == 0:
                 failures.append("no XY move was run")
-            # The default report stays small whatever the job's length (real jobs issue: under 5 MB).
+            # The default report stays small whatever the job's length: under 5 MB.
             if os.path.getsize(report) >= 5 * 1024 * 1024:
                 failures.append("default report is %d bytes, not under 5 MB" % os.path.getsize(report))
     else:

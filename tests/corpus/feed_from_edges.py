@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The report's feed error against the feed the run's STEP edges give (trust issue, checks 1 and 2).
+"""The report's feed error against the feed the run's STEP edges give.
 
 Independent of the metrics library: it reads the run's VCD itself, interprets the G-code job itself (G0-G3, G20/G21,
 G90/G91, X Y I J F) and measures each cutting move's feed from the edges, then compares it with the report's
@@ -23,7 +23,8 @@ position on the step grid (origin 0,0, steps/mm from the report's scenario secti
 
 Usage: feed_from_edges.py CNCSIM ARCH WORKDIR [--require-all] SCENARIO...
   Runs each scenario (G-code jobs) on ARCH; each must run ok. --require-all: every cutting move must be compared
-  (check 2). invariants.py uses compare_feeds() on the runs it makes over every shipped scenario (check 1).
+  (scenario/feed_from_edges.spi-fpga). invariants.py uses compare_feeds() on the runs it makes over every shipped
+  scenario.
 """
 import json
 import math
@@ -33,7 +34,7 @@ import subprocess
 import sys
 
 STRICT_PCT = 1.5e-4   # the report's feed_error_pct is rounded to 1e-4 %
-PLANNER_REL = 0.01    # check 2: within 1 % of the edges' own feed
+PLANNER_REL = 0.01    # with a planner: within 1 % of the edges' own feed
 STEADY_REL = 0.005    # a middle whose halves differ by more is not at constant feed
 PATH_TOL_MM = 0.05
 

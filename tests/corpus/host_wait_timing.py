@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The time a G-code word that is not an XY move adds to a job, on one architecture (issue check 2).
+"""The time a G-code word that is not an XY move adds to a job, on one architecture.
 
 The same two-move job runs twice: without and with the word between the moves. The job time must grow by the
 word's own time, derived here from the G-code alone, plus at most the architecture's overhead:

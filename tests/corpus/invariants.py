@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Timing invariants over every shipped scenario run on one architecture (trust issue, check 1).
+"""Timing invariants over every shipped scenario run on one architecture.
 
 For every scenarios/*/*.toml run with scenario.architecture = ARCH (a steps-file job only on fpga-uart): a run
 that ends ok has motion time <= job time, every dead time >= 0, lead-in >= 0 and tail >= 0, and (G-code jobs) the

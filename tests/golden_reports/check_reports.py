@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Every shipped scenario's report equals its committed golden (bounded-memory issue, check 2).
+"""Every shipped scenario's report equals its committed golden.
 
-The goldens in tests/data/golden_reports were captured from the metrics of the trust issue's part 1 (feed error,
-motion and dead time on programmed moves), reviewed, before the metrics were made to stream, so that the streaming
+The goldens in tests/data/golden_reports were captured from the metrics that measure feed error, motion and dead
+time on programmed moves, reviewed, before the metrics were made to stream, so that the streaming
 code must give the same reports. One golden per scenarios/**/*.toml run on its own architecture, and one per compare
 run below: {"exit": exit code, "report": the JSON report}. Numbers must agree to a relative 1e-9 (an absolute
 1e-12 near 0): the same definitions summed in another order may differ in the last bits, nothing more. No report

@@ -1,5 +1,5 @@
-// The shipped scenarios/lathe-sync/ runs (issue 12), one test each, asserting their key numbers against the seed
-// (seed 002 §7, §8.3, §10) and check 3's bounds.
+// The shipped scenarios/lathe-sync/ runs, one test each, asserting their key numbers against the seed
+// (seed 002 §7, §8.3, §10) and the thread's bounds (passes within 2 motor pulses, pitch within 0.1 %).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -98,7 +98,7 @@ void expect_m6_vcd() {
     std::filesystem::remove(m6_vcd_path());
 }
 
-// §7: 1.0 mm is exactly 780/127. Check 3's bounds on the settled thread (2 revolutions left out, the default):
+// §7: 1.0 mm is exactly 780/127. The bounds on the settled thread (2 revolutions left out, the default):
 // the passes end within 2 motor pulses of pass 1, and the thread's fitted pitch is within 0.1 % (1 um). One run
 // (25 s of CPU) for the thread, its LCD transcript and its VCD.
 TEST(LatheScenario, M6Thread) {

@@ -1,4 +1,4 @@
-// Issue 12 checks 3 and 4: the seed 002 firmware (our C, on the ATmega16 model) cutting an M6 thread (1.0 mm) as a
+// The seed 002 firmware (our C, on the ATmega16 model) cutting an M6 thread (1.0 mm) as a
 // machinist would key it in (§6.6): 1 (cut), 3 (thread), pitch 1#00 D, 1 (hand), length 10 D, then D to cut and
 // D to retract, pass after pass. Thread metrics as docs/metrics.md "Lathe" (models/lathe/core/thread_metrics).
 #include <gtest/gtest.h>
@@ -53,7 +53,7 @@ ThreadMetrics m6_metrics(const std::vector<ThreadPass>& passes, int settle_revol
     return m;
 }
 
-// Check 3 with the pulse ISRs made atomic (seed option PULSE_ISR_ATOMIC, control.c, §11.9), at 60 rpm, leaving out
+// With the pulse ISRs made atomic (seed option PULSE_ISR_ATOMIC, control.c, §11.9), at 60 rpm, leaving out
 // the first 2 revolutions of each pass: the passes end on one helix (the last common revolution within 2 motor
 // pulses, 8.14 um, of pass 1) and the thread's mean pitch is within 0.1 % (1 um per revolution at 1 mm).
 // What the seed's loop does not do, asserted so that the report's figures stay explained:

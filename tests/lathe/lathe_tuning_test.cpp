@@ -1,4 +1,4 @@
-// Issue 12 check 2: seed 002's tuning mode (our firmware, models/avr/firmware/lathe_sync/tuning.c) on the ATmega16
+// Seed 002's tuning mode (our firmware, models/avr/firmware/lathe_sync/tuning.c) on the ATmega16
 // model, driving the derived motor (models/lathe/core/dc_motor.hpp) through the L298: the period record it writes
 // to EEPROM against the seed's decoded dump (§8.3).
 //

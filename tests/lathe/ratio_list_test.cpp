@@ -1,4 +1,4 @@
-// Issue 12 check 1: the firmware's B(n) list for the pitches of seed 002 §7, against the seed's own numbers.
+// The firmware's B(n) list for the pitches of seed 002 §7, against the seed's own numbers.
 #include <gtest/gtest.h>
 
 #include <cmath>

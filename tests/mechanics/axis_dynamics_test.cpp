@@ -1,4 +1,5 @@
-// The physical axis model against analytic solutions (issue 10, checks 1, 2, 3, 4, 6).
+// The physical axis model against analytic solutions: rest angles, the torque-angle curve, the belt's natural
+// frequency, energy conservation and the leadscrew's backlash.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,7 +33,7 @@ constexpr TimePs kSettlePs = 200 * kPsPerMs;
 }  // namespace
 
 TEST(AxisDynamics, RestsAtEachMicrostepAngleWithoutDetent) {
-    // Check 1. The set-points are I (cos phi, sin phi), phi = 45 deg + k x 2.8125 deg (SLVSA73 table), so
+    // The set-points are I (cos phi, sin phi), phi = 45 deg + k x 2.8125 deg (SLVSA73 table), so
     // T_em = K_m I sin(phi - psi) vanishes (stably) at psi = phi: theta = k x 1.8 deg / 32 exactly.
     const AxisParams p = bare_rotor();
     DynamicAxis axis(p);
@@ -49,7 +50,7 @@ TEST(AxisDynamics, RestsAtEachMicrostepAngleWithoutDetent) {
 }
 
 TEST(AxisDynamics, ReportsTheMicrostepErrorOfTheDetentTorque) {
-    // Check 1 with the 42BYGHW208 detent torque (150 g cm): the rest angle solves
+    // As above, with the 42BYGHW208 detent torque (150 g cm): the rest angle solves
     //   K_m I sin(phi - psi(theta)) = T_det sin(4 N_r theta)
     // which this test solves by bisection (independently of the integrator) and compares.
     AxisParams p = bare_rotor();
@@ -80,7 +81,7 @@ TEST(AxisDynamics, ReportsTheMicrostepErrorOfTheDetentTorque) {
 }
 
 TEST(AxisDynamics, ExternalTorqueDisplacesAlongTheTorqueAngleCurve) {
-    // Check 2. T = T_hold sin(N_r dtheta) with T_hold = K_m I = 0.2746 / (sqrt(2) 0.4) x 0.3 = 0.14563 N m.
+    // T = T_hold sin(N_r dtheta) with T_hold = K_m I = 0.2746 / (sqrt(2) 0.4) x 0.3 = 0.14563 N m.
     // A torque of T_hold / 2 moves the rotor by asin(0.5) / 50 = 0.0104720 rad (0.6 deg) along it.
     const AxisParams p = bare_rotor();
     DynamicAxis axis(p);
@@ -139,7 +140,7 @@ TEST(AxisDynamics, ARotorOnTheUnstableEquilibriumSlipsOnceNotToAndFro) {
 }
 
 TEST(AxisDynamics, BeltCarriageRingsAtItsNaturalFrequency) {
-    // Check 3. Shaft held (rotor inertia 1000 kg m2 against a carriage reflecting 3.8 kg x (6.37 mm)^2),
+    // Shaft held (rotor inertia 1000 kg m2 against a carriage reflecting 3.8 kg x (6.37 mm)^2),
     // no damping or friction, carriage at 200 mm released 10 um off the belt's neutral position.
     // k = c_sp / L1 + c_sp / L2 = 20000 / 0.25 + 20000 / 0.31 = 144516 N/m; f = sqrt(k / m) / 2 pi
     // = sqrt(144516 / 3.8) / 2 pi = 31.04 Hz.
@@ -173,7 +174,7 @@ TEST(AxisDynamics, BeltCarriageRingsAtItsNaturalFrequency) {
 }
 
 TEST(AxisDynamics, ConservesEnergyWithoutDampingFrictionOrInput) {
-    // Check 4. Driver off (the currents stay 0: the bridge voltage equals the back-EMF, 0.49 V/(rad/s) x
+    // Driver off (the currents stay 0: the bridge voltage equals the back-EMF, 0.49 V/(rad/s) x
     // 7.85 rad/s = 3.8 V < 12 V), no viscous, Coulomb, rail or belt losses; detent and belt are conservative.
     // Start: carriage and shaft at 50 mm/s (7.85 rad/s on the 6.366 mm pulley radius), belt stretched 20 um.
     // E = J w^2/2 + m v^2/2 + k(x) (r theta - x)^2/2 + T_det/(4 N_r) (1 - cos 4 N_r theta) stays constant.
@@ -196,7 +197,7 @@ TEST(AxisDynamics, ConservesEnergyWithoutDampingFrictionOrInput) {
 }
 
 TEST(AxisDynamics, LeadscrewReversalHasADeadZoneOfTheBacklash) {
-    // Check 6. Tr8x8 screw (lead 8 mm), backlash 0.1 mm, 1 kg carriage, 5 N rail friction, 5e7 N/m axial
+    // Tr8x8 screw (lead 8 mm), backlash 0.1 mm, 1 kg carriage, 5 N rail friction, 5e7 N/m axial
     // stiffness. Forward 1 mm and settle, then back 0.25 mm and settle: the screw turns through the play
     // before the nut pushes the carriage, so the carriage comes back by the screw's travel less the
     // backlash. The lost motion equals 0.1 mm within the two contact deflections (at most F / k = 5 N /

@@ -8,7 +8,7 @@
 using namespace cnc::mech;
 
 TEST(Drv8825Modes, AllEightPinCombinations) {
-    // {m2, m1, m0} -> microsteps (DRV8825 data sheet; peers.md §4)
+    // {m2, m1, m0} -> microsteps (DRV8825 data sheet, TI SLVSA73)
     const int want[8] = {1, 2, 4, 8, 16, 32, 32, 32};
     for (int code = 0; code < 8; ++code) {
         const ModePins p{(code & 1) != 0, (code & 2) != 0, (code & 4) != 0};
@@ -28,7 +28,7 @@ TEST(Drv8825Modes, InverseRoundTripsAndRejectsOtherValues) {
 TEST(Drv8825Modes, IndexerCurrentsMatchTheDataSheetTable) {
     EXPECT_DOUBLE_EQ(electrical_step_deg(32), 2.8125);
     EXPECT_DOUBLE_EQ(electrical_step_deg(1), 90.0);
-    // First octant of the 1/32 table (peers.md §4), from 0 deg (units -16) to the 45 deg home state (units 0).
+    // First octant of the 1/32 indexer table (TI SLVSA73), from 0 deg (units -16) to the 45 deg home state (units 0).
     const int a[17] = {100, 100, 100, 99, 98, 97, 96, 94, 92, 90, 88, 86, 83, 80, 77, 74, 71};
     const int b[17] = {0, 5, 10, 15, 20, 24, 29, 34, 38, 43, 47, 51, 56, 60, 63, 67, 71};
     for (int k = 0; k <= 16; ++k) {

@@ -1,4 +1,4 @@
-// Pull-out torque against the analytic holding torque and corner speed (issue 10, check 7).
+// Pull-out torque against the analytic holding torque and corner speed.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -56,7 +56,7 @@ TEST(MotorCurve, RequiredTorqueIsTheRailFrictionThroughThePulley) {
 }
 
 TEST(MotorCurve, AStepJumpFarAboveThePullOutRateLosesWholeElectricalPeriods) {
-    // Check 5 on the core: the seed X axis (3.8 kg) commanded from rest straight to 800 full steps/s
+    // Lost steps on the core alone: the seed X axis (3.8 kg) commanded from rest straight to 800 full steps/s
     // (160 mm/s), where even the steady pull-out torque (0.074 N m) is barely 5 x the rail friction's, loses
     // steps, and every slip is a whole electrical period: 4 full steps. At 50 full steps/s (10 mm/s) it
     // follows.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Peak memory does not grow with the job (bounded-memory issue, check 1).
+"""Peak memory does not grow with the job.
 
 Generates a 10,000-line and a 100,000-line laser raster (bench/make_raster_job.py), runs each on the given
 architecture (VCD off) and requires cncsim's own peak RSS (wait4's ru_maxrss, taken by bench/child_peak_rss so

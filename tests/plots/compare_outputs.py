@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks 2 and 3 of issue 11 on what `cncsim compare --out DIR` (and `cncsim run --plots DIR`) write:
+"""What `cncsim compare --out DIR` (and `cncsim run --plots DIR`) write, checked:
 every SVG is well-formed XML (xmllint) with its title and both axis labels as text; every PNG decodes and is not
 blank (Pillow reads its pixels); index.html parses as HTML (xmllint --html) without a message and refers only to
 files in its own folder.

@@ -1,4 +1,4 @@
-# Issue 9: bad input found accepted or misreported (exit 2 naming the file, line or key, nothing simulated or
+# Bad input once found accepted or misreported (exit 2 naming the file, line or key, nothing simulated or
 # written), inputs within the machine, output paths checked before a run, and write errors that fail it (exit 1).
 # Included from tests/sim/CMakeLists.txt, which defines cnc_bad_input_test, BAD and SQUARE.
 set(ROBUST ${CMAKE_CURRENT_BINARY_DIR}/robust)
@@ -24,7 +24,7 @@ function(cnc_cli_test NAME LABEL EXIT)
   set_tests_properties(${LABEL}/${NAME} PROPERTIES LABELS golden ENVIRONMENT "${CNC_TEST_ENV}")
 endfunction()
 
-# --- Bad input, one test each (issue check 4) ---
+# --- Bad input, one test each ---
 cnc_bad_input_test(steps_file_without_header ${BAD}/no_header_steps.toml "no_header.steps:1: a data row where the header belongs")
 cnc_cli_test(bad_input.analyze_steps_per_mm_nan golden 2
   CMD analyze ${PROJECT_SOURCE_DIR}/tests/data/vcd/capture_with_bus.vcd --step step_x --dir dir_x --steps-per-mm nan
@@ -63,7 +63,7 @@ endforeach()
 cnc_bad_input_test(spi_feed_below_rate_word ${BAD}/slow_feed_spi.toml
                    "slow_feed[.]nc:3: feed 0[.]01 mm/min .* slower than the spi-fpga rate word's slowest step")
 
-# --- Output paths (issue check 3) ---
+# --- Output paths ---
 file(MAKE_DIRECTORY ${ROBUST}/folder.vcd)
 cnc_cli_test(output.vcd_is_a_folder golden 2 CMD run ${SQUARE} --vcd ${ROBUST}/folder.vcd --progress off
   MATCH "^cncsim: --vcd .*folder[.]vcd: is a folder, not a file\n$")

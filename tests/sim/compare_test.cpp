@@ -55,7 +55,7 @@ TEST(CompareSquare, EachArchitectureShowsItsOwnCost) {
     EXPECT_GT(metric(spi, "metrics/path/following_max_um"), 20.0);
 }
 
-// One machine for every architecture (trust issue, check 4): an X velocity limit of 1 mm/s holds each
+// One machine for every architecture: an X velocity limit of 1 mm/s holds each
 // architecture's two 20 mm X sides of the square to at least 20 s each, where F800 would take 1.5 s.
 TEST(CompareSquare, TheMachineVelocityLimitHoldsEveryArchitecture) {
     const auto cols = run_compare_json(std::string(CNC_SOURCE_DIR) +

@@ -1,4 +1,4 @@
-// Whole fpga-uart runs against the seed 000 numbers (issue checks 2 to 7). The checks that work a position out of
+// Whole fpga-uart runs against the seed 000 numbers. The tests that work a position out of
 // step counts set mechanics.model=ideal: a carriage that moves one microstep per step, so step_gen's staircase
 // alone decides where the tool is.
 #include <gtest/gtest.h>
@@ -66,7 +66,7 @@ double circle_staircase_contour_max_um(const nlohmann::json& packets) {
 }
 }  // namespace
 
-// Check 2: the packet 01 00 00 01 40 FF FF FF 60 04 B0 on the real chain.
+// The packet 01 00 00 01 40 FF FF FF 60 04 B0 on the real chain.
 TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
     const auto out = run_shipped("worked_example", {}, true);
     ASSERT_TRUE(out.ok) << out.failure;
@@ -122,7 +122,7 @@ TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
     EXPECT_EQ(starts.size(), 4U);  // 0xAA LSB first: the start bit and three 1->0 data transitions: one byte
 }
 
-// Check 3: the six segments of the thesis's log: motion time from the cycle model, and the dead time parts.
+// The six segments of the thesis's log: motion time from the cycle model, and the dead time parts.
 TEST(FpgaUartSixSegment, MotionTimeAndDeadTimeBreakdown) {
     const auto out = run_shipped("six_segment");
     ASSERT_TRUE(out.ok) << out.failure;
@@ -154,7 +154,7 @@ TEST(FpgaUartSixSegment, MotionTimeAndDeadTimeBreakdown) {
     EXPECT_NEAR(mean.at("total_ms").get<double>(), *out.metrics.timing.dead_mean_ms, 1e-9);
 }
 
-// Check 4: a period counter on a 50 MHz clock scores at most one clock of TIE on every constant-rate run.
+// A period counter on a 50 MHz clock scores at most one clock of TIE on every constant-rate run.
 class FpgaUartTie : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(FpgaUartTie, TieMaxWithinOneClock) {
@@ -170,7 +170,7 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, FpgaUartTie,
                          ::testing::Values("worked_example", "worked_347", "six_segment", "square_20mm",
                                            "diagonal_45", "circle_r10"));
 
-// Check 5: seed 000 §3.4.7, G1 X10 Y5 F1000 from the origin at 160 steps/mm.
+// Seed 000 §3.4.7: G1 X10 Y5 F1000 from the origin at 160 steps/mm.
 TEST(FpgaUartWorked347, StepsFeedPeriodsMoveTimeAndResultantFeed) {
     const auto out = run_shipped("worked_347", {"trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
@@ -187,7 +187,7 @@ TEST(FpgaUartWorked347, StepsFeedPeriodsMoveTimeAndResultantFeed) {
     EXPECT_NEAR(*move.timing.feed_error_pct, (std::sqrt(125.0) / 0.671136 * 60 / 1000 - 1) * 100, 1e-9);
 }
 
-// Check 5, second half: on the 45° diagonal the packet feed 1000/sqrt(2) = 707.1 -> 707 and the period
+// The same arithmetic on the 45° diagonal: the packet feed 1000/sqrt(2) = 707.1 -> 707 and the period
 // 18,750,000 / 707 = 26,520.5 -> 26,520 clocks leave a feed error the metrics must show.
 TEST(FpgaUartDiagonal, FeedErrorOfTheIntegerFeedAndTruncatedPeriod) {
     const auto out = run_shipped("diagonal_45", {"trace.detail=true"});
@@ -203,7 +203,7 @@ TEST(FpgaUartDiagonal, FeedErrorOfTheIntegerFeedAndTruncatedPeriod) {
     EXPECT_LT(*move.timing.feed_error_pct, 0.0);  // 707 < 707.1: slower than programmed
 }
 
-// Check 6: the circle's contour error stays within the chord tolerance plus one step, and is what the staircase
+// The circle's contour error stays within the chord tolerance plus one step, and is what the staircase
 // of step_gen over the chords gives (7.796 um, on four chords, one per quadrant).
 TEST(FpgaUartCircle, ContourErrorWithinChordTolerancePlusOneStep) {
     const auto out = run_shipped("circle_r10", {"mechanics.model=ideal", "trace.detail=true"});
@@ -256,7 +256,7 @@ TEST(FpgaUartOverflow, Wrap32ReproducesTheAppendixRtl) {
     EXPECT_NE(out.arch.warnings.at(0).text.find("used the wrapped period"), std::string::npos);
 }
 
-// Check 7: a 12 s move against send_steps.py's 10 s ACK timeout.
+// A 12 s move against send_steps.py's 10 s ACK timeout.
 TEST(FpgaUartLongMove, SeedFaithfulSenderReportsAckTimeout) {
     const auto out = run_shipped("long_move_timeout", {"trace.detail=true"});
     EXPECT_FALSE(out.ok);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""`cncsim run --samples FILE` writes the tool samples as a CSV a user can load (bounded-memory issue, part 2).
+"""`cncsim run --samples FILE` writes the tool samples as a CSV a user can load.
 
 Runs scenarios/fpga-uart/square_20mm.toml with the ideal mechanics (one microstep per step, so the rows follow from
 the step counts) and loads the file with the csv module. Goldens from the job

@@ -1,5 +1,5 @@
 // The spi-fpga scenario keys (sim/architectures/spi_fpga/spi_fpga_settings.cpp): defaults, units, and the refusals that name
-// the key (issue 4 check 6 at the loader level; the CLI's exit code 2 is checked by the bad_input ctests).
+// the key (at the loader level; the CLI's exit code 2 is checked by the bad_input ctests).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -59,7 +59,7 @@ TEST(SpiFpgaSettings, Defaults) {
     EXPECT_DOUBLE_EQ(c.planner.path_tolerance_mm, 0.05);
 }
 
-TEST(SpiFpgaSettings, TheIssuesCommandLineKeys) {
+TEST(SpiFpgaSettings, SetOnTheCommandLineOverridesTheKeys) {
     const auto s = cnc::sim::load_scenario(write_scenario("cli", kJob),
                                            {"host.servo_period_us=500", "host.latency_max_us=80",
                                             "planner.mode=\"exact-stop\"", "fpga_spi.rate_apply=\"at-next-pulse\"",

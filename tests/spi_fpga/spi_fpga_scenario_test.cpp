@@ -1,4 +1,4 @@
-// Whole spi-fpga runs (issue 4 checks 1, 2, 4 and 5): servo thread -> SPI -> FPGA -> DRV8825 machine -> metrics.
+// Whole spi-fpga runs: servo thread -> SPI -> FPGA -> DRV8825 machine -> metrics.
 // The checks that work a position out of step counts set mechanics.model=ideal: a carriage that moves one microstep
 // per step, so the plan and the counts alone decide where the tool is.
 #include <gtest/gtest.h>
@@ -25,7 +25,7 @@ TimePs apply_time(TimePs t_ss_rise) { return (t_ss_rise / kClockPs + 1 + 2 + 1) 
 
 }  // namespace
 
-// Check 1: within each servo period the STEP train is the rate word's period exactly; words change only when a
+// Within each servo period the STEP train is the rate word's period exactly; words change only when a
 // frame arrives (once per servo period); the cruise of a 3200 steps/s move is one word, 15,625 clocks.
 TEST(SpiFpgaConstantRate, StepPeriodIsTheWordsPeriodAndChangesOnlyAtFrames) {
     const auto out = run_spi("long_x", {"trace.detail=true"});
@@ -82,7 +82,7 @@ TEST(SpiFpgaConstantRate, StepPeriodIsTheWordsPeriodAndChangesOnlyAtFrames) {
     EXPECT_EQ(*out.metrics.pulse.jitter_pp_max_ns, 0.0);
 }
 
-// Check 4: every transfer holds SS low for 72 bits / SCLK + cs_setup + cs_hold = 14.4 + 2 = 16.4 us, starting at
+// Every transfer holds SS low for 72 bits / SCLK + cs_setup + cs_hold = 14.4 + 2 = 16.4 us, starting at
 // the servo thread's wake-up; the report gives the same and its share of the period.
 TEST(SpiFpgaTransfer, SsLowIsFrameBitsOverSclkPlusTheChipSelectGaps) {
     const auto out = run_spi("long_x", {"trace.detail=true"});
@@ -115,7 +115,7 @@ TEST(SpiFpgaTransfer, SlowerClockLongerTransfer) {
     EXPECT_DOUBLE_EQ(out.report["spi-fpga"]["spi"]["transfer_us"].get<double>(), 74.0);
 }
 
-// Check 5: continuous mode crosses colinear joins at speed: no period at path speed 0 between start and end, and
+// Continuous mode crosses colinear joins at speed: no period at path speed 0 between start and end, and
 // the gaps between moves are one STEP period; exact-stop comes to rest at each join.
 TEST(SpiFpgaBlending, ContinuousHasNoDeadTimeBetweenColinearMoves) {
     const auto out = run_spi("colinear_x", {"trace.detail=true"});
@@ -175,7 +175,7 @@ TEST(SpiFpgaBlending, ExactStopCornersAreSharp) {
     EXPECT_LE(*out.metrics.path.contour_max_um, 6.25 * std::sqrt(2.0) + 1e-9);
 }
 
-// Check 2: closed loop. "End of a move": in exact-stop mode every move ends at a rest point, where the host holds
+// Closed loop. "End of a move": in exact-stop mode every move ends at a rest point, where the host holds
 // its trajectory clock until each axis count equals the commanded position rounded to the step (the move's window
 // ends at that release); in continuous mode the job end (and any reversal) is such a point. Asserted: the count of
 // every axis at each exact-stop move's window end, and at the job end in both modes, equals the target, with exact

@@ -1,4 +1,4 @@
-// Issue 4 check 3: following error grows with the servo thread's latency bound and with its period. Each sweep
+// Following error grows with the servo thread's latency bound and with its period. Each sweep
 // point is its own cncsim process (one SystemC elaboration per process); the test reads their JSON reports.
 #include <gtest/gtest.h>
 

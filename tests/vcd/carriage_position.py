@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The carriage position in the VCD (issue 10): carriage_x_mm / carriage_y_mm are 64-bit real variables in the
+"""The carriage position in the VCD: carriage_x_mm / carriage_y_mm are 64-bit real variables in the
 syntax gtkwave reads (IEEE 1364 §18.2: "$var real 64 <id> <name> $end", values "r<number> <id>", written %.16g),
 read here by this file's own parser, not cncsim's.
 

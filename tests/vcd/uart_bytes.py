@@ -9,7 +9,7 @@ FeedRate; §4.2); uart_tx (FPGA -> host) one ACK 0xAA per completed packet.
 atmega SCENARIO (scenarios/atmega/speed_10_45.toml, "G1 X20.000 F10.45" in mm/s, then M30): uart_rx carries the
 seed 003 G01 command 01 80 0C 03 FF D2 (ID 0x01; X count 3200 = 20 mm x 160 steps/mm, low byte first; OCR0A 3 for
 10.45 mm/s, eqs. 5.1-5.2; OCR2A 255, Y idle; PORTB 0xD2 = '1' '1' DIR_Y 0 EN_Y 1 STEP_Y 0 EN_X 0 HEADER 1 DIR_X 0)
-and M30 0x3B (Table 5.1, tests/atmega/seed003_pc_test.cpp); uart_tx one confirm 0x06 before every byte the MCU
+and M30 0x3B (Table 5.1, tests/atmega/cad2g_plan_test.cpp); uart_tx one confirm 0x06 before every byte the MCU
 reads (protocol.h).
 Both directions are also counted against the run's report. Baud rates are the report's (the CP2102's line rate
 for uart_rx, the controller's own for uart_tx).
@@ -26,8 +26,8 @@ from vcd_tools import DOWNSAMPLE_TO_10MHZ, decode, expect_equal, run_cncsim
 
 SEED000_INIT = bytes.fromhex("FF 01 1E 1A 30 01 1E 1A 30")
 SEED000_ACK = 0xAA
-SEED003_SPEED_10_45 = bytes.fromhex("01 80 0C 03 FF D2 3B")
-SEED003_CONFIRM = 0x06
+PC_BYTES_SPEED_10_45 = bytes.fromhex("01 80 0C 03 FF D2 3B")
+LASER_ENGRAVER_CONFIRM = 0x06
 FPGA_CLOCK_HZ = 50_000_000  # seed 000 CLOCK_50: the FPGA's uart_tx bit is 434 of its clocks
 
 
@@ -72,8 +72,8 @@ def check_atmega(cncsim, scenario, workdir):
     link = report["atmega"]["link"]
     sent = line_bytes(vcd, "uart_rx", link["line_baud"])
     confirms = line_bytes(vcd, "uart_tx", link["mcu_baud"])
-    expect_equal("PC -> MCU bytes", bytes(sent).hex(" "), SEED003_SPEED_10_45.hex(" "))
-    expect_equal("MCU -> PC bytes", confirms, [SEED003_CONFIRM] * len(SEED003_SPEED_10_45))
+    expect_equal("PC -> MCU bytes", bytes(sent).hex(" "), PC_BYTES_SPEED_10_45.hex(" "))
+    expect_equal("MCU -> PC bytes", confirms, [LASER_ENGRAVER_CONFIRM] * len(PC_BYTES_SPEED_10_45))
     expect_equal("bytes to the MCU in the report", link["bytes_to_mcu"], len(sent))
     expect_equal("bytes from the MCU in the report", link["bytes_from_mcu"], len(confirms))
     print("atmega: %s to the MCU, %d confirms, as sent" % (bytes(sent).hex(" "), len(confirms)))

@@ -1,4 +1,4 @@
-// step_counter (issue 4): one per axis, counts the STEP pin's rising edges signed by DIR in a 32-bit register
+// step_counter (not in seed 004): one per axis, counts the STEP pin's rising edges signed by DIR in a 32-bit register
 // (timing in core/step_count_history.hpp: a rise at edge n is counted from edge n + 1). Wakes per STEP rise.
 #pragma once
 #include <cstdint>

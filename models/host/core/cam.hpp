@@ -34,7 +34,7 @@ inline constexpr double kOnArcSagittaShare = 0.8;
 
 struct CamOptions {
     // Largest distance between a chord and its arc (sagitta). seed 000 Q9 gives no value; 0.002 mm is grbl's
-    // $12 arc tolerance default (peers.md §1), a third of one 6.25 um microstep.
+    // $12 arc tolerance default (gnea/grbl v1.1h defaults.h), a third of one 6.25 um microstep.
     double chord_tolerance_mm = 0.002;
     FeedRounding feed_rounding = FeedRounding::Round;
     // seed 000 Q10: whether G0 feed is corrected to the dominant axis is unclear; true treats G0 like G1

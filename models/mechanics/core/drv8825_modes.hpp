@@ -1,4 +1,4 @@
-// DRV8825 microstep modes and indexer (TI SLVSA73 "Microstepping Indexer"; peers.md §4).
+// DRV8825 microstep modes and indexer (TI SLVSA73 "Microstepping Indexer").
 //
 // MODE2 MODE1 MODE0: 000 full, 001 1/2, 010 1/4, 011 1/8, 100 1/16, 101/110/111 1/32. The indexer walks a
 // sine table of 1/32-step resolution: one full step = 90 electrical degrees, 1/32 step = 2.8125 degrees, home

@@ -2,7 +2,7 @@
 //
 // The driver tells the motor when its commanded electrical position changes (and when its outputs are
 // enabled); the motor answers the shaft angle at a time. An ideal motor follows the command instantly; a
-// dynamic model (currents, torque, inertia, detent, load: peers.md §4) integrates its state forward between
+// dynamic model (currents, torque, inertia, detent, load: docs/mechanics.md) integrates its state forward between
 // the calls and can then lag, overshoot or slip. Both are queried with non-decreasing times, not earlier
 // than the last call they were told about: models only integrate forward.
 #pragma once

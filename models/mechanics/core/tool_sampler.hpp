@@ -1,5 +1,5 @@
 // When the carriage's tool position is sampled, and the samples (mech::Carriage, MechanicsWorker): one at the
-// start, one at every instant at which either axis steps (DESIGN.md §4: contour error is sampled at every step
+// start, one at every instant at which either axis steps (docs/metrics.md: contour error is sampled at every step
 // event; steps of X and Y at one instant give one sample, the later overwriting, so that a diagonal step is not
 // seen as an L) and, with a period, periodic samples in between for as long as an axis is not at rest (a dynamic
 // carriage keeps moving between steps: it lags, rings and settles). The periodic samples fall on a fixed grid,

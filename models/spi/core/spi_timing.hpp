@@ -19,7 +19,7 @@ namespace cnc::spi {
 struct SpiConfig {
     // 250 MHz / 50, a Raspberry Pi (BCM2835 core clock, even divider) rate that the FPGA's oversampling slave
     // can follow: models/fpga/spi needs SCLK < clk/6 (8.33 MHz at 50 MHz), so hm2_rpspi's 31.25 MHz default,
-    // made for Mesa's SCLK-clocked slave, is out of reach here (peers.md §3).
+    // made for Mesa's SCLK-clocked slave, is out of reach here (LinuxCNC's hm2_rpspi man page).
     std::uint32_t sclk_hz = 5'000'000;
     // 1 us each: a Pi-class master's gap between its CS edge and the clock, and far above the 3 FPGA clocks
     // (60 ns) the slave needs to load its reply after seeing SS fall.

@@ -17,7 +17,7 @@
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
 #include "common/text_format.hpp"
-#include "host/core/seed003/firmware_busy.hpp"
+#include "host/core/cad2g/firmware_busy.hpp"
 #include "host/pc_program.hpp"
 #include "run/controller.hpp"
 #include "run/machine_run.hpp"
@@ -29,7 +29,7 @@ namespace cnc::sim::atmega {
 
 namespace {
 
-namespace s3 = host::seed003;
+namespace cad2g = host::cad2g;
 
 // The chip's timers run on after M30 (cli; sleep): the run ends when the firmware has stopped, checked this often.
 constexpr TimePs kStopCheckPs = 10 * kPsPerMs;
@@ -43,7 +43,7 @@ struct Wires {
 
 std::string firmware_path(const AtmegaSettings& a) {
     if (!a.firmware.empty()) return a.firmware;
-    return a.g01_timer2_prescaler == 256 ? CNC_SEED003_T2CS110_ELF : CNC_SEED003_ELF;
+    return a.g01_timer2_prescaler == 256 ? CNC_LASER_ENGRAVER_T2CS110_ELF : CNC_LASER_ENGRAVER_ELF;
 }
 
 avr::AvrCoreConfig avr_config(const Scenario& s, const AtmegaSettings& a) {
@@ -57,7 +57,7 @@ avr::AvrCoreConfig avr_config(const Scenario& s, const AtmegaSettings& a) {
 
 uart::Cp2102Config link_config(const AtmegaSettings& a) {
     uart::Cp2102Config link = a.serial.link;
-    if (!a.link_baud_set) link.requested_baud = s3::kSeedBaud;  // seed 003 §3.4: CBR_57600
+    if (!a.link_baud_set) link.requested_baud = cad2g::kSeedBaud;  // seed 003 §3.4: CBR_57600
     return link;
 }
 
@@ -75,11 +75,11 @@ metrics::MoveSpec executed_move(const Scenario& s, metrics::MoveSpec m, const Mo
 }
 
 // The programmed move of each transfer; M30 belongs to none (the waits after the last move come before it).
-std::vector<std::size_t> transfer_moves(const s3::Plan& plan, const std::vector<s3::Transfer>& transfers,
+std::vector<std::size_t> transfer_moves(const cad2g::Plan& plan, const std::vector<cad2g::Transfer>& transfers,
                                         std::size_t n_moves) {
     std::vector<std::size_t> out;
-    for (const s3::Transfer& t : transfers) {
-        const std::vector<s3::Motion>& motions = plan.commands[t.command].motions;
+    for (const cad2g::Transfer& t : transfers) {
+        const std::vector<cad2g::Motion>& motions = plan.commands[t.command].motions;
         out.push_back(motions.empty() ? n_moves : static_cast<std::size_t>(motions.front().move));
     }
     return out;
@@ -91,16 +91,16 @@ std::vector<std::size_t> transfer_moves(const s3::Plan& plan, const std::vector<
 // a USB frame out, the byte and its confirm on the line, a frame in and the driver latency; per transfer the
 // PC's work. The chords of an arc overlap the previous chord's motion, so this counts them twice: an upper bound.
 ArchPace pace(const Scenario& s, const AtmegaSettings& a, const uart::Cp2102Config& link,
-              const std::vector<s3::Transfer>& transfers) {
+              const std::vector<cad2g::Transfer>& transfers) {
     ArchPace p;
     // The PC program also holds every speed to the machine's velocity limits.
-    p.max_speed_x_mm_per_s = std::min(s3::speed_mm_per_s(0, s.machine.x.mm_per_step(), a.pc.timer),
+    p.max_speed_x_mm_per_s = std::min(cad2g::speed_mm_per_s(0, s.machine.x.mm_per_step(), a.pc.timer),
                                       s.machine.x.limits.max_velocity_mm_per_s);
-    p.max_speed_y_mm_per_s = std::min(s3::speed_mm_per_s(0, s.machine.y.mm_per_step(), a.pc.timer),
+    p.max_speed_y_mm_per_s = std::min(cad2g::speed_mm_per_s(0, s.machine.y.mm_per_step(), a.pc.timer),
                                       s.machine.y.limits.max_velocity_mm_per_s);
     p.startup_s = ps_to_s(a.serial.sender.settle_ps);
     const double byte_s = ps_to_s(host::byte_round_trip_ps(a.serial.sender, link));
-    for (const s3::Transfer& t : transfers) {
+    for (const cad2g::Transfer& t : transfers) {
         p.link_s += ps_to_s(a.serial.sender.packet_processing_ps) + static_cast<double>(t.bytes.size()) * byte_s;
     }
     return p;
@@ -117,11 +117,11 @@ void check_firmware_rate(const Scenario& s, const AtmegaSettings& a, const uart:
                      {usart->baud, firmware + "'s USART0 at " + usart->text(avr_cfg.f_cpu_hz)});
 }
 
-host::ConfirmTimeouts confirm_timeouts(const AtmegaSettings& a, const uart::Cp2102Config& link, const s3::Plan& plan,
-                                       const std::vector<s3::Transfer>& transfers) {
+host::ConfirmTimeouts confirm_timeouts(const AtmegaSettings& a, const uart::Cp2102Config& link, const cad2g::Plan& plan,
+                                       const std::vector<cad2g::Transfer>& transfers) {
     host::ConfirmTimeouts t;
     t.round_trip_ps = host::byte_round_trip_ps(a.serial.sender, link);
-    for (const double busy_s : s3::motion_before_next_confirm_s(plan, transfers, a.pc.timer)) {
+    for (const double busy_s : cad2g::motion_before_next_confirm_s(plan, transfers, a.pc.timer)) {
         t.motion_after_ps.push_back(s_to_ps(busy_s));
     }
     return t;
@@ -143,7 +143,7 @@ std::optional<std::string> link_failure(const avr::AvrCore& mcu, const uart::Cp2
 class AtmegaController final : public Controller {
 public:
     // `plan`, `avr_cfg`, `link`: checked_plan().
-    AtmegaController(const Scenario& s, const Job& job, MachinePins& pins, s3::Plan plan, avr::AvrCoreConfig avr_cfg,
+    AtmegaController(const Scenario& s, const Job& job, MachinePins& pins, cad2g::Plan plan, avr::AvrCoreConfig avr_cfg,
                      uart::Cp2102Config link)
         : m_s(s),
           m_a(s.settings<AtmegaSettings>()),
@@ -151,11 +151,11 @@ public:
           m_plan(std::move(plan)),
           m_avr_cfg(std::move(avr_cfg)),
           m_link(link),
-          m_transfers(s3::transfers(m_plan)),
+          m_transfers(cad2g::transfers(m_plan)),
           m_cp2102("cp2102", m_link),
           m_pc("host", m_a.serial.sender, m_cp2102, m_transfers, confirm_timeouts(m_a, m_link, m_plan, m_transfers)),
           m_mcu("atmega328p", m_avr_cfg),
-          m_commanded(commanded_moves(&*job.program, s3::motion_segments(m_plan, s.machine), s.machine,
+          m_commanded(commanded_moves(&*job.program, cad2g::motion_segments(m_plan, s.machine), s.machine,
                                       s.interpreter.start_mm)),
           m_chord_gaps(m_pc.transfers()) {
         m_cp2102.txd(m_wires.uart_rx);
@@ -255,10 +255,10 @@ private:
     const Scenario& m_s;
     const AtmegaSettings& m_a;
     const Job& m_job;
-    const s3::Plan m_plan;
+    const cad2g::Plan m_plan;
     const avr::AvrCoreConfig m_avr_cfg;
     const uart::Cp2102Config m_link;
-    const std::vector<s3::Transfer> m_transfers;
+    const std::vector<cad2g::Transfer> m_transfers;
     Wires m_wires;
     uart::Cp2102 m_cp2102;
     host::PcProgram m_pc;
@@ -300,7 +300,7 @@ void AtmegaController::report(ArchRun& run, const RunBudget& budget, const Simul
 ArchRun Entry::run(const Scenario& s, const Job& job) {
     return run_on_machine(s, job, [](const Scenario& sc, const Job& j, MachinePins& pins) {
         const AtmegaSettings& a = sc.settings<AtmegaSettings>();
-        s3::Plan plan = s3::plan_program(*j.program, sc.machine, a.pc);
+        cad2g::Plan plan = cad2g::plan_program(*j.program, sc.machine, a.pc);
         avr::AvrCoreConfig avr_cfg = avr_config(sc, a);
         const uart::Cp2102Config link = link_config(a);
         check_firmware_rate(sc, a, link, avr_cfg);

@@ -13,7 +13,7 @@ EdgeLog empty_like(const EdgeLog& log) { return EdgeLog{log.name, log.initial, {
 
 }  // namespace
 
-AtmegaPins::AtmegaPins(EdgeRecorder& rec, const host::seed003::Plan& plan, bool keep_raw)
+AtmegaPins::AtmegaPins(EdgeRecorder& rec, const host::cad2g::Plan& plan, bool keep_raw)
     : m_rec(rec),
       m_keep_raw(keep_raw),
       // The DRV8825's nENBL is active low.

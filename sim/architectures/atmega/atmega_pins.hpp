@@ -7,7 +7,7 @@
 #include <map>
 #include <string>
 
-#include "host/core/seed003/plan.hpp"
+#include "host/core/cad2g/plan.hpp"
 #include "metrics/pulse/enabled_steps.hpp"
 #include "probes/edge_recorder.hpp"
 #include "architectures/atmega/motion_windows.hpp"
@@ -18,7 +18,7 @@ class AtmegaPins {
 public:
     // The recorder watches step_x, dir_x, step_y, dir_y, n_enbl_x, n_enbl_y and laser. `keep_raw`: the raw nENBL
     // and STEP logs are kept whole too (the timers toggle STEP while EN is high: only the tests read them).
-    AtmegaPins(EdgeRecorder& rec, const host::seed003::Plan& plan, bool keep_raw);
+    AtmegaPins(EdgeRecorder& rec, const host::cad2g::Plan& plan, bool keep_raw);
 
     // Reads every pin's edges before t_ps (after those of the previous call).
     void read_before(TimePs t_ps);

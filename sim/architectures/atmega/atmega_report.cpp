@@ -10,7 +10,7 @@ namespace cnc::sim {
 
 namespace {
 
-namespace s3 = host::seed003;
+namespace cad2g = host::cad2g;
 
 std::string hex(std::uint8_t b) {
     char text[8];
@@ -18,19 +18,19 @@ std::string hex(std::uint8_t b) {
     return text;
 }
 
-std::string id_name(s3::CommandId id) {
+std::string id_name(cad2g::CommandId id) {
     switch (id) {
-        case s3::CommandId::G00: return "G00";
-        case s3::CommandId::G01: return "G01";
-        case s3::CommandId::G02: return "G02";
-        case s3::CommandId::G03: return "G03";
-        case s3::CommandId::M30: return "M30";
+        case cad2g::CommandId::G00: return "G00";
+        case cad2g::CommandId::G01: return "G01";
+        case cad2g::CommandId::G02: return "G02";
+        case cad2g::CommandId::G03: return "G03";
+        case cad2g::CommandId::M30: return "M30";
     }
     return "?";
 }
 
-nlohmann::json motion_json(const AtmegaFacts& f, s3::CommandId id, const s3::Motion& m, const MotionWindow* w) {
-    const s3::TimerClock clk;
+nlohmann::json motion_json(const AtmegaFacts& f, cad2g::CommandId id, const cad2g::Motion& m, const MotionWindow* w) {
+    const cad2g::TimerClock clk;
     nlohmann::json j = {{"line", m.line},
                         {"steps", {m.steps_x, m.steps_y}},
                         {"count_x", m.count_x},
@@ -39,11 +39,11 @@ nlohmann::json motion_json(const AtmegaFacts& f, s3::CommandId id, const s3::Mot
                         {"portb", hex(m.portb)},
                         {"speed_asked_mm_per_s", {m.speed_x_mm_per_s, m.speed_y_mm_per_s}},
                         {"speed_of_words_mm_per_s",
-                         {s3::speed_mm_per_s(m.ocr_x.value, f.machine.x.mm_per_step(), clk),
-                          s3::speed_mm_per_s(m.ocr_y.value, f.machine.y.mm_per_step(), clk)}},
+                         {cad2g::speed_mm_per_s(m.ocr_x.value, f.machine.x.mm_per_step(), clk),
+                          cad2g::speed_mm_per_s(m.ocr_y.value, f.machine.y.mm_per_step(), clk)}},
                         {"x_timebase", m.x_timebase},
                         {"wrapped", m.wrapped}};
-    if (id == s3::CommandId::G00) j["count_y"] = m.count_y;
+    if (id == cad2g::CommandId::G00) j["count_y"] = m.count_y;
     if (m.chord >= 0) j["chord"] = m.chord;
     if (w != nullptr) {
         j["t_begin_s"] = ps_to_s(w->t_begin_ps);
@@ -58,13 +58,14 @@ nlohmann::json commands_json(const AtmegaFacts& f) {
     for (const MotionWindow& w : f.windows) window_of[{w.command, w.motion}] = &w;
     nlohmann::json commands = nlohmann::json::array();
     for (std::size_t c = 0; c < f.plan.commands.size(); ++c) {
-        const s3::Command& cmd = f.plan.commands[c];
+        const cad2g::Command& cmd = f.plan.commands[c];
         nlohmann::json motions = nlohmann::json::array();
         for (std::size_t m = 0; m < cmd.motions.size(); ++m) {
             const auto w = window_of.find({c, m});
             motions.push_back(motion_json(f, cmd.id, cmd.motions[m], w == window_of.end() ? nullptr : w->second));
         }
-        commands.push_back({{"id", id_name(cmd.id)}, {"bytes", s3::command_bytes(cmd).size()}, {"motions", motions}});
+        commands.push_back(
+            {{"id", id_name(cmd.id)}, {"bytes", cad2g::command_bytes(cmd).size()}, {"motions", motions}});
     }
     return commands;
 }
@@ -130,7 +131,7 @@ std::string details_text(const AtmegaFacts& f) {
     const avr::AvrCoreStats st = f.mcu.stats();
     const ChordGaps& gaps = f.gaps;
     std::map<std::string, std::pair<int, std::size_t>> per_id;  // commands, motions
-    for (const s3::Command& c : f.plan.commands) {
+    for (const cad2g::Command& c : f.plan.commands) {
         auto& n = per_id[id_name(c.id)];
         ++n.first;
         n.second += c.motions.size();

@@ -9,7 +9,7 @@
 
 #include "avr/avr_core.hpp"
 #include "common/warning.hpp"
-#include "host/core/seed003/plan.hpp"
+#include "host/core/cad2g/plan.hpp"
 #include "host/pc_program.hpp"
 #include "architectures/atmega/chord_gaps.hpp"
 #include "architectures/atmega/motion_windows.hpp"
@@ -18,7 +18,7 @@
 namespace cnc::sim {
 
 struct AtmegaFacts {
-    const host::seed003::Plan& plan;
+    const host::cad2g::Plan& plan;
     const host::MachineModel& machine;
     const host::PcProgram& pc;
     const uart::Cp2102& cp2102;

@@ -28,8 +28,8 @@ void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem
     s.pc.long_moves = r.get_choice("atmega.long_moves", "split", {"split", "wrap"},
                                    "atmega: a count above 16 bits (409.6 mm at 1/32): split into commands, or sent "
                                    "modulo 65536 as the seed's registers take it (a warning either way)") == "split"
-                          ? host::seed003::LongMoves::Split
-                          : host::seed003::LongMoves::Wrap;
+                          ? host::cad2g::LongMoves::Split
+                          : host::cad2g::LongMoves::Wrap;
     s.link_baud_set = r.has("link.baud");
 }
 

@@ -8,7 +8,7 @@
 
 #include "architectures/architecture.hpp"
 #include "architectures/serial_host/serial_host_settings.hpp"
-#include "host/core/seed003/plan.hpp"
+#include "host/core/cad2g/plan.hpp"
 #include "scenario/key_reader.hpp"
 
 namespace cnc::sim {
@@ -21,7 +21,7 @@ struct AtmegaSettings final : ArchSettings {
     // input, RXD, is decoded exactly, so a longer quantum costs nothing here; it runs the square job 25 % faster.
     std::uint32_t quantum_cycles = 1600;
     int g01_timer2_prescaler = 1024;  // which built seed 003 ELF: 1024, or 256 (App. A3's CS = 110 as listed)
-    host::seed003::PcOptions pc;
+    host::cad2g::PcOptions pc;
     // link.baud set by the scenario: otherwise the PC program asks for 57600 (seed 003 §3.4 CBR_57600), not the
     // Cp2102Config default of seed 000.
     bool link_baud_set = false;

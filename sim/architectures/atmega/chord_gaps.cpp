@@ -22,7 +22,7 @@ TimePs ChordGapFold::arrival(std::size_t transfer) {
 // Windows come in plan order, and so do the transfers: the search goes on from the last one found.
 std::size_t ChordGapFold::transfer_of(const MotionWindow& w) {
     for (; m_transfer < m_transfers.size(); ++m_transfer) {
-        const host::seed003::Transfer& t = m_transfers[m_transfer];
+        const host::cad2g::Transfer& t = m_transfers[m_transfer];
         if (t.command == w.command && t.motion == static_cast<int>(w.motion)) return m_transfer;
     }
     throw std::logic_error("no transfer carries command " + std::to_string(w.command) + " motion " +

@@ -12,7 +12,7 @@
 
 #include "common/record_log.hpp"
 #include "common/units.hpp"
-#include "host/core/seed003/plan.hpp"
+#include "host/core/cad2g/plan.hpp"
 #include "architectures/atmega/motion_windows.hpp"
 
 namespace cnc::sim {
@@ -25,7 +25,7 @@ struct ChordGaps {
 
 class ChordGapFold {
 public:
-    explicit ChordGapFold(const std::vector<host::seed003::Transfer>& transfers) : m_transfers(transfers) {}
+    explicit ChordGapFold(const std::vector<host::cad2g::Transfer>& transfers) : m_transfers(transfers) {}
 
     // The MCU's receiver had a byte of transfer `transfer` at t_ps (the middle of its stop bit at the MCU's bit
     // clock). Bytes come in the order they were written.
@@ -41,7 +41,7 @@ private:
     [[nodiscard]] TimePs arrival(std::size_t transfer);
     [[nodiscard]] std::size_t transfer_of(const MotionWindow& w);
 
-    const std::vector<host::seed003::Transfer>& m_transfers;
+    const std::vector<host::cad2g::Transfer>& m_transfers;
     std::deque<std::pair<std::size_t, TimePs>> m_last_byte;  // per transfer not judged yet: its last byte so far
     std::size_t m_transfer = 0;                              // where transfer_of() looks from
     std::size_t m_next_window = 0;

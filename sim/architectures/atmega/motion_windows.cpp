@@ -5,7 +5,7 @@
 
 namespace cnc::sim {
 
-namespace s3 = host::seed003;
+namespace cad2g = host::cad2g;
 
 namespace {
 
@@ -13,7 +13,7 @@ bool both_high(bool en_x_high, bool en_y_high) { return en_x_high && en_y_high; 
 
 }  // namespace
 
-MotionWindowFold::MotionWindowFold(const s3::Plan& plan) : m_plan(plan), m_command(command_from(0)) {}
+MotionWindowFold::MotionWindowFold(const cad2g::Plan& plan) : m_plan(plan), m_command(command_from(0)) {}
 
 void MotionWindowFold::add(const PortbLines& l, const EdgeLog& y_steps) {
     enum Line { EnX, EnY, Other };
@@ -108,15 +108,15 @@ void MotionWindowFold::close(TimePs t_end_ps, std::int64_t y_through, bool compl
 
 // Whether the motion under way is an arc's chord: its end is the ISR's (a G00 or G01 is one motion: plan.cpp).
 bool MotionWindowFold::arc() const {
-    const s3::CommandId id = m_plan.commands[m_open.command].id;
-    return id == s3::CommandId::G02 || id == s3::CommandId::G03;
+    const cad2g::CommandId id = m_plan.commands[m_open.command].id;
+    return id == cad2g::CommandId::G02 || id == cad2g::CommandId::G03;
 }
 
 bool MotionWindowFold::last_motion() const {
     return m_open.motion + 1 == m_plan.commands[m_open.command].motions.size();
 }
 
-std::vector<MotionWindow> motion_windows(const s3::Plan& plan, const PortbLines& lines, TimePs t_sim_end_ps) {
+std::vector<MotionWindow> motion_windows(const cad2g::Plan& plan, const PortbLines& lines, TimePs t_sim_end_ps) {
     MotionWindowFold fold(plan);
     fold.add(lines, EdgeLog{});
     fold.finish(t_sim_end_ps);

@@ -18,7 +18,7 @@
 
 #include "common/edge_log.hpp"
 #include "common/record_log.hpp"
-#include "host/core/seed003/plan.hpp"
+#include "host/core/cad2g/plan.hpp"
 
 namespace cnc::sim {
 
@@ -44,7 +44,7 @@ struct MotionWindow {
 
 class MotionWindowFold {
 public:
-    explicit MotionWindowFold(const host::seed003::Plan& plan);
+    explicit MotionWindowFold(const host::cad2g::Plan& plan);
 
     // The PORTB pins' edges before an instant, after those of the previous call (each log's initial level the one
     // its pin had before them: EdgeRecorder::take_before), and the Y STEP pulses the driver took before the same
@@ -77,7 +77,7 @@ private:
     [[nodiscard]] bool arc() const;
     [[nodiscard]] bool last_motion() const;
 
-    const host::seed003::Plan& m_plan;
+    const host::cad2g::Plan& m_plan;
     std::int64_t m_y_steps = 0;                     // Y steps handed over so far
     std::optional<std::size_t> m_command;           // the command whose start is awaited, or under way
     bool m_running = false;                         // a motion of m_command is under way
@@ -87,7 +87,7 @@ private:
 };
 
 // Windows of the motions that started, in plan order. `t_sim_end_ps` closes a motion the run did not finish.
-[[nodiscard]] std::vector<MotionWindow> motion_windows(const host::seed003::Plan& plan, const PortbLines& lines,
+[[nodiscard]] std::vector<MotionWindow> motion_windows(const host::cad2g::Plan& plan, const PortbLines& lines,
                                                        TimePs t_sim_end_ps);
 
 }  // namespace cnc::sim

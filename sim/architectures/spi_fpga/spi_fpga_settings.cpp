@@ -51,7 +51,7 @@ void read_link(KeyReader& r, spi::SpiConfig& c) {
 
 void read_fpga(KeyReader& r, fpga::SpiFpgaConfig& c) {
     c.clk_hz = static_cast<std::uint32_t>(r.get_int("fpga_spi.clock_hz", c.clk_hz, 1'000'000, 500'000'000,
-                                                    "FPGA clock, Hz; must divide 1e12 (issue 4: 50 MHz)"));
+                                                    "FPGA clock, Hz; must divide 1e12 (seed 000's board: 50 MHz)"));
     c.fifo_depth = static_cast<std::uint32_t>(r.get_int("fpga_spi.fifo_depth", c.fifo_depth, 1, 1024,
                                                         "rate frames the FIFO holds (seed 004 §5.1.2)"));
     c.pulse_cycles = static_cast<std::uint32_t>(r.get_int("fpga_spi.pulse_cycles", c.pulse_cycles, 1, 1'000'000,

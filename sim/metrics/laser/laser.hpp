@@ -1,5 +1,5 @@
 // Laser exposure metrics: over-burn dwell (laser on while the tool is still or crawling) and laser on
-// during rapid moves, which must be zero (DESIGN.md §4 "Laser").
+// during rapid moves, which must be zero (docs/metrics.md "Laser").
 #pragma once
 #include <cstddef>
 #include <optional>
@@ -10,7 +10,7 @@
 
 namespace cnc::metrics {
 
-// Fraction of the move's F below which the tool counts as crawling (DESIGN.md §4: 10 % of F).
+// Fraction of the move's F below which the tool counts as crawling (docs/metrics.md "Laser": 10 % of F).
 inline constexpr double kDwellSpeedFraction = 0.10;
 
 struct LaserResult {

@@ -1,5 +1,5 @@
 // DRV8825 STEP/DIR timing rules checked on recorded edges, so that any trace (simulated or captured
-// by a logic analyser) is judged against the same datasheet limits (TI SLVSA73, peers.md §4).
+// by a logic analyser) is judged against the same datasheet limits (TI SLVSA73).
 #pragma once
 #include <array>
 #include <cstddef>

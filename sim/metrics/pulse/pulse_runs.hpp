@@ -1,5 +1,5 @@
-// Pulse-train quality per run (a stretch of one axis's rising STEP edges at one rate): period jitter,
-// TIE against a least-squares recovered clock, and achieved against commanded step rate (DESIGN.md §4).
+// Pulse-train quality per run (a stretch of one axis's rising STEP edges at one rate): period jitter, TIE against a
+// least-squares recovered clock, and achieved against commanded step rate (docs/metrics.md "Pulse timing").
 #pragma once
 #include <cstddef>
 #include <optional>

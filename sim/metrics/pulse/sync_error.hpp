@@ -1,5 +1,5 @@
-// Sync error: each rising STEP edge of a move against the time the commanded motion reaches that step
-// (DESIGN.md §4). Drift from a truncated or quantised period shows up here although TIE does not see it.
+// Sync error (docs/metrics.md "Pulse timing"): each rising STEP edge of a move against the time the commanded motion
+// reaches that step. Drift from a truncated or quantised period shows up here although TIE does not see it.
 // Without a commanded trajectory the commanded motion is uniform at the move's per-axis rate from its first step;
 // with one (RunInput::commanded, a planner's profile) it is that trajectory: the edge that brings an axis's count
 // to n is compared with the nearest time at which the commanded position crosses n - 1/2 going up (n + 1/2 going

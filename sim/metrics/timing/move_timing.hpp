@@ -1,5 +1,5 @@
 // Per programmed move timing: motion time, achieved feed against the programmed F, dead time between programmed
-// moves, and the job totals (DESIGN.md §4 "Feed error", "Job timing"; definitions in docs/metrics.md).
+// moves, and the job totals (definitions in docs/metrics.md "Feed error", "Job timing").
 #pragma once
 #include <cstddef>
 #include <optional>

@@ -1,4 +1,4 @@
-// Speed benchmark, idle firmware (toolchain.md §3's probe): Timer1 CTC at 10 kHz (OCR1A = 1599, N = 1), its ISR
+// Speed benchmark, idle firmware: Timer1 CTC at 10 kHz (OCR1A = 1599, N = 1), its ISR
 // toggles PB1 (head); the main loop spins.
 #include "fw_test.h"
 

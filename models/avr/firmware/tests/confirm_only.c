@@ -4,10 +4,10 @@
 // Built with CONFIRMS = n it confirms n bytes and then hangs: a firmware that stops answering in mid-job.
 #include <stdint.h>
 
-#include "../seed003/protocol.h"
+#include "../laser_engraver/protocol.h"
 #include "fw_test.h"
 
-#define UBRR_VALUE (F_CPU / 16 / SEED003_BAUD - 1)  // as the seed's firmware: 16 (58 823.5 Bd)
+#define UBRR_VALUE (F_CPU / 16 / LASER_ENGRAVER_BAUD - 1)  // as the seed's firmware: 16 (58 823.5 Bd)
 #ifndef CONFIRMS
 #define CONFIRMS 0  // 0: every byte
 #endif
@@ -15,7 +15,7 @@
 static void confirm_and_drop(void) {
     while (!(UCSR0A & (1 << UDRE0))) {
     }
-    UDR0 = SEED003_CONFIRM;
+    UDR0 = LASER_ENGRAVER_CONFIRM;
     while (!(UCSR0A & (1 << RXC0))) {
     }
     (void)UDR0;

@@ -1,4 +1,4 @@
-// grbl's stepper start (peers.md §7, fidelity bug 1): Timer1 in CTC mode 4 with OCR1A = 0 (its power-on value)
+// grbl's stepper start (gnea/grbl v1.1h, stepper.c): Timer1 in CTC mode 4 with OCR1A = 0 (its power-on value)
 // and no prescaling, compare A interrupt enabled. On silicon the counter matches 0 at every tick, OCF1A is set
 // at the first tick and the ISR runs; stock libsimavr 1.6 registers no timer (prescaler * (OCR + 1) = 1) and
 // the ISR never runs. The ISR toggles PB5 (dir_y) and sets OCR1A = 999: from then on a match every 1000 cycles.

@@ -1,5 +1,5 @@
 // Parameters of the spi-fpga FPGA design (seed 004 §2; the thesis's iCE40 design extended to two axes with
-// step counters, issue 4), the link constraints of its oversampling SPI slave, and the shortest STEP period.
+// step counters), the link constraints of its oversampling SPI slave, and the shortest STEP period.
 #pragma once
 #include <cstdint>
 
@@ -16,8 +16,8 @@ namespace cnc::fpga {
 enum class RateApply { AtNextPulse, Immediately };
 
 struct SpiFpgaConfig {
-    std::uint32_t clk_hz = 50'000'000;     // issue 4: 50 MHz, as seed 000's board
-    std::uint32_t fifo_depth = 4;          // frames between the SPI slave and the generators (issue 4 default)
+    std::uint32_t clk_hz = 50'000'000;     // 50 MHz, as seed 000's board
+    std::uint32_t fifo_depth = 4;          // frames between the SPI slave and the generators
     std::uint32_t pulse_cycles = 100;      // seed 004 §2 `duration`; 100 clocks = 2 us (seed 000 PULSE_HIGH)
     std::uint32_t dir_setup_cycles = 50;   // 1 us from a DIR change to the next STEP rise (DRV8825: 650 ns)
     std::uint32_t dir_hold_cycles = 50;    // 1 us from a STEP rise to a DIR change (DRV8825: 650 ns)

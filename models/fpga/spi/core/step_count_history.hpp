@@ -1,4 +1,4 @@
-// step_counter register (issue 4): counts STEP rising edges, +1 with DIR high, -1 with DIR low, in a signed
+// step_counter register (not in seed 004): counts STEP rising edges, +1 with DIR high, -1 with DIR low, in a signed
 // 32-bit register that wraps. It detects the rise from the STEP register's output, so a STEP rise at edge n
 // updates the count at edge n + 1, and a register that loads the count at edge m (the SPI snapshot) captures
 // every STEP rise at edges <= m - 2. This class answers "what does a load at edge m capture" for m >= the

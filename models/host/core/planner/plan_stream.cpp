@@ -14,9 +14,9 @@ namespace cnc::host::planner {
 
 namespace {
 
-// Issue 4: moves shorter than this are skipped (far below one 6.25 um microstep).
+// Moves shorter than this are skipped (far below one 6.25 um microstep).
 constexpr double kMinPieceMm = 1e-9;
-// Issue 4: two tangent directions are the same (or opposite) when |u1 x u2| is at most this.
+// Two tangent directions are the same (or opposite) when |u1 x u2| is at most this.
 constexpr double kSameDirection = 1e-9;
 constexpr double kSecondsPerMinute = 60.0;
 

@@ -1,4 +1,4 @@
-// Trajectory planner over the shared G-code interpreter (seed 004 §3.2-3.3, issue 4): the host-side path
+// Trajectory planner over the shared G-code interpreter (seed 004 §3.2-3.3): the host-side path
 // planner of the spi-fpga architecture. Per-axis velocity/acceleration(/jerk) limits, trapezoidal or
 // jerk-limited speed profiles (speed_profile.hpp), exact stop (G61) or continuous motion with look-ahead and
 // corner blends within a path tolerance (G64 P). Arcs are followed as arcs: every sample lies on the programmed

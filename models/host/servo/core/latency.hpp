@@ -11,7 +11,7 @@
 //                more than a few hundred periods. Mean 0.19 max.
 //   Uniform:     U[0, max]: every latency up to the bound equally likely (a pessimistic, flat jitter). Mean max/2.
 // The default bound, 50 us, is the LinuxCNC latency-test limit up to which "software stepping is OK"
-// (docs/src/install/latency-test.adoc: max jitter < 20 us good, 20-50 us OK; peers.md §3) and a common
+// (docs/src/install/latency-test.adoc: max jitter < 20 us good, 20-50 us OK) and a common
 // PREEMPT_RT Raspberry Pi 3 figure. max = 0 gives exact wake-ups. Latencies are whole nanoseconds.
 #pragma once
 #include <cstdint>

@@ -1,5 +1,5 @@
 // Settings of the spi-fpga host's servo thread (seed 004 §1, §4: Machinekit's motion controller and the SPI
-// driver's read/update/write on one real-time thread; values from LinuxCNC, peers.md §3).
+// driver's read/update/write on one real-time thread; values from LinuxCNC's hostmot2 stepgen).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -25,7 +25,7 @@ struct ServoConfig {
     LatencyConfig latency;
     std::uint64_t seed = 1;       // the scenario seed: latency draws
     double position_gain = 0.5;   // hm2 stepgen: 0.5 * error_at_match / period
-    double deadband_steps = 1.0;  // Remora's default (peers.md §3); see stepgen_law.hpp
+    double deadband_steps = 1.0;  // Remora's default (remora-spi.c `deadband`); see stepgen_law.hpp
     // stepgen limits above the planner's: LinuxCNC's ini reference puts STEPGEN_MAXVEL/MAXACCEL 1-10 % above the
     // joint's, pncconf/stepconf-generated configs 25 %; the loop needs the headroom to catch up its lag.
     double stepgen_margin = 0.25;

@@ -1,5 +1,5 @@
-// What the spi-fpga report says of the servo periods without listing them (issue 9, bounded memory): the period
-// counts by mode, the wake-up latency's min/mean/max and the first rows of the rate staircase, folded period by
+// What the spi-fpga report says of the servo periods without listing them, in bounded memory (docs/streaming.md): the
+// period counts by mode, the wake-up latency's min/mean/max and the first rows of the rate staircase, folded period by
 // period so that the records need not be kept for it (`--detail` lists every period and keeps them).
 #pragma once
 #include <array>

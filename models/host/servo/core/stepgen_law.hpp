@@ -1,6 +1,6 @@
 // The rate law of the host's step generator driver, in steps: LinuxCNC's hostmot2 stepgen position controller
 // (src/hal/drivers/mesa-hostmot2/stepgen.c, hm2_stepgen_instance_position_control, "first-order feedforward and
-// proportional error feedback ... based on John Kasunich's software stepgen"; peers.md §3), once per servo period:
+// proportional error feedback ... based on John Kasunich's software stepgen"), once per servo period:
 //   ff_vel         = (pos_cmd - old_pos_cmd) / T                      (feed-forward: the command's own velocity)
 //   t_match        = |vel_fb - ff_vel| / A                             (time to match it at the accel limit A)
 //   pos_at_match   = pos_fb + (ff_vel + vel_fb) / 2 * (t_match + T)    (where the axis will be then)
@@ -13,7 +13,7 @@
 // commanded (pos_at_match looks T ahead of pos_fb), so the axis follows its command with one servo period of lag:
 // following error ~ velocity x T, the quantity LinuxCNC's FERROR/MIN_FERROR scale with speed.
 // Deadband (LinuxCNC software stepgen: "if the error is tiny, just match velocity"; Remora's `deadband`, default
-// 1 step, peers.md §3): with |err_at_match| <= deadband the law commands ff_vel alone. The step counter only
+// 1 step): with |err_at_match| <= deadband the law commands ff_vel alone. The step counter only
 // tells whole steps, so an estimate swings by one step as the generator's phase turns; a deadband below that
 // would chase the swing every few periods and never hold a constant rate.
 #pragma once

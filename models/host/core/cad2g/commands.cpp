@@ -1,6 +1,6 @@
-#include "host/core/seed003/commands.hpp"
+#include "host/core/cad2g/commands.hpp"
 
-namespace cnc::host::seed003 {
+namespace cnc::host::cad2g {
 
 namespace {
 
@@ -11,17 +11,17 @@ std::uint8_t high(std::uint16_t v) { return static_cast<std::uint8_t>(v >> 8); }
 }  // namespace
 
 std::uint8_t start_byte(std::int64_t steps_x, bool enable_x, std::int64_t steps_y, bool enable_y, bool header) {
-    std::uint8_t b = SEED003_PORTB_INPUTS;
-    if (steps_x < 0) b |= bit(SEED003_PB_DIR_X);
-    if (!enable_x) b |= bit(SEED003_PB_EN_X);
-    if (steps_y < 0) b |= bit(SEED003_PB_DIR_Y);
-    if (!enable_y) b |= bit(SEED003_PB_EN_Y);
-    if (header) b |= bit(SEED003_PB_HEADER);
+    std::uint8_t b = LASER_ENGRAVER_PORTB_INPUTS;
+    if (steps_x < 0) b |= bit(LASER_ENGRAVER_PB_DIR_X);
+    if (!enable_x) b |= bit(LASER_ENGRAVER_PB_EN_X);
+    if (steps_y < 0) b |= bit(LASER_ENGRAVER_PB_DIR_Y);
+    if (!enable_y) b |= bit(LASER_ENGRAVER_PB_EN_Y);
+    if (header) b |= bit(LASER_ENGRAVER_PB_HEADER);
     return b;
 }
 
-bool enabled_x(std::uint8_t portb) { return (portb & bit(SEED003_PB_EN_X)) == 0; }
-bool enabled_y(std::uint8_t portb) { return (portb & bit(SEED003_PB_EN_Y)) == 0; }
+bool enabled_x(std::uint8_t portb) { return (portb & bit(LASER_ENGRAVER_PB_EN_X)) == 0; }
+bool enabled_y(std::uint8_t portb) { return (portb & bit(LASER_ENGRAVER_PB_EN_Y)) == 0; }
 
 std::vector<std::uint8_t> motion_bytes(CommandId id, const Motion& m) {
     switch (id) {
@@ -55,4 +55,4 @@ std::vector<std::uint8_t> command_bytes(const Command& c) {
     return bytes;
 }
 
-}  // namespace cnc::host::seed003
+}  // namespace cnc::host::cad2g

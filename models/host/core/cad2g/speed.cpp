@@ -1,9 +1,9 @@
-#include "host/core/seed003/speed.hpp"
+#include "host/core/cad2g/speed.hpp"
 
 #include <cmath>
 #include <limits>
 
-namespace cnc::host::seed003 {
+namespace cnc::host::cad2g {
 
 Ocr ocr_for_speed(double speed_mm_per_s, double mm_per_step, TimerClock clk) {
     Ocr o;
@@ -38,4 +38,4 @@ double speed_mm_per_s(std::uint8_t ocr, double mm_per_step, TimerClock clk) {
     return step_rate_hz(ocr, clk) * mm_per_step;
 }
 
-}  // namespace cnc::host::seed003
+}  // namespace cnc::host::cad2g

@@ -6,11 +6,11 @@
 #include <sstream>
 
 #include "common/bad_input.hpp"
+#include "host/core/cad2g/plan.hpp"
+#include "host/core/cad2g/speed.hpp"
 #include "host/core/gcode.hpp"
-#include "host/core/seed003/plan.hpp"
-#include "host/core/seed003/speed.hpp"
 
-namespace s3 = cnc::host::seed003;
+namespace cad2g = cnc::host::cad2g;
 using cnc::host::MachineModel;
 using cnc::host::Program;
 
@@ -25,9 +25,9 @@ Program gcode(const std::string& text, cnc::host::FeedUnit unit = cnc::host::Fee
     return cnc::host::interpret(in, "t.nc", opt);
 }
 
-s3::Plan plan(const std::string& text, s3::PcOptions opt = {},
+cad2g::Plan plan(const std::string& text, cad2g::PcOptions opt = {},
               cnc::host::FeedUnit unit = cnc::host::FeedUnit::MmPerMinute) {
-    return s3::plan_program(gcode(text, unit), MachineModel{}, opt);
+    return cad2g::plan_program(gcode(text, unit), MachineModel{}, opt);
 }
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
@@ -35,22 +35,22 @@ bool contains(const std::string& s, const std::string& part) { return s.find(par
 }  // namespace
 
 // Thesis eqs. 5.1-5.2: 10.45 mm/s at 1/32, N = 1024: OCR 3.67 -> 3 -> 12.20 mm/s (+1.75 mm/s).
-TEST(Seed003Speed, ThesisExampleN1024) {
-    const s3::Ocr o = s3::ocr_for_speed(10.45, kMmPerStep);
+TEST(Cad2gSpeed, ThesisExampleN1024) {
+    const cad2g::Ocr o = cad2g::ocr_for_speed(10.45, kMmPerStep);
     EXPECT_NEAR(o.exact, 3.6725, 1e-4);  // the thesis prints 3.67
     EXPECT_EQ(o.truncated, 3);
     EXPECT_EQ(o.value, 3);
     EXPECT_FALSE(o.too_fast || o.too_slow);
-    EXPECT_EQ(s3::step_period_cycles(3), 8192);  // 2 x 1024 x 4: 512 us
-    EXPECT_DOUBLE_EQ(s3::step_rate_hz(3), 1953.125);
-    EXPECT_NEAR(s3::speed_mm_per_s(3, kMmPerStep), 12.2070, 1e-4);
-    EXPECT_NEAR(s3::speed_mm_per_s(3, kMmPerStep) - 10.45, 1.757, 1e-3);
+    EXPECT_EQ(cad2g::step_period_cycles(3), 8192);  // 2 x 1024 x 4: 512 us
+    EXPECT_DOUBLE_EQ(cad2g::step_rate_hz(3), 1953.125);
+    EXPECT_NEAR(cad2g::speed_mm_per_s(3, kMmPerStep), 12.2070, 1e-4);
+    EXPECT_NEAR(cad2g::speed_mm_per_s(3, kMmPerStep) - 10.45, 1.757, 1e-3);
 }
 
 // Eqs. 5.3-5.4: with N = 1 the same speed needs a 13-bit OCR that the 8-bit register cannot hold. The thesis
 // prints 4784.68 -> 4784: it left out the "- 1" of its own eq. 4.73 there (16e6 / 3344 = 4784.69).
-TEST(Seed003Speed, ThesisExampleN1NeedsThirteenBits) {
-    const s3::Ocr o = s3::ocr_for_speed(10.45, kMmPerStep, {16e6, 1});
+TEST(Cad2gSpeed, ThesisExampleN1NeedsThirteenBits) {
+    const cad2g::Ocr o = cad2g::ocr_for_speed(10.45, kMmPerStep, {16e6, 1});
     EXPECT_NEAR(o.exact, 4783.69, 0.01);
     EXPECT_EQ(o.truncated, 4783);
     EXPECT_TRUE(o.too_slow);
@@ -58,38 +58,38 @@ TEST(Seed003Speed, ThesisExampleN1NeedsThirteenBits) {
 }
 
 // §4.6 ranges at 1/32, N = 1024: OCR 255 .. 0 = 0.191 .. 48.8 mm/s; outside, the word is held to the range.
-TEST(Seed003Speed, EightBitRangeAndClamps) {
-    EXPECT_NEAR(s3::speed_mm_per_s(255, kMmPerStep), 0.1907, 1e-4);
-    EXPECT_NEAR(s3::speed_mm_per_s(0, kMmPerStep), 48.828, 1e-3);
-    const s3::Ocr fast = s3::ocr_for_speed(60.0, kMmPerStep);
+TEST(Cad2gSpeed, EightBitRangeAndClamps) {
+    EXPECT_NEAR(cad2g::speed_mm_per_s(255, kMmPerStep), 0.1907, 1e-4);
+    EXPECT_NEAR(cad2g::speed_mm_per_s(0, kMmPerStep), 48.828, 1e-3);
+    const cad2g::Ocr fast = cad2g::ocr_for_speed(60.0, kMmPerStep);
     EXPECT_TRUE(fast.too_fast);
     EXPECT_EQ(fast.value, 0);
-    const s3::Ocr zero = s3::ocr_for_speed(0.0, kMmPerStep);
+    const cad2g::Ocr zero = cad2g::ocr_for_speed(0.0, kMmPerStep);
     EXPECT_TRUE(zero.too_slow);
     EXPECT_EQ(zero.value, 255);
 }
 
 // G01 bytes: ID, X count low/high, OCR0A, OCR2A, PORTB; only X is counted (App. A3).
-TEST(Seed003Plan, G01BytesForTheThesisSpeed) {
-    const s3::Plan p = plan("G1 X20 F10.45\n", {}, cnc::host::FeedUnit::MmPerSecond);
+TEST(Cad2gPlan, G01BytesForTheThesisSpeed) {
+    const cad2g::Plan p = plan("G1 X20 F10.45\n", {}, cnc::host::FeedUnit::MmPerSecond);
     ASSERT_EQ(p.commands.size(), 2U);
-    EXPECT_EQ(p.commands[1].id, s3::CommandId::M30);
-    const s3::Motion& m = p.commands[0].motions.at(0);
+    EXPECT_EQ(p.commands[1].id, cad2g::CommandId::M30);
+    const cad2g::Motion& m = p.commands[0].motions.at(0);
     EXPECT_EQ(m.steps_x, 3200);
     EXPECT_EQ(m.count_x, 3200);
     EXPECT_EQ(m.ocr_x.value, 3);
     // PORTB: '1' '1' DIR_Y 0, EN_Y 1 (no Y motion), STEP_Y 0, EN_X 0, HEADER 1, DIR_X 0 (+X)
     EXPECT_EQ(m.portb, 0xD2);
-    EXPECT_EQ(s3::command_bytes(p.commands[0]), (std::vector<std::uint8_t>{0x01, 0x80, 0x0C, 3, 255, 0xD2}));
-    EXPECT_EQ(s3::command_bytes(p.commands[1]), (std::vector<std::uint8_t>{0x3B}));
+    EXPECT_EQ(cad2g::command_bytes(p.commands[0]), (std::vector<std::uint8_t>{0x01, 0x80, 0x0C, 3, 255, 0xD2}));
+    EXPECT_EQ(cad2g::command_bytes(p.commands[1]), (std::vector<std::uint8_t>{0x3B}));
     EXPECT_TRUE(p.warnings.empty());
 }
 
 // Eqs. 4.74-4.77 on G1 X20 Y7 F600 (10 mm/s): v_x 9.439 -> OCR 4.17 -> 4; v_y 3.304 -> OCR 13.78 -> 13. The
 // rate ratio 13+1 : 4+1 = 2.8 against the commanded 20:7 = 2.857 is what moves Y off its end point.
-TEST(Seed003Plan, DiagonalSpeedsAreQuantisedSeparately) {
-    const s3::Plan p = plan("G1 X20 Y7 F600\n");
-    const s3::Motion& m = p.commands.at(0).motions.at(0);
+TEST(Cad2gPlan, DiagonalSpeedsAreQuantisedSeparately) {
+    const cad2g::Plan p = plan("G1 X20 Y7 F600\n");
+    const cad2g::Motion& m = p.commands.at(0).motions.at(0);
     EXPECT_NEAR(m.speed_x_mm_per_s, 20.0 / std::hypot(20.0, 7.0) * 10.0, 1e-9);
     EXPECT_NEAR(m.ocr_x.exact, 4.1732, 1e-4);
     EXPECT_NEAR(m.ocr_y.exact, 13.7808, 1e-4);
@@ -99,29 +99,29 @@ TEST(Seed003Plan, DiagonalSpeedsAreQuantisedSeparately) {
 }
 
 // §4.4 note 1: dx = 0 would make OCR0A meaningless, so X's timer times |dy| steps at Y's speed, X disabled.
-TEST(Seed003Plan, DxZeroWorkaround) {
-    const s3::Plan p = plan("G1 Y-10 F600\n");
-    const s3::Motion& m = p.commands.at(0).motions.at(0);
+TEST(Cad2gPlan, DxZeroWorkaround) {
+    const cad2g::Plan p = plan("G1 Y-10 F600\n");
+    const cad2g::Motion& m = p.commands.at(0).motions.at(0);
     EXPECT_TRUE(m.x_timebase);
     EXPECT_EQ(m.count_x, 1600);
     EXPECT_EQ(m.ocr_x.value, m.ocr_y.value);
-    EXPECT_FALSE(s3::enabled_x(m.portb));
-    EXPECT_TRUE(s3::enabled_y(m.portb));
+    EXPECT_FALSE(cad2g::enabled_x(m.portb));
+    EXPECT_TRUE(cad2g::enabled_y(m.portb));
     EXPECT_EQ(m.portb & 0x20, 0x20);  // DIR_Y = 1: -Y
 }
 
 // G00: both counts and one OCR from v_max (machine.rapid_feed_mm_per_min 1200 = 20 mm/s: 1.44 -> 1), head off.
-TEST(Seed003Plan, G00SendsBothCountsAndOneOcr) {
-    const s3::Plan p = plan("G0 X-10 Y2.5\n");
-    const s3::Motion& m = p.commands.at(0).motions.at(0);
+TEST(Cad2gPlan, G00SendsBothCountsAndOneOcr) {
+    const cad2g::Plan p = plan("G0 X-10 Y2.5\n");
+    const cad2g::Motion& m = p.commands.at(0).motions.at(0);
     EXPECT_EQ(m.ocr_x.value, 1);
-    EXPECT_EQ(s3::command_bytes(p.commands[0]),
+    EXPECT_EQ(cad2g::command_bytes(p.commands[0]),
               (std::vector<std::uint8_t>{0x00, 0x40, 0x06, 0x90, 0x01, 1, 0xC1}));  // 1600, 400; DIR_X 1
 }
 
 // §5.5: the counters are 16 bits, 409.6 mm at 1/32; a longer move is split (default) or wrapped, never silently.
-TEST(Seed003Plan, SixteenBitLimitSplitsAndWarns) {
-    const s3::Plan p = plan("G1 X420 F1200\n");
+TEST(Cad2gPlan, SixteenBitLimitSplitsAndWarns) {
+    const cad2g::Plan p = plan("G1 X420 F1200\n");
     ASSERT_EQ(p.commands.size(), 3U);  // two G01 of 33600 steps, M30
     EXPECT_EQ(p.commands[0].motions.at(0).count_x, 33600);
     EXPECT_EQ(p.commands[1].motions.at(0).count_x, 33600);
@@ -132,12 +132,12 @@ TEST(Seed003Plan, SixteenBitLimitSplitsAndWarns) {
     EXPECT_TRUE(contains(p.warnings[0].text, "sent as 2 commands"));
 }
 
-TEST(Seed003Plan, SixteenBitLimitWrapsWhenAsked) {
-    s3::PcOptions opt;
-    opt.long_moves = s3::LongMoves::Wrap;
-    const s3::Plan p = plan("G1 X420 F1200\n", opt);
+TEST(Cad2gPlan, SixteenBitLimitWrapsWhenAsked) {
+    cad2g::PcOptions opt;
+    opt.long_moves = cad2g::LongMoves::Wrap;
+    const cad2g::Plan p = plan("G1 X420 F1200\n", opt);
     ASSERT_EQ(p.commands.size(), 2U);
-    const s3::Motion& m = p.commands[0].motions.at(0);
+    const cad2g::Motion& m = p.commands[0].motions.at(0);
     EXPECT_TRUE(m.wrapped);
     EXPECT_EQ(m.steps_x, 67200);
     EXPECT_EQ(m.count_x, 67200 - 65536);
@@ -146,9 +146,9 @@ TEST(Seed003Plan, SixteenBitLimitWrapsWhenAsked) {
 }
 
 // Speeds outside the 8-bit range are held and reported with the line.
-TEST(Seed003Plan, OcrOutsideEightBitsIsReported) {
-    const s3::Plan p = plan("G1 X0.1 Y20 F600\n");  // v_x = 0.05 mm/s < 0.191 mm/s
-    const s3::Motion& m = p.commands.at(0).motions.at(0);
+TEST(Cad2gPlan, OcrOutsideEightBitsIsReported) {
+    const cad2g::Plan p = plan("G1 X0.1 Y20 F600\n");  // v_x = 0.05 mm/s < 0.191 mm/s
+    const cad2g::Motion& m = p.commands.at(0).motions.at(0);
     EXPECT_TRUE(m.ocr_x.too_slow);
     EXPECT_EQ(m.ocr_x.value, 255);
     ASSERT_EQ(p.warnings.size(), 1U);
@@ -158,23 +158,23 @@ TEST(Seed003Plan, OcrOutsideEightBitsIsReported) {
 }
 
 // App. A4: chords of at most arc_step_deg with 8-bit counts, then a record with both EN bits high.
-TEST(Seed003Plan, CircleAsChords) {
-    const s3::Plan p = plan("G0 X20 Y10\nG2 X20 Y10 I-10 J0 F600\n");
+TEST(Cad2gPlan, CircleAsChords) {
+    const cad2g::Plan p = plan("G0 X20 Y10\nG2 X20 Y10 I-10 J0 F600\n");
     ASSERT_EQ(p.commands.size(), 3U);
-    const s3::Command& arc = p.commands[1];
-    EXPECT_EQ(arc.id, s3::CommandId::G02);
+    const cad2g::Command& arc = p.commands[1];
+    EXPECT_EQ(arc.id, cad2g::CommandId::G02);
     EXPECT_EQ(arc.motions.size(), 180U);  // 360 deg / 2 deg
     std::int64_t sx = 0;
     std::int64_t sy = 0;
     for (std::size_t k = 0; k < arc.motions.size(); ++k) {
-        const s3::Motion& m = arc.motions[k];
+        const cad2g::Motion& m = arc.motions[k];
         EXPECT_LE(std::llabs(m.steps_x), 255);
         EXPECT_LE(std::llabs(m.steps_y), 255);
         EXPECT_EQ(m.count_x, m.x_timebase ? std::llabs(m.steps_y) : std::llabs(m.steps_x));
         EXPECT_EQ((m.portb & 0x20) != 0, m.steps_y < 0);
         if (m.x_timebase) {
             // X disabled: DIR_X flips against the chord before, so the reload shows on a pin
-            EXPECT_FALSE(s3::enabled_x(m.portb));
+            EXPECT_FALSE(cad2g::enabled_x(m.portb));
             ASSERT_GT(k, 0U);
             EXPECT_NE(m.portb & 0x01, arc.motions[k - 1].portb & 0x01);
         } else {
@@ -185,19 +185,19 @@ TEST(Seed003Plan, CircleAsChords) {
     }
     EXPECT_EQ(sx, 0);  // a full circle returns to its start
     EXPECT_EQ(sy, 0);
-    const std::vector<std::uint8_t> bytes = s3::command_bytes(arc);
+    const std::vector<std::uint8_t> bytes = cad2g::command_bytes(arc);
     ASSERT_EQ(bytes.size(), 1U + 4U * 180U + 4U);
     EXPECT_EQ(std::vector<std::uint8_t>(bytes.end() - 4, bytes.end()),
               (std::vector<std::uint8_t>{0x00, 0xFF, 0xFF, 0xD6}));  // EN_X, EN_Y high, head on
 }
 
 // A chord through the rightmost point of a circle has dx = 0: the seed's workaround, and DIR_X flipped.
-TEST(Seed003Plan, ArcChordWithDxZeroTimesYAndFlipsDirX) {
-    const s3::Plan p = plan(
+TEST(Cad2gPlan, ArcChordWithDxZeroTimesYAndFlipsDirX) {
+    const cad2g::Plan p = plan(
         "G0 X9.961946981 Y-0.871557427\nG3 X9.961946981 Y0.871557427 I-9.961946981 J0.871557427 F600\n");
-    const s3::Command& arc = p.commands.at(1);
+    const cad2g::Command& arc = p.commands.at(1);
     ASSERT_EQ(arc.motions.size(), 5U);  // -5..5 deg in 2-degree chords
-    const s3::Motion& mid = arc.motions[2];  // -1..1 deg
+    const cad2g::Motion& mid = arc.motions[2];  // -1..1 deg
     EXPECT_EQ(mid.steps_x, 0);
     EXPECT_TRUE(mid.x_timebase);
     EXPECT_EQ(mid.count_x, mid.steps_y);
@@ -208,11 +208,11 @@ TEST(Seed003Plan, ArcChordWithDxZeroTimesYAndFlipsDirX) {
 }
 
 // Long chords are cut further so that DXL fits 8 bits: R 100 mm at 2 deg would be 558 steps.
-TEST(Seed003Plan, ChordsFitTheEightBitCount) {
-    const s3::Plan p = plan("G0 X100\nG3 X-100 Y0 I-100 J0 F600\n");
-    const s3::Command& arc = p.commands.at(1);
+TEST(Cad2gPlan, ChordsFitTheEightBitCount) {
+    const cad2g::Plan p = plan("G0 X100\nG3 X-100 Y0 I-100 J0 F600\n");
+    const cad2g::Command& arc = p.commands.at(1);
     EXPECT_EQ(arc.motions.size(), 198U);  // ceil(pi x 100 mm x 160 / 254), more than 180 deg / 2 deg
-    for (const s3::Motion& m : arc.motions) {
+    for (const cad2g::Motion& m : arc.motions) {
         ASSERT_LE(std::llabs(m.steps_x), 255);
         ASSERT_LE(std::llabs(m.steps_y), 255);
     }
@@ -220,14 +220,14 @@ TEST(Seed003Plan, ChordsFitTheEightBitCount) {
 
 // The bytes go out per transfer (a command, or an arc's ID with its first chord, each chord, the terminator),
 // and together they are the command bytes in order.
-TEST(Seed003Plan, TransfersConcatenateToTheCommandBytes) {
-    const s3::Plan p = plan("G0 X20 Y10\nG1 X25 F600\nG3 X15 Y10 I-5 J0 F600\n");
-    const std::vector<s3::Transfer> t = s3::transfers(p);
+TEST(Cad2gPlan, TransfersConcatenateToTheCommandBytes) {
+    const cad2g::Plan p = plan("G0 X20 Y10\nG1 X25 F600\nG3 X15 Y10 I-5 J0 F600\n");
+    const std::vector<cad2g::Transfer> t = cad2g::transfers(p);
     std::vector<std::uint8_t> all;
-    for (const s3::Transfer& x : t) all.insert(all.end(), x.bytes.begin(), x.bytes.end());
+    for (const cad2g::Transfer& x : t) all.insert(all.end(), x.bytes.begin(), x.bytes.end());
     std::vector<std::uint8_t> expected;
-    for (const s3::Command& c : p.commands) {
-        const auto b = s3::command_bytes(c);
+    for (const cad2g::Command& c : p.commands) {
+        const auto b = cad2g::command_bytes(c);
         expected.insert(expected.end(), b.begin(), b.end());
     }
     EXPECT_EQ(all, expected);
@@ -236,7 +236,7 @@ TEST(Seed003Plan, TransfersConcatenateToTheCommandBytes) {
     EXPECT_EQ(t.at(2).bytes.size(), 5U);  // G03 ID + first chord
     EXPECT_EQ(t.at(3).bytes.size(), 4U);
     EXPECT_EQ(t.back().bytes, (std::vector<std::uint8_t>{0x3B}));
-    const auto segs = s3::motion_segments(p, MachineModel{});
+    const auto segs = cad2g::motion_segments(p, MachineModel{});
     EXPECT_EQ(segs.size(), 2U + p.commands.at(2).motions.size());
     EXPECT_EQ(segs.at(1).steps_x, 800);
 }
@@ -244,7 +244,7 @@ TEST(Seed003Plan, TransfersConcatenateToTheCommandBytes) {
 // Positions beyond 2^30 - 1 microsteps (machine.hpp) are refused with their line, for a caller that did not run the
 // job checks first (run/job_limits.hpp): before, 2.9e13 mm was split into 7e10 commands (std::bad_alloc), and the
 // step differences and the chord count of an arc of 10^24 mm overflowed int64 (UBSan).
-TEST(Seed003Plan, PositionsBeyondTheCountersAreRefusedNotOverflowed) {
+TEST(Cad2gPlan, PositionsBeyondTheCountersAreRefusedNotOverflowed) {
     const auto message = [](const std::string& text) {
         try {
             (void)plan(text);
@@ -258,5 +258,5 @@ TEST(Seed003Plan, PositionsBeyondTheCountersAreRefusedNotOverflowed) {
     const std::string arc = message("G1 X10 F600\nG2 X10 Y0 I1000000000000000000000000 J0\n");  // a full circle
     EXPECT_TRUE(contains(arc, "t.nc:2: arc of 6.28319e+24 mm needs")) << arc;
     // At the bound (2^30 - 1 steps = 6710886.39375 mm at 160 steps/mm) a move is planned, in 16-bit pieces.
-    EXPECT_NO_THROW((void)plan("G0 X6710886.39375\n", s3::PcOptions{}));
+    EXPECT_NO_THROW((void)plan("G0 X6710886.39375\n", cad2g::PcOptions{}));
 }

@@ -1,8 +1,8 @@
-#include "host/core/seed003/firmware_busy.hpp"
+#include "host/core/cad2g/firmware_busy.hpp"
 
 #include <algorithm>
 
-namespace cnc::host::seed003 {
+namespace cnc::host::cad2g {
 
 double motion_s(const Motion& m, TimerClock clk) {
     const double x_cycles = static_cast<double>(m.count_x) * static_cast<double>(step_period_cycles(m.ocr_x.value, clk));
@@ -30,4 +30,4 @@ std::vector<double> motion_before_next_confirm_s(const Plan& plan, const std::ve
     return out;
 }
 
-}  // namespace cnc::host::seed003
+}  // namespace cnc::host::cad2g

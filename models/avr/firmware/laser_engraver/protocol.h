@@ -1,9 +1,9 @@
 /*
  * Wire protocol between the PC program (CAD2G) and the ATmega328P firmware (V38) of seed 003, shared by the
- * firmware (C) and the PC program core (C++, models/host/core/seed003) so that the two cannot drift apart.
+ * firmware (C) and the PC program core (C++, models/host/core/cad2g) so that the two cannot drift apart.
  *
  * Handshake (seed 003 App. A2 "RCALL Transmit //confirm; RCALL Receive"): before EVERY byte it reads, the MCU
- * transmits SEED003_CONFIRM; the PC writes one byte per confirm it reads (writeSerialPort writes 1 byte).
+ * transmits LASER_ENGRAVER_CONFIRM; the PC writes one byte per confirm it reads (writeSerialPort writes 1 byte).
  *
  * Commands (IDs: seed 003 Table 5.1). The byte layouts are this re-implementation's decision: the receive
  * blocks of the listings are images missing from the seed (spec seed-003 §3.5); README.md gives the reasons.
@@ -17,23 +17,23 @@
 #pragma once
 
 enum {
-    SEED003_CONFIRM = 0x06, /* this re-implementation's choice (the seed's value is lost): ASCII ACK */
-    SEED003_CMD_G00 = 0x00, /* seed 003 Table 5.1 */
-    SEED003_CMD_G01 = 0x01,
-    SEED003_CMD_G02 = 0x02,
-    SEED003_CMD_G03 = 0x03,
-    SEED003_CMD_M30 = 0x3B, /* '00111011' */
-    SEED003_BAUD = 57600    /* seed 003 §5.3.1: UBRR0L = 16000000/16/57600-1 */
+    LASER_ENGRAVER_CONFIRM = 0x06, /* this re-implementation's choice (the seed's value is lost): ASCII ACK */
+    LASER_ENGRAVER_CMD_G00 = 0x00, /* seed 003 Table 5.1 */
+    LASER_ENGRAVER_CMD_G01 = 0x01,
+    LASER_ENGRAVER_CMD_G02 = 0x02,
+    LASER_ENGRAVER_CMD_G03 = 0x03,
+    LASER_ENGRAVER_CMD_M30 = 0x3B, /* '00111011' */
+    LASER_ENGRAVER_BAUD = 57600    /* seed 003 §5.3.1: UBRR0L = 16000000/16/57600-1 */
 };
 
 /* PORTB, the "start byte" (seed 003 §5.2.6): PB7 '1' PB6 '1' PB5 Y_DIR PB4 Y_EN PB3 Y_STP PB2 X_EN PB1 HEADER
  * PB0 X_DIR. EN is active low (1 = driver disabled); DIR 0 = +, 1 = - (seed 003 §2.2). */
 enum {
-    SEED003_PB_DIR_X = 0,
-    SEED003_PB_HEADER = 1,
-    SEED003_PB_EN_X = 2,
-    SEED003_PB_STEP_Y = 3,
-    SEED003_PB_EN_Y = 4,
-    SEED003_PB_DIR_Y = 5,
-    SEED003_PORTB_INPUTS = 0xC0 /* PB7, PB6 written '1' as in the seed's port table */
+    LASER_ENGRAVER_PB_DIR_X = 0,
+    LASER_ENGRAVER_PB_HEADER = 1,
+    LASER_ENGRAVER_PB_EN_X = 2,
+    LASER_ENGRAVER_PB_STEP_Y = 3,
+    LASER_ENGRAVER_PB_EN_Y = 4,
+    LASER_ENGRAVER_PB_DIR_Y = 5,
+    LASER_ENGRAVER_PORTB_INPUTS = 0xC0 /* PB7, PB6 written '1' as in the seed's port table */
 };

@@ -6,11 +6,11 @@
 
 /* seed 003 §5.3.1: LDI TEMP,16000000/16/57600-1 (integer arithmetic: 16) -> 16e6 / (16 x 17) = 58 823.5 Bd,
  * +2.12 % against the 57 600 Bd the PC asks for. U2X0 stays 0, UBRR0H stays 0. */
-#define UBRR_VALUE (F_CPU / 16 / SEED003_BAUD - 1)
+#define UBRR_VALUE (F_CPU / 16 / LASER_ENGRAVER_BAUD - 1)
 
 void usart_init(void) {
     /* The seed writes UBRR0L, UCSR0B, UCSR0C in that order; UCSR0C first changes nothing on the chip (its reset
-     * value is already 8N1) and keeps simulators that latch the rate at the UBRR write (toolchain.md §3) right. */
+     * value is already 8N1) and keeps simulators that latch the rate at the UBRR write (simavr 1.6 does) right. */
     UCSR0C = _BV(UCSZ01) | _BV(UCSZ00); /* 0x06: asynchronous, 8 data bits, no parity, 1 stop bit */
     UBRR0H = 0;
     UBRR0L = UBRR_VALUE;
@@ -32,7 +32,7 @@ static uint8_t receive(void) {
 }
 
 uint8_t usart_confirm_receive(void) {
-    transmit(SEED003_CONFIRM);
+    transmit(LASER_ENGRAVER_CONFIRM);
     return receive();
 }
 

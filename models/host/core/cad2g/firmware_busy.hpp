@@ -8,9 +8,9 @@
 #pragma once
 #include <vector>
 
-#include "host/core/seed003/plan.hpp"
+#include "host/core/cad2g/plan.hpp"
 
-namespace cnc::host::seed003 {
+namespace cnc::host::cad2g {
 
 [[nodiscard]] double motion_s(const Motion& m, TimerClock clk = {});
 
@@ -24,4 +24,4 @@ namespace cnc::host::seed003 {
                                                                const std::vector<Transfer>& transfers,
                                                                TimerClock clk = {});
 
-}  // namespace cnc::host::seed003
+}  // namespace cnc::host::cad2g

@@ -5,22 +5,22 @@
 #include <cstdint>
 #include <vector>
 
-#include "avr/firmware/seed003/protocol.h"
+#include "avr/firmware/laser_engraver/protocol.h"
+#include "host/core/cad2g/speed.hpp"
 #include "host/core/gcode.hpp"
-#include "host/core/seed003/speed.hpp"
 
-namespace cnc::host::seed003 {
+namespace cnc::host::cad2g {
 
 enum class CommandId : std::uint8_t {
-    G00 = SEED003_CMD_G00,
-    G01 = SEED003_CMD_G01,
-    G02 = SEED003_CMD_G02,
-    G03 = SEED003_CMD_G03,
-    M30 = SEED003_CMD_M30,
+    G00 = LASER_ENGRAVER_CMD_G00,
+    G01 = LASER_ENGRAVER_CMD_G01,
+    G02 = LASER_ENGRAVER_CMD_G02,
+    G03 = LASER_ENGRAVER_CMD_G03,
+    M30 = LASER_ENGRAVER_CMD_M30,
 };
 
-inline constexpr std::uint8_t kConfirmByte = SEED003_CONFIRM;
-inline constexpr std::uint32_t kSeedBaud = SEED003_BAUD;
+inline constexpr std::uint8_t kConfirmByte = LASER_ENGRAVER_CONFIRM;
+inline constexpr std::uint32_t kSeedBaud = LASER_ENGRAVER_BAUD;
 
 // One start byte: a G00, a G01, or one chord of an arc.
 struct Motion {
@@ -60,4 +60,4 @@ struct Command {
 // Every byte of a command, ID first.
 [[nodiscard]] std::vector<std::uint8_t> command_bytes(const Command& c);
 
-}  // namespace cnc::host::seed003
+}  // namespace cnc::host::cad2g

@@ -5,7 +5,7 @@
 #pragma once
 #include <cstdint>
 
-namespace cnc::host::seed003 {
+namespace cnc::host::cad2g {
 
 struct TimerClock {
     double f_cpu_hz = 16'000'000.0;  // seed 003 §2.1: 16 MHz crystal
@@ -28,4 +28,4 @@ struct Ocr {
 // CPU cycles of one STEP period: 2 N (OCR + 1).
 [[nodiscard]] std::int64_t step_period_cycles(std::uint8_t ocr, TimerClock clk = {});
 
-}  // namespace cnc::host::seed003
+}  // namespace cnc::host::cad2g

@@ -1,7 +1,7 @@
 /*
  * Firmware of seed 003 ("V38", AVR assembly in the thesis) re-implemented in C for avr-gcc: ATmega328P at
  * 16 MHz driving two DRV8825 through STEP (timer compare toggles), DIR and active-low EN, commanded one byte at a
- * time over USART0 by the PC program (CAD2G V42, models/host/core/seed003).
+ * time over USART0 by the PC program (CAD2G V42, models/host/core/cad2g).
  *
  * What the listings show and this firmware does (seed 003 App. A2-A4, spec seed-003 §4):
  *  - Start loop: confirm, receive the command ID, dispatch to G00 / G01 / arc (G02 and G03 share it) / M30.
@@ -16,7 +16,7 @@
  *
  * Where the seed is silent or lost, this firmware decides (README.md, spec seed-003 §8):
  *  - Byte layout and order of every command, the confirm value 0x06, a confirm before every byte: protocol.h.
- *  - Timer prescalers: /1024 on both timers for every command (the PC computes with 1024). SEED003_T2_CS110
+ *  - Timer prescalers: /1024 on both timers for every command (the PC computes with 1024). LASER_ENGRAVER_T2_CS110
  *    builds the G01 of App. A3 as listed (Timer2 CS = 110 = /256).
  *  - Every command starts from stopped timers, zero counts, clear flags and both STEP pins low (the receive and
  *    set-up blocks are missing from the seed); between chords the timers run on, as App. A4 shows.
@@ -43,11 +43,11 @@ int main(void) {
     usart_init();
     for (;;) {
         switch (usart_confirm_receive()) {
-            case SEED003_CMD_G00: cmd_g00(); break;
-            case SEED003_CMD_G01: cmd_g01(); break;
-            case SEED003_CMD_G02:
-            case SEED003_CMD_G03: cmd_arc(); break;
-            case SEED003_CMD_M30: cmd_m30(); break;
+            case LASER_ENGRAVER_CMD_G00: cmd_g00(); break;
+            case LASER_ENGRAVER_CMD_G01: cmd_g01(); break;
+            case LASER_ENGRAVER_CMD_G02:
+            case LASER_ENGRAVER_CMD_G03: cmd_arc(); break;
+            case LASER_ENGRAVER_CMD_M30: cmd_m30(); break;
             default: break;  /* an unknown ID is dropped: the Start loop asks for the next one */
         }
     }

@@ -9,9 +9,9 @@
 #include "usart.h"
 
 /* App. A3 as listed writes TCCR2B = 0b110: /256 on Timer2 (the comment says 128), while the PC program computes
- * OCR2A with 1024. The default build uses /1024 so that Y runs at the speed the PC asked for; the seed003_t2cs110
- * build keeps the listing's value (README.md). */
-#ifdef SEED003_T2_CS110
+ * OCR2A with 1024. The default build uses /1024 so that Y runs at the speed the PC asked for; the
+ * laser_engraver_t2cs110 build keeps the listing's value (README.md). */
+#ifdef LASER_ENGRAVER_T2_CS110
 #define T2_CS_G01 T2_CS_256
 #else
 #define T2_CS_G01 T2_CS_1024
@@ -68,7 +68,7 @@ void cmd_arc(void) {
 
 void cmd_m30(void) {
     axes_finish();
-    PORTB &= ~_BV(SEED003_PB_HEADER);
+    PORTB &= ~_BV(LASER_ENGRAVER_PB_HEADER);
     set_sleep_mode(SLEEP_MODE_PWR_DOWN);  /* the seed's SLEEP mode is unspecified */
     sleep_enable();
     sleep_cpu();  /* interrupts are off: the MCU sleeps until reset */

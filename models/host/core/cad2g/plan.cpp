@@ -1,4 +1,4 @@
-#include "host/core/seed003/plan.hpp"
+#include "host/core/cad2g/plan.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "common/text_format.hpp"
 #include "common/bad_input.hpp"
 
-namespace cnc::host::seed003 {
+namespace cnc::host::cad2g {
 
 namespace {
 
@@ -203,7 +203,7 @@ private:
             Motion& m = c.motions.back();
             if (m.x_timebase && c.motions.size() > 1) {
                 // X is disabled, so its DIR is free: flipped, it marks where this chord starts (motion_windows).
-                const std::uint8_t dir_x = 1U << SEED003_PB_DIR_X;
+                const std::uint8_t dir_x = 1U << LASER_ENGRAVER_PB_DIR_X;
                 m.portb = static_cast<std::uint8_t>((m.portb & ~dir_x) | (~c.motions[before - 1].portb & dir_x));
             }
         }
@@ -323,4 +323,4 @@ std::vector<MotionSegment> motion_segments(const Plan& plan, const MachineModel&
     return segs;
 }
 
-}  // namespace cnc::host::seed003
+}  // namespace cnc::host::cad2g

@@ -8,7 +8,7 @@
 #define PIN_STEP_X PD6 /* [D6] OC0A: Timer0 CTC toggle */
 
 /* PORTB: the start-byte bits of protocol.h */
-#define PORTB_EN_BOTH (_BV(SEED003_PB_EN_X) | _BV(SEED003_PB_EN_Y))
+#define PORTB_EN_BOTH (_BV(LASER_ENGRAVER_PB_EN_X) | _BV(LASER_ENGRAVER_PB_EN_Y))
 #define PORTB_OUTPUTS                                                                                        \
-    (_BV(SEED003_PB_DIR_X) | _BV(SEED003_PB_HEADER) | _BV(SEED003_PB_EN_X) | _BV(SEED003_PB_STEP_Y) |      \
-     _BV(SEED003_PB_EN_Y) | _BV(SEED003_PB_DIR_Y))
+    (_BV(LASER_ENGRAVER_PB_DIR_X) | _BV(LASER_ENGRAVER_PB_HEADER) | _BV(LASER_ENGRAVER_PB_EN_X) |            \
+     _BV(LASER_ENGRAVER_PB_STEP_Y) | _BV(LASER_ENGRAVER_PB_EN_Y) | _BV(LASER_ENGRAVER_PB_DIR_Y))

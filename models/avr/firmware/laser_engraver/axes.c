@@ -25,13 +25,13 @@ ISR(TIMER0_COMPA_vect) {
     }
     s_half_pulse = 0;
     if (--s_count_x != 0) return;
-    PORTB |= _BV(SEED003_PB_EN_X);
+    PORTB |= _BV(LASER_ENGRAVER_PB_EN_X);
     TIMSK0 = 0;
     s_x_running = 0;
 }
 
 void axes_init(void) {
-    PORTB = SEED003_PORTB_INPUTS | PORTB_EN_BOTH;  /* drivers disabled before the pins become outputs */
+    PORTB = LASER_ENGRAVER_PORTB_INPUTS | PORTB_EN_BOTH;  /* drivers disabled before the pins become outputs */
     DDRB = PORTB_OUTPUTS;
     PORTD &= ~_BV(PIN_STEP_X);
     DDRD |= _BV(PIN_STEP_X);
@@ -105,7 +105,7 @@ void axes_count_y_polling(uint16_t count_y) {
         --count_y;
         TIFR2 = _BV(OCF2A);
     }
-    PORTB |= _BV(SEED003_PB_EN_Y);
+    PORTB |= _BV(LASER_ENGRAVER_PB_EN_Y);
 }
 
 /* App. A4 after the wait loop: MOV STEPL,DXL; OUT OCR0A,V_X; STS OCR2A,V_Y; OUT PORTB,DIR. The timers keep

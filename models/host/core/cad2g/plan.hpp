@@ -12,7 +12,7 @@
 //   end, and wrong outside the first quadrant.) DIR comes from the sign of each chord's displacement, which is
 //   Tables 5.2/5.3 for every chord that does not cross an axis. A chord with dx = 0 (X disabled) flips DIR_X
 //   against the chord before it: the driver ignores it, and every chord start then changes a PORTB pin, which is
-//   how the measurements find the chord boundaries without an extra pin (sim/systems/atmega/motion_windows.hpp).
+//   how the measurements find the chord boundaries without an extra pin (sim/architectures/atmega/motion_windows.hpp).
 // - dx = 0 (G01 and chords): the seed's workaround, count |dy| on X's timer at Y's speed with X disabled.
 // - A count above 16 bits (409.6 mm at 160 steps/mm) is split into commands that fit (LongMoves::Split, with a
 //   warning) or sent modulo 65536 as the seed's registers would take it (LongMoves::Wrap, with a warning).
@@ -22,13 +22,13 @@
 #include <vector>
 
 #include "common/warning.hpp"
+#include "host/core/cad2g/commands.hpp"
+#include "host/core/cad2g/speed.hpp"
 #include "host/core/cam.hpp"
 #include "host/core/gcode.hpp"
 #include "host/core/machine.hpp"
-#include "host/core/seed003/commands.hpp"
-#include "host/core/seed003/speed.hpp"
 
-namespace cnc::host::seed003 {
+namespace cnc::host::cad2g {
 
 enum class LongMoves { Split, Wrap };
 
@@ -58,4 +58,4 @@ struct Transfer {
 // The motions as motion segments (run/moves.hpp turns them into the metrics' move list).
 [[nodiscard]] std::vector<MotionSegment> motion_segments(const Plan& plan, const MachineModel& machine);
 
-}  // namespace cnc::host::seed003
+}  // namespace cnc::host::cad2g

@@ -1,5 +1,5 @@
 // `cncsim run --samples FILE`: the carriage's tool samples as a CSV a spreadsheet, numpy or gnuplot loads
-// (README "Output files"): a header line `t_s,x_mm,y_mm`, then one row per sample in time order.
+// (docs/usage.md, "Output files"): a header line `t_s,x_mm,y_mm`, then one row per sample in time order.
 #pragma once
 #include <ostream>
 #include <vector>

@@ -2,7 +2,7 @@
 """One corpus job through `cncsim run` on one architecture, checked from outside the interpreter.
 
 lenient: exit 0, a report marked ok and under 5 MB, and the report's "ignored by this machine" list equal, word by word and line
-by line, to what this script finds by its own reading of the file (the words the README's G-code table lists as
+by line, to what this script finds by its own reading of the file (the words docs/gcode.md lists as
 ignored: T D H O M6 M7-M9 M100-M199 G40-G42 G43 G49 G80 G97 G18 G19, '%' lines and '/' block-delete lines).
 strict: exit 2 when the file has any such word, with every one of them named in the message; exit 0 otherwise.
 

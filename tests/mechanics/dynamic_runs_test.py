@@ -5,7 +5,7 @@
     80 mm/s is 1.55 x the X axis's pull-in rate (51.7 mm/s, `cncsim motor-curve`); fpga-uart jumps straight
     to it and must lose steps, which its report counts and its summary prints; spi-fpga reaches the same speed
     on its 1000 mm/s^2 ramp and must lose none.
-    The README's table (section "Physical mechanics") must be what the runs print: the losses at F4800 per
+    The table of docs/mechanics.md ("What the dynamic carriage changes") must be what the runs print: the losses at F4800 per
     architecture, none at the stated highest feed, some at the next feed the search tried.
   circle_contour CNCSIM ROOT: the fpga-uart circle: the contour error with dynamic mechanics exceeds the ideal one
     (and its plots draw the load angle and the lost steps over time), and the summary says where it comes from.
@@ -45,14 +45,14 @@ def six_segment(cncsim, root, tmp, arch, feed):
 
 
 def lost_steps_f4800(cncsim, root, tmp):
-    with open(os.path.join(root, "README.md")) as f:
+    with open(os.path.join(root, "docs", "mechanics.md")) as f:
         readme = f.read()
     rows = re.findall(r"^\| (fpga-uart|atmega|spi-fpga) \| (\d+) / (\d+) \| F(\d+)(?: \(F(\d+) loses steps\))? \|",
                       readme, re.M)
-    assert len(rows) == 3, "README: expected the three rows of the lost-steps table, found %r" % rows
+    assert len(rows) == 3, "docs/mechanics.md: expected the three rows of the lost-steps table, found %r" % rows
     for arch, x, y, good, bad in rows:
         report, out = six_segment(cncsim, root, tmp, arch, 4800)
-        assert lost(report, arch) == (int(x), int(y)), "%s at F4800: report %r, README %s / %s" % (
+        assert lost(report, arch) == (int(x), int(y)), "%s at F4800: report %r, docs/mechanics.md %s / %s" % (
             arch, lost(report, arch), x, y)
         assert re.search(r"x: lost %s full steps" % x, out), "%s: the summary does not print the losses" % arch
         if arch == "spi-fpga":
@@ -62,9 +62,9 @@ def lost_steps_f4800(cncsim, root, tmp):
         if arch == "fpga-uart":
             assert int(x) > 0, "fpga-uart jumps to 80 mm/s, above the pull-in rate, and must lose steps"
         report, _ = six_segment(cncsim, root, tmp, arch, int(good))
-        assert lost(report, arch) == (0, 0), "%s at F%s (README: no losses): %r" % (arch, good, lost(report, arch))
+        assert lost(report, arch) == (0, 0), "%s at F%s (docs/mechanics.md: no losses): %r" % (arch, good, lost(report, arch))
         report, _ = six_segment(cncsim, root, tmp, arch, int(bad))
-        assert sum(lost(report, arch)) > 0, "%s at F%s (README: loses steps): none lost" % (arch, bad)
+        assert sum(lost(report, arch)) > 0, "%s at F%s (docs/mechanics.md: loses steps): none lost" % (arch, bad)
 
 
 def circle_contour(cncsim, root, tmp):

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Every architecture's VCD has the same machine pins, declared first and in the same order (README, "VCD traces and
-`analyze`": step/dir and the DRV8825's nENBL per axis, the laser), then its own link pins: a trace of one
-architecture can be analysed with the options of another. The carriage position per axis (real-valued) comes
+"""Every architecture's VCD has the same machine pins, declared first and in the same order (docs/vcd.md:
+step/dir and the DRV8825's nENBL per axis, the laser), then its own link pins: a trace of one architecture can be
+analysed with the options of another. The carriage position per axis (real-valued) comes
 after them in every architecture. spi-fpga's SPI wires toggle bit by bit, so they are
-traced only when asked for (`spi.trace_wires = true` or named in `trace.signals`): asked for here.
+traced only when asked for (`spi.trace_wires = true` or named in `trace.signals`): asked for here. The ideal
+controller has no link: the machine's pins alone.
 
 Usage: machine_pins.py CNCSIM SCENARIO WORKDIR ARCHITECTURE...
 """
@@ -16,7 +17,7 @@ from vcd_tools import fail
 MACHINE_PINS = ["step_x", "dir_x", "step_y", "dir_y", "n_enbl_x", "n_enbl_y", "laser"]
 CARRIAGE = ["carriage_x_mm", "carriage_y_mm"]
 LINK_PINS = {"fpga-uart": {"uart_rx", "uart_tx"}, "atmega": {"uart_rx", "uart_tx"},
-             "spi-fpga": {"sclk", "mosi", "miso", "ss"}}
+             "spi-fpga": {"sclk", "mosi", "miso", "ss"}, "ideal": set()}
 
 
 def declared(vcd):

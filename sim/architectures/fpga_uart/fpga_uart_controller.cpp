@@ -230,7 +230,7 @@ void hand_over_read(const ExecutedPieces& executed, const DeadTimeFold& dead_fol
 
 // The fpga-uart side of the job estimate: send_steps.py's settle and init gap, then per packet its trip over
 // the link: the host's work and write latency, the USB frames out and in, the driver latency, and the packet
-// and its ACK on the line (4.3 ms at 115200 Bd; the README's dead-time table measures 4.35 ms per gap).
+// and its ACK on the line (4.3 ms at 115200 Bd; the run's dead-time split measures 4.35 ms per gap on the square: docs/usage.md).
 ArchPace pace(const Scenario& s, const FpgaUartSettings& f, std::size_t packets) {
     constexpr double kBitsPerByte = 10.0;  // 8N1
     constexpr double kTripBytes = host::kMotionPacketBytes + 1.0;  // the packet and its ACK

@@ -1,5 +1,5 @@
 // The laser module's TTL enable input (active high; seed 000 §5.5 laser_ctrl drives it): its state and total
-// on-time. Power modulation is not part of the seed (ON/OFF only, seed 000 §9 Q20). The on/off history is the
+// on-time. Power modulation is not part of the seed (ON/OFF only, seed 000 §5.2.5). The on/off history is the
 // probes' (the metrics and the VCD record the pin): kept here it would grow with the job.
 #pragma once
 #include <systemc>

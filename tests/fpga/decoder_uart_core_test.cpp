@@ -39,7 +39,8 @@ TEST(PacketDecoderCore, InitAndMotionPacketsComplete) {
 
 TEST(PacketDecoderCore, MotionUsesOnlyTheLowTwoBitsOfByteZero) {
     PacketDecoderCore d(18'750'000);
-    feed_bytes(d, {0xFE, 0, 0, 0, 1, 0, 0, 0, 1, 0, 10});  // 0xFE (manual laser, Q2) starts a motion packet
+    // 0xFE, the manual laser packet of seed 000 §2.6, is not in the appendix decoder: it starts a motion packet.
+    feed_bytes(d, {0xFE, 0, 0, 0, 1, 0, 0, 0, 1, 0, 10});
     EXPECT_EQ(d.motion().motion, 2);
 }
 
@@ -57,7 +58,7 @@ TEST(PacketDecoderCore, TimeoutClearsAPartialPacketAndKeepsOutputs) {
 }
 
 TEST(PacketDecoderCore, WithoutTheWatchdogALeftoverByteShiftsTheNextPacket) {
-    // Seed 000 Q18: no sync marker for motion packets. 3 stale bytes + a new packet complete after 8 new bytes.
+    // Seed 000's motion packets carry no sync marker. 3 stale bytes + a new packet complete after 8 new bytes.
     PacketDecoderCore d(18'750'000);
     feed_bytes(d, {0x01, 0x00, 0x00});
     const auto r = feed_bytes(d, test::motion_packet(1, 5, 3, 3000));

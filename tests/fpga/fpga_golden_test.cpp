@@ -1,6 +1,6 @@
 // Seed 000 numbers through the event-driven SystemC top, driven by a bit-level UART waveform at 115200 Bd:
-// the worked packet, the §5.4 cycle timeline, §3.4.7, the Q3 overflow, the Q1 init wiring, and the
-// process-activation budget (the model wakes per edge, never per clock).
+// the worked packet, the cycle timeline (models/fpga/README.md), §3.4.7, the 32-bit period overflow, the init
+// packet wiring, and the process-activation budget (the model wakes per edge, never per clock).
 #include <gtest/gtest.h>
 
 #include "fpga_test_support.hpp"
@@ -146,7 +146,8 @@ TEST(FpgaGolden, Section347RunTime) {
     EXPECT_EQ(y.back(), m.k + 203 + 799LL * 41'946);
 }
 
-// Q3: feed 100 mm/min, 73,600 x 36,800 steps (460 mm x 230 mm at 160 steps/mm), the whole 276 s move.
+// The 32-bit period overflow: feed 100 mm/min, 73,600 x 36,800 steps (460 mm x 230 mm at 160 steps/mm), the
+// whole 276 s move.
 void check_overflow_move(PeriodArithmetic arithmetic, std::uint32_t expected_period_y) {
     constexpr std::int64_t kRun = 73'600LL * 187'500;  // 13.8e9 cycles: the product that overflows
     FpgaConfig cfg;

@@ -1,5 +1,5 @@
 // Seed 000 numbers through the SystemC-free cores: worked packet encodings, NUMERATOR/feed periods, the
-// §3.4.7 example, the Q3 overflow, and the §5.4 cycle timeline.
+// §3.4.7 example, the 32-bit period overflow, and the cycle timeline of models/fpga/README.md.
 #include <gtest/gtest.h>
 
 #include "common/units.hpp"
@@ -40,7 +40,7 @@ TEST(Seed000Golden, WorkedExamplePeriodsAndTimeline) {
 }
 
 TEST(Seed000Golden, Section347FeedExample) {
-    // §3.4.7 / Q6: the RTL receives feed 894 (not 894.43) for 1600 x 800 steps.
+    // §3.4.7: the RTL receives feed 894 (not the 894.43 the text computes with) for 1600 x 800 steps.
     const FpgaConfig cfg;
     const StepPeriods p = compute_periods(1600, 800, 894, 18'750'000, 18'750'000, cfg);
     EXPECT_EQ(p.x_cycles, 20'973U);

@@ -1,4 +1,4 @@
-// Seed 000 numbers and bytes, exactly as the thesis prints them (spec/seed-000-fpga-uart.md §2.2, §3.5, §4.2, §7.3).
+// Seed 000 numbers and bytes, exactly as the thesis prints them (§3.4.2-§3.4.7, §4.5-§4.9, §6.3.1).
 #include <gtest/gtest.h>
 
 #include <fstream>

@@ -232,7 +232,7 @@ TEST(FpgaUartCircle, SeedRoundingOfChordEndsExceedsTheBound) {
     EXPECT_EQ(out.report.at("fpga-uart").at("segments"), 159);
 }
 
-// The 32-bit period product (seed 000 §5.4, Q3): 187,500 clocks x 73,600 steps = 1.38e10 does not fit.
+// The appendix step_gen's 32-bit period product: 187,500 clocks x 73,600 steps = 1.38e10 does not fit.
 TEST(FpgaUartOverflow, ExactPeriodByDefaultAndAWarning) {
     const auto out = run_shipped("overflow_slow_diagonal", {"mechanics.model=ideal", "trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;

@@ -1,5 +1,5 @@
 // Parameters of the seed 000 FPGA (DE1-SoC, Verilog of Π.1-Π.6): clock, UART bit counts, step_gen timing,
-// and the two switches for the seed's open questions (init packet wiring Q1, 32-bit period product Q3).
+// and the two switches where the appendix departs from the text (init packet wiring, 32-bit period product).
 #pragma once
 #include <cstdint>
 
@@ -7,7 +7,7 @@
 
 namespace cnc::fpga {
 
-// seed 000 Q3: the text computes period_sub = (num/feed)*abs_dom/abs_sub without overflow; the appendix
+// seed 000 §3.4.5 computes period_sub = (num/feed)*abs_dom/abs_sub without overflow; the appendix step_gen
 // evaluates the product at 32 bits and wraps.
 enum class PeriodArithmetic { Exact, Wrap32 };
 
@@ -19,8 +19,8 @@ struct FpgaConfig {
     std::uint32_t pulse_high_cycles = 100;           // seed 000 §5.4 PULSE_HIGH: 2 us STEP high
     std::uint32_t dir_settle_cycles = 200;           // seed 000 §5.4 DIR_SETTLE: 4 us
     std::uint32_t numerator_default = 18'750'000;    // seed 000 §5.3/§5.4 reset value of num_x/num_y (160 steps/mm)
-    std::uint32_t feed_zero_period_cycles = 62'500;  // seed 000 §5.4 / Q4: both periods when feed_rate == 0
-    bool init_packet_wired = true;                   // false = appendix top.v: cfg_valid/numerators unconnected (Q1)
+    std::uint32_t feed_zero_period_cycles = 62'500;  // step_gen.v: both periods when feed_rate == 0 (unexplained)
+    bool init_packet_wired = true;                   // false = appendix top.v: cfg_valid/numerators unconnected
     PeriodArithmetic period_arithmetic = PeriodArithmetic::Exact;  // Exact = the text, Wrap32 = the appendix
 };
 

@@ -26,7 +26,7 @@ struct InitRecord {
     TimePs t_cfg_valid_ps = -1;          // edge at which cfg_valid is high
     std::uint32_t num_x = 0;
     std::uint32_t num_y = 0;
-    bool applied = false;                // latched by step_gen: wired (Q1) and step_gen IDLE
+    bool applied = false;                // latched by step_gen: init_packet_wired and step_gen IDLE
 };
 
 struct FpgaStats {
@@ -34,7 +34,7 @@ struct FpgaStats {
     std::uint64_t framing_errors = 0;    // uart_rx bytes dropped for a low stop bit
     std::uint64_t watchdog_resets = 0;   // packet_decoder 100 ms timeouts that cleared a partial packet
     std::uint64_t acks_sent = 0;         // tx_start pulses
-    std::uint64_t acks_dropped = 0;      // busy falls while uart_tx was busy (seed 000 §4.3, Q17)
+    std::uint64_t acks_dropped = 0;      // busy fell while uart_tx was busy: no ACK (seed 000 §4.13), none pending
 };
 
 }  // namespace cnc::fpga

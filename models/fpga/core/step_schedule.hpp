@@ -34,7 +34,7 @@ struct StepPeriods {
     bool overflow = false;  // the 32-bit product (num/feed)*abs_dom exceeded 2^32-1 (computed in either mode)
 };
 
-// DIR_WAIT's first edge. feed 0 -> both feed_zero_period (Q4); both abs 0 -> 0, 0; otherwise the dominant
+// DIR_WAIT's first edge. feed 0 -> both feed_zero_period (uncoordinated); both abs 0 -> 0, 0; otherwise the dominant
 // axis (X on a tie) gets num_dom/feed and the other (num_dom/feed)*abs_dom/abs_sub, or 0 if it does not move.
 // Wrap32 takes the product mod 2^32 like the appendix. Exact uses the 64-bit product; a quotient that does not
 // fit the 32-bit period register saturates at 2^32-1 cycles (85.9 s between steps), see models/fpga/README.md.

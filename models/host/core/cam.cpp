@@ -28,9 +28,9 @@ std::string number_text(double v) {
     return buf;
 }
 
-// Absolute position in steps. Rounding absolute positions (not each displacement) keeps the commanded step
-// position within half a step of the path however many segments there are (seed 000 Q11); llround rounds
-// halves away from zero, so a mirrored path gives mirrored steps.
+// Absolute position in steps. Rounding absolute positions (not each displacement, as seed 000 §3.4.3 does, whose
+// errors add up) keeps the commanded step position within half a step of the path however many segments there
+// are; llround rounds halves away from zero, so a mirrored path gives mirrored steps.
 std::int64_t absolute_steps(double pos_mm, double steps_per_mm, const std::string& where, const char* axis) {
     const double steps = pos_mm * steps_per_mm;
     if (!(std::fabs(steps) < kMaxAbsoluteSteps)) {

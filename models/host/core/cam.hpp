@@ -11,7 +11,9 @@
 
 namespace cnc::host {
 
-enum class FeedRounding { Round, Truncate };  // seed 000 Q6: the host's rounding of axisFeed is unstated
+// How the host makes the packet's integer FeedRate: seed 000 §3.4.7 sends axisFeed 894.43 as 894 but does not say
+// whether it rounds or truncates.
+enum class FeedRounding { Round, Truncate };
 
 // Where the interior chord ends of an arc go on the step grid. The arc's programmed end point is always rounded
 // per axis, so that the next move starts where the program says.
@@ -33,11 +35,11 @@ enum class ChordEnds { OnArc, Round };
 inline constexpr double kOnArcSagittaShare = 0.8;
 
 struct CamOptions {
-    // Largest distance between a chord and its arc (sagitta). seed 000 Q9 gives no value; 0.002 mm is grbl's
+    // Largest distance between a chord and its arc (sagitta). Seed 000 gives no value; 0.002 mm is grbl's
     // $12 arc tolerance default (gnea/grbl v1.1h defaults.h), a third of one 6.25 um microstep.
     double chord_tolerance_mm = 0.002;
     FeedRounding feed_rounding = FeedRounding::Round;
-    // seed 000 Q10: whether G0 feed is corrected to the dominant axis is unclear; true treats G0 like G1
+    // Seed 000 does not say whether G0's feed gets §3.4.5's dominant-axis correction; true treats G0 like G1
     // (coordinated straight line at the rapid path speed), false sends the rapid feed unchanged.
     bool correct_rapid_feed = true;
     ChordEnds chord_ends = ChordEnds::OnArc;  // see ChordEnds

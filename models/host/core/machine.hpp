@@ -23,8 +23,8 @@ struct AxisMachine {
     int pulley_teeth = 20;         // seed 000 T3.4: GT2 20T pulley
     double belt_pitch_mm = 2.0;    // seed 000 T3.4: GT2, 2 mm/tooth
     double lead_mm = 8.0;          // leadscrew only; 8 mm is the common T8 screw (seed 000 gives no leadscrew values)
-    int screw_starts = 1;          // leadscrew only; seed 000 Q12: travel_per_rev = lead x starts
-    double gear_ratio = 1.0;       // motor revs per pulley/screw rev; seed 000 §2.2 uses it, the form has no field (Q12)
+    int screw_starts = 1;          // leadscrew only; travel_per_rev = lead x starts (seed 000 §3.4.2: belts only)
+    double gear_ratio = 1.0;       // motor revs per pulley/screw rev (seed 000 §3.4.2; not on its AddModel form)
     double travel_mm = 0.0;        // TravelDistance of seed 000 §2.1; 0 = unlimited
     // A measured steps/mm (grbl's $100) that replaces the transmission's: machines are often calibrated, not
     // specified. It counts microsteps at `microsteps`, which still straps the DRV8825 MODE pins, so the motor
@@ -58,8 +58,8 @@ struct MachineModel {
 };
 
 // Throws cnc::BadInput(where, ...) for a value no machine can have, naming what is allowed.
-// Microsteps must be one of the DRV8825 modes 1, 2, 4, 8, 16, 32 (seed 000 §8; the AddModel form offers
-// only 8, 16 and 32, Q12, but the driver supports all six).
+// Microsteps must be one of the DRV8825 modes 1, 2, 4, 8, 16, 32 (seed 000 §2.3; the AddModel form of §3.2 offers
+// only 8, 16 and 32, but the driver supports all six).
 void validate(const AxisMachine& axis, const std::string& where);
 
 // The path speed at which a straight displacement (dx, dy) keeps every axis within its velocity limit: `feed`

@@ -26,8 +26,8 @@ private:
     double m_gear_ratio;
 };
 
-// Leadscrew: travel per screw revolution = the lead = thread pitch x starts (seed 000 §9 Q12: the seed gives
-// the belt formula only). A Tr8x8 screw is pitch 2 mm x 4 starts = 8 mm per revolution.
+// Leadscrew: travel per screw revolution = the lead = thread pitch x starts (seed 000 §3.4.2 gives the belt
+// formula only). A Tr8x8 screw is pitch 2 mm x 4 starts = 8 mm per revolution.
 // gear_ratio: motor revolutions per screw revolution.
 class Leadscrew : public Transmission {
 public:

@@ -17,7 +17,7 @@ static volatile uint8_t s_x_running;
 
 /* seed 003 App. A2 OCR0A_Overflow: 1st match = half a STEP period, 2nd match = one microstep; at zero the
  * ISR disables driver X and its own interrupt. Unlike the listing, the compiler saves SREG and the registers it
- * uses (the listing clobbers SREG and TEMP, spec seed-003 §4.2), and the flag is cleared on every step. */
+ * uses (the listing saves neither SREG nor TEMP), and the flag is cleared on every step. */
 ISR(TIMER0_COMPA_vect) {
     if (!s_half_pulse) {
         s_half_pulse = 1;
@@ -62,7 +62,7 @@ void axes_prepare(uint8_t ocr_x, uint8_t ocr_y) {
 void axes_arm_x_interrupt(uint16_t count_x) {
     s_half_pulse = 0;
     s_count_x = count_x;
-    /* A zero count would wrap to 65536 steps in the listing's SBIW (spec seed-003 §4.6): the axis is done. */
+    /* A zero count would wrap to 65536 steps in App. A2's SBIW: the axis is done. */
     s_x_running = count_x != 0;
     TIFR0 = _BV(OCF0A);  /* a match flag left from the last chord must not count as this chord's half pulse */
     TIMSK0 = count_x != 0 ? _BV(OCIE0A) : 0;

@@ -41,7 +41,7 @@ void cmd_g01(void) {
     axes_prepare(ocr_x, ocr_y);
     axes_start(portb, T2_CS_G01);
     axes_count_x_polling(count_x);
-    axes_finish();  /* the listing does not show the end of G01 (spec Q6): both axes stop with X */
+    axes_finish();  /* App. A3 does not show how G01 ends: both axes stop with X */
 }
 
 void cmd_arc(void) {

@@ -6,7 +6,7 @@
  * transmits LASER_ENGRAVER_CONFIRM; the PC writes one byte per confirm it reads (writeSerialPort writes 1 byte).
  *
  * Commands (IDs: seed 003 Table 5.1). The byte layouts are this re-implementation's decision: the receive
- * blocks of the listings are images missing from the seed (spec seed-003 §3.5); README.md gives the reasons.
+ * blocks of the listings (App. A2-A4) are images missing from the seed; README.md gives the reasons.
  *   G00  00 | XL XH | YL YH | OCR  | PORTB        7 bytes: counts of both axes, one OCR (v_max) for both timers
  *   G01  01 | XL XH | OCR0A | OCR2A | PORTB       6 bytes: only X is counted (App. A3)
  *   G02  02 | chord... | terminator               per chord: DXL OCR0A OCR2A PORTB (App. A4: 8-bit DXL)

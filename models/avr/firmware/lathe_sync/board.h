@@ -1,6 +1,5 @@
 /* Seed 002's board (§3 pin map, §6.1 constants): ATmega16 at 8 MHz. Our C re-implementation of the thesis's
- * firmware (Appendix A), written from the extraction in docs/spec/seed-002-lathe-servo.md; choices where the
- * listing is ambiguous are marked "seed option" with the §11 item they settle. */
+ * firmware (Appendix A); choices where the listing is ambiguous are marked "seed option". */
 #ifndef LATHE_SYNC_BOARD_H
 #define LATHE_SYNC_BOARD_H
 

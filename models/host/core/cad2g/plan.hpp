@@ -2,7 +2,7 @@
 // step grid, per-axis speeds and their truncated 8-bit OCR words, arcs as chords, DIR/EN/HEADER start bytes,
 // and the order in which the bytes go out (one per confirm).
 //
-// Decisions where the seed is silent (README of the firmware, spec seed-003 §8):
+// Decisions where the seed is silent (the firmware's are in models/avr/firmware/laser_engraver/README.md):
 // - F is the programmed path speed (the interpreter converts mm/s or mm/min); G00 runs both axes at v_max =
 //   the rapid feed (machine.rapid_feed_mm_per_min), one OCR for both timers.
 // - Head: on (HEADER = 1) for G01/G02/G03, off for G00, as CAD2G's pen down/up; M3/M5 are not sent.

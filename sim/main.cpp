@@ -14,19 +14,19 @@
 #include <CLI/CLI.hpp>
 #include <systemc>
 
+#include "architectures/catalog.hpp"
 #include "common/bad_input.hpp"
 #include "compare/compare.hpp"
 #include "compare/compare_outputs.hpp"
-#include "metrics/vcd/analyze_input.hpp"
-#include "metrics/pulse/commanded_rates.hpp"
 #include "metrics/metrics.hpp"
+#include "metrics/pulse/commanded_rates.hpp"
 #include "metrics/report/report.hpp"
+#include "metrics/vcd/analyze_input.hpp"
 #include "metrics/vcd/vcd_reader.hpp"
 #include "motor_curve_cmd.hpp"
 #include "output/output_file.hpp"
 #include "output/samples_csv.hpp"
 #include "plots/run_plots.hpp"
-#include "architectures/catalog.hpp"
 #include "run/run.hpp"
 #include "scenario/scenario.hpp"
 
@@ -58,8 +58,8 @@ int cmd_run(const std::string& scenario_path, const std::vector<std::string>& se
     if (!s.report_path.empty()) {
         report_file.emplace(s.report_path, report.empty() ? s.file + ": trace.report" : "--report");
     }
-    s.progress = progress == "off"   ? cnc::sim::ProgressStyle::Off
-                 : progress == "log" ? cnc::sim::ProgressStyle::Log
+    s.progress = progress == "off"       ? cnc::sim::ProgressStyle::Off
+                 : progress == "log"     ? cnc::sim::ProgressStyle::Log
                  : isatty(STDERR_FILENO) ? cnc::sim::ProgressStyle::Terminal
                                          : cnc::sim::ProgressStyle::Log;
     const cnc::sim::RunOutcome out = cnc::sim::run_scenario(s);
@@ -143,7 +143,7 @@ int cmd_compare(const std::string& scenario_path, const std::string& archs, cons
     for (std::string a; std::getline(ss, a, ',');) {
         if (!cnc::sim::find_architecture(a, "--arch " + a).job_use().runs_job) {
             throw cnc::BadInput("--arch " + a, "compares the architectures that run a job (" + job_architectures() +
-                                               "); " + a + " does not");
+                                                   "); " + a + " does not");
         }
         list.push_back(a);
     }
@@ -164,7 +164,8 @@ int cmd_compare(const std::string& scenario_path, const std::string& archs, cons
     if (!report.empty()) write_json(report, cnc::sim::compare_json(comparison));
     if (!out_dir.empty()) cnc::sim::write_compare_outputs(comparison, scenario_path, sets, scenario.job_path, out_dir);
     int worst = kExitOk;
-    for (const auto& c : comparison.columns) worst = std::max(worst, c.exit_code == kExitBadInput ? kExitBadInput : c.exit_code);
+    for (const auto& c : comparison.columns)
+        worst = std::max(worst, c.exit_code == kExitBadInput ? kExitBadInput : c.exit_code);
     return worst;
 }
 
@@ -231,7 +232,8 @@ int dispatch(int argc, char* argv[]) {
 
     std::string archs = job_architectures(",", true);
     std::string table_format = "text";
-    CLI::App* compare = app.add_subcommand("compare", "the same job and machine on several architectures, side by side");
+    CLI::App* compare =
+        app.add_subcommand("compare", "the same job and machine on several architectures, side by side");
     compare->add_option("scenario", scenario, "scenario file (TOML); its architecture is overridden")->required();
     const cnc::sim::Architecture* baseline = cnc::sim::baseline_architecture();
     compare
@@ -253,7 +255,8 @@ int dispatch(int argc, char* argv[]) {
 
     std::string curve_axis = "x";
     std::string curve_csv;
-    CLI::App* curve = app.add_subcommand("motor-curve", "pull-out torque, the load's torque and the pull-in rate of one axis");
+    CLI::App* curve =
+        app.add_subcommand("motor-curve", "pull-out torque, the load's torque and the pull-in rate of one axis");
     curve->add_option("scenario", scenario, "scenario file (TOML)")->required();
     curve->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
     curve->add_option("--axis", curve_axis, "axis")->check(CLI::IsMember({"x", "y"}))->capture_default_str();
@@ -292,7 +295,9 @@ int dispatch(int argc, char* argv[]) {
 
 }  // namespace
 
-int sc_main(int argc, char* argv[]) { return check_stdout(dispatch(argc, argv)); }
+int sc_main(int argc, char* argv[]) {
+    return check_stdout(dispatch(argc, argv));
+}
 
 // Our own main, so that the SystemC banner can be switched off before the kernel reads the environment.
 int main(int argc, char* argv[]) {

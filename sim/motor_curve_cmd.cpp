@@ -47,9 +47,9 @@ int cmd_motor_curve(const std::string& scenario_path, const std::vector<std::str
         csv << format("%.3f,%.4f,%.6f", rate, speed, pull_out) << format(",%.6f,%.6f\n", required, required + accel_nm);
     }
     const double pull_in = mech::pull_in_rate(p, m.microsteps, max_rate * kPullInSearchOfMaxVelocity);
-    out << "pull-in (start-stop without a ramp, this load): " << format("%.1f", pull_in) << " full steps/s = "
-        << format("%.2f", pull_in / full_steps_per_mm) << " mm/s = F" << format("%.0f", 60.0 * pull_in / full_steps_per_mm)
-        << "\n";
+    out << "pull-in (start-stop without a ramp, this load): " << format("%.1f", pull_in)
+        << " full steps/s = " << format("%.2f", pull_in / full_steps_per_mm) << " mm/s = F"
+        << format("%.0f", 60.0 * pull_in / full_steps_per_mm) << "\n";
     if (csv_file) {
         csv_file->stream() << csv.str();
         csv_file->close();

@@ -40,7 +40,9 @@ constexpr avr_cycle_count_t kInterruptResponseCycles = 4;
 
 void no_sleep(avr_t*, avr_cycle_count_t) {}  // simavr's default usleep()s to follow the wall clock
 
-avr_cycle_count_t no_op_timer(avr_t*, avr_cycle_count_t, void*) { return 0; }
+avr_cycle_count_t no_op_timer(avr_t*, avr_cycle_count_t, void*) {
+    return 0;
+}
 
 }  // namespace
 
@@ -183,10 +185,10 @@ void AvrChip::install_hooks() {
         return;
     }
     using namespace reg;
-    for (const std::uint16_t a : {kTifr0,  kTifr1,  kTifr2,  kGtccr,  kTccr0a, kTccr0b, kTcnt0,  kOcr0a,  kOcr0b,
-                                  kTimsk0, kTimsk1, kTimsk2, kTccr1a, kTccr1b, kTccr1c, kTcnt1l, kTcnt1h, kIcr1l,
-                                  kIcr1h,  kOcr1al, kOcr1ah, kOcr1bl, kOcr1bh, kTccr2a, kTccr2b, kTcnt2,  kOcr2a,
-                                  kOcr2b,  kAssr,   kUcsr0a, kUcsr0b, kUcsr0c, kUbrr0l, kUbrr0h, kUdr0})
+    for (const std::uint16_t a :
+         {kTifr0,  kTifr1,  kTifr2,  kGtccr,  kTccr0a, kTccr0b, kTcnt0,  kOcr0a,  kOcr0b,  kTimsk0, kTimsk1, kTimsk2,
+          kTccr1a, kTccr1b, kTccr1c, kTcnt1l, kTcnt1h, kIcr1l,  kIcr1h,  kOcr1al, kOcr1ah, kOcr1bl, kOcr1bh, kTccr2a,
+          kTccr2b, kTcnt2,  kOcr2a,  kOcr2b,  kAssr,   kUcsr0a, kUcsr0b, kUcsr0c, kUbrr0l, kUbrr0h, kUdr0})
         take_write(a);
     // Registers whose value is computed when read: TCNTn, Timer1's TEMP pairs, UCSR0A, UDR0.
     for (const std::uint16_t a : {kTcnt0, kTcnt1l, kTcnt1h, kIcr1l, kIcr1h, kTcnt2, kUcsr0a, kUdr0}) take_read(a);
@@ -196,8 +198,12 @@ void AvrChip::install_hooks() {
     avr->data[kUcsr0c] = m_usart.ucsrc();
 }
 
-Cycle AvrChip::now() const { return static_cast<Cycle>(m_avr->cycle); }
-Cycle AvrChip::cycle() const { return now(); }
+Cycle AvrChip::now() const {
+    return static_cast<Cycle>(m_avr->cycle);
+}
+Cycle AvrChip::cycle() const {
+    return now();
+}
 
 ChipState AvrChip::run_until(Cycle limit) {
     if (m_state == ChipState::Running && limit > now()) {
@@ -334,15 +340,21 @@ void AvrChip::usart_flags(Cycle) {
     sync_level_vector(kVecUsartTx, m_usart.txc());
 }
 
-void AvrChip::usart_txd(Cycle c, bool level) { record(c, kTxdLine, level); }
+void AvrChip::usart_txd(Cycle c, bool level) {
+    record(c, kTxdLine, level);
+}
 
-void AvrChip::timer_flag(char timer, TimerFlag flag, Cycle) { raise(timer_vector(timer - '0', flag)); }
+void AvrChip::timer_flag(char timer, TimerFlag flag, Cycle) {
+    raise(timer_vector(timer - '0', flag));
+}
 
 int AvrChip::timer_vector(int timer, TimerFlag flag) const {
     return m_map.vector[timer][static_cast<int>(flag)];
 }
 
-void AvrChip::timer_output(char, Cycle c) { update_lines(c); }
+void AvrChip::timer_output(char, Cycle c) {
+    update_lines(c);
+}
 
 // ---- ports and output lines ----
 

@@ -10,7 +10,6 @@ namespace cnc::avr {
 
 namespace {
 
-
 // Cycles the AVR keeps away from a frame decision it has not been told about: the longest AVR instruction
 // takes 4 cycles (CALL, RET) and waking from sleep overshoots by 1.
 constexpr Cycle kDecisionMarginCycles = 8;

@@ -36,8 +36,12 @@ void AvrChip::write_timer1_low(Timer1Reg r, std::uint16_t low_addr, std::uint8_t
     TimerUnit& t1 = *m_timers[1];
     const auto word = static_cast<std::uint16_t>((m_temp16 << 8) | low);
     switch (r) {
-        case Timer1Reg::Tcnt: t1.write_tcnt(c, word); return;
-        case Timer1Reg::Icr: t1.write_icr(c, word); return;
+        case Timer1Reg::Tcnt:
+            t1.write_tcnt(c, word);
+            return;
+        case Timer1Reg::Icr:
+            t1.write_icr(c, word);
+            return;
         case Timer1Reg::OcrA:
         case Timer1Reg::OcrB:
             t1.write_ocr(c, r == Timer1Reg::OcrA ? Channel::A : Channel::B, word);
@@ -115,11 +119,17 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
     switch (addr) {
         case kTifr0:
         case kTifr1:
-        case kTifr2: write_timer_flags(addr, v); break;
+        case kTifr2:
+            write_timer_flags(addr, v);
+            break;
         case kTimsk0:
         case kTimsk1:
-        case kTimsk2: write_timsk(addr, v); break;
-        case kGtccr: write_gtccr(v); break;
+        case kTimsk2:
+            write_timsk(addr, v);
+            break;
+        case kGtccr:
+            write_gtccr(v);
+            break;
         case kTccr0a:
             t0.write_tccra(c, v);
             data[addr] = v;
@@ -164,8 +174,12 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
             t2.write_ocr(c, Channel::B, v);
             data[addr] = v;
             break;
-        case kUdr0: m_usart.write_udr(c, v); break;
-        case kUcsr0a: m_usart.write_ucsra(c, v); break;
+        case kUdr0:
+            m_usart.write_udr(c, v);
+            break;
+        case kUcsr0a:
+            m_usart.write_ucsra(c, v);
+            break;
         case kUcsr0b:  // the interrupt enables must be in place when the unit re-raises its flags
             data[addr] = v;
             m_usart.write_ucsrb(c, v);
@@ -195,13 +209,16 @@ std::uint8_t AvrChip::io_read(std::uint16_t addr) {
     if (m_map.mcu == Mcu::Atmega16) return port_read(addr);  // the ATmega16's USART is not modelled
     const Cycle c = now();
     switch (addr) {
-        case kUcsr0a: m_usart.advance_to(c); return m_usart.ucsra();
+        case kUcsr0a:
+            m_usart.advance_to(c);
+            return m_usart.ucsra();
         case kUdr0: {
             const std::uint8_t v = m_usart.read_udr(c);
             reschedule();
             return v;
         }
-        default: return port_read(addr);
+        default:
+            return port_read(addr);
     }
 }
 

@@ -32,14 +32,17 @@ std::uint8_t tccra_of(std::uint8_t v) {
     return static_cast<std::uint8_t>((com << 6) | wgm);
 }
 
-std::uint8_t tccrb_of(std::uint8_t v) { return static_cast<std::uint8_t>((v & 0x80U) | (v & 7U)); }
+std::uint8_t tccrb_of(std::uint8_t v) {
+    return static_cast<std::uint8_t>((v & 0x80U) | (v & 7U));
+}
 
 }  // namespace
 
 void AvrChip::install_atmega16_hooks(const std::function<void(std::uint16_t)>& take_write,
                                      const std::function<void(std::uint16_t)>& take_read) {
-    for (const std::uint16_t a : {kMcucr, kGicr, kGifr, kOcr0, kTimsk, kTifr, kTccr0, kTcnt0, kSfior, kTccr1a, kTccr1b, kTcnt1h, kTcnt1l,
-                                  kOcr1ah, kOcr1al, kOcr1bh, kOcr1bl, kIcr1h, kIcr1l, kTccr2, kTcnt2, kOcr2, kAssr})
+    for (const std::uint16_t a :
+         {kMcucr,  kGicr,   kGifr,   kOcr0,   kTimsk,  kTifr,  kTccr0, kTcnt0, kSfior, kTccr1a, kTccr1b, kTcnt1h,
+          kTcnt1l, kOcr1ah, kOcr1al, kOcr1bh, kOcr1bl, kIcr1h, kIcr1l, kTccr2, kTcnt2, kOcr2,   kAssr})
         take_write(a);
     for (const std::uint16_t a : {kTcnt0, kTcnt1l, kTcnt1h, kIcr1l, kIcr1h, kTcnt2}) take_read(a);
 }
@@ -56,11 +59,21 @@ void AvrChip::io_write_atmega16(std::uint16_t addr, std::uint8_t v) {
         data[addr] = static_cast<std::uint8_t>(v & 0x7FU);  // FOCn reads as zero
     };
     switch (addr) {
-        case kMcucr: data[addr] = v; break;  // ISC bits read at each edge; SE/SM by simavr's sleep
-        case kGicr: write_gicr(v); break;
-        case kGifr: write_gifr(v); break;
-        case kTifr: write_timer_flags(addr, v); break;
-        case kTimsk: write_timsk(addr, v); break;
+        case kMcucr:
+            data[addr] = v;
+            break;  // ISC bits read at each edge; SE/SM by simavr's sleep
+        case kGicr:
+            write_gicr(v);
+            break;
+        case kGifr:
+            write_gifr(v);
+            break;
+        case kTifr:
+            write_timer_flags(addr, v);
+            break;
+        case kTimsk:
+            write_timsk(addr, v);
+            break;
         case kSfior: {
             for (auto& t : m_timers) t->advance_to(c);
             if ((v & kPsr10) != 0) m_prescaler01.restart(c);
@@ -68,7 +81,9 @@ void AvrChip::io_write_atmega16(std::uint16_t addr, std::uint8_t v) {
             data[addr] = static_cast<std::uint8_t>(v & ~(kPsr10 | kPsr2));
             break;
         }
-        case kTccr0: write_tccr(t0); break;
+        case kTccr0:
+            write_tccr(t0);
+            break;
         case kOcr0:
             t0.write_ocr(c, Channel::A, v);
             data[addr] = v;
@@ -82,7 +97,9 @@ void AvrChip::io_write_atmega16(std::uint16_t addr, std::uint8_t v) {
             t1.write_tccrb(c, v);
             data[addr] = t1.tccrb();
             break;
-        case kTccr2: write_tccr(t2); break;
+        case kTccr2:
+            write_tccr(t2);
+            break;
         case kOcr2:
             t2.write_ocr(c, Channel::A, v);
             data[addr] = v;
@@ -95,7 +112,9 @@ void AvrChip::io_write_atmega16(std::uint16_t addr, std::uint8_t v) {
 
 namespace {
 
-int int_number(const Pin& pin) { return pin.port == 'D' && (pin.bit == 2 || pin.bit == 3) ? pin.bit - 2 : -1; }
+int int_number(const Pin& pin) {
+    return pin.port == 'D' && (pin.bit == 2 || pin.bit == 3) ? pin.bit - 2 : -1;
+}
 
 }  // namespace
 
@@ -136,6 +155,5 @@ void AvrChip::write_gifr(std::uint8_t v) {
         if ((v & bit) != 0 && avr_regbit_get(m_avr, vec->raised) != 0) avr_clear_interrupt(m_avr, vec);
     }
 }
-
 
 }  // namespace cnc::avr

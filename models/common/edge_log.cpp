@@ -5,8 +5,8 @@
 namespace cnc {
 
 bool EdgeLog::level_at(TimePs t_ps) const {
-    const auto it = std::upper_bound(edges.begin(), edges.end(), t_ps,
-                                     [](TimePs t, const Edge& e) { return t < e.t_ps; });
+    const auto it =
+        std::upper_bound(edges.begin(), edges.end(), t_ps, [](TimePs t, const Edge& e) { return t < e.t_ps; });
     return it == edges.begin() ? initial : std::prev(it)->level;
 }
 
@@ -34,9 +34,15 @@ static std::vector<TimePs> edges_to(const std::vector<Edge>& edges, bool initial
     return out;
 }
 
-std::vector<TimePs> EdgeLog::rising() const { return edges_to(edges, initial, true); }
-std::vector<TimePs> EdgeLog::falling() const { return edges_to(edges, initial, false); }
-std::size_t EdgeLog::count_falling() const { return count_to(edges, initial, false); }
+std::vector<TimePs> EdgeLog::rising() const {
+    return edges_to(edges, initial, true);
+}
+std::vector<TimePs> EdgeLog::falling() const {
+    return edges_to(edges, initial, false);
+}
+std::size_t EdgeLog::count_falling() const {
+    return count_to(edges, initial, false);
+}
 
 EdgeLog EdgeLog::take_before(TimePs t_ps) {
     const auto end =

@@ -14,7 +14,7 @@ struct Edge {
 };
 
 struct EdgeLog {
-    std::string name;    // pin name as in the VCD: step_x, dir_x, laser, ...
+    std::string name;      // pin name as in the VCD: step_x, dir_x, laser, ...
     bool initial = false;  // level before the first edge
     std::vector<Edge> edges;
 

@@ -10,7 +10,9 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 constexpr double kSamePointMm = 1e-9;
 }  // namespace
 
-Segment Segment::line(Vec2 from, Vec2 to) { return Segment{from, to, false, {}, 0.0}; }
+Segment Segment::line(Vec2 from, Vec2 to) {
+    return Segment{from, to, false, {}, 0.0};
+}
 
 Segment Segment::arc(Vec2 from, Vec2 to, Vec2 center, bool ccw) {
     const double a0 = std::atan2(from.y_mm - center.y_mm, from.x_mm - center.x_mm);
@@ -78,8 +80,8 @@ Box Segment::bounds() const {
         double angle_rad;
         Vec2 direction;
     };
-    const Crossing crossings[] = {{0.0, {1.0, 0.0}}, {kTwoPi / 4, {0.0, 1.0}}, {kTwoPi / 2, {-1.0, 0.0}},
-                                  {-kTwoPi / 4, {0.0, -1.0}}};
+    const Crossing crossings[] = {
+        {0.0, {1.0, 0.0}}, {kTwoPi / 4, {0.0, 1.0}}, {kTwoPi / 2, {-1.0, 0.0}}, {-kTwoPi / 4, {0.0, -1.0}}};
     for (const Crossing& c : crossings) {
         if (!sweeps_through(c.angle_rad)) continue;
         const Vec2 p = center + c.direction * radius_mm();

@@ -10,12 +10,24 @@ struct Vec2 {
     double y_mm = 0.0;
 };
 
-inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x_mm + b.x_mm, a.y_mm + b.y_mm}; }
-inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.x_mm - b.x_mm, a.y_mm - b.y_mm}; }
-inline Vec2 operator*(Vec2 a, double k) { return {a.x_mm * k, a.y_mm * k}; }
-inline double dot(Vec2 a, Vec2 b) { return a.x_mm * b.x_mm + a.y_mm * b.y_mm; }
-inline double norm(Vec2 a) { return std::hypot(a.x_mm, a.y_mm); }
-inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
+inline Vec2 operator+(Vec2 a, Vec2 b) {
+    return {a.x_mm + b.x_mm, a.y_mm + b.y_mm};
+}
+inline Vec2 operator-(Vec2 a, Vec2 b) {
+    return {a.x_mm - b.x_mm, a.y_mm - b.y_mm};
+}
+inline Vec2 operator*(Vec2 a, double k) {
+    return {a.x_mm * k, a.y_mm * k};
+}
+inline double dot(Vec2 a, Vec2 b) {
+    return a.x_mm * b.x_mm + a.y_mm * b.y_mm;
+}
+inline double norm(Vec2 a) {
+    return std::hypot(a.x_mm, a.y_mm);
+}
+inline double distance(Vec2 a, Vec2 b) {
+    return norm(a - b);
+}
 
 // Axis-aligned bounds of a path.
 struct Box {

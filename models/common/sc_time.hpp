@@ -7,7 +7,9 @@
 
 namespace cnc {
 
-[[nodiscard]] inline TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
+[[nodiscard]] inline TimePs now_ps() {
+    return static_cast<TimePs>(sc_core::sc_time_stamp().value());
+}
 
 [[nodiscard]] inline sc_core::sc_time ps_time(TimePs t_ps) {
     return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t_ps));

@@ -12,6 +12,8 @@ std::string format(const char* fmt, double a, double b, double c, double d) {
     return text;
 }
 
-double rounded(double v, double per_unit) { return std::round(v * per_unit) / per_unit; }
+double rounded(double v, double per_unit) {
+    return std::round(v * per_unit) / per_unit;
+}
 
 }  // namespace cnc

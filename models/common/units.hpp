@@ -30,9 +30,17 @@ constexpr std::int64_t first_edge_after(TimePs t_ps, TimePs period_ps) {
 }
 
 // Seconds to the nearest picosecond.
-inline TimePs s_to_ps(double s) { return static_cast<TimePs>(s * static_cast<double>(kPsPerSec) + 0.5); }
-inline double ps_to_s(TimePs t) { return static_cast<double>(t) / static_cast<double>(kPsPerSec); }
-inline double ps_to_us(TimePs t) { return static_cast<double>(t) / static_cast<double>(kPsPerUs); }
-inline double ps_to_ns(TimePs t) { return static_cast<double>(t) / static_cast<double>(kPsPerNs); }
+inline TimePs s_to_ps(double s) {
+    return static_cast<TimePs>(s * static_cast<double>(kPsPerSec) + 0.5);
+}
+inline double ps_to_s(TimePs t) {
+    return static_cast<double>(t) / static_cast<double>(kPsPerSec);
+}
+inline double ps_to_us(TimePs t) {
+    return static_cast<double>(t) / static_cast<double>(kPsPerUs);
+}
+inline double ps_to_ns(TimePs t) {
+    return static_cast<double>(t) / static_cast<double>(kPsPerNs);
+}
 
 }  // namespace cnc

@@ -2,7 +2,9 @@
 
 namespace cnc {
 
-std::string to_string(const Warning& w) { return w.where.empty() ? w.text : w.where + ": " + w.text; }
+std::string to_string(const Warning& w) {
+    return w.where.empty() ? w.text : w.where + ": " + w.text;
+}
 
 std::vector<WarningGroup> group_warnings(const std::vector<Warning>& warnings) {
     std::vector<WarningGroup> groups;

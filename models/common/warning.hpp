@@ -21,8 +21,8 @@ inline constexpr std::size_t kWarningPlacesShown = 3;
 struct WarningGroup {
     std::string kind;
     std::size_t count = 0;
-    std::vector<std::string> first;  // the first kWarningPlacesShown places (warnings without one add none)
-    std::string message;             // the first warning's text
+    std::vector<std::string> first;    // the first kWarningPlacesShown places (warnings without one add none)
+    std::string message;               // the first warning's text
     std::vector<std::size_t> members;  // indices of the group's warnings, in order
 };
 

@@ -16,7 +16,9 @@ LaserCtrl::LaserCtrl(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     dont_initialize();
 }
 
-void LaserCtrl::add_traces(sc_core::sc_trace_file* tf) const { sc_core::sc_trace(tf, m_engrave, m_engrave.name()); }
+void LaserCtrl::add_traces(sc_core::sc_trace_file* tf) const {
+    sc_core::sc_trace(tf, m_engrave, m_engrave.name());
+}
 
 void LaserCtrl::on_inputs() {
     ++m_activations;

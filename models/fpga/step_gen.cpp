@@ -88,11 +88,21 @@ void StepGen::emit_edges() {
     while (m_next && m_move_edge + m_next->cycle == edge) {
         const bool level = m_next->level;
         switch (m_next->pin) {
-            case StepPin::Busy: busy.write(level); break;
-            case StepPin::DirX: dir_x.write(level); break;
-            case StepPin::DirY: dir_y.write(level); break;
-            case StepPin::StepX: step_x.write(level); break;
-            case StepPin::StepY: step_y.write(level); break;
+            case StepPin::Busy:
+                busy.write(level);
+                break;
+            case StepPin::DirX:
+                dir_x.write(level);
+                break;
+            case StepPin::DirY:
+                dir_y.write(level);
+                break;
+            case StepPin::StepX:
+                step_x.write(level);
+                break;
+            case StepPin::StepY:
+                step_y.write(level);
+                break;
         }
         fetch_next_edge();
     }

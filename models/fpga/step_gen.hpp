@@ -31,7 +31,7 @@ public:
 
     StepGen(const sc_core::sc_module_name& name, const FpgaConfig& cfg);
 
-    struct Move {                    // one pkt_valid seen by step_gen
+    struct Move {  // one pkt_valid seen by step_gen
         TimePs t_pkt_valid_ps = -1;
         bool accepted = false;
         StepPeriods periods;

@@ -122,9 +122,8 @@ void Top::drop_packets_before(std::size_t end) {
     for (std::size_t i = moves.first(); i < end && i < moves.size(); ++i) {
         if (moves[i].accepted) last_busy_fall_ps = moves[i].t_busy_fall_ps;
     }
-    const auto kept = std::partition_point(m_acks.begin(), m_acks.end(), [&](const AckAfterBusy& a) {
-        return a.t_busy_fall_ps <= last_busy_fall_ps;
-    });
+    const auto kept = std::partition_point(
+        m_acks.begin(), m_acks.end(), [&](const AckAfterBusy& a) { return a.t_busy_fall_ps <= last_busy_fall_ps; });
     m_acks.drop_before(m_acks.first() + static_cast<std::size_t>(std::distance(m_acks.begin(), kept)));
     pkt_dec_inst.drop_motions_before(end);
     step_gen_inst.drop_moves_before(end);

@@ -23,14 +23,14 @@ namespace cnc::fpga {
 
 class Top : public sc_core::sc_module {
 public:
-    sc_core::sc_in<bool> rx;         // GPIO_0[0], from CP2102 TXD
-    sc_core::sc_out<bool> tx;        // GPIO_0[1], to CP2102 RXD
-    sc_core::sc_out<bool> dir_x;     // GPIO_0[2]
-    sc_core::sc_out<bool> step_x;    // GPIO_0[3]
-    sc_core::sc_out<bool> dir_y;     // GPIO_0[4]
-    sc_core::sc_out<bool> step_y;    // GPIO_0[5]
-    sc_core::sc_out<bool> laser;     // GPIO_0[6]
-    sc_core::sc_out<bool> busy;      // internal nets exported for tracing (one-clock pulses except busy)
+    sc_core::sc_in<bool> rx;       // GPIO_0[0], from CP2102 TXD
+    sc_core::sc_out<bool> tx;      // GPIO_0[1], to CP2102 RXD
+    sc_core::sc_out<bool> dir_x;   // GPIO_0[2]
+    sc_core::sc_out<bool> step_x;  // GPIO_0[3]
+    sc_core::sc_out<bool> dir_y;   // GPIO_0[4]
+    sc_core::sc_out<bool> step_y;  // GPIO_0[5]
+    sc_core::sc_out<bool> laser;   // GPIO_0[6]
+    sc_core::sc_out<bool> busy;    // internal nets exported for tracing (one-clock pulses except busy)
     sc_core::sc_out<bool> pkt_valid;
     sc_core::sc_out<bool> cfg_valid;
     sc_core::sc_out<bool> rx_valid;

@@ -22,7 +22,7 @@ void UartTx::on_tx_start() {
     ++m_activations;
     if (!tx_start.read()) return;
     const std::int64_t s = now_ps() / m_period_ps;  // tx_start high at edge s, seen by IDLE at s+1
-    if (s + 1 < m_idle_from) return;                 // START/DATA/STOP do not look at tx_start
+    if (s + 1 < m_idle_from) return;                // START/DATA/STOP do not look at tx_start
     const UartTxFrame frame = uart_tx_frame(tx_data.read(), m_cfg);
     const auto at = [this, s](std::int64_t offset) { return (s + offset) * m_period_ps; };
     m_writer.at(at(frame.busy_rise), [this] { tx_busy.write(true); });

@@ -44,12 +44,15 @@ std::string as_hex(const std::vector<std::uint8_t>& bytes) {
     return out;
 }
 
-std::string ms_text(TimePs t_ps) { return format("%.1f ms", static_cast<double>(t_ps) / kPsPerMs); }
+std::string ms_text(TimePs t_ps) {
+    return format("%.1f ms", static_cast<double>(t_ps) / kPsPerMs);
+}
 
 }  // namespace
 
 TimePs byte_round_trip_ps(const SenderConfig& cfg, const uart::Cp2102Config& link) {
-    const double line_s = kConfirmedBytesPerTrip * link.format.bits_per_frame() / static_cast<double>(link.requested_baud);
+    const double line_s =
+        kConfirmedBytesPerTrip * link.format.bits_per_frame() / static_cast<double>(link.requested_baud);
     return cfg.write_latency_ps + 2 * link.usb_frame_ps + link.usb_latency_ps + s_to_ps(line_s);
 }
 
@@ -61,7 +64,9 @@ PcProgram::PcProgram(const sc_core::sc_module_name& name, const SenderConfig& cf
     SC_THREAD(run);
 }
 
-void PcProgram::set_waits(const UnitWaits& waits) { m_waits = waits; }
+void PcProgram::set_waits(const UnitWaits& waits) {
+    m_waits = waits;
+}
 
 std::string PcProgram::place_after(std::size_t written) const {
     if (written == 0) return "before the job's first byte (after the port settled)";
@@ -74,7 +79,8 @@ bool PcProgram::wait_for_confirm(TimePs deadline_ps, TimePs timeout_ps, const st
         if (now >= deadline_ps) {
             const std::string why = m_writes.empty() ? "the firmware does not speak the seed 003 protocol"
                                                      : "the firmware stopped answering";
-            m_failure = LinkFailure{now, "no confirm byte 0x06 within " + ms_text(timeout_ps) + " " + place + ": " + why};
+            m_failure =
+                LinkFailure{now, "no confirm byte 0x06 within " + ms_text(timeout_ps) + " " + place + ": " + why};
             return false;
         }
         sc_core::wait(ps_time(deadline_ps - now), m_port.data_event());
@@ -88,8 +94,8 @@ bool PcProgram::wait_for_confirm(TimePs deadline_ps, TimePs timeout_ps, const st
 void PcProgram::stop_on_mismatch(std::uint8_t first, const std::string& place) {
     const TimePs t_first = now_ps();
     // Long enough for kShownBytes more to cross the line and reach the program.
-    const TimePs listen_until =
-        t_first + m_timeouts.round_trip_ps + static_cast<TimePs>(kShownBytes) * uart::frame_time_ps(m_port.baud().bit_clock());
+    const TimePs listen_until = t_first + m_timeouts.round_trip_ps +
+                                static_cast<TimePs>(kShownBytes) * uart::frame_time_ps(m_port.baud().bit_clock());
     std::vector<std::uint8_t> got{first};
     while (got.size() < kShownBytes) {
         if (m_port.in_waiting() > 0) {
@@ -102,8 +108,7 @@ void PcProgram::stop_on_mismatch(std::uint8_t first, const std::string& place) {
     }
     const std::string more = m_port.in_waiting() > 0 ? ", the first " + std::to_string(got.size()) : "";
     m_failure = LinkFailure{t_first, "protocol mismatch: expected the confirm byte 0x06 of the seed 003 protocol " +
-                                         place + ", received " + as_text(got) + " (hex " + as_hex(got) + more +
-                                         ")"};
+                                         place + ", received " + as_text(got) + " (hex " + as_hex(got) + more + ")"};
 }
 
 void PcProgram::run() {
@@ -128,8 +133,9 @@ void PcProgram::run() {
             m_port.usb_write(&w.byte, 1);
             m_writes.push_back(w);
             const bool last_of_transfer = k + 1 == bytes.size();
-            timeout_ps = m_timeouts.round_trip_ps + kConfirmMarginPs +
-                         (last_of_transfer && i < m_timeouts.motion_after_ps.size() ? m_timeouts.motion_after_ps[i] : 0);
+            timeout_ps =
+                m_timeouts.round_trip_ps + kConfirmMarginPs +
+                (last_of_transfer && i < m_timeouts.motion_after_ps.size() ? m_timeouts.motion_after_ps[i] : 0);
             deadline_ps = w.t_write_ps + timeout_ps;
         }
     }

@@ -51,8 +51,8 @@ struct ConfirmTimeouts {
 struct PcWrite {
     std::size_t transfer = 0;  // index into the transfers
     std::uint8_t byte = 0;
-    TimePs t_confirm_ps = 0;   // the program read the confirm
-    TimePs t_write_ps = 0;     // WriteFile called (the byte reaches the CP2102 after host.write_latency_us)
+    TimePs t_confirm_ps = 0;  // the program read the confirm
+    TimePs t_write_ps = 0;    // WriteFile called (the byte reaches the CP2102 after host.write_latency_us)
 };
 
 // Why the program stopped before the end of the job, and when.

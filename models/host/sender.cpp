@@ -25,19 +25,22 @@ constexpr TimePs kAckPathAllowancePs = 100 * kPsPerMs;
 // packet or ACK (framing errors, a busy step_gen), which no timeout fixes.
 std::string ack_timeout_text(int segment, const OutgoingPacket& packet, TimePs timeout_ps) {
     const std::string line = packet.gcode_line > 0 ? "G-code line " + std::to_string(packet.gcode_line) + ", " : "";
-    const std::string text = "seg " + std::to_string(segment) + " (" + line +
-                             format("a %.2f s move): no ACK within %.1f s", ps_to_s(packet.expected_run_ps),
-                                    ps_to_s(timeout_ps));
+    const std::string text =
+        "seg " + std::to_string(segment) + " (" + line +
+        format("a %.2f s move): no ACK within %.1f s", ps_to_s(packet.expected_run_ps), ps_to_s(timeout_ps));
     if (packet.expected_run_ps + kAckPathAllowancePs >= timeout_ps) {
         return text + "; raise host.ack_timeout_s above the longest move";
     }
-    return text + ", long after the move should have ended: the packet or its ACK was lost (see the warnings), "
-                  "host.ack_timeout_s is long enough";
+    return text +
+           ", long after the move should have ended: the packet or its ACK was lost (see the warnings), "
+           "host.ack_timeout_s is long enough";
 }
 
 }  // namespace
 
-void Sender::say(const std::string& text) { m_messages.push_back({now_ps(), text}); }
+void Sender::say(const std::string& text) {
+    m_messages.push_back({now_ps(), text});
+}
 
 void Sender::write(const std::uint8_t* data, std::size_t n) {
     wait_ps(m_cfg.write_latency_ps);

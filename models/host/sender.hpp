@@ -14,8 +14,8 @@
 
 #include "common/record_log.hpp"
 #include "common/units.hpp"
-#include "uart/cp2102.hpp"
 #include "host/core/sender_config.hpp"
+#include "uart/cp2102.hpp"
 
 namespace cnc::host {
 
@@ -38,16 +38,16 @@ public:
 };
 
 struct SentPacket {
-    int segment = 0;             // 1-based, as the script counts
-    TimePs t_write_ps = 0;       // the script calls ser.write()
-    TimePs wait_before_ps = 0;   // the job's host wait slept before it (dwell, pause, Z move)
-    TimePs t_ack_ps = -1;        // the ACK was read (-1: never)
+    int segment = 0;            // 1-based, as the script counts
+    TimePs t_write_ps = 0;      // the script calls ser.write()
+    TimePs wait_before_ps = 0;  // the job's host wait slept before it (dwell, pause, Z move)
+    TimePs t_ack_ps = -1;       // the ACK was read (-1: never)
     bool timed_out = false;
 };
 
 struct SenderMessage {
     TimePs t_ps = 0;
-    std::string text;            // as the script would print it
+    std::string text;  // as the script would print it
 };
 
 class Sender : public sc_core::sc_module {

@@ -36,7 +36,8 @@ TimePs period_ps(double sample_hz) {
 }  // namespace
 
 Carriage::Carriage(const sc_core::sc_module_name& name, const CarriageConfig& cfg)
-    : sc_core::sc_module(name), m_cfg(checked(cfg)),
+    : sc_core::sc_module(name),
+      m_cfg(checked(cfg)),
       m_sampler(*cfg.x.drive, *cfg.y.drive, cfg.origin, period_ps(cfg.sample_hz)),
       m_carriage_x_mm("carriage_x_mm", cfg.worker_thread ? 0.0 : position().x_mm),
       m_carriage_y_mm("carriage_y_mm", cfg.worker_thread ? 0.0 : position().y_mm) {
@@ -59,11 +60,17 @@ Carriage::Carriage(const sc_core::sc_module_name& name, const CarriageConfig& cf
     dont_initialize();
 }
 
-void Carriage::start_of_simulation() { on_event(&MechanicsWorker::start, &ToolSampler::on_start); }
+void Carriage::start_of_simulation() {
+    on_event(&MechanicsWorker::start, &ToolSampler::on_start);
+}
 
-void Carriage::on_step() { on_event(&MechanicsWorker::step, &ToolSampler::on_step); }
+void Carriage::on_step() {
+    on_event(&MechanicsWorker::step, &ToolSampler::on_step);
+}
 
-void Carriage::on_enable() { on_event(&MechanicsWorker::enable_changed, &ToolSampler::on_enable); }
+void Carriage::on_enable() {
+    on_event(&MechanicsWorker::enable_changed, &ToolSampler::on_enable);
+}
 
 void Carriage::on_event(void (MechanicsWorker::*to_worker)(TimePs),
                         std::optional<TimePs> (ToolSampler::*to_sampler)(TimePs)) {
@@ -106,7 +113,9 @@ std::vector<ToolSample> Carriage::take_samples_before(TimePs t_ps) {
     return m_worker->take_before(t_ps);
 }
 
-TimePs Carriage::samples_ready_ps() { return m_worker ? m_worker->ready_ps(now_ps()) : now_ps(); }
+TimePs Carriage::samples_ready_ps() {
+    return m_worker ? m_worker->ready_ps(now_ps()) : now_ps();
+}
 
 std::optional<MechanicsWorker::End> Carriage::finish(TimePs bound_ps, bool bound_inclusive) {
     if (!m_worker) return std::nullopt;

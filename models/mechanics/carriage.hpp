@@ -33,7 +33,7 @@ struct CarriageAxis {
 struct CarriageConfig {
     CarriageAxis x;
     CarriageAxis y;
-    geom::Vec2 origin{};  // tool position (machine mm) with both shafts at 0 deg
+    geom::Vec2 origin{};     // tool position (machine mm) with both shafts at 0 deg
     double sample_hz = 0.0;  // periodic samples while an axis moves; 0: at step events only
     bool worker_thread = false;
 };
@@ -78,8 +78,7 @@ private:
     void on_enable();
     // An event of the sampler's (the start, a step, an enable change): to the worker, or to the sampler, whose
     // periodic samples it may start.
-    void on_event(void (MechanicsWorker::*to_worker)(TimePs),
-                  std::optional<TimePs> (ToolSampler::*to_sampler)(TimePs));
+    void on_event(void (MechanicsWorker::*to_worker)(TimePs), std::optional<TimePs> (ToolSampler::*to_sampler)(TimePs));
     void on_period();
     void write_positions();
 

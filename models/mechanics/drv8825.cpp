@@ -5,10 +5,7 @@
 
 namespace cnc::mech {
 
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 Drv8825::Drv8825(const sc_core::sc_module_name& name, const Drv8825Config& cfg, StepperMotor& motor)
     : sc_core::sc_module(name),

@@ -12,10 +12,10 @@
 #include <systemc>
 
 #include "common/units.hpp"
+#include "mechanics/core/drv8825_config.hpp"
 #include "mechanics/core/drv8825_modes.hpp"
 #include "mechanics/core/drv8825_timing.hpp"
 #include "mechanics/core/motor.hpp"
-#include "mechanics/core/drv8825_config.hpp"
 
 namespace cnc::mech {
 
@@ -64,11 +64,11 @@ private:
     sc_core::sc_event m_step_ev;
     sc_core::sc_event m_enable_ev;
 
-    bool m_dir_level = false;       // DIR as last seen by on_dir
-    bool m_dir_before = false;      // DIR before its last change
+    bool m_dir_level = false;   // DIR as last seen by on_dir
+    bool m_dir_before = false;  // DIR before its last change
     TimePs m_dir_change_ps = -1;
     TimePs m_last_fall_ps = -1;
-    bool m_pulse_moved = false;     // the current STEP pulse moved the indexer (strict mode may retract it)
+    bool m_pulse_moved = false;  // the current STEP pulse moved the indexer (strict mode may retract it)
     TimePs m_pulse_rise_ps = 0;
     std::int64_t m_position_before_pulse = 0;
 };

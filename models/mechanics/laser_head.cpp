@@ -26,6 +26,8 @@ void LaserHead::on_laser() {
     m_on = level;
 }
 
-TimePs LaserHead::on_time_ps() const { return m_on_total_ps + (m_on ? now_ps() - m_on_since_ps : 0); }
+TimePs LaserHead::on_time_ps() const {
+    return m_on_total_ps + (m_on ? now_ps() - m_on_since_ps : 0);
+}
 
 }  // namespace cnc::mech

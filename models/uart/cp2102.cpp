@@ -11,7 +11,9 @@ namespace cnc::uart {
 
 namespace {
 
-sc_core::sc_time ps(TimePs t) { return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t)); }
+sc_core::sc_time ps(TimePs t) {
+    return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t));
+}
 
 }  // namespace
 
@@ -142,8 +144,8 @@ void Cp2102::rx_decide() {
             break;
     }
     // Bytes whose USB frame has not come yet are still in the chip's RX FIFO.
-    const auto first_in_chip = std::partition_point(m_usb_in.begin(), m_usb_in.end(),
-                                                    [now](const UsbInByte& b) { return b.t_usb_ps <= now; });
+    const auto first_in_chip =
+        std::partition_point(m_usb_in.begin(), m_usb_in.end(), [now](const UsbInByte& b) { return b.t_usb_ps <= now; });
     const auto in_chip = static_cast<std::size_t>(std::distance(first_in_chip, m_usb_in.end()));
     if (in_chip >= m_cfg.rx_fifo_bytes) {
         ++m_stats.rx_overflow_bytes;

@@ -19,9 +19,9 @@
 #include "common/record_log.hpp"
 #include "common/units.hpp"
 #include "uart/core/cp2102_baud.hpp"
+#include "uart/core/cp2102_config.hpp"
 #include "uart/core/uart_frame.hpp"
 #include "uart/core/usb_timing.hpp"
-#include "uart/core/cp2102_config.hpp"
 
 namespace cnc::uart {
 
@@ -119,7 +119,7 @@ private:
 
     bool m_rx_busy = false;
     TimePs m_rx_fall_ps = 0;
-    EdgeLog m_rx_line;                // rxd transitions of the frame being received
+    EdgeLog m_rx_line;               // rxd transitions of the frame being received
     std::deque<UsbInByte> m_usb_in;  // received, not yet visible to the host (in the chip or in transit)
     std::deque<std::uint8_t> m_host_rx;
     sc_core::sc_event m_rx_decide_ev;

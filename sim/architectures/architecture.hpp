@@ -29,11 +29,11 @@ enum class LaserSwitching {
 
 // How an architecture takes the scenario's job.
 struct JobUse {
-    bool runs_job = true;             // false: it scripts itself, and scenario.job is not needed
-    bool takes_steps_file = false;    // also a seed 000 steps file (packets, no programmed geometry)
+    bool runs_job = true;           // false: it scripts itself, and scenario.job is not needed
+    bool takes_steps_file = false;  // also a seed 000 steps file (packets, no programmed geometry)
     LaserSwitching laser_switching = LaserSwitching::ByMotionKind;  // the program warnings' rule
-    bool streams_job = false;         // reads a G-code job's moves from the file again as it runs (Job::program
-                                      // then keeps none)
+    bool streams_job = false;  // reads a G-code job's moves from the file again as it runs (Job::program
+                               // then keeps none)
 };
 
 class Architecture {

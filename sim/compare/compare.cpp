@@ -13,8 +13,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/text_format.hpp"
 #include "architectures/catalog.hpp"
+#include "common/text_format.hpp"
 #include "compare/spawn.hpp"
 
 namespace cnc::sim {
@@ -25,9 +25,9 @@ namespace fs = std::filesystem;
 
 struct Row {
     const char* label;
-    const char* pointer;  // JSON pointer into a run report
-    const char* format;   // printf format of the value
-    bool setting = false; // what the run was given (shown for a failed run too), not a result
+    const char* pointer;           // JSON pointer into a run report
+    const char* format;            // printf format of the value
+    bool setting = false;          // what the run was given (shown for a failed run too), not a result
     bool in_arch_section = false;  // the pointer is into the architecture's own section (report[arch])
     // Followed, with a baseline run, by the column's value minus the baseline's: what the controller adds to the
     // machine's own figure.
@@ -147,8 +147,8 @@ std::vector<std::string> child_args(const std::string& self_exe, const std::stri
                                     const std::vector<std::string>& sets, const fs::path& report,
                                     const std::string& out_dir) {
     // Progress as whole lines (a line per 10 % of the child's estimate), named by architecture.
-    std::vector<std::string> args = {self_exe, "run", scenario, "--progress", "log", "--set",
-                                     "scenario.architecture=" + arch};
+    std::vector<std::string> args = {
+        self_exe, "run", scenario, "--progress", "log", "--set", "scenario.architecture=" + arch};
     for (const std::string& s : sets) {
         args.push_back("--set");
         args.push_back(s);
@@ -171,9 +171,8 @@ std::string status(const CompareColumn& c) {
     return c.exit_code == 2 ? "bad input" : "failed";
 }
 
-Comparison run_compare(const std::string& self_exe, const std::string& scenario,
-                       const std::vector<std::string>& asked, const std::vector<std::string>& sets,
-                       const std::string& out_dir) {
+Comparison run_compare(const std::string& self_exe, const std::string& scenario, const std::vector<std::string>& asked,
+                       const std::vector<std::string>& sets, const std::string& out_dir) {
     // The baseline runs too when it is not asked for; its report alone, in the temporary folder.
     std::vector<std::string> architectures = asked;
     const Architecture* baseline = baseline_architecture();
@@ -290,21 +289,23 @@ nlohmann::json compare_json(const Comparison& comparison) {
             const std::optional<double> d = over(c, row, *baseline);
             metrics[over_key(row, baseline->architecture)] = d ? nlohmann::json(*d) : nlohmann::json(nullptr);
         }
-        nlohmann::json column = {{"architecture", c.architecture},
-                                 {"status", status(c)},
-                                 {"exit_code", c.exit_code},
-                                 {"machine", c.report.is_null() ? nlohmann::json(nullptr)
-                                                                : c.report.value("scenario", nlohmann::json::object())
-                                                                      .value("machine", nlohmann::json())},
-                                 {"warnings", c.report.is_null() ? nlohmann::json::array()
-                                                                 : c.report.value("warnings", nlohmann::json::array())},
-                                 {"best", best}};
+        nlohmann::json column = {
+            {"architecture", c.architecture},
+            {"status", status(c)},
+            {"exit_code", c.exit_code},
+            {"machine", c.report.is_null()
+                            ? nlohmann::json(nullptr)
+                            : c.report.value("scenario", nlohmann::json::object()).value("machine", nlohmann::json())},
+            {"warnings",
+             c.report.is_null() ? nlohmann::json::array() : c.report.value("warnings", nlohmann::json::array())},
+            {"best", best}};
         if (c.exit_code == 0) {
             column["metrics"] = metrics;
         } else {
             column["metrics"] = nullptr;
             column["partial_metrics"] = metrics;
-            column["failure"] = c.report.is_null() ? nlohmann::json(nullptr) : c.report.value("failure", nlohmann::json());
+            column["failure"] =
+                c.report.is_null() ? nlohmann::json(nullptr) : c.report.value("failure", nlohmann::json());
         }
         out.push_back(std::move(column));
     }

@@ -11,9 +11,9 @@ namespace cnc::sim {
 
 struct CompareColumn {
     std::string architecture;
-    int exit_code = 0;        // of the child `cncsim run`: 0 ok, 1 run failed, 2 bad input
-    nlohmann::json report;    // its JSON report (null when it wrote none)
-    double wall_s = 0.0;      // the child's wall time
+    int exit_code = 0;      // of the child `cncsim run`: 0 ok, 1 run failed, 2 bad input
+    nlohmann::json report;  // its JSON report (null when it wrote none)
+    double wall_s = 0.0;    // the child's wall time
 };
 
 // The columns asked for, and the baseline architecture's run (Architecture::baseline) when it is not one of them:

@@ -22,7 +22,9 @@ namespace fs = std::filesystem;
 constexpr std::size_t kJobLinesShown = 80;
 
 // One OutputFile per page and table, like every output of the CLI: complete or not there.
-void write_file(const fs::path& file, const std::string& text) { write_output_file(file.string(), "--out", text); }
+void write_file(const fs::path& file, const std::string& text) {
+    write_output_file(file.string(), "--out", text);
+}
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path);

@@ -86,7 +86,8 @@ std::string html_report(const Comparison& comparison, const std::vector<Plot>& p
     std::ostringstream os;
     os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>cncsim compare: "
        << escape(job.scenario_file) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n"
-       << "<h1>cncsim compare: " << escape(std::filesystem::path(job.scenario_file).filename().string()) << "</h1>\n<h2>Machine and job</h2>\n"
+       << "<h1>cncsim compare: " << escape(std::filesystem::path(job.scenario_file).filename().string())
+       << "</h1>\n<h2>Machine and job</h2>\n"
        << "<p>Scenario <code>" << escape(job.scenario_file) << "</code>";
     for (const std::string& o : job.overrides) os << ", <code>--set " << escape(o) << "</code>";
     os << "; every architecture runs it with only <code>scenario.architecture</code> changed.</p>\n<pre>"

@@ -7,14 +7,18 @@ namespace cnc::metrics {
 
 namespace {
 
-double axis_of(geom::Vec2 v, std::size_t axis) { return axis == 0 ? v.x_mm : v.y_mm; }
+double axis_of(geom::Vec2 v, std::size_t axis) {
+    return axis == 0 ? v.x_mm : v.y_mm;
+}
 
 struct AxisFn {
     const CommandedTrajectory& c;
     std::size_t axis;
     double steps_per_mm;
     double origin;
-    [[nodiscard]] double pos(const CommandedState& s) const { return (axis_of(s.pos_mm, axis) - origin) * steps_per_mm; }
+    [[nodiscard]] double pos(const CommandedState& s) const {
+        return (axis_of(s.pos_mm, axis) - origin) * steps_per_mm;
+    }
     [[nodiscard]] double vel(const CommandedState& s) const { return axis_of(s.vel_mm_per_s, axis) * steps_per_mm; }
 };
 

@@ -4,9 +4,9 @@
 #include <utility>
 
 #include "metrics/pulse/edge_index.hpp"
-#include "metrics/timing/programmed_moves.hpp"
-#include "metrics/stats.hpp"
 #include "metrics/pulse/sync_error.hpp"
+#include "metrics/stats.hpp"
+#include "metrics/timing/programmed_moves.hpp"
 
 namespace cnc::metrics {
 

@@ -9,21 +9,21 @@
 
 #include <nlohmann/json.hpp>
 
-#include "metrics/pulse/driver_timing.hpp"
 #include "metrics/laser/laser.hpp"
 #include "metrics/move_metrics.hpp"
-#include "metrics/timing/move_records.hpp"
-#include "metrics/timing/move_timing.hpp"
 #include "metrics/path/path_accuracy.hpp"
+#include "metrics/pulse/driver_timing.hpp"
 #include "metrics/pulse/pulse_runs.hpp"
 #include "metrics/run_input.hpp"
+#include "metrics/timing/move_records.hpp"
+#include "metrics/timing/move_timing.hpp"
 #include "metrics/timing/worst_moves.hpp"
 
 namespace cnc::metrics {
 
 struct AxisMetrics {
-    std::string name;          // x, y, ...
-    std::string step_signal;   // EdgeLog names
+    std::string name;         // x, y, ...
+    std::string step_signal;  // EdgeLog names
     std::string dir_signal;
     std::size_t rising_edges = 0;
     std::size_t falling_edges = 0;
@@ -51,7 +51,7 @@ struct RunMetrics {
     bool with_moves = false;
     bool with_tool = false;
     bool runs_per_rate_segment = false;  // RunInput::rate_segments given: runs are its segments, not moves
-    double run_split_tolerance = 0.0;  // the analyze-mode setting the runs were split with
+    double run_split_tolerance = 0.0;    // the analyze-mode setting the runs were split with
     std::vector<AxisMetrics> axes;
     MoveRecords moves;                // programmed moves (G-code lines)
     WorstMoves worst;                 // of the programmed moves

@@ -5,9 +5,9 @@
 #include <optional>
 #include <vector>
 
-#include "metrics/timing/move_timing.hpp"
 #include "metrics/path/path_accuracy.hpp"
 #include "metrics/run_input.hpp"
+#include "metrics/timing/move_timing.hpp"
 
 namespace cnc::metrics {
 
@@ -19,11 +19,11 @@ struct MoveMetrics {
     std::size_t pieces = 1;
     bool rapid = false;
     double feed_mm_per_min = 0.0;
-    std::vector<std::int64_t> steps_commanded;  // [axis]
-    std::vector<std::int64_t> steps_emitted;    // [axis] rising edges signed by DIR
+    std::vector<std::int64_t> steps_commanded;              // [axis]
+    std::vector<std::int64_t> steps_emitted;                // [axis] rising edges signed by DIR
     std::optional<TimePs> t_first_edge_ps, t_last_edge_ps;  // any axis
     std::vector<std::optional<double>> sync_max_abs_ns;     // [axis]
-    std::vector<std::size_t> sync_unmatched_edges;           // [axis], with a commanded trajectory (sync_error.hpp)
+    std::vector<std::size_t> sync_unmatched_edges;          // [axis], with a commanded trajectory (sync_error.hpp)
     MoveTiming timing;
     MovePath path;
 };

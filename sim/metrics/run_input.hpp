@@ -17,9 +17,9 @@
 namespace cnc::metrics {
 
 struct AxisTrace {
-    std::string name;  // label in reports ("x", "y"); empty = by position (x, y, z, ...)
-    EdgeLog step;      // STEP pin (rising edge = one microstep)
-    EdgeLog dir;       // DIR pin
+    std::string name;           // label in reports ("x", "y"); empty = by position (x, y, z, ...)
+    EdgeLog step;               // STEP pin (rising edge = one microstep)
+    EdgeLog dir;                // DIR pin
     double steps_per_mm = 0.0;  // 0 = unknown (analyze without --steps-per-mm): mm metrics omitted
     bool dir_high_is_positive = true;
 };
@@ -33,17 +33,17 @@ inline constexpr std::size_t kPathAxes = 2;
 // move for a planner that follows it as one).
 struct MoveSpec {
     int index = 0;
-    int line = 0;                 // G-code line
-    int programmed = -1;          // the programmed move it executes (index into the job's moves); -1: a piece of its
-                                  // own (a steps-file row). Consecutive pieces of one programmed move share it.
-    geom::Segment path;           // programmed geometry the move belongs to (a chord's parent arc, or the line)
-    geom::Vec2 from_mm, to_mm;    // this move's own commanded end points (chord ends, step-quantised)
-    double feed_mm_per_min = 0.0; // programmed path feed F
-    bool rapid = false;           // G0
+    int line = 0;                  // G-code line
+    int programmed = -1;           // the programmed move it executes (index into the job's moves); -1: a piece of its
+                                   // own (a steps-file row). Consecutive pieces of one programmed move share it.
+    geom::Segment path;            // programmed geometry the move belongs to (a chord's parent arc, or the line)
+    geom::Vec2 from_mm, to_mm;     // this move's own commanded end points (chord ends, step-quantised)
+    double feed_mm_per_min = 0.0;  // programmed path feed F
+    bool rapid = false;            // G0
     // Per axis, in the order of RunInput::axes (an axis with no entry is commanded to stand still):
     std::vector<std::int64_t> steps;       // commanded signed microsteps
     std::vector<double> rate_steps_per_s;  // commanded step rate (what the programmed F implies)
-    TimePs t_begin_ps = 0;        // execution window as the controller reports it (e.g. busy)
+    TimePs t_begin_ps = 0;                 // execution window as the controller reports it (e.g. busy)
     TimePs t_end_ps = 0;
 };
 
@@ -81,15 +81,15 @@ struct RateSegment {
 };
 
 struct RunInput {
-    std::vector<AxisTrace> axes;    // x, y (analyze may give one)
-    std::vector<MoveSpec> moves;    // the executed pieces, sorted by t_begin_ps; empty for analyze
-    std::vector<ToolSample> tool;   // sorted by t_ps; empty for analyze
+    std::vector<AxisTrace> axes;   // x, y (analyze may give one)
+    std::vector<MoveSpec> moves;   // the executed pieces, sorted by t_begin_ps; empty for analyze
+    std::vector<ToolSample> tool;  // sorted by t_ps; empty for analyze
     std::optional<EdgeLog> laser;
     TimePs t_job_start_ps = 0;
     TimePs t_job_end_ps = 0;
     DriverLimits limits;
-    double run_split_tolerance = 0.005;  // analyze only: relative period change that starts a new run
-    std::optional<CommandedTrajectory> commanded;   // controllers with a planner
+    double run_split_tolerance = 0.005;                   // analyze only: relative period change that starts a new run
+    std::optional<CommandedTrajectory> commanded;         // controllers with a planner
     std::vector<std::vector<RateSegment>> rate_segments;  // [axis], sorted by t_ps; empty: runs per move
 };
 

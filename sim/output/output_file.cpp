@@ -59,8 +59,7 @@ void check_output_dir(const std::string& path, const std::string& label) {
     }
 }
 
-OutputFile::OutputFile(std::string path, std::string label)
-    : m_path(std::move(path)), m_label(std::move(label)) {
+OutputFile::OutputFile(std::string path, std::string label) : m_path(std::move(path)), m_label(std::move(label)) {
     check_output_path(m_path, m_label);
     m_written = written_in_place(m_path) ? m_path : m_path + ".partial";
     if (m_written != m_path) {

@@ -51,7 +51,7 @@ private:
     std::string m_label;
     std::string m_written;  // m_path, or m_path + ".partial"
     std::ofstream m_out;
-    std::string m_error;    // the first write error (strerror of the failing call)
+    std::string m_error;  // the first write error (strerror of the failing call)
     bool m_closed = false;
 };
 

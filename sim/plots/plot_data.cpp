@@ -9,10 +9,10 @@
 #include <stdexcept>
 
 #include "metrics/commanded.hpp"
-#include "metrics/pulse/edge_index.hpp"
 #include "metrics/path/path_accuracy.hpp"
-#include "metrics/timing/programmed_moves.hpp"
+#include "metrics/pulse/edge_index.hpp"
 #include "metrics/pulse/pulse_runs.hpp"
+#include "metrics/timing/programmed_moves.hpp"
 
 namespace cnc::sim {
 
@@ -41,7 +41,9 @@ std::string num(double v) {
     return buf;
 }
 
-bool same_point(geom::Vec2 a, geom::Vec2 b) { return geom::distance(a, b) < 1e-9; }
+bool same_point(geom::Vec2 a, geom::Vec2 b) {
+    return geom::distance(a, b) < 1e-9;
+}
 
 // Returns the larger side of the box the programmed path fills, mm (the zoomed inset's scale).
 double write_program(const RunInput& in, const fs::path& dir) {
@@ -202,9 +204,9 @@ std::vector<std::string> write_dead_time(const metrics::RunMetrics& m, const Arc
     for (const GapCauses& g : run.gap_causes) by_move[g.after_move] = &g;
     std::vector<std::string> causes;
     const std::vector<metrics::DeadGap> gaps = metrics::dead_gaps(m.moves);
-    const bool split =
-        !gaps.empty() && std::all_of(gaps.begin(), gaps.end(),
-                                              [&](const metrics::DeadGap& g) { return by_move.count(g.after_move); });
+    const bool split = !gaps.empty() && std::all_of(gaps.begin(), gaps.end(), [&](const metrics::DeadGap& g) {
+        return by_move.count(g.after_move);
+    });
     if (split) {
         for (const auto& part : by_move.begin()->second->parts_ms) causes.push_back(part.first);
     }

@@ -63,7 +63,9 @@ std::string quoted(const std::string& s) {
     return out + "'";
 }
 
-std::string file_of(const PlotRun& r, const std::string& name) { return r.data_dir + "/" + name; }
+std::string file_of(const PlotRun& r, const std::string& name) {
+    return r.data_dir + "/" + name;
+}
 
 struct Script {
     explicit Script(Plot p) : plot(std::move(p)) {}

@@ -31,7 +31,9 @@ std::size_t EdgeRecorder::index_of(const std::string& pin_name) const {
     throw std::out_of_range("no probe on pin " + pin_name);
 }
 
-const EdgeLog& EdgeRecorder::log(const std::string& pin_name) const { return m_probes[index_of(pin_name)].log; }
+const EdgeLog& EdgeRecorder::log(const std::string& pin_name) const {
+    return m_probes[index_of(pin_name)].log;
+}
 
 EdgeLog EdgeRecorder::take(const std::string& pin_name) {
     EdgeLog& log = m_probes[index_of(pin_name)].log;

@@ -21,8 +21,8 @@ std::vector<std::size_t> select_traced(const Scenario& s, const std::vector<Trac
     for (const std::string& name : s.trace_signals) {
         const auto named = [&](const TraceCandidate& c) { return name == c.name; };
         if (std::none_of(all.begin(), all.end(), named)) {
-            throw BadInput(key, "'" + name + "' is not a signal of " + s.architecture + " (allowed: " +
-                                    allowed_names(all) + ")");
+            throw BadInput(
+                key, "'" + name + "' is not a signal of " + s.architecture + " (allowed: " + allowed_names(all) + ")");
         }
         if (std::count(s.trace_signals.begin(), s.trace_signals.end(), name) > 1) {
             throw BadInput(key, "'" + name + "' is named twice");

@@ -10,7 +10,9 @@ namespace cnc::sim {
 
 namespace {
 
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
+TimePs now_ps() {
+    return static_cast<TimePs>(sc_core::sc_time_stamp().value());
+}
 
 std::vector<TraceCandidate> candidates(const std::vector<TracedPin>& pins, const std::vector<TracedReal>& reals) {
     std::vector<TraceCandidate> all;

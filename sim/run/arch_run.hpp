@@ -17,7 +17,7 @@ namespace cnc::sim {
 
 // Where one dead-time gap goes, for an architecture that knows (seed 000's stop-and-wait hand-overs).
 struct GapCauses {
-    std::size_t after_move = 0;                             // index of the move the gap follows
+    std::size_t after_move = 0;                            // index of the move the gap follows
     std::vector<std::pair<std::string, double>> parts_ms;  // cause and its share, ms; the parts add up to the gap
 };
 
@@ -29,18 +29,18 @@ struct TimeSeries {
 };
 
 struct ArchRun {
-    metrics::RunInput input;  // empty logs and samples when the metrics streamed (`metrics` set)
+    metrics::RunInput input;                     // empty logs and samples when the metrics streamed (`metrics` set)
     std::optional<metrics::RunMetrics> metrics;  // computed by the system itself; else run.cpp computes them from input
     // Other recorded pins (busy, UART lines), by name; kept only with the whole logs (Scenario::keep_run_input)
     // where a long job's lines would grow with it.
     std::map<std::string, EdgeLog> lines;
     nlohmann::json details = nlohmann::json::object();  // architecture section of the JSON report
     std::string details_text;                           // the same, for the summary
-    std::vector<Warning> warnings;  // grouped by kind in the reports (run.cpp)
+    std::vector<Warning> warnings;                      // grouped by kind in the reports (run.cpp)
     // Empty: the architecture reports no split (the plots draw whole gaps); filled only for the plots
     // (Scenario::keep_run_input).
     std::vector<GapCauses> gap_causes;
-    std::vector<TimeSeries> series;     // plotted per quantity when present (sim/plots/plot_data.hpp)
+    std::vector<TimeSeries> series;  // plotted per quantity when present (sim/plots/plot_data.hpp)
     bool ok = true;
     std::string failure;
     double estimated_s = 0.0;  // the job's estimate and the simulated-time limit the run had (run/simulate.hpp)

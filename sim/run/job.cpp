@@ -39,9 +39,11 @@ Job load_job(const Scenario& s, const Architecture& architecture) {
     Job job;
     if (s.job_format == JobFormat::Steps) {
         if (!use.takes_steps_file) {
-            throw BadInput(s.file + ": scenario.job", architecture.name() + " needs a G-code job: a steps file (seed 000's packet "
-                                      "list) holds no programmed moves for its host, and runs only on " +
-                                      steps_file_architectures());
+            throw BadInput(s.file + ": scenario.job",
+                           architecture.name() +
+                               " needs a G-code job: a steps file (seed 000's packet "
+                               "list) holds no programmed moves for its host, and runs only on " +
+                               steps_file_architectures());
         }
         job.steps_file = host::load_steps_file(s.job_path);
         for (host::MotionSegment& seg : job.steps_file) {

@@ -17,9 +17,9 @@ struct Job {
     // G-code job; without its moves (Program::moves empty, move_count counts them) when the architecture streams
     // the job: it reads them from the file again as it sends them (host::GcodeStream).
     std::optional<host::Program> program;
-    std::vector<host::MotionSegment> steps_file;   // steps-file job (JobUse::takes_steps_file)
-    std::vector<Warning> warnings;                 // about the job as a whole (one without a move)
-    std::vector<Warning> move_warnings;            // about its moves: the laser against the job's intent
+    std::vector<host::MotionSegment> steps_file;  // steps-file job (JobUse::takes_steps_file)
+    std::vector<Warning> warnings;                // about the job as a whole (one without a move)
+    std::vector<Warning> move_warnings;           // about its moves: the laser against the job's intent
 };
 
 // Reads the job as `architecture` takes it (one pass over the file, the moves kept unless it streams the job) and

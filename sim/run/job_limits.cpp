@@ -13,22 +13,25 @@ namespace {
 constexpr double kSecondsPerMinute = 60.0;
 
 // The largest |position| of an axis in mm.
-double max_position_mm(const host::AxisMachine& axis) { return host::kMaxPositionSteps / axis.steps_per_mm(); }
+double max_position_mm(const host::AxisMachine& axis) {
+    return host::kMaxPositionSteps / axis.steps_per_mm();
+}
 
 std::string position_rule(const char* axis, const host::AxisMachine& m) {
-    return format("; the farthest an axis may go is 2^30 - 1 steps, so that every move fits the int32 step counts: "
-                  "%.10g mm on ",
-                  max_position_mm(m)) +
+    return format(
+               "; the farthest an axis may go is 2^30 - 1 steps, so that every move fits the int32 step counts: "
+               "%.10g mm on ",
+               max_position_mm(m)) +
            axis + format(" at %.10g steps/mm", m.steps_per_mm());
 }
 
-void check_position(const std::string& where, const char* axis,
-                    const host::AxisMachine& machine, double lo_mm, double hi_mm) {
+void check_position(const std::string& where, const char* axis, const host::AxisMachine& machine, double lo_mm,
+                    double hi_mm) {
     const double limit = max_position_mm(machine);
     const double worst = std::fabs(lo_mm) > std::fabs(hi_mm) ? lo_mm : hi_mm;
     if (!(std::fabs(worst) <= limit)) {
-        throw BadInput(where, std::string(axis) + format(" %.10g mm is out of range", worst) +
-                                        position_rule(axis, machine));
+        throw BadInput(where,
+                       std::string(axis) + format(" %.10g mm is out of range", worst) + position_rule(axis, machine));
     }
 }
 

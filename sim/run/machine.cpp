@@ -55,8 +55,12 @@ Machine::Machine(const sc_core::sc_module_name& name, const host::MachineModel& 
                  const mech::Drv8825Config& driver, geom::Vec2 origin_mm, const MechanicsSettings& mechanics,
                  bool positions_traced)
     : sc_module(name),
-      step_x("step_x"), dir_x("dir_x"), n_enbl_x("n_enbl_x"),
-      step_y("step_y"), dir_y("dir_y"), n_enbl_y("n_enbl_y"),
+      step_x("step_x"),
+      dir_x("dir_x"),
+      n_enbl_x("n_enbl_x"),
+      step_y("step_y"),
+      dir_y("dir_y"),
+      n_enbl_y("n_enbl_y"),
       laser("laser"),
       m_worker_thread(mechanics.model == MechanicsModel::Dynamic && mechanics.worker_thread && !positions_traced),
       m_modes_x(model.x.microsteps, "x"),
@@ -67,14 +71,13 @@ Machine::Machine(const sc_core::sc_module_name& name, const host::MachineModel& 
       m_worker_motor_y(m_worker_thread ? std::make_unique<mech::WorkerMotor>(m_carriage, 1) : nullptr),
       m_drv_x("drv8825_x", driver, m_worker_thread ? *m_worker_motor_x : *m_axis_x.motor),
       m_drv_y("drv8825_y", driver, m_worker_thread ? *m_worker_motor_y : *m_axis_y.motor),
-      m_carriage("carriage", mech::CarriageConfig{{&m_drv_x.step_event(), &m_axis_x.drive(), m_axis_x.motor.get(),
-                                                   &m_drv_x.enable_event()},
-                                                  {&m_drv_y.step_event(), &m_axis_y.drive(), m_axis_y.motor.get(),
-                                                   &m_drv_y.enable_event()},
-                                                  origin_mm,
-                                                  mechanics.model == MechanicsModel::Dynamic ? mechanics.sample_hz
-                                                                                             : 0.0,
-                                                  m_worker_thread}),
+      m_carriage("carriage",
+                 mech::CarriageConfig{
+                     {&m_drv_x.step_event(), &m_axis_x.drive(), m_axis_x.motor.get(), &m_drv_x.enable_event()},
+                     {&m_drv_y.step_event(), &m_axis_y.drive(), m_axis_y.motor.get(), &m_drv_y.enable_event()},
+                     origin_mm,
+                     mechanics.model == MechanicsModel::Dynamic ? mechanics.sample_hz : 0.0,
+                     m_worker_thread}),
       m_head("laser_head") {
     wire(m_drv_x, step_x, dir_x, n_enbl_x, m_modes_x);
     wire(m_drv_y, step_y, dir_y, n_enbl_y, m_modes_y);

@@ -29,9 +29,13 @@ void record_pins(EdgeRecorder& rec, const MachinePins& pins, bool enable) {
 std::vector<TracedPin> traced_pins(const MachinePins& pins, const Controller& ctl) {
     const MachinePinClocks clocks = ctl.pin_clocks();
     const std::optional<std::int64_t> out = clocks.step_dir_laser_hz;
-    std::vector<TracedPin> traced = {{&pins.step_x, out},   {&pins.dir_x, out}, {&pins.step_y, out},
-                                     {&pins.dir_y, out},    {&pins.n_enbl_x, clocks.enable_hz},
-                                     {&pins.n_enbl_y, clocks.enable_hz}, {&pins.laser, out}};
+    std::vector<TracedPin> traced = {{&pins.step_x, out},
+                                     {&pins.dir_x, out},
+                                     {&pins.step_y, out},
+                                     {&pins.dir_y, out},
+                                     {&pins.n_enbl_x, clocks.enable_hz},
+                                     {&pins.n_enbl_y, clocks.enable_hz},
+                                     {&pins.laser, out}};
     for (const TracedPin& p : ctl.traced_pins()) traced.push_back(p);
     return traced;
 }

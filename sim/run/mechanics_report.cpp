@@ -14,7 +14,8 @@ namespace {
 nlohmann::json axis_json(const mech::DynamicAxis& axis) {
     const mech::DynamicAxisStats& st = axis.stats();
     nlohmann::json times = nlohmann::json::array();
-    for (const mech::LostStepEvent& e : st.events) times.push_back({{"t_s", ps_to_s(e.t_ps)}, {"full_steps", e.full_steps}});
+    for (const mech::LostStepEvent& e : st.events)
+        times.push_back({{"t_s", ps_to_s(e.t_ps)}, {"full_steps", e.full_steps}});
     return {{"lost_full_steps", st.lost_full_steps},
             {"lost_step_events", times},
             {"peak_load_angle_electrical_deg", st.peak_load_angle_deg},
@@ -56,19 +57,18 @@ void add_mechanics_report(const Machine& machine, const std::optional<MetricsFee
     const mech::DynamicAxis* x = machine.dynamic_x();
     const mech::DynamicAxis* y = machine.dynamic_y();
     if (x == nullptr || y == nullptr) return;
-    const metrics::LaserExposure e = feed                ? feed->laser_exposure()
+    const metrics::LaserExposure e = feed              ? feed->laser_exposure()
                                      : run.input.laser ? metrics::laser_exposure(run.input.tool, *run.input.laser)
                                                        : metrics::LaserExposure{};
-    run.details["mechanics"] = {
-        {"model", "dynamic"},
-        {"x", axis_json(*x)},
-        {"y", axis_json(*y)},
-        {"laser_exposure",
-         {{"lasered_path_mm", e.lasered_path_mm},
-          {"mean_s_per_mm", e.mean_s_per_mm},
-          {"peak_s_per_mm", e.peak_s_per_mm},
-          {"peak_at_lasered_path_mm", e.peak_at_path_mm},
-          {"bin_mm", metrics::kExposureBinMm}}}};
+    run.details["mechanics"] = {{"model", "dynamic"},
+                                {"x", axis_json(*x)},
+                                {"y", axis_json(*y)},
+                                {"laser_exposure",
+                                 {{"lasered_path_mm", e.lasered_path_mm},
+                                  {"mean_s_per_mm", e.mean_s_per_mm},
+                                  {"peak_s_per_mm", e.peak_s_per_mm},
+                                  {"peak_at_lasered_path_mm", e.peak_at_path_mm},
+                                  {"bin_mm", metrics::kExposureBinMm}}}};
     std::ostringstream t;
     t << "Mechanics (dynamic): the carriage position above comes from the axis models; contour and following "
          "error include their lag and ringing\n"

@@ -5,8 +5,8 @@
 #include <optional>
 
 #include "run/arch_run.hpp"
-#include "run/metrics_feed.hpp"
 #include "run/machine.hpp"
+#include "run/metrics_feed.hpp"
 
 namespace cnc::sim {
 

@@ -19,7 +19,10 @@ metrics::RunInput shape(const EdgeRecorder& rec, const std::vector<AxisPins>& ax
     for (const AxisPins& a : axes) {
         const EdgeLog& step = rec.log(a.step_pin);
         const EdgeLog& dir = rec.log(a.dir_pin);
-        in.axes.push_back({a.name, {step.name, step.initial, {}}, {dir.name, dir.initial, {}}, a.steps_per_mm,
+        in.axes.push_back({a.name,
+                           {step.name, step.initial, {}},
+                           {dir.name, dir.initial, {}},
+                           a.steps_per_mm,
                            a.dir_high_is_positive});
     }
     const EdgeLog& laser = rec.log(laser_pin);
@@ -27,7 +30,9 @@ metrics::RunInput shape(const EdgeRecorder& rec, const std::vector<AxisPins>& ax
     return in;
 }
 
-void append(EdgeLog& to, const EdgeLog& from) { to.edges.insert(to.edges.end(), from.edges.begin(), from.edges.end()); }
+void append(EdgeLog& to, const EdgeLog& from) {
+    to.edges.insert(to.edges.end(), from.edges.begin(), from.edges.end());
+}
 
 }  // namespace
 

@@ -16,7 +16,7 @@
 namespace cnc::sim {
 
 struct AxisPins {
-    std::string name;  // x, y
+    std::string name;               // x, y
     std::string step_pin, dir_pin;  // recorder pin names
     double steps_per_mm = 0.0;
     bool dir_high_is_positive = true;

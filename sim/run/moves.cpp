@@ -6,9 +6,7 @@
 namespace cnc::sim {
 
 CommandedMoves::CommandedMoves(const host::MachineModel& machine, geom::Vec2 start_mm)
-    : m_mm_per_step_x(machine.x.mm_per_step()),
-      m_mm_per_step_y(machine.y.mm_per_step()),
-      m_start_mm(start_mm) {}
+    : m_mm_per_step_x(machine.x.mm_per_step()), m_mm_per_step_y(machine.y.mm_per_step()), m_start_mm(start_mm) {}
 
 metrics::MoveSpec CommandedMoves::next(const host::MotionSegment& seg, const geom::Segment* programmed_path) {
     metrics::MoveSpec m;
@@ -18,8 +16,8 @@ metrics::MoveSpec CommandedMoves::next(const host::MotionSegment& seg, const geo
                                         static_cast<double>(m_at_y) * m_mm_per_step_y};
     m_at_x += seg.steps_x;
     m_at_y += seg.steps_y;
-    m.to_mm = m_start_mm + geom::Vec2{static_cast<double>(m_at_x) * m_mm_per_step_x,
-                                      static_cast<double>(m_at_y) * m_mm_per_step_y};
+    m.to_mm = m_start_mm +
+              geom::Vec2{static_cast<double>(m_at_x) * m_mm_per_step_x, static_cast<double>(m_at_y) * m_mm_per_step_y};
     const bool programmed = programmed_path != nullptr && seg.move >= 0;
     m.programmed = programmed ? seg.move : -1;
     m.path = programmed ? *programmed_path : geom::Segment::line(m.from_mm, m.to_mm);

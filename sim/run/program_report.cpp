@@ -55,9 +55,10 @@ std::string program_text(const host::Program& program) {
         t << '\n';
     }
     if (program.z_travel_mm > 0.0) {
-        t << format("  Z travel %.3f mm: this architecture has no Z STEP pins; a Z-only move is timed at its feed "
-                    "and added as host dead time, a move with XY and Z runs its XY path at the XY share of F\n",
-                    program.z_travel_mm);
+        t << format(
+            "  Z travel %.3f mm: this architecture has no Z STEP pins; a Z-only move is timed at its feed "
+            "and added as host dead time, a move with XY and Z runs its XY path at the XY share of F\n",
+            program.z_travel_mm);
     }
     if (!program.ignored.empty()) {
         t << "  ignored by this machine (scenario.gcode_policy = \"strict\" refuses them):\n";

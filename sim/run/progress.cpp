@@ -6,8 +6,8 @@ namespace cnc::sim {
 
 namespace {
 
-constexpr double kQuietWallS = 1.0;     // runs shorter than this show nothing
-constexpr double kRedrawWallS = 0.25;   // terminal line: four redraws a second are enough to read
+constexpr double kQuietWallS = 1.0;          // runs shorter than this show nothing
+constexpr double kRedrawWallS = 0.25;        // terminal line: four redraws a second are enough to read
 constexpr double kTenthsPerEstimate = 10.0;  // log: one line per 10 % of the estimate
 
 }  // namespace
@@ -18,7 +18,9 @@ Progress::Progress(std::ostream& out, ProgressStyle style, double expected_s, st
       m_expected_s(expected_s),
       m_label(std::move(label)) {}
 
-std::string Progress::prefix() const { return "cncsim: " + (m_label.empty() ? "" : m_label + ": "); }
+std::string Progress::prefix() const {
+    return "cncsim: " + (m_label.empty() ? "" : m_label + ": ");
+}
 
 std::string Progress::text(double sim_s, double wall_s) const {
     const double fraction = sim_s / m_expected_s;

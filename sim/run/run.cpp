@@ -4,11 +4,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "metrics/pulse/commanded_rates.hpp"
-#include "metrics/metrics.hpp"
-#include "metrics/report/report.hpp"
 #include "architectures/catalog.hpp"
 #include "architectures/registry.hpp"
+#include "metrics/metrics.hpp"
+#include "metrics/pulse/commanded_rates.hpp"
+#include "metrics/report/report.hpp"
 #include "run/job.hpp"
 #include "run/program_report.hpp"
 
@@ -60,8 +60,8 @@ nlohmann::json warnings_json(const std::vector<Warning>& warnings, bool detail) 
 template <typename... Entries>
 ArchRun run_architecture(const Scenario& s, const Job& job, EntryList<Entries...>) {
     ArchRun run;
-    const bool ran = ((s.architecture == Entries::architecture().name() ? (run = Entries::run(s, job), true) : false) ||
-                      ...);
+    const bool ran =
+        ((s.architecture == Entries::architecture().name() ? (run = Entries::run(s, job), true) : false) || ...);
     if (!ran) throw std::logic_error("no registry entry runs " + s.architecture);
     return run;
 }
@@ -106,8 +106,7 @@ RunOutcome run_scenario(const Scenario& s) {
     }
     // A controller without STEP/DIR axes (the lathe's DC motor) has no pulse figures to tabulate.
     if (!m.axes.empty()) text << metrics::summary_table(m) << '\n';
-    text << (job.program ? program_text(*job.program) : std::string()) << '\n'
-         << arch.details_text;
+    text << (job.program ? program_text(*job.program) : std::string()) << '\n' << arch.details_text;
     for (const WarningGroup& g : group_warnings(arch.warnings)) text << "warning: " << summary_line(g) << '\n';
     out.summary = text.str();
     return out;

@@ -13,12 +13,12 @@ namespace cnc::sim {
 
 struct RunOutcome {
     bool ok = true;
-    std::string failure;      // why the run failed (the job did not complete as the host intended)
-    std::string summary;      // the text the CLI prints
-    bool detail = false;      // the report's detail (Scenario::detail)
+    std::string failure;  // why the run failed (the job did not complete as the host intended)
+    std::string summary;  // the text the CLI prints
+    bool detail = false;  // the report's detail (Scenario::detail)
     // The JSON report (same numbers) but the programmed moves' columns, which write_report() takes from `metrics`.
     nlohmann::json report;
-    ArchRun arch;             // the measured traces and the architecture's own section
+    ArchRun arch;  // the measured traces and the architecture's own section
     metrics::RunMetrics metrics;
 };
 

@@ -56,7 +56,7 @@ SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& fin
         end.t_ps = now_ps();
         if (finished && finished()) break;
         TimePs until_ps = std::min(end.t_ps + slice_ps, budget.limit_ps);
-        if (check_ps == 0 && started) {  // before the first sc_start no process has been scheduled yet
+        if (check_ps == 0 && started) {                  // before the first sc_start no process has been scheduled yet
             if (!sc_core::sc_pending_activity()) break;  // nothing left to happen: the model has run to its end
             // A slice must reach the next event, or the kernel would not move (and say so).
             const TimePs next_ps = end.t_ps + static_cast<TimePs>(sc_core::sc_time_to_pending_activity().value());

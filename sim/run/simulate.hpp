@@ -13,16 +13,16 @@ namespace cnc::sim {
 
 struct RunBudget {
     JobEstimate estimate;
-    TimePs limit_ps = 0;        // scenario.max_sim_s when the scenario sets it, else the estimate's limit
+    TimePs limit_ps = 0;  // scenario.max_sim_s when the scenario sets it, else the estimate's limit
     bool limit_from_scenario = false;
     ProgressStyle progress = ProgressStyle::Off;
-    std::string label;          // names the run in its progress lines (the architecture)
+    std::string label;  // names the run in its progress lines (the architecture)
 };
 
 [[nodiscard]] RunBudget run_budget(const Scenario& scenario, const JobEstimate& estimate);
 
 struct SimulationEnd {
-    TimePs t_ps = 0;             // simulated time when the run stopped
+    TimePs t_ps = 0;  // simulated time when the run stopped
     bool limit_reached = false;
 };
 

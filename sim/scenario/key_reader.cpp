@@ -26,13 +26,20 @@ std::string number_text(double v) {
 
 std::string type_name(const toml::node& n) {
     switch (n.type()) {
-        case toml::node_type::integer: return "integer";
-        case toml::node_type::floating_point: return "float";
-        case toml::node_type::string: return "string";
-        case toml::node_type::boolean: return "boolean";
-        case toml::node_type::table: return "table";
-        case toml::node_type::array: return "array";
-        default: return "date/time";
+        case toml::node_type::integer:
+            return "integer";
+        case toml::node_type::floating_point:
+            return "float";
+        case toml::node_type::string:
+            return "string";
+        case toml::node_type::boolean:
+            return "boolean";
+        case toml::node_type::table:
+            return "table";
+        case toml::node_type::array:
+            return "array";
+        default:
+            return "date/time";
     }
 }
 
@@ -59,7 +66,9 @@ const toml::node* KeyReader::find(const std::string& key) const {
     return node;
 }
 
-bool KeyReader::has(const std::string& key) const { return find(key) != nullptr; }
+bool KeyReader::has(const std::string& key) const {
+    return find(key) != nullptr;
+}
 
 std::string KeyReader::where(const std::string& key) const {
     if (const auto o = override_of(key)) return "--set " + *o;
@@ -70,7 +79,9 @@ std::string KeyReader::where(const std::string& key) const {
     return m_file + ": " + key;
 }
 
-void KeyReader::fail(const std::string& key, const std::string& what) const { throw BadInput(where(key), what); }
+void KeyReader::fail(const std::string& key, const std::string& what) const {
+    throw BadInput(where(key), what);
+}
 
 void KeyReader::record(KeyDoc doc) {
     const auto same = [&](const KeyDoc& d) { return d.key == doc.key; };
@@ -83,8 +94,8 @@ double KeyReader::get_float(const std::string& key, double def, double min, doub
     if (n == nullptr) return def;
     if (!n->is_number()) fail(key, "expected a number, got " + type_name(*n));
     const double v = n->is_integer() ? static_cast<double>(n->as_integer()->get()) : n->as_floating_point()->get();
-    if (!(v >= min && v <= max)) fail(key, number_text(v) + " is out of range (allowed " + number_text(min) +
-                                                   " .. " + number_text(max) + ")");
+    if (!(v >= min && v <= max))
+        fail(key, number_text(v) + " is out of range (allowed " + number_text(min) + " .. " + number_text(max) + ")");
     return v;
 }
 
@@ -95,8 +106,9 @@ std::int64_t KeyReader::get_int(const std::string& key, std::int64_t def, std::i
     if (n == nullptr) return def;
     if (!n->is_integer()) fail(key, "expected an integer, got " + type_name(*n));
     const std::int64_t v = n->as_integer()->get();
-    if (v < min || v > max) fail(key, std::to_string(v) + " is out of range (allowed " + std::to_string(min) +
-                                          " .. " + std::to_string(max) + ")");
+    if (v < min || v > max)
+        fail(key, std::to_string(v) + " is out of range (allowed " + std::to_string(min) + " .. " +
+                      std::to_string(max) + ")");
     return v;
 }
 
@@ -146,7 +158,7 @@ std::string KeyReader::get_choice(const std::string& key, const std::string& def
 
 void KeyReader::reject_unknown_keys() const {
     std::function<void(const toml::table&, const std::string&)> walk = [&](const toml::table& t,
-                                                                            const std::string& prefix) {
+                                                                           const std::string& prefix) {
         for (const auto& [k, node] : t) {
             const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
             const auto known = [&](const KeyDoc& d) { return d.key == key; };

@@ -12,8 +12,8 @@
 namespace cnc::sim {
 
 struct KeyDoc {
-    std::string key;      // dotted path: link.baud
-    std::string type;     // integer | float | string | boolean | array of strings
+    std::string key;   // dotted path: link.baud
+    std::string type;  // integer | float | string | boolean | array of strings
     std::string default_text;
     std::string allowed;  // "1 .. 65535", "belt | leadscrew"
     std::string doc;      // one line, unit included

@@ -8,7 +8,7 @@ namespace cnc::sim {
 
 namespace {
 
-constexpr double kNmPerGcm = 9.80665e-5;     // 1 g cm = 9.80665e-5 N m
+constexpr double kNmPerGcm = 9.80665e-5;  // 1 g cm = 9.80665e-5 N m
 constexpr double kKgm2PerGcm2 = 1e-7;
 
 void read_load(KeyReader& r, const std::string& axis, mech::AxisLoadParams& l, double mass_default_kg,
@@ -38,10 +38,10 @@ void read_load(KeyReader& r, const std::string& axis, mech::AxisLoadParams& l, d
                                      "model)");
     l.backlash_mm = r.get_float(p + "backlash_mm", l.backlash_mm, 0.0, 100.0,
                                 "leadscrew axial play, mm (anti-backlash nut: ~0; dynamic model)");
-    l.screw_stiffness_n_per_m = 1e6 * r.get_float(p + "screw_stiffness_n_per_um", l.screw_stiffness_n_per_m * 1e-6,
-                                                  1e-3, 1e6,
-                                                  "leadscrew and nut axial stiffness, N/um (estimate for an 8 mm "
-                                                  "screw; dynamic model)");
+    l.screw_stiffness_n_per_m =
+        1e6 * r.get_float(p + "screw_stiffness_n_per_um", l.screw_stiffness_n_per_m * 1e-6, 1e-3, 1e6,
+                          "leadscrew and nut axial stiffness, N/um (estimate for an 8 mm "
+                          "screw; dynamic model)");
     l.screw_damping_ratio = r.get_float(p + "screw_damping_ratio", l.screw_damping_ratio, 0.0, 10.0,
                                         "leadscrew contact damping as a fraction of critical (dynamic model)");
 }
@@ -84,18 +84,18 @@ void read_mechanics_settings(KeyReader& r, MechanicsSettings& s) {
                                              "docs/mechanics.md)");
 
     mech::HybridStepperParams& m = s.motor;
-    m.holding_torque_nm = kNmPerGcm * r.get_float("motor.holding_torque_gcm", m.holding_torque_nm / kNmPerGcm, 1.0,
-                                                  1e7, "holding torque, g cm, both phases at the rated current "
+    m.holding_torque_nm = kNmPerGcm * r.get_float("motor.holding_torque_gcm", m.holding_torque_nm / kNmPerGcm, 1.0, 1e7,
+                                                  "holding torque, g cm, both phases at the rated current "
                                                   "(42BYGHW208: 2800, seed 000 sec. 8)");
-    m.rated_current_a = r.get_float("motor.rated_current_a", m.rated_current_a, 0.01, 20.0,
-                                    "rated phase current, A (42BYGHW208: 0.4)");
+    m.rated_current_a =
+        r.get_float("motor.rated_current_a", m.rated_current_a, 0.01, 20.0, "rated phase current, A (42BYGHW208: 0.4)");
     m.resistance_ohm = r.get_float("motor.resistance_ohm", m.resistance_ohm, 0.01, 1000.0,
                                    "phase resistance, ohm (42BYGHW208: 30, Wantai listing)");
     m.inductance_h = 1e-3 * r.get_float("motor.inductance_mh", m.inductance_h * 1e3, 0.01, 1000.0,
                                         "phase inductance, mH (42BYGHW208: 37, Wantai listing)");
-    m.rotor_inertia_kgm2 = kKgm2PerGcm2 * r.get_float("motor.rotor_inertia_gcm2", m.rotor_inertia_kgm2 / kKgm2PerGcm2,
-                                                      0.01, 1e6,
-                                                      "rotor inertia, g cm^2 (typical of 42 x 34 mm 1.8 deg motors)");
+    m.rotor_inertia_kgm2 =
+        kKgm2PerGcm2 * r.get_float("motor.rotor_inertia_gcm2", m.rotor_inertia_kgm2 / kKgm2PerGcm2, 0.01, 1e6,
+                                   "rotor inertia, g cm^2 (typical of 42 x 34 mm 1.8 deg motors)");
     m.detent_torque_nm = kNmPerGcm * r.get_float("motor.detent_torque_gcm", m.detent_torque_nm / kNmPerGcm, 0.0, 1e6,
                                                  "detent torque, g cm (typical of 42 x 34 mm 1.8 deg motors)");
     m.viscous_nm_per_rad_s = r.get_float("motor.viscous_nm_s_per_rad", m.viscous_nm_per_rad_s, 0.0, 10.0,

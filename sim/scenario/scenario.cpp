@@ -9,12 +9,12 @@
 #include <utility>
 #include <vector>
 
+#include "architectures/catalog.hpp"
 #include "common/bad_input.hpp"
 #include "common/text_format.hpp"
 #include "common/units.hpp"
 #include "host/core/soft_limits.hpp"
 #include "metrics/vcd/vcd_timescale.hpp"
-#include "architectures/catalog.hpp"
 
 namespace cnc::sim {
 
@@ -28,8 +28,8 @@ namespace fs = std::filesystem;
 void check_calibration(const KeyReader& r, const std::string& p, const host::AxisMachine& m) {
     if (!m.calibrated_steps_per_mm) return;
     std::string given;
-    for (const char* key : {"step_angle_deg", "transmission", "pulley_teeth", "belt_pitch_mm", "lead_mm",
-                            "screw_starts", "gear_ratio"}) {
+    for (const char* key :
+         {"step_angle_deg", "transmission", "pulley_teeth", "belt_pitch_mm", "lead_mm", "screw_starts", "gear_ratio"}) {
         if (r.has(p + key)) given += (given.empty() ? "" : ", ") + p + key;
     }
     if (given.empty()) return;
@@ -39,7 +39,8 @@ void check_calibration(const KeyReader& r, const std::string& p, const host::Axi
     constexpr double kRelativeTolerance = 1e-9;  // rounding of a value typed as a decimal, not a real difference
     if (std::abs(calibrated - implied) <= kRelativeTolerance * std::max(calibrated, implied)) return;
     r.fail(p + "steps_per_mm", format("%.10g", calibrated) + " differs from the " + format("%.10g", implied) +
-                                   " steps/mm that " + given + " give (with the defaults of the keys not set); "
+                                   " steps/mm that " + given +
+                                   " give (with the defaults of the keys not set); "
                                    "give steps_per_mm alone, or values that agree");
 }
 
@@ -53,13 +54,15 @@ double positive(KeyReader& r, const std::string& key, double def, double max, co
 
 void read_axis_limits(KeyReader& r, const std::string& axis, host::AxisLimits& lim) {
     const std::string p = "machine." + axis + ".";
-    lim.max_velocity_mm_per_s = positive(r, p + "max_velocity_mm_per_s", lim.max_velocity_mm_per_s, 1e5,
-                                         "axis velocity limit, mm/s, > 0 (LinuxCNC MAX_VELOCITY): every architecture holds its moves to it",
-                                         "an axis that may not move cannot follow any move");
-    lim.max_accel_mm_per_s2 = positive(r, p + "max_accel_mm_per_s2", lim.max_accel_mm_per_s2, 1e7,
-                                       "axis acceleration limit, mm/s^2, > 0 (LinuxCNC MAX_ACCELERATION): the trajectory planner's (a controller "
-                                       "without ramps steps at full rate from the first step)",
-                                       "an axis that cannot accelerate never leaves rest");
+    lim.max_velocity_mm_per_s =
+        positive(r, p + "max_velocity_mm_per_s", lim.max_velocity_mm_per_s, 1e5,
+                 "axis velocity limit, mm/s, > 0 (LinuxCNC MAX_VELOCITY): every architecture holds its moves to it",
+                 "an axis that may not move cannot follow any move");
+    lim.max_accel_mm_per_s2 = positive(
+        r, p + "max_accel_mm_per_s2", lim.max_accel_mm_per_s2, 1e7,
+        "axis acceleration limit, mm/s^2, > 0 (LinuxCNC MAX_ACCELERATION): the trajectory planner's (a controller "
+        "without ramps steps at full rate from the first step)",
+        "an axis that cannot accelerate never leaves rest");
     lim.max_jerk_mm_per_s3 = positive(r, p + "max_jerk_mm_per_s3", lim.max_jerk_mm_per_s3, 1e10,
                                       "axis jerk limit, mm/s^3, > 0 (planner.profile = jerk-limited only)",
                                       "a jerk-limited profile could never change its acceleration");
@@ -69,23 +72,24 @@ void read_axis(KeyReader& r, const std::string& axis, host::AxisMachine& m) {
     const std::string p = "machine." + axis + ".";
     m.step_angle_deg = r.get_float(p + "step_angle_deg", m.step_angle_deg, 0.01, 90.0,
                                    "motor full-step angle, degrees (42BYGHW208: 1.8)");
-    m.microsteps = static_cast<int>(r.get_int(p + "microsteps", m.microsteps, 1, 32,
-                                              "DRV8825 microstep mode: 1, 2, 4, 8, 16 or 32 (MODE pins)"));
-    const std::string tr = r.get_choice(p + "transmission", "belt", {"belt", "leadscrew"},
-                                        "belt and pulley, or leadscrew");
+    m.microsteps = static_cast<int>(
+        r.get_int(p + "microsteps", m.microsteps, 1, 32, "DRV8825 microstep mode: 1, 2, 4, 8, 16 or 32 (MODE pins)"));
+    const std::string tr =
+        r.get_choice(p + "transmission", "belt", {"belt", "leadscrew"}, "belt and pulley, or leadscrew");
     m.transmission = tr == "belt" ? host::Transmission::Belt : host::Transmission::Leadscrew;
-    m.pulley_teeth = static_cast<int>(r.get_int(p + "pulley_teeth", m.pulley_teeth, 1, 1000,
-                                                "pulley teeth (belt; seed 000: GT2 20T)"));
+    m.pulley_teeth = static_cast<int>(
+        r.get_int(p + "pulley_teeth", m.pulley_teeth, 1, 1000, "pulley teeth (belt; seed 000: GT2 20T)"));
     m.belt_pitch_mm = r.get_float(p + "belt_pitch_mm", m.belt_pitch_mm, 0.001, 100.0, "belt pitch, mm (GT2: 2.0)");
     m.lead_mm = r.get_float(p + "lead_mm", m.lead_mm, 0.001, 1000.0, "leadscrew pitch per start, mm");
     m.screw_starts = static_cast<int>(r.get_int(p + "screw_starts", m.screw_starts, 1, 16, "leadscrew starts"));
-    m.gear_ratio = r.get_float(p + "gear_ratio", m.gear_ratio, 0.001, 1000.0,
-                               "motor revolutions per pulley/screw revolution");
+    m.gear_ratio =
+        r.get_float(p + "gear_ratio", m.gear_ratio, 0.001, 1000.0, "motor revolutions per pulley/screw revolution");
     const double calibrated = r.get_float(
         p + "steps_per_mm", 0.0, 0.0, 1e6,
-        "calibrated microsteps per mm at " + p + "microsteps (full steps per mm = steps_per_mm / microsteps), "
-        "instead of the motor and transmission keys above (given with them, it must equal their value); "
-        "0: computed from them");
+        "calibrated microsteps per mm at " + p +
+            "microsteps (full steps per mm = steps_per_mm / microsteps), "
+            "instead of the motor and transmission keys above (given with them, it must equal their value); "
+            "0: computed from them");
     if (calibrated > 0.0) m.calibrated_steps_per_mm = calibrated;
     read_axis_limits(r, axis, m.limits);
     m.travel_mm = r.get_float(p + "travel_mm", m.travel_mm, 0.0, 1e6, "axis travel, mm (0 = unlimited)");
@@ -144,8 +148,9 @@ void reject_moved_keys(const KeyReader& r) {
     }
     for (const auto& [old_key, new_key] : moved) {
         if (r.has(old_key)) {
-            r.fail(old_key, "replaced by " + new_key + ": one machine for every architecture "
-                            "(docs/scenario-reference.md, \"Which keys apply to which architecture\")");
+            r.fail(old_key, "replaced by " + new_key +
+                                ": one machine for every architecture "
+                                "(docs/scenario-reference.md, \"Which keys apply to which architecture\")");
         }
     }
 }
@@ -161,8 +166,8 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.name = r.get_string("scenario.name", fs::path(file).stem().string(), "name shown in reports");
     s.architecture = r.get_choice("scenario.architecture", architecture_names().front(), architecture_names(),
                                   "controller architecture (docs/architectures.md)");
-    const std::string job = r.get_string("scenario.job", "",
-                                         "job file, relative to the scenario: G-code, or a seed 000 steps file");
+    const std::string job =
+        r.get_string("scenario.job", "", "job file, relative to the scenario: G-code, or a seed 000 steps file");
     const std::string format = r.get_choice("scenario.job_format", "auto", {"auto", "gcode", "steps"},
                                             "job format; auto: .steps and .csv are steps files, the rest G-code");
     s.seed = static_cast<std::uint64_t>(r.get_int("scenario.seed", 1, 0, INT64_MAX, "seed of every random source"));
@@ -201,9 +206,9 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                                  "DRV8825 drops STEP pulses that break tWH/tWL (false: counts every rising edge)");
     read_mechanics_settings(r, s.mechanics);
 
-    s.interpreter.operator_pause_s = r.get_float(
-        "host.operator_pause_s", s.interpreter.operator_pause_s, 0.0, 1e6,
-        "time an operator takes to resume after M0/M1/M60 (the job pauses that long), s");
+    s.interpreter.operator_pause_s =
+        r.get_float("host.operator_pause_s", s.interpreter.operator_pause_s, 0.0, 1e6,
+                    "time an operator takes to resume after M0/M1/M60 (the job pauses that long), s");
     s.interpreter.feed_unit = r.get_choice("host.feed_unit", "mm/min", {"mm/min", "mm/s"},
                                            "unit of F in the job (seed 003 used mm/s)") == "mm/min"
                                   ? host::FeedUnit::MmPerMinute

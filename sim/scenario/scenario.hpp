@@ -23,11 +23,11 @@ namespace cnc::sim {
 enum class JobFormat { GCode, Steps };
 
 struct Scenario {
-    std::string file;           // the scenario file as given
+    std::string file;  // the scenario file as given
     std::string name;
-    std::string architecture;   // scenario.architecture (architectures/registry.hpp)
-    std::string job_path;       // resolved against the scenario's folder
-    std::string job_key;        // where scenario.job was set ("s.toml:3: scenario.job", "--set scenario.job")
+    std::string architecture;  // scenario.architecture (architectures/registry.hpp)
+    std::string job_path;      // resolved against the scenario's folder
+    std::string job_key;       // where scenario.job was set ("s.toml:3: scenario.job", "--set scenario.job")
     JobFormat job_format = JobFormat::GCode;
     std::uint64_t seed = 1;
     std::optional<double> max_sim_s;  // set by the scenario; else the job's own limit (run/job_estimate.hpp)
@@ -39,13 +39,13 @@ struct Scenario {
     // The chosen architecture's own keys, read by its Architecture::read_settings.
     std::shared_ptr<const ArchSettings> arch_settings;
 
-    std::string vcd_path;       // empty: no VCD
+    std::string vcd_path;                     // empty: no VCD
     std::int64_t vcd_timescale_fs = 100'000;  // trace.timescale
     std::vector<std::string> trace_signals;   // trace.signals; empty: every pin not traced on request only
     TimePs trace_from_ps = 0;                 // trace.from_s
     std::optional<TimePs> trace_to_ps;        // trace.to_s; none: the end of the run
-    std::string report_path;    // empty: no JSON file
-    bool detail = false;        // the report also holds the logs that grow with steps, periods and packets
+    std::string report_path;                  // empty: no JSON file
+    bool detail = false;  // the report also holds the logs that grow with steps, periods and packets
     ProgressStyle progress = ProgressStyle::Off;  // set by the CLI from stderr, not a scenario key
     // Set by the CLI for --plots, --plot-data and --samples, which read every edge and tool sample after the run:
     // the logs are then kept whole instead of being dropped as the metrics stream (docs/streaming.md).

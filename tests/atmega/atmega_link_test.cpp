@@ -13,7 +13,9 @@ using cnc::test::run_atmega;
 
 namespace {
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
 
 // One confirmed byte's trip at 57600 Bd with the defaults: 0.1 ms write latency, two 1 ms USB frames, 1 ms
 // driver latency, the byte and its confirm (20 bits); the PC program allows 100 ms more (kConfirmMarginPs).
@@ -28,7 +30,8 @@ constexpr double kSettleS = 0.3;  // host.settle_s default (seed 003's Sleep aft
 // command (host.packet_processing_us, 0.2 ms) are over: a protocol mismatch at 0.3002 s, and the run stops at the
 // next 10 ms check, 0.31 s.
 TEST(AtmegaLinkFailure, GrblIsAProtocolMismatchWithinASecond) {
-    const auto out = run_atmega("square_20mm", {std::string("avr.firmware=") + AVR_FW_GRBL_BANNER_ELF, "link.baud=115200"});
+    const auto out =
+        run_atmega("square_20mm", {std::string("avr.firmware=") + AVR_FW_GRBL_BANNER_ELF, "link.baud=115200"});
     EXPECT_FALSE(out.ok);
     EXPECT_EQ(out.failure.rfind("protocol mismatch: expected the confirm byte 0x06 of the seed 003 protocol before "
                                 "the job's first byte (after the port settled), received ",
@@ -52,8 +55,9 @@ TEST(AtmegaLinkFailure, GrblIsAProtocolMismatchWithinASecond) {
 TEST(AtmegaLinkFailure, AFirmwareAtAnotherRateIsRefusedBeforeTheRun) {
     const std::string err = bad_input_message(
         [] { (void)run_atmega("square_20mm", {std::string("avr.firmware=") + AVR_FW_GRBL_BANNER_ELF}); });
-    EXPECT_TRUE(contains(err, "square_20mm.toml: link.baud, avr.firmware: baud mismatch: link.baud = 57600 (the "
-                              "CP2102 runs 57553.96 Bd) against the firmware "))
+    EXPECT_TRUE(contains(err,
+                         "square_20mm.toml: link.baud, avr.firmware: baud mismatch: link.baud = 57600 (the "
+                         "CP2102 runs 57553.96 Bd) against the firmware "))
         << err;
     EXPECT_TRUE(contains(err, "'s USART0 at 117647.1 Bd (UBRR0 = 16, U2X0 = 1: 136 cycles a bit at 16 MHz)")) << err;
     EXPECT_TRUE(contains(err, "-51.08 % off the receiver's rate, and 8N1 works within +-2.63 %")) << err;
@@ -63,8 +67,9 @@ TEST(AtmegaLinkFailure, AFirmwareAtAnotherRateIsRefusedBeforeTheRun) {
 // 51 172.7 / 58 823.5 - 1 = -13.01 %.
 TEST(AtmegaLinkFailure, TheBaudMismatchScenarioIsRefused) {
     const std::string err = bad_input_message([] { (void)run_atmega("baud_mismatch"); });
-    EXPECT_TRUE(contains(err, "link.baud = 51200 (the CP2102 runs 51172.71 Bd) against the seed 003 firmware's "
-                              "USART0 at 58823.5 Bd (UBRR0 = 16, U2X0 = 0: 272 cycles a bit at 16 MHz)"))
+    EXPECT_TRUE(contains(err,
+                         "link.baud = 51200 (the CP2102 runs 51172.71 Bd) against the seed 003 firmware's "
+                         "USART0 at 58823.5 Bd (UBRR0 = 16, U2X0 = 0: 272 cycles a bit at 16 MHz)"))
         << err;
     EXPECT_TRUE(contains(err, "-13.01 %")) << err;
 }

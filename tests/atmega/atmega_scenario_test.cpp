@@ -37,8 +37,6 @@ TEST(AtmegaSpeed, ThesisOcr3MeasuredFromTheStepEdges) {
     EXPECT_NEAR(*out.metrics.moves.at(0).timing.feed_error_pct, 16.81, 0.005);
 }
 
-
-
 // G1 X20 Y7 at 10 mm/s, every figure from seed 003's arithmetic (§5.2.4, §5.4, §5.5, App. A2-A4), not from the run:
 // - PC maths (eqs. 4.74-4.77): dz = sqrt(20^2 + 7^2) = sqrt(449) mm, v_x = 10 x 20/dz = 9.4388 mm/s,
 //   v_y = 10 x 7/dz = 3.3036 mm/s; OCR = f/(2 N v/s) - 1 truncated, f = 16 MHz, N = 1024, s = 1/160 mm:
@@ -53,9 +51,9 @@ TEST(AtmegaSpeed, ThesisOcr3MeasuredFromTheStepEdges) {
 //   6.25 um x sqrt(1 + 23^2) = 143.886 um, more than the final (3200, 1143), 143.75 um; the points before drift
 //   up from the line at 2 % of the Y travel and are nearer.
 TEST(AtmegaDiagonal, RatesFollowTheEightBitWordsNotTheCommandedRatio) {
-    constexpr double kF_hz = 16e6;             // seed 003: 16 MHz crystal
-    constexpr double kPrescaler = 1024.0;      // G01: TCCR0B = 0b101 (and the build's Timer2 at /1024)
-    constexpr double kStepMm = 1.0 / 160.0;    // 1/32 microstep on the GT2 20T belt
+    constexpr double kF_hz = 16e6;           // seed 003: 16 MHz crystal
+    constexpr double kPrescaler = 1024.0;    // G01: TCCR0B = 0b101 (and the build's Timer2 at /1024)
+    constexpr double kStepMm = 1.0 / 160.0;  // 1/32 microstep on the GT2 20T belt
     const double dz = std::sqrt(20.0 * 20.0 + 7.0 * 7.0);
     const auto ocr = [&](double v_mm_per_s) {
         return static_cast<int>(std::floor(kF_hz / (2.0 * kPrescaler * (v_mm_per_s / kStepMm)) - 1.0));
@@ -104,8 +102,7 @@ TEST(AtmegaDiagonal, FortyFiveDegreesKeepsTheRatio) {
     const auto& move = out.metrics.moves.at(0);
     EXPECT_EQ(move.steps_emitted, (std::vector<std::int64_t>{3200, 3200}));
     EXPECT_LT(*out.metrics.path.contour_max_um, 1e-6);
-    EXPECT_NEAR(*move.timing.feed_error_pct, (1953.125 / (1000.0 / 60.0 / std::sqrt(2.0) * 160.0) - 1.0) * 100.0,
-                1e-6);
+    EXPECT_NEAR(*move.timing.feed_error_pct, (1953.125 / (1000.0 / 60.0 / std::sqrt(2.0) * 160.0) - 1.0) * 100.0, 1e-6);
 }
 
 // The circle: 180 chords of 2 degrees, Y never counted: each chord's Y error stays in the machine. The
@@ -123,7 +120,7 @@ TEST(AtmegaCircle, ChordsRunAndContourErrorIsReported) {
         ASSERT_EQ(m.steps_emitted[0], m.steps_commanded[0]) << "chord " << i;  // X is counted
         chord_contour_max = std::max(chord_contour_max, *m.path.contour_max_um);
     }
-    EXPECT_GT(chord_contour_max, 6.25);   // well beyond one step: Y's speed words decide its distance
+    EXPECT_GT(chord_contour_max, 6.25);  // well beyond one step: Y's speed words decide its distance
     EXPECT_LT(chord_contour_max, 1000.0);
     // the G00 dog-leg from 0,0 to 20,10: X and Y at v_max until Y arrives at 10,10, 4.47 mm off the line
     EXPECT_NEAR(*out.metrics.moves[0].path.contour_max_um, 5.0 / std::sqrt(1.25) * 1000.0, 1e-6);
@@ -189,7 +186,7 @@ TEST(AtmegaLink, UsartRunsAt58823BaudAndDeliversEveryByte) {
     EXPECT_EQ(pc.at("bytes_written"), 39);  // 2 G00 x 7, 4 G01 x 6, M30
     EXPECT_EQ(link.at("bytes_to_mcu"), 39);
     EXPECT_EQ(link.at("bytes_from_mcu"), 39);  // one confirm per byte
-    EXPECT_TRUE(pc.at("stopped").is_null());  // every byte the PC read was the confirm
+    EXPECT_TRUE(pc.at("stopped").is_null());   // every byte the PC read was the confirm
 }
 
 // The link baud: 57600 unless the scenario sets link.baud (the fpga-uart default is 115200).
@@ -198,14 +195,13 @@ TEST(AtmegaLink, DefaultLinkBaudIs57600) {
     EXPECT_EQ(out.report.at("atmega").at("link").at("requested_baud"), 57600);
 }
 
-
 // Seed 000's six moves through seed 003: G00 counts both axes (dog-leg at v_max), G01 counts X only. Move 2
 // (dx = 0) is timed by X's timer at Y's OCR, so Y is exact too; move 4 asks v_x 13.33 and v_y 12.47 mm/s, both
 // truncate to OCR 2, so Y makes as many steps as X: 4132 for 3864, 1.675 mm past the end point.
 TEST(AtmegaJobs, SixSegmentCountsWhatTheFirmwareCounts) {
     const auto out = run_atmega("six_segment", {"mechanics.model=ideal", "trace.detail=true"});
     ASSERT_TRUE(out.ok) << out.failure;
-    const std::vector<std::vector<std::int64_t>> emitted = {{4257, 15889}, {0, 8000}, {2317, -5034},
+    const std::vector<std::vector<std::int64_t>> emitted = {{4257, 15889}, {0, 8000},      {2317, -5034},
                                                             {4132, 4132},  {-3807, -6829}, {6000, 0}};
     ASSERT_EQ(out.metrics.moves.size(), emitted.size());
     for (std::size_t i = 0; i < emitted.size(); ++i) EXPECT_EQ(out.metrics.moves[i].steps_emitted, emitted[i]) << i;

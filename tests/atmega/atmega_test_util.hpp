@@ -11,7 +11,9 @@ namespace cnc::test {
 inline constexpr TimePs kAvrCyclePs = 62'500;  // 16 MHz
 
 // STEP period of a CTC toggle timer at N = 1024: two matches of 1024 (OCR + 1) cycles.
-constexpr TimePs step_period_ps(int ocr) { return 2 * 1024 * (ocr + 1) * kAvrCyclePs; }
+constexpr TimePs step_period_ps(int ocr) {
+    return 2 * 1024 * (ocr + 1) * kAvrCyclePs;
+}
 
 // out.arch.input keeps every edge and tool sample and out.arch.lines the link's and the raw pins' logs, as --plots
 // and --samples ask (the metrics otherwise stream and drop them as they go: atmega_streamed_test.cpp).

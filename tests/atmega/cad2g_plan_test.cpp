@@ -26,11 +26,13 @@ Program gcode(const std::string& text, cnc::host::FeedUnit unit = cnc::host::Fee
 }
 
 cad2g::Plan plan(const std::string& text, cad2g::PcOptions opt = {},
-              cnc::host::FeedUnit unit = cnc::host::FeedUnit::MmPerMinute) {
+                 cnc::host::FeedUnit unit = cnc::host::FeedUnit::MmPerMinute) {
     return cad2g::plan_program(gcode(text, unit), MachineModel{}, opt);
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
 
 }  // namespace
 
@@ -193,10 +195,10 @@ TEST(Cad2gPlan, CircleAsChords) {
 
 // A chord through the rightmost point of a circle has dx = 0: the seed's workaround, and DIR_X flipped.
 TEST(Cad2gPlan, ArcChordWithDxZeroTimesYAndFlipsDirX) {
-    const cad2g::Plan p = plan(
-        "G0 X9.961946981 Y-0.871557427\nG3 X9.961946981 Y0.871557427 I-9.961946981 J0.871557427 F600\n");
+    const cad2g::Plan p =
+        plan("G0 X9.961946981 Y-0.871557427\nG3 X9.961946981 Y0.871557427 I-9.961946981 J0.871557427 F600\n");
     const cad2g::Command& arc = p.commands.at(1);
-    ASSERT_EQ(arc.motions.size(), 5U);  // -5..5 deg in 2-degree chords
+    ASSERT_EQ(arc.motions.size(), 5U);          // -5..5 deg in 2-degree chords
     const cad2g::Motion& mid = arc.motions[2];  // -1..1 deg
     EXPECT_EQ(mid.steps_x, 0);
     EXPECT_TRUE(mid.x_timebase);

@@ -9,8 +9,8 @@
 #include <systemc>
 #include <vector>
 
-#include "host/pc_program.hpp"
 #include "architectures/atmega/link_bytes.hpp"
+#include "host/pc_program.hpp"
 #include "uart/cp2102.hpp"
 
 using cnc::TimePs;
@@ -22,7 +22,9 @@ constexpr TimePs kMs = cnc::kPsPerMs;
 constexpr TimePs kDecisionPs = 1'000;  // any offset: it is added to every byte's start bit
 constexpr TimePs kSliceMs = 2;         // shorter than one byte's round trip (about 3 ms): a slice sees few bytes
 
-sc_core::sc_time at(TimePs t) { return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t)); }
+sc_core::sc_time at(TimePs t) {
+    return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t));
+}
 
 struct Handed {
     std::size_t transfer;
@@ -33,8 +35,8 @@ struct Handed {
 
 TEST(AtmegaLinkBytes, DroppedAsReadHoldAByteInFlightAndKeepTheCounts) {
     const std::vector<cad2g::Transfer> transfers{{0, 0, {0x01, 0x10, 0x20, 0x30, 0x40, 0x50}},
-                                              {1, 0, {0x02, 0x11, 0x21, 0x31}},
-                                              {1, 1, {0x12, 0x22, 0x32, 0x42}}};
+                                                 {1, 0, {0x02, 0x11, 0x21, 0x31}},
+                                                 {1, 1, {0x12, 0x22, 0x32, 0x42}}};
     const cnc::uart::Cp2102Config link;
     const cnc::host::SenderConfig sender;
     sc_core::sc_signal<bool> to_mcu("to_mcu", true), to_pc("to_pc", true);
@@ -44,8 +46,7 @@ TEST(AtmegaLinkBytes, DroppedAsReadHoldAByteInFlightAndKeepTheCounts) {
     cp2102.rxd(to_pc);
     mcu.txd(to_pc);
     mcu.rxd(to_mcu);
-    cnc::host::PcProgram pc("host", sender, cp2102, transfers,
-                            {cnc::host::byte_round_trip_ps(sender, link), {}});
+    cnc::host::PcProgram pc("host", sender, cp2102, transfers, {cnc::host::byte_round_trip_ps(sender, link), {}});
     sc_core::sc_spawn([&] {  // the first confirm once the port has settled, then one per byte received
         sc_core::wait(at(sender.settle_ps + kMs));
         const std::uint8_t confirm = cad2g::kConfirmByte;
@@ -59,16 +60,18 @@ TEST(AtmegaLinkBytes, DroppedAsReadHoldAByteInFlightAndKeepTheCounts) {
     std::vector<Handed> handed;
     for (TimePs t = 0; !pc.finished() && t < 1'000 * kMs; t += kSliceMs * kMs) {
         sc_core::sc_start(at(kSliceMs * kMs));
-        cnc::sim::read_link_bytes(pc, cp2102, kDecisionPs,
-                                  [&](std::size_t transfer, TimePs t_ps) { handed.push_back({transfer, t_ps}); });
+        cnc::sim::read_link_bytes(pc, cp2102, kDecisionPs, [&](std::size_t transfer, TimePs t_ps) {
+            handed.push_back({transfer, t_ps});
+        });
         EXPECT_LE(pc.writes().size() - pc.writes().first(), 1U);  // written, its start bit not out yet
         EXPECT_EQ(cp2102.tx_log().size(), cp2102.tx_log().first());
         EXPECT_EQ(cp2102.rx_log().size(), cp2102.rx_log().first());
     }
     ASSERT_TRUE(pc.finished());
     sc_core::sc_start(at(10 * kMs));  // the last confirm crosses back
-    cnc::sim::read_link_bytes(pc, cp2102, kDecisionPs,
-                              [&](std::size_t transfer, TimePs t_ps) { handed.push_back({transfer, t_ps}); });
+    cnc::sim::read_link_bytes(pc, cp2102, kDecisionPs, [&](std::size_t transfer, TimePs t_ps) {
+        handed.push_back({transfer, t_ps});
+    });
 
     // 14 bytes written and sent, 15 confirms (one before the first byte), none of them held any more.
     EXPECT_EQ(pc.writes().size(), 14U);

@@ -12,7 +12,9 @@ using cnc::sim::MotionWindow;
 
 namespace {
 
-EdgeLog log(const char* name, bool initial, std::vector<cnc::Edge> edges) { return EdgeLog{name, initial, edges}; }
+EdgeLog log(const char* name, bool initial, std::vector<cnc::Edge> edges) {
+    return EdgeLog{name, initial, edges};
+}
 
 cad2g::Plan g01_then_arc_of_three() {
     cad2g::Plan p;
@@ -32,13 +34,12 @@ struct Pins {
 Pins arc_pins() {
     return {log("n_enbl_x", true, {{100, false}, {200, true}, {300, false}, {400, true}, {500, false}, {600, true}}),
             log("n_enbl_y", true, {{100, false}, {200, true}, {300, false}, {650, true}}),
-            log("dir_x", false, {{405, true}, {500, false}}),
-            log("dir_y", false, {}),
+            log("dir_x", false, {{405, true}, {500, false}}), log("dir_y", false, {}),
             log("laser", false, {{100, true}, {700, false}})};
 }
 
-void expect_window(const MotionWindow& w, std::size_t command, std::size_t motion, cnc::TimePs begin,
-                   cnc::TimePs end, bool complete = true) {
+void expect_window(const MotionWindow& w, std::size_t command, std::size_t motion, cnc::TimePs begin, cnc::TimePs end,
+                   bool complete = true) {
     EXPECT_EQ(w.command, command);
     EXPECT_EQ(w.motion, motion);
     EXPECT_EQ(w.t_begin_ps, begin);
@@ -87,8 +88,17 @@ bool same_windows(const std::vector<MotionWindow>& a, const std::vector<MotionWi
 // Y pulses of arc_pins(): one inside chord 0 (350), two between its ISR end at 400 and the reload at 405 (late
 // data: 401, 403), one on the reload's instant (405, before it: not in the gap), one in chord 1 (450).
 EdgeLog y_pulses() {
-    return log("step_y", false, {{350, true}, {351, false}, {401, true}, {402, false}, {403, true}, {404, false},
-                                 {405, true}, {406, false}, {450, true}, {451, false}});
+    return log("step_y", false,
+               {{350, true},
+                {351, false},
+                {401, true},
+                {402, false},
+                {403, true},
+                {404, false},
+                {405, true},
+                {406, false},
+                {450, true},
+                {451, false}});
 }
 
 // The fold fed the pins cut at `cuts` (each slice's logs as EdgeRecorder::take_before hands them over).

@@ -19,9 +19,15 @@
 namespace cnc::avr::test {
 
 inline constexpr TimePs kCyclePs = 62'500;  // 16 MHz (seed 003 §2.1)
-inline constexpr TimePs ps_of(Cycle c) { return c * kCyclePs; }
-inline TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
-inline sc_core::sc_time at_ps(TimePs t) { return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t)); }
+inline constexpr TimePs ps_of(Cycle c) {
+    return c * kCyclePs;
+}
+inline TimePs now_ps() {
+    return static_cast<TimePs>(sc_core::sc_time_stamp().value());
+}
+inline sc_core::sc_time at_ps(TimePs t) {
+    return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t));
+}
 
 inline AvrCoreConfig config_for(const std::string& elf) {
     AvrCoreConfig cfg;

@@ -16,7 +16,9 @@ PinMonitor::PinMonitor(const sc_core::sc_module_name& name, bool initial)
     dont_initialize();
 }
 
-void PinMonitor::record() { log.add(static_cast<TimePs>(sc_core::sc_time_stamp().value()), pin.read()); }
+void PinMonitor::record() {
+    log.add(static_cast<TimePs>(sc_core::sc_time_stamp().value()), pin.read());
+}
 
 FpgaBench::FpgaBench(const sc_core::sc_module_name& name, const FpgaConfig& cfg, std::vector<Edge> rx_changes)
     : sc_module(name), top("top", cfg), m_rx_changes(std::move(rx_changes)), m_period_ps(clock_period_ps(cfg)) {
@@ -28,9 +30,9 @@ FpgaBench::FpgaBench(const sc_core::sc_module_name& name, const FpgaConfig& cfg,
         m_monitors.push_back(std::make_unique<PinMonitor>(pin.c_str(), initial));
         m_monitors.back()->pin(*m_pins.back());
     }
-    sc_core::sc_out<bool>* ports[] = {&top.tx,        &top.dir_x,     &top.step_x,   &top.dir_y,
-                                      &top.step_y,    &top.laser,     &top.busy,     &top.pkt_valid,
-                                      &top.cfg_valid, &top.rx_valid,  &top.tx_start};
+    sc_core::sc_out<bool>* ports[] = {&top.tx,        &top.dir_x,    &top.step_x,  &top.dir_y,
+                                      &top.step_y,    &top.laser,    &top.busy,    &top.pkt_valid,
+                                      &top.cfg_valid, &top.rx_valid, &top.tx_start};
     for (std::size_t i = 0; i < m_pins.size(); ++i) (*ports[i])(*m_pins[i]);
     SC_THREAD(drive_rx);
 }

@@ -104,7 +104,9 @@ TEST(FpgaGolden, WorkedExampleFrom50MHzSender) {
     check_worked_example(w);
 }
 
-TEST(FpgaGolden, WorkedExampleFromTheCp2102) { check_worked_example(cp2102_sender()); }
+TEST(FpgaGolden, WorkedExampleFromTheCp2102) {
+    check_worked_example(cp2102_sender());
+}
 
 // One motion packet (after an optional init) from the 50 MHz sender, run to its end.
 struct OneMoveStimulus {
@@ -166,7 +168,9 @@ void check_overflow_move(PeriodArithmetic arithmetic, std::uint32_t expected_per
     EXPECT_EQ(y.back(), m.k + 203 + 36'799LL * expected_period_y);
 }
 
-TEST(FpgaGolden, OverflowMoveExact) { check_overflow_move(PeriodArithmetic::Exact, 375'000); }
+TEST(FpgaGolden, OverflowMoveExact) {
+    check_overflow_move(PeriodArithmetic::Exact, 375'000);
+}
 
 TEST(FpgaGolden, OverflowMoveWrap32FinishesYAfter18Seconds) {
     check_overflow_move(PeriodArithmetic::Wrap32, 24'866);  // Y done at 36,800 * 24,866 cycles = 18.3 s
@@ -187,9 +191,13 @@ void check_init_wiring(bool wired, std::uint32_t period_x, std::uint32_t period_
     EXPECT_EQ(m.bench.top.inits()[0].applied, wired);
 }
 
-TEST(FpgaGolden, InitPacketWiredAppliesTheNumerator) { check_init_wiring(true, 7'812, 15'624); }
+TEST(FpgaGolden, InitPacketWiredAppliesTheNumerator) {
+    check_init_wiring(true, 7'812, 15'624);
+}
 
-TEST(FpgaGolden, InitPacketUnwiredLikeTheAppendixHasNoEffect) { check_init_wiring(false, 15'625, 31'250); }
+TEST(FpgaGolden, InitPacketUnwiredLikeTheAppendixHasNoEffect) {
+    check_init_wiring(false, 15'625, 31'250);
+}
 
 TEST(FpgaGolden, ProcessActivationsScaleWithEdgesNotClocks) {
     UartWave w = sync_sender();

@@ -17,10 +17,16 @@ constexpr TimePs kMs = kPsPerMs;
 constexpr TimePs kCyclePs = 20'000;  // 50 MHz
 
 // A sender clocked like the FPGA (434 cycles per bit) and the CP2102 (24 MHz / 208 = 115,384.6 Bd).
-inline UartWave sync_sender() { return UartWave(50'000'000, 434); }
-inline UartWave cp2102_sender() { return UartWave(24'000'000, 208); }
+inline UartWave sync_sender() {
+    return UartWave(50'000'000, 434);
+}
+inline UartWave cp2102_sender() {
+    return UartWave(24'000'000, 208);
+}
 
-inline std::int64_t edge_of(TimePs t_ps) { return t_ps / kCyclePs; }
+inline std::int64_t edge_of(TimePs t_ps) {
+    return t_ps / kCyclePs;
+}
 
 // Every pin: same initial level and the same edges (time and level).
 inline void expect_same_edges(const std::map<std::string, EdgeLog>& reference,

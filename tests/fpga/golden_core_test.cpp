@@ -33,7 +33,7 @@ TEST(Seed000Golden, WorkedExamplePeriodsAndTimeline) {
     EXPECT_EQ(s.periods().x_cycles, 15'625U);  // 312.5 us
     EXPECT_EQ(s.periods().y_cycles, 31'250U);
     EXPECT_EQ(cycles_to_ps(15'625, cfg.clk_hz), 312'500'000);
-    EXPECT_EQ(s.run_start(), 203);             // §5.4: RUN starts at k+203
+    EXPECT_EQ(s.run_start(), 203);                           // §5.4: RUN starts at k+203
     EXPECT_EQ(s.run_start() - StepSchedule::kDirEdge, 201);  // DIR -> first STEP: 4.02 us >= 4 us
     EXPECT_EQ(s.run_cycles(), 320LL * 15'625);
     EXPECT_EQ(s.busy_fall(), 203 + 5'000'000);  // DONE at k+203+N
@@ -62,10 +62,10 @@ TEST(Seed000Golden, Q3OverflowAtFeed100And73600Steps) {
 
 TEST(Seed000Golden, PulseSettleFeedZeroAndAckDurations) {
     const FpgaConfig cfg;
-    EXPECT_EQ(cycles_to_ps(cfg.pulse_high_cycles, cfg.clk_hz), 2 * kPsPerUs);           // STEP high 2 us
-    EXPECT_EQ(cycles_to_ps(cfg.dir_settle_cycles, cfg.clk_hz), 4 * kPsPerUs);           // DIR_SETTLE 4 us
+    EXPECT_EQ(cycles_to_ps(cfg.pulse_high_cycles, cfg.clk_hz), 2 * kPsPerUs);            // STEP high 2 us
+    EXPECT_EQ(cycles_to_ps(cfg.dir_settle_cycles, cfg.clk_hz), 4 * kPsPerUs);            // DIR_SETTLE 4 us
     EXPECT_EQ(cycles_to_ps(cfg.feed_zero_period_cycles, cfg.clk_hz), 1'250 * kPsPerUs);  // 1.25 ms per step
-    EXPECT_EQ(cycles_to_ps(cfg.watchdog_cycles, cfg.clk_hz), 100 * kPsPerMs);           // 100 ms watchdog
+    EXPECT_EQ(cycles_to_ps(cfg.watchdog_cycles, cfg.clk_hz), 100 * kPsPerMs);            // 100 ms watchdog
     const UartTxFrame ack = uart_tx_frame(0xAA, cfg);
     EXPECT_EQ(ack.idle_from - 2, 4'340);  // start bit to end of stop bit: 86.8 us on the wire
     EXPECT_EQ(cycles_to_ps(4'340, cfg.clk_hz), 86'800'000);

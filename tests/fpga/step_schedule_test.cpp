@@ -122,8 +122,8 @@ TEST(StepSchedule, ShortPeriodKeepsStepHighUntilTheAxisIsDone) {
     const StepSchedule s({4, 3, 20, 1000, 1000}, true, true, FpgaConfig{});
     EXPECT_EQ(s.periods().x_cycles, 50U);
     EXPECT_EQ(s.periods().y_cycles, 66U);
-    const std::vector<E> expected{{1, StepPin::Busy, true},     {203, StepPin::StepX, true},
-                                  {203, StepPin::StepY, true},  {203 + 198, StepPin::StepY, false},
+    const std::vector<E> expected{{1, StepPin::Busy, true},           {203, StepPin::StepX, true},
+                                  {203, StepPin::StepY, true},        {203 + 198, StepPin::StepY, false},
                                   {203 + 199, StepPin::StepX, false}, {203 + 200, StepPin::Busy, false}};
     EXPECT_EQ(all_edges(s), expected);
 }
@@ -148,18 +148,16 @@ TEST(StepSchedule, ZeroLengthMoveGoesFromDirWaitToDone) {
     EXPECT_FALSE(s.has_run());
     EXPECT_EQ(s.busy_fall(), 203);
     EXPECT_EQ(s.idle_from(), 204);
-    const std::vector<E> expected{{1, StepPin::Busy, true},
-                                  {2, StepPin::DirX, true},
-                                  {2, StepPin::DirY, true},
-                                  {203, StepPin::Busy, false}};
+    const std::vector<E> expected{
+        {1, StepPin::Busy, true}, {2, StepPin::DirX, true}, {2, StepPin::DirY, true}, {203, StepPin::Busy, false}};
     EXPECT_EQ(all_edges(s), expected);
 }
 
 TEST(StepSchedule, PeriodOneAboveThePulseLeavesOneLowCycle) {
     const StepSchedule s({2, 0, 1000, 101'000, 101'000}, true, true, FpgaConfig{});
-    const std::vector<E> expected{{1, StepPin::Busy, true},       {203, StepPin::StepX, true},
-                                  {303, StepPin::StepX, false},   {304, StepPin::StepX, true},
-                                  {404, StepPin::StepX, false},   {405, StepPin::Busy, false}};
+    const std::vector<E> expected{{1, StepPin::Busy, true},     {203, StepPin::StepX, true},
+                                  {303, StepPin::StepX, false}, {304, StepPin::StepX, true},
+                                  {404, StepPin::StepX, false}, {405, StepPin::Busy, false}};
     EXPECT_EQ(all_edges(s), expected);
 }
 

@@ -111,13 +111,15 @@ double chord_error_mm(geom::Vec2 a, geom::Vec2 b, geom::Vec2 c, double r) {
     return worst;
 }
 
-double residual_mm(geom::Vec2 p, geom::Vec2 c, double r) { return std::fabs(geom::distance(p, c) - r); }
+double residual_mm(geom::Vec2 p, geom::Vec2 c, double r) {
+    return std::fabs(geom::distance(p, c) - r);
+}
 
 struct ArcChording {
     double max_residual_mm = 0;  // interior chord ends only
     double max_chord_error_mm = 0;
     double max_span_rad = 0;
-    double travelled_rad = 0;    // signed, summed over the chords
+    double travelled_rad = 0;  // signed, summed over the chords
 };
 
 // Checks the chords of one arc (ends[0] = the start, then every chord end) and measures them: every chord
@@ -154,7 +156,9 @@ std::vector<geom::Vec2> arc_ends(const std::vector<MotionSegment>& segs, double 
     return ends;
 }
 
-double max_chord_rad(double r, double tol) { return 4.0 * std::asin(std::sqrt(tol / (2.0 * r))); }
+double max_chord_rad(double r, double tol) {
+    return 4.0 * std::asin(std::sqrt(tol / (2.0 * r)));
+}
 
 CamOptions round_ends() {
     CamOptions opt;
@@ -200,8 +204,8 @@ double expect_ends_nearest_in_window(const std::vector<geom::Vec2>& ends, geom::
     double worst = 0.0;
     for (std::size_t k = 1; k < n; ++k) {
         const double a = a0_rad + sweep_rad * static_cast<double>(k) / static_cast<double>(n);
-        const double best = nearest_in_window_mm(c + geom::Vec2{r * std::cos(a), r * std::sin(a)}, c, r, spm_x,
-                                                 spm_y, w_x, w_y);
+        const double best =
+            nearest_in_window_mm(c + geom::Vec2{r * std::cos(a), r * std::sin(a)}, c, r, spm_x, spm_y, w_x, w_y);
         EXPECT_NEAR(residual_mm(ends[k], c, r), best, 1e-12) << "end " << k;
         worst = std::max(worst, best);
     }
@@ -219,8 +223,12 @@ double expect_ends_nearest_in_window(const std::vector<geom::Vec2>& ends, geom::
 // - A chord's sagitta is at most the tolerance when its span is at most max_chord_rad (check_chords checks the
 //   spans), so its contour error is at most the tolerance plus its two ends' residuals.
 // - The spans add up to the sweep, so the longest is at least the sweep / n.
-double round_bound_mm(double spm_x, double spm_y) { return 0.5 * std::hypot(1.0 / spm_x, 1.0 / spm_y); }
-double on_arc_bound_mm(double spm_x, double spm_y) { return 0.5 * std::max(1.0 / spm_x, 1.0 / spm_y); }
+double round_bound_mm(double spm_x, double spm_y) {
+    return 0.5 * std::hypot(1.0 / spm_x, 1.0 / spm_y);
+}
+double on_arc_bound_mm(double spm_x, double spm_y) {
+    return 0.5 * std::max(1.0 / spm_x, 1.0 / spm_y);
+}
 
 TEST(HostCam, RoundChordEndsAreWithinHalfAStepOfTheArc) {
     const Program prog = run_gcode("G0 X10 Y0\nG2 I-10 F600\n");
@@ -308,8 +316,7 @@ TEST(HostCam, OnArcBeatsRoundOnAnOffGridCircle) {
         check_chords(arc_ends(cam_of(g, round_ends())), c, 10.0, true, tol, 1.05 * max_chord_rad(10.0, tol));
     // OnArc: every end its window's nearest (0.496 step at worst, near the axes), within its half step; Round
     // within its 0.71 step; OnArc nearer on both counts.
-    const double promised =
-        expect_ends_nearest_in_window(arc_ends(cam_of(g)), c, 10.0, 0.0, 2 * M_PI, tol, kSpm, kSpm);
+    const double promised = expect_ends_nearest_in_window(arc_ends(cam_of(g)), c, 10.0, 0.0, 2 * M_PI, tol, kSpm, kSpm);
     EXPECT_DOUBLE_EQ(on_arc.max_residual_mm, promised);
     EXPECT_LE(on_arc.max_residual_mm, on_arc_bound_mm(kSpm, kSpm));
     EXPECT_LE(round.max_residual_mm, round_bound_mm(kSpm, kSpm));
@@ -529,7 +536,9 @@ TEST(HostCam, BadMachineOrToleranceIsReported) {
     expect_bad_input([&] { cam_of("G0 X1000\nG2 I-1000 F100\n", opt); }, {"t.nc:2:", "chords"});
 }
 
-TEST(HostCam, EmptyProgramGivesNoSegments) { EXPECT_TRUE(cam_of("G21\n").empty()); }
+TEST(HostCam, EmptyProgramGivesNoSegments) {
+    EXPECT_TRUE(cam_of("G21\n").empty());
+}
 
 TEST(HostNumerator, FromStepsPerMm) {
     EXPECT_EQ(numerator(160.0), 18'750'000u);

@@ -106,8 +106,8 @@ TEST(HostGcodeErrors, FeedProblems) {
 
 TEST(HostGcodeErrors, ArcProblems) {
     expect_gcode_error("G1 F100\nG2 X10 Y0\n", {"t.nc:2:", "G2 needs I/J", "or R"});
-    expect_gcode_error("G0 X10\nG2 X0 Y10.5 I-10 F100\n",
-                       {"t.nc:2:", "G2 end point is not on the arc", "start radius 10.0000 mm", "end radius 10.5000 mm"});
+    expect_gcode_error("G0 X10\nG2 X0 Y10.5 I-10 F100\n", {"t.nc:2:", "G2 end point is not on the arc",
+                                                           "start radius 10.0000 mm", "end radius 10.5000 mm"});
     expect_gcode_error("G3 X10 R4 F100\n", {"t.nc:1:", "G3 radius 4.0000 mm is too small", "5.0000 mm"});
     expect_gcode_error("G2 R5 F100\n", {"t.nc:1:", "G2 with R needs an end point away from the start"});
     expect_gcode_error("G2 X10 R0 F100\n", {"R must not be 0"});

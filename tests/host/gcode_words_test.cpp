@@ -58,23 +58,24 @@ TEST(HostGcodeWords, ZMovesStayWithinTheZVelocityLimit) {
 TEST(HostGcodeWords, WorkOffsetsG10AndCoordinateSystems) {
     const Program p = run_gcode(
         "G10 L2 P1 X10 Y20\nG0 X1 Y1\nG55 X1 Y1\nG10 L2 P2 X100\nG0 X0\nG10 L20 P0 X5\nG0 X5 Y0\nG54 G0 X0 Y0\n");
-    expect_point(p.moves[0].path.end, 11, 21);   // G54 origin at (10, 20)
-    expect_point(p.moves[1].path.end, 1, 1);     // G55 still at machine 0
-    expect_point(p.moves[2].path.end, 100, 1);   // G55 origin moved to X100
+    expect_point(p.moves[0].path.end, 11, 21);  // G54 origin at (10, 20)
+    expect_point(p.moves[1].path.end, 1, 1);    // G55 still at machine 0
+    expect_point(p.moves[2].path.end, 100, 1);  // G55 origin moved to X100
     // L20 P0: the tool (machine X100) is X5 in G55, so G55's X origin is 95; X5 Y0 = machine (100, 0).
     expect_point(p.moves[3].path.end, 100, 0);
     expect_point(p.moves[4].path.end, 10, 20);
 }
 
 TEST(HostGcodeWords, G53AndG28GoToMachineCoordinates) {
-    const Program p = run_gcode("G10 L2 P1 X50 Y50\nG0 X10 Y10\nG53 G0 X5 Y5\nG28\nG0 X1\nG28 X3\nG28.1\nG0 X20\nG28\n");
+    const Program p =
+        run_gcode("G10 L2 P1 X50 Y50\nG0 X10 Y10\nG53 G0 X5 Y5\nG28\nG0 X1\nG28 X3\nG28.1\nG0 X20\nG28\n");
     expect_point(p.moves[0].path.end, 60, 60);
-    expect_point(p.moves[1].path.end, 5, 5);      // G53: machine coordinates
-    expect_point(p.moves[2].path.end, 0, 0);      // G28 with no axes: home, machine 0
-    expect_point(p.moves[3].path.end, 51, 0);     // X1 in G54
-    expect_point(p.moves[4].path.end, 53, 0);     // G28 X3: through program X3 ...
-    expect_point(p.moves[5].path.end, 0, 0);      // ... then X alone to home
-    expect_point(p.moves[7].path.end, 0, 0);      // G28.1 stored machine (0, 0)
+    expect_point(p.moves[1].path.end, 5, 5);   // G53: machine coordinates
+    expect_point(p.moves[2].path.end, 0, 0);   // G28 with no axes: home, machine 0
+    expect_point(p.moves[3].path.end, 51, 0);  // X1 in G54
+    expect_point(p.moves[4].path.end, 53, 0);  // G28 X3: through program X3 ...
+    expect_point(p.moves[5].path.end, 0, 0);   // ... then X alone to home
+    expect_point(p.moves[7].path.end, 0, 0);   // G28.1 stored machine (0, 0)
 }
 
 TEST(HostGcodeWords, G92FamilySetsResetsAndRestoresTheOffset) {
@@ -119,9 +120,9 @@ TEST(HostGcodeWords, IgnoredWordsAreListedOnceWithEveryLine) {
     ASSERT_EQ(p.moves.size(), 1u);  // the block-delete line and everything after the closing % are skipped
     std::vector<std::pair<std::string, std::size_t>> got;
     for (const IgnoredWord& w : p.ignored) got.emplace_back(w.word, w.lines.size());
-    const std::vector<std::pair<std::string, std::size_t>> want{
-        {"%", 2}, {"O1000", 1}, {"T1", 2}, {"M6", 1}, {"G40", 1}, {"G49", 1}, {"G80", 1}, {"/", 1}, {"M8", 1},
-        {"M106", 1}, {"M9", 1}};
+    const std::vector<std::pair<std::string, std::size_t>> want{{"%", 2},   {"O1000", 1}, {"T1", 2},  {"M6", 1},
+                                                                {"G40", 1}, {"G49", 1},   {"G80", 1}, {"/", 1},
+                                                                {"M8", 1},  {"M106", 1},  {"M9", 1}};
     EXPECT_EQ(got, want);
     EXPECT_EQ(p.ignored[2].lines, (std::vector<int>{3, 8}));
 }

@@ -7,9 +7,9 @@
 #include <sstream>
 #include <string>
 
-#include "support/bad_input_message.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/gcode.hpp"
+#include "support/bad_input_message.hpp"
 
 namespace cnc::host::test {
 

@@ -67,8 +67,7 @@ TEST(HostMachine, ValidateRejectsImpossibleValues) {
         change(axis);
         expect_bad_input([&] { validate(axis, "m.toml: machine.x"); }, parts);
     };
-    rejects([](AxisMachine& a) { a.microsteps = 3; },
-            {"m.toml: machine.x: ", "microsteps 3", "1, 2, 4, 8, 16, 32"});
+    rejects([](AxisMachine& a) { a.microsteps = 3; }, {"m.toml: machine.x: ", "microsteps 3", "1, 2, 4, 8, 16, 32"});
     rejects([](AxisMachine& a) { a.microsteps = 64; }, {"microsteps 64"});
     rejects([](AxisMachine& a) { a.step_angle_deg = 0.0; }, {"step_angle_deg 0", "> 0"});
     rejects([](AxisMachine& a) { a.step_angle_deg = 400.0; }, {"step_angle_deg 400", "<= 360"});
@@ -77,8 +76,18 @@ TEST(HostMachine, ValidateRejectsImpossibleValues) {
     rejects([](AxisMachine& a) { a.gear_ratio = 0.0; }, {"gear_ratio 0"});
     rejects([](AxisMachine& a) { a.travel_mm = -1.0; }, {"travel_mm -1"});
     rejects([](AxisMachine& a) { a.calibrated_steps_per_mm = 0.0; }, {"steps_per_mm 0", "> 0"});
-    rejects([](AxisMachine& a) { a.transmission = Transmission::Leadscrew; a.lead_mm = 0.0; }, {"lead_mm 0"});
-    rejects([](AxisMachine& a) { a.transmission = Transmission::Leadscrew; a.screw_starts = 0; }, {"screw_starts 0"});
+    rejects(
+        [](AxisMachine& a) {
+            a.transmission = Transmission::Leadscrew;
+            a.lead_mm = 0.0;
+        },
+        {"lead_mm 0"});
+    rejects(
+        [](AxisMachine& a) {
+            a.transmission = Transmission::Leadscrew;
+            a.screw_starts = 0;
+        },
+        {"screw_starts 0"});
 }
 
 TEST(HostMachine, LeadscrewIgnoresBeltFields) {

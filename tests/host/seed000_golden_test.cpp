@@ -53,9 +53,10 @@ TEST(HostSeed000, SixSegmentTestLogStepsFile) {
         MotionKind motion;
         std::int64_t x, y, feed;
     };
-    const Row log[] = {  // §7.3, Fig 6.4/6.5 sender log
-        {MotionKind::Rapid, 4257, 15889, 1200}, {MotionKind::Linear, 0, 8000, 800},
-        {MotionKind::Rapid, 2317, -5034, 1200}, {MotionKind::Linear, 4132, 3864, 800},
+    const Row log[] = {
+        // §7.3, Fig 6.4/6.5 sender log
+        {MotionKind::Rapid, 4257, 15889, 1200},  {MotionKind::Linear, 0, 8000, 800},
+        {MotionKind::Rapid, 2317, -5034, 1200},  {MotionKind::Linear, 4132, 3864, 800},
         {MotionKind::Rapid, -3807, -6829, 1200}, {MotionKind::Linear, 6000, 0, 800},
     };
     ASSERT_EQ(segs.size(), 6u);

@@ -11,7 +11,9 @@ using geom::Segment;
 using test::bad_input_message;
 using test::expect_bad_input;
 
-ProgrammedMove move(const Segment& path, int line) { return {MotionKind::Linear, path, 600.0, true, line}; }
+ProgrammedMove move(const Segment& path, int line) {
+    return {MotionKind::Linear, path, 600.0, true, line};
+}
 
 MachineModel machine_with_travel(double x_mm, double y_mm) {
     MachineModel m;

@@ -19,8 +19,8 @@ std::vector<MotionSegment> read_text(const std::string& text) {
 }
 
 void expect_read_error(const std::string& row, std::initializer_list<std::string> parts) {
-    expect_bad_input([&] { read_text(std::string(kStepsFileHeader) + "\n1,1,1,10,5,1600,800,1000,894\n" + row + "\n"); },
-                     parts);
+    expect_bad_input(
+        [&] { read_text(std::string(kStepsFileHeader) + "\n1,1,1,10,5,1600,800,1000,894\n" + row + "\n"); }, parts);
 }
 
 std::string write_text(const std::vector<MotionSegment>& segs) {

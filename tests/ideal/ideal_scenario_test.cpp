@@ -152,13 +152,25 @@ void expect_quantiser_metrics(const std::string& job) {
         << job;  // each crossing within 1 ps
 }
 
-TEST(IdealRun, SquareStepsAtTheTrajectorysHalfStepCrossings) { expect_steps_at_crossings("square_20mm"); }
-TEST(IdealRun, CircleStepsAtTheTrajectorysHalfStepCrossings) { expect_steps_at_crossings("circle_r10"); }
-TEST(IdealRun, SixSegmentStepsAtTheTrajectorysHalfStepCrossings) { expect_steps_at_crossings("six_segment"); }
+TEST(IdealRun, SquareStepsAtTheTrajectorysHalfStepCrossings) {
+    expect_steps_at_crossings("square_20mm");
+}
+TEST(IdealRun, CircleStepsAtTheTrajectorysHalfStepCrossings) {
+    expect_steps_at_crossings("circle_r10");
+}
+TEST(IdealRun, SixSegmentStepsAtTheTrajectorysHalfStepCrossings) {
+    expect_steps_at_crossings("six_segment");
+}
 
-TEST(IdealRun, SquareMetricsAreAPerfectQuantisers) { expect_quantiser_metrics("square_20mm"); }
-TEST(IdealRun, CircleMetricsAreAPerfectQuantisers) { expect_quantiser_metrics("circle_r10"); }
-TEST(IdealRun, SixSegmentMetricsAreAPerfectQuantisers) { expect_quantiser_metrics("six_segment"); }
+TEST(IdealRun, SquareMetricsAreAPerfectQuantisers) {
+    expect_quantiser_metrics("square_20mm");
+}
+TEST(IdealRun, CircleMetricsAreAPerfectQuantisers) {
+    expect_quantiser_metrics("circle_r10");
+}
+TEST(IdealRun, SixSegmentMetricsAreAPerfectQuantisers) {
+    expect_quantiser_metrics("six_segment");
+}
 
 }  // namespace
 }  // namespace cnc::sim

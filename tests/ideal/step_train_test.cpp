@@ -11,7 +11,9 @@ namespace {
 
 constexpr TimePs kUs = kPsPerUs;
 
-std::vector<PinEdge> all(StepTrain& t) { return t.take(); }
+std::vector<PinEdge> all(StepTrain& t) {
+    return t.take();
+}
 
 TEST(StepTrain, EachStepRisesAtItsInstantAndStaysHighTwoMicroseconds) {
     StepTrain t;

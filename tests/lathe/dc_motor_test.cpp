@@ -16,7 +16,9 @@ using cnc::lathe::derive_motor;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kK = 2136.75 / 1024.0;  // §8.3: 2.0866 pulses/s per duty count
 
-double pulses_per_s(const DcMotor& m) { return m.state().omega_rad_per_s * 30.0 / (2.0 * kPi); }
+double pulses_per_s(const DcMotor& m) {
+    return m.state().omega_rad_per_s * 30.0 / (2.0 * kPi);
+}
 
 // The roots of L J s^2 + (L b + R J) s + (R b + Kt^2) (§2.2), as positive rates, slow first.
 std::pair<double, double> poles(const DcMotorParams& p) {
@@ -64,9 +66,9 @@ TEST(DcMotor, FullDutyStepFollowsG) {
     }
     EXPECT_NEAR(pulses_per_s(m), final_pps, 0.001 * final_pps);
     // The pulse count is the integral: 30 slots per revolution.
-    const double expected_rev = final_pps / 30.0 * (t - (1.0 / p1 + 1.0 / p2)) +
-                                final_pps / 30.0 * (p2 * std::exp(-p1 * t) / p1 - p1 * std::exp(-p2 * t) / p2) /
-                                    (p2 - p1);
+    const double expected_rev =
+        final_pps / 30.0 * (t - (1.0 / p1 + 1.0 / p2)) +
+        final_pps / 30.0 * (p2 * std::exp(-p1 * t) / p1 - p1 * std::exp(-p2 * t) / p2) / (p2 - p1);
     EXPECT_NEAR(m.state().angle_rad / (2 * kPi), expected_rev, 1e-3);
 }
 

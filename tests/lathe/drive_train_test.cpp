@@ -19,10 +19,10 @@ TEST(DriveTrain, BacklashHoldsTheCarriageOnReversal) {
     cnc::lathe::DriveTrainParams p;
     p.backlash_mm = 0.1;
     cnc::lathe::DriveTrain d(p);
-    const double per_mm = kTwoPi * 26.0 / 3.175;  // motor radians per mm
-    EXPECT_NEAR(d.follow(1.0 * per_mm), 0.95, 1e-12);   // pushed from the far side of the play
-    EXPECT_NEAR(d.follow(0.9 * per_mm), 0.95, 1e-12);   // reversed by less than the play: no motion
-    EXPECT_NEAR(d.follow(0.8 * per_mm), 0.85, 1e-12);   // the play taken up the other way
+    const double per_mm = kTwoPi * 26.0 / 3.175;       // motor radians per mm
+    EXPECT_NEAR(d.follow(1.0 * per_mm), 0.95, 1e-12);  // pushed from the far side of the play
+    EXPECT_NEAR(d.follow(0.9 * per_mm), 0.95, 1e-12);  // reversed by less than the play: no motion
+    EXPECT_NEAR(d.follow(0.8 * per_mm), 0.85, 1e-12);  // the play taken up the other way
 }
 
 }  // namespace

@@ -29,7 +29,9 @@ void text4(Hd44780& lcd, const std::string& s) {
     for (const char c : s) byte4(lcd, true, static_cast<unsigned char>(c));
 }
 
-std::string pad(const std::string& s) { return s + std::string(16 - s.size(), ' '); }
+std::string pad(const std::string& s) {
+    return s + std::string(16 - s.size(), ' ');
+}
 
 // Table 12, steps 2 to 6: function set 0010 (one 8-bit transfer: 4-bit interface), function set 0010 0000
 // (4-bit, 1 line), display on/off 0000 1110 (display on, cursor on), entry mode 0000 0110 (increment, no shift),

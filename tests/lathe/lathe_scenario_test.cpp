@@ -29,8 +29,9 @@ std::string m6_vcd_path() {
     return (std::filesystem::temp_directory_path() / "cncsim_lathe_scenario_test_m6.vcd").string();
 }
 
-
-std::string trimmed(const std::string& s) { return s.substr(0, s.find_last_not_of(' ') + 1); }
+std::string trimmed(const std::string& s) {
+    return s.substr(0, s.find_last_not_of(' ') + 1);
+}
 
 // The LCD transcript of the M6 run shows the prompts in the order of the firmware's UI state machine (seed 002
 // §6.6; models/avr/firmware/lathe_sync/main.c, motion.c): the main menu (the splash is overwritten at once), the

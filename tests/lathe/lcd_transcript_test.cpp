@@ -10,9 +10,9 @@ using cnc::lathe::LcdTranscript;
 
 TEST(LcdTranscript, KeepsSettledScreensOnly) {
     LcdTranscript t;
-    t.changed(0.000, LcdLines{"c", ""});   // a clear, then the prompt written 1 ms later
+    t.changed(0.000, LcdLines{"c", ""});  // a clear, then the prompt written 1 ms later
     t.changed(0.001, LcdLines{"cut", ""});
-    t.tick(0.050);                         // 49 ms: not yet settled
+    t.tick(0.050);  // 49 ms: not yet settled
     EXPECT_TRUE(t.screens(0.050).empty());
     t.tick(0.052);
     ASSERT_EQ(t.screens(0.052).size(), 1U);
@@ -21,7 +21,7 @@ TEST(LcdTranscript, KeepsSettledScreensOnly) {
     t.changed(1.000, LcdLines{"flash", ""});  // shown 10 ms only
     t.changed(1.010, LcdLines{"cut", ""});    // back to what was read: not a new screen
     t.changed(2.000, LcdLines{"move", ""});
-    const auto& s = t.screens(2.051);         // the end of the run: what shows then counts once settled
+    const auto& s = t.screens(2.051);  // the end of the run: what shows then counts once settled
     ASSERT_EQ(s.size(), 2U);
     EXPECT_EQ(s[1].lines[0], "move");
     EXPECT_DOUBLE_EQ(s[1].t_s, 2.000);

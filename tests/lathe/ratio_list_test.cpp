@@ -11,7 +11,9 @@ namespace {
 using cnc::lathe::make_ratio_list;
 using cnc::lathe::MakelistMode;
 
-int sum(const std::vector<std::uint8_t>& b) { return std::accumulate(b.begin(), b.end(), 0); }
+int sum(const std::vector<std::uint8_t>& b) {
+    return std::accumulate(b.begin(), b.end(), 0);
+}
 
 // §7 table: 0.04 mm -> 14/57, lambda error -5.5e-5 (14/57 - 156/635 = -5.53e-5), pitch 0.039991 mm.
 TEST(RatioList, FineFeedIs14Over57) {

@@ -66,7 +66,9 @@ TEST(AxisDynamics, ReportsTheMicrostepErrorOfTheDetentTorque) {
         const double got_rad = axis.shaft_angle_deg(t + kSettlePs - 1) * kPi / 180.0;
         const double ideal_rad = k * (kPi / 100.0) / 32.0;
         const double phi = kPi / 4 + k * (kPi / 2) / 32.0;
-        auto balance = [&](double th) { return km_i * std::sin(phi - (n_r * th + kPi / 4)) - p.motor.detent_torque_nm * std::sin(4 * n_r * th); };
+        auto balance = [&](double th) {
+            return km_i * std::sin(phi - (n_r * th + kPi / 4)) - p.motor.detent_torque_nm * std::sin(4 * n_r * th);
+        };
         double lo = ideal_rad - kPi / 400;  // the root lies within a quarter of a full step of the ideal angle
         double hi = ideal_rad + kPi / 400;
         for (int i = 0; i < 100; ++i) {
@@ -215,8 +217,8 @@ TEST(AxisDynamics, LeadscrewReversalHasADeadZoneOfTheBacklash) {
     DynamicAxis axis(p);
     axis.on_enable(0, true);
     const TimePs microstep_ps = kPsPerSec / 400;  // 400 microsteps/s = 0.5 mm/s
-    const int one_mm = 800;                        // 6400 microsteps per 8 mm
-    const int back = 200;                          // 0.25 mm
+    const int one_mm = 800;                       // 6400 microsteps per 8 mm
+    const int back = 200;                         // 0.25 mm
     for (int k = 1; k <= one_mm; ++k) axis.on_microstep(k * microstep_ps, k, 32);
     const TimePs reverse_ps = one_mm * microstep_ps + kSettlePs;
     const double mm_per_deg = 8.0 / 360.0;

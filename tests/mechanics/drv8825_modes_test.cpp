@@ -36,7 +36,7 @@ TEST(Drv8825Modes, IndexerCurrentsMatchTheDataSheetTable) {
         EXPECT_EQ(std::lround(c.a_pct), a[k]) << "k=" << k;
         EXPECT_EQ(std::lround(c.b_pct), b[k]) << "k=" << k;
     }
-    EXPECT_NEAR(phase_currents(0).a_pct, 70.71, 0.01);  // home
+    EXPECT_NEAR(phase_currents(0).a_pct, 70.71, 0.01);    // home
     EXPECT_NEAR(phase_currents(32).a_pct, -70.71, 0.01);  // one full step on: 135 deg
     EXPECT_NEAR(phase_currents(32).b_pct, 70.71, 0.01);
 }

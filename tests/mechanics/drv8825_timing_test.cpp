@@ -86,7 +86,7 @@ TEST(Drv8825Timing, DirSetupAndHold) {
 TEST(Drv8825Timing, SimultaneousDirChangeIsZeroSetupAndRepeatsAreNotEdges) {
     Drv8825TimingChecker c;
     c.set_initial_levels(false, true);
-    c.on_dir(5 * kUs, true);  // not a change
+    c.on_dir(5 * kUs, true);    // not a change
     c.on_step(5 * kUs, false);  // not a change
     c.on_dir(10 * kUs, false);
     c.on_step(10 * kUs, true);

@@ -20,8 +20,12 @@ namespace {
 
 constexpr TimePs kUs = cnc::kPsPerUs;
 
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
-sc_core::sc_time at(TimePs t) { return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t)); }
+TimePs now_ps() {
+    return static_cast<TimePs>(sc_core::sc_time_stamp().value());
+}
+sc_core::sc_time at(TimePs t) {
+    return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t));
+}
 
 // Plays time-ordered level changes onto a signal from its own thread, each `delta_cycles` delta cycles
 // after its time stamp begins (to make writers of one instant act in different delta cycles).
@@ -166,11 +170,10 @@ TEST(CarriageModel, SimultaneousXYStepsMergeIntoOneSample) {
     const Belt belt(20, 2.0);  // 160 steps/mm at 1/32
     const RigidDrive drive_x(x.motor, belt);
     const RigidDrive drive_y(y.motor, belt);
-    Carriage carriage("carriage", CarriageConfig{{&x.drv.step_event(), &drive_x},
-                                                 {&y.drv.step_event(), &drive_y},
-                                                 {10.0, 20.0}});
+    Carriage carriage("carriage",
+                      CarriageConfig{{&x.drv.step_event(), &drive_x}, {&y.drv.step_event(), &drive_y}, {10.0, 20.0}});
     x.dir.write(true);
-    drive(x.step, pulses(100 * kUs, 2, 100 * kUs));  // X at 100 and 200 us
+    drive(x.step, pulses(100 * kUs, 2, 100 * kUs));     // X at 100 and 200 us
     drive(y.step, pulses(100 * kUs, 1, 100 * kUs), 3);  // Y (DIR low) at 100 us only, 3 delta cycles later
     sc_core::sc_start(at(1'000 * kUs));
 

@@ -73,8 +73,7 @@ TEST(ToolSampler, PeriodicSamplesOnTheGridFromTheStartUntilBothAxesRest) {
         next = sampler.on_period(*next);
     }
     EXPECT_EQ(periodic, (std::vector<TimePs>{2 * kMs, 3 * kMs, 4 * kMs}));
-    EXPECT_EQ(times(sampler.samples()),
-              (std::vector<TimePs>{0, kMs / 2, kMs, 6 * kMs / 5, 2 * kMs, 3 * kMs, 4 * kMs}));
+    EXPECT_EQ(times(sampler.samples()), (std::vector<TimePs>{0, kMs / 2, kMs, 6 * kMs / 5, 2 * kMs, 3 * kMs, 4 * kMs}));
     EXPECT_DOUBLE_EQ(sampler.samples()[3].pos.x_mm, 14.0);  // the later step at 1.2 ms overwrote the first
     EXPECT_DOUBLE_EQ(sampler.samples()[3].pos.y_mm, 18.0);
     // A step after the rest arms them again, at the next grid time; so does an enable change, without a sample.
@@ -149,9 +148,9 @@ TEST(MechanicsWorker, ReadsEachAxisWhereTheSamplerWillWantIt) {
     }
     EXPECT_DOUBLE_EQ(worker.samples_left()[3].pos.y_mm, 19.0);  // Y's step at 2.5 ms
     EXPECT_EQ(x.m_calls, (std::vector<TimePs>{-0, kMs / 2, -kMs / 2, -kMs, 6 * kMs / 5, -6 * kMs / 5, -2 * kMs,
-                                               -5 * kMs / 2, -3 * kMs, -4 * kMs}));
+                                              -5 * kMs / 2, -3 * kMs, -4 * kMs}));
     EXPECT_EQ(y.m_calls, (std::vector<TimePs>{-0, -kMs / 2, 6 * kMs / 5, -6 * kMs / 5, -2 * kMs, 5 * kMs / 2,
-                                               -5 * kMs / 2, -3 * kMs, -4 * kMs}));
+                                              -5 * kMs / 2, -3 * kMs, -4 * kMs}));
 }
 
 TEST(MechanicsWorker, TheBoundTakesThePeriodicSampleAtItWhenInclusive) {

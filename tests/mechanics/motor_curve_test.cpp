@@ -51,8 +51,8 @@ TEST(MotorCurve, RequiredTorqueIsTheRailFrictionThroughThePulley) {
     EXPECT_NEAR(required_torque_nm(p, 100.0), 1.5 * 0.040 / (2 * 3.14159265358979) + 2e-3 + 1e-4 * 3.14159265358979,
                 1e-5);
     // 3.8 kg at 1000 mm/s^2: F r = 3.8 N x 6.366 mm = 24.19e-3 N m, plus 34 g cm2 x 157.1 rad/s^2.
-    EXPECT_NEAR(acceleration_torque_nm(p, 1000.0), 3.8 * 0.040 / (2 * 3.14159265358979) + 34e-7 * 1.0 / (0.040 / (2 * 3.14159265358979)),
-                1e-6);
+    EXPECT_NEAR(acceleration_torque_nm(p, 1000.0),
+                3.8 * 0.040 / (2 * 3.14159265358979) + 34e-7 * 1.0 / (0.040 / (2 * 3.14159265358979)), 1e-6);
 }
 
 TEST(MotorCurve, AStepJumpFarAboveThePullOutRateLosesWholeElectricalPeriods) {

@@ -3,9 +3,9 @@
 #include <sstream>
 
 #include "common/bad_input.hpp"
-#include "metrics/vcd/analyze_input.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/report/report.hpp"
+#include "metrics/vcd/analyze_input.hpp"
 #include "metrics/vcd/vcd_writer.hpp"
 #include "metrics_test_util.hpp"
 
@@ -52,8 +52,7 @@ TEST(MetricsAnalyze, InputFromVcdSignals) {
     EXPECT_EQ(to_json(m)["run_split_tolerance"], 0.005);
     // Lead-in, tail and gaps need the job's moves: "-" and null, not a misleading 0.
     EXPECT_NE(summary_table(m).find("Job timing (the span of the traced edges)\n"), std::string::npos);
-    EXPECT_NE(summary_table(m).find("           -             -          -     -                -"),
-              std::string::npos)
+    EXPECT_NE(summary_table(m).find("           -             -          -     -                -"), std::string::npos)
         << summary_table(m);
     for (const char* field : {"lead_in_ms", "tail_ms", "dead_gaps"}) {
         EXPECT_TRUE(to_json(m)["job"][field].is_null()) << field;
@@ -83,7 +82,7 @@ TEST(MetricsAnalyze, EnableSignalDropsTheStepsOfADisabledDriver) {
         return analyze_input(vcd, "cap.vcd", {{"step_x", "dir_x", enable, active}}).axes[0].step.rising().size();
     };
     EXPECT_EQ(rising("", EnableLevel::ActiveHigh), 10U);
-    EXPECT_EQ(rising("n_enbl_x", EnableLevel::ActiveLow), 4U);   // 310, 410, 510, 610 ns
+    EXPECT_EQ(rising("n_enbl_x", EnableLevel::ActiveLow), 4U);  // 310, 410, 510, 610 ns
     EXPECT_EQ(rising("n_enbl_x", EnableLevel::ActiveHigh), 6U);
 }
 
@@ -105,8 +104,7 @@ TEST(MetricsAnalyze, MissingSignalsNameTheFileAndWhatTheFileHas) {
               "cap.vcd: --step step_z: no 1-bit signal 'step_z' in the trace: 'step_z' is 8 bits wide (wire); "
               "1-bit signals: dir_x, step_x");
     EXPECT_EQ(error_of(vcd, {"step_x", "dir_q", "", EnableLevel::ActiveHigh}).rfind("cap.vcd: --dir dir_q: ", 0), 0U);
-    EXPECT_EQ(error_of(vcd, {"step_x", "dir_x", "en", EnableLevel::ActiveLow}).rfind("cap.vcd: --enable en: ", 0),
-              0U);
+    EXPECT_EQ(error_of(vcd, {"step_x", "dir_x", "en", EnableLevel::ActiveLow}).rfind("cap.vcd: --enable en: ", 0), 0U);
 }
 
 }  // namespace

@@ -47,9 +47,10 @@ TEST(CommandedRates, RefusesReportsThatCannotServe) {
     const auto message = [](const json& report, std::size_t axes) {
         return test::bad_input_message([&] { (void)commanded_rates_from_report(report, "run.json", axes); });
     };
-    EXPECT_NE(message({{"commanded_rates", nullptr}}, 2).find("run.json: the run changed its commanded rates on its "
-                                                               "own schedule and this report does not hold them: "
-                                                               "write it with `cncsim run --detail`"),
+    EXPECT_NE(message({{"commanded_rates", nullptr}}, 2)
+                  .find("run.json: the run changed its commanded rates on its "
+                        "own schedule and this report does not hold them: "
+                        "write it with `cncsim run --detail`"),
               std::string::npos);
     RunInput in;
     in.axes.resize(1);

@@ -38,7 +38,7 @@ TEST(MetricsDriverTiming, ShortHighPulsesAreCountedWithTheShortestAsWorst) {
     step.add(0, true);
     step.add(1'800 * kNs, false);  // 1.8 us
     step.add(10 * kUs, true);
-    step.add(12 * kUs, false);     // 2 us, fine
+    step.add(12 * kUs, false);  // 2 us, fine
     step.add(20 * kUs, true);
     step.add(21'500 * kNs, false);  // 1.5 us
     const DriverTimingReport r = check_driver_timing(step, EdgeLog{}, DriverLimits{});

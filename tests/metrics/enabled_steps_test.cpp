@@ -14,8 +14,8 @@ TEST(EnabledSteps, KeepsPulsesThatRiseWhileAnActiveLowEnableIsLow) {
     EXPECT_EQ(out.rising(), (std::vector<TimePs>{30}));
     EXPECT_EQ(out.falling(), (std::vector<TimePs>{40}));
     // a pulse that rises enabled keeps its fall after EN rises; an edge at an EN change sees the level before
-    const EdgeLog late = enabled_steps(kStep, EdgeLog{"n_enbl_x", false, {{30, true}, {55, false}}},
-                                       EnableLevel::ActiveLow);
+    const EdgeLog late =
+        enabled_steps(kStep, EdgeLog{"n_enbl_x", false, {{30, true}, {55, false}}}, EnableLevel::ActiveLow);
     EXPECT_EQ(late.rising(), (std::vector<TimePs>{10, 30}));
     EXPECT_EQ(late.falling(), (std::vector<TimePs>{20, 40}));
 }

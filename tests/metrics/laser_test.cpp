@@ -26,8 +26,8 @@ RunInput two_moves_with_laser(std::vector<std::pair<TimePs, TimePs>> laser_on) {
     }
     in.axes.push_back(test::axis(x));
     in.moves.push_back(test::line_move(0, {0, 0}, {100 * kMicrostepMm, 0}, 375.0, 0, 100 * kPsPerMs));
-    MoveSpec rapid = test::line_move(1, {100 * kMicrostepMm, 0}, {200 * kMicrostepMm, 0}, 3'750.0,
-                                     149 * kPsPerMs, 160 * kPsPerMs);
+    MoveSpec rapid =
+        test::line_move(1, {100 * kMicrostepMm, 0}, {200 * kMicrostepMm, 0}, 3'750.0, 149 * kPsPerMs, 160 * kPsPerMs);
     rapid.rapid = true;
     in.moves.push_back(rapid);
     EdgeLog laser{"laser", false, {}};

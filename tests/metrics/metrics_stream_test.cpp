@@ -27,7 +27,7 @@ struct PieceDef {
 // switched on while the tool stands still (dwell) and during the rapid. Each piece steps at 100 us per step on its
 // longer axis from 50 us after it begins; the tool is sampled at every rise and at every piece's start.
 RunInput synthetic_run() {
-    const std::vector<PieceDef> defs{{0, false, 12, 0}, {1, false, 8, 4},  {1, false, 8, 4}, {2, true, -10, 6},
+    const std::vector<PieceDef> defs{{0, false, 12, 0}, {1, false, 8, 4},   {1, false, 8, 4}, {2, true, -10, 6},
                                      {3, false, 0, 0},  {4, false, -6, -9}, {5, false, 5, 0}};
     RunInput in;
     in.axes = {test::axis({}, "x"), test::axis({}, "y")};
@@ -138,7 +138,8 @@ RunMetrics stream_in_windows(const RunInput& whole, bool detail, const std::vect
             append_window(p.axes[a].dir.edges, whole.axes[a].dir.edges, lo, hi, edge_time);
         }
         for (std::size_t a = 0; a < whole.rate_segments.size(); ++a) {
-            append_window(p.rate_segments[a], whole.rate_segments[a], lo, hi, [](const RateSegment& r) { return r.t_ps; });
+            append_window(p.rate_segments[a], whole.rate_segments[a], lo, hi,
+                          [](const RateSegment& r) { return r.t_ps; });
         }
         if (p.commanded) p.commanded->t_end_ps = std::min(hi, whole.commanded->t_end_ps);
         append_window(p.laser->edges, whole.laser->edges, lo, hi, edge_time);

@@ -149,8 +149,8 @@ TEST(MoveRecords, AFullDiskFailsTheAppendOrTheReadNamingTheFile) {
             << e.what();
     }
     MoveRecords growing = MoveRecords::spilled_to(2, ::open("/dev/full", O_RDWR), "/dev/full");
-    EXPECT_THROW(
-        for (std::size_t i = 0; i < kMoves; ++i) growing.append(moves[1]), MoveRecordsError);  // a buffer's worth
+    EXPECT_THROW(for (std::size_t i = 0; i < kMoves; ++i) growing.append(moves[1]),
+                 MoveRecordsError);  // a buffer's worth
 }
 
 TEST(MoveRecords, AFolderThatCannotHoldTheFileIsNamed) {
@@ -158,7 +158,8 @@ TEST(MoveRecords, AFolderThatCannotHoldTheFileIsNamed) {
         (void)MoveRecords::spilled(2, "/nonexistent-cncsim-folder");
         FAIL() << "no error";
     } catch (const MoveRecordsError& e) {
-        EXPECT_NE(std::string(e.what()).find("cannot create a temporary file in /nonexistent-cncsim-folder"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("cannot create a temporary file in /nonexistent-cncsim-folder"),
+                  std::string::npos)
             << e.what();
     }
 }

@@ -108,14 +108,14 @@ TEST(MetricsPulseRuns, MoveAttributionPutsBoundaryEdgesInTheLaterMoveAndCountsEa
 }
 
 TEST(MetricsPulseRuns, AnalyzeSplitsOnRateChangePauseAndDirChange) {
-    std::vector<TimePs> t = grid(0, 300'000'000, 10);                 // run 0: 300 us
+    std::vector<TimePs> t = grid(0, 300'000'000, 10);  // run 0: 300 us
     const auto add = [&](TimePs period, std::size_t n, TimePs after) {
         const std::vector<TimePs> more = grid(t.back() + after, period, n);
         t.insert(t.end(), more.begin(), more.end());
     };
-    add(200'000'000, 10, 200'000'000);   // run 1: 200 us, back to back (rate change)
-    add(200'000'000, 10, 400'000'000);   // run 2: same rate after a pause of 2 periods
-    add(200'000'000, 10, 200'000'000);   // run 3: after a DIR change
+    add(200'000'000, 10, 200'000'000);  // run 1: 200 us, back to back (rate change)
+    add(200'000'000, 10, 400'000'000);  // run 2: same rate after a pause of 2 periods
+    add(200'000'000, 10, 200'000'000);  // run 3: after a DIR change
     const TimePs dir_change = t[29] + 100'000'000;
     const std::vector<EdgeRange> runs = split_runs(t, {dir_change}, 0.005);
     ASSERT_EQ(runs.size(), 4U);

@@ -77,9 +77,9 @@ TEST(MetricsReport, DefaultReportLeavesOutWhatGrowsWithStepsAndGaps) {
     EXPECT_EQ(j["axes"][0]["runs_count"], 1);
     EXPECT_FALSE(j["job"].contains("dead_times"));
     const nlohmann::json& moves = j["moves"];
-    for (const char* key : {"index", "line", "rapid", "feed_mm_per_min", "t_first_edge_ps", "motion_time_s",
-                            "feed_error_pct", "contour_max_um", "following_max_um", "steps_commanded",
-                            "steps_emitted"}) {
+    for (const char* key :
+         {"index", "line", "rapid", "feed_mm_per_min", "t_first_edge_ps", "motion_time_s", "feed_error_pct",
+          "contour_max_um", "following_max_um", "steps_commanded", "steps_emitted"}) {
         EXPECT_TRUE(moves.contains(key)) << key;
     }
     for (const char* key : {"t_last_edge_ps", "achieved_feed_mm_per_min", "tool_samples", "following_rms_um",
@@ -95,9 +95,9 @@ TEST(MetricsReport, DefaultReportLeavesOutWhatGrowsWithStepsAndGaps) {
 
 TEST(MetricsReport, SummaryTableHasOneSectionPerFamilyWithUnitsInHeads) {
     const std::string s = summary_table(seed_example_metrics());
-    for (const char* title : {"Edges\n", "Pulse timing (one run per move and axis)\n",
-                              "Driver timing (DRV8825), total violations 0\n", "Feed (cutting moves)\n",
-                              "Job timing\n", "Laser\n"}) {
+    for (const char* title :
+         {"Edges\n", "Pulse timing (one run per move and axis)\n", "Driver timing (DRV8825), total violations 0\n",
+          "Feed (cutting moves)\n", "Job timing\n", "Laser\n"}) {
         EXPECT_NE(s.find(title), std::string::npos) << title;
     }
     EXPECT_EQ(s.find("Path accuracy"), std::string::npos);  // no tool samples

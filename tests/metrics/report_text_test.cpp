@@ -64,8 +64,9 @@ TEST(ReportText, MoveColumnsWrittenFromTheRecordsEqualTheJsonOnes) {
         const nlohmann::json whole = {{"metrics", to_json(m, detail)}, {"ok", true}};
         const nlohmann::json placeholder = {{"metrics", to_json(m, detail, MoveColumns::Streamed)}, {"ok", true}};
         ASSERT_TRUE(placeholder["metrics"]["moves"].is_null());
-        const StreamedMember moves{{"metrics", "moves"},
-                                   [&m, detail](std::ostream& os, int depth) { write_move_columns(os, m, detail, depth); }};
+        const StreamedMember moves{{"metrics", "moves"}, [&m, detail](std::ostream& os, int depth) {
+                                       write_move_columns(os, m, detail, depth);
+                                   }};
         std::ostringstream streamed;
         write_report_text(streamed, placeholder, &moves);
         EXPECT_EQ(streamed.str(), report_text(whole)) << "detail " << detail;

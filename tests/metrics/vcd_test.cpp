@@ -101,11 +101,20 @@ std::string with_timescale(const std::string& ts) {
 }
 
 TEST(MetricsVcdRead, TimescalesConvertToExactPicoseconds) {
-    const std::vector<std::pair<std::string, TimePs>> cases{
-        {"1 ps", 3}, {"10ps", 30}, {"100 ps", 300}, {"1 ns", 3'000}, {"10 ns", 30'000}, {"100ns", 300'000},
-        {"1 us", 3'000'000}, {"10 us", 30'000'000}, {"100 us", 300'000'000}, {"1 ms", 3'000'000'000},
-        {"100 ms", 300'000'000'000}, {"1 s", 3'000'000'000'000}, {"10 s", 30'000'000'000'000},
-        {"100 s", 300'000'000'000'000}};
+    const std::vector<std::pair<std::string, TimePs>> cases{{"1 ps", 3},
+                                                            {"10ps", 30},
+                                                            {"100 ps", 300},
+                                                            {"1 ns", 3'000},
+                                                            {"10 ns", 30'000},
+                                                            {"100ns", 300'000},
+                                                            {"1 us", 3'000'000},
+                                                            {"10 us", 30'000'000},
+                                                            {"100 us", 300'000'000},
+                                                            {"1 ms", 3'000'000'000},
+                                                            {"100 ms", 300'000'000'000},
+                                                            {"1 s", 3'000'000'000'000},
+                                                            {"10 s", 30'000'000'000'000},
+                                                            {"100 s", 300'000'000'000'000}};
     for (const auto& [ts, t_ps] : cases) {
         const auto logs = read(with_timescale(ts));
         EXPECT_EQ(logs.at("s").rising(), std::vector<TimePs>{t_ps}) << ts;
@@ -148,8 +157,9 @@ TEST(MetricsVcdRead, LogicAnalyserStyleWithoutDumpvars) {
 }
 
 TEST(MetricsVcdRead, DumpvarsSetsInitialLevelsAndLaterChangesAtTimeZeroAreEdges) {
-    const auto logs = read("$timescale 1 ns $end\n$var wire 1 ! s $end\n$enddefinitions $end\n"
-                           "#0\n$dumpvars\n1!\n$end\n0!\n#4\n1!\n");
+    const auto logs = read(
+        "$timescale 1 ns $end\n$var wire 1 ! s $end\n$enddefinitions $end\n"
+        "#0\n$dumpvars\n1!\n$end\n0!\n#4\n1!\n");
     const EdgeLog& s = logs.at("s");
     EXPECT_TRUE(s.initial);
     EXPECT_EQ(s.falling(), std::vector<TimePs>{0});
@@ -157,8 +167,9 @@ TEST(MetricsVcdRead, DumpvarsSetsInitialLevelsAndLaterChangesAtTimeZeroAreEdges)
 }
 
 TEST(MetricsVcdRead, VariableFirstSeenLaterStartsLow) {
-    const auto logs = read("$timescale 1 ns $end\n$var wire 1 ! s $end\n$var wire 1 \" t $end\n"
-                           "$enddefinitions $end\n#0\n0\"\n#5\n1!\n");
+    const auto logs = read(
+        "$timescale 1 ns $end\n$var wire 1 ! s $end\n$var wire 1 \" t $end\n"
+        "$enddefinitions $end\n#0\n0\"\n#5\n1!\n");
     EXPECT_FALSE(logs.at("s").initial);
     EXPECT_EQ(logs.at("s").rising(), std::vector<TimePs>{5'000});
 }
@@ -257,8 +268,10 @@ TEST(MetricsVcdWrite, RejectsBadTimescaleTimesAndNames) {
     EdgeLog off_grid{"s", false, {{1'500, true}}};
     constexpr std::int64_t k1ns = 1'000'000;
     EXPECT_EQ(error({ok}, 3'000'000).rfind("write_vcd: timescale 3000000 fs is not", 0), 0U);
-    EXPECT_EQ(error({off_grid}, k1ns).rfind("write_vcd: signal 's': edge at 1500 ps is not a multiple of the "
-                                             "timescale (1 ns)", 0),
+    EXPECT_EQ(error({off_grid}, k1ns)
+                  .rfind("write_vcd: signal 's': edge at 1500 ps is not a multiple of the "
+                         "timescale (1 ns)",
+                         0),
               0U);
     EXPECT_EQ(error({EdgeLog{"a b", false, {}}}, k1ns).rfind("write_vcd: signal name 'a b'", 0), 0U);
     EXPECT_EQ(error({ok, ok}, k1ns).rfind("write_vcd: signal 's' given twice", 0), 0U);
@@ -284,14 +297,14 @@ TEST(MetricsVcdTimescale, EveryStandardValueFromSecondsToFemtoseconds) {
 }
 
 TEST(MetricsVcdTimescale, TicksToAndFromPicoseconds) {
-    EXPECT_EQ(vcd_ticks_to_ps(7, 100'000), 700);          // 100 ps
-    EXPECT_EQ(vcd_ticks_to_ps(4, 100), 0);                // 400 fs: nearest ps
-    EXPECT_EQ(vcd_ticks_to_ps(5, 100), 1);                // 500 fs: half up
+    EXPECT_EQ(vcd_ticks_to_ps(7, 100'000), 700);  // 100 ps
+    EXPECT_EQ(vcd_ticks_to_ps(4, 100), 0);        // 400 fs: nearest ps
+    EXPECT_EQ(vcd_ticks_to_ps(5, 100), 1);        // 500 fs: half up
     EXPECT_EQ(vcd_ticks_to_ps(15, 100), 2);
     EXPECT_EQ(vcd_ticks_to_ps(9'000'000'000'000'000'000, 1'000'000), std::nullopt);  // past int64 in ps
-    EXPECT_EQ(ps_to_vcd_ticks(8'666'667, 100'000), 86'667);  // nearest 100 ps tick
+    EXPECT_EQ(ps_to_vcd_ticks(8'666'667, 100'000), 86'667);                          // nearest 100 ps tick
     EXPECT_EQ(ps_to_vcd_ticks(8'666'649, 100'000), 86'666);
-    EXPECT_EQ(ps_to_vcd_ticks(3, 10), 300);               // 10 fs ticks
+    EXPECT_EQ(ps_to_vcd_ticks(3, 10), 300);  // 10 fs ticks
     EXPECT_THROW((void)ps_to_vcd_ticks(10'000'000'000'000'000, 1), std::overflow_error);
     EXPECT_TRUE(on_vcd_tick(62'500, 100'000));
     EXPECT_FALSE(on_vcd_tick(62'500, 1'000'000));
@@ -299,8 +312,9 @@ TEST(MetricsVcdTimescale, TicksToAndFromPicoseconds) {
 }
 
 TEST(MetricsVcdRead, FemtosecondTimesRoundToTheNearestPicosecond) {
-    const auto logs = read("$timescale 100 fs $end\n$var wire 1 ! s $end\n$enddefinitions $end\n"
-                           "#0\n0!\n#4\n1!\n#5\n0!\n#15\n1!\n");
+    const auto logs = read(
+        "$timescale 100 fs $end\n$var wire 1 ! s $end\n$enddefinitions $end\n"
+        "#0\n0!\n#4\n1!\n#5\n0!\n#15\n1!\n");
     EXPECT_EQ(logs.at("s").rising(), (std::vector<TimePs>{0, 2}));
     EXPECT_EQ(logs.at("s").falling(), (std::vector<TimePs>{1}));
 }
@@ -350,13 +364,12 @@ TEST(MetricsVcdWrite, StreamingWriterRoundsOnlyUnclockedSignals) {
     const std::string text = out.str();
     EXPECT_EQ(text.find("$comment"), std::string::npos);
     EXPECT_NE(text.find("$timescale 100 ps $end"), std::string::npos);
-    EXPECT_NE(text.find("#0\n$dumpvars\n0!\n1\"\n$end\n#200\n1!\n#86600\n0!\n#86667\n0\"\n#90000\n"),
-              std::string::npos)
+    EXPECT_NE(text.find("#0\n$dumpvars\n0!\n1\"\n$end\n#200\n1!\n#86600\n0!\n#86667\n0\"\n#90000\n"), std::string::npos)
         << text;
     const auto logs = read(text);
     EXPECT_EQ(logs.at("uart_rx").falling(), std::vector<TimePs>{8'666'700});
-    EXPECT_THROW(w.change(8'000'000, 0, true), std::logic_error);   // back in time
-    EXPECT_THROW(w.change(9'010'000, 0, true), std::logic_error);   // not on the 20 ns clock
+    EXPECT_THROW(w.change(8'000'000, 0, true), std::logic_error);  // back in time
+    EXPECT_THROW(w.change(9'010'000, 0, true), std::logic_error);  // not on the 20 ns clock
 }
 
 // Real variables as IEEE 1364 §18.2 has them (what gtkwave reads): "$var real 64", values "r<%.16g> <id>"
@@ -364,8 +377,9 @@ TEST(MetricsVcdWrite, StreamingWriterRoundsOnlyUnclockedSignals) {
 // 1-bit signals.
 TEST(MetricsVcdWrite, RealVariablesBesideWires) {
     std::ostringstream out;
-    VcdWriter w(out, 1'000, {{"step_x", false, std::nullopt}, {"carriage_x_mm", false, std::nullopt,
-                                                                VcdVarKind::Real, 12.5}}, "test");
+    VcdWriter w(out, 1'000,
+                {{"step_x", false, std::nullopt}, {"carriage_x_mm", false, std::nullopt, VcdVarKind::Real, 12.5}},
+                "test");
     w.change(1'000, 0, true);
     w.change_real(1'000, 1, 12.50625);
     w.change_real(3'000, 1, 0.1 + 0.2);
@@ -381,8 +395,8 @@ TEST(MetricsVcdWrite, RealVariablesBesideWires) {
     const VcdContents read_back = read_vcd(in, "t.vcd");
     EXPECT_EQ(read_back.signals.count("carriage_x_mm"), 0U);
     EXPECT_EQ(read_back.other_variables.at("carriage_x_mm"), "64 bits wide (real)");
-    EXPECT_THROW(w.change(5'000, 1, true), std::logic_error);         // a real is not a wire
-    EXPECT_THROW(w.change_real(5'000, 0, 1.0), std::logic_error);     // nor a wire a real
+    EXPECT_THROW(w.change(5'000, 1, true), std::logic_error);      // a real is not a wire
+    EXPECT_THROW(w.change_real(5'000, 0, 1.0), std::logic_error);  // nor a wire a real
 }
 
 TEST(MetricsVcdWrite, RefusesATimescaleThatWouldRoundAClockedEdge) {
@@ -394,9 +408,10 @@ TEST(MetricsVcdWrite, RefusesATimescaleThatWouldRoundAClockedEdge) {
         check_vcd_signals(1'000'000, pins, "s.toml: trace.timescale");
         FAIL() << "1 ns accepted for a 62.5 ns clock";
     } catch (const BadInput& e) {
-        EXPECT_STREQ(e.what(), "s.toml: trace.timescale: 1 ns would round the edges of step_x (its clock, 16000000 "
-                               "Hz, has a period of 62500 ps); the coarsest timescale that keeps every clocked edge "
-                               "exact is 100 ps");
+        EXPECT_STREQ(e.what(),
+                     "s.toml: trace.timescale: 1 ns would round the edges of step_x (its clock, 16000000 "
+                     "Hz, has a period of 62500 ps); the coarsest timescale that keeps every clocked edge "
+                     "exact is 100 ps");
     }
     // The CP2102's 24 MHz has no whole-ps period: its edges are rounded, whatever the timescale.
     EXPECT_NO_THROW(check_vcd_signals(10'000'000, {{"uart_rx", true, 24'000'000}}, "t"));

@@ -14,7 +14,9 @@ void expect_rejected(const PlannerConfig& cfg, const std::string& field) {
     EXPECT_NE(msg.find(field), std::string::npos) << msg;
 }
 
-TEST(PlannerConfig, DefaultsAreValid) { EXPECT_NO_THROW(validate(PlannerConfig{}, "p")); }
+TEST(PlannerConfig, DefaultsAreValid) {
+    EXPECT_NO_THROW(validate(PlannerConfig{}, "p"));
+}
 
 TEST(PlannerConfig, ZeroAccelerationNamesTheField) {
     PlannerConfig cfg;
@@ -23,8 +25,7 @@ TEST(PlannerConfig, ZeroAccelerationNamesTheField) {
 }
 
 TEST(PlannerConfig, EveryLimitMustBePositiveAndFinite) {
-    const double bad[] = {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
-                          std::numeric_limits<double>::infinity()};
+    const double bad[] = {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()};
     for (double v : bad) {
         PlannerConfig a;
         a.y.max_velocity_mm_per_s = v;

@@ -104,11 +104,11 @@ TEST(PlannerBlend, LineIntoArcCorner) {
     const Curve b = Curve::arc({10, 0}, {20, 0}, {15, 0}, -kPi);
     const auto blend = corner_blend(a, b, 0.05);
     ASSERT_TRUE(blend.has_value());
-    EXPECT_NEAR(blend->start.y_mm, 0.0, 1e-12);                                 // on the line
-    EXPECT_NEAR(geom::distance(blend->end, {15, 0}), 5.0, 1e-9);                 // on the circle
+    EXPECT_NEAR(blend->start.y_mm, 0.0, 1e-12);                   // on the line
+    EXPECT_NEAR(geom::distance(blend->end, {15, 0}), 5.0, 1e-9);  // on the circle
     EXPECT_LE(blend->segment().distance_to({10, 0}), 0.05 + 1e-12);
-    EXPECT_GT(blend->segment().distance_to({10, 0}), 0.04);                     // close to the tolerance
-    EXPECT_NEAR(geom::dot(blend->unit_tangent_at(0.0), {1, 0}), 1.0, 1e-9);      // tangent to the line
+    EXPECT_GT(blend->segment().distance_to({10, 0}), 0.04);                  // close to the tolerance
+    EXPECT_NEAR(geom::dot(blend->unit_tangent_at(0.0), {1, 0}), 1.0, 1e-9);  // tangent to the line
     const Vec2 radial = unit(blend->end - Vec2{15, 0});
     EXPECT_NEAR(geom::dot(blend->unit_tangent_at(blend->length_mm()), {radial.y_mm, -radial.x_mm}), 1.0, 1e-9);
 }

@@ -17,15 +17,15 @@ using test::gcode;
 const char* const kMixedJob =
     "G0 X5 Y5\n"
     "G1 X25 Y5 F4800\n"
-    "G1 X40 Y17\n"                  // corner (38.7 deg)
-    "G2 X50 Y27 I10 J0\n"           // corner into a clockwise quarter circle
-    "G1 X50 Y40 F9000\n"            // corner out of the arc, faster feed
-    "G3 X40 Y50 I-10 J0\n"          // tangent counter-clockwise arc
-    "G1 X10 Y50\n"                  // tangent line
-    "G1 X10.3 Y49.2\n"              // sharp corner on a short move
+    "G1 X40 Y17\n"          // corner (38.7 deg)
+    "G2 X50 Y27 I10 J0\n"   // corner into a clockwise quarter circle
+    "G1 X50 Y40 F9000\n"    // corner out of the arc, faster feed
+    "G3 X40 Y50 I-10 J0\n"  // tangent counter-clockwise arc
+    "G1 X10 Y50\n"          // tangent line
+    "G1 X10.3 Y49.2\n"      // sharp corner on a short move
     "G1 X10.3 Y30\n"
-    "G1 X10.3 Y45\n"                // reversal
-    "G3 X10.3 Y45 I3 J0\n"          // full circle at a corner
+    "G1 X10.3 Y45\n"        // reversal
+    "G3 X10.3 Y45 I3 J0\n"  // full circle at a corner
     "G2 X20 Y40 R6\n"
     "G0 X0 Y0\n";
 

@@ -9,10 +9,10 @@
 #include <sstream>
 #include <string>
 
-#include "support/bad_input_message.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/gcode.hpp"
 #include "host/core/planner/planner.hpp"
+#include "support/bad_input_message.hpp"
 
 namespace cnc::host::planner::test {
 

@@ -18,9 +18,9 @@ namespace fs = std::filesystem;
 
 const std::string kCompare = std::string(CNC_SOURCE_DIR) + "/scenarios/compare/";
 
-constexpr double kStepsPerMm = 160.0;               // seed 000 machine: 200 full steps x 32 / (20 teeth x 2 mm)
-constexpr double kStepUm = 1000.0 / kStepsPerMm;    // 6.25 um
-constexpr double kFpgaClockNs = 20.0;               // fpga.clock_hz 50 MHz (seed 000 CLOCK_50)
+constexpr double kStepsPerMm = 160.0;             // seed 000 machine: 200 full steps x 32 / (20 teeth x 2 mm)
+constexpr double kStepUm = 1000.0 / kStepsPerMm;  // 6.25 um
+constexpr double kFpgaClockNs = 20.0;             // fpga.clock_hz 50 MHz (seed 000 CLOCK_50)
 // A carriage that moves one microstep per step: where the tool is follows from the step counts alone.
 const std::string kIdealMechanics = " --set mechanics.model=ideal";
 
@@ -55,9 +55,8 @@ struct Comparison {
 // Each test its own output folder, named after it.
 Comparison compare(const std::string& scenario, const std::string& archs) {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path out = fs::temp_directory_path() /
-                         (std::string("cncsim-") + info->test_suite_name() + "." + info->name() + "-" +
-                          std::to_string(getpid()));
+    const fs::path out = fs::temp_directory_path() / (std::string("cncsim-") + info->test_suite_name() + "." +
+                                                      info->name() + "-" + std::to_string(getpid()));
     fs::remove_all(out);
     const std::string cmd = std::string(CNCSIM_EXE) + " compare " + scenario + " --arch " + archs + " --out " +
                             out.string() + " --format json 2>/dev/null";

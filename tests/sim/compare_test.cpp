@@ -21,7 +21,9 @@ nlohmann::json run_compare_json(const std::string& args) {
     return nlohmann::json::parse(out);
 }
 
-double metric(const nlohmann::json& column, const char* key) { return column.at("metrics").at(key).get<double>(); }
+double metric(const nlohmann::json& column, const char* key) {
+    return column.at("metrics").at(key).get<double>();
+}
 
 }  // namespace
 
@@ -76,21 +78,19 @@ TEST(CompareTable, BestValueOfEachRowIsMarked) {
         const nlohmann::json pulse = {{"rate_error_worst_pct", rate_pct}, {"tie_max_ns", tie_ns}};
         return cnc::sim::CompareColumn{arch, 0, {{"metrics", {{"job", {{"job_time_s", job_s}}}, {"pulse", pulse}}}}};
     };
-    const std::vector<cnc::sim::CompareColumn> cols = {
-        col("fpga-uart", 8.0, 0.02, 0.0), col("atmega", 7.0, -0.01, 0.0), col("spi-fpga", 7.0, 24.0, 0.0)};
-    const std::string md = cnc::sim::compare_table(cnc::sim::Comparison{cols, std::nullopt}, cnc::sim::TableFormat::Markdown);
-    EXPECT_NE(md.find("| job time [s]                   |    8.0000 |  **7.0000** | **7.0000** |"),
-              std::string::npos)
+    const std::vector<cnc::sim::CompareColumn> cols = {col("fpga-uart", 8.0, 0.02, 0.0), col("atmega", 7.0, -0.01, 0.0),
+                                                       col("spi-fpga", 7.0, 24.0, 0.0)};
+    const std::string md =
+        cnc::sim::compare_table(cnc::sim::Comparison{cols, std::nullopt}, cnc::sim::TableFormat::Markdown);
+    EXPECT_NE(md.find("| job time [s]                   |    8.0000 |  **7.0000** | **7.0000** |"), std::string::npos)
         << md;
-    EXPECT_NE(md.find("| rate error worst [%]           |   +0.0200 | **-0.0100** |   +24.0000 |"),
-              std::string::npos)
+    EXPECT_NE(md.find("| rate error worst [%]           |   +0.0200 | **-0.0100** |   +24.0000 |"), std::string::npos)
         << md;
-    EXPECT_NE(md.find("| TIE max [ns]                   |     0.000 |       0.000 |      0.000 |"),
-              std::string::npos)
+    EXPECT_NE(md.find("| TIE max [ns]                   |     0.000 |       0.000 |      0.000 |"), std::string::npos)
         << md;
-    const std::string csv = cnc::sim::compare_table(cnc::sim::Comparison{cols, std::nullopt}, cnc::sim::TableFormat::Csv);
-    EXPECT_NE(csv.find("\"job time [s]\",\"8.0000\",\"7.0000\",\"7.0000\",\"atmega spi-fpga\""),
-              std::string::npos)
+    const std::string csv =
+        cnc::sim::compare_table(cnc::sim::Comparison{cols, std::nullopt}, cnc::sim::TableFormat::Csv);
+    EXPECT_NE(csv.find("\"job time [s]\",\"8.0000\",\"7.0000\",\"7.0000\",\"atmega spi-fpga\""), std::string::npos)
         << csv;
     const nlohmann::json j = cnc::sim::compare_json(cnc::sim::Comparison{cols, std::nullopt});
     EXPECT_EQ(j.at(1).at("best"), nlohmann::json({"metrics/job/job_time_s", "metrics/pulse/rate_error_worst_pct"}));
@@ -132,11 +132,13 @@ TEST(CompareSquare, TheMachineRapidSpeedHoldsEveryArchitecture) {
 TEST(CompareTable, MarkdownHasAColumnPerArchitectureAndDashesForMissingValues) {
     cnc::sim::CompareColumn a{"fpga-uart", 0, {{"metrics", {{"job", {{"job_time_s", 1.5}}}}}}};
     cnc::sim::CompareColumn b{"atmega", 2, nullptr};
-    const std::string md = cnc::sim::compare_table(cnc::sim::Comparison{{a, b}, std::nullopt}, cnc::sim::TableFormat::Markdown);
+    const std::string md =
+        cnc::sim::compare_table(cnc::sim::Comparison{{a, b}, std::nullopt}, cnc::sim::TableFormat::Markdown);
     EXPECT_NE(md.find("| metric                         | fpga-uart |    atmega |"), std::string::npos) << md;
     EXPECT_NE(md.find("| status                         |        ok | bad input |"), std::string::npos) << md;
     EXPECT_NE(md.find("| job time [s]                   |    1.5000 |         - |"), std::string::npos) << md;
-    EXPECT_NE(cnc::sim::compare_table(cnc::sim::Comparison{{a}, std::nullopt}, cnc::sim::TableFormat::Csv).find("\"job time [s]\",\"1.5000\""),
+    EXPECT_NE(cnc::sim::compare_table(cnc::sim::Comparison{{a}, std::nullopt}, cnc::sim::TableFormat::Csv)
+                  .find("\"job time [s]\",\"1.5000\""),
               std::string::npos);
 }
 
@@ -144,10 +146,10 @@ TEST(CompareTable, MarkdownHasAColumnPerArchitectureAndDashesForMissingValues) {
 TEST(CompareTable, StatesTheMachineOfEveryRunEvenAFailedOne) {
     const nlohmann::json machine = {{"rapid_feed_mm_per_min", 1200.0},
                                     {"x", {{"steps_per_mm", 160.0}, {"max_velocity_mm_per_s", 100.0}}}};
-    const nlohmann::json report = {{"scenario", {{"machine", machine}}},
-                                   {"metrics", {{"job", {{"job_time_s", 1.5}}}}}};
+    const nlohmann::json report = {{"scenario", {{"machine", machine}}}, {"metrics", {{"job", {{"job_time_s", 1.5}}}}}};
     cnc::sim::CompareColumn failed{"fpga-uart", 1, report};
-    const std::string md = cnc::sim::compare_table(cnc::sim::Comparison{{failed}, std::nullopt}, cnc::sim::TableFormat::Markdown);
+    const std::string md =
+        cnc::sim::compare_table(cnc::sim::Comparison{{failed}, std::nullopt}, cnc::sim::TableFormat::Markdown);
     EXPECT_NE(md.find("| machine: X steps/mm            |  160.0000 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| machine: X velocity max [mm/s] |     100.0 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| machine: rapid speed [mm/min]  |    1200.0 |"), std::string::npos) << md;

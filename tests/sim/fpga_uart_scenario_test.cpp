@@ -46,7 +46,7 @@ double circle_staircase_contour_max_um(const nlohmann::json& packets) {
             const std::int64_t p_sub = n_sub > 0 ? p_dom * n_dom / n_sub : 0;
             EXPECT_EQ(p.at("feed"), feed);
             EXPECT_EQ(p.at("period_cycles"), nlohmann::json(nx >= ny ? std::vector<std::int64_t>{p_dom, p_sub}
-                                                                      : std::vector<std::int64_t>{p_sub, p_dom}));
+                                                                     : std::vector<std::int64_t>{p_sub, p_dom}));
             const std::int64_t px = nx >= ny ? p_dom : p_sub, py = nx >= ny ? p_sub : p_dom;
             std::int64_t kx = 0, ky = 0;  // steps made
             while (kx < nx || ky < ny) {
@@ -78,7 +78,7 @@ TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
     ASSERT_EQ(yr.size(), 160U);
     for (TimePs d : diffs(xr)) ASSERT_EQ(d, 15'625 * kClockPs);  // 312.5 us
     for (TimePs d : diffs(yr)) ASSERT_EQ(d, 31'250 * kClockPs);
-    EXPECT_EQ(xr.front(), yr.front());                         // both axes fire on the first RUN cycle
+    EXPECT_EQ(xr.front(), yr.front());  // both axes fire on the first RUN cycle
     for (const auto* axis : {&x, &y}) {
         const auto r = axis->step.rising();
         const auto f = axis->step.falling();
@@ -117,7 +117,7 @@ TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
     const auto frame = cnc::uart::receive_frame(tx, starts.front(), fpga_bit, cnc::uart::kFormat8N1);
     EXPECT_EQ(frame.status, cnc::uart::RxStatus::Ok);
     EXPECT_EQ(frame.byte, 0xAA);
-    EXPECT_EQ(frame.t_stop_end_ps, starts.front() + 4'340 * kClockPs);  // 10 bits of 434 clocks: 86.8 us
+    EXPECT_EQ(frame.t_stop_end_ps, starts.front() + 4'340 * kClockPs);     // 10 bits of 434 clocks: 86.8 us
     EXPECT_EQ(tx.edges.back().t_ps, starts.front() + 8 * 434 * kClockPs);  // d7 = 1: high from bit 8 on
     EXPECT_EQ(starts.size(), 4U);  // 0xAA LSB first: the start bit and three 1->0 data transitions: one byte
 }
@@ -127,8 +127,8 @@ TEST(FpgaUartSixSegment, MotionTimeAndDeadTimeBreakdown) {
     const auto out = run_shipped("six_segment");
     ASSERT_TRUE(out.ok) << out.failure;
     // sum of dominant steps x NUMERATOR/feed clocks: 17.171694 s (seed 000 §7.3 [derived] 17.17 s)
-    const double expected_s = (15889.0 * 15625 + 8000.0 * 23437 + 5034.0 * 15625 + 4132.0 * 23437 +
-                                6829.0 * 15625 + 6000.0 * 23437) * 20e-9;
+    const double expected_s =
+        (15889.0 * 15625 + 8000.0 * 23437 + 5034.0 * 15625 + 4132.0 * 23437 + 6829.0 * 15625 + 6000.0 * 23437) * 20e-9;
     ASSERT_TRUE(out.metrics.timing.motion_time_s.has_value());
     EXPECT_NEAR(*out.metrics.timing.motion_time_s, 17.1717, 17.1717 * 1e-4);
     EXPECT_NEAR(*out.metrics.timing.motion_time_s, expected_s, 1e-9);
@@ -142,12 +142,12 @@ TEST(FpgaUartSixSegment, MotionTimeAndDeadTimeBreakdown) {
     EXPECT_NEAR(mean.at("packet_wire_ms").get<double>(), packet_wire_ms, 0.0005);
     // tx_start one clock after the busy fall, then 10 bits of 434 clocks: 86.8 us
     EXPECT_NEAR(mean.at("ack_wire_ms").get<double>(), 0.0868, 0.0001);
-    EXPECT_GE(mean.at("usb_in_ms").get<double>(), 1.0);   // link.usb_latency_ms plus the wait for a USB frame
+    EXPECT_GE(mean.at("usb_in_ms").get<double>(), 1.0);  // link.usb_latency_ms plus the wait for a USB frame
     EXPECT_LE(mean.at("usb_in_ms").get<double>(), 2.0);
     EXPECT_DOUBLE_EQ(mean.at("host_ms").get<double>(), 0.2);  // host.packet_processing_us
     double parts = 0.0;
-    for (const char* p : {"step_tail_ms", "ack_wire_ms", "usb_in_ms", "host_ms", "usb_out_ms", "packet_wire_ms",
-                          "fpga_setup_ms"}) {
+    for (const char* p :
+         {"step_tail_ms", "ack_wire_ms", "usb_in_ms", "host_ms", "usb_out_ms", "packet_wire_ms", "fpga_setup_ms"}) {
         parts += mean.at(p).get<double>();
     }
     EXPECT_NEAR(parts, mean.at("total_ms").get<double>(), 1e-9);
@@ -167,8 +167,8 @@ TEST_P(FpgaUartTie, TieMaxWithinOneClock) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, FpgaUartTie,
-                         ::testing::Values("worked_example", "worked_347", "six_segment", "square_20mm",
-                                           "diagonal_45", "circle_r10"));
+                         ::testing::Values("worked_example", "worked_347", "six_segment", "square_20mm", "diagonal_45",
+                                           "circle_r10"));
 
 // Seed 000 §3.4.7: G1 X10 Y5 F1000 from the origin at 160 steps/mm.
 TEST(FpgaUartWorked347, StepsFeedPeriodsMoveTimeAndResultantFeed) {
@@ -285,9 +285,10 @@ TEST(FpgaUartLongMove, SeedFaithfulSenderReportsAckTimeout) {
 TEST(FpgaUartCalibratedMachine, StepsPerMmDrivesStepsAndCarriage) {
     const auto out = run_shipped(
         "worked_347",
-        {"machine.x.steps_per_mm=100", "machine.y.steps_per_mm=50", "mechanics.model=ideal", "trace.detail=true"}, true);
+        {"machine.x.steps_per_mm=100", "machine.y.steps_per_mm=50", "mechanics.model=ideal", "trace.detail=true"},
+        true);
     ASSERT_TRUE(out.ok) << out.failure;
-    EXPECT_EQ(out.arch.input.axes[0].step.rising().size(), 1'000U);        // 10 mm x 100
+    EXPECT_EQ(out.arch.input.axes[0].step.rising().size(), 1'000U);       // 10 mm x 100
     EXPECT_EQ(out.arch.input.axes[1].step.rising().size(), 2U * 5 * 50);  // 5 mm out and back at 50
     // the carriage ends on the programmed (10, 0): the mechanics move 1/100 and 1/50 mm per microstep
     EXPECT_LT(*out.metrics.path.job_end_um, 1e-6);

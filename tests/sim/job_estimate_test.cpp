@@ -11,7 +11,8 @@ namespace {
 using geom::Segment;
 using host::MotionKind;
 
-host::ProgrammedMove line(geom::Vec2 from, geom::Vec2 to, double feed_mm_per_min, MotionKind kind = MotionKind::Linear) {
+host::ProgrammedMove line(geom::Vec2 from, geom::Vec2 to, double feed_mm_per_min,
+                          MotionKind kind = MotionKind::Linear) {
     return {kind, Segment::line(from, to), feed_mm_per_min, kind != MotionKind::Rapid, 1};
 }
 
@@ -57,7 +58,8 @@ TEST(JobEstimate, AxisSpeedLimitsHoldThePathSpeed) {
     // A feed below the limits is kept: 10 mm at 600 mm/min.
     EXPECT_NEAR(estimate_job(host::Program{"s.nc", {line({0, 0}, {10, 0}, 600)}}, pace).expected_s, 1.0, 1e-12);
     // An arc's tangent turns through both axes: the smaller limit, 25 mm/s, over 5 pi mm.
-    const host::Program arc{"a.nc", {{MotionKind::ArcCW, Segment::arc({10, 0}, {0, -10}, {0, 0}, false), 6000, true, 1}}};
+    const host::Program arc{"a.nc",
+                            {{MotionKind::ArcCW, Segment::arc({10, 0}, {0, -10}, {0, 0}, false), 6000, true, 1}}};
     EXPECT_NEAR(estimate_job(arc, pace).expected_s, 5 * M_PI / 25.0, 1e-9);
 }
 

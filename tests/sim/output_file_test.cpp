@@ -76,9 +76,9 @@ TEST(OutputFile, PathsThatCannotBeWrittenAreBadInput) {
         return std::string();
     };
     EXPECT_EQ(message(dir.string()), "--vcd " + dir.string() + ": is a folder, not a file");
-    EXPECT_EQ(message((dir / "missing" / "t.vcd").string()),
-              "--vcd " + (dir / "missing" / "t.vcd").string() + ": its folder " + (dir / "missing").string() +
-                  " does not exist");
+    EXPECT_EQ(message((dir / "missing" / "t.vcd").string()), "--vcd " + (dir / "missing" / "t.vcd").string() +
+                                                                 ": its folder " + (dir / "missing").string() +
+                                                                 " does not exist");
     EXPECT_EQ(message(""), "--vcd: the output file name is empty");
     EXPECT_EQ(message((dir / "t.vcd").string()), "");
     EXPECT_EQ(message("/dev/null"), "");

@@ -9,7 +9,9 @@
 namespace cnc::sim {
 namespace {
 
-std::size_t lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+std::size_t lines(const std::string& s) {
+    return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n'));
+}
 
 TEST(Progress, RunsUnderASecondShowNothing) {
     for (ProgressStyle style : {ProgressStyle::Terminal, ProgressStyle::Log}) {

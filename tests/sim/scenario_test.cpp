@@ -4,8 +4,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "common/bad_input.hpp"
 #include "architectures/fpga_uart/fpga_uart_settings.hpp"
+#include "common/bad_input.hpp"
 #include "scenario/scenario.hpp"
 #include "support/test_path.hpp"
 
@@ -67,7 +67,7 @@ TEST(Scenario, StepsPerMmEqualToTheTransmissionsIsAccepted) {
     // Leadscrew 8 mm, 1/16: 3200 / 8 = 400 steps/mm; a difference of 1e-12 relative is rounding.
     const auto s = cnc::sim::load_scenario(
         write_scenario("spm_equal", std::string(kJob) + "[machine.y]\ntransmission = \"leadscrew\"\n"
-                                                         "microsteps = 16\nsteps_per_mm = 400.0000000004\n"),
+                                                        "microsteps = 16\nsteps_per_mm = 400.0000000004\n"),
         {});
     EXPECT_NEAR(s.machine.y.steps_per_mm(), 400.0, 1e-9);
 }
@@ -80,14 +80,15 @@ TEST(Scenario, StepsPerMmContradictingTheTransmissionNamesBothKeysAndValues) {
         << err;
     EXPECT_NE(err.find("machine.x.pulley_teeth"), std::string::npos) << err;
     // 1e-6 relative is more than rounding: refused
-    EXPECT_NE(load_error(write_scenario("spm_close", kJob), {"machine.x.gear_ratio=1", "machine.x.steps_per_mm=160.00016"})
-                  .find("machine.x.steps_per_mm"),
-              std::string::npos);
+    EXPECT_NE(
+        load_error(write_scenario("spm_close", kJob), {"machine.x.gear_ratio=1", "machine.x.steps_per_mm=160.00016"})
+            .find("machine.x.steps_per_mm"),
+        std::string::npos);
 }
 
 TEST(Scenario, StartPositionOutsideTheTravelNamesTheStartKey) {
-    const std::string path = write_scenario(
-        "start", "[scenario]\njob = \"square.nc\"\nstart_x_mm = 12\n[machine.x]\ntravel_mm = 10\n");
+    const std::string path =
+        write_scenario("start", "[scenario]\njob = \"square.nc\"\nstart_x_mm = 12\n[machine.x]\ntravel_mm = 10\n");
     const std::string err = load_error(path);
     EXPECT_NE(err.find(path + ":3: scenario.start_x_mm: X 12 mm is past machine.x.travel_mm = 10"), std::string::npos)
         << err;
@@ -133,9 +134,9 @@ TEST(Scenario, FpgaValuesTheRtlCannotHoldNameTheScenarioKey) {
     const std::string err = load_error(write_scenario("fpga", std::string(kJob) + "[fpga]\nuart_baud = 9600\n"));
     EXPECT_NE(err.find("fpga.uart_baud"), std::string::npos) << err;
     EXPECT_NE(err.find("2..512"), std::string::npos) << err;
-    EXPECT_NE(load_error(write_scenario("clock", std::string(kJob) + "[fpga]\nclock_hz = 48000000\n"))
-                  .find("fpga.clock_hz"),
-              std::string::npos);
+    EXPECT_NE(
+        load_error(write_scenario("clock", std::string(kJob) + "[fpga]\nclock_hz = 48000000\n")).find("fpga.clock_hz"),
+        std::string::npos);
 }
 
 TEST(Scenario, TomlSyntaxErrorNamesTheLine) {
@@ -156,7 +157,6 @@ TEST(Scenario, KeyReferenceMatchesTheLoader) {
     const auto e = all.find(end);
     ASSERT_NE(b, std::string::npos);
     ASSERT_NE(e, std::string::npos);
-    EXPECT_EQ(all.substr(b + begin.size(), e - b - begin.size()),
-              cnc::sim::keys_markdown(cnc::sim::scenario_keys()))
+    EXPECT_EQ(all.substr(b + begin.size(), e - b - begin.size()), cnc::sim::keys_markdown(cnc::sim::scenario_keys()))
         << "regenerate with: ./build/sim/cncsim keys";
 }

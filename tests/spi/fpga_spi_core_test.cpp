@@ -59,27 +59,26 @@ TEST(PulseGenCore, FirstForwardWordRaisesDirThenStepsAfterSetup) {
 TEST(PulseGenCore, ReverseWordRespectsHoldAndSetupImmediately) {
     PulseGenCore g(mode(RateApply::Immediately));
     (void)g.load(0, {200, true});
-    EXPECT_EQ(run_until(g, 270), (std::vector<Change>{{0, 'D', true}, {50, 'S', true}, {150, 'S', false},
-                                                      {250, 'S', true}}));
+    EXPECT_EQ(run_until(g, 270),
+              (std::vector<Change>{{0, 'D', true}, {50, 'S', true}, {150, 'S', false}, {250, 'S', true}}));
     // Last rise at 250: DIR may change from 300 (hold 50); the counter compares with the new period at once,
     // so the next rise is max(300 + setup 50, 250 + 200) = 450.
     (void)g.load(270, {200, false});
     EXPECT_EQ(run_until(g, 651),
-              (std::vector<Change>{{300, 'D', false}, {350, 'S', false}, {450, 'S', true}, {550, 'S', false},
-                                   {650, 'S', true}}));
+              (std::vector<Change>{
+                  {300, 'D', false}, {350, 'S', false}, {450, 'S', true}, {550, 'S', false}, {650, 'S', true}}));
 }
 
 TEST(PulseGenCore, AtNextPulseLoadsOnlyAtTheBoundaryAndRestartsThePeriodThere) {
     PulseGenCore g(mode(RateApply::AtNextPulse));
-    EXPECT_TRUE(g.reads_at(5));  // stopped: reads at once
+    EXPECT_TRUE(g.reads_at(5));     // stopped: reads at once
     (void)g.load(0, {200, false});  // DIR already low: first rise at once
     EXPECT_EQ(run_until(g, 1), (std::vector<Change>{{0, 'S', true}}));
     EXPECT_FALSE(g.reads_at(150));
     EXPECT_TRUE(g.reads_at(200));
     EXPECT_EQ(run_until(g, 200), (std::vector<Change>{{100, 'S', false}}));
     (void)g.load(200, {1000, false});  // same direction: the boundary rise stays, then 1000 apart
-    EXPECT_EQ(run_until(g, 1201),
-              (std::vector<Change>{{200, 'S', true}, {300, 'S', false}, {1200, 'S', true}}));
+    EXPECT_EQ(run_until(g, 1201), (std::vector<Change>{{200, 'S', true}, {300, 'S', false}, {1200, 'S', true}}));
     // Reversal at the boundary 2200: DIR at 2200 (hold long over), first rise after setup.
     (void)run_until(g, 2200);
     (void)g.load(2200, {1000, true});
@@ -90,7 +89,7 @@ TEST(PulseGenCore, AtNextPulseLoadsOnlyAtTheBoundaryAndRestartsThePeriodThere) {
 TEST(PulseGenCore, StopKeepsTheRunningPulseAndDir) {
     PulseGenCore g(mode(RateApply::Immediately));
     (void)g.load(0, {300, true});
-    (void)run_until(g, 60);  // D 0, S 50 rise
+    (void)run_until(g, 60);        // D 0, S 50 rise
     (void)g.load(60, {0, false});  // stop; the direction of a stop word is ignored
     EXPECT_EQ(run_until(g, 10'000), (std::vector<Change>{{150, 'S', false}}));
     EXPECT_EQ(g.period_cycles(), 0U);
@@ -104,17 +103,15 @@ TEST(PulseGenCore, ShortWordIsStretchedToPulsePlusOneClock) {
     PulseGenCore g(mode(RateApply::Immediately));
     EXPECT_TRUE(g.load(0, {50, false}));
     EXPECT_EQ(g.period_cycles(), 101U);
-    EXPECT_EQ(run_until(g, 203), (std::vector<Change>{{0, 'S', true},
-                                                      {100, 'S', false},
-                                                      {101, 'S', true},
-                                                      {201, 'S', false},
-                                                      {202, 'S', true}}));
+    EXPECT_EQ(run_until(g, 203),
+              (std::vector<Change>{
+                  {0, 'S', true}, {100, 'S', false}, {101, 'S', true}, {201, 'S', false}, {202, 'S', true}}));
 }
 
 TEST(PulseGenCore, LaterWordCancelsAPendingReversal) {
     PulseGenCore g(mode(RateApply::Immediately));
     (void)g.load(10, {200, true});
-    (void)run_until(g, 70);  // D 10, S 60
+    (void)run_until(g, 70);          // D 10, S 60
     (void)g.load(70, {200, false});  // DIR would change at 110
     (void)g.load(100, {200, true});  // back to forward before it did: no DIR edge
     EXPECT_EQ(run_until(g, 261), (std::vector<Change>{{160, 'S', false}, {260, 'S', true}}));
@@ -227,8 +224,8 @@ TEST(StepCountHistory, LoadAtEdgeMSeesRisesUpToMMinusTwo) {
     EXPECT_EQ(h.forward_rises(), 1U);
     EXPECT_EQ(h.reverse_rises(), 2U);
     for (int k = 0; k < 6; ++k) h.add_rise(1000 + 10 * k, true);  // updates at 1001..1051, values 0..5
-    EXPECT_EQ(h.value_at_edge(1025), 2);  // update at 1021
-    EXPECT_EQ(h.value_at_edge(1015), 1);  // older than the kept updates
+    EXPECT_EQ(h.value_at_edge(1025), 2);                          // update at 1021
+    EXPECT_EQ(h.value_at_edge(1015), 1);                          // older than the kept updates
     EXPECT_EQ(h.value_at_edge(1060), 5);
 }
 

@@ -69,8 +69,12 @@ std::vector<std::int64_t> to_edges(const std::vector<TimePs>& times) {
 }
 }  // namespace
 
-std::vector<std::int64_t> rise_edges(const EdgeLog& log) { return to_edges(log.rising()); }
-std::vector<std::int64_t> fall_edges(const EdgeLog& log) { return to_edges(log.falling()); }
+std::vector<std::int64_t> rise_edges(const EdgeLog& log) {
+    return to_edges(log.rising());
+}
+std::vector<std::int64_t> fall_edges(const EdgeLog& log) {
+    return to_edges(log.falling());
+}
 std::vector<std::int64_t> change_edges(const EdgeLog& log) {
     std::vector<std::int64_t> out;
     for (const Edge& e : log.edges) out.push_back(e.t_ps / kCyclePs);

@@ -31,7 +31,7 @@ private:
 };
 
 struct Send {
-    TimePs t_ps = 0;                 // transfer() is called at this time
+    TimePs t_ps = 0;  // transfer() is called at this time
     std::vector<std::uint8_t> mosi;
 };
 
@@ -74,7 +74,11 @@ std::vector<std::int64_t> train(std::int64_t first, std::int64_t period, std::in
 // Rises (as edges) in [from, to).
 std::vector<std::int64_t> between(const std::vector<std::int64_t>& edges, std::int64_t from, std::int64_t to);
 // The edge at which the FPGA first samples a change at t, and the frame-end push edge for an SS rise at t.
-inline std::int64_t sample_edge(TimePs t) { return first_edge_after(t, kCyclePs); }
-inline std::int64_t push_edge(TimePs t_ss_rise) { return sample_edge(t_ss_rise) + 2; }
+inline std::int64_t sample_edge(TimePs t) {
+    return first_edge_after(t, kCyclePs);
+}
+inline std::int64_t push_edge(TimePs t_ss_rise) {
+    return sample_edge(t_ss_rise) + 2;
+}
 
 }  // namespace cnc::spi::test

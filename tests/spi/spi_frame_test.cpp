@@ -3,14 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <functional>
-#include <stdexcept>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "common/bad_input.hpp"
-#include "support/bad_input_message.hpp"
 #include "spi/core/spi_frame.hpp"
+#include "support/bad_input_message.hpp"
 
 namespace cnc::spi {
 namespace {
@@ -57,7 +57,7 @@ TEST(SpiFrame, CommandRoundTrip) {
 
 TEST(SpiFrame, DecodeRejectsWrongLengthOrHeader) {
     Bytes b = encode_command({{{200, true}, {300, false}}}, 1);
-    EXPECT_FALSE(decode_command(b, 1).has_value());   // 9 bytes for 1 axis
+    EXPECT_FALSE(decode_command(b, 1).has_value());  // 9 bytes for 1 axis
     EXPECT_FALSE(decode_command(Bytes(b.begin(), b.end() - 1), 2).has_value());
     b[0] = 0x00;
     EXPECT_FALSE(decode_command(b, 2).has_value());
@@ -125,8 +125,9 @@ TEST(SpiFrame, RateWordOverflowIsBadInputWithTheNumbers) {
     // Just inside both ends.
     EXPECT_EQ(period_for_rate(50e6 / 1073741823.0, 50'000'000, 101), 1'073'741'823U);
     // Encoding a word directly: the period field (2^30 would overwrite the laser bit) and the minimum.
-    const std::string word =
-        bad_input_message([] { (void)encode_command({{{100, true}, {0x4000'0000U, true}}}, 100); });
+    const std::string word = bad_input_message([] {
+        (void)encode_command({{{100, true}, {0x4000'0000U, true}}}, 100);
+    });
     EXPECT_NE(word.find("axis 1"), std::string::npos) << word;
     EXPECT_NE(word.find("1073741824 clocks does not fit the rate word's 30-bit field"), std::string::npos) << word;
     EXPECT_THROW((void)encode_rate_word({100, true}, 101), BadInput);

@@ -19,8 +19,7 @@ TEST(SpiGolden, WorkedCommandFrame) {
     const std::uint32_t min_period = fpga::min_period_cycles(fpga::SpiFpgaConfig{});
     const auto x = spi::axis_rate_for(10'000.0, 50'000'000, min_period);
     const auto y = spi::axis_rate_for(-1'600.0, 50'000'000, min_period);
-    EXPECT_EQ(spi::encode_command({{x, y}}, min_period),
-              (Bytes{0x52, 0x80, 0x00, 0x13, 0x88, 0x00, 0x00, 0x7A, 0x12}));
+    EXPECT_EQ(spi::encode_command({{x, y}}, min_period), (Bytes{0x52, 0x80, 0x00, 0x13, 0x88, 0x00, 0x00, 0x7A, 0x12}));
 }
 
 TEST(SpiGolden, WorkedCommandFrameWithTheLaserOn) {

@@ -30,7 +30,9 @@ SpiFpgaConfig fpga_cfg(RateApply apply) {
     return cfg;
 }
 
-void run_until(TimePs t) { sc_core::sc_start(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t))); }
+void run_until(TimePs t) {
+    sc_core::sc_start(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t)));
+}
 
 // Rises of a train first + k*period at edges <= last.
 std::vector<std::int64_t> train_to(std::int64_t first, std::int64_t period, std::int64_t last) {
@@ -57,8 +59,7 @@ Bytes sample_at_rises(const EdgeLog& sclk, const EdgeLog& data, TimePs t0, TimeP
 
 TEST(SpiFpgaModel, ConstantRateStepsExactlyThePeriodApart) {
     // Frame at 10 us; SS rises at 26.4 us = edge 1320 -> sampled at 1321 -> pushed at 1323 -> read at 1324.
-    SpiBench b("b", link(true), fpga_cfg(RateApply::AtNextPulse),
-               {{10 * kUs, rates({5000, true}, {7919, false})}});
+    SpiBench b("b", link(true), fpga_cfg(RateApply::AtNextPulse), {{10 * kUs, rates({5000, true}, {7919, false})}});
     const TimePs end = 60 * kMs + 10'000;  // last edge 3 000 000
     run_until(end);
     EXPECT_EQ(push_edge(10 * kUs + kTransferPs), 1323);
@@ -189,7 +190,7 @@ TEST(SpiFpgaModel, RateChangeAtNextPulseVersusImmediately) {
                                    {1 * kMs, rates({3'000, true}, {20'000, false})}};
     SpiBench imm("imm", link(false), fpga_cfg(RateApply::Immediately), script);
     SpiBench next("next", link(false), fpga_cfg(RateApply::AtNextPulse), script);
-    run_until(1'600'010'000);  // last edge 80 000
+    run_until(1'600'010'000);                      // last edge 80 000
     const auto before_x = train(1374, 10'000, 5);  // last rise before the change: 41374
     const auto before_y = train(1324, 10'000, 5);  // 41324
     // Immediately: X compares with 3000 at once: 41374 + 3000 is past, so it rises at the read edge 50824;
@@ -258,7 +259,7 @@ TEST(SpiFpgaModel, DirReversalRespectsSetupAndHold) {
                                    {91'200'000, rates({1'000, false}, {0, true})}};
     SpiBench imm("imm", link(true), fpga_cfg(RateApply::Immediately), script);
     SpiBench next("next", link(true), fpga_cfg(RateApply::AtNextPulse), script);
-    run_until(400 * kUs + 10'000);  // last edge 20 000
+    run_until(400 * kUs + 10'000);           // last edge 20 000
     const auto fwd = train(1374, 1'000, 5);  // 1374 .. 5374
     // Immediately: DIR may not fall before 5374 + 50 (hold); the next rise is 5374 + 1000 (>= 5424 + 50).
     EXPECT_EQ(change_edges(imm.log("dir_x")), (std::vector<std::int64_t>{1324, 5424}));
@@ -314,8 +315,8 @@ TEST(SpiFpgaModel, FifoFullDropsTheNewFrameAndEmptyKeepsTheLastRate) {
     }
     EXPECT_EQ(applied_edges, (std::vector<std::int64_t>{1324, 1'001'374, 1'401'374, 1'701'374, 1'901'374}));
     EXPECT_EQ(applied_seqs, (std::vector<std::uint64_t>{0, 1, 2, 3, 4}));
-    const auto expected = concat({1374, 1'001'374, 1'401'374, 1'701'374, 1'901'374},
-                                 train_to(2'001'374, 100'000, 2'600'000));
+    const auto expected =
+        concat({1374, 1'001'374, 1'401'374, 1'701'374, 1'901'374}, train_to(2'001'374, 100'000, 2'600'000));
     EXPECT_EQ(rise_edges(b.log("step_x")), expected);
     EXPECT_EQ(rise_edges(b.log("step_y")), expected);
     EXPECT_EQ(b.fpga.count(0), 11);

@@ -10,7 +10,7 @@ namespace cnc::spi {
 namespace {
 
 TEST(SpiTiming, TransferTimeIsSetupPlusBitsPlusHold) {
-    const SpiConfig cfg;  // 5 MHz, 1 us setup, 1 us hold
+    const SpiConfig cfg;                                                         // 5 MHz, 1 us setup, 1 us hold
     EXPECT_EQ(transfer_time_ps(cfg, 72), 1'000'000 + 72 * 200'000 + 1'000'000);  // 16.4 us
     EXPECT_EQ(transfer_slot_ps(cfg, 72), 17'400'000);
     SpiConfig c3 = cfg;
@@ -37,7 +37,7 @@ TEST(SpiTiming, FrameThatDoesNotFitTheServoPeriodIsRefused) {
     SpiConfig cfg;
     EXPECT_NO_THROW(check_transfer_fits(cfg, 72, kPsPerMs));
     EXPECT_NO_THROW(check_transfer_fits(cfg, 72, 17'400'000));  // exactly one slot
-    cfg.sclk_hz = 100'000;  // 72 bits take 720 us, + 2 us + 1 us idle
+    cfg.sclk_hz = 100'000;                                      // 72 bits take 720 us, + 2 us + 1 us idle
     EXPECT_NO_THROW(check_transfer_fits(cfg, 72, kPsPerMs));
     cfg.sclk_hz = 50'000;  // 1440 us
     try {

@@ -128,7 +128,7 @@ TEST(StepCrossings, ATurningPointInsideAScanStepSplitsTheInterval) {
     // up: levels 0.5..159.5 twice (rising from 0 and from -160 back to 0 only up to -0.5: counts -159..0)
     ASSERT_EQ(x.up.count(1), 1U);
     EXPECT_EQ(x.up.at(1).size(), 1U);
-    EXPECT_EQ(x.up.at(0).size(), 1U);       // -0.5 rising, near the end
+    EXPECT_EQ(x.up.at(0).size(), 1U);  // -0.5 rising, near the end
     EXPECT_EQ(x.up.at(-159).size(), 1U);
     EXPECT_EQ(x.up.count(-160), 0U);        // the minimum -160 is not crossed through -160.5
     EXPECT_EQ(x.down.at(0).size(), 1U);     // 0.5 falling
@@ -177,8 +177,10 @@ TEST(CommandedSync, ReversalsMatchTheDownwardCrossings) {
     const CommandedTrajectory c = sine(0.1, 2.0);  // 16 steps, 2 Hz
     const StepCrossings x = step_crossings(c, 0, kStepsPerMm);
     std::vector<std::pair<TimePs, int>> events;
-    for (const auto& [n, times] : x.up) for (TimePs t : times) events.push_back({t, +1});
-    for (const auto& [n, times] : x.down) for (TimePs t : times) events.push_back({t, -1});
+    for (const auto& [n, times] : x.up)
+        for (TimePs t : times) events.push_back({t, +1});
+    for (const auto& [n, times] : x.down)
+        for (TimePs t : times) events.push_back({t, -1});
     std::sort(events.begin(), events.end());
     std::vector<TimePs> rises;
     std::vector<int> signs;

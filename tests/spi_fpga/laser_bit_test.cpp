@@ -49,9 +49,9 @@ TEST(LaserBit, ExactStopFollowsEachMoveAndIsOffAtRest) {
     // The bit reads the plan as it is read (the times above are the whole plan's).
     cnc::test::FedJob fed(text, planner_config(planner::BlendMode::ExactStop));
     LaserBit bit(fed.plan, laser_intent(p));
-    EXPECT_FALSE(bit.next(0.0, 0.0));      // period 0: the clock has not moved
+    EXPECT_FALSE(bit.next(0.0, 0.0));  // period 0: the clock has not moved
     EXPECT_TRUE(bit.next(0.0, 0.001));
-    EXPECT_TRUE(bit.next(first_end - 0.001, first_end));  // reaching the rest point: the move ending there
+    EXPECT_TRUE(bit.next(first_end - 0.001, first_end));   // reaching the rest point: the move ending there
     EXPECT_FALSE(bit.next(first_end, first_end));          // held while the axes land
     EXPECT_FALSE(bit.next(first_end, first_end + 0.001));  // M5
     EXPECT_FALSE(bit.next(rapid_begin, rapid_begin + 0.001));

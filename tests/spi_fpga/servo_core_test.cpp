@@ -308,7 +308,7 @@ TEST(ServoCore, LaserBitCoversTheCutsStretchOfPlanOnlyAndIsOffWhileLanding) {
         EXPECT_EQ(log[n].mode, PeriodMode::Track) << n;
     }
     ASSERT_FALSE(on.empty());
-    EXPECT_EQ(on.front(), 1U);  // period 0 holds tau at 0 (nothing to carry yet)
+    EXPECT_EQ(on.front(), 1U);                         // period 0 holds tau at 0 (nothing to carry yet)
     EXPECT_EQ(on.back() - on.front() + 1, on.size());  // one stretch
     // 1.01 s / 1 ms = 1010 periods; the clock adds 1 ms per period in floating point and can reach the rest
     // point with one more, vanishing step.

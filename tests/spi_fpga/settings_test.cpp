@@ -60,10 +60,10 @@ TEST(SpiFpgaSettings, Defaults) {
 }
 
 TEST(SpiFpgaSettings, SetOnTheCommandLineOverridesTheKeys) {
-    const auto s = cnc::sim::load_scenario(write_scenario("cli", kJob),
-                                           {"host.servo_period_us=500", "host.latency_max_us=80",
-                                            "planner.mode=\"exact-stop\"", "fpga_spi.rate_apply=\"at-next-pulse\"",
-                                            "machine.y.max_velocity_mm_per_s=50", "spi.sclk_hz=2500000"});
+    const auto s = cnc::sim::load_scenario(
+        write_scenario("cli", kJob),
+        {"host.servo_period_us=500", "host.latency_max_us=80", "planner.mode=\"exact-stop\"",
+         "fpga_spi.rate_apply=\"at-next-pulse\"", "machine.y.max_velocity_mm_per_s=50", "spi.sclk_hz=2500000"});
     EXPECT_EQ(s.settings<cnc::sim::SpiFpgaSettings>().servo.period_ps, 500 * kPsPerUs);
     EXPECT_EQ(s.settings<cnc::sim::SpiFpgaSettings>().servo.latency.max_ps, 80 * kPsPerUs);
     EXPECT_EQ(s.settings<cnc::sim::SpiFpgaSettings>().planner.mode, cnc::host::planner::BlendMode::ExactStop);
@@ -77,13 +77,29 @@ TEST(SpiFpgaSettings, EveryKeyIsDocumentedAndNoneClashesWithFpgaUart) {
     const auto has = [&](const std::string& k) {
         return std::count_if(keys.begin(), keys.end(), [&](const cnc::sim::KeyDoc& d) { return d.key == k; });
     };
-    for (const char* k : {"machine.x.max_velocity_mm_per_s", "machine.y.max_accel_mm_per_s2", "machine.x.max_jerk_mm_per_s3",
-                          "planner.profile", "planner.mode", "planner.path_tolerance_mm", "planner.lookahead_moves",
-                          "host.servo_period_us", "host.latency_max_us", "host.latency_distribution",
-                          "host.position_gain", "host.deadband_steps", "host.stepgen_margin", "spi.sclk_hz",
-                          "spi.cs_setup_ns", "spi.cs_hold_ns", "spi.trace_wires", "fpga_spi.fifo_depth",
-                          "fpga_spi.pulse_cycles", "fpga_spi.dir_setup_cycles", "fpga_spi.dir_hold_cycles",
-                          "fpga_spi.rate_apply", "fpga_spi.clock_hz"}) {
+    for (const char* k : {"machine.x.max_velocity_mm_per_s",
+                          "machine.y.max_accel_mm_per_s2",
+                          "machine.x.max_jerk_mm_per_s3",
+                          "planner.profile",
+                          "planner.mode",
+                          "planner.path_tolerance_mm",
+                          "planner.lookahead_moves",
+                          "host.servo_period_us",
+                          "host.latency_max_us",
+                          "host.latency_distribution",
+                          "host.position_gain",
+                          "host.deadband_steps",
+                          "host.stepgen_margin",
+                          "spi.sclk_hz",
+                          "spi.cs_setup_ns",
+                          "spi.cs_hold_ns",
+                          "spi.trace_wires",
+                          "fpga_spi.fifo_depth",
+                          "fpga_spi.pulse_cycles",
+                          "fpga_spi.dir_setup_cycles",
+                          "fpga_spi.dir_hold_cycles",
+                          "fpga_spi.rate_apply",
+                          "fpga_spi.clock_hz"}) {
         EXPECT_EQ(has(k), 1) << k;
     }
 }

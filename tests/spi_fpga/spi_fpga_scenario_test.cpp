@@ -21,7 +21,9 @@ namespace {
 
 // The edge at which the FPGA applies the frame whose SS rises at t (models/fpga/spi/README.md: sampled at the first
 // edge after t, FrameEnd 2 edges later writes the FIFO, the generator reads it one edge later).
-TimePs apply_time(TimePs t_ss_rise) { return (t_ss_rise / kClockPs + 1 + 2 + 1) * kClockPs; }
+TimePs apply_time(TimePs t_ss_rise) {
+    return (t_ss_rise / kClockPs + 1 + 2 + 1) * kClockPs;
+}
 
 }  // namespace
 
@@ -194,9 +196,9 @@ class SpiFpgaLanding : public ::testing::TestWithParam<LandingCase> {};
 
 TEST_P(SpiFpgaLanding, CountsEqualTheCommandAtEveryRestPoint) {
     const LandingCase c = GetParam();
-    const auto out = run_spi(c.scenario, {std::string("planner.mode=\"") + c.mode + "\"",
-                                          "host.latency_max_us=" + std::to_string(c.latency_us),
-                                          "mechanics.model=ideal"});
+    const auto out =
+        run_spi(c.scenario, {std::string("planner.mode=\"") + c.mode + "\"",
+                             "host.latency_max_us=" + std::to_string(c.latency_us), "mechanics.model=ideal"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& in = out.arch.input;
     const bool exact_stop = std::string(c.mode) == "exact-stop";
@@ -209,8 +211,7 @@ TEST_P(SpiFpgaLanding, CountsEqualTheCommandAtEveryRestPoint) {
         }
     }
     if (exact_stop) {
-        out.metrics.moves.for_each(
-            [](const auto& mm) { EXPECT_EQ(mm.steps_emitted, mm.steps_commanded) << mm.index; });
+        out.metrics.moves.for_each([](const auto& mm) { EXPECT_EQ(mm.steps_emitted, mm.steps_commanded) << mm.index; });
     }
     EXPECT_EQ(*out.metrics.path.job_end_um, 0.0);
     const auto& servo = out.report["spi-fpga"]["servo"];

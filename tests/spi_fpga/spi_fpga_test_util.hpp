@@ -33,9 +33,13 @@ inline std::int64_t count_at(const metrics::AxisTrace& a, TimePs t_ps) {
 }
 
 // The step the host lands an axis on for a machine position (origin 0, 160 steps/mm).
-inline std::int64_t target_steps(double mm, double steps_per_mm) { return std::llround(mm * steps_per_mm); }
+inline std::int64_t target_steps(double mm, double steps_per_mm) {
+    return std::llround(mm * steps_per_mm);
+}
 
 // A JSON number in ps (report times are in s).
-inline TimePs ps_of(double seconds) { return static_cast<TimePs>(std::llround(seconds * 1e12)); }
+inline TimePs ps_of(double seconds) {
+    return static_cast<TimePs>(std::llround(seconds * 1e12));
+}
 
 }  // namespace cnc::test

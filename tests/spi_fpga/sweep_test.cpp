@@ -20,8 +20,8 @@ struct Point {
 
 Point run(const std::string& scenario) {
     const std::string report = cnc::test::test_path(scenario + ".json");
-    const std::string cmd = std::string(CNCSIM) + " run " + CNC_SOURCE_DIR + "/scenarios/spi-fpga/sweeps/" +
-                            scenario + ".toml --report " + report + " > /dev/null";
+    const std::string cmd = std::string(CNCSIM) + " run " + CNC_SOURCE_DIR + "/scenarios/spi-fpga/sweeps/" + scenario +
+                            ".toml --report " + report + " > /dev/null";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
     std::ifstream in(report);
     const nlohmann::json j = nlohmann::json::parse(in);

@@ -18,12 +18,20 @@ constexpr TimePs kMs = cnc::kPsPerMs;
 // seed 000 §4.2: the worked motion packet
 const std::vector<std::uint8_t> kPacket{0x01, 0x00, 0x00, 0x01, 0x40, 0xFF, 0xFF, 0xFF, 0x60, 0x04, 0xB0};
 
-sc_core::sc_time at(TimePs t) { return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t)); }
-TimePs now_ps() { return static_cast<TimePs>(sc_core::sc_time_stamp().value()); }
-void wait_until(TimePs t) { sc_core::wait(at(t - now_ps())); }
+sc_core::sc_time at(TimePs t) {
+    return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t));
+}
+TimePs now_ps() {
+    return static_cast<TimePs>(sc_core::sc_time_stamp().value());
+}
+void wait_until(TimePs t) {
+    sc_core::wait(at(t - now_ps()));
+}
 
 // One 10-bit frame of the real CP2102 at 115200: 2080 clocks of 24 MHz, rounded down from the exact time.
-TimePs cp_bits(std::int64_t k) { return k * 208'000'000 / 24; }
+TimePs cp_bits(std::int64_t k) {
+    return k * 208'000'000 / 24;
+}
 
 }  // namespace
 
@@ -50,7 +58,7 @@ TEST(Cp2102, LoopbackPacketTimesFollowUsbFramesAndLatency) {
         const auto& b = cp.tx_log()[i];
         EXPECT_EQ(b.byte, kPacket[i]);
         EXPECT_EQ(b.t_write_ps, 300 * kMs + 400'000'000);
-        EXPECT_EQ(b.t_usb_ps, 301 * kMs);  // next USB frame start
+        EXPECT_EQ(b.t_usb_ps, 301 * kMs);                                                     // next USB frame start
         EXPECT_EQ(b.t_start_bit_ps, 301 * kMs + cp_bits(10 * static_cast<std::int64_t>(i)));  // back to back
         EXPECT_EQ(b.t_stop_end_ps, 301 * kMs + cp_bits(10 * static_cast<std::int64_t>(i) + 10));
     }
@@ -104,9 +112,9 @@ TEST(Cp2102, ResetInputBufferDropsOnlyWhatTheHostHolds) {
     cp.rxd(line);
     std::size_t waiting_after_reset = 99;
     sc_core::sc_spawn([&] {
-        cp.usb_write(kPacket);                 // out at 0, visible at 1 ms frame + 1 ms = 2 ms
+        cp.usb_write(kPacket);  // out at 0, visible at 1 ms frame + 1 ms = 2 ms
         wait_until(1'500'000'000);
-        cp.usb_write(kPacket);                 // out at 2 ms, ends 2.953 ms, visible at 3 ms + 1 ms = 4 ms
+        cp.usb_write(kPacket);  // out at 2 ms, ends 2.953 ms, visible at 3 ms + 1 ms = 4 ms
         wait_until(2'500'000'000);
         EXPECT_EQ(cp.in_waiting(), 11U);
         cp.reset_input_buffer();

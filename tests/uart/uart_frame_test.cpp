@@ -26,9 +26,8 @@ TEST(UartFrame, AlternatingByteAt434CyclesOf50MHz) {
     constexpr TimePs b = 8'680'000;  // exact
     constexpr TimePs t0 = 1'000'000;
     // 0xAA LSB first: start 0, data 0 1 0 1 0 1 0 1, stop 1
-    const std::vector<Edge> want{{t0, false},         {t0 + 2 * b, true},  {t0 + 3 * b, false},
-                                 {t0 + 4 * b, true},  {t0 + 5 * b, false}, {t0 + 6 * b, true},
-                                 {t0 + 7 * b, false}, {t0 + 8 * b, true}};
+    const std::vector<Edge> want{{t0, false},         {t0 + 2 * b, true}, {t0 + 3 * b, false}, {t0 + 4 * b, true},
+                                 {t0 + 5 * b, false}, {t0 + 6 * b, true}, {t0 + 7 * b, false}, {t0 + 8 * b, true}};
     EXPECT_TRUE(same(frame_edges(0xAA, t0, kFpga434), want));
     EXPECT_EQ(frame_time_ps(kFpga434), 86'800'000);
 }
@@ -59,8 +58,8 @@ TEST(UartFrame, Cp2102BitBoundariesHaveNoDriftOver10000Bits) {
 }
 
 TEST(UartFrame, MidBitIsHalfWayBetweenBoundaries) {
-    EXPECT_EQ(kFpga434.mid_bit(0), 4'340'000);   // 217 cycles: seed 000 §4.1 HALF_BIT
-    EXPECT_EQ(kFpga434.mid_bit(9), 82'460'000);  // 9.5 bits
+    EXPECT_EQ(kFpga434.mid_bit(0), 4'340'000);          // 217 cycles: seed 000 §4.1 HALF_BIT
+    EXPECT_EQ(kFpga434.mid_bit(9), 82'460'000);         // 9.5 bits
     EXPECT_EQ(kCp2102At115200.mid_bit(9), 82'333'333);  // 9.5 * 208 / 24 MHz = 82.3333 us, rounded down
 }
 
@@ -68,8 +67,8 @@ TEST(UartFrame, ParityAndTwoStopBits) {
     const FrameFormat e72{7, Parity::Even, 2};
     EXPECT_EQ(e72.bits_per_frame(), 11);
     // 0x03 in 7E2: start 0, data 1 1 0 0 0 0 0, parity (two ones -> even) 0, stop 1 1
-    EXPECT_EQ(frame_bits(0x03, e72), (std::vector<bool>{false, true, true, false, false, false, false, false,
-                                                         false, true, true}));
+    EXPECT_EQ(frame_bits(0x03, e72),
+              (std::vector<bool>{false, true, true, false, false, false, false, false, false, true, true}));
     const FrameFormat o81{8, Parity::Odd, 1};
     EXPECT_EQ(frame_bits(0x03, o81).at(9), true);  // odd parity over two ones
     EXPECT_THROW(frame_bits(0x00, FrameFormat{9, Parity::None, 1}), cnc::BadInput);

@@ -8,8 +8,8 @@
 namespace cnc::avr {
 
 struct AvrCoreConfig {
-    std::string firmware_elf;             // any ATmega328P ELF (avr.firmware)
-    std::string mcu = "atmega328p";       // or "atmega16" (core/mcu_map.hpp); an ELF whose .mmcu names another is refused
+    std::string firmware_elf;        // any ATmega328P ELF (avr.firmware)
+    std::string mcu = "atmega328p";  // or "atmega16" (core/mcu_map.hpp); an ELF whose .mmcu names another is refused
     std::uint32_t f_cpu_hz = 16'000'000;  // seed 003 §2.1: 16 MHz crystal (62.5 ns per cycle)
     PinMap pins = default_pin_map();      // avr.pins
     // Temporal decoupling: the AVR runs at most this many cycles ahead of SystemC time before its recorded pin events

@@ -21,12 +21,18 @@ constexpr std::uint8_t kMmcuTagFrequency = 2;  // AVR_MMCU_TAG_FREQUENCY
 
 std::string machine_name(std::uint16_t m) {
     switch (m) {
-        case 3: return "x86 (i386)";
-        case 40: return "ARM";
-        case 62: return "x86-64";
-        case 183: return "AArch64";
-        case 243: return "RISC-V";
-        default: return "machine " + std::to_string(m);
+        case 3:
+            return "x86 (i386)";
+        case 40:
+            return "ARM";
+        case 62:
+            return "x86-64";
+        case 183:
+            return "AArch64";
+        case 243:
+            return "RISC-V";
+        default:
+            return "machine " + std::to_string(m);
     }
 }
 

@@ -32,8 +32,8 @@ McuMap make_328p() {
     m.vector[2][kCompB] = 8;
     m.vector[2][kOvf] = 9;
     // ASSR keeps EXCLK (6) and AS2 (5).
-    m.timer_regs = {reg::kTcnt0, reg::kTcnt2, reg::kTcnt1l, reg::kIcr1l, reg::kOcr1al, reg::kOcr1bl, reg::kAssr,
-                    reg::kAs2, 0x60};
+    m.timer_regs = {reg::kTcnt0,  reg::kTcnt2, reg::kTcnt1l, reg::kIcr1l, reg::kOcr1al,
+                    reg::kOcr1bl, reg::kAssr,  reg::kAs2,    0x60};
     return m;
 }
 
@@ -43,8 +43,8 @@ McuMap make_16() {
     m.name = "atmega16";
     m.ports = {{'A', 0x39}, {'B', 0x36}, {'C', 0x33}, {'D', 0x30}};
     // OC0 PB3, OC1A PD5, OC1B PD4, OC2 PD7 (one compare unit on Timer0 and Timer2: channel A here).
-    m.compare_outputs = {{'B', 3, 0, Channel::A}, {'D', 5, 1, Channel::A}, {'D', 4, 1, Channel::B},
-                         {'D', 7, 2, Channel::A}};
+    m.compare_outputs = {
+        {'B', 3, 0, Channel::A}, {'D', 5, 1, Channel::A}, {'D', 4, 1, Channel::B}, {'D', 7, 2, Channel::A}};
     // Table 18: TIMER2 COMP 3, TIMER2 OVF 4, TIMER1 CAPT 5, COMPA 6, COMPB 7, OVF 8, TIMER0 OVF 9, TIMER0 COMP 19.
     m.vector[0][kCompA] = 19;
     m.vector[0][kOvf] = 9;
@@ -54,8 +54,8 @@ McuMap make_16() {
     m.vector[1][kOvf] = 8;
     m.vector[2][kCompA] = 3;
     m.vector[2][kOvf] = 4;
-    m.timer_regs = {reg16::kTcnt0, reg16::kTcnt2, reg16::kTcnt1l, reg16::kIcr1l, reg16::kOcr1al, reg16::kOcr1bl,
-                    reg16::kAssr, reg16::kAs2, reg16::kAs2};
+    m.timer_regs = {reg16::kTcnt0,  reg16::kTcnt2, reg16::kTcnt1l, reg16::kIcr1l, reg16::kOcr1al,
+                    reg16::kOcr1bl, reg16::kAssr,  reg16::kAs2,    reg16::kAs2};
     return m;
 }
 
@@ -73,7 +73,9 @@ const McuMap& mcu_map(Mcu mcu) {
     return mcu == Mcu::Atmega16 ? m16 : m328p;
 }
 
-std::string modelled_mcus() { return "atmega328p, atmega16"; }
+std::string modelled_mcus() {
+    return "atmega328p, atmega16";
+}
 
 std::optional<std::pair<int, TimerFlag>> timer_flag_bit(Mcu mcu, int timer, int bit) {
     if (mcu == Mcu::Atmega16) {
@@ -84,13 +86,17 @@ std::optional<std::pair<int, TimerFlag>> timer_flag_bit(Mcu mcu, int timer, int 
         return kBits[bit];
     }
     switch (bit) {
-        case 0: return std::make_pair(timer, TimerFlag::Overflow);
-        case 1: return std::make_pair(timer, TimerFlag::CompareA);
-        case 2: return std::make_pair(timer, TimerFlag::CompareB);
+        case 0:
+            return std::make_pair(timer, TimerFlag::Overflow);
+        case 1:
+            return std::make_pair(timer, TimerFlag::CompareA);
+        case 2:
+            return std::make_pair(timer, TimerFlag::CompareB);
         case 5:
             if (timer == 1) return std::make_pair(timer, TimerFlag::Capture);
             return std::nullopt;
-        default: return std::nullopt;
+        default:
+            return std::nullopt;
     }
 }
 

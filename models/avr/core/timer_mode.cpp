@@ -12,32 +12,53 @@ constexpr TimerMode normal(std::uint16_t max) {
 
 TimerMode timer_mode_8bit(unsigned wgm) {
     switch (wgm & 7U) {
-        case 1: return {Wave::PhaseCorrect, TopSource::Fixed, 0xFF, OcrUpdate::AtTop, false};
-        case 2: return {Wave::Ctc, TopSource::OcrA, 0xFF, OcrUpdate::Immediate, false};
-        case 3: return {Wave::FastPwm, TopSource::Fixed, 0xFF, OcrUpdate::AtBottom, false};
-        case 5: return {Wave::PhaseCorrect, TopSource::OcrA, 0xFF, OcrUpdate::AtTop, true};
-        case 7: return {Wave::FastPwm, TopSource::OcrA, 0xFF, OcrUpdate::AtBottom, true};
-        default: return normal(0xFF);
+        case 1:
+            return {Wave::PhaseCorrect, TopSource::Fixed, 0xFF, OcrUpdate::AtTop, false};
+        case 2:
+            return {Wave::Ctc, TopSource::OcrA, 0xFF, OcrUpdate::Immediate, false};
+        case 3:
+            return {Wave::FastPwm, TopSource::Fixed, 0xFF, OcrUpdate::AtBottom, false};
+        case 5:
+            return {Wave::PhaseCorrect, TopSource::OcrA, 0xFF, OcrUpdate::AtTop, true};
+        case 7:
+            return {Wave::FastPwm, TopSource::OcrA, 0xFF, OcrUpdate::AtBottom, true};
+        default:
+            return normal(0xFF);
     }
 }
 
 TimerMode timer_mode_16bit(unsigned wgm) {
     switch (wgm & 15U) {
-        case 1: return {Wave::PhaseCorrect, TopSource::Fixed, 0x00FF, OcrUpdate::AtTop, false};
-        case 2: return {Wave::PhaseCorrect, TopSource::Fixed, 0x01FF, OcrUpdate::AtTop, false};
-        case 3: return {Wave::PhaseCorrect, TopSource::Fixed, 0x03FF, OcrUpdate::AtTop, false};
-        case 4: return {Wave::Ctc, TopSource::OcrA, 0xFFFF, OcrUpdate::Immediate, false};
-        case 5: return {Wave::FastPwm, TopSource::Fixed, 0x00FF, OcrUpdate::AtBottom, false};
-        case 6: return {Wave::FastPwm, TopSource::Fixed, 0x01FF, OcrUpdate::AtBottom, false};
-        case 7: return {Wave::FastPwm, TopSource::Fixed, 0x03FF, OcrUpdate::AtBottom, false};
-        case 8: return {Wave::PhaseFreqCorrect, TopSource::Icr, 0xFFFF, OcrUpdate::AtBottom, false};
-        case 9: return {Wave::PhaseFreqCorrect, TopSource::OcrA, 0xFFFF, OcrUpdate::AtBottom, true};
-        case 10: return {Wave::PhaseCorrect, TopSource::Icr, 0xFFFF, OcrUpdate::AtTop, false};
-        case 11: return {Wave::PhaseCorrect, TopSource::OcrA, 0xFFFF, OcrUpdate::AtTop, true};
-        case 12: return {Wave::Ctc, TopSource::Icr, 0xFFFF, OcrUpdate::Immediate, false};
-        case 14: return {Wave::FastPwm, TopSource::Icr, 0xFFFF, OcrUpdate::AtBottom, true};
-        case 15: return {Wave::FastPwm, TopSource::OcrA, 0xFFFF, OcrUpdate::AtBottom, true};
-        default: return normal(0xFFFF);
+        case 1:
+            return {Wave::PhaseCorrect, TopSource::Fixed, 0x00FF, OcrUpdate::AtTop, false};
+        case 2:
+            return {Wave::PhaseCorrect, TopSource::Fixed, 0x01FF, OcrUpdate::AtTop, false};
+        case 3:
+            return {Wave::PhaseCorrect, TopSource::Fixed, 0x03FF, OcrUpdate::AtTop, false};
+        case 4:
+            return {Wave::Ctc, TopSource::OcrA, 0xFFFF, OcrUpdate::Immediate, false};
+        case 5:
+            return {Wave::FastPwm, TopSource::Fixed, 0x00FF, OcrUpdate::AtBottom, false};
+        case 6:
+            return {Wave::FastPwm, TopSource::Fixed, 0x01FF, OcrUpdate::AtBottom, false};
+        case 7:
+            return {Wave::FastPwm, TopSource::Fixed, 0x03FF, OcrUpdate::AtBottom, false};
+        case 8:
+            return {Wave::PhaseFreqCorrect, TopSource::Icr, 0xFFFF, OcrUpdate::AtBottom, false};
+        case 9:
+            return {Wave::PhaseFreqCorrect, TopSource::OcrA, 0xFFFF, OcrUpdate::AtBottom, true};
+        case 10:
+            return {Wave::PhaseCorrect, TopSource::Icr, 0xFFFF, OcrUpdate::AtTop, false};
+        case 11:
+            return {Wave::PhaseCorrect, TopSource::OcrA, 0xFFFF, OcrUpdate::AtTop, true};
+        case 12:
+            return {Wave::Ctc, TopSource::Icr, 0xFFFF, OcrUpdate::Immediate, false};
+        case 14:
+            return {Wave::FastPwm, TopSource::Icr, 0xFFFF, OcrUpdate::AtBottom, true};
+        case 15:
+            return {Wave::FastPwm, TopSource::OcrA, 0xFFFF, OcrUpdate::AtBottom, true};
+        default:
+            return normal(0xFFFF);
     }
 }
 

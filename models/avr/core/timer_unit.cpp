@@ -26,9 +26,12 @@ TimerMode TimerUnit::mode() const {
 std::uint16_t TimerUnit::top() const {
     const TimerMode m = mode();
     switch (m.top_source) {
-        case TopSource::OcrA: return m_ocr[idx(Channel::A)];
-        case TopSource::Icr: return m_icr;
-        case TopSource::Fixed: break;
+        case TopSource::OcrA:
+            return m_ocr[idx(Channel::A)];
+        case TopSource::Icr:
+            return m_icr;
+        case TopSource::Fixed:
+            break;
     }
     return std::min<std::uint16_t>(m.fixed_top, max());
 }
@@ -119,10 +122,17 @@ void TimerUnit::apply(Channel ch, OcAction a, Cycle c) {
     bool& oc = m_oc[idx(ch)];
     const bool before = oc;
     switch (a) {
-        case OcAction::None: return;
-        case OcAction::Toggle: oc = !oc; break;
-        case OcAction::Clear: oc = false; break;
-        case OcAction::Set: oc = true; break;
+        case OcAction::None:
+            return;
+        case OcAction::Toggle:
+            oc = !oc;
+            break;
+        case OcAction::Clear:
+            oc = false;
+            break;
+        case OcAction::Set:
+            oc = true;
+            break;
     }
     if (oc != before && output(ch).connected) m_sink.timer_output(m_spec.name, c);
 }
@@ -179,9 +189,12 @@ void TimerUnit::step(Cycle c) {
     const bool tov = [&] {
         switch (m.wave) {
             case Wave::Normal:
-            case Wave::Ctc: return v == max();
-            case Wave::FastPwm: return leaves_top || wraps_at_max;
-            default: return leaves_bottom;
+            case Wave::Ctc:
+                return v == max();
+            case Wave::FastPwm:
+                return leaves_top || wraps_at_max;
+            default:
+                return leaves_bottom;
         }
     }();
     if (tov) m_sink.timer_flag(m_spec.name, TimerFlag::Overflow, c);

@@ -37,7 +37,9 @@ uart::FrameFormat UsartUnit::format() const {
     return f;
 }
 
-bool UsartUnit::tx_enabled() const { return (m_ucsrb & kTxen) != 0; }
+bool UsartUnit::tx_enabled() const {
+    return (m_ucsrb & kTxen) != 0;
+}
 
 bool UsartUnit::rx_enabled_at(Cycle c) const {
     bool on = false;

@@ -113,7 +113,7 @@ private:
         std::vector<bool> bits;  // bit k is on the line during [start + k*bit, start + (k+1)*bit)
         Cycle start = 0;
         std::int64_t bit = 1;
-        std::size_t next = 1;  // next bit boundary to process (bits.size() = end of the frame)
+        std::size_t next = 1;                  // next bit boundary to process (bits.size() = end of the frame)
         std::optional<std::size_t> log_index;  // none when the logs are not kept
     };
     [[nodiscard]] bool tx_enabled() const;

@@ -6,7 +6,9 @@
 
 namespace cnc::fpga {
 
-TimePs clock_period_ps(const FpgaConfig& cfg) { return kPsPerSec / static_cast<TimePs>(cfg.clk_hz); }
+TimePs clock_period_ps(const FpgaConfig& cfg) {
+    return kPsPerSec / static_cast<TimePs>(cfg.clk_hz);
+}
 
 namespace {
 void require(bool ok, const char* key, const std::string& what) {

@@ -9,14 +9,14 @@ void LineHistory::add(TimePs t_ps, bool level) {
 }
 
 bool LineHistory::level_before(TimePs t_ps) const {
-    const auto it = std::lower_bound(m_changes.begin(), m_changes.end(), t_ps,
-                                     [](const Edge& e, TimePs t) { return e.t_ps < t; });
+    const auto it =
+        std::lower_bound(m_changes.begin(), m_changes.end(), t_ps, [](const Edge& e, TimePs t) { return e.t_ps < t; });
     return it == m_changes.begin() ? m_level_before : std::prev(it)->level;
 }
 
 std::optional<TimePs> LineHistory::first_change_at_or_after(TimePs t_ps) const {
-    const auto it = std::lower_bound(m_changes.begin(), m_changes.end(), t_ps,
-                                     [](const Edge& e, TimePs t) { return e.t_ps < t; });
+    const auto it =
+        std::lower_bound(m_changes.begin(), m_changes.end(), t_ps, [](const Edge& e, TimePs t) { return e.t_ps < t; });
     if (it == m_changes.end()) return std::nullopt;
     return it->t_ps;
 }

@@ -8,7 +8,7 @@
 namespace cnc::fpga {
 
 struct MotionFields {
-    std::uint8_t motion = 0;     // b0[1:0]
+    std::uint8_t motion = 0;  // b0[1:0]
     std::int32_t steps_x = 0;
     std::int32_t steps_y = 0;
     std::uint16_t feed = 0;

@@ -89,8 +89,7 @@ StepSchedule::StepSchedule(const MoveInputs& in, bool dir_x_before, bool dir_y_b
     auto last_edge = [](std::uint32_t steps, std::uint32_t period) -> std::int64_t {
         return steps == 0 || period == 0 ? 0 : std::int64_t{steps} * period - 1;
     };
-    const std::int64_t exit_edge =
-        std::max(last_edge(abs_x, m_periods.x_cycles), last_edge(abs_y, m_periods.y_cycles));
+    const std::int64_t exit_edge = std::max(last_edge(abs_x, m_periods.x_cycles), last_edge(abs_y, m_periods.y_cycles));
     m_run_cycles = exit_edge + 1;
     m_x = AxisPulses(abs_x, m_periods.x_cycles, cfg.pulse_high_cycles, exit_edge);
     m_y = AxisPulses(abs_y, m_periods.y_cycles, cfg.pulse_high_cycles, exit_edge);

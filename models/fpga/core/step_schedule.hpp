@@ -26,7 +26,9 @@ namespace cnc::fpga {
 // SETUP: abs = steps[31] ? ~steps+1 : steps (so INT32_MIN gives 2^31).
 [[nodiscard]] std::uint32_t abs_steps(std::int32_t steps);
 // SETUP: dir = (steps[31] == 0): positive and zero counts give DIR = 1.
-[[nodiscard]] constexpr bool dir_level(std::int32_t steps) { return steps >= 0; }
+[[nodiscard]] constexpr bool dir_level(std::int32_t steps) {
+    return steps >= 0;
+}
 
 struct StepPeriods {
     std::uint32_t x_cycles = 0;
@@ -93,7 +95,7 @@ public:
     [[nodiscard]] const StepPeriods& periods() const { return m_periods; }
     [[nodiscard]] bool dir_x() const { return m_dir_x; }
     [[nodiscard]] bool dir_y() const { return m_dir_y; }
-    [[nodiscard]] bool has_run() const { return m_has_run; }           // false: zero-length, no RUN state
+    [[nodiscard]] bool has_run() const { return m_has_run; }  // false: zero-length, no RUN state
     [[nodiscard]] std::int64_t run_start() const { return m_run_start; }
     [[nodiscard]] std::int64_t run_cycles() const { return m_run_cycles; }  // N (0 without RUN)
     [[nodiscard]] std::int64_t busy_fall() const { return m_run_start + m_run_cycles; }

@@ -15,7 +15,7 @@ struct UartRxTiming {
     std::int64_t start_check = 0;  // S_START at count == HALF_BIT: still low -> S_RECEIVE, else glitch -> S_IDLE
     std::int64_t first_bit = 0;    // S_RECEIVE at count == FULL_BIT: rx_shift[0]; then one bit every FULL_BIT
     std::int64_t full_bit = 0;
-    std::int64_t stop = 0;         // S_STOP at count == FULL_BIT: rx_valid is high from this edge if rx_s2 == 1
+    std::int64_t stop = 0;  // S_STOP at count == FULL_BIT: rx_valid is high from this edge if rx_s2 == 1
 
     explicit UartRxTiming(const FpgaConfig& cfg);
     [[nodiscard]] std::int64_t bit(int i) const { return first_bit + full_bit * i; }
@@ -33,8 +33,8 @@ struct CycleEdge {
 struct UartTxFrame {
     std::vector<CycleEdge> tx_changes;  // changes of the idle-high tx line: start bit, data LSB first, stop
     std::int64_t busy_rise = 0;
-    std::int64_t busy_fall = 0;         // STOP ends at clk_count == FULL_BIT-1
-    std::int64_t idle_from = 0;         // first edge at which IDLE can see the next tx_start
+    std::int64_t busy_fall = 0;  // STOP ends at clk_count == FULL_BIT-1
+    std::int64_t idle_from = 0;  // first edge at which IDLE can see the next tx_start
 };
 [[nodiscard]] UartTxFrame uart_tx_frame(std::uint8_t byte, const FpgaConfig& cfg);
 

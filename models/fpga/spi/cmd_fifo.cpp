@@ -21,7 +21,9 @@ void CmdFifo::keep_logs(bool on) {
     m_core.keep_push_log(on);
 }
 
-bool CmdFifo::readable(std::size_t axis, std::int64_t edge) const { return m_core.readable(axis, edge); }
+bool CmdFifo::readable(std::size_t axis, std::int64_t edge) const {
+    return m_core.readable(axis, edge);
+}
 
 std::optional<FifoRead> CmdFifo::read(std::size_t axis, std::int64_t edge) {
     const std::optional<FifoRead> r = m_core.read(axis, edge);

@@ -74,8 +74,8 @@ std::int32_t SpiFpgaTop::count(std::size_t axis) const {
 }
 
 std::uint64_t SpiFpgaTop::activations() const {
-    return slave.activations() + pulse_gen_x.activations() + pulse_gen_y.activations() +
-           step_counter_x.activations() + step_counter_y.activations() + laser_latch.activations();
+    return slave.activations() + pulse_gen_x.activations() + pulse_gen_y.activations() + step_counter_x.activations() +
+           step_counter_y.activations() + laser_latch.activations();
 }
 
 void SpiFpgaTop::add_traces(sc_core::sc_trace_file* tf) const {

@@ -46,7 +46,7 @@ public:
     [[nodiscard]] std::uint64_t applied_count(std::size_t axis) const;  // taken or not
     [[nodiscard]] const std::vector<AppliedFrame>& applied_frames() const { return fifo.applied(); }
     [[nodiscard]] std::int32_t count(std::size_t axis) const;  // step counter now (all updates so far)
-    [[nodiscard]] std::uint64_t activations() const;  // every process wake (per edge, never per clock)
+    [[nodiscard]] std::uint64_t activations() const;           // every process wake (per edge, never per clock)
     void add_traces(sc_core::sc_trace_file* tf) const;
 
 private:

@@ -17,7 +17,7 @@ SpiSlave::SpiSlave(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg
       m_period_ps(clock_period_ps(cfg)),
       m_writer("writer") {
     SC_HAS_PROCESS(SpiSlave);
-    miso.initialize(false);  // not selected: MISO low
+    miso.initialize(false);    // not selected: MISO low
     SC_METHOD(on_pin_change);  // also at time 0, so that pins bound to non-reset levels are sampled at edge 1
     sensitive << sclk << mosi << ss;
     SC_METHOD(on_sample);
@@ -30,7 +30,9 @@ void SpiSlave::end_of_elaboration() {
         throw std::logic_error(std::string(name()) + ": bind one step counter per axis");
 }
 
-std::uint64_t SpiSlave::activations() const { return m_activations + m_writer.activations(); }
+std::uint64_t SpiSlave::activations() const {
+    return m_activations + m_writer.activations();
+}
 
 void SpiSlave::on_pin_change() {
     ++m_activations;

@@ -19,8 +19,7 @@ void StepCounter::on_step_rise() {
     ++m_activations;
     const TimePs now = now_ps();
     // STEP is a register of this clock domain: it only changes on clock edges.
-    if (now % m_period_ps != 0)
-        throw std::logic_error(std::string(name()) + ": STEP rose between clock edges");
+    if (now % m_period_ps != 0) throw std::logic_error(std::string(name()) + ": STEP rose between clock edges");
     // DIR as registered at that edge (setup >= 1 keeps it from changing at the same edge).
     m_history.add_rise(now / m_period_ps, dir.read());
 }

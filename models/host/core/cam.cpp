@@ -16,7 +16,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr std::int64_t kInt32Min = -2147483648LL;  // seed 000 §3.4.6: StepsX/StepsY are int32
 constexpr std::int64_t kInt32Max = 2147483647LL;
-constexpr double kMaxFeed = 65535.0;               // seed 000 §3.4.6: FeedRate is uint16, mm/min
+constexpr double kMaxFeed = 65535.0;  // seed 000 §3.4.6: FeedRate is uint16, mm/min
 // Above 2^53 a double no longer holds every integer, so absolute step positions would stop being exact.
 constexpr double kMaxAbsoluteSteps = 9007199254740992.0;
 // Guard against a tolerance so small that an arc becomes millions of packets (a sign of a wrong setting).
@@ -41,8 +41,8 @@ std::int64_t absolute_steps(double pos_mm, double steps_per_mm, const std::strin
 
 void check_int32(std::int64_t steps, const std::string& where, const char* name) {
     if (steps < kInt32Min || steps > kInt32Max) {
-        throw BadInput(where, std::string(name) + " " + std::to_string(steps) +
-                                  " outside int32 (-2147483648..2147483647)");
+        throw BadInput(where,
+                       std::string(name) + " " + std::to_string(steps) + " outside int32 (-2147483648..2147483647)");
     }
 }
 
@@ -118,8 +118,7 @@ int window_steps(double longest_chord_mm, double steps_per_mm) {
 
 // Candidate steps on one axis: the floor and ceiling of the ideal position when w is 0, else the rounded
 // position +-w.
-std::pair<std::int64_t, std::int64_t> candidate_steps(double pos_mm, double steps_per_mm, std::int64_t rounded,
-                                                      int w) {
+std::pair<std::int64_t, std::int64_t> candidate_steps(double pos_mm, double steps_per_mm, std::int64_t rounded, int w) {
     if (w > 0) return {rounded - w, rounded + w};
     const double steps = pos_mm * steps_per_mm;
     return {static_cast<std::int64_t>(std::floor(steps)), static_cast<std::int64_t>(std::ceil(steps))};
@@ -152,11 +151,10 @@ std::optional<SnappedEnd> snap_end(const ArcChords& arc, std::int64_t k, double 
             const geom::Vec2 p = grid.mm(x, y);
             const double travelled = arc.travelled_rad(p, arc.ideal_rad(k));
             if (!(travelled > after_rad && travelled < before_rad)) continue;
-            const SnappedEnd c{{x, y}, travelled, std::fabs(geom::distance(p, arc.center) - arc.r_mm),
-                               geom::distance(p, ideal)};
-            const bool better =
-                !best || c.residual_mm < best->residual_mm - kTieMm ||
-                (c.residual_mm <= best->residual_mm + kTieMm && c.offset_mm < best->offset_mm - kTieMm);
+            const SnappedEnd c{
+                {x, y}, travelled, std::fabs(geom::distance(p, arc.center) - arc.r_mm), geom::distance(p, ideal)};
+            const bool better = !best || c.residual_mm < best->residual_mm - kTieMm ||
+                                (c.residual_mm <= best->residual_mm + kTieMm && c.offset_mm < best->offset_mm - kTieMm);
             if (better) best = c;  // scanning X then Y upwards: on a full tie the smaller X, then Y, stays
         }
     }
@@ -221,11 +219,12 @@ std::int64_t packet_feed(const ProgrammedMove& move, const MotionSegment& seg, c
     }
     const double feed = opt.feed_rounding == FeedRounding::Round ? std::round(axis_feed) : std::floor(axis_feed);
     if (feed < 1.0) {
-        throw BadInput(where, "feed " + number_text(axis_feed) +
-                                  " mm/min rounds to 0 (packet FeedRate must be 1..65535 mm/min)");
+        throw BadInput(
+            where, "feed " + number_text(axis_feed) + " mm/min rounds to 0 (packet FeedRate must be 1..65535 mm/min)");
     }
     if (feed > kMaxFeed) {
-        throw BadInput(where, "feed " + number_text(feed) + " mm/min outside the packet FeedRate range 1..65535 mm/min");
+        throw BadInput(where,
+                       "feed " + number_text(feed) + " mm/min outside the packet FeedRate range 1..65535 mm/min");
     }
     return static_cast<std::int64_t>(feed);
 }

@@ -45,10 +45,10 @@ struct CamOptions {
     ChordEnds chord_ends = ChordEnds::OnArc;  // see ChordEnds
 };
 
-struct MotionSegment {                // one motion packet = one steps-file row
-    int index = 0;                    // segment number, 1-based
+struct MotionSegment {                      // one motion packet = one steps-file row
+    int index = 0;                          // segment number, 1-based
     MotionKind motion = MotionKind::Rapid;  // packet motion byte 0..3 (chords of G2/G3 keep 2/3)
-    std::int64_t steps_x = 0;         // signed; int64 so that values outside int32 are detected, not wrapped
+    std::int64_t steps_x = 0;               // signed; int64 so that values outside int32 are detected, not wrapped
     std::int64_t steps_y = 0;
     std::int64_t feed = 0;            // packet FeedRate: dominant-axis feed, mm/min (before the uint16 range check)
     double path_feed_mm_per_min = 0;  // programmed F (steps-file documentation column PathFeed)

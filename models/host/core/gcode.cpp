@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <deque>
 #include <fstream>
-#include <memory>
 #include <map>
+#include <memory>
 
 #include "common/bad_input.hpp"
 #include "host/core/gcode_lexer.hpp"
@@ -150,7 +150,8 @@ private:
 
     void ignore(const IgnoredUse& use) {
         if (m_opt.policy == GcodePolicy::Strict) {
-            m_problems.unsupported(use.word, m_line, "not executed by this machine (strict policy; " + use.reason + ")");
+            m_problems.unsupported(use.word, m_line,
+                                   "not executed by this machine (strict policy; " + use.reason + ")");
             return;
         }
         auto it = std::find_if(m_program.ignored.begin(), m_program.ignored.end(),
@@ -170,7 +171,8 @@ private:
         if (b.f) set_feed(*b.f);
         const bool dwell = b.non_modal == 40;
         if (b.s && !(dwell && !b.p)) m_power_s = *b.s;
-        if (b.laser) m_laser = *b.laser == 30 ? LaserMode::Constant : *b.laser == 40 ? LaserMode::Dynamic : LaserMode::Off;
+        if (b.laser)
+            m_laser = *b.laser == 30 ? LaserMode::Constant : *b.laser == 40 ? LaserMode::Dynamic : LaserMode::Off;
         if (dwell) do_dwell(b);
         if (b.plane) set_plane(*b.plane);
         if (b.coord_system) m_cs = coord_index(*b.coord_system);
@@ -216,7 +218,9 @@ private:
 
     void set_path_mode(const BlockWords& b) {
         PathControl pc;
-        pc.mode = *b.path_mode == 610 ? PathMode::ExactStop : *b.path_mode == 611 ? PathMode::ExactPath : PathMode::Blend;
+        pc.mode = *b.path_mode == 610   ? PathMode::ExactStop
+                  : *b.path_mode == 611 ? PathMode::ExactPath
+                                        : PathMode::Blend;
         if (b.p) {
             if (pc.mode != PathMode::Blend) throw BadInput(m_where, "P is the G64 blend tolerance: not with G61");
             if (!(*b.p >= 0.0)) throw BadInput(m_where, "G64 P (path tolerance) must be >= 0");
@@ -242,16 +246,31 @@ private:
         }
         if (b.i || b.j || b.r) throw BadInput(m_where, "I, J and R are allowed only with G2/G3");
         switch (c) {
-            case 100: return set_work_offset(b);
-            case 280: return go_home(b, m_home28);
-            case 300: return go_home(b, m_home30);
-            case 281: m_home28 = machine_now(); return;
-            case 301: m_home30 = machine_now(); return;
-            case 920: return set_g92(b);
-            case 921: m_g92 = m_g92_saved = Xyz{}; return;
-            case 922: m_g92 = Xyz{}; return;
-            case 923: m_g92 = m_g92_saved; return;
-            default: return;
+            case 100:
+                return set_work_offset(b);
+            case 280:
+                return go_home(b, m_home28);
+            case 300:
+                return go_home(b, m_home30);
+            case 281:
+                m_home28 = machine_now();
+                return;
+            case 301:
+                m_home30 = machine_now();
+                return;
+            case 920:
+                return set_g92(b);
+            case 921:
+                m_g92 = m_g92_saved = Xyz{};
+                return;
+            case 922:
+                m_g92 = Xyz{};
+                return;
+            case 923:
+                m_g92 = m_g92_saved;
+                return;
+            default:
+                return;
         }
     }
 
@@ -299,9 +318,7 @@ private:
         rapid_to(to);
     }
 
-    void rapid_to(const Xyz& to) {
-        emit(MotionKind::Rapid, geom::Segment::line(m_pos, {to.x, to.y}), to.z, 0.0);
-    }
+    void rapid_to(const Xyz& to) { emit(MotionKind::Rapid, geom::Segment::line(m_pos, {to.x, to.y}), to.z, 0.0); }
 
     double axis_target(const std::optional<double>& word, double pos, double offset, bool machine_coords) const {
         if (!word) return pos;
@@ -325,7 +342,8 @@ private:
         const MotionKind kind = *m_motion;
         const std::string g = "G" + std::to_string(static_cast<int>(kind));
         const bool is_arc = kind == MotionKind::ArcCW || kind == MotionKind::ArcCCW;
-        if (!is_arc && has_arc_words) throw BadInput(m_where, "I, J and R are allowed only with G2/G3 (motion is " + g + ")");
+        if (!is_arc && has_arc_words)
+            throw BadInput(m_where, "I, J and R are allowed only with G2/G3 (motion is " + g + ")");
         if (machine_coords && (is_arc || m_absolute == false)) {
             throw BadInput(m_where, "G53 needs G0 or G1 in absolute mode (G90)");
         }
@@ -340,8 +358,8 @@ private:
             throw BadInput(m_where, g + " needs a feed rate but no F has been programmed");
         }
         const Xyz to = target(b, machine_coords);
-        const geom::Segment path = is_arc ? arc(b, {to.x, to.y}, kind == MotionKind::ArcCCW, g)
-                                          : geom::Segment::line(m_pos, {to.x, to.y});
+        const geom::Segment path =
+            is_arc ? arc(b, {to.x, to.y}, kind == MotionKind::ArcCCW, g) : geom::Segment::line(m_pos, {to.x, to.y});
         const double other = std::max(b.a ? std::fabs(axis_target(b.a, m_a, 0.0, false) - m_a) : 0.0,
                                       b.e ? std::fabs(axis_target(b.e, m_e, 0.0, false) - m_e) : 0.0);
         if (b.a) m_a = axis_target(b.a, m_a, 0.0, false);
@@ -394,7 +412,8 @@ private:
             center = center_from_radius(*b.r * m_scale, target, ccw, g);
         } else if (m_arc_absolute) {
             const Xyz& cs = m_cs_offset[m_cs];
-            center = {b.i ? *b.i * m_scale + cs.x + m_g92.x : m_pos.x_mm, b.j ? *b.j * m_scale + cs.y + m_g92.y : m_pos.y_mm};
+            center = {b.i ? *b.i * m_scale + cs.x + m_g92.x : m_pos.x_mm,
+                      b.j ? *b.j * m_scale + cs.y + m_g92.y : m_pos.y_mm};
         } else {
             center = m_pos + geom::Vec2{b.i.value_or(0.0), b.j.value_or(0.0)} * m_scale;
         }
@@ -415,7 +434,8 @@ private:
     // of at most 180 degrees, R < 0 the longer one. For a short CW arc the centre is right of start->end.
     geom::Vec2 center_from_radius(double r_mm, geom::Vec2 target, bool ccw, const std::string& g) const {
         const double d = geom::distance(m_pos, target);
-        if (d <= kSamePointMm) throw BadInput(m_where, g + " with R needs an end point away from the start (use I/J for a full circle)");
+        if (d <= kSamePointMm)
+            throw BadInput(m_where, g + " with R needs an end point away from the start (use I/J for a full circle)");
         if (r_mm == 0.0) throw BadInput(m_where, g + " radius R must not be 0");
         const double half = d / 2.0;
         const double r = std::fabs(r_mm);
@@ -438,33 +458,36 @@ private:
     std::string m_where;
     int m_line = 0;
     int m_tape_marks = 0;
-    geom::Vec2 m_pos;                          // machine mm
-    double m_z = 0.0;                          // machine mm
-    double m_a = 0.0, m_e = 0.0;               // program units of the A and E axes
+    geom::Vec2 m_pos;                              // machine mm
+    double m_z = 0.0;                              // machine mm
+    double m_a = 0.0, m_e = 0.0;                   // program units of the A and E axes
     std::array<Xyz, kCoordSystems> m_cs_offset{};  // G54 .. G59.3 origins, machine mm
-    std::size_t m_cs = 0;                      // G54
+    std::size_t m_cs = 0;                          // G54
     Xyz m_g92{}, m_g92_saved{};
-    Xyz m_home28{}, m_home30{};                // G28/G30 homes: machine 0 until G28.1/G30.1
-    double m_scale = 1.0;                      // mm per program unit (G21 default)
-    bool m_absolute = true;                    // G90 default
-    bool m_arc_absolute = false;               // G91.1 default: I/J relative to the start
-    bool m_inverse_time = false;               // G94 default
-    Code10 m_plane = 170;                      // G17
-    LaserMode m_laser = LaserMode::Off;        // M5 until the program says M3/M4
+    Xyz m_home28{}, m_home30{};          // G28/G30 homes: machine 0 until G28.1/G30.1
+    double m_scale = 1.0;                // mm per program unit (G21 default)
+    bool m_absolute = true;              // G90 default
+    bool m_arc_absolute = false;         // G91.1 default: I/J relative to the start
+    bool m_inverse_time = false;         // G94 default
+    Code10 m_plane = 170;                // G17
+    LaserMode m_laser = LaserMode::Off;  // M5 until the program says M3/M4
     std::optional<double> m_power_s;
     std::optional<PathControl> m_path_control;
     std::optional<MotionKind> m_motion;
     std::optional<double> m_feed_mm_per_min;
-    std::optional<double> m_f_word;            // F as written (G93: 1 / minutes)
+    std::optional<double> m_f_word;  // F as written (G93: 1 / minutes)
 };
 
 }  // namespace
 
 const char* to_string(WaitCause cause) {
     switch (cause) {
-        case WaitCause::Dwell: return "dwell";
-        case WaitCause::OperatorPause: return "operator_pause";
-        case WaitCause::OtherAxes: return "z_moves";
+        case WaitCause::Dwell:
+            return "dwell";
+        case WaitCause::OperatorPause:
+            return "operator_pause";
+        case WaitCause::OtherAxes:
+            return "z_moves";
     }
     return "?";
 }
@@ -504,7 +527,8 @@ public:
             line.push_back(static_cast<char>(c));
         }
         if (m_in.bad()) throw BadInput(m_file, "read error");
-        if (m_first && line.rfind(kByteOrderMark, 0) == 0) line.erase(0, std::char_traits<char>::length(kByteOrderMark));
+        if (m_first && line.rfind(kByteOrderMark, 0) == 0)
+            line.erase(0, std::char_traits<char>::length(kByteOrderMark));
         m_first = false;
         return ended || !line.empty();
     }
@@ -526,8 +550,7 @@ struct GcodeStream::State {
     bool ended = false;
 };
 
-GcodeStream::GcodeStream(std::istream& in, const std::string& filename, const InterpreterOptions& opt,
-                         bool keep_moves)
+GcodeStream::GcodeStream(std::istream& in, const std::string& filename, const InterpreterOptions& opt, bool keep_moves)
     : m_state(std::make_unique<State>(in, filename, opt, keep_moves)) {}
 
 GcodeStream::GcodeStream(const std::string& path, const InterpreterOptions& opt, bool keep_moves)
@@ -551,9 +574,13 @@ std::optional<ProgrammedMove> GcodeStream::next() {
     return move;
 }
 
-const Program& GcodeStream::program() const { return m_state->interp.program(); }
+const Program& GcodeStream::program() const {
+    return m_state->interp.program();
+}
 
-Program GcodeStream::take() { return m_state->interp.take(); }
+Program GcodeStream::take() {
+    return m_state->interp.take();
+}
 
 Program interpret(std::istream& in, const std::string& filename, const InterpreterOptions& opt) {
     GcodeStream stream(in, filename, opt, true);

@@ -45,12 +45,12 @@ struct ProgrammedMove {
     // XY path speed, mm/min: the programmed F (rapids: InterpreterOptions::rapid_feed_mm_per_min), less the
     // share of a simultaneous Z move, so that the XY path takes the time the whole move takes at F.
     double feed_mm_per_min;
-    bool laser_on;           // M3 or M4 in force (programmed state; the FPGA switches the laser by motion code)
-    int line;                // 1-based source line
+    bool laser_on;  // M3 or M4 in force (programmed state; the FPGA switches the laser by motion code)
+    int line;       // 1-based source line
     LaserMode laser_mode = LaserMode::Off;
-    std::optional<double> power_s;              // S in force (none: never programmed)
-    std::optional<PathControl> path_control;    // G61/G61.1/G64 in force (none: the planner's default)
-    double z_start_mm = 0.0;                    // machine Z, mm (no XY architecture has Z STEP pins)
+    std::optional<double> power_s;            // S in force (none: never programmed)
+    std::optional<PathControl> path_control;  // G61/G61.1/G64 in force (none: the planner's default)
+    double z_start_mm = 0.0;                  // machine Z, mm (no XY architecture has Z STEP pins)
     double z_end_mm = 0.0;
     // The job's intent for the laser on this move: M3/M4 with S > 0 (or no S programmed) on a cutting move.
     [[nodiscard]] bool laser_intended() const {
@@ -70,8 +70,8 @@ struct HostWait {
 
 // A word the machine accepts and does nothing with, with every line it stood on.
 struct IgnoredWord {
-    std::string word;     // "T1", "M6", "G40", "/" (block delete)
-    std::string reason;   // why it has no effect here
+    std::string word;    // "T1", "M6", "G40", "/" (block delete)
+    std::string reason;  // why it has no effect here
     std::vector<int> lines;
 };
 
@@ -80,7 +80,7 @@ struct InterpreterOptions {
     double rapid_feed_mm_per_min = 1200.0;  // seed 000 §7.3 test log: G0 packets carry F=1200
     geom::Vec2 start_mm{};                  // machine position when the program starts
     GcodePolicy policy = GcodePolicy::Lenient;
-    double operator_pause_s = 5.0;          // M0/M1/M60: the time an operator takes to press cycle start
+    double operator_pause_s = 5.0;  // M0/M1/M60: the time an operator takes to press cycle start
     // machine.z.max_velocity_mm_per_s: a move is slowed so that its Z part stays within it.
     double z_max_feed_mm_per_min = std::numeric_limits<double>::infinity();
 };
@@ -88,11 +88,11 @@ struct InterpreterOptions {
 struct Program {
     std::string filename;
     std::vector<ProgrammedMove> moves;
-    std::vector<HostWait> waits;            // in program order
-    std::vector<IgnoredWord> ignored;       // in order of first appearance
-    double z_travel_mm = 0.0;               // Z travel, which the XY machines time as host waits
-    int lines = 0;                          // source lines read (up to the program end)
-    std::size_t move_count = 0;             // moves made: `moves` holds them unless the program was streamed
+    std::vector<HostWait> waits;       // in program order
+    std::vector<IgnoredWord> ignored;  // in order of first appearance
+    double z_travel_mm = 0.0;          // Z travel, which the XY machines time as host waits
+    int lines = 0;                     // source lines read (up to the program end)
+    std::size_t move_count = 0;        // moves made: `moves` holds them unless the program was streamed
 
     // Total seconds of the waits of one cause.
     [[nodiscard]] double wait_s(WaitCause cause) const;

@@ -15,11 +15,19 @@ namespace {
 
 constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
-bool is_number_char(char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-'; }
-bool is_alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
-char upper(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
+bool is_number_char(char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-';
+}
+bool is_alpha(char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) != 0;
+}
+char upper(char c) {
+    return static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+}
 
-bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool is_digit(char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
 
 // G-code numbers have no exponent: "X1e5" is X1 followed by the word E5. Written as an exponent, a number beyond
 // a double ("X1e400") is what the author meant and is refused as out of range, not blamed on an E word.
@@ -36,8 +44,9 @@ void check_exponent_range(const std::string& line, std::size_t e_at, const std::
     errno = 0;
     const double v = std::strtod(number.c_str(), nullptr);
     if (errno == ERANGE || !std::isfinite(v)) {
-        throw BadInput(where, "number '" + number + "' is out of range (G-code numbers have no exponent; this one "
-                                                   "is beyond what a double holds, 1.8e308, or below its smallest)");
+        throw BadInput(where, "number '" + number +
+                                  "' is out of range (G-code numbers have no exponent; this one "
+                                  "is beyond what a double holds, 1.8e308, or below its smallest)");
     }
 }
 

@@ -17,7 +17,8 @@ std::optional<Code10> code_of(const GcodeWord& w) {
     return static_cast<Code10>(std::lround(tenths));
 }
 
-void set_once(std::optional<Code10>& slot, Code10 code, const GcodeWord& w, const char* group, const std::string& where) {
+void set_once(std::optional<Code10>& slot, Code10 code, const GcodeWord& w, const char* group,
+              const std::string& where) {
     if (slot) throw BadInput(where, "'" + w.text + "' conflicts with another " + group + " word on the same line");
     slot = code;
 }
@@ -102,23 +103,56 @@ BlockWords group_words(const std::vector<GcodeWord>& words, const std::string& w
                 }
                 break;
             }
-            case 'X': set_value(b.x, w, where); break;
-            case 'Y': set_value(b.y, w, where); break;
-            case 'Z': set_value(b.z, w, where); break;
-            case 'A': set_value(b.a, w, where); break;
-            case 'E': set_value(b.e, w, where); break;
-            case 'I': set_value(b.i, w, where); break;
-            case 'J': set_value(b.j, w, where); break;
-            case 'R': set_value(b.r, w, where); break;
-            case 'F': set_value(b.f, w, where); break;
-            case 'P': set_value(b.p, w, where); break;
-            case 'Q': set_value(b.q, w, where); break;
-            case 'S': set_value(b.s, w, where); break;
-            case 'L': set_value(b.l, w, where); break;
-            case 'N': break;  // block number
-            case 'T': b.ignored.push_back({w.text, "tool select: the machine has one tool"}); break;
-            case 'D': b.ignored.push_back({w.text, kNoToolTable}); break;
-            case 'H': b.ignored.push_back({w.text, kNoToolTable}); break;
+            case 'X':
+                set_value(b.x, w, where);
+                break;
+            case 'Y':
+                set_value(b.y, w, where);
+                break;
+            case 'Z':
+                set_value(b.z, w, where);
+                break;
+            case 'A':
+                set_value(b.a, w, where);
+                break;
+            case 'E':
+                set_value(b.e, w, where);
+                break;
+            case 'I':
+                set_value(b.i, w, where);
+                break;
+            case 'J':
+                set_value(b.j, w, where);
+                break;
+            case 'R':
+                set_value(b.r, w, where);
+                break;
+            case 'F':
+                set_value(b.f, w, where);
+                break;
+            case 'P':
+                set_value(b.p, w, where);
+                break;
+            case 'Q':
+                set_value(b.q, w, where);
+                break;
+            case 'S':
+                set_value(b.s, w, where);
+                break;
+            case 'L':
+                set_value(b.l, w, where);
+                break;
+            case 'N':
+                break;  // block number
+            case 'T':
+                b.ignored.push_back({w.text, "tool select: the machine has one tool"});
+                break;
+            case 'D':
+                b.ignored.push_back({w.text, kNoToolTable});
+                break;
+            case 'H':
+                b.ignored.push_back({w.text, kNoToolTable});
+                break;
             case 'O':
                 if (std::isnan(w.value)) {
                     b.unsupported.push_back(w.text);
@@ -126,9 +160,14 @@ BlockWords group_words(const std::vector<GcodeWord>& words, const std::string& w
                     b.ignored.push_back({w.text, "program number"});
                 }
                 break;
-            case kParameterWord: b.unsupported.push_back("#"); break;      // parameters
-            case kExpressionWord: b.unsupported.push_back("[...]"); break;  // expressions
-            default: b.unsupported.push_back(w.text);
+            case kParameterWord:
+                b.unsupported.push_back("#");
+                break;  // parameters
+            case kExpressionWord:
+                b.unsupported.push_back("[...]");
+                break;  // expressions
+            default:
+                b.unsupported.push_back(w.text);
         }
     }
     return b;

@@ -16,7 +16,9 @@ double UnitWaitLayer::before_unit(std::size_t move) {
     return take_before(m_next_move);
 }
 
-double UnitWaitLayer::after_last() { return take_before(static_cast<std::size_t>(-1)); }
+double UnitWaitLayer::after_last() {
+    return take_before(static_cast<std::size_t>(-1));
+}
 
 UnitWaits waits_per_unit(const Program& program, const std::vector<std::size_t>& unit_moves) {
     UnitWaitLayer layer(program.waits);

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 #include <sstream>
+#include <utility>
 
 #include "common/bad_input.hpp"
 
@@ -36,9 +36,13 @@ double AxisMachine::travel_per_rev_mm() const {
     return transmission == Transmission::Belt ? belt_pitch_mm * pulley_teeth : lead_mm * screw_starts;
 }
 
-double AxisMachine::transmission_steps_per_mm() const { return steps_per_rev() * gear_ratio / travel_per_rev_mm(); }
+double AxisMachine::transmission_steps_per_mm() const {
+    return steps_per_rev() * gear_ratio / travel_per_rev_mm();
+}
 
-double AxisMachine::steps_per_mm() const { return calibrated_steps_per_mm.value_or(transmission_steps_per_mm()); }
+double AxisMachine::steps_per_mm() const {
+    return calibrated_steps_per_mm.value_or(transmission_steps_per_mm());
+}
 
 double feed_within_axis_limits(double dx_mm, double dy_mm, double feed_mm_per_min, const MachineModel& machine) {
     constexpr double kSecondsPerMinute = 60.0;

@@ -17,15 +17,15 @@ struct AxisLimits {
 };
 
 struct AxisMachine {
-    double step_angle_deg = 1.8;   // seed 000 §2.2 T3.4: NEMA17 42BYGHW208, 200 full steps/rev
-    int microsteps = 32;           // seed 000 T3.4: DRV8825 at 1/32
+    double step_angle_deg = 1.8;  // seed 000 §2.2 T3.4: NEMA17 42BYGHW208, 200 full steps/rev
+    int microsteps = 32;          // seed 000 T3.4: DRV8825 at 1/32
     Transmission transmission = Transmission::Belt;
-    int pulley_teeth = 20;         // seed 000 T3.4: GT2 20T pulley
-    double belt_pitch_mm = 2.0;    // seed 000 T3.4: GT2, 2 mm/tooth
-    double lead_mm = 8.0;          // leadscrew only; 8 mm is the common T8 screw (seed 000 gives no leadscrew values)
-    int screw_starts = 1;          // leadscrew only; travel_per_rev = lead x starts (seed 000 §3.4.2: belts only)
-    double gear_ratio = 1.0;       // motor revs per pulley/screw rev (seed 000 §3.4.2; not on its AddModel form)
-    double travel_mm = 0.0;        // TravelDistance of seed 000 §2.1; 0 = unlimited
+    int pulley_teeth = 20;       // seed 000 T3.4: GT2 20T pulley
+    double belt_pitch_mm = 2.0;  // seed 000 T3.4: GT2, 2 mm/tooth
+    double lead_mm = 8.0;        // leadscrew only; 8 mm is the common T8 screw (seed 000 gives no leadscrew values)
+    int screw_starts = 1;        // leadscrew only; travel_per_rev = lead x starts (seed 000 §3.4.2: belts only)
+    double gear_ratio = 1.0;     // motor revs per pulley/screw rev (seed 000 §3.4.2; not on its AddModel form)
+    double travel_mm = 0.0;      // TravelDistance of seed 000 §2.1; 0 = unlimited
     // A measured steps/mm (grbl's $100) that replaces the transmission's: machines are often calibrated, not
     // specified. It counts microsteps at `microsteps`, which still straps the DRV8825 MODE pins, so the motor
     // makes calibrated_steps_per_mm / microsteps full steps per mm.

@@ -21,7 +21,9 @@ std::uint32_t get_be32(const std::uint8_t* in) {
 }
 
 // Two's complement both ways without implementation-defined narrowing of out-of-range unsigned values.
-std::uint32_t to_twos(std::int32_t v) { return static_cast<std::uint32_t>(v); }
+std::uint32_t to_twos(std::int32_t v) {
+    return static_cast<std::uint32_t>(v);
+}
 std::int32_t from_twos(std::uint32_t v) {
     return v <= 0x7FFFFFFFu ? static_cast<std::int32_t>(v)
                             : static_cast<std::int32_t>(static_cast<std::int64_t>(v) - 0x100000000LL);
@@ -53,7 +55,9 @@ MotionBytes encode_motion(std::uint8_t motion, std::int32_t steps_x, std::int32_
     return b;
 }
 
-MotionBytes encode_motion(const MotionPacket& p) { return encode_motion(p.motion, p.steps_x, p.steps_y, p.feed); }
+MotionBytes encode_motion(const MotionPacket& p) {
+    return encode_motion(p.motion, p.steps_x, p.steps_y, p.feed);
+}
 
 InitPacket decode_init(const InitBytes& b) {
     if (b[0] != kInitMarker) throw std::invalid_argument("init packet must start with 0xFF");

@@ -9,10 +9,10 @@
 
 namespace cnc::host {
 
-inline constexpr std::uint8_t kInitMarker = 0xFF;        // seed 000 §4.2: first byte 0xFF = init packet
-inline constexpr std::uint8_t kAckByte = 0xAA;           // seed 000 §4.2: sent when a move completes
-inline constexpr std::size_t kInitPacketBytes = 9;       // seed 000 T3.6
-inline constexpr std::size_t kMotionPacketBytes = 11;    // seed 000 T3.6
+inline constexpr std::uint8_t kInitMarker = 0xFF;      // seed 000 §4.2: first byte 0xFF = init packet
+inline constexpr std::uint8_t kAckByte = 0xAA;         // seed 000 §4.2: sent when a move completes
+inline constexpr std::size_t kInitPacketBytes = 9;     // seed 000 T3.6
+inline constexpr std::size_t kMotionPacketBytes = 11;  // seed 000 T3.6
 
 using InitBytes = std::array<std::uint8_t, kInitPacketBytes>;
 using MotionBytes = std::array<std::uint8_t, kMotionPacketBytes>;
@@ -26,7 +26,7 @@ struct MotionPacket {
     std::uint8_t motion = 0;  // 0..3 in practice; the FPGA uses bits [1:0]
     std::int32_t steps_x = 0;
     std::int32_t steps_y = 0;
-    std::uint16_t feed = 0;   // dominant-axis feed, mm/min
+    std::uint16_t feed = 0;  // dominant-axis feed, mm/min
 };
 
 InitBytes encode_init(std::uint32_t num_x, std::uint32_t num_y);

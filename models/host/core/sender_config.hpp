@@ -6,9 +6,9 @@
 namespace cnc::host {
 
 struct SenderConfig {
-    TimePs settle_ps = 300 * kPsPerMs;        // send_steps.py: time.sleep(0.3) after opening the port
-    TimePs init_gap_ps = 50 * kPsPerMs;       // time.sleep(0.05) after the init packet (it is not ACKed)
-    TimePs ack_timeout_ps = 10 * kPsPerSec;   // ACK_TIMEOUT_SEC = 10.0
+    TimePs settle_ps = 300 * kPsPerMs;             // send_steps.py: time.sleep(0.3) after opening the port
+    TimePs init_gap_ps = 50 * kPsPerMs;            // time.sleep(0.05) after the init packet (it is not ACKed)
+    TimePs ack_timeout_ps = 10 * kPsPerSec;        // ACK_TIMEOUT_SEC = 10.0
     TimePs packet_processing_ps = 200 * kPsPerUs;  // CPython loop, struct.pack, progress print: typical 0.1-0.5 ms
     TimePs write_latency_ps = 100 * kPsPerUs;      // write() through the VCP driver to the USB request
     bool continue_on_timeout = false;  // the script asks "Continue anyway? [y/N]"; with no terminal: N, abort

@@ -14,8 +14,8 @@ enum class MachineAxis { X, Y };
 
 // Why the span lo_mm .. hi_mm on `axis` breaks the soft limits, or nothing (also when they are off or the axis
 // has no travel). The text names the axis, the value, the travel key and how to switch the check off.
-[[nodiscard]] std::optional<std::string> soft_limit_breach(const MachineModel& machine, MachineAxis axis,
-                                                           double lo_mm, double hi_mm);
+[[nodiscard]] std::optional<std::string> soft_limit_breach(const MachineModel& machine, MachineAxis axis, double lo_mm,
+                                                           double hi_mm);
 
 // Throws cnc::BadInput("file:line", ...) for the first move whose path leaves an axis' travel: lines by their
 // end points, arcs by the extremes they pass through.

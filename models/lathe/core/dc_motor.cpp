@@ -8,12 +8,12 @@ namespace cnc::lathe {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kStallAmps = 4.0;         // §3 "up to 4 A": the stall current at 22 V
-constexpr double kNoLoadAmps = 0.8;        // §3 "normal current about 0.8 A"
+constexpr double kStallAmps = 4.0;   // §3 "up to 4 A": the stall current at 22 V
+constexpr double kNoLoadAmps = 0.8;  // §3 "normal current about 0.8 A"
 constexpr double kFirstOrderInductanceH = 1e-3;
-constexpr double kSupplyVolts = 24.0;      // §3 supply
-constexpr double kDiodeVolts = 1.0;        // 1N4007 forward drop at about 1 A (datasheet)
-constexpr double kMaxStepS = 5e-6;         // RK4 step: 0.03 of the fastest time constant (L/R = 182 us)
+constexpr double kSupplyVolts = 24.0;  // §3 supply
+constexpr double kDiodeVolts = 1.0;    // 1N4007 forward drop at about 1 A (datasheet)
+constexpr double kMaxStepS = 5e-6;     // RK4 step: 0.03 of the fastest time constant (L/R = 182 us)
 constexpr double kLoadSmoothingRadPerS = 1.0;
 
 }  // namespace
@@ -44,9 +44,12 @@ DcMotorParams derive_motor(std::optional<double> second_pole_per_s) {
 
 double DcMotor::terminal_volts(BridgeMode mode, double drive_volts, double current_a) const {
     switch (mode) {
-        case BridgeMode::Drive: return drive_volts;
-        case BridgeMode::Brake: return 0.0;
-        case BridgeMode::Coast: break;
+        case BridgeMode::Drive:
+            return drive_volts;
+        case BridgeMode::Brake:
+            return 0.0;
+        case BridgeMode::Coast:
+            break;
     }
     const double clamp = kSupplyVolts + 2.0 * kDiodeVolts;
     return current_a > 0.0 ? -clamp : current_a < 0.0 ? clamp : 0.0;

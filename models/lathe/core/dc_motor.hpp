@@ -24,9 +24,9 @@ namespace cnc::lathe {
 struct DcMotorParams {
     double r_ohm = 0.0;
     double l_h = 0.0;
-    double j_kg_m2 = 0.0;          // rotor plus the reflected load, at the motor shaft
-    double b_nm_s_per_rad = 0.0;   // viscous friction at the motor shaft
-    double kt_nm_per_a = 0.0;      // = back-EMF constant, V s/rad
+    double j_kg_m2 = 0.0;         // rotor plus the reflected load, at the motor shaft
+    double b_nm_s_per_rad = 0.0;  // viscous friction at the motor shaft
+    double kt_nm_per_a = 0.0;     // = back-EMF constant, V s/rad
 };
 
 // Seed 002 §8.3 constants the derivation starts from.

@@ -7,10 +7,10 @@
 namespace cnc::lathe {
 
 struct DriveTrainParams {
-    double gear_ratio = 26.0;        // motor revolutions per gearbox output revolution (§3)
-    double belt_ratio = 1.0;         // gearbox output revolutions per leadscrew revolution (§3, [I])
-    double lead_mm = 3.175;          // leadscrew pitch (§6.1 LS_PITCH)
-    double backlash_mm = 0.0;        // play at the carriage, all three sources together (§8.2: size unknown)
+    double gear_ratio = 26.0;  // motor revolutions per gearbox output revolution (§3)
+    double belt_ratio = 1.0;   // gearbox output revolutions per leadscrew revolution (§3, [I])
+    double lead_mm = 3.175;    // leadscrew pitch (§6.1 LS_PITCH)
+    double backlash_mm = 0.0;  // play at the carriage, all three sources together (§8.2: size unknown)
 };
 
 class DriveTrain {

@@ -38,16 +38,16 @@ private:
     void touched();
 
     bool m_e = false;
-    bool m_eight_bit = true;    // after power-on reset: 8-bit interface, 1 line (datasheet "Initializing by
-    bool m_two_lines = false;   // Internal Reset Circuit")
+    bool m_eight_bit = true;   // after power-on reset: 8-bit interface, 1 line (datasheet "Initializing by
+    bool m_two_lines = false;  // Internal Reset Circuit")
     bool m_display_on = false;
     bool m_increment = true;
     bool m_shift_on_write = false;
     bool m_second_nibble = false;  // 4-bit mode: the high nibble has been transferred
     std::uint8_t m_high_nibble = 0;
     bool m_address_cgram = false;
-    int m_address = 0;          // the address counter, DDRAM (0x00..0x27, 0x40..0x67 in 2-line mode) or CGRAM
-    int m_display_shift = 0;    // columns the display has shifted right
+    int m_address = 0;        // the address counter, DDRAM (0x00..0x27, 0x40..0x67 in 2-line mode) or CGRAM
+    int m_display_shift = 0;  // columns the display has shifted right
     std::array<std::uint8_t, 80> m_ddram{};
     LcdLines m_shown;
     std::uint64_t m_changes = 0;

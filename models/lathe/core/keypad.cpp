@@ -6,9 +6,13 @@ namespace {
 constexpr const char* kKeys = "147*2580369#ABCD";
 }
 
-bool keypad_has(char key) { return key != '\0' && std::string(kKeys).find(key) != std::string::npos; }
+bool keypad_has(char key) {
+    return key != '\0' && std::string(kKeys).find(key) != std::string::npos;
+}
 
-std::string keypad_keys() { return kKeys; }
+std::string keypad_keys() {
+    return kKeys;
+}
 
 KeyPos key_pos(char key) {
     const auto i = std::string(kKeys).find(key);

@@ -18,13 +18,13 @@ inline constexpr int kMaxPitchCentiMm = 4151;
 
 struct RatioList {
     int pitch_centi_mm = 0;
-    std::uint16_t num = 0;             // motor pulses per list period (bestx)
-    std::uint16_t den = 0;             // list length in spindle pulses (besty)
-    std::vector<std::uint8_t> b;       // B(1) .. B(den), as the firmware stores them (uint8)
-    double lambda_exact = 0.0;         // motor pulses per spindle pulse the pitch asks for
-    double lambda_list = 0.0;          // what the list gives: sum(b) / den
-    double lambda_error = 0.0;         // lambda_list - lambda_exact
-    double pitch_produced_mm = 0.0;    // the pitch the list cuts
+    std::uint16_t num = 0;           // motor pulses per list period (bestx)
+    std::uint16_t den = 0;           // list length in spindle pulses (besty)
+    std::vector<std::uint8_t> b;     // B(1) .. B(den), as the firmware stores them (uint8)
+    double lambda_exact = 0.0;       // motor pulses per spindle pulse the pitch asks for
+    double lambda_list = 0.0;        // what the list gives: sum(b) / den
+    double lambda_error = 0.0;       // lambda_list - lambda_exact
+    double pitch_produced_mm = 0.0;  // the pitch the list cuts
 };
 
 // pitch_centi_mm in 1 .. 65535 (the firmware's uint16 entry); the list is built whatever the pitch, as the

@@ -9,7 +9,7 @@
 namespace cnc::lathe {
 
 struct SpindleParams {
-    double rpm = 0.0;              // set speed, no load
+    double rpm = 0.0;               // set speed, no load
     double droop_pct_per_nm = 0.0;  // steady speed loss per N m of torque at the spindle, % of rpm
     double time_constant_s = 0.0;   // 0: the droop follows the torque at once
 };

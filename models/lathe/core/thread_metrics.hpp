@@ -33,7 +33,7 @@ struct ThreadMetrics {
 // The first settle_revolutions of every pass (the catch-up from the slip and the PID's slow settling) are left
 // out of both errors; the common length is that of the whole passes. Passes without a common length give zero
 // revolutions and no phase error.
-[[nodiscard]] ThreadMetrics thread_metrics(const std::vector<ThreadPass>& passes, double pitch_mm,
-                                           int pulses_per_rev, int settle_revolutions = 0);
+[[nodiscard]] ThreadMetrics thread_metrics(const std::vector<ThreadPass>& passes, double pitch_mm, int pulses_per_rev,
+                                           int settle_revolutions = 0);
 
 }  // namespace cnc::lathe

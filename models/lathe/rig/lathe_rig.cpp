@@ -45,15 +45,28 @@ SpindleParams spindle_at(const LatheRigConfig& cfg) {
 }  // namespace
 
 const std::vector<TracedPin>& traced_pins() {
-    static const std::vector<TracedPin> pins = {
-        {"oc1a_ena_pd5", kEnA},        {"dir1_in1_pd0", kDir1},     {"dir2_in2_pd1", kDir2},
-        {"int0_motor_pd2", kMotorPulse}, {"int1_spindle_pd3", kSpindlePulse}, {"index_pd6", kIndex},
-        {"limit_pd7", kLimit},         {"col1_pb7", {'B', 7}},      {"col2_pb6", {'B', 6}},
-        {"col3_pb5", {'B', 5}},        {"col4_pb4", {'B', 4}},      {"row1_pb3", {'B', 3}},
-        {"row2_pb2", {'B', 2}},        {"row3_pb1", {'B', 1}},      {"row4_pb0", {'B', 0}},
-        {"lcd_rs_pa4", kLcdRs},        {"lcd_rw_pa5", kLcdRw},      {"lcd_e_pa6", kLcdE},
-        {"lcd_d4_pa0", {'A', 0}},      {"lcd_d5_pa1", {'A', 1}},    {"lcd_d6_pa2", {'A', 2}},
-        {"lcd_d7_pa3", kLcdD7}};
+    static const std::vector<TracedPin> pins = {{"oc1a_ena_pd5", kEnA},
+                                                {"dir1_in1_pd0", kDir1},
+                                                {"dir2_in2_pd1", kDir2},
+                                                {"int0_motor_pd2", kMotorPulse},
+                                                {"int1_spindle_pd3", kSpindlePulse},
+                                                {"index_pd6", kIndex},
+                                                {"limit_pd7", kLimit},
+                                                {"col1_pb7", {'B', 7}},
+                                                {"col2_pb6", {'B', 6}},
+                                                {"col3_pb5", {'B', 5}},
+                                                {"col4_pb4", {'B', 4}},
+                                                {"row1_pb3", {'B', 3}},
+                                                {"row2_pb2", {'B', 2}},
+                                                {"row3_pb1", {'B', 1}},
+                                                {"row4_pb0", {'B', 0}},
+                                                {"lcd_rs_pa4", kLcdRs},
+                                                {"lcd_rw_pa5", kLcdRw},
+                                                {"lcd_e_pa6", kLcdE},
+                                                {"lcd_d4_pa0", {'A', 0}},
+                                                {"lcd_d5_pa1", {'A', 1}},
+                                                {"lcd_d6_pa2", {'A', 2}},
+                                                {"lcd_d7_pa3", kLcdD7}};
     return pins;
 }
 
@@ -64,9 +77,13 @@ const std::vector<TracedPin>& traced_pins() {
 // (which start from the retract's slip) swing into a limit cycle with following errors of 60 to 160 pulses
 // instead of 2. The thesis does not say where its index sits relative to the slots (docs/metrics.md "Lathe").
 LatheRig::LatheRig(const LatheRigConfig& cfg)
-    : chip(firmware(cfg.firmware_elf)), motor(cfg.motor), train(cfg.train),
-      motor_encoder(kMotorSlots, 0.5), spindle_encoder(kSpindleSlots, 0.0),
-      spindle_index(1.0, -0.5 / kSpindleSlots), spindle(spindle_at(cfg)),
+    : chip(firmware(cfg.firmware_elf)),
+      motor(cfg.motor),
+      train(cfg.train),
+      motor_encoder(kMotorSlots, 0.5),
+      spindle_encoder(kSpindleSlots, 0.0),
+      spindle_index(1.0, -0.5 / kSpindleSlots),
+      spindle(spindle_at(cfg)),
       m_cut_torque_nm(cutting_torque_nm(cfg.cut, cfg.feed_mm_per_rev)) {
     chip.on_output_change([this](Cycle c) { outputs_changed(c); });
     drive(kLcdD7, false);  // the LCD's busy flag (D7) always reads ready
@@ -81,9 +98,13 @@ LatheRig::LatheRig(const LatheRigConfig& cfg)
     }
 }
 
-double LatheRig::now_s() const { return static_cast<double>(chip.cycle()) * kCycleS; }
+double LatheRig::now_s() const {
+    return static_cast<double>(chip.cycle()) * kCycleS;
+}
 
-bool LatheRig::pid_running() const { return chip.timer(0).divisor() != 0; }
+bool LatheRig::pid_running() const {
+    return chip.timer(0).divisor() != 0;
+}
 
 void LatheRig::drive(const Pin& pin, bool level) {
     chip.drive_input(pin, level);

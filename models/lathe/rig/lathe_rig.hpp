@@ -51,10 +51,10 @@ struct RecordedPass {
     ThreadPass thread;
     std::vector<long> motor_pulses;
     double start_s = 0.0;
-    double pid_s = 0.0;          // time the PID ran
-    double at_full_s = 0.0;      // of which OCR1A = 1023 (the clamp PWM_TOP)
-    double at_zero_s = 0.0;      // of which OCR1A = 0
-    double overshoot_mm = -1.0;  // carriage travel from the PID stop to 0.6 s later (the 500 ms brake done)
+    double pid_s = 0.0;            // time the PID ran
+    double at_full_s = 0.0;        // of which OCR1A = 1023 (the clamp PWM_TOP)
+    double at_zero_s = 0.0;        // of which OCR1A = 0
+    double overshoot_mm = -1.0;    // carriage travel from the PID stop to 0.6 s later (the 500 ms brake done)
     double spindle_min_rpm = 0.0;  // the slowest the spindle turned under the cut
 };
 

@@ -89,7 +89,9 @@ bool AxisIntegrator::converged() const {
            std::abs(x[kIa] - sp.a_a) < kRestCurrentErrorA && std::abs(x[kIb] - sp.b_a) < kRestCurrentErrorA;
 }
 
-void AxisIntegrator::start_at(const AxisState& x, double t_s) { start_at(x, t_s, rotor_angle(m_ode.params().motor, x[kTheta])); }
+void AxisIntegrator::start_at(const AxisState& x, double t_s) {
+    start_at(x, t_s, rotor_angle(m_ode.params().motor, x[kTheta]));
+}
 
 void AxisIntegrator::start_at(const AxisState& x, double t_s, RotorAngle angle) {
     m_front_x = x;

@@ -32,7 +32,7 @@ namespace cnc::mech {
 
 struct IntegratorTolerances {
     double abs_tol = 1e-8;     // per step, in the state's SI units (A, rad, rad/s, m, m/s)
-    double rel_tol = 1e-4;    // the reports change by < 0.03 um against 1e-5 (docs/mechanics.md)
+    double rel_tol = 1e-4;     // the reports change by < 0.03 um against 1e-5 (docs/mechanics.md)
     double max_step_s = 1e-3;  // never step further than this, so the step control sees every transient
 };
 
@@ -77,8 +77,8 @@ private:
     // The front of the integration (the end of the last step, or a mode change within it), at or after m_t_s.
     AxisState m_front_x = AxisState::Zero();
     AxisState m_front_dxdt = AxisState::Zero();  // when m_front_valid
-    AxisModes m_front_modes;                      // when m_front_valid
-    RotorAngle m_front_angle;                     // of m_front_x, when m_front_valid
+    AxisModes m_front_modes;                     // when m_front_valid
+    RotorAngle m_front_angle;                    // of m_front_x, when m_front_valid
     double m_front_t_s = 0.0;
     bool m_front_valid = false;
     // The last accepted step, in its current frame, valid from t0 up to the front.

@@ -40,14 +40,21 @@ void validate(const AxisLoadParams& p) {
     }
 }
 
-double travel_m_per_rad(const AxisLoadParams& p) { return p.travel_per_rev_mm * 1e-3 / (2.0 * kPi); }
+double travel_m_per_rad(const AxisLoadParams& p) {
+    return p.travel_per_rev_mm * 1e-3 / (2.0 * kPi);
+}
 
 Coupling::Coupling(const AxisLoadParams& p)
-    : m_kind(p.kind), m_travel_m_per_rad(travel_m_per_rad(p)), m_home_span_m(p.belt_home_span_mm * 1e-3),
-      m_total_span_m(p.belt_total_span_mm * 1e-3), m_specific_stiffness_n(p.belt_specific_stiffness_n),
+    : m_kind(p.kind),
+      m_travel_m_per_rad(travel_m_per_rad(p)),
+      m_home_span_m(p.belt_home_span_mm * 1e-3),
+      m_total_span_m(p.belt_total_span_mm * 1e-3),
+      m_specific_stiffness_n(p.belt_specific_stiffness_n),
       m_damping_per_sqrt_k(2.0 * p.belt_damping_ratio * std::sqrt(p.carriage_mass_kg)),
-      m_half_backlash_m(0.5 * p.backlash_mm * 1e-3), m_screw_stiffness_n_per_m(p.screw_stiffness_n_per_m),
-      m_screw_damping_n_s_per_m(2.0 * p.screw_damping_ratio * std::sqrt(p.screw_stiffness_n_per_m * p.carriage_mass_kg)),
+      m_half_backlash_m(0.5 * p.backlash_mm * 1e-3),
+      m_screw_stiffness_n_per_m(p.screw_stiffness_n_per_m),
+      m_screw_damping_n_s_per_m(2.0 * p.screw_damping_ratio *
+                                std::sqrt(p.screw_stiffness_n_per_m * p.carriage_mass_kg)),
       m_screw_torque_per_n(m_travel_m_per_rad / p.screw_efficiency) {}
 
 double Coupling::energy_j(double theta_rad, double x_m) const {

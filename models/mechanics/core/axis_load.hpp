@@ -22,19 +22,19 @@ enum class DriveKind { Free, Belt, Leadscrew };  // Free: the rotor alone (no ca
 
 struct AxisLoadParams {
     DriveKind kind = DriveKind::Belt;
-    double travel_per_rev_mm = 40.0;      // GT2 x 20 teeth (seed 000 §2.2) or the screw lead
-    double carriage_mass_kg = 3.8;        // seed 000 §8: the X motor moves 3.8 kg
-    double rail_friction_n = 1.5;         // linear bearings on rods, about 0.04 x m g: an estimate
+    double travel_per_rev_mm = 40.0;  // GT2 x 20 teeth (seed 000 §2.2) or the screw lead
+    double carriage_mass_kg = 3.8;    // seed 000 §8: the X motor moves 3.8 kg
+    double rail_friction_n = 1.5;     // linear bearings on rods, about 0.04 x m g: an estimate
     double rail_viscous_n_per_m_s = 0.0;
     // Belt
     double belt_specific_stiffness_n = 20'000.0;  // c_sp of a 6 mm glass-fibre GT2 belt, order of maker tables
-    double belt_total_span_mm = 560.0;    // both free spans together (seed 000 §7.1.2: 460 mm travel + ends)
-    double belt_home_span_mm = 50.0;      // span from pulley to carriage at carriage 0 mm
-    double belt_damping_ratio = 0.05;     // of critical: reinforced rubber belts, a few per cent
+    double belt_total_span_mm = 560.0;            // both free spans together (seed 000 §7.1.2: 460 mm travel + ends)
+    double belt_home_span_mm = 50.0;              // span from pulley to carriage at carriage 0 mm
+    double belt_damping_ratio = 0.05;             // of critical: reinforced rubber belts, a few per cent
     // Leadscrew
-    double screw_efficiency = 0.4;        // trapezoidal (Tr8) screw with a plastic or bronze nut
+    double screw_efficiency = 0.4;  // trapezoidal (Tr8) screw with a plastic or bronze nut
     double backlash_mm = 0.05;
-    double screw_stiffness_n_per_m = 5e7; // axial stiffness of screw and nut
+    double screw_stiffness_n_per_m = 5e7;  // axial stiffness of screw and nut
     double screw_damping_ratio = 0.1;
 };
 

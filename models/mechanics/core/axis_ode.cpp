@@ -17,7 +17,8 @@ struct AxisOde::WantedVoltages {
 };
 
 AxisOde::AxisOde(const AxisParams& params)
-    : m_p(params), m_coupling(params.load),
+    : m_p(params),
+      m_coupling(params.load),
       m_km_nm_per_a(params.motor.torque_constant_nm_per_a()),
       m_l_per_tau_ohm(params.motor.inductance_h / params.driver.chop_tau_s),
       m_inv_inductance_per_h(1.0 / params.motor.inductance_h),

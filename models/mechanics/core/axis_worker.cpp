@@ -68,29 +68,29 @@ void AxisWorker::run() {
 void AxisWorker::execute(const MechanicsCommand& c) {
     using Kind = MechanicsCommand::Kind;
     switch (c.kind) {
-    case Kind::Microstep:
-    case Kind::Enable:
-        if (c.axis != m_axis) return;  // the other axis's: nothing here moves until this axis is asked
-        periodic_until(c.t_ps, true);
-        if (c.kind == Kind::Microstep)
-            m_motor.on_microstep(c.t_ps, c.index, c.microsteps);
-        else
-            m_motor.on_enable(c.t_ps, c.flag);
-        return;
-    case Kind::Start:
-    case Kind::Step:
-        periodic_until(c.t_ps, true);
-        read(c.t_ps, false);
-        return;
-    case Kind::EnableChanged:
-        return;
-    case Kind::Sync:
-        periodic_until(c.t_ps, false);
-        ++m_syncs;
-        publish(false);
-        return;
-    case Kind::End:
-        break;
+        case Kind::Microstep:
+        case Kind::Enable:
+            if (c.axis != m_axis) return;  // the other axis's: nothing here moves until this axis is asked
+            periodic_until(c.t_ps, true);
+            if (c.kind == Kind::Microstep)
+                m_motor.on_microstep(c.t_ps, c.index, c.microsteps);
+            else
+                m_motor.on_enable(c.t_ps, c.flag);
+            return;
+        case Kind::Start:
+        case Kind::Step:
+            periodic_until(c.t_ps, true);
+            read(c.t_ps, false);
+            return;
+        case Kind::EnableChanged:
+            return;
+        case Kind::Sync:
+            periodic_until(c.t_ps, false);
+            ++m_syncs;
+            publish(false);
+            return;
+        case Kind::End:
+            break;
     }
 }
 

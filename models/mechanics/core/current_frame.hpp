@@ -25,8 +25,12 @@ public:
     // `angle0`: the rotor angle of x0 (hybrid_stepper.hpp); `dt_s`: the step's length.
     CurrentFrame(const AxisOde& ode, const AxisModes& modes, const AxisState& x0, RotorAngle angle0, double t0_s,
                  double dt_s)
-        : m_ode(ode), m_modes(modes), m_angle(ode.params().motor, x0[kTheta], angle0), m_t0_s(t0_s),
-          m_rate_per_s(ode.regulation_rate_per_s()), m_inv_rate_s(1.0 / m_rate_per_s),
+        : m_ode(ode),
+          m_modes(modes),
+          m_angle(ode.params().motor, x0[kTheta], angle0),
+          m_t0_s(t0_s),
+          m_rate_per_s(ode.regulation_rate_per_s()),
+          m_inv_rate_s(1.0 / m_rate_per_s),
           m_stages(regulated(0) || regulated(1) ? StageDecays(t0_s, dt_s, m_rate_per_s) : StageDecays()) {
         const WindingSetpoints& sp = ode.setpoints().current;
         m_offset_a = {regulated(0) ? sp.a_a : 0.0, regulated(1) ? sp.b_a : 0.0};

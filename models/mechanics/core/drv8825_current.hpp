@@ -52,18 +52,24 @@ inline BridgeMode bridge_mode(double wanted_v, const DriverElectrics& drv) {
 // The bridge's voltage in a mode (the wanted voltage while it regulates).
 inline double bridge_voltage_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv) {
     switch (mode) {
-    case BridgeMode::High: return drv.supply_v;
-    case BridgeMode::Low: return -drv.supply_v;
-    case BridgeMode::Regulating: break;
+        case BridgeMode::High:
+            return drv.supply_v;
+        case BridgeMode::Low:
+            return -drv.supply_v;
+        case BridgeMode::Regulating:
+            break;
     }
     return wanted_v;
 }
 // How far inside `mode` the wanted voltage is, V: >= 0 while the bridge stays in it (> 0 for Regulating).
 [[nodiscard]] inline double mode_margin_v(BridgeMode mode, double wanted_v, const DriverElectrics& drv) {
     switch (mode) {
-    case BridgeMode::High: return wanted_v - drv.supply_v;
-    case BridgeMode::Low: return -drv.supply_v - wanted_v;
-    case BridgeMode::Regulating: break;
+        case BridgeMode::High:
+            return wanted_v - drv.supply_v;
+        case BridgeMode::Low:
+            return -drv.supply_v - wanted_v;
+        case BridgeMode::Regulating:
+            break;
     }
     return drv.supply_v - std::abs(wanted_v);
 }

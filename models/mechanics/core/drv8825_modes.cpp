@@ -27,19 +27,27 @@ int microsteps_for(const ModePins& pins) {
 
 ModePins mode_pins_for(int microsteps) {
     switch (microsteps) {
-        case 1: return {false, false, false};
-        case 2: return {true, false, false};
-        case 4: return {false, true, false};
-        case 8: return {true, true, false};
-        case 16: return {false, false, true};
-        case 32: return {true, false, true};
+        case 1:
+            return {false, false, false};
+        case 2:
+            return {true, false, false};
+        case 4:
+            return {false, true, false};
+        case 8:
+            return {true, true, false};
+        case 16:
+            return {false, false, true};
+        case 32:
+            return {true, false, true};
         default:
-            throw BadInput("", "DRV8825 microsteps must be 1, 2, 4, 8, 16 or 32 (got " + std::to_string(microsteps) +
-                                   ")");
+            throw BadInput("",
+                           "DRV8825 microsteps must be 1, 2, 4, 8, 16 or 32 (got " + std::to_string(microsteps) + ")");
     }
 }
 
-double electrical_step_deg(int microsteps) { return kElectricalDegPerFullStep / microsteps; }
+double electrical_step_deg(int microsteps) {
+    return kElectricalDegPerFullStep / microsteps;
+}
 
 double electrical_angle_deg(std::int64_t units) {
     return kHomeElectricalDeg + static_cast<double>(units) * kElectricalDegPerFullStep / kIndexerUnitsPerFullStep;

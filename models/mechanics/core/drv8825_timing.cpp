@@ -38,8 +38,8 @@ void Drv8825TimingChecker::on_step(TimePs t_ps, bool level) {
     }
     if (m_last_rise_ps) {
         const TimePs period = t_ps - *m_last_rise_ps;
-        const bool too_fast = period <= 0 || static_cast<double>(kPsPerSec) / static_cast<double>(period) >
-                                                 m_limits.step_rate_max_hz;
+        const bool too_fast =
+            period <= 0 || static_cast<double>(kPsPerSec) / static_cast<double>(period) > m_limits.step_rate_max_hz;
         measure(TimingRule::StepRate, t_ps, period, too_fast);
     }
     m_last_rise_ps = t_ps;

@@ -25,11 +25,11 @@ struct LostStepEvent {
 };
 
 struct DynamicAxisStats {
-    std::int64_t lost_full_steps = 0;        // sum of |full_steps| over the events
-    std::vector<LostStepEvent> events;       // the first kMaxLostStepEvents, in time order
-    double peak_load_angle_deg = 0.0;        // electrical degrees between command and rotor (90 = pull-out)
+    std::int64_t lost_full_steps = 0;   // sum of |full_steps| over the events
+    std::vector<LostStepEvent> events;  // the first kMaxLostStepEvents, in time order
+    double peak_load_angle_deg = 0.0;   // electrical degrees between command and rotor (90 = pull-out)
     TimePs peak_load_angle_ps = 0;
-    PeakTrace load_angle_deg_trace;          // the load angle's peaks over time (the plots' load-angle curve)
+    PeakTrace load_angle_deg_trace;  // the load angle's peaks over time (the plots' load-angle curve)
     // Carriage velocity against the commanded one (a microstep over the time since the previous one), at
     // every microstep: RMS and peak of the difference, mm/s.
     double velocity_ripple_rms_mm_s = 0.0;
@@ -70,8 +70,8 @@ private:
     mutable AxisIntegrator m_integrator;
     mutable DynamicAxisStats m_stats;
     mutable std::int64_t m_slip_periods = 0;  // electrical periods the rotor has slipped (signed)
-    mutable TimePs m_tracked_ps = -1;          // the time of the last advance, until the command moves
-    std::int64_t m_units = 0;                  // commanded indexer position, 1/32 step
+    mutable TimePs m_tracked_ps = -1;         // the time of the last advance, until the command moves
+    std::int64_t m_units = 0;                 // commanded indexer position, 1/32 step
     TimePs m_last_microstep_ps = -1;
     double m_ripple_sum_sq = 0.0;
     bool m_enabled = false;

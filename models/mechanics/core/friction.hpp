@@ -23,9 +23,12 @@ enum class FrictionMode { Stuck, Forward, Backward };
 // How far inside `mode` the speed is, in bands: >= 0 while the body stays in it (> 0 for Stuck).
 [[nodiscard]] inline double friction_margin(FrictionMode mode, double speed, double band) {
     switch (mode) {
-    case FrictionMode::Forward: return speed / band - 1.0;
-    case FrictionMode::Backward: return -speed / band - 1.0;
-    case FrictionMode::Stuck: break;
+        case FrictionMode::Forward:
+            return speed / band - 1.0;
+        case FrictionMode::Backward:
+            return -speed / band - 1.0;
+        case FrictionMode::Stuck:
+            break;
     }
     return 1.0 - std::abs(speed) / band;
 }
@@ -34,9 +37,12 @@ enum class FrictionMode { Stuck, Forward, Backward };
 [[nodiscard]] inline double coulomb_friction(FrictionMode mode, double level, double speed, double other,
                                              double inertia) {
     switch (mode) {
-    case FrictionMode::Forward: return -level;
-    case FrictionMode::Backward: return level;
-    case FrictionMode::Stuck: break;
+        case FrictionMode::Forward:
+            return -level;
+        case FrictionMode::Backward:
+            return level;
+        case FrictionMode::Stuck:
+            break;
     }
     return std::clamp(-other - inertia * speed / kStickTimeS, -level, level);
 }

@@ -17,7 +17,9 @@ void require(bool ok, const char* what, double v) {
 
 }  // namespace
 
-double HybridStepperParams::full_step_rad() const { return kPi / (2.0 * rotor_teeth); }
+double HybridStepperParams::full_step_rad() const {
+    return kPi / (2.0 * rotor_teeth);
+}
 
 void validate(const HybridStepperParams& p) {
     require(p.rotor_teeth > 0, "rotor_teeth must be > 0", p.rotor_teeth);

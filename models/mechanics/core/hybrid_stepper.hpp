@@ -21,15 +21,15 @@ namespace cnc::mech {
 inline constexpr double kHomeElectricalRad = 3.14159265358979323846 / 4.0;  // DRV8825 home state, 45 deg
 
 struct HybridStepperParams {
-    int rotor_teeth = 50;                   // 1.8 deg full step = 90 electrical deg / 50 teeth
+    int rotor_teeth = 50;                            // 1.8 deg full step = 90 electrical deg / 50 teeth
     double holding_torque_nm = 2800.0 * 9.80665e-5;  // 2,800 g cm (seed 000 §8), both phases at rated current
-    double rated_current_a = 0.4;           // per phase (seed 000 §8)
-    double resistance_ohm = 30.0;           // per phase (Wantai listing)
-    double inductance_h = 0.037;            // per phase, 37 mH (Wantai listing)
-    double rotor_inertia_kgm2 = 34e-7;      // 34 g cm2 (typical of the frame; see above)
-    double detent_torque_nm = 0.0147;       // 150 g cm (typical of the frame; see above)
-    double viscous_nm_per_rad_s = 1e-4;     // bearing and iron-loss damping: an estimate, not a data sheet value
-    double coulomb_nm = 2e-3;               // bearing friction: an estimate, not a data sheet value
+    double rated_current_a = 0.4;                    // per phase (seed 000 §8)
+    double resistance_ohm = 30.0;                    // per phase (Wantai listing)
+    double inductance_h = 0.037;                     // per phase, 37 mH (Wantai listing)
+    double rotor_inertia_kgm2 = 34e-7;               // 34 g cm2 (typical of the frame; see above)
+    double detent_torque_nm = 0.0147;                // 150 g cm (typical of the frame; see above)
+    double viscous_nm_per_rad_s = 1e-4;  // bearing and iron-loss damping: an estimate, not a data sheet value
+    double coulomb_nm = 2e-3;            // bearing friction: an estimate, not a data sheet value
 
     // Torque per ampere of the current vector: the holding torque is rated with both phases at the rated
     // current, a vector of sqrt(2) x I_rated.

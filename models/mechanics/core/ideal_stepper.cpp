@@ -15,6 +15,8 @@ void IdealStepper::on_microstep(TimePs, std::int64_t microstep_index, int micros
     m_angle_deg = static_cast<double>(microstep_index) * m_step_angle_deg / microsteps_per_full_step;
 }
 
-double IdealStepper::shaft_angle_deg(TimePs) const { return m_angle_deg; }
+double IdealStepper::shaft_angle_deg(TimePs) const {
+    return m_angle_deg;
+}
 
 }  // namespace cnc::mech

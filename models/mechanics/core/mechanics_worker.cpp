@@ -58,11 +58,17 @@ void MechanicsWorker::enable(int axis, TimePs t_ps, bool enabled) {
     push({Kind::Enable, static_cast<std::int8_t>(axis), enabled, 0, t_ps, 0});
 }
 
-void MechanicsWorker::start(TimePs t_ps) { push({Kind::Start, 0, false, 0, t_ps, 0}); }
+void MechanicsWorker::start(TimePs t_ps) {
+    push({Kind::Start, 0, false, 0, t_ps, 0});
+}
 
-void MechanicsWorker::step(TimePs t_ps) { push({Kind::Step, 0, false, 0, t_ps, 0}); }
+void MechanicsWorker::step(TimePs t_ps) {
+    push({Kind::Step, 0, false, 0, t_ps, 0});
+}
 
-void MechanicsWorker::enable_changed(TimePs t_ps) { push({Kind::EnableChanged, 0, false, 0, t_ps, 0}); }
+void MechanicsWorker::enable_changed(TimePs t_ps) {
+    push({Kind::EnableChanged, 0, false, 0, t_ps, 0});
+}
 
 void MechanicsWorker::mark(TimePs t_ps) {
     if (m_finished || t_ps <= m_marked_ps) return;
@@ -143,26 +149,26 @@ void MechanicsWorker::merge_until(TimePs t_ps) {
 void MechanicsWorker::merge(const Command& c) {
     std::optional<TimePs> next;
     switch (c.kind) {
-    case Kind::Start:
-    case Kind::Step:
-        periodic_until(c.t_ps, true);
-        for (Replay& r : m_replay) r.expect(false);
-        next = c.kind == Kind::Start ? m_sampler.on_start(c.t_ps) : m_sampler.on_step(c.t_ps);
-        break;
-    case Kind::EnableChanged:
-        periodic_until(c.t_ps, true);
-        next = m_sampler.on_enable(c.t_ps);
-        break;
-    case Kind::Sync:
-        periodic_until(c.t_ps, false);
-        break;
-    case Kind::End:
-        periodic_until(c.t_ps, c.flag);
-        m_end.periodic_past_bound = m_next_periodic_ps.has_value();
-        break;
-    case Kind::Microstep:
-    case Kind::Enable:
-        break;
+        case Kind::Start:
+        case Kind::Step:
+            periodic_until(c.t_ps, true);
+            for (Replay& r : m_replay) r.expect(false);
+            next = c.kind == Kind::Start ? m_sampler.on_start(c.t_ps) : m_sampler.on_step(c.t_ps);
+            break;
+        case Kind::EnableChanged:
+            periodic_until(c.t_ps, true);
+            next = m_sampler.on_enable(c.t_ps);
+            break;
+        case Kind::Sync:
+            periodic_until(c.t_ps, false);
+            break;
+        case Kind::End:
+            periodic_until(c.t_ps, c.flag);
+            m_end.periodic_past_bound = m_next_periodic_ps.has_value();
+            break;
+        case Kind::Microstep:
+        case Kind::Enable:
+            break;
     }
     if (next) m_next_periodic_ps = next;
 }

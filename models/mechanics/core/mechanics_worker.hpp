@@ -58,7 +58,7 @@ public:
 
     struct End {
         std::optional<TimePs> last_periodic_ps;  // the last periodic sample taken, if any
-        bool periodic_past_bound = false;         // an axis still moved: periodic samples were due after the bound
+        bool periodic_past_bound = false;        // an axis still moved: periodic samples were due after the bound
     };
     // The simulation has ended: the periodic samples up to the bound (before it, or also at it with
     // `bound_inclusive`) are taken, the threads end, and the axes are the caller's again. Rethrows what a worker

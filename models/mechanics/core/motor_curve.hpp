@@ -17,7 +17,7 @@
 namespace cnc::mech {
 
 inline constexpr double kPullInRunS = 0.1;
-inline constexpr double kPullInStartHz = 10.0;   // full steps per second
+inline constexpr double kPullInStartHz = 10.0;  // full steps per second
 
 // Mean electromagnetic torque at a constant load angle (electrical rad, > 0: rotor behind the command).
 [[nodiscard]] double synchronous_torque_nm(const AxisParams& p, int microsteps, double full_steps_per_s,

@@ -19,8 +19,8 @@ public:
             m_rejected = true;
             return dt / std::min(kMaxShrink, std::exp(kExponent * log_err) / kSafety);
         }
-        const double fac = std::clamp(std::exp(kExponent * log_err - kBeta * m_log_err_old) / kSafety, kMaxGrowthInv,
-                                      kMaxShrink);
+        const double fac =
+            std::clamp(std::exp(kExponent * log_err - kBeta * m_log_err_old) / kSafety, kMaxGrowthInv, kMaxShrink);
         m_log_err_old = std::max(log_err, kLogErrOldFloor);
         const double next = dt / fac;
         const bool was_rejected = m_rejected;
@@ -29,11 +29,11 @@ public:
     }
 
 private:
-    static constexpr double kBeta = 0.04;                   // DOPRI5's default for the PI controller
+    static constexpr double kBeta = 0.04;                    // DOPRI5's default for the PI controller
     static constexpr double kExponent = 0.2 - 0.75 * kBeta;  // 1/5 for a 5(4) pair, less the PI share
     static constexpr double kSafety = 0.9;
-    static constexpr double kMaxShrink = 5.0;      // a step shrinks to at most 1/5 ...
-    static constexpr double kMaxGrowthInv = 0.1;   // ... and grows to at most 10 x (DOPRI5's fac1, fac2)
+    static constexpr double kMaxShrink = 5.0;     // a step shrinks to at most 1/5 ...
+    static constexpr double kMaxGrowthInv = 0.1;  // ... and grows to at most 10 x (DOPRI5's fac1, fac2)
     static constexpr double kLogErrOldFloor = -9.210340371976184;  // ln 1e-4: DOPRI5 keeps at least 1e-4
     double m_log_err_old = kLogErrOldFloor;
     bool m_rejected = false;

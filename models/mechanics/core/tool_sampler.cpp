@@ -15,7 +15,9 @@ std::optional<TimePs> ToolSampler::on_step(TimePs t_ps) {
     return start_periodic(t_ps);
 }
 
-std::optional<TimePs> ToolSampler::on_enable(TimePs t_ps) { return start_periodic(t_ps); }
+std::optional<TimePs> ToolSampler::on_enable(TimePs t_ps) {
+    return start_periodic(t_ps);
+}
 
 std::optional<TimePs> ToolSampler::start_periodic(TimePs t_ps) {
     if (m_period_ps <= 0 || m_periodic) return std::nullopt;
@@ -32,7 +34,9 @@ std::optional<TimePs> ToolSampler::on_period(TimePs t_ps) {
     return t_ps + m_period_ps;
 }
 
-std::vector<ToolSample> ToolSampler::take_before(TimePs t_ps) { return take_samples_before(m_samples, t_ps); }
+std::vector<ToolSample> ToolSampler::take_before(TimePs t_ps) {
+    return take_samples_before(m_samples, t_ps);
+}
 
 void ToolSampler::sample(TimePs t_ps) {
     const ToolSample s{t_ps, m_origin_mm + geom::Vec2{m_x.carriage_mm(t_ps), m_y.carriage_mm(t_ps)}};

@@ -21,7 +21,9 @@ Belt::Belt(int pulley_teeth, double belt_pitch_mm, double gear_ratio)
     require_positive(gear_ratio, "gear_ratio");
 }
 
-double Belt::travel_per_motor_rev_mm() const { return m_teeth * m_pitch_mm / m_gear_ratio; }
+double Belt::travel_per_motor_rev_mm() const {
+    return m_teeth * m_pitch_mm / m_gear_ratio;
+}
 
 Leadscrew::Leadscrew(double thread_pitch_mm, int starts, double gear_ratio)
     : m_pitch_mm(thread_pitch_mm), m_starts(starts), m_gear_ratio(gear_ratio) {
@@ -30,7 +32,9 @@ Leadscrew::Leadscrew(double thread_pitch_mm, int starts, double gear_ratio)
     require_positive(gear_ratio, "gear_ratio");
 }
 
-double Leadscrew::travel_per_motor_rev_mm() const { return m_pitch_mm * m_starts / m_gear_ratio; }
+double Leadscrew::travel_per_motor_rev_mm() const {
+    return m_pitch_mm * m_starts / m_gear_ratio;
+}
 
 CalibratedDrive::CalibratedDrive(double travel_per_motor_rev_mm) : m_travel_mm(travel_per_motor_rev_mm) {
     require_positive(travel_per_motor_rev_mm, "travel per motor revolution");

@@ -37,8 +37,7 @@ std::string period_error(std::uint64_t period, std::uint32_t min_period_cycles) 
 
 std::uint32_t encode_rate_word(const AxisRate& rate, std::uint32_t min_period_cycles, const std::string& where) {
     // 0 = stopped: the FPGA ignores the direction bit then, but it is sent as given so that words round-trip.
-    if (rate.period_cycles != 0 &&
-        (rate.period_cycles > kMaxPeriodCycles || rate.period_cycles < min_period_cycles))
+    if (rate.period_cycles != 0 && (rate.period_cycles > kMaxPeriodCycles || rate.period_cycles < min_period_cycles))
         throw BadInput(where, period_error(rate.period_cycles, min_period_cycles));
     return rate.period_cycles | (rate.forward ? kDirForwardBit : 0U);
 }
@@ -116,8 +115,7 @@ std::int64_t widen_count(std::int64_t previous, std::int32_t raw) {
 
 std::uint32_t period_for_rate(double steps_per_s, std::uint32_t clk_hz, std::uint32_t min_period_cycles,
                               const std::string& where) {
-    if (!std::isfinite(steps_per_s))
-        throw BadInput(where, "step rate is not a finite number");
+    if (!std::isfinite(steps_per_s)) throw BadInput(where, "step rate is not a finite number");
     const double rate = std::fabs(steps_per_s);
     if (rate == 0.0) return 0;
     const double clk = static_cast<double>(clk_hz);

@@ -21,16 +21,16 @@ inline constexpr std::uint8_t kCmdRates = 0x52;  // 'R': "apply these rates"; an
 inline constexpr std::size_t kHeaderBytes = 1;
 inline constexpr std::size_t kBytesPerAxis = 4;
 inline constexpr std::uint32_t kDirForwardBit = 0x8000'0000U;
-inline constexpr std::uint32_t kLaserOnBit = 0x4000'0000U;  // in the X word only; reserved in the others
-inline constexpr std::uint32_t kPeriodMask = 0x3FFF'FFFFU;  // bits 29..0
+inline constexpr std::uint32_t kLaserOnBit = 0x4000'0000U;      // in the X word only; reserved in the others
+inline constexpr std::uint32_t kPeriodMask = 0x3FFF'FFFFU;      // bits 29..0
 inline constexpr std::uint32_t kMaxPeriodCycles = kPeriodMask;  // 2^30 - 1: 21.5 s between steps at 50 MHz
 
 // Status byte (first MISO byte), taken when SS falls (see models/fpga/spi/README.md for the edge).
-inline constexpr std::uint8_t kStatusAlive = 0x80;     // always 1: a MISO stuck low (no FPGA) reads 0x00
-inline constexpr std::uint8_t kStatusRejected = 0x40;  // a frame was rejected (length, header) since the last reply
-inline constexpr std::uint8_t kStatusDropped = 0x20;   // a frame was dropped (FIFO full) since the last reply
-inline constexpr std::uint8_t kStatusFull = 0x10;      // FIFO full
-inline constexpr std::uint8_t kStatusLevelMask = 0x0F; // FIFO level (frames held), saturates at 15
+inline constexpr std::uint8_t kStatusAlive = 0x80;      // always 1: a MISO stuck low (no FPGA) reads 0x00
+inline constexpr std::uint8_t kStatusRejected = 0x40;   // a frame was rejected (length, header) since the last reply
+inline constexpr std::uint8_t kStatusDropped = 0x20;    // a frame was dropped (FIFO full) since the last reply
+inline constexpr std::uint8_t kStatusFull = 0x10;       // FIFO full
+inline constexpr std::uint8_t kStatusLevelMask = 0x0F;  // FIFO level (frames held), saturates at 15
 
 struct AxisRate {
     std::uint32_t period_cycles = 0;  // 0 = stopped
@@ -44,9 +44,7 @@ struct AxisRate {
 struct Command {
     std::vector<AxisRate> axes;
     bool laser_on = false;
-    friend bool operator==(const Command& a, const Command& b) {
-        return a.axes == b.axes && a.laser_on == b.laser_on;
-    }
+    friend bool operator==(const Command& a, const Command& b) { return a.axes == b.axes && a.laser_on == b.laser_on; }
 };
 
 struct SlaveStatus {
@@ -65,8 +63,12 @@ struct Feedback {
     std::vector<std::int32_t> counts;  // per axis, as sent (mod 2^32)
 };
 
-[[nodiscard]] constexpr std::size_t frame_bytes(std::size_t n_axes) { return kHeaderBytes + kBytesPerAxis * n_axes; }
-[[nodiscard]] constexpr std::size_t frame_bits(std::size_t n_axes) { return 8 * frame_bytes(n_axes); }
+[[nodiscard]] constexpr std::size_t frame_bytes(std::size_t n_axes) {
+    return kHeaderBytes + kBytesPerAxis * n_axes;
+}
+[[nodiscard]] constexpr std::size_t frame_bits(std::size_t n_axes) {
+    return 8 * frame_bytes(n_axes);
+}
 
 // Rate word of one axis, bit 30 clear. BadInput (naming `where` and the numbers) for a period above the 30-bit
 // field or a non-zero period below min_period_cycles (the FPGA's shortest STEP period).
@@ -95,8 +97,7 @@ struct Feedback {
 // the nearest clock (ties away from zero), so the achieved rate is off by at most half a clock per period.
 // 0 steps/s -> 0 (stopped). BadInput with the numbers when the period exceeds kMaxPeriodCycles (rate below
 // clk_hz / (2^30 - 1/2)) or is below min_period_cycles (rate above clk_hz / min_period_cycles), or the rate is not finite.
-[[nodiscard]] std::uint32_t period_for_rate(double steps_per_s, std::uint32_t clk_hz,
-                                            std::uint32_t min_period_cycles,
+[[nodiscard]] std::uint32_t period_for_rate(double steps_per_s, std::uint32_t clk_hz, std::uint32_t min_period_cycles,
                                             const std::string& where = "spi: rate word");
 // Signed rate -> rate word fields (forward for rate >= 0).
 [[nodiscard]] AxisRate axis_rate_for(double steps_per_s, std::uint32_t clk_hz, std::uint32_t min_period_cycles,

@@ -37,7 +37,9 @@ TimePs sclk_fall_ps(const SpiConfig& cfg, std::int64_t bit) {
     return cfg.cs_setup_ps + cycles_to_ps(2 * bit + 1, 2 * std::int64_t{cfg.sclk_hz});
 }
 
-TimePs sclk_half_period_ps(const SpiConfig& cfg) { return cycles_to_ps(1, 2 * std::int64_t{cfg.sclk_hz}); }
+TimePs sclk_half_period_ps(const SpiConfig& cfg) {
+    return cycles_to_ps(1, 2 * std::int64_t{cfg.sclk_hz});
+}
 
 void check_transfer_fits(const SpiConfig& cfg, std::size_t bits, TimePs servo_period_ps) {
     const TimePs slot = transfer_slot_ps(cfg, bits);

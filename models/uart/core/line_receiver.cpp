@@ -2,7 +2,9 @@
 
 namespace cnc::uart {
 
-TimePs decision_offset_ps(BitClock clk, const FrameFormat& fmt) { return clk.mid_bit(fmt.bits_per_frame() - 1); }
+TimePs decision_offset_ps(BitClock clk, const FrameFormat& fmt) {
+    return clk.mid_bit(fmt.bits_per_frame() - 1);
+}
 
 RxFrame receive_frame(const EdgeLog& line, TimePs t_fall_ps, BitClock clk, const FrameFormat& fmt) {
     validate(fmt);

@@ -17,7 +17,7 @@ namespace cnc::uart {
 
 enum class RxStatus {
     Ok,
-    FalseStart,    // the line was high again at the middle of the start bit: a glitch, no frame
+    FalseStart,  // the line was high again at the middle of the start bit: a glitch, no frame
     ParityError,
     FramingError,  // a stop bit sampled low
 };

@@ -44,6 +44,8 @@ std::vector<Edge> frame_edges(std::uint8_t byte, TimePs t_start_ps, BitClock clk
     return edges;
 }
 
-TimePs frame_time_ps(BitClock clk, const FrameFormat& fmt) { return clk.bit_edge(fmt.bits_per_frame()); }
+TimePs frame_time_ps(BitClock clk, const FrameFormat& fmt) {
+    return clk.bit_edge(fmt.bits_per_frame());
+}
 
 }  // namespace cnc::uart

@@ -20,12 +20,8 @@ struct BitClock {
     // the tick count, not by adding rounded bit times, so there is no cumulative drift (<= 1 ps rounding).
     [[nodiscard]] TimePs bit_edge(std::int64_t k) const { return cycles_to_ps(k * ticks_per_bit, clk_hz); }
     // Middle of bit k (k + 0.5 bit), where an ideal receiver samples.
-    [[nodiscard]] TimePs mid_bit(std::int64_t k) const {
-        return cycles_to_ps((2 * k + 1) * ticks_per_bit, 2 * clk_hz);
-    }
-    [[nodiscard]] double baud() const {
-        return static_cast<double>(clk_hz) / static_cast<double>(ticks_per_bit);
-    }
+    [[nodiscard]] TimePs mid_bit(std::int64_t k) const { return cycles_to_ps((2 * k + 1) * ticks_per_bit, 2 * clk_hz); }
+    [[nodiscard]] double baud() const { return static_cast<double>(clk_hz) / static_cast<double>(ticks_per_bit); }
 };
 
 enum class Parity { None, Even, Odd };

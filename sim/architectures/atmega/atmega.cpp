@@ -12,8 +12,8 @@ public:
     // The head's pin follows the motion code (seed 003 §4.3); the PC program plans the job whole before it sends it.
     [[nodiscard]] JobUse job_use() const override { return {true, false, LaserSwitching::ByMotionKind, false}; }
 
-    [[nodiscard]] std::shared_ptr<const ArchSettings> read_settings(
-        KeyReader& r, const Scenario&, const std::filesystem::path& base) const override {
+    [[nodiscard]] std::shared_ptr<const ArchSettings> read_settings(KeyReader& r, const Scenario&,
+                                                                    const std::filesystem::path& base) const override {
         auto s = std::make_shared<AtmegaSettings>();
         read_atmega_settings(r, *s, base);
         return s;

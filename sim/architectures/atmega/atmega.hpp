@@ -13,7 +13,7 @@ namespace atmega {
 
 // Its registry entry (architectures/registry.hpp).
 struct Entry {
-    static const Architecture& architecture();             // atmega.cpp
+    static const Architecture& architecture();  // atmega.cpp
     // atmega_controller.cpp: BadInput for a bad avr.pins or avr.firmware; unavailable.cpp in a build without the
     // AVR model refuses the architecture.
     static ArchRun run(const Scenario& s, const Job& job);

@@ -111,8 +111,7 @@ void check_firmware_rate(const Scenario& s, const AtmegaSettings& a, const uart:
                          const avr::AvrCoreConfig& avr_cfg) {
     const std::optional<FirmwareUsart> usart = probe_firmware_usart(avr_cfg);
     if (!usart) return;
-    const std::string firmware =
-        a.firmware.empty() ? "the seed 003 firmware" : "the firmware " + avr_cfg.firmware_elf;
+    const std::string firmware = a.firmware.empty() ? "the seed 003 firmware" : "the firmware " + avr_cfg.firmware_elf;
     check_line_rates(s.file + ": link.baud, avr.firmware", cp2102_end(link),
                      {usart->baud, firmware + "'s USART0 at " + usart->text(avr_cfg.f_cpu_hz)});
 }
@@ -273,10 +272,14 @@ private:
 
 void AtmegaController::report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) {
     run.warnings = m_plan.warnings;
-    const AtmegaFacts facts{m_plan,         m_s.machine,
-                            m_pc,           m_cp2102,
-                            m_mcu,          m_pins->windows(),
-                            m_chord_gaps.gaps(), m_avr_cfg.firmware_elf,
+    const AtmegaFacts facts{m_plan,
+                            m_s.machine,
+                            m_pc,
+                            m_cp2102,
+                            m_mcu,
+                            m_pins->windows(),
+                            m_chord_gaps.gaps(),
+                            m_avr_cfg.firmware_elf,
                             m_mcu.chip().rx_clock().baud()};
     for (Warning& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
     run.details = details_json(facts, m_s.detail);

@@ -6,10 +6,14 @@ namespace cnc::sim {
 
 namespace {
 
-void append(EdgeLog& to, const EdgeLog& from) { to.edges.insert(to.edges.end(), from.edges.begin(), from.edges.end()); }
+void append(EdgeLog& to, const EdgeLog& from) {
+    to.edges.insert(to.edges.end(), from.edges.begin(), from.edges.end());
+}
 
 // An empty log of a recorder pin: its name and its level before the run.
-EdgeLog empty_like(const EdgeLog& log) { return EdgeLog{log.name, log.initial, {}}; }
+EdgeLog empty_like(const EdgeLog& log) {
+    return EdgeLog{log.name, log.initial, {}};
+}
 
 }  // namespace
 
@@ -45,6 +49,8 @@ EdgeLog AtmegaPins::hand_over(const std::string& pin, TimePs before_ps) {
     return m_unread.at(pin).take_before(before_ps);
 }
 
-EdgeLog AtmegaPins::take_raw(const std::string& pin) { return std::move(m_raw.at(pin)); }
+EdgeLog AtmegaPins::take_raw(const std::string& pin) {
+    return std::move(m_raw.at(pin));
+}
 
 }  // namespace cnc::sim

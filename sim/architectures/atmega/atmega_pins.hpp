@@ -7,10 +7,10 @@
 #include <map>
 #include <string>
 
+#include "architectures/atmega/motion_windows.hpp"
 #include "host/core/cad2g/plan.hpp"
 #include "metrics/pulse/enabled_steps.hpp"
 #include "probes/edge_recorder.hpp"
-#include "architectures/atmega/motion_windows.hpp"
 
 namespace cnc::sim {
 
@@ -29,8 +29,7 @@ public:
 
     // The edges read and not handed over yet of a pin the metrics read, those before `before_ps`: step_x and
     // step_y (the pulses the drivers act on), dir_x, dir_y, laser.
-    [[nodiscard]] EdgeLog hand_over(const std::string& pin,
-                                    TimePs before_ps = std::numeric_limits<TimePs>::max());
+    [[nodiscard]] EdgeLog hand_over(const std::string& pin, TimePs before_ps = std::numeric_limits<TimePs>::max());
     // With keep_raw: a raw pin's whole log (n_enbl_x, n_enbl_y, step_x, step_y).
     [[nodiscard]] EdgeLog take_raw(const std::string& pin);
 

@@ -20,11 +20,16 @@ std::string hex(std::uint8_t b) {
 
 std::string id_name(cad2g::CommandId id) {
     switch (id) {
-        case cad2g::CommandId::G00: return "G00";
-        case cad2g::CommandId::G01: return "G01";
-        case cad2g::CommandId::G02: return "G02";
-        case cad2g::CommandId::G03: return "G03";
-        case cad2g::CommandId::M30: return "M30";
+        case cad2g::CommandId::G00:
+            return "G00";
+        case cad2g::CommandId::G01:
+            return "G01";
+        case cad2g::CommandId::G02:
+            return "G02";
+        case cad2g::CommandId::G03:
+            return "G03";
+        case cad2g::CommandId::M30:
+            return "M30";
     }
     return "?";
 }
@@ -76,8 +81,8 @@ std::vector<Warning> link_warnings(const AtmegaFacts& f) {
     std::vector<Warning> w;
     const avr::AvrCoreStats st = f.mcu.stats();
     if (st.usart.rx_framing_errors > 0) {
-        w.push_back({"mcu_framing_errors", "",
-                     std::to_string(st.usart.rx_framing_errors) + " UART framing errors at the MCU"});
+        w.push_back(
+            {"mcu_framing_errors", "", std::to_string(st.usart.rx_framing_errors) + " UART framing errors at the MCU"});
     }
     if (f.cp2102.stats().framing_errors > 0) {
         w.push_back({"cp2102_framing_errors", "",
@@ -86,8 +91,10 @@ std::vector<Warning> link_warnings(const AtmegaFacts& f) {
     const ChordGaps& gaps = f.gaps;
     if (gaps.late > 0) {
         w.push_back({"late_chords", "",
-                     std::to_string(gaps.late) + " chords started late (their bytes came after the chord before "
-                     "had ended): Y took " + std::to_string(gaps.y_steps_waiting) + " steps meanwhile"});
+                     std::to_string(gaps.late) +
+                         " chords started late (their bytes came after the chord before "
+                         "had ended): Y took " +
+                         std::to_string(gaps.y_steps_waiting) + " steps meanwhile"});
     }
     return w;
 }
@@ -96,32 +103,31 @@ nlohmann::json details_json(const AtmegaFacts& f, bool detail) {
     const uart::Cp2102Baud& baud = f.cp2102.baud();
     const avr::AvrCoreStats st = f.mcu.stats();
     const ChordGaps& gaps = f.gaps;
-    nlohmann::json j = {{"firmware", f.firmware},
-                        {"link",
-                         {{"requested_baud", baud.requested},
-                          {"line_baud", baud.actual_bd},
-                          {"line_baud_error_pct", baud.error_pct},
-                          {"mcu_baud", f.mcu_baud},
-                          {"mcu_vs_line_pct", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0},
-                          {"bytes_to_mcu", f.cp2102.tx_log().size()},
-                          {"bytes_from_mcu", f.cp2102.rx_log().size()},
-                          {"framing_errors_at_mcu", st.usart.rx_framing_errors},
-                          {"framing_errors_at_host", f.cp2102.stats().framing_errors},
-                          {"frames_lost_at_mcu", st.usart.rx_lost_disabled + st.usart.rx_overruns}}},
-                        {"pc",
-                         {{"transfers", f.pc.transfers().size()},
-                          {"bytes_written", f.pc.writes().size()},
-                          {"finished", f.pc.finished()},
-                          {"stopped", f.pc.failure() ? nlohmann::json(f.pc.failure()->reason) : nlohmann::json(nullptr)},
-                          {"t_stopped_s",
-                           f.pc.failure() ? nlohmann::json(ps_to_s(f.pc.failure()->t_ps)) : nlohmann::json(nullptr)},
-                          {"t_end_s",
-                           f.pc.finished() ? nlohmann::json(ps_to_s(f.pc.t_end_ps())) : nlohmann::json(nullptr)}}},
-                        {"mcu", {{"cycles", st.cycles}, {"stopped", f.mcu.stopped()}}},
-                        {"chords",
-                         {{"late", gaps.late},
-                          {"wait_max_ms", static_cast<double>(gaps.wait_max_ps) / static_cast<double>(kPsPerMs)},
-                          {"y_steps_waiting", gaps.y_steps_waiting}}}};
+    nlohmann::json j = {
+        {"firmware", f.firmware},
+        {"link",
+         {{"requested_baud", baud.requested},
+          {"line_baud", baud.actual_bd},
+          {"line_baud_error_pct", baud.error_pct},
+          {"mcu_baud", f.mcu_baud},
+          {"mcu_vs_line_pct", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0},
+          {"bytes_to_mcu", f.cp2102.tx_log().size()},
+          {"bytes_from_mcu", f.cp2102.rx_log().size()},
+          {"framing_errors_at_mcu", st.usart.rx_framing_errors},
+          {"framing_errors_at_host", f.cp2102.stats().framing_errors},
+          {"frames_lost_at_mcu", st.usart.rx_lost_disabled + st.usart.rx_overruns}}},
+        {"pc",
+         {{"transfers", f.pc.transfers().size()},
+          {"bytes_written", f.pc.writes().size()},
+          {"finished", f.pc.finished()},
+          {"stopped", f.pc.failure() ? nlohmann::json(f.pc.failure()->reason) : nlohmann::json(nullptr)},
+          {"t_stopped_s", f.pc.failure() ? nlohmann::json(ps_to_s(f.pc.failure()->t_ps)) : nlohmann::json(nullptr)},
+          {"t_end_s", f.pc.finished() ? nlohmann::json(ps_to_s(f.pc.t_end_ps())) : nlohmann::json(nullptr)}}},
+        {"mcu", {{"cycles", st.cycles}, {"stopped", f.mcu.stopped()}}},
+        {"chords",
+         {{"late", gaps.late},
+          {"wait_max_ms", static_cast<double>(gaps.wait_max_ps) / static_cast<double>(kPsPerMs)},
+          {"y_steps_waiting", gaps.y_steps_waiting}}}};
     if (detail) j["commands"] = commands_json(f);  // one record per command and chord: they grow with the job
     return j;
 }
@@ -140,12 +146,12 @@ std::string details_text(const AtmegaFacts& f) {
     t << "atmega link and host\n"
       << format("  line %.2f Bd (%+.3f %% vs requested), MCU USART %.1f Bd: ", baud.actual_bd, baud.error_pct,
                 f.mcu_baud)
-      << format("%+.3f %% against the line\n", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0)
-      << "  PC wrote " << f.pc.writes().size() << " bytes, one per confirm"
+      << format("%+.3f %% against the line\n", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0) << "  PC wrote "
+      << f.pc.writes().size() << " bytes, one per confirm"
       << (f.pc.failure() ? format(" (stopped at %.3f s: ", ps_to_s(f.pc.failure()->t_ps)) + f.pc.failure()->reason + ")"
                          : std::string())
-      << "; framing errors at the MCU " << st.usart.rx_framing_errors
-      << ", at the CP2102 " << f.cp2102.stats().framing_errors << '\n'
+      << "; framing errors at the MCU " << st.usart.rx_framing_errors << ", at the CP2102 "
+      << f.cp2102.stats().framing_errors << '\n'
       << "  commands:";
     for (const auto& [id, n] : per_id) {
         t << ' ' << id << " x" << n.first;

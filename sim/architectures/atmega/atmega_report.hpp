@@ -7,12 +7,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "architectures/atmega/chord_gaps.hpp"
+#include "architectures/atmega/motion_windows.hpp"
 #include "avr/avr_core.hpp"
 #include "common/warning.hpp"
 #include "host/core/cad2g/plan.hpp"
 #include "host/pc_program.hpp"
-#include "architectures/atmega/chord_gaps.hpp"
-#include "architectures/atmega/motion_windows.hpp"
 #include "uart/cp2102.hpp"
 
 namespace cnc::sim {
@@ -26,7 +26,7 @@ struct AtmegaFacts {
     const RecordLog<MotionWindow>& windows;  // read with `detail` only (kept whole then)
     const ChordGaps& gaps;
     std::string firmware;
-    double mcu_baud = 0.0;   // f_cpu / (16 (UBRR0 + 1))
+    double mcu_baud = 0.0;  // f_cpu / (16 (UBRR0 + 1))
 };
 
 // Framing errors at either end, chords that started late.

@@ -15,10 +15,10 @@ void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem
         r.get_int("avr.quantum_cycles", s.quantum_cycles, 1, 1'000'000,
                   "atmega: AVR cycles run ahead of SystemC time between replays of its pin changes (speed only: "
                   "outputs keep their exact cycle)"));
-    s.g01_timer2_prescaler = static_cast<int>(r.get_int(
-        "atmega.g01_timer2_prescaler", s.g01_timer2_prescaler, 256, 1024,
-        "atmega: Timer2 prescaler of the built firmware's G01: 1024 (what the PC computes with), or 256 "
-        "(App. A3's TCCR2B = 0b110 as listed: Y runs 4x fast)"));
+    s.g01_timer2_prescaler = static_cast<int>(
+        r.get_int("atmega.g01_timer2_prescaler", s.g01_timer2_prescaler, 256, 1024,
+                  "atmega: Timer2 prescaler of the built firmware's G01: 1024 (what the PC computes with), or 256 "
+                  "(App. A3's TCCR2B = 0b110 as listed: Y runs 4x fast)"));
     if (s.g01_timer2_prescaler != 1024 && s.g01_timer2_prescaler != 256) {
         r.fail("atmega.g01_timer2_prescaler", std::to_string(s.g01_timer2_prescaler) + " is not 1024 or 256");
     }

@@ -15,8 +15,8 @@ namespace cnc::sim {
 
 struct AtmegaSettings final : ArchSettings {
     SerialHostSettings serial;
-    std::string firmware;     // avr.firmware resolved against the scenario's folder; empty: the built seed 003 ELF
-    std::string pins;         // avr.pins, "signal=pin, ..."; empty: seed 003's pin map
+    std::string firmware;  // avr.firmware resolved against the scenario's folder; empty: the built seed 003 ELF
+    std::string pins;      // avr.pins, "signal=pin, ..."; empty: seed 003's pin map
     // avr.quantum_cycles. 1600 (100 us), not AvrCoreConfig's 160: the outputs are exact at any value and the only
     // input, RXD, is decoded exactly, so a longer quantum costs nothing here; it runs the square job 25 % faster.
     std::uint32_t quantum_cycles = 1600;

@@ -10,16 +10,16 @@
 #include <utility>
 #include <vector>
 
+#include "architectures/atmega/motion_windows.hpp"
 #include "common/record_log.hpp"
 #include "common/units.hpp"
 #include "host/core/cad2g/plan.hpp"
-#include "architectures/atmega/motion_windows.hpp"
 
 namespace cnc::sim {
 
 struct ChordGaps {
-    int late = 0;             // chords whose last byte the MCU received after the chord before had ended
-    TimePs wait_max_ps = 0;   // longest end-of-chord to reload gap
+    int late = 0;                      // chords whose last byte the MCU received after the chord before had ended
+    TimePs wait_max_ps = 0;            // longest end-of-chord to reload gap
     std::int64_t y_steps_waiting = 0;  // Y steps the driver took in those gaps
 };
 

@@ -9,7 +9,9 @@ namespace cad2g = host::cad2g;
 
 namespace {
 
-bool both_high(bool en_x_high, bool en_y_high) { return en_x_high && en_y_high; }
+bool both_high(bool en_x_high, bool en_y_high) {
+    return en_x_high && en_y_high;
+}
 
 }  // namespace
 

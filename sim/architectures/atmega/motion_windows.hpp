@@ -78,11 +78,11 @@ private:
     [[nodiscard]] bool last_motion() const;
 
     const host::cad2g::Plan& m_plan;
-    std::int64_t m_y_steps = 0;                     // Y steps handed over so far
-    std::optional<std::size_t> m_command;           // the command whose start is awaited, or under way
-    bool m_running = false;                         // a motion of m_command is under way
-    MotionWindow m_open;                            // that motion
-    std::optional<PortEvent> m_isr;                 // its ISR end, once seen
+    std::int64_t m_y_steps = 0;            // Y steps handed over so far
+    std::optional<std::size_t> m_command;  // the command whose start is awaited, or under way
+    bool m_running = false;                // a motion of m_command is under way
+    MotionWindow m_open;                   // that motion
+    std::optional<PortEvent> m_isr;        // its ISR end, once seen
     RecordLog<MotionWindow> m_windows;
 };
 

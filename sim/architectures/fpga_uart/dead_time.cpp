@@ -26,11 +26,15 @@ struct Part {
     TimePs GapBreakdown::*field;
 };
 
-constexpr Part kParts[] = {{"step_tail", &GapBreakdown::step_tail_ps},     {"ack_wire", &GapBreakdown::ack_wire_ps},
-                           {"usb_in", &GapBreakdown::usb_in_ps},           {"job_wait", &GapBreakdown::job_wait_ps},
+constexpr Part kParts[] = {{"step_tail", &GapBreakdown::step_tail_ps},
+                           {"ack_wire", &GapBreakdown::ack_wire_ps},
+                           {"usb_in", &GapBreakdown::usb_in_ps},
+                           {"job_wait", &GapBreakdown::job_wait_ps},
                            {"host", &GapBreakdown::host_ps},
-                           {"usb_out", &GapBreakdown::usb_out_ps},         {"packet_wire", &GapBreakdown::packet_wire_ps},
-                           {"fpga_setup", &GapBreakdown::fpga_setup_ps},   {"total", &GapBreakdown::total_ps}};
+                           {"usb_out", &GapBreakdown::usb_out_ps},
+                           {"packet_wire", &GapBreakdown::packet_wire_ps},
+                           {"fpga_setup", &GapBreakdown::fpga_setup_ps},
+                           {"total", &GapBreakdown::total_ps}};
 
 void add_gap(DeadTimeBreakdown& d, const GapBreakdown& g, bool keep_gaps) {
     ++d.gap_count;
@@ -43,7 +47,9 @@ void add_gap(DeadTimeBreakdown& d, const GapBreakdown& g, bool keep_gaps) {
 
 }  // namespace
 
-PieceSteps piece_steps(const metrics::MoveMetrics& piece) { return {piece.t_first_edge_ps, piece.t_last_edge_ps}; }
+PieceSteps piece_steps(const metrics::MoveMetrics& piece) {
+    return {piece.t_first_edge_ps, piece.t_last_edge_ps};
+}
 
 void DeadTimeFold::fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const RecordLog<host::SentPacket>& sent,
                         const uart::Cp2102& cp2102) {
@@ -144,8 +150,7 @@ std::string summary_text(const DeadTimeBreakdown& d) {
     std::string out = "  dead time between moves (" + std::to_string(d.gap_count) + " gaps), ms:   mean      max\n";
     for (const Part& p : kParts) {
         char line[96];
-        std::snprintf(line, sizeof line, "    %-12s %28.4f %8.4f\n", p.name, mean_ms(d, p.field),
-                      max_ms(d, p.field));
+        std::snprintf(line, sizeof line, "    %-12s %28.4f %8.4f\n", p.name, mean_ms(d, p.field), max_ms(d, p.field));
         out += line;
     }
     char util[96];

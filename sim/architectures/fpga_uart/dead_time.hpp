@@ -19,23 +19,23 @@
 namespace cnc::sim {
 
 struct GapBreakdown {
-    int after_move = 0;        // 1-based move the gap follows
-    TimePs step_tail_ps = 0;   // last STEP rise -> busy falls (rest of the last period + DONE)
-    TimePs ack_wire_ps = 0;    // busy falls -> ACK stop bit ends at the CP2102 (tx_start + 10 bits)
-    TimePs usb_in_ps = 0;      // ACK received -> the host sees it (USB frame + driver latency)
-    TimePs job_wait_ps = 0;    // the job's own waits slept by the host: G4 dwell, M0 pause, Z moves
-    TimePs host_ps = 0;        // the rest until the host calls write() for the next packet (processing)
-    TimePs usb_out_ps = 0;     // write() -> the packet reaches the CP2102 (OS latency + USB frame)
-    TimePs packet_wire_ps = 0; // first start bit -> pkt_valid (11 frames; uart_rx takes the stop bit mid-bit)
-    TimePs fpga_setup_ps = 0;  // pkt_valid -> first STEP (SETUP, DIR settle: 203 clocks)
-    TimePs total_ps = 0;       // = first STEP of the next move - last STEP of this one
+    int after_move = 0;         // 1-based move the gap follows
+    TimePs step_tail_ps = 0;    // last STEP rise -> busy falls (rest of the last period + DONE)
+    TimePs ack_wire_ps = 0;     // busy falls -> ACK stop bit ends at the CP2102 (tx_start + 10 bits)
+    TimePs usb_in_ps = 0;       // ACK received -> the host sees it (USB frame + driver latency)
+    TimePs job_wait_ps = 0;     // the job's own waits slept by the host: G4 dwell, M0 pause, Z moves
+    TimePs host_ps = 0;         // the rest until the host calls write() for the next packet (processing)
+    TimePs usb_out_ps = 0;      // write() -> the packet reaches the CP2102 (OS latency + USB frame)
+    TimePs packet_wire_ps = 0;  // first start bit -> pkt_valid (11 frames; uart_rx takes the stop bit mid-bit)
+    TimePs fpga_setup_ps = 0;   // pkt_valid -> first STEP (SETUP, DIR settle: 203 clocks)
+    TimePs total_ps = 0;        // = first STEP of the next move - last STEP of this one
 };
 
 struct DeadTimeBreakdown {
     std::size_t gap_count = 0;
-    GapBreakdown sum, max;            // each part summed and at its largest over the gaps (after_move unused)
-    std::vector<GapBreakdown> gaps;   // every gap, when kept (a long job has one per packet)
-    double utilisation_to_fpga_pct = 0.0;    // host -> FPGA line busy time over the job time
+    GapBreakdown sum, max;                 // each part summed and at its largest over the gaps (after_move unused)
+    std::vector<GapBreakdown> gaps;        // every gap, when kept (a long job has one per packet)
+    double utilisation_to_fpga_pct = 0.0;  // host -> FPGA line busy time over the job time
     double utilisation_from_fpga_pct = 0.0;
 };
 
@@ -72,10 +72,10 @@ public:
 private:
     const bool m_keep_gaps;
     DeadTimeBreakdown m_d;
-    std::deque<PieceSteps> m_pieces;   // from piece m_first_piece on: the ones gaps still to be folded read
+    std::deque<PieceSteps> m_pieces;  // from piece m_first_piece on: the ones gaps still to be folded read
     std::size_t m_first_piece = 0;
-    std::size_t m_next_gap = 0;        // the gap after piece m_next_gap is the next one to fold
-    std::size_t m_next_rx_byte = 0;    // the last ACK found: a later gap's ACK is not before it
+    std::size_t m_next_gap = 0;      // the gap after piece m_next_gap is the next one to fold
+    std::size_t m_next_rx_byte = 0;  // the last ACK found: a later gap's ACK is not before it
 };
 
 // `detail`: with every gap's breakdown (per_gap: the gaps must have been kept); without, the mean and the max of

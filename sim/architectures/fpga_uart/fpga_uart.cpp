@@ -42,7 +42,8 @@ public:
                 (void)host::numerator(machine->steps_per_mm(), own.fpga.clk_hz);
             } catch (const BadInput& e) {
                 const std::string p = std::string("machine.") + axis + ".";
-                throw BadInput(s.file + ": " + p + "steps_per_mm (or " + p + "step_angle_deg, microsteps and the "
+                throw BadInput(s.file + ": " + p + "steps_per_mm (or " + p +
+                                   "step_angle_deg, microsteps and the "
                                    "transmission keys), fpga.clock_hz",
                                format("%.10g steps/mm: ", machine->steps_per_mm()) + numerator_problem(e) +
                                    "; host.numerator = \"seed-constant\" sends the script's constant instead");

@@ -12,7 +12,7 @@ namespace fpga_uart {
 
 // Its registry entry (architectures/registry.hpp).
 struct Entry {
-    static const Architecture& architecture();             // fpga_uart.cpp
+    static const Architecture& architecture();              // fpga_uart.cpp
     static ArchRun run(const Scenario& s, const Job& job);  // fpga_uart_controller.cpp
 };
 

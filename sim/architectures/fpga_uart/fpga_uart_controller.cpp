@@ -165,7 +165,8 @@ public:
                                  "appendix wraps it") +
                      (f.fpga.period_arithmetic == fpga::PeriodArithmetic::Wrap32
                           ? " (fpga.period_arithmetic = wrap32: this run used the wrapped period)"
-                          : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)")) {}
+                          : " (this run used the exact period; fpga.period_arithmetic = wrap32 reproduces the wrap)")) {
+    }
 
     // Reads the packets step_gen has seen since the last call.
     void read(const fpga::Top& top, const RecordLog<int>& lines) {
@@ -195,8 +196,8 @@ void FpgaWarnings::finish(const fpga::Top& top, std::vector<Warning>& warnings) 
     warnings.insert(warnings.end(), m_packets.begin(), m_packets.end());
     for (const fpga::InitRecord& i : top.inits()) {
         if (!i.applied) {
-            const char* why =
-                f.fpga.init_packet_wired ? " (step_gen was busy)" : " (fpga.init_packet_wired = false, as appendix top.v)";
+            const char* why = f.fpga.init_packet_wired ? " (step_gen was busy)"
+                                                       : " (fpga.init_packet_wired = false, as appendix top.v)";
             warnings.push_back({"init_not_applied", "",
                                 "init packet (NUMERATOR " + std::to_string(i.num_x) + "/" + std::to_string(i.num_y) +
                                     ") did not reach step_gen" + why});
@@ -232,16 +233,15 @@ void hand_over_read(const ExecutedPieces& executed, const DeadTimeFold& dead_fol
 // the link: the host's work and write latency, the USB frames out and in, the driver latency, and the packet
 // and its ACK on the line (4.3 ms at 115200 Bd; the run's dead-time split measures 4.35 ms per gap on the square: docs/usage.md).
 ArchPace pace(const Scenario& s, const FpgaUartSettings& f, std::size_t packets) {
-    constexpr double kBitsPerByte = 10.0;  // 8N1
+    constexpr double kBitsPerByte = 10.0;                          // 8N1
     constexpr double kTripBytes = host::kMotionPacketBytes + 1.0;  // the packet and its ACK
     ArchPace p;
     p.max_speed_x_mm_per_s = s.machine.x.limits.max_velocity_mm_per_s;  // the CAM holds the packet feed to them
     p.max_speed_y_mm_per_s = s.machine.y.limits.max_velocity_mm_per_s;
     p.startup_s = ps_to_s(f.serial.sender.settle_ps + f.serial.sender.init_gap_ps);
-    const double trip_s =
-        ps_to_s(f.serial.sender.packet_processing_ps + f.serial.sender.write_latency_ps + 2 * f.serial.link.usb_frame_ps +
-                f.serial.link.usb_latency_ps) +
-        kTripBytes * kBitsPerByte / static_cast<double>(f.serial.link.requested_baud);
+    const double trip_s = ps_to_s(f.serial.sender.packet_processing_ps + f.serial.sender.write_latency_ps +
+                                  2 * f.serial.link.usb_frame_ps + f.serial.link.usb_latency_ps) +
+                          kTripBytes * kBitsPerByte / static_cast<double>(f.serial.link.requested_baud);
     p.link_s = static_cast<double>(packets) * trip_s;
     return p;
 }
@@ -282,16 +282,17 @@ JobEstimate estimate(const Scenario& s, const FpgaUartSettings& f, const Job& jo
 }
 
 nlohmann::json packet_json(const fpga::PacketRecord& r) {
-    return {{"t_pkt_valid_s", ps_to_s(r.t_pkt_valid_ps)},
-            {"motion", r.motion},
-            {"steps", {r.steps_x, r.steps_y}},
-            {"feed", r.feed},
-            {"accepted", r.accepted},
-            {"period_cycles", {r.period_x_cycles, r.period_y_cycles}},
-            {"period_overflow", r.period_overflow},
-            {"t_run_start_s", ps_to_s(r.t_run_start_ps)},
-            {"t_busy_fall_s", ps_to_s(r.t_busy_fall_ps)},
-            {"t_ack_start_s", r.t_ack_start_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(r.t_ack_start_ps))}};
+    return {
+        {"t_pkt_valid_s", ps_to_s(r.t_pkt_valid_ps)},
+        {"motion", r.motion},
+        {"steps", {r.steps_x, r.steps_y}},
+        {"feed", r.feed},
+        {"accepted", r.accepted},
+        {"period_cycles", {r.period_x_cycles, r.period_y_cycles}},
+        {"period_overflow", r.period_overflow},
+        {"t_run_start_s", ps_to_s(r.t_run_start_ps)},
+        {"t_busy_fall_s", ps_to_s(r.t_busy_fall_ps)},
+        {"t_ack_start_s", r.t_ack_start_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(r.t_ack_start_ps))}};
 }
 
 nlohmann::json sent_json(const host::SentPacket& p) {
@@ -352,9 +353,8 @@ public:
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
         const std::optional<std::int64_t> fpga = m_f.fpga.clk_hz;
         const Wires& w = m_wires;
-        return {{&w.uart_rx, {}},     {&w.uart_tx, fpga},  {&w.busy, fpga},
-                {&w.pkt_valid, fpga}, {&w.cfg_valid, fpga}, {&w.rx_valid, fpga},
-                {&w.ack, fpga}};
+        return {{&w.uart_rx, {}},     {&w.uart_tx, fpga},  {&w.busy, fpga}, {&w.pkt_valid, fpga},
+                {&w.cfg_valid, fpga}, {&w.rx_valid, fpga}, {&w.ack, fpga}};
     }
     // The link's lines and busy go into ArchRun::lines only when the whole logs are kept (--plots, --samples,
     // tests): a long job's UART lines are its largest log after the STEPs, and no metric reads them.
@@ -438,31 +438,30 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
     for (const host::SenderMessage& m : m_sender.messages()) {
         msgs.push_back({{"t_s", ps_to_s(m.t_ps)}, {"text", m.text}});
     }
-    run.details = {
-        {"segments", m_packet_count},
-        {"link",
-         {{"requested_baud", m_f.serial.link.requested_baud},
-          {"line_baud", baud.actual_bd},
-          {"line_baud_error_pct", baud.error_pct},
-          {"fpga_bit_cycles", m_f.fpga.uart_full_bit_cycles},
-          {"bytes_to_fpga", m_cp2102.stats().tx_bytes},
-          {"bytes_from_fpga", m_cp2102.rx_log().size()},
-          {"utilisation_to_fpga_pct", dead.utilisation_to_fpga_pct},
-          {"utilisation_from_fpga_pct", dead.utilisation_from_fpga_pct}}},
-        {"sender",
-         {{"packets_sent", m_sender.packets().size()},
-          {"errors", m_sender.errors()},
-          {"aborted", m_sender.aborted()},
-          {"finished", m_sender.finished()},
-          {"t_end_s", ps_to_s(m_sender.t_end_ps())},
-          {"messages", msgs}}},
-        {"fpga",
-         {{"bytes_received", st.bytes_received},
-          {"framing_errors", st.framing_errors},
-          {"watchdog_resets", st.watchdog_resets},
-          {"acks_sent", st.acks_sent},
-          {"acks_dropped", st.acks_dropped}}},
-        {"dead_time", to_json(dead, s.detail)}};
+    run.details = {{"segments", m_packet_count},
+                   {"link",
+                    {{"requested_baud", m_f.serial.link.requested_baud},
+                     {"line_baud", baud.actual_bd},
+                     {"line_baud_error_pct", baud.error_pct},
+                     {"fpga_bit_cycles", m_f.fpga.uart_full_bit_cycles},
+                     {"bytes_to_fpga", m_cp2102.stats().tx_bytes},
+                     {"bytes_from_fpga", m_cp2102.rx_log().size()},
+                     {"utilisation_to_fpga_pct", dead.utilisation_to_fpga_pct},
+                     {"utilisation_from_fpga_pct", dead.utilisation_from_fpga_pct}}},
+                   {"sender",
+                    {{"packets_sent", m_sender.packets().size()},
+                     {"errors", m_sender.errors()},
+                     {"aborted", m_sender.aborted()},
+                     {"finished", m_sender.finished()},
+                     {"t_end_s", ps_to_s(m_sender.t_end_ps())},
+                     {"messages", msgs}}},
+                   {"fpga",
+                    {{"bytes_received", st.bytes_received},
+                     {"framing_errors", st.framing_errors},
+                     {"watchdog_resets", st.watchdog_resets},
+                     {"acks_sent", st.acks_sent},
+                     {"acks_dropped", st.acks_dropped}}},
+                   {"dead_time", to_json(dead, s.detail)}};
     if (s.detail) {  // one record per packet: they grow with the job
         nlohmann::json& sent = run.details["sender"]["packets"] = nlohmann::json::array();
         for (const host::SentPacket& p : m_sender.packets()) sent.push_back(sent_json(p));
@@ -474,16 +473,16 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
     text << "fpga-uart link and host\n"
          << format("  line %.1f Bd (%+.3f %% vs requested), FPGA bit %.0f clocks\n", baud.actual_bd, baud.error_pct,
                    m_f.fpga.uart_full_bit_cycles)
-         << "  packets sent " << m_sender.packets().size() << ", ACK timeouts " << m_sender.errors()
-         << ", FPGA ACKs " << st.acks_sent << " (dropped " << st.acks_dropped << ")\n"
+         << "  packets sent " << m_sender.packets().size() << ", ACK timeouts " << m_sender.errors() << ", FPGA ACKs "
+         << st.acks_sent << " (dropped " << st.acks_dropped << ")\n"
          << summary_text(dead);
     for (const host::SenderMessage& m : m_sender.messages()) {
         text << format("  host at %.6f s: ", ps_to_s(m.t_ps)) << m.text << '\n';
     }
     run.details_text = text.str();
 
-    if (const std::optional<std::string> framing = framing_failure(static_cast<std::int64_t>(st.framing_errors),
-                                                                   "FPGA", m_cp2102.stats().framing_errors)) {
+    if (const std::optional<std::string> framing =
+            framing_failure(static_cast<std::int64_t>(st.framing_errors), "FPGA", m_cp2102.stats().framing_errors)) {
         run.ok = false;
         run.failure = *framing;
     } else if (m_sender.aborted()) {

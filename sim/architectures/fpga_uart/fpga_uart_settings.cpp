@@ -15,10 +15,12 @@ void check_fpga(const KeyReader& r, const fpga::FpgaConfig& cfg) {
         fpga::validate(cfg);
     } catch (const BadInput& e) {
         const std::string what = e.what();
-        const std::pair<const char*, const char*> keys[] = {
-            {"clk_hz", "fpga.clock_hz"},          {"uart_full_bit_cycles", "fpga.uart_baud"},
-            {"uart_half_bit_cycles", "fpga.uart_baud"}, {"watchdog_cycles", "fpga.watchdog_ms"},
-            {"pulse_high_cycles", "fpga.pulse_high_cycles"}, {"dir_settle_cycles", "fpga.dir_settle_cycles"}};
+        const std::pair<const char*, const char*> keys[] = {{"clk_hz", "fpga.clock_hz"},
+                                                            {"uart_full_bit_cycles", "fpga.uart_baud"},
+                                                            {"uart_half_bit_cycles", "fpga.uart_baud"},
+                                                            {"watchdog_cycles", "fpga.watchdog_ms"},
+                                                            {"pulse_high_cycles", "fpga.pulse_high_cycles"},
+                                                            {"dir_settle_cycles", "fpga.dir_settle_cycles"}};
         for (const auto& [field, key] : keys) {
             if (what.find(field) != std::string::npos) r.fail(key, what);
         }
@@ -45,8 +47,8 @@ void read_host(KeyReader& r, FpgaUartSettings& s) {
                                        "packet feed from the dominant-axis feed") == "round"
                               ? host::FeedRounding::Round
                               : host::FeedRounding::Truncate;
-    s.cam.correct_rapid_feed = r.get_bool("host.correct_rapid_feed", s.cam.correct_rapid_feed,
-                                          "G0 feed reduced to the dominant axis like G1");
+    s.cam.correct_rapid_feed =
+        r.get_bool("host.correct_rapid_feed", s.cam.correct_rapid_feed, "G0 feed reduced to the dominant axis like G1");
 }
 
 void read_fpga(KeyReader& r, fpga::FpgaConfig& cfg) {

@@ -32,6 +32,8 @@ std::optional<MadeSegment> JobSegments::next() {
     return out;
 }
 
-double JobSegments::wait_after_last_s() { return m_waits ? m_waits->after_last() : 0.0; }
+double JobSegments::wait_after_last_s() {
+    return m_waits ? m_waits->after_last() : 0.0;
+}
 
 }  // namespace cnc::sim

@@ -27,7 +27,7 @@ class JobSegments {
 public:
     JobSegments(const Scenario& s, const Job& job);
     [[nodiscard]] std::optional<MadeSegment> next();  // none after the last
-    [[nodiscard]] double wait_after_last_s();          // once next() has returned none
+    [[nodiscard]] double wait_after_last_s();         // once next() has returned none
 
 private:
     const Job& m_job;

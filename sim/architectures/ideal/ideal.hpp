@@ -15,7 +15,7 @@ namespace ideal {
 
 // Its registry entry (architectures/registry.hpp).
 struct Entry {
-    static const Architecture& architecture();             // ideal.cpp
+    static const Architecture& architecture();              // ideal.cpp
     static ArchRun run(const Scenario& s, const Job& job);  // ideal_controller.cpp
 };
 

@@ -54,11 +54,16 @@ private:
     }
     sc_core::sc_out<bool>& pin(Pin p) {
         switch (p) {
-            case Pin::StepX: return step_x;
-            case Pin::DirX: return dir_x;
-            case Pin::StepY: return step_y;
-            case Pin::DirY: return dir_y;
-            case Pin::Laser: break;
+            case Pin::StepX:
+                return step_x;
+            case Pin::DirX:
+                return dir_x;
+            case Pin::StepY:
+                return step_y;
+            case Pin::DirY:
+                return dir_y;
+            case Pin::Laser:
+                break;
         }
         return laser;
     }
@@ -106,8 +111,7 @@ public:
 
     [[nodiscard]] JobEstimate estimate() const override { return m_estimate; }
     void feed_started(MetricsFeed& feed) override {
-        feed.pending().commanded =
-            commanded_trajectory_live(m_trajectory, m_clock, m_grid.origin_mm, kScanStepPs);
+        feed.pending().commanded = commanded_trajectory_live(m_trajectory, m_clock, m_grid.origin_mm, kScanStepPs);
     }
     void slice_ended(TimePs now_ps, MetricsFeed* feed) override {
         m_clock.add(now_ps, ps_to_s(now_ps));
@@ -141,8 +145,8 @@ public:
     void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override {
         const double duration_s = ps_to_s(m_end_ps);
         run.details = {{"trajectory_s", duration_s}, {"scan_step_us", ps_to_us(kScanStepPs)}};
-        run.details_text = format("ideal: the planned trajectory, %.6f s, stepped at its half-step crossings\n",
-                                  duration_s);
+        run.details_text =
+            format("ideal: the planned trajectory, %.6f s, stepped at its half-step crossings\n", duration_s);
         if (!m_generator.finished()) {
             run.ok = false;
             run.failure = "the job did not finish: " + time_limit_text(budget, end);

@@ -13,10 +13,16 @@ namespace {
 
 constexpr TimePs kEndOfTime = std::numeric_limits<TimePs>::max();
 
-double axis_of(geom::Vec2 v, std::size_t axis) { return axis == 0 ? v.x_mm : v.y_mm; }
+double axis_of(geom::Vec2 v, std::size_t axis) {
+    return axis == 0 ? v.x_mm : v.y_mm;
+}
 
-Pin step_pin(std::size_t axis) { return axis == 0 ? Pin::StepX : Pin::StepY; }
-Pin dir_pin(std::size_t axis) { return axis == 0 ? Pin::DirX : Pin::DirY; }
+Pin step_pin(std::size_t axis) {
+    return axis == 0 ? Pin::StepX : Pin::StepY;
+}
+Pin dir_pin(std::size_t axis) {
+    return axis == 0 ? Pin::DirX : Pin::DirY;
+}
 
 }  // namespace
 
@@ -49,8 +55,7 @@ void IdealEdges::add_steps(std::size_t axis, TimePs from_ps, TimePs to_ps) {
     AxisState& st = m_axes[axis];
     const double steps_per_mm = m_grid.steps_per_mm[axis];
     // The scan interval [from, to] alone, on step_crossings' grid from the trajectory's start.
-    const metrics::StepCrossings c =
-        metrics::step_crossings(m_commanded, axis, steps_per_mm, from_ps + 1, to_ps - 1);
+    const metrics::StepCrossings c = metrics::step_crossings(m_commanded, axis, steps_per_mm, from_ps + 1, to_ps - 1);
     std::vector<std::pair<TimePs, int>> steps;
     for (const auto& [n, times] : c.up) {
         for (const TimePs t : times) steps.emplace_back(t, 1);

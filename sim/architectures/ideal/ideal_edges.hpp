@@ -30,8 +30,7 @@ class IdealEdges {
 public:
     // `plan` is read from its start; `end_ps` is the planned job's end (the trajectory's duration); the crossings
     // are searched `scan_step_ps` at a time (within which no axis velocity turns twice).
-    IdealEdges(std::shared_ptr<host::planner::PlanFeed> plan, const StepGrid& grid, TimePs end_ps,
-               TimePs scan_step_ps);
+    IdealEdges(std::shared_ptr<host::planner::PlanFeed> plan, const StepGrid& grid, TimePs end_ps, TimePs scan_step_ps);
 
     // The next edge in time order (a STEP, DIR or laser level); none after the last.
     [[nodiscard]] std::optional<TimedEdge> next();

@@ -44,6 +44,8 @@ TimePs StepTrain::final_until_ps() const {
     return m_scanned_ps - kDirLeadPs;
 }
 
-std::vector<PinEdge> StepTrain::take() { return std::exchange(m_edges, {}); }
+std::vector<PinEdge> StepTrain::take() {
+    return std::exchange(m_edges, {});
+}
 
 }  // namespace cnc::sim::ideal

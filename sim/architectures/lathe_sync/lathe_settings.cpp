@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "lathe/core/ratio_list.hpp"
 #include "lathe/core/keypad.hpp"
+#include "lathe/core/ratio_list.hpp"
 
 namespace cnc::sim {
 
@@ -30,16 +30,16 @@ OperatorStep parse_step(KeyReader& r, const std::string& text) {
         std::string key;
         in >> key;
         if (key.size() != 1 || !lathe::keypad_has(key[0])) {
-            r.fail(kOperatorKey, "'" + text + "': '" + key + "' is not a key of the 4x4 keypad (" +
-                                     lathe::keypad_keys() + ")");
+            r.fail(kOperatorKey,
+                   "'" + text + "': '" + key + "' is not a key of the 4x4 keypad (" + lathe::keypad_keys() + ")");
         }
         step.held = key[0];
         number(step.hold_s);
     } else {
         for (const char k : word) {
             if (!lathe::keypad_has(k)) {
-                r.fail(kOperatorKey, "'" + text + "': '" + std::string(1, k) +
-                                         "' is not a key of the 4x4 keypad (" + lathe::keypad_keys() +
+                r.fail(kOperatorKey, "'" + text + "': '" + std::string(1, k) + "' is not a key of the 4x4 keypad (" +
+                                         lathe::keypad_keys() +
                                          "); steps are keys, \"wait <s>\" or \"hold <key> <s>\"");
             }
         }
@@ -94,8 +94,9 @@ void read_lathe_settings(KeyReader& r, LatheSettings& s) {
         r.fail("lathe.pitch_mm", "the keypad takes 2 decimals (0.01 mm steps)");
     }
     if (s.pitch_centi_mm == 0 || s.pitch_centi_mm > lathe::kMaxPitchCentiMm) {
-        r.fail("lathe.pitch_mm", "must be 0.01 .. 41.51 mm: above, B(n) passes the list's 8-bit entries (255 "
-                                 "motor pulses per spindle pulse, seed 002 §7); 0 cuts nothing");
+        r.fail("lathe.pitch_mm",
+               "must be 0.01 .. 41.51 mm: above, B(n) passes the list's 8-bit entries (255 "
+               "motor pulses per spindle pulse, seed 002 §7); 0 cuts nothing");
     }
     if (s.mode == "fine") s.pitch_centi_mm = 4;
     if (s.mode == "coarse") s.pitch_centi_mm = 8;
@@ -106,25 +107,26 @@ void read_lathe_settings(KeyReader& r, LatheSettings& s) {
     const double length_mm = r.get_float("lathe.length_mm", 10.0, 0.01, 655.35,
                                          "lathe-sync: length of the cut, mm, 2 decimals (the keypad's uint16 x 100)");
     s.length_centi_mm = static_cast<int>(std::lround(length_mm * 100.0));
-    s.passes = static_cast<int>(r.get_int("lathe.passes", s.passes, 1, 50, "lathe-sync: cutting passes (cut, "
-                                                                          "retract, cut, ...)"));
+    s.passes = static_cast<int>(r.get_int("lathe.passes", s.passes, 1, 50,
+                                          "lathe-sync: cutting passes (cut, "
+                                          "retract, cut, ...)"));
     s.right_hand = r.get_choice("lathe.hand", "right", {"right", "left"},
                                 "lathe-sync: thread hand, key 1 or 2 at \"1:Right handed 2:Left handed\"") == "right";
-    s.as_printed_list = r.get_choice("lathe.ratio_list", "intended", {"intended", "as-printed"},
-                                     "lathe-sync: makelist's search: the smallest |residual| for a list of <= 150 "
-                                     "entries, or the listing as printed with its defects (seed 002 §11.3)") ==
-                        "as-printed";
-    s.atomic_pulse_isrs = r.get_choice("lathe.pulse_isrs", "nested", {"nested", "atomic"},
-                                       "lathe-sync: the INT0/INT1 pulse ISRs: nested as the seed's ISR_NOBLOCK "
-                                       "(their count races shift the helix), or run with interrupts off (§11.9)") ==
-                          "atomic";
+    s.as_printed_list =
+        r.get_choice("lathe.ratio_list", "intended", {"intended", "as-printed"},
+                     "lathe-sync: makelist's search: the smallest |residual| for a list of <= 150 "
+                     "entries, or the listing as printed with its defects (seed 002 §11.3)") == "as-printed";
+    s.atomic_pulse_isrs =
+        r.get_choice("lathe.pulse_isrs", "nested", {"nested", "atomic"},
+                     "lathe-sync: the INT0/INT1 pulse ISRs: nested as the seed's ISR_NOBLOCK "
+                     "(their count races shift the helix), or run with interrupts off (§11.9)") == "atomic";
     if (s.as_printed_list && s.atomic_pulse_isrs) {
         r.fail("lathe.pulse_isrs", "'atomic' is built with the intended list only (lathe.ratio_list = intended)");
     }
-    s.settle_revolutions = static_cast<int>(r.get_int(
-        "lathe.settle_revolutions", s.settle_revolutions, 0, 1000,
-        "lathe-sync: spindle revolutions at the start of each pass left out of the pitch and phase errors "
-        "(the catch-up from the slip); the report gives the whole-pass phase error too"));
+    s.settle_revolutions = static_cast<int>(
+        r.get_int("lathe.settle_revolutions", s.settle_revolutions, 0, 1000,
+                  "lathe-sync: spindle revolutions at the start of each pass left out of the pitch and phase errors "
+                  "(the catch-up from the slip); the report gives the whole-pass phase error too"));
     s.second_pole_per_s = r.get_float("lathe.motor.second_pole_per_s", 0.0, 0.0, 1e4,
                                       "lathe-sync: 0: the first-order motor of seed 002 §8.3 (pole -74.29 s^-1); "
                                       "else the two-pole motor, e.g. 163.6 (the Exp2 fit), s^-1");
@@ -153,9 +155,10 @@ void read_lathe_settings(KeyReader& r, LatheSettings& s) {
                                             "cutting torque, s (motor and chuck inertia against the motor's "
                                             "torque-speed slope); 0: at once");
     const std::vector<std::string> script = r.get_string_list(
-        kOperatorKey, "lathe-sync: what the machinist does, in turn: keys pressed (\"131#00D\": 100 ms each, 400 ms "
-                      "apart), \"wait <s>\", \"hold <key> <s>\"; keys of the 4x4 keypad 0-9 * # A B C D; empty: "
-                      "the script lathe.mode, pitch, hand, length and passes make");
+        kOperatorKey,
+        "lathe-sync: what the machinist does, in turn: keys pressed (\"131#00D\": 100 ms each, 400 ms "
+        "apart), \"wait <s>\", \"hold <key> <s>\"; keys of the 4x4 keypad 0-9 * # A B C D; empty: "
+        "the script lathe.mode, pitch, hand, length and passes make");
     s.operator_steps.clear();
     for (const std::string& text : script) s.operator_steps.push_back(parse_step(r, text));
     if (s.operator_steps.empty()) s.operator_steps = default_operator_script(s);

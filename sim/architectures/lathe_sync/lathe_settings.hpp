@@ -18,16 +18,16 @@ struct OperatorStep {
 };
 
 struct LatheSettings final : ArchSettings {
-    std::string mode = "thread";    // thread | fine | coarse | tuning (§6.6)
-    int pitch_centi_mm = 100;       // the pitch entered, 0.01 mm (thread); fine 4, coarse 8
+    std::string mode = "thread";  // thread | fine | coarse | tuning (§6.6)
+    int pitch_centi_mm = 100;     // the pitch entered, 0.01 mm (thread); fine 4, coarse 8
     double spindle_rpm = 60.0;
     int length_centi_mm = 1000;
     int passes = 3;
     bool right_hand = true;
-    bool as_printed_list = false;   // makelist as printed (§11.3)
-    bool atomic_pulse_isrs = false; // PULSE_ISR_ATOMIC (§11.9)
+    bool as_printed_list = false;    // makelist as printed (§11.3)
+    bool atomic_pulse_isrs = false;  // PULSE_ISR_ATOMIC (§11.9)
     int settle_revolutions = 2;
-    double second_pole_per_s = 0.0; // 0: the first-order motor
+    double second_pole_per_s = 0.0;  // 0: the first-order motor
     double backlash_mm = 0.0;
     // The cutting load on the spindle (docs/metrics.md "Lathe": the estimates behind the defaults).
     double cut_depth_mm = 0.0;  // no load unless the scenario says how deep the tool cuts

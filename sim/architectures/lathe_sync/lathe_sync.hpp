@@ -14,7 +14,7 @@ namespace lathe_sync {
 
 // Its registry entry (architectures/registry.hpp).
 struct Entry {
-    static const Architecture& architecture();             // lathe_sync.cpp
+    static const Architecture& architecture();  // lathe_sync.cpp
     // lathe_sync_run.cpp; unavailable.cpp in a build without the AVR model refuses the architecture.
     static ArchRun run(const Scenario& s, const Job& job);
 };

@@ -5,11 +5,11 @@
 #include <optional>
 #include <sstream>
 
+#include "architectures/lathe_sync/lathe_settings.hpp"
+#include "architectures/lathe_sync/lathe_trace.hpp"
 #include "lathe/core/ratio_list.hpp"
 #include "lathe/core/thread_metrics.hpp"
 #include "lathe/rig/lathe_rig.hpp"
-#include "architectures/lathe_sync/lathe_settings.hpp"
-#include "architectures/lathe_sync/lathe_trace.hpp"
 #include "run/arch_run.hpp"
 #include "scenario/scenario.hpp"
 
@@ -103,8 +103,7 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     std::ostringstream text;
     text << "lathe-sync: " << s.mode << " at " << fixed(s.spindle_rpm, 1) << " rpm, firmware "
          << (s.as_printed_list ? "with makelist as printed" : "with the intended makelist") << ", pulse ISRs "
-         << (s.atomic_pulse_isrs ? "atomic" : "nested (seed)") << "; " << fixed(rig.now_s(), 3)
-         << " s simulated\n";
+         << (s.atomic_pulse_isrs ? "atomic" : "nested (seed)") << "; " << fixed(rig.now_s(), 3) << " s simulated\n";
     d["mode"] = s.mode;
     d["spindle_rpm"] = s.spindle_rpm;
     d["pulse_isrs"] = s.atomic_pulse_isrs ? "atomic" : "nested";
@@ -141,8 +140,8 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
                        {"lambda_error", list.lambda_error},
                        {"pitch_produced_mm", list.pitch_produced_mm},
                        {"residual_um_per_rev", (list.pitch_produced_mm - pitch_mm) * 1000.0}};
-    text << "ratio list: " << list.num << "/" << list.den << " (lambda error " << list.lambda_error
-         << "), pitch cut " << fixed(list.pitch_produced_mm, 6) << " mm for " << fixed(pitch_mm, 2) << " mm\n";
+    text << "ratio list: " << list.num << "/" << list.den << " (lambda error " << list.lambda_error << "), pitch cut "
+         << fixed(list.pitch_produced_mm, 6) << " mm for " << fixed(pitch_mm, 2) << " mm\n";
 
     const double torque_nm = lathe::cutting_torque_nm(cfg.cut, cfg.feed_mm_per_rev);
     const double droop_rpm = s.spindle_rpm * s.spindle_droop_pct_per_nm / 100.0 * torque_nm;
@@ -179,12 +178,11 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
         text << "pass " << passes.size() << ": " << fixed(p.pid_s, 3) << " s under the PID, at 1023 for "
              << fixed(p.at_full_s, 3) << " s, at 0 for " << fixed(p.at_zero_s, 3) << " s; following error max "
              << fixed(max_e, 1) << " pulses, trend " << fixed(trend, 1) << " pulses/s; overshoot after the brake "
-             << (overshoot_measured ? fixed(overshoot_pulses, 1) + " pulses" : std::string("-"))
-             << "; spindle down to " << fixed(p.spindle_min_rpm, 3) << " rpm\n";
+             << (overshoot_measured ? fixed(overshoot_pulses, 1) + " pulses" : std::string("-")) << "; spindle down to "
+             << fixed(p.spindle_min_rpm, 3) << " rpm\n";
     }
     d["passes"] = passes;
-    const lathe::ThreadMetrics m =
-        lathe::thread_metrics(thread, pitch_mm, lathe::kSpindleSlots, s.settle_revolutions);
+    const lathe::ThreadMetrics m = lathe::thread_metrics(thread, pitch_mm, lathe::kSpindleSlots, s.settle_revolutions);
     const lathe::ThreadMetrics whole = lathe::thread_metrics(thread, pitch_mm, lathe::kSpindleSlots);
     d["thread"] = {{"settle_revolutions", s.settle_revolutions},
                    {"revolutions", m.revolutions},
@@ -202,10 +200,10 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     text << "thread (" << rig.passes.size() << " passes, first " << s.settle_revolutions
          << " revolutions of each left out): pitch error mean " << fixed(m.pitch_error_mean_um, 2) << " um, max "
          << fixed(m.pitch_error_max_um, 2) << " um per revolution; fitted pitch error "
-         << fixed(m.pitch_fit_error_um, 3)
-         << " um (" << fixed(m.pitch_fit_error_um / (pitch_mm * 10.0), 4) << " %); phase error between passes max "
-         << fixed(m.phase_error_max_um, 2) << " um, at the end " << fixed(m.phase_error_end_um, 2)
-         << " um (whole passes: max " << fixed(whole.phase_error_max_um, 2) << " um)\n";
+         << fixed(m.pitch_fit_error_um, 3) << " um (" << fixed(m.pitch_fit_error_um / (pitch_mm * 10.0), 4)
+         << " %); phase error between passes max " << fixed(m.phase_error_max_um, 2) << " um, at the end "
+         << fixed(m.phase_error_end_um, 2) << " um (whole passes: max " << fixed(whole.phase_error_max_um, 2)
+         << " um)\n";
     if (growing) {
         text << "the following error GROWS: the spindle is faster than the motor can follow (the PID output sat at "
                 "its clamp 1023 for "

@@ -9,8 +9,8 @@
 namespace cnc::sim {
 
 std::shared_ptr<host::planner::PlanFeed> open_plan(const Scenario& s, const host::planner::PlannerConfig& cfg) {
-    return std::make_shared<host::planner::PlanFeed>(cfg,
-                                                     std::make_unique<host::GcodeStream>(s.job_path, s.interpreter, false));
+    return std::make_shared<host::planner::PlanFeed>(
+        cfg, std::make_unique<host::GcodeStream>(s.job_path, s.interpreter, false));
 }
 
 ArchPace planner_pace(const host::planner::PlannerConfig& cfg) {

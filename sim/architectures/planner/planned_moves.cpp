@@ -102,15 +102,15 @@ TimePs commanded_read_from(const metrics::RunInput& pending, TimePs measured_ps)
 metrics::CommandedTrajectory commanded_trajectory(std::shared_ptr<const host::planner::Trajectory> traj,
                                                   const host::servo::TrajectoryClock& clock, geom::Vec2 origin_mm,
                                                   TimePs scan_step_ps) {
-    return commanded_on(std::move(traj), [copy = clock](TimePs t) { return copy.at(t); }, clock, origin_mm,
-                        scan_step_ps);
+    return commanded_on(
+        std::move(traj), [copy = clock](TimePs t) { return copy.at(t); }, clock, origin_mm, scan_step_ps);
 }
 
 metrics::CommandedTrajectory commanded_trajectory_live(std::shared_ptr<const host::planner::Trajectory> traj,
-                                                       const host::servo::TrajectoryClock& clock,
-                                                       geom::Vec2 origin_mm, TimePs scan_step_ps) {
-    return commanded_on(std::move(traj), [&clock](TimePs t) { return clock.at(t); }, clock, origin_mm,
-                        scan_step_ps);
+                                                       const host::servo::TrajectoryClock& clock, geom::Vec2 origin_mm,
+                                                       TimePs scan_step_ps) {
+    return commanded_on(
+        std::move(traj), [&clock](TimePs t) { return clock.at(t); }, clock, origin_mm, scan_step_ps);
 }
 
 void commanded_known(metrics::CommandedTrajectory& c, const host::servo::TrajectoryClock& clock) {

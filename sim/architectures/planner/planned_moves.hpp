@@ -65,8 +65,8 @@ metrics::CommandedTrajectory commanded_trajectory(std::shared_ptr<const host::pl
 // The same on the clock as it runs (the clock must outlive it): known up to the clock's last knot, which the caller
 // copies into t_begin_ps/t_end_ps as the run goes (commanded_known).
 metrics::CommandedTrajectory commanded_trajectory_live(std::shared_ptr<const host::planner::Trajectory> traj,
-                                                       const host::servo::TrajectoryClock& clock,
-                                                       geom::Vec2 origin_mm, TimePs scan_step_ps);
+                                                       const host::servo::TrajectoryClock& clock, geom::Vec2 origin_mm,
+                                                       TimePs scan_step_ps);
 void commanded_known(metrics::CommandedTrajectory& c, const host::servo::TrajectoryClock& clock);
 
 }  // namespace cnc::sim

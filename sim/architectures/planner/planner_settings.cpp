@@ -15,8 +15,8 @@ void read_planner_settings(KeyReader& r, const host::MachineModel& machine, host
                  : host::planner::BlendMode::ExactStop;
     c.path_tolerance_mm = r.get_float("planner.path_tolerance_mm", c.path_tolerance_mm, 0.0, 100.0,
                                       "largest distance of a corner blend from the corner, mm (G64 P); 0: stop");
-    c.lookahead_moves = static_cast<int>(r.get_int("planner.lookahead_moves", c.lookahead_moves, 1, 100'000,
-                                                   "programmed moves the planner sees ahead"));
+    c.lookahead_moves = static_cast<int>(
+        r.get_int("planner.lookahead_moves", c.lookahead_moves, 1, 100'000, "programmed moves the planner sees ahead"));
     c.x = machine.x.limits;  // one machine for every architecture
     c.y = machine.y.limits;
 }

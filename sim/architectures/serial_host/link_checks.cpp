@@ -30,9 +30,8 @@ void check_line_rates(const std::string& where, const LineEnd& host, const LineE
 std::optional<std::string> framing_failure(std::int64_t at_controller, const std::string& controller,
                                            std::int64_t at_host) {
     if (at_controller + at_host <= kFramingErrorsTolerated) return std::nullopt;
-    return "the link garbles frames: " + std::to_string(at_controller) + " framing errors at the " + controller +
-           ", " + std::to_string(at_host) +
-           " at the CP2102 (a byte of the job was lost or changed, so the run is stopped)";
+    return "the link garbles frames: " + std::to_string(at_controller) + " framing errors at the " + controller + ", " +
+           std::to_string(at_host) + " at the CP2102 (a byte of the job was lost or changed, so the run is stopped)";
 }
 
 }  // namespace cnc::sim

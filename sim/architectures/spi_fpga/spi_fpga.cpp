@@ -40,8 +40,7 @@ public:
         const double mm_per_s = m.feed_mm_per_min / kSecondsPerMinute;
         const double steps_per_s =
             mm_per_s * std::max(share_x * s.machine.x.steps_per_mm(), share_y * s.machine.y.steps_per_mm());
-        const double slowest =
-            spi::rate_for_period(spi::kMaxPeriodCycles, s.settings<SpiFpgaSettings>().fpga.clk_hz);
+        const double slowest = spi::rate_for_period(spi::kMaxPeriodCycles, s.settings<SpiFpgaSettings>().fpga.clk_hz);
         if (steps_per_s < slowest) {
             throw BadInput(where, format("feed %.6g mm/min steps the leading axis %.6g times a second, slower "
                                          "than the spi-fpga rate word's slowest step (one per 2^30 - 1 clocks: ",

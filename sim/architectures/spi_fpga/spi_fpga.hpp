@@ -13,7 +13,7 @@ namespace spi_fpga {
 
 // Its registry entry (architectures/registry.hpp).
 struct Entry {
-    static const Architecture& architecture();             // spi_fpga.cpp
+    static const Architecture& architecture();              // spi_fpga.cpp
     static ArchRun run(const Scenario& s, const Job& job);  // spi_fpga_controller.cpp
 };
 

@@ -26,7 +26,7 @@ struct Wires {
     sc_core::sc_signal<bool> sclk{"sclk", false};  // mode 0: idles low
     sc_core::sc_signal<bool> mosi{"mosi", false};
     sc_core::sc_signal<bool> miso{"miso", false};
-    sc_core::sc_signal<bool> ss{"ss", true};       // active low
+    sc_core::sc_signal<bool> ss{"ss", true};  // active low
 };
 
 host::servo::ServoConfig servo_config(const Scenario& s, const SpiFpgaSettings& f) {
@@ -97,8 +97,8 @@ public:
 
     [[nodiscard]] JobEstimate estimate() const override { return m_estimate; }
     void feed_started(MetricsFeed& feed) override {
-        feed.pending().commanded = commanded_trajectory_live(m_trajectory, m_host.core().clock(),
-                                                             origin(), m_f.servo.period_ps);
+        feed.pending().commanded =
+            commanded_trajectory_live(m_trajectory, m_host.core().clock(), origin(), m_f.servo.period_ps);
     }
     void slice_ended(TimePs now_ps, MetricsFeed* feed) override {
         if (feed == nullptr) return;

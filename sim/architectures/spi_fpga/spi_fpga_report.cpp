@@ -19,7 +19,9 @@ using nlohmann::json;
 
 constexpr const char* kAxisNames[] = {"x", "y"};
 // Log values to the resolution they carry: times to the ns, rates to 1e-3 steps/s, speeds to 1e-6 mm/s.
-double seconds_ns(TimePs t) { return rounded(ps_to_s(t), 1e9); }
+double seconds_ns(TimePs t) {
+    return rounded(ps_to_s(t), 1e9);
+}
 
 // The period word signed by the direction bit (0 = stopped), as the rate log and the text show it.
 std::int64_t signed_period(const spi::AxisRate& w) {
@@ -63,7 +65,8 @@ json rate_log(const std::vector<PeriodRecord>& log, const std::vector<host::serv
     json mode = json::array();
     json axes = json::object();
     for (const char* name : kAxisNames) {
-        axes[name] = {{"commanded_steps_per_s", json::array()}, {"period_cycles", json::array()}, {"count", json::array()}};
+        axes[name] = {
+            {"commanded_steps_per_s", json::array()}, {"period_cycles", json::array()}, {"count", json::array()}};
     }
     for (std::size_t i = 0; i < log.size(); ++i) {
         t.push_back(seconds_ns(wakeups[i].t_ps));
@@ -129,51 +132,50 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
     const double share_pct = 100.0 * static_cast<double>(transfer) / static_cast<double>(cfg.period_ps);
 
     SpiFpgaReport out;
-    out.details = {
-        {"servo",
-         {{"period_us", ps_to_us(cfg.period_ps)},
-          {"periods", sum.periods()},
-          {"tracking_periods", sum.tracking_periods()},
-          {"landing_periods", sum.landing_periods()},
-          {"latency",
-           {{"distribution", to_string(cfg.latency.distribution)},
-            {"bound_us", ps_to_us(cfg.latency.max_ps)},
-            {"min_us", latency_min_us},
-            {"mean_us", latency_mean_us},
-            {"max_us", latency_max_us}}},
-          {"position_gain", cfg.position_gain},
-          {"deadband_steps", cfg.deadband_steps},
-          {"stepgen_margin", cfg.stepgen_margin},
-          {"landing_period_cycles", host::servo::landing_period_cycles(cfg)},
-          {"rest_points", st.rest_points},
-          {"rest_points_landed", st.rest_points_landed},
-          {"landing_pulses", st.landing_pulses},
-          {"finished", host.finished()},
-          {"t_done_s", host.t_done_ps() ? json(ps_to_s(*host.t_done_ps())) : json(nullptr)}}},
-        {"spi",
-         {{"sclk_hz", link.sclk_hz},
-          {"frame_bits", bits},
-          {"cs_setup_ns", ps_to_ns(link.cs_setup_ps)},
-          {"cs_hold_ns", ps_to_ns(link.cs_hold_ps)},
-          {"ss_idle_min_ns", ps_to_ns(link.ss_idle_min_ps)},
-          {"transfer_us", ps_to_us(transfer)},
-          {"slot_us", ps_to_us(slot)},
-          {"transfer_share_of_period_pct", share_pct},
-          {"transfers", master.transfer_count()},
-          {"link_busy_pct", busy_pct},
-          {"wires_traced", link.trace_wires}}},
-        {"fpga",
-         {{"clock_hz", fcfg.clk_hz},
-          {"rate_apply", fcfg.rate_apply == fpga::RateApply::AtNextPulse ? "at-next-pulse" : "immediately"},
-          {"fifo_depth", fcfg.fifo_depth},
-          {"frames", fpga.slave.frame_count()},
-          {"frames_rejected", rejected},
-          {"fifo_max_level", fpga.fifo.core().max_level()},
-          {"fifo_drops", drops},
-          {"replies_with_drop_flag", st.replies_dropped_flag},
-          {"stretched_words", stretched},
-          {"words_applied", {fpga.applied_count(0), fpga.applied_count(1)}},
-          {"final_counts", {fpga.count(0), fpga.count(1)}}}}};
+    out.details = {{"servo",
+                    {{"period_us", ps_to_us(cfg.period_ps)},
+                     {"periods", sum.periods()},
+                     {"tracking_periods", sum.tracking_periods()},
+                     {"landing_periods", sum.landing_periods()},
+                     {"latency",
+                      {{"distribution", to_string(cfg.latency.distribution)},
+                       {"bound_us", ps_to_us(cfg.latency.max_ps)},
+                       {"min_us", latency_min_us},
+                       {"mean_us", latency_mean_us},
+                       {"max_us", latency_max_us}}},
+                     {"position_gain", cfg.position_gain},
+                     {"deadband_steps", cfg.deadband_steps},
+                     {"stepgen_margin", cfg.stepgen_margin},
+                     {"landing_period_cycles", host::servo::landing_period_cycles(cfg)},
+                     {"rest_points", st.rest_points},
+                     {"rest_points_landed", st.rest_points_landed},
+                     {"landing_pulses", st.landing_pulses},
+                     {"finished", host.finished()},
+                     {"t_done_s", host.t_done_ps() ? json(ps_to_s(*host.t_done_ps())) : json(nullptr)}}},
+                   {"spi",
+                    {{"sclk_hz", link.sclk_hz},
+                     {"frame_bits", bits},
+                     {"cs_setup_ns", ps_to_ns(link.cs_setup_ps)},
+                     {"cs_hold_ns", ps_to_ns(link.cs_hold_ps)},
+                     {"ss_idle_min_ns", ps_to_ns(link.ss_idle_min_ps)},
+                     {"transfer_us", ps_to_us(transfer)},
+                     {"slot_us", ps_to_us(slot)},
+                     {"transfer_share_of_period_pct", share_pct},
+                     {"transfers", master.transfer_count()},
+                     {"link_busy_pct", busy_pct},
+                     {"wires_traced", link.trace_wires}}},
+                   {"fpga",
+                    {{"clock_hz", fcfg.clk_hz},
+                     {"rate_apply", fcfg.rate_apply == fpga::RateApply::AtNextPulse ? "at-next-pulse" : "immediately"},
+                     {"fifo_depth", fcfg.fifo_depth},
+                     {"frames", fpga.slave.frame_count()},
+                     {"frames_rejected", rejected},
+                     {"fifo_max_level", fpga.fifo.core().max_level()},
+                     {"fifo_drops", drops},
+                     {"replies_with_drop_flag", st.replies_dropped_flag},
+                     {"stretched_words", stretched},
+                     {"words_applied", {fpga.applied_count(0), fpga.applied_count(1)}},
+                     {"final_counts", {fpga.count(0), fpga.count(1)}}}}};
     if (detail) {  // one entry per servo period, or per rest point
         const std::vector<PeriodRecord>& log = core.log();
         out.details["servo"]["holds"] = holds_json(log, host.wakeups());
@@ -189,8 +191,9 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
          << "  wake-up latency " << to_string(cfg.latency.distribution)
          << format(" <= %.1f us: min %.3f, mean %.3f, max %.3f us\n", ps_to_us(cfg.latency.max_ps), latency_min_us,
                    latency_mean_us, latency_max_us)
-         << format("  landing: %.0f of %.0f rest points, %.0f landing pulses", static_cast<double>(st.rest_points_landed),
-                   static_cast<double>(st.rest_points), static_cast<double>(st.landing_pulses));
+         << format("  landing: %.0f of %.0f rest points, %.0f landing pulses",
+                   static_cast<double>(st.rest_points_landed), static_cast<double>(st.rest_points),
+                   static_cast<double>(st.landing_pulses));
     if (host.t_done_ps()) text << format(", job done at %.6f s", ps_to_s(*host.t_done_ps()));
     text << '\n'
          << format("  SPI: %.0f-bit frames at %.0f Hz: %.3f us with SS low", static_cast<double>(bits),

@@ -13,8 +13,12 @@ namespace cnc::sim {
 
 namespace {
 
-TimePs us_to_ps(double us) { return static_cast<TimePs>(us * static_cast<double>(kPsPerUs) + 0.5); }
-TimePs ns_to_ps(double ns) { return static_cast<TimePs>(ns * static_cast<double>(kPsPerNs) + 0.5); }
+TimePs us_to_ps(double us) {
+    return static_cast<TimePs>(us * static_cast<double>(kPsPerUs) + 0.5);
+}
+TimePs ns_to_ps(double ns) {
+    return static_cast<TimePs>(ns * static_cast<double>(kPsPerNs) + 0.5);
+}
 
 void read_servo(KeyReader& r, host::servo::ServoConfig& c) {
     c.period_ps = us_to_ps(r.get_float("host.servo_period_us", 1000.0, 1.0, 100'000.0,
@@ -42,7 +46,8 @@ void read_link(KeyReader& r, spi::SpiConfig& c) {
                                                      "FPGA's oversampling slave can follow)"));
     c.cs_setup_ps = ns_to_ps(r.get_float("spi.cs_setup_ns", 1000.0, 0.0, 1e6, "SS fall to the first SCLK rise, ns"));
     c.cs_hold_ps = ns_to_ps(r.get_float("spi.cs_hold_ns", 1000.0, 0.0, 1e6, "end of the last bit cell to SS rise, ns"));
-    c.ss_idle_min_ps = ns_to_ps(r.get_float("spi.ss_idle_ns", 1000.0, 0.0, 1e6, "least SS-high time between frames, ns"));
+    c.ss_idle_min_ps =
+        ns_to_ps(r.get_float("spi.ss_idle_ns", 1000.0, 0.0, 1e6, "least SS-high time between frames, ns"));
     c.trace_wires = r.get_bool("spi.trace_wires", false,
                                "toggle SCLK/MOSI/MISO/SS bit by bit (and trace them in the VCD); false: one "
                                "transaction per frame at the same SS edges, and the wires are driven only when "
@@ -52,14 +57,14 @@ void read_link(KeyReader& r, spi::SpiConfig& c) {
 void read_fpga(KeyReader& r, fpga::SpiFpgaConfig& c) {
     c.clk_hz = static_cast<std::uint32_t>(r.get_int("fpga_spi.clock_hz", c.clk_hz, 1'000'000, 500'000'000,
                                                     "FPGA clock, Hz; must divide 1e12 (seed 000's board: 50 MHz)"));
-    c.fifo_depth = static_cast<std::uint32_t>(r.get_int("fpga_spi.fifo_depth", c.fifo_depth, 1, 1024,
-                                                        "rate frames the FIFO holds (seed 004 §5.1.2)"));
+    c.fifo_depth = static_cast<std::uint32_t>(
+        r.get_int("fpga_spi.fifo_depth", c.fifo_depth, 1, 1024, "rate frames the FIFO holds (seed 004 §5.1.2)"));
     c.pulse_cycles = static_cast<std::uint32_t>(r.get_int("fpga_spi.pulse_cycles", c.pulse_cycles, 1, 1'000'000,
                                                           "STEP high time, clocks (seed 004 §5.1.3 duration)"));
-    c.dir_setup_cycles = static_cast<std::uint32_t>(r.get_int(
-        "fpga_spi.dir_setup_cycles", c.dir_setup_cycles, 1, 1'000'000, "DIR change to the next STEP rise, clocks"));
-    c.dir_hold_cycles = static_cast<std::uint32_t>(r.get_int(
-        "fpga_spi.dir_hold_cycles", c.dir_hold_cycles, 1, 1'000'000, "STEP rise to a DIR change, clocks"));
+    c.dir_setup_cycles = static_cast<std::uint32_t>(r.get_int("fpga_spi.dir_setup_cycles", c.dir_setup_cycles, 1,
+                                                              1'000'000, "DIR change to the next STEP rise, clocks"));
+    c.dir_hold_cycles = static_cast<std::uint32_t>(
+        r.get_int("fpga_spi.dir_hold_cycles", c.dir_hold_cycles, 1, 1'000'000, "STEP rise to a DIR change, clocks"));
     c.rate_apply = r.get_choice("fpga_spi.rate_apply", "immediately", {"at-next-pulse", "immediately"},
                                 "when a new rate word governs: at the running period's end (one FIFO frame per "
                                 "STEP), or one clock after it is written") == "at-next-pulse"
@@ -103,15 +108,14 @@ void check_period(KeyReader& r, const SpiFpgaSettings& s) {
         std::string what = e.what();
         const std::string field = "spi: sclk_hz: ";  // the link model's own name for the key, replaced by ours
         if (what.rfind(field, 0) == 0) what.erase(0, field.size());
-        r.fail(r.has("spi.sclk_hz") && !r.has("host.servo_period_us") ? "spi.sclk_hz" : "host.servo_period_us",
-               what);
+        r.fail(r.has("spi.sclk_hz") && !r.has("host.servo_period_us") ? "spi.sclk_hz" : "host.servo_period_us", what);
     }
     const TimePs slot = spi::transfer_slot_ps(s.link, bits);
     if (s.servo.latency.max_ps + slot > s.servo.period_ps) {
         std::ostringstream m;
         m << "a wake-up latency of up to " << ps_to_us(s.servo.latency.max_ps) << " us plus the " << ps_to_us(slot)
-          << " us SPI transfer slot (" << bits << "-bit frame at " << s.link.sclk_hz
-          << " Hz) exceeds the " << ps_to_us(s.servo.period_ps)
+          << " us SPI transfer slot (" << bits << "-bit frame at " << s.link.sclk_hz << " Hz) exceeds the "
+          << ps_to_us(s.servo.period_ps)
           << " us servo period: the latency bound must stay below the period minus the transfer ("
           << ps_to_us(s.servo.period_ps - slot) << " us)";
         r.fail("host.latency_max_us", m.str());
@@ -144,8 +148,8 @@ void check_rate_limits(const SpiFpgaSettings& s, const host::MachineModel& machi
         } catch (const BadInput& e) {
             std::ostringstream m;
             m << "the stepgen velocity limit " << mm_per_s << " mm/s (this limit x (1 + host.stepgen_margin "
-              << s.servo.stepgen_margin << ")) at " << axes[a].second << " steps/mm overflows the rate word: "
-              << e.what();
+              << s.servo.stepgen_margin << ")) at " << axes[a].second
+              << " steps/mm overflows the rate word: " << e.what();
             throw BadInput(file + ": machine." + axes[a].first + ".max_velocity_mm_per_s", m.str());
         }
     }

@@ -37,7 +37,10 @@ std::vector<TimeInterval> intersect(const std::vector<TimeInterval>& a, const st
         const TimePs lo = std::max(a[i].begin, b[j].begin);
         const TimePs hi = std::min(a[i].end, b[j].end);
         if (hi > lo) out.push_back({lo, hi});
-        if (a[i].end < b[j].end) ++i; else ++j;
+        if (a[i].end < b[j].end)
+            ++i;
+        else
+            ++j;
     }
     return out;
 }
@@ -48,7 +51,9 @@ TimePs total(const std::vector<TimeInterval>& v) {
     return sum;
 }
 
-double ms(TimePs t) { return ps_to_s(t) * 1e3; }
+double ms(TimePs t) {
+    return ps_to_s(t) * 1e3;
+}
 
 }  // namespace
 
@@ -80,7 +85,8 @@ std::vector<TimeInterval> SlowStretches::finish() {
 }
 
 void SlowStretches::drop_ending_by(TimePs t_ps) {
-    const auto kept = std::find_if(m_slow.begin(), m_slow.end(), [t_ps](const TimeInterval& iv) { return iv.end > t_ps; });
+    const auto kept =
+        std::find_if(m_slow.begin(), m_slow.end(), [t_ps](const TimeInterval& iv) { return iv.end > t_ps; });
     m_slow.erase(m_slow.begin(), kept);
 }
 

@@ -14,9 +14,9 @@ namespace cnc::metrics {
 inline constexpr double kDwellSpeedFraction = 0.10;
 
 struct LaserResult {
-    double on_ms = 0.0;                 // laser on inside [t_job_start, t_job_end]
-    std::optional<double> dwell_ms;     // needs tool samples and moves
-    std::size_t dwell_intervals = 0;    // separate stretches of dwell
+    double on_ms = 0.0;               // laser on inside [t_job_start, t_job_end]
+    std::optional<double> dwell_ms;   // needs tool samples and moves
+    std::size_t dwell_intervals = 0;  // separate stretches of dwell
     std::optional<double> dwell_longest_ms;
     std::optional<double> dwell_longest_at_s;  // start of the longest stretch
     std::optional<double> on_in_rapid_ms;      // needs moves
@@ -79,8 +79,8 @@ private:
     TimePs m_lo_ps;
     TimePs m_on_ps = 0;
     TimePs m_on_in_rapid_ps = 0;
-    TimePs m_dwell_ps = 0;           // closed stretches
-    std::size_t m_dwell_count = 0;   // closed stretches
+    TimePs m_dwell_ps = 0;          // closed stretches
+    std::size_t m_dwell_count = 0;  // closed stretches
     std::optional<TimeInterval> m_longest;
     std::vector<TimeInterval> m_open;  // the last dwell stretch (at most one): the next window's may join it
 };

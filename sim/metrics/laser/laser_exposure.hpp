@@ -12,11 +12,11 @@
 namespace cnc::metrics {
 
 struct LaserExposure {
-    double lasered_path_mm = 0.0;   // path length the tool covered with the laser on
-    double on_time_s = 0.0;         // laser on-time over that path (including time spent standing still)
-    double mean_s_per_mm = 0.0;     // on_time / path
-    double peak_s_per_mm = 0.0;     // the worst bin of kExposureBinMm along the lasered path
-    double peak_at_path_mm = 0.0;   // where that bin starts, mm of lasered path from the first
+    double lasered_path_mm = 0.0;  // path length the tool covered with the laser on
+    double on_time_s = 0.0;        // laser on-time over that path (including time spent standing still)
+    double mean_s_per_mm = 0.0;    // on_time / path
+    double peak_s_per_mm = 0.0;    // the worst bin of kExposureBinMm along the lasered path
+    double peak_at_path_mm = 0.0;  // where that bin starts, mm of lasered path from the first
 };
 
 inline constexpr double kExposureBinMm = 0.5;

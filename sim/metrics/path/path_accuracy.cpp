@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "metrics/commanded.hpp"
-#include "metrics/timing/programmed_moves.hpp"
 #include "metrics/stats.hpp"
+#include "metrics/timing/programmed_moves.hpp"
 
 namespace cnc::metrics {
 

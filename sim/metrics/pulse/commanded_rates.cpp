@@ -9,8 +9,7 @@ namespace {
 
 using nlohmann::json;
 
-std::vector<std::vector<RateSegment>> from_segments(const json& rates, const std::string& filename,
-                                                    std::size_t axes) {
+std::vector<std::vector<RateSegment>> from_segments(const json& rates, const std::string& filename, std::size_t axes) {
     if (rates.size() != axes) {
         throw BadInput(filename, "the run's report has " + std::to_string(rates.size()) + " axes, --step gives " +
                                      std::to_string(axes) + " (give them in the run's axis order)");
@@ -55,8 +54,9 @@ std::vector<std::vector<RateSegment>> commanded_rates_from_report(const json& re
         if (report.contains("commanded_rates")) {
             const json& rates = report.at("commanded_rates");
             if (rates.is_null()) {
-                throw BadInput(filename, "the run changed its commanded rates on its own schedule and this report "
-                                         "does not hold them: write it with `cncsim run --detail`");
+                throw BadInput(filename,
+                               "the run changed its commanded rates on its own schedule and this report "
+                               "does not hold them: write it with `cncsim run --detail`");
             }
             return from_segments(rates, filename, axes);
         }

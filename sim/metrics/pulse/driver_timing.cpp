@@ -10,22 +10,32 @@ std::size_t DriverTimingReport::total_violations() const {
 
 const char* rule_name(DriverRule rule) {
     switch (rule) {
-        case DriverRule::StepHigh: return "step_high";
-        case DriverRule::StepLow: return "step_low";
-        case DriverRule::DirSetup: return "dir_setup";
-        case DriverRule::DirHold: return "dir_hold";
-        case DriverRule::Rate: return "rate";
+        case DriverRule::StepHigh:
+            return "step_high";
+        case DriverRule::StepLow:
+            return "step_low";
+        case DriverRule::DirSetup:
+            return "dir_setup";
+        case DriverRule::DirHold:
+            return "dir_hold";
+        case DriverRule::Rate:
+            return "rate";
     }
     return "?";
 }
 
 double rule_limit_ns(DriverRule rule, const DriverLimits& limits) {
     switch (rule) {
-        case DriverRule::StepHigh: return ps_to_ns(limits.step_high_min_ps);
-        case DriverRule::StepLow: return ps_to_ns(limits.step_low_min_ps);
-        case DriverRule::DirSetup: return ps_to_ns(limits.dir_setup_min_ps);
-        case DriverRule::DirHold: return ps_to_ns(limits.dir_hold_min_ps);
-        case DriverRule::Rate: return 1e9 / limits.step_rate_max_hz;
+        case DriverRule::StepHigh:
+            return ps_to_ns(limits.step_high_min_ps);
+        case DriverRule::StepLow:
+            return ps_to_ns(limits.step_low_min_ps);
+        case DriverRule::DirSetup:
+            return ps_to_ns(limits.dir_setup_min_ps);
+        case DriverRule::DirHold:
+            return ps_to_ns(limits.dir_hold_min_ps);
+        case DriverRule::Rate:
+            return 1e9 / limits.step_rate_max_hz;
     }
     return 0.0;
 }

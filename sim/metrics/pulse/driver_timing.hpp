@@ -23,9 +23,9 @@ inline constexpr std::array<DriverRule, kDriverRuleCount> kDriverRules{
 // One rule on one axis. The measured quantity is a time (pulse width, setup, hold, or the interval
 // between consecutive rising edges for the rate rule); a violation is a measurement below the limit.
 struct RuleCheck {
-    std::size_t checked = 0;           // measurements taken
+    std::size_t checked = 0;  // measurements taken
     std::size_t violations = 0;
-    std::optional<TimePs> min_ps;      // smallest measurement: the worst case when violations > 0
+    std::optional<TimePs> min_ps;                 // smallest measurement: the worst case when violations > 0
     std::optional<TimePs> first_violation_at_ps;  // time of the STEP/DIR edge that ended the first violation
 };
 

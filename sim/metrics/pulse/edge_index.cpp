@@ -53,9 +53,8 @@ std::vector<EdgeRange> MoveTimeline::split(const std::vector<TimePs>& sorted_tim
     std::vector<EdgeRange> out(m_begin_ps.size());
     for (std::size_t i = 0; i < m_begin_ps.size(); ++i) {
         const auto first = std::lower_bound(sorted_times.begin(), sorted_times.end(), m_begin_ps[i]);
-        const auto last = i + 1 < m_begin_ps.size()
-                              ? std::lower_bound(first, sorted_times.end(), m_begin_ps[i + 1])
-                              : sorted_times.end();
+        const auto last = i + 1 < m_begin_ps.size() ? std::lower_bound(first, sorted_times.end(), m_begin_ps[i + 1])
+                                                    : sorted_times.end();
         out[i] = {static_cast<std::size_t>(first - sorted_times.begin()),
                   static_cast<std::size_t>(last - sorted_times.begin())};
     }

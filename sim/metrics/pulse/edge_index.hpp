@@ -50,8 +50,8 @@ private:
 
 struct EdgeIndex {
     std::vector<AxisEdges> axes;
-    std::vector<std::vector<EdgeRange>> by_move;       // [axis][move]; empty without moves
-    std::vector<std::size_t> unattributed;             // [axis] rising edges before the first move
+    std::vector<std::vector<EdgeRange>> by_move;            // [axis][move]; empty without moves
+    std::vector<std::size_t> unattributed;                  // [axis] rising edges before the first move
     std::vector<std::optional<TimePs>> move_first_edge_ps;  // [move] first rising edge on any axis
     std::vector<std::optional<TimePs>> move_last_edge_ps;   // [move] last rising edge on any axis
 };

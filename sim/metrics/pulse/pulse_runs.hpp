@@ -42,8 +42,8 @@ struct PulseRun {
     EdgeRange edges_range;            // indices into the axis's rising edges
     TimePs t_first_ps = 0;
     TimePs t_last_ps = 0;
-    std::optional<PeriodStats> period;  // >= 2 edges
-    std::optional<TieStats> tie;        // >= 3 edges
+    std::optional<PeriodStats> period;                 // >= 2 edges
+    std::optional<TieStats> tie;                       // >= 3 edges
     std::optional<double> rate_achieved_steps_per_s;   // (n-1) / (t_last - t_first)
     std::optional<double> rate_commanded_steps_per_s;  // with moves, when the move commands a rate
     std::optional<double> rate_error_pct;              // (achieved - commanded) / commanded
@@ -57,7 +57,7 @@ struct AxisPulseSummary {
     std::size_t runs_measured = 0;  // runs with period statistics (>= 2 edges)
     std::optional<double> jitter_std_max_ns, jitter_pp_max_ns;
     std::optional<double> tie_rms_max_ns, tie_max_ns, tie_max_period_frac;
-    std::optional<double> rate_error_worst_pct;  // signed, largest magnitude
+    std::optional<double> rate_error_worst_pct;                  // signed, largest magnitude
     std::optional<std::size_t> worst_jitter_run, worst_tie_run;  // indices into the run list
 };
 

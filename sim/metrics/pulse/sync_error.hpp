@@ -20,7 +20,7 @@ struct SyncResult {
     std::vector<std::optional<double>> axis_max_abs_ns;                    // [axis]
     std::optional<double> max_abs_ns;
     // Commanded trajectory only: per axis, edges with no crossing of their step within its sync window.
-    std::vector<std::optional<std::size_t>> axis_unmatched_edges;  // [axis]
+    std::vector<std::optional<std::size_t>> axis_unmatched_edges;     // [axis]
     std::vector<std::vector<std::size_t>> move_axis_unmatched_edges;  // [move][axis]
 };
 

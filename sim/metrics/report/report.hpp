@@ -17,7 +17,8 @@ namespace cnc::metrics {
 // report: as json values it would hold the records a second time).
 enum class MoveColumns { InJson, Streamed };
 // `detail` false: without the pulse runs and the dead-time gaps (cncsim run without --detail); analyze writes all.
-[[nodiscard]] nlohmann::json to_json(const RunMetrics& m, bool detail = true, MoveColumns columns = MoveColumns::InJson);
+[[nodiscard]] nlohmann::json to_json(const RunMetrics& m, bool detail = true,
+                                     MoveColumns columns = MoveColumns::InJson);
 // The programmed moves' columns as report_text() writes to_json()'s "moves" at `depth`: one pass over the
 // records per column.
 void write_move_columns(std::ostream& out, const RunMetrics& m, bool detail, int depth);

@@ -22,7 +22,9 @@ json opt(const std::optional<T>& v) {
     return v ? json(*v) : json(nullptr);
 }
 
-json scaled(const std::optional<double>& v, double k) { return v ? json(*v * k) : json(nullptr); }
+json scaled(const std::optional<double>& v, double k) {
+    return v ? json(*v * k) : json(nullptr);
+}
 
 json limits_json(const DriverLimits& l) {
     return {{"step_high_min_ns", ps_to_ns(l.step_high_min_ps)},
@@ -149,8 +151,7 @@ const MoveColumn kMoveColumns[] = {
     {"pieces", false, [](const MoveMetrics& m) { return json(m.pieces); }, true},
     {"t_first_edge_ps", false, [](const MoveMetrics& m) { return opt(m.t_first_edge_ps); }},
     {"t_last_edge_ps", true, [](const MoveMetrics& m) { return opt(m.t_last_edge_ps); }},
-    {"motion_time_s", false, [](const MoveMetrics& m) { return rounded_opt(m.timing.motion_time_s, kToTheNs); },
-     true},
+    {"motion_time_s", false, [](const MoveMetrics& m) { return rounded_opt(m.timing.motion_time_s, kToTheNs); }, true},
     {"achieved_feed_mm_per_min", true,
      [](const MoveMetrics& m) { return rounded_opt(m.timing.achieved_feed_mm_per_min, kToThousandths); }, true},
     {"feed_error_pct", false,
@@ -319,39 +320,39 @@ nlohmann::json to_json(const RunMetrics& m, bool detail, MoveColumns columns) {
     const PulseTotals& p = m.pulse;
     const PathResult& path = m.path;
     const TimingResult& t = m.timing;
-    json out = {{"limits", limits_json(m.limits)},
-            {"pulse",
-             {{"jitter_std_max_ns", opt(p.jitter_std_max_ns)},
-              {"jitter_pp_max_ns", opt(p.jitter_pp_max_ns)},
-              {"tie_rms_max_ns", opt(p.tie_rms_max_ns)},
-              {"tie_max_ns", opt(p.tie_max_ns)},
-              {"tie_max_period_frac", opt(p.tie_max_period_frac)},
-              {"rate_error_worst_pct", opt(p.rate_error_worst_pct)},
-              {"sync_max_ns", opt(p.sync_max_abs_ns)},
-              {"sync_max_us", scaled(p.sync_max_abs_ns, 1e-3)},
-              {"driver_violations", p.driver_violations}}},
-            {"run_split_tolerance",
-             m.with_moves || m.runs_per_rate_segment ? json(nullptr) : json(m.run_split_tolerance)},
-            {"axes", axes},
-            {"moves", columns == MoveColumns::InJson ? moves_json(m, m.moves, detail, true) : json(nullptr)},
-            {"worst_moves", worst_json(m)},
-            {"path",
-             {{"tool_samples", path.samples},
-              {"contour_max_um", opt(path.contour_max_um)},
-              {"contour_rms_um", opt(path.contour_rms_um)},
-              {"following_max_um", opt(path.following_max_um)},
-              {"following_rms_um", opt(path.following_rms_um)},
-              {"endpoint_vs_command_max_um", opt(path.endpoint_vs_command_max_um)},
-              {"endpoint_vs_program_max_um", opt(path.endpoint_vs_program_max_um)},
-              {"job_end_um", opt(path.job_end_um)}}},
-            {"feed",
-             {{"cutting_moves_measured", t.feed_moves},
-              {"cutting_moves_below_feed", t.below_feed_moves},
-              {"feed_error_mean_pct", opt(t.feed_error_mean_pct)},
-              {"feed_error_mean_abs_pct", opt(t.feed_error_mean_abs_pct)},
-              {"feed_error_max_abs_pct", opt(t.feed_error_max_abs_pct)}}},
-            {"job", job_json(m, detail)},
-            {"laser", laser_json(m.laser)}};
+    json out = {
+        {"limits", limits_json(m.limits)},
+        {"pulse",
+         {{"jitter_std_max_ns", opt(p.jitter_std_max_ns)},
+          {"jitter_pp_max_ns", opt(p.jitter_pp_max_ns)},
+          {"tie_rms_max_ns", opt(p.tie_rms_max_ns)},
+          {"tie_max_ns", opt(p.tie_max_ns)},
+          {"tie_max_period_frac", opt(p.tie_max_period_frac)},
+          {"rate_error_worst_pct", opt(p.rate_error_worst_pct)},
+          {"sync_max_ns", opt(p.sync_max_abs_ns)},
+          {"sync_max_us", scaled(p.sync_max_abs_ns, 1e-3)},
+          {"driver_violations", p.driver_violations}}},
+        {"run_split_tolerance", m.with_moves || m.runs_per_rate_segment ? json(nullptr) : json(m.run_split_tolerance)},
+        {"axes", axes},
+        {"moves", columns == MoveColumns::InJson ? moves_json(m, m.moves, detail, true) : json(nullptr)},
+        {"worst_moves", worst_json(m)},
+        {"path",
+         {{"tool_samples", path.samples},
+          {"contour_max_um", opt(path.contour_max_um)},
+          {"contour_rms_um", opt(path.contour_rms_um)},
+          {"following_max_um", opt(path.following_max_um)},
+          {"following_rms_um", opt(path.following_rms_um)},
+          {"endpoint_vs_command_max_um", opt(path.endpoint_vs_command_max_um)},
+          {"endpoint_vs_program_max_um", opt(path.endpoint_vs_program_max_um)},
+          {"job_end_um", opt(path.job_end_um)}}},
+        {"feed",
+         {{"cutting_moves_measured", t.feed_moves},
+          {"cutting_moves_below_feed", t.below_feed_moves},
+          {"feed_error_mean_pct", opt(t.feed_error_mean_pct)},
+          {"feed_error_mean_abs_pct", opt(t.feed_error_mean_abs_pct)},
+          {"feed_error_max_abs_pct", opt(t.feed_error_max_abs_pct)}}},
+        {"job", job_json(m, detail)},
+        {"laser", laser_json(m.laser)}};
     if (detail) out["pieces"] = moves_json(m, m.pieces, detail, false);
     return out;
 }

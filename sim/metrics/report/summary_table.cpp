@@ -12,7 +12,9 @@ namespace cnc::metrics {
 
 namespace {
 
-std::string count(std::size_t n) { return std::to_string(n); }
+std::string count(std::size_t n) {
+    return std::to_string(n);
+}
 
 std::optional<double> times(std::optional<double> v, double k) {
     return v ? std::optional<double>(*v * k) : std::nullopt;
@@ -76,8 +78,8 @@ std::string path_section(const RunMetrics& m) {
 
 std::string feed_section(const RunMetrics& m) {
     const TimingResult& f = m.timing;
-    TextTable t({"cutting moves", "below F", "feed error mean [%]", "feed error mean abs [%]",
-                 "feed error max abs [%]"});
+    TextTable t(
+        {"cutting moves", "below F", "feed error mean [%]", "feed error mean abs [%]", "feed error max abs [%]"});
     t.add_row({count(f.feed_moves), count(f.below_feed_moves), fixed(f.feed_error_mean_pct, 4),
                fixed(f.feed_error_mean_abs_pct, 4), fixed(f.feed_error_max_abs_pct, 4)});
     return t.render("Feed (cutting moves)");
@@ -121,8 +123,8 @@ std::string job_section(const RunMetrics& m) {
 }
 
 std::string laser_section(const LaserResult& l) {
-    TextTable t({"on [ms]", "dwell [ms]", "dwell stretches", "longest dwell [ms]", "longest at [s]",
-                 "on in rapid [ms]"});
+    TextTable t(
+        {"on [ms]", "dwell [ms]", "dwell stretches", "longest dwell [ms]", "longest at [s]", "on in rapid [ms]"});
     t.add_row({fixed(l.on_ms, 3), fixed(l.dwell_ms, 3), count(l.dwell_intervals), fixed(l.dwell_longest_ms, 3),
                fixed(l.dwell_longest_at_s, 6), fixed(l.on_in_rapid_ms, 3)});
     return t.render("Laser");

@@ -4,8 +4,8 @@
 #include <limits>
 #include <utility>
 
-#include "metrics/pulse/edge_index.hpp"
 #include "metrics/path/path_accuracy.hpp"
+#include "metrics/pulse/edge_index.hpp"
 #include "metrics/timing/programmed_moves.hpp"
 
 namespace cnc::metrics {
@@ -14,7 +14,9 @@ namespace {
 
 constexpr TimePs kEndOfTime = std::numeric_limits<TimePs>::max();
 
-bool starts_after(TimePs t_ps, const RateSegment& s) { return t_ps < s.t_ps; }
+bool starts_after(TimePs t_ps, const RateSegment& s) {
+    return t_ps < s.t_ps;
+}
 
 }  // namespace
 
@@ -103,7 +105,8 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
     for (std::size_t a = 0; a < m_axes.size(); ++a) {
         for (PulseRun run : r.axes[a].runs) {
             // A rate segment's run before the first piece belongs to none (first window only).
-            if (run.move ? *run.move < first_piece || *run.move >= cut_piece : !first_fold || run.t_first_ps >= cut_ps) {
+            if (run.move ? *run.move < first_piece || *run.move >= cut_piece
+                         : !first_fold || run.t_first_ps >= cut_ps) {
                 continue;
             }
             if (run.move) run.move = m_pieces_done + (*run.move - first_piece);

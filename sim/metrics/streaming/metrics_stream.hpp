@@ -14,8 +14,8 @@
 #include "metrics/laser/laser.hpp"
 #include "metrics/laser/laser_exposure.hpp"
 #include "metrics/metrics.hpp"
-#include "metrics/timing/move_timing.hpp"
 #include "metrics/stats.hpp"
+#include "metrics/timing/move_timing.hpp"
 #include "metrics/timing/worst_moves.hpp"
 
 namespace cnc::metrics {
@@ -64,17 +64,17 @@ private:
     RunInput m_in;
     bool m_detail;
     PieceMeasured m_on_piece;
-    bool m_has_prev = false;          // m_in.moves.front() is the last measured piece, kept as a contour neighbour
-    bool m_sample_measured = false;   // m_in.tool.front() was measured, kept as the sample before the window
-    std::size_t m_pieces_done = 0;    // measured pieces
-    std::size_t m_moves_done = 0;     // measured programmed moves
-    bool m_rate_segmented = false;    // runs are per rate segment (RunMetrics::runs_per_rate_segment)
+    bool m_has_prev = false;         // m_in.moves.front() is the last measured piece, kept as a contour neighbour
+    bool m_sample_measured = false;  // m_in.tool.front() was measured, kept as the sample before the window
+    std::size_t m_pieces_done = 0;   // measured pieces
+    std::size_t m_moves_done = 0;    // measured programmed moves
+    bool m_rate_segmented = false;   // runs are per rate segment (RunMetrics::runs_per_rate_segment)
     std::vector<std::size_t> m_rising_done;  // [axis] rising edges dropped
     std::vector<AxisMetrics> m_axes;         // counts, runs (detail), sync of the measured part
     std::vector<PulseSummaryFold> m_pulse;   // [axis]
     std::vector<DriverTimingStream> m_driver;
     std::optional<TimePs> m_first_edge_ps, m_last_edge_ps;  // any axis
-    RunMetrics m_out;                 // pieces, moves, sync and endpoint extrema so far
+    RunMetrics m_out;                                       // pieces, moves, sync and endpoint extrema so far
     MaxRms m_contour, m_following;
     WorstMovesFold m_worst;
     TimingFold m_timing;

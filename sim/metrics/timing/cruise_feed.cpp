@@ -23,8 +23,8 @@ double turn_rad(geom::Vec2 c, geom::Vec2 a, geom::Vec2 b) {
 
 }  // namespace
 
-std::optional<std::pair<TimePs, TimePs>> cruise_window(const CommandedTrajectory& c, TimePs t_begin_ps,
-                                                       TimePs t_end_ps, double speed_mm_per_s) {
+std::optional<std::pair<TimePs, TimePs>> cruise_window(const CommandedTrajectory& c, TimePs t_begin_ps, TimePs t_end_ps,
+                                                       double speed_mm_per_s) {
     std::optional<std::pair<TimePs, TimePs>> out;
     const double at_speed = (1.0 - kCruiseTolerance) * speed_mm_per_s;
     const TimePs step = std::max<TimePs>(c.scan_step_ps, 1);
@@ -62,12 +62,10 @@ geom::Vec2 StepPosition::position() const {
     return origin + geom::Vec2{mm[0], mm[1]};
 }
 
-std::optional<StepPosition::Travel> StepPosition::travel(const geom::Segment& path, TimePs t_from_ps,
-                                                         TimePs t_to_ps) {
+std::optional<StepPosition::Travel> StepPosition::travel(const geom::Segment& path, TimePs t_from_ps, TimePs t_to_ps) {
     advance_before(t_from_ps);
-    const geom::Vec2 dir = path.is_arc || path.length_mm() <= 0.0
-                               ? geom::Vec2{}
-                               : (path.end - path.start) * (1.0 / path.length_mm());
+    const geom::Vec2 dir =
+        path.is_arc || path.length_mm() <= 0.0 ? geom::Vec2{} : (path.end - path.start) * (1.0 / path.length_mm());
     const double turn_sign = path.sweep_rad < 0.0 ? -1.0 : 1.0;
     std::optional<Travel> out;
     geom::Vec2 first{};

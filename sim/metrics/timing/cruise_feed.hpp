@@ -43,8 +43,8 @@ private:
 
     const RunInput& m_in;
     const EdgeIndex& m_idx;
-    std::vector<std::size_t> m_next;     // [axis] the first edge not yet counted
-    std::vector<std::int64_t> m_count;   // [axis] net steps counted
+    std::vector<std::size_t> m_next;    // [axis] the first edge not yet counted
+    std::vector<std::int64_t> m_count;  // [axis] net steps counted
 };
 
 }  // namespace cnc::metrics

@@ -130,7 +130,10 @@ std::string temp_dir() {
 class MoveRecords::Spill {
 public:
     Spill(std::size_t axes, int fd, std::string path)
-        : m_axes(axes), m_row_size(kFixedSize + kVectorCounts + axes * kPerAxisSize), m_fd(fd), m_path(std::move(path)) {
+        : m_axes(axes),
+          m_row_size(kFixedSize + kVectorCounts + axes * kPerAxisSize),
+          m_fd(fd),
+          m_path(std::move(path)) {
         m_buffer.reserve(std::max<std::size_t>(1, kBufferBytes / m_row_size) * m_row_size);
     }
     ~Spill() { ::close(m_fd); }
@@ -190,8 +193,7 @@ private:
     void read(unsigned char* to, std::size_t rows, std::size_t first_row) {
         const std::size_t bytes = rows * m_row_size;
         for (std::size_t done = 0; done < bytes;) {
-            const ssize_t n = ::pread(m_fd, to + done, bytes - done,
-                                      static_cast<off_t>(first_row * m_row_size + done));
+            const ssize_t n = ::pread(m_fd, to + done, bytes - done, static_cast<off_t>(first_row * m_row_size + done));
             if (n < 0 && errno == EINTR) continue;
             if (n <= 0) fail("cannot read back", n < 0 ? errno : EIO);
             done += static_cast<std::size_t>(n);
@@ -221,8 +223,8 @@ MoveRecords MoveRecords::spilled(std::size_t axes, const std::string& dir) {
     std::string path = folder + "/cncsim-moves-XXXXXX";
     const int fd = ::mkstemp(path.data());
     if (fd < 0) {
-        throw MoveRecordsError("cannot create a temporary file in " + folder + " for the programmed moves' records: " +
-                               std::strerror(errno));
+        throw MoveRecordsError("cannot create a temporary file in " + folder +
+                               " for the programmed moves' records: " + std::strerror(errno));
     }
     ::unlink(path.c_str());
     return spilled_to(axes, fd, path);
@@ -248,7 +250,9 @@ void MoveRecords::append(const MoveMetrics& move) {
     }
 }
 
-std::size_t MoveRecords::size() const { return m_spill ? m_spill->size() : m_memory.size(); }
+std::size_t MoveRecords::size() const {
+    return m_spill ? m_spill->size() : m_memory.size();
+}
 
 void MoveRecords::for_each(const std::function<void(const MoveMetrics&)>& visit) const {
     if (m_spill) {

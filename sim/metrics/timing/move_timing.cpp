@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "metrics/timing/cruise_feed.hpp"
 #include "metrics/stats.hpp"
+#include "metrics/timing/cruise_feed.hpp"
 
 namespace cnc::metrics {
 

@@ -6,15 +6,15 @@
 #include <vector>
 
 #include "metrics/pulse/edge_index.hpp"
-#include "metrics/timing/programmed_moves.hpp"
 #include "metrics/run_input.hpp"
+#include "metrics/timing/programmed_moves.hpp"
 
 namespace cnc::metrics {
 
 struct DeadGap {
-    std::size_t after_move = 0;   // index into the programmed moves
+    std::size_t after_move = 0;  // index into the programmed moves
     std::size_t before_move = 0;
-    TimePs dead_ps = 0;           // first rising edge of before_move - last rising edge of after_move (any axis)
+    TimePs dead_ps = 0;  // first rising edge of before_move - last rising edge of after_move (any axis)
 };
 
 struct MoveTiming {
@@ -37,15 +37,15 @@ struct MoveTiming {
 };
 
 struct TimingResult {
-    std::vector<MoveTiming> moves;  // [programmed move]
-    std::size_t feed_moves = 0;     // cutting moves with a feed error
-    std::size_t below_feed_moves = 0;  // planner: cutting moves whose commanded speed never reached F
-    std::optional<double> feed_error_mean_pct;      // signed mean over cutting moves
+    std::vector<MoveTiming> moves;              // [programmed move]
+    std::size_t feed_moves = 0;                 // cutting moves with a feed error
+    std::size_t below_feed_moves = 0;           // planner: cutting moves whose commanded speed never reached F
+    std::optional<double> feed_error_mean_pct;  // signed mean over cutting moves
     std::optional<double> feed_error_mean_abs_pct;
     std::optional<double> feed_error_max_abs_pct;
-    double job_time_s = 0.0;                        // t_job_end - t_job_start
-    std::optional<double> motion_time_s;            // sum of the per-move motion times
-    std::size_t gap_count = 0;  // gaps between consecutive programmed moves that emit steps (dead_gaps())
+    double job_time_s = 0.0;              // t_job_end - t_job_start
+    std::optional<double> motion_time_s;  // sum of the per-move motion times
+    std::size_t gap_count = 0;            // gaps between consecutive programmed moves that emit steps (dead_gaps())
     std::optional<double> dead_total_ms, dead_mean_ms, dead_max_ms;
     std::optional<double> lead_in_ms;  // job start to the first rising STEP edge (any axis)
     std::optional<double> tail_ms;     // last rising STEP edge to the job end

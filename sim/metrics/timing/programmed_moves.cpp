@@ -25,8 +25,8 @@ std::vector<ProgrammedMove> programmed_moves(const RunInput& in, const EdgeIndex
         for (std::size_t a = 0; a < idx.axes.size(); ++a) pm.edges[a].end = idx.by_move[a][p].end;
         if (const std::optional<TimePs> f = idx.move_first_edge_ps[p]) {
             pm.t_first_edge_ps = pm.t_first_edge_ps.value_or(*f);
-            pm.t_last_edge_ps = std::max(pm.t_last_edge_ps.value_or(*idx.move_last_edge_ps[p]),
-                                         *idx.move_last_edge_ps[p]);
+            pm.t_last_edge_ps =
+                std::max(pm.t_last_edge_ps.value_or(*idx.move_last_edge_ps[p]), *idx.move_last_edge_ps[p]);
         }
     }
     return out;

@@ -16,7 +16,7 @@ struct RankedMove {
     std::size_t move = 0;  // position in the job's programmed moves (RunMetrics::moves)
     int index = 0;         // MoveMetrics::index and line
     int line = 0;
-    double value = 0.0;    // the figure, signed as the move has it
+    double value = 0.0;  // the figure, signed as the move has it
 };
 
 // Each list worst first by the figure's magnitude; equal magnitudes in move order.

@@ -24,8 +24,8 @@ const EdgeLog& find_signal(const VcdContents& vcd, const std::string& filename, 
 }  // namespace
 
 EnableOption parse_enable_option(const std::string& text) {
-    for (const auto& [suffix, level] : {std::pair{":active-low", EnableLevel::ActiveLow},
-                                        std::pair{":active-high", EnableLevel::ActiveHigh}}) {
+    for (const auto& [suffix, level] :
+         {std::pair{":active-low", EnableLevel::ActiveLow}, std::pair{":active-high", EnableLevel::ActiveHigh}}) {
         const std::string s = suffix;
         if (text.size() > s.size() && text.compare(text.size() - s.size(), s.size(), s) == 0) {
             return {text.substr(0, text.size() - s.size()), level};
@@ -51,8 +51,8 @@ RunInput analyze_input(const VcdContents& vcd, const std::string& filename, cons
         trace.step = find_signal(vcd, filename, "--step", names.step);
         if (!names.dir.empty()) trace.dir = find_signal(vcd, filename, "--dir", names.dir);
         if (!names.enable.empty()) {
-            trace.step = enabled_steps(trace.step, find_signal(vcd, filename, "--enable", names.enable),
-                                       names.enable_active);
+            trace.step =
+                enabled_steps(trace.step, find_signal(vcd, filename, "--enable", names.enable), names.enable_active);
         }
         trace.steps_per_mm = steps_per_mm.value_or(0.0);
         widen(trace.step);

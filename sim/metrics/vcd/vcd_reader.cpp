@@ -142,8 +142,8 @@ private:
             size_text.size() > 9) {
             fail(line, "$var size '" + size_text + "' is not a number");
         }
-        const bool one_bit = std::stoul(size_text) == 1 && type != "real" && type != "realtime" &&
-                             type != "event" && type != "string";
+        const bool one_bit =
+            std::stoul(size_text) == 1 && type != "real" && type != "realtime" && type != "event" && type != "string";
         Var v;
         v.leaf_name = body[3].text;
         // A 1-bit select keeps its index ("data [3]" -> "data[3]"); a vector's range ("cnt [31:0]") is not a name.

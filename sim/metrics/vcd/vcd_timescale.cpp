@@ -13,10 +13,10 @@ namespace {
 constexpr std::int64_t kFsPerPs = 1'000;
 
 // Coarsest first, so that formatting picks the largest unit.
-constexpr std::array<std::pair<const char*, std::int64_t>, 6> kUnitsFs{{{"s", kPsPerSec * kFsPerPs},
-                                                                        {"ms", kPsPerMs * kFsPerPs},
-                                                                        {"us", kPsPerUs * kFsPerPs},
-                                                                        {"ns", kPsPerNs * kFsPerPs},
+constexpr std::array<std::pair<const char*, std::int64_t>, 6> kUnitsFs{{{"s", kPsPerSec* kFsPerPs},
+                                                                        {"ms", kPsPerMs* kFsPerPs},
+                                                                        {"us", kPsPerUs* kFsPerPs},
+                                                                        {"ns", kPsPerNs* kFsPerPs},
                                                                         {"ps", kFsPerPs},
                                                                         {"fs", 1}}};
 constexpr std::array<std::int64_t, 3> kMultipliersCoarsestFirst{100, 10, 1};

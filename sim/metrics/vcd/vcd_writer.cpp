@@ -87,7 +87,10 @@ std::optional<TimePs> whole_period_ps(std::int64_t clock_hz) {
 
 VcdWriter::VcdWriter(std::ostream& out, std::int64_t timescale_fs, std::vector<VcdSignal> signals,
                      const std::string& where, TimePs start_ps)
-    : m_out(out), m_timescale_fs(timescale_fs), m_signals(std::move(signals)), m_last_ps(start_ps),
+    : m_out(out),
+      m_timescale_fs(timescale_fs),
+      m_signals(std::move(signals)),
+      m_last_ps(start_ps),
       m_written_tick(ps_to_vcd_ticks(start_ps, timescale_fs)) {
     check_vcd_signals(timescale_fs, m_signals, where);
     m_out << "$version cncsim $end\n$timescale " << timescale_text(timescale_fs, where)

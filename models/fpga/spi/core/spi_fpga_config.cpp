@@ -13,10 +13,14 @@ void require(bool ok, const std::string& key, const std::string& what) {
     if (!ok) throw BadInput(key, what);
 }
 // Latest time after a pin change at which the logic's registered outputs can react to it.
-TimePs reaction_ps(const SpiFpgaConfig& cfg) { return (kSpiSyncStages + 1) * clock_period_ps(cfg); }
+TimePs reaction_ps(const SpiFpgaConfig& cfg) {
+    return (kSpiSyncStages + 1) * clock_period_ps(cfg);
+}
 }  // namespace
 
-TimePs clock_period_ps(const SpiFpgaConfig& cfg) { return kPsPerSec / static_cast<TimePs>(cfg.clk_hz); }
+TimePs clock_period_ps(const SpiFpgaConfig& cfg) {
+    return kPsPerSec / static_cast<TimePs>(cfg.clk_hz);
+}
 
 void validate(const SpiFpgaConfig& cfg) {
     require(cfg.clk_hz > 0 && kPsPerSec % cfg.clk_hz == 0, "fpga: clk_hz",
@@ -40,8 +44,8 @@ void check_link(const spi::SpiConfig& link, const SpiFpgaConfig& cfg) {
         s << "SCLK " << link.sclk_hz << " Hz is too fast for the FPGA's oversampling SPI slave at " << cfg.clk_hz
           << " Hz: MISO changes up to " << kSpiSyncStages + 1 << " clocks (" << ps_to_ns(limit)
           << " ns) after a falling SCLK edge and must be stable before the next rising edge, half an SCLK period ("
-          << ps_to_ns(spi::sclk_half_period_ps(link)) << " ns) later; the highest usable rate is "
-          << max_sclk_hz(cfg) << " Hz";
+          << ps_to_ns(spi::sclk_half_period_ps(link)) << " ns) later; the highest usable rate is " << max_sclk_hz(cfg)
+          << " Hz";
         throw BadInput("spi: sclk_hz", s.str());
     }
     if (link.cs_setup_ps <= limit) {
@@ -52,8 +56,8 @@ void check_link(const spi::SpiConfig& link, const SpiFpgaConfig& cfg) {
     }
     if (link.ss_idle_min_ps < clock_period_ps(cfg)) {
         std::ostringstream s;
-        s << "ss_idle_min " << link.ss_idle_min_ps << " ps is shorter than one FPGA clock ("
-          << clock_period_ps(cfg) << " ps): the slave could miss the end of a frame";
+        s << "ss_idle_min " << link.ss_idle_min_ps << " ps is shorter than one FPGA clock (" << clock_period_ps(cfg)
+          << " ps): the slave could miss the end of a frame";
         throw BadInput("spi: ss_idle_min_ps", s.str());
     }
 }

@@ -16,11 +16,11 @@ namespace cnc::fpga {
 enum class RateApply { AtNextPulse, Immediately };
 
 struct SpiFpgaConfig {
-    std::uint32_t clk_hz = 50'000'000;     // 50 MHz, as seed 000's board
-    std::uint32_t fifo_depth = 4;          // frames between the SPI slave and the generators
-    std::uint32_t pulse_cycles = 100;      // seed 004 §2 `duration`; 100 clocks = 2 us (seed 000 PULSE_HIGH)
-    std::uint32_t dir_setup_cycles = 50;   // 1 us from a DIR change to the next STEP rise (DRV8825: 650 ns)
-    std::uint32_t dir_hold_cycles = 50;    // 1 us from a STEP rise to a DIR change (DRV8825: 650 ns)
+    std::uint32_t clk_hz = 50'000'000;    // 50 MHz, as seed 000's board
+    std::uint32_t fifo_depth = 4;         // frames between the SPI slave and the generators
+    std::uint32_t pulse_cycles = 100;     // seed 004 §2 `duration`; 100 clocks = 2 us (seed 000 PULSE_HIGH)
+    std::uint32_t dir_setup_cycles = 50;  // 1 us from a DIR change to the next STEP rise (DRV8825: 650 ns)
+    std::uint32_t dir_hold_cycles = 50;   // 1 us from a STEP rise to a DIR change (DRV8825: 650 ns)
     RateApply rate_apply = RateApply::AtNextPulse;
 };
 
@@ -30,7 +30,9 @@ inline constexpr std::int64_t kSpiSyncStages = 2;
 
 [[nodiscard]] TimePs clock_period_ps(const SpiFpgaConfig& cfg);
 // Shortest STEP period: the pulse plus one low clock. Shorter words are stretched to it (and counted).
-[[nodiscard]] constexpr std::uint32_t min_period_cycles(const SpiFpgaConfig& cfg) { return cfg.pulse_cycles + 1; }
+[[nodiscard]] constexpr std::uint32_t min_period_cycles(const SpiFpgaConfig& cfg) {
+    return cfg.pulse_cycles + 1;
+}
 
 // BadInput naming the key: clk_hz must divide 1e12; depth >= 1; pulse, setup and hold >= 1 clock (with 0, a
 // DIR change could share an edge with a STEP rise and the counter would read the wrong direction).

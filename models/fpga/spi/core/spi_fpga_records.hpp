@@ -11,12 +11,12 @@
 namespace cnc::fpga {
 
 struct SlaveFrameRecord {
-    std::uint64_t seq = 0;          // index in SpiSlave::frames()
-    TimePs t_snapshot_ps = 0;       // FrameStart edge: counters and status captured for the reply
-    TimePs t_end_ps = 0;            // FrameEnd edge: pushed to the FIFO (or rejected) here
+    std::uint64_t seq = 0;     // index in SpiSlave::frames()
+    TimePs t_snapshot_ps = 0;  // FrameStart edge: counters and status captured for the reply
+    TimePs t_end_ps = 0;       // FrameEnd edge: pushed to the FIFO (or rejected) here
     std::size_t mosi_bits = 0;
-    bool accepted = false;          // whole frame with the kCmdRates header
-    bool dropped = false;           // accepted but the FIFO was full
+    bool accepted = false;            // whole frame with the kCmdRates header
+    bool dropped = false;             // accepted but the FIFO was full
     std::vector<std::uint8_t> reply;  // bytes loaded for MISO (the words are in the generators' applied logs)
 };
 

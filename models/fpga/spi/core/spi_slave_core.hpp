@@ -16,10 +16,10 @@ namespace cnc::fpga {
 struct SlaveEvent {
     enum class Kind { FrameStart, MisoShift, FrameEnd };
     Kind kind = Kind::FrameStart;
-    std::int64_t edge = 0;             // edge at which the logic acts (registered outputs change)
-    std::size_t miso_bit = 0;          // MisoShift: index of the reply bit now on MISO
-    std::vector<std::uint8_t> mosi;    // FrameEnd: bytes shifted in, MSB first (a partial last byte is dropped)
-    std::size_t mosi_bits = 0;         // FrameEnd: rising SCLK edges seen while SS was low
+    std::int64_t edge = 0;           // edge at which the logic acts (registered outputs change)
+    std::size_t miso_bit = 0;        // MisoShift: index of the reply bit now on MISO
+    std::vector<std::uint8_t> mosi;  // FrameEnd: bytes shifted in, MSB first (a partial last byte is dropped)
+    std::size_t mosi_bits = 0;       // FrameEnd: rising SCLK edges seen while SS was low
 };
 
 class SpiSlaveCore {

@@ -4,9 +4,15 @@ namespace cnc::host::cad2g {
 
 namespace {
 
-std::uint8_t bit(int n) { return static_cast<std::uint8_t>(1U << n); }
-std::uint8_t low(std::uint16_t v) { return static_cast<std::uint8_t>(v & 0xFFU); }
-std::uint8_t high(std::uint16_t v) { return static_cast<std::uint8_t>(v >> 8); }
+std::uint8_t bit(int n) {
+    return static_cast<std::uint8_t>(1U << n);
+}
+std::uint8_t low(std::uint16_t v) {
+    return static_cast<std::uint8_t>(v & 0xFFU);
+}
+std::uint8_t high(std::uint16_t v) {
+    return static_cast<std::uint8_t>(v >> 8);
+}
 
 }  // namespace
 
@@ -20,8 +26,12 @@ std::uint8_t start_byte(std::int64_t steps_x, bool enable_x, std::int64_t steps_
     return b;
 }
 
-bool enabled_x(std::uint8_t portb) { return (portb & bit(LASER_ENGRAVER_PB_EN_X)) == 0; }
-bool enabled_y(std::uint8_t portb) { return (portb & bit(LASER_ENGRAVER_PB_EN_Y)) == 0; }
+bool enabled_x(std::uint8_t portb) {
+    return (portb & bit(LASER_ENGRAVER_PB_EN_X)) == 0;
+}
+bool enabled_y(std::uint8_t portb) {
+    return (portb & bit(LASER_ENGRAVER_PB_EN_Y)) == 0;
+}
 
 std::vector<std::uint8_t> motion_bytes(CommandId id, const Motion& m) {
     switch (id) {

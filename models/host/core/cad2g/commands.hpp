@@ -24,27 +24,27 @@ inline constexpr std::uint32_t kSeedBaud = LASER_ENGRAVER_BAUD;
 
 // One start byte: a G00, a G01, or one chord of an arc.
 struct Motion {
-    int move = -1;                 // index into Program::moves
-    int line = 0;                  // G-code line
+    int move = -1;  // index into Program::moves
+    int line = 0;   // G-code line
     MotionKind kind = MotionKind::Rapid;
-    int chord = -1;                // 0-based chord of its arc; -1 for G00 / G01
-    std::int64_t steps_x = 0;      // signed displacement on the step grid the PC intends
+    int chord = -1;            // 0-based chord of its arc; -1 for G00 / G01
+    std::int64_t steps_x = 0;  // signed displacement on the step grid the PC intends
     std::int64_t steps_y = 0;
-    std::uint16_t count_x = 0;     // X count sent (G01 and chords: |dx|, or |dy| as a timebase when dx = 0)
-    std::uint16_t count_y = 0;     // G00 only: Y count sent
-    bool x_timebase = false;       // dx = 0: X's timer times |dy| steps with driver X disabled (seed §4.4 note 1)
-    bool wrapped = false;          // a count above 16 bits, sent modulo 65536 (atmega.long_moves = wrap)
+    std::uint16_t count_x = 0;          // X count sent (G01 and chords: |dx|, or |dy| as a timebase when dx = 0)
+    std::uint16_t count_y = 0;          // G00 only: Y count sent
+    bool x_timebase = false;            // dx = 0: X's timer times |dy| steps with driver X disabled (seed §4.4 note 1)
+    bool wrapped = false;               // a count above 16 bits, sent modulo 65536 (atmega.long_moves = wrap)
     double path_feed_mm_per_min = 0.0;  // programmed F (G00: the rapid feed, v_max)
-    double speed_x_mm_per_s = 0.0; // asked per-axis speeds (eqs. 4.76; G00: v_max on both)
+    double speed_x_mm_per_s = 0.0;      // asked per-axis speeds (eqs. 4.76; G00: v_max on both)
     double speed_y_mm_per_s = 0.0;
-    Ocr ocr_x;                     // OCR0A
-    Ocr ocr_y;                     // OCR2A
-    std::uint8_t portb = 0;        // start byte
+    Ocr ocr_x;               // OCR0A
+    Ocr ocr_y;               // OCR2A
+    std::uint8_t portb = 0;  // start byte
 };
 
 struct Command {
     CommandId id = CommandId::M30;
-    std::vector<Motion> motions;   // G00 / G01: one; G02 / G03: the chords; M30: none
+    std::vector<Motion> motions;  // G00 / G01: one; G02 / G03: the chords; M30: none
 };
 
 // PORTB start byte: DIR 1 = negative, EN 1 = disabled (seed 003 §2.2); HEADER = head on.

@@ -5,8 +5,10 @@
 namespace cnc::host::cad2g {
 
 double motion_s(const Motion& m, TimerClock clk) {
-    const double x_cycles = static_cast<double>(m.count_x) * static_cast<double>(step_period_cycles(m.ocr_x.value, clk));
-    const double y_cycles = static_cast<double>(m.count_y) * static_cast<double>(step_period_cycles(m.ocr_y.value, clk));
+    const double x_cycles =
+        static_cast<double>(m.count_x) * static_cast<double>(step_period_cycles(m.ocr_x.value, clk));
+    const double y_cycles =
+        static_cast<double>(m.count_y) * static_cast<double>(step_period_cycles(m.ocr_y.value, clk));
     return std::max(x_cycles, y_cycles) / clk.f_cpu_hz;
 }
 

@@ -20,8 +20,7 @@ namespace cnc::host::cad2g {
 //   arc chord k > 0: chord k - 1, which the firmware lets end before it loads chord k and asks for chord k + 1;
 //   arc chord 0: nothing (it asks for chord 1 while chord 0 runs);
 //   an arc's terminator: the last chord; M30: nothing (no byte follows it).
-[[nodiscard]] std::vector<double> motion_before_next_confirm_s(const Plan& plan,
-                                                               const std::vector<Transfer>& transfers,
+[[nodiscard]] std::vector<double> motion_before_next_confirm_s(const Plan& plan, const std::vector<Transfer>& transfers,
                                                                TimerClock clk = {});
 
 }  // namespace cnc::host::cad2g

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "common/text_format.hpp"
 #include "common/bad_input.hpp"
+#include "common/text_format.hpp"
 
 namespace cnc::host::cad2g {
 
@@ -27,21 +27,30 @@ struct GridPos {
 
 CommandId command_id(MotionKind k) {
     switch (k) {
-        case MotionKind::Rapid: return CommandId::G00;
-        case MotionKind::Linear: return CommandId::G01;
-        case MotionKind::ArcCW: return CommandId::G02;
-        case MotionKind::ArcCCW: return CommandId::G03;
+        case MotionKind::Rapid:
+            return CommandId::G00;
+        case MotionKind::Linear:
+            return CommandId::G01;
+        case MotionKind::ArcCW:
+            return CommandId::G02;
+        case MotionKind::ArcCCW:
+            return CommandId::G03;
     }
     return CommandId::G01;
 }
 
 const char* g_name(CommandId id) {
     switch (id) {
-        case CommandId::G00: return "G00";
-        case CommandId::G01: return "G01";
-        case CommandId::G02: return "G02";
-        case CommandId::G03: return "G03";
-        case CommandId::M30: return "M30";
+        case CommandId::G00:
+            return "G00";
+        case CommandId::G01:
+            return "G01";
+        case CommandId::G02:
+            return "G02";
+        case CommandId::G03:
+            return "G03";
+        case CommandId::M30:
+            return "M30";
     }
     return "?";
 }
@@ -216,12 +225,12 @@ private:
     }
 
     void long_move_warning(const ProgrammedMove& move, CommandId id, std::int64_t longest) {
-        const double limit_mm = static_cast<double>(kCountMax + 1) /
-                                std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm());
+        const double limit_mm =
+            static_cast<double>(kCountMax + 1) / std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm());
         std::string text = std::string(g_name(id)) + " count " + std::to_string(longest) +
                            " exceeds the 16-bit step counter" +
                            format(" (%.1f mm at %.0f steps/mm): ", limit_mm,
-                               std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm()));
+                                  std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm()));
         if (m_opt.long_moves == LongMoves::Split) {
             text += "sent as " + std::to_string((longest + kCountMax - 1) / kCountMax) +
                     " commands (atmega.long_moves = split)";
@@ -248,14 +257,13 @@ private:
             if (k.fast + k.slow == 0) return;
             const double fastest = speed_mm_per_s(0, mm_per_step, m_opt.timer);
             const double slowest = speed_mm_per_s(255, mm_per_step, m_opt.timer);
-            m_plan.warnings.push_back(
-                {kind, source_line(move),
-                 std::string(g_name(command_id(move.kind))) + ": " + reg + " outside 0..255 in " +
-                     std::to_string(k.fast + k.slow) + " of " + std::to_string(motions) +
-                     (move.path.is_arc ? " chords (" : " commands (") + std::to_string(k.slow) + " held to 255, " +
-                     std::to_string(k.fast) + " to 0): " + axis +
-                     format(" asked %.4g..%.4g mm/s, the 8-bit range is %.4g..%.4g mm/s", k.min_asked, k.max_asked,
-                            slowest, fastest)});
+            m_plan.warnings.push_back({kind, source_line(move),
+                                       std::string(g_name(command_id(move.kind))) + ": " + reg + " outside 0..255 in " +
+                                           std::to_string(k.fast + k.slow) + " of " + std::to_string(motions) +
+                                           (move.path.is_arc ? " chords (" : " commands (") + std::to_string(k.slow) +
+                                           " held to 255, " + std::to_string(k.fast) + " to 0): " + axis +
+                                           format(" asked %.4g..%.4g mm/s, the 8-bit range is %.4g..%.4g mm/s",
+                                                  k.min_asked, k.max_asked, slowest, fastest)});
         };
         report(x, "ocr0a_range", "OCR0A", "X", m_machine.x.mm_per_step());
         report(y, "ocr2a_range", "OCR2A", "Y", m_machine.y.mm_per_step());

@@ -33,8 +33,8 @@ namespace cnc::host::cad2g {
 enum class LongMoves { Split, Wrap };
 
 struct PcOptions {
-    TimerClock timer;            // what the PC computes the OCR words with (seed: 16 MHz, N = 1024)
-    double arc_step_deg = 2.0;   // seed §5.4.3 "stepangle" (value not given): atmega.arc_step_deg
+    TimerClock timer;           // what the PC computes the OCR words with (seed: 16 MHz, N = 1024)
+    double arc_step_deg = 2.0;  // seed §5.4.3 "stepangle" (value not given): atmega.arc_step_deg
     LongMoves long_moves = LongMoves::Split;
 };
 

@@ -13,11 +13,11 @@ struct TimerClock {
 };
 
 struct Ocr {
-    double exact = 0.0;        // f / (2 N v/s) - 1 (infinite for v = 0)
+    double exact = 0.0;          // f / (2 N v/s) - 1 (infinite for v = 0)
     std::int64_t truncated = 0;  // the fraction dropped, as the seed converts to binary (eq. 5.1)
-    std::uint8_t value = 0;    // what the register gets: truncated, held to 0..255
-    bool too_fast = false;     // exact < 0: v above the OCR = 0 speed, sent as 0
-    bool too_slow = false;     // truncated > 255: v below the OCR = 255 speed, sent as 255
+    std::uint8_t value = 0;      // what the register gets: truncated, held to 0..255
+    bool too_fast = false;       // exact < 0: v above the OCR = 0 speed, sent as 0
+    bool too_slow = false;       // truncated > 255: v below the OCR = 255 speed, sent as 255
 };
 
 [[nodiscard]] Ocr ocr_for_speed(double speed_mm_per_s, double mm_per_step, TimerClock clk = {});

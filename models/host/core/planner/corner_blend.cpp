@@ -35,7 +35,11 @@ struct Side {
 
 Side side_at(const Curve& c, bool at_end, Vec2 corner) {
     const double s = at_end ? c.length_mm() : 0.0;
-    return Side{c.is_arc, corner, c.unit_tangent_at(s), c.center, at_end ? c.end_radius_mm() : c.start_radius_mm(),
+    return Side{c.is_arc,
+                corner,
+                c.unit_tangent_at(s),
+                c.center,
+                at_end ? c.end_radius_mm() : c.start_radius_mm(),
                 c.sweep_rad >= 0.0 ? 1.0 : -1.0};
 }
 
@@ -85,8 +89,8 @@ Vec2 side_tangent(const Side& s, Vec2 q) {
 // lines.
 double along(const Side& s, Vec2 q, bool before_corner) {
     if (!s.is_arc) return geom::dot(q - s.point, s.tangent) * (before_corner ? -1.0 : 1.0);
-    const double ang = before_corner ? signed_angle(q - s.center, s.point - s.center)
-                                     : signed_angle(s.point - s.center, q - s.center);
+    const double ang =
+        before_corner ? signed_angle(q - s.center, s.point - s.center) : signed_angle(s.point - s.center, q - s.center);
     return ang * s.orient;
 }
 

@@ -11,10 +11,18 @@ namespace {
 
 // Shape of the spiral's curvature along the path fraction f: S(f) = 3 f^2 - 2 f^3, its integral and slopes
 // (S' <= 3/2, |S''| <= 6).
-double shape(double f) { return f * f * (3.0 - 2.0 * f); }
-double shape_integral(double f) { return f * f * f * (1.0 - 0.5 * f); }
-double shape_slope(double f) { return 6.0 * f * (1.0 - f); }
-double shape_bend(double f) { return 6.0 * (1.0 - 2.0 * f); }
+double shape(double f) {
+    return f * f * (3.0 - 2.0 * f);
+}
+double shape_integral(double f) {
+    return f * f * f * (1.0 - 0.5 * f);
+}
+double shape_slope(double f) {
+    return 6.0 * f * (1.0 - f);
+}
+double shape_bend(double f) {
+    return 6.0 * (1.0 - 2.0 * f);
+}
 constexpr double kMaxShapeSlope = 1.5;
 constexpr double kMaxShapeBend = 6.0;
 
@@ -26,12 +34,12 @@ Vec2 rotate(Vec2 v, double angle_rad) {
 
 // An arc at path fraction f, with P(f) = centre + r(f) e(phi(f)) and r(f) phi'(f) = k (signed, |k| = length).
 struct ArcState {
-    Vec2 radial;        // e(phi)
-    double phi;         // swept angle from the start
-    double r;           // radius
-    double dr;          // r'(f)
-    double ddr;         // r''(f)
-    double dphi;        // phi'(f)
+    Vec2 radial;  // e(phi)
+    double phi;   // swept angle from the start
+    double r;     // radius
+    double dr;    // r'(f)
+    double ddr;   // r''(f)
+    double dphi;  // phi'(f)
     double k;
 };
 
@@ -54,9 +62,13 @@ ArcState arc_state(const Curve& c, double f) {
 
 }  // namespace
 
-Curve Curve::line(Vec2 from, Vec2 to) { return Curve{from, to, false, {}, 0.0}; }
+Curve Curve::line(Vec2 from, Vec2 to) {
+    return Curve{from, to, false, {}, 0.0};
+}
 
-Curve Curve::arc(Vec2 from, Vec2 to, Vec2 center, double sweep_rad) { return Curve{from, to, true, center, sweep_rad}; }
+Curve Curve::arc(Vec2 from, Vec2 to, Vec2 center, double sweep_rad) {
+    return Curve{from, to, true, center, sweep_rad};
+}
 
 Curve Curve::from_segment(const geom::Segment& segment) {
     return segment.is_arc ? arc(segment.start, segment.end, segment.center, segment.sweep_rad)
@@ -102,7 +114,9 @@ Vec2 Curve::second_derivative(double s_mm) const {
     return d2 * (1.0 / (len * len));
 }
 
-Vec2 Curve::unit_tangent_at(double s_mm) const { return unit(first_derivative(s_mm)); }
+Vec2 Curve::unit_tangent_at(double s_mm) const {
+    return unit(first_derivative(s_mm));
+}
 
 double Curve::max_stretch() const {
     if (!is_arc) return 1.0;

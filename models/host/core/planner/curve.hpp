@@ -44,10 +44,18 @@ struct Curve {
     [[nodiscard]] geom::Segment segment() const;
 };
 
-inline double cross(geom::Vec2 a, geom::Vec2 b) { return a.x_mm * b.y_mm - a.y_mm * b.x_mm; }
+inline double cross(geom::Vec2 a, geom::Vec2 b) {
+    return a.x_mm * b.y_mm - a.y_mm * b.x_mm;
+}
 // Angle turning a onto b, in (-pi, pi].
-inline double signed_angle(geom::Vec2 a, geom::Vec2 b) { return std::atan2(cross(a, b), geom::dot(a, b)); }
-inline geom::Vec2 left_normal(geom::Vec2 u) { return {-u.y_mm, u.x_mm}; }
-inline geom::Vec2 unit(geom::Vec2 v) { return v * (1.0 / geom::norm(v)); }
+inline double signed_angle(geom::Vec2 a, geom::Vec2 b) {
+    return std::atan2(cross(a, b), geom::dot(a, b));
+}
+inline geom::Vec2 left_normal(geom::Vec2 u) {
+    return {-u.y_mm, u.x_mm};
+}
+inline geom::Vec2 unit(geom::Vec2 v) {
+    return v * (1.0 / geom::norm(v));
+}
 
 }  // namespace cnc::host::planner

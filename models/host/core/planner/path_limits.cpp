@@ -36,13 +36,13 @@ PathLimits path_limits(const Curve& curve, double feed_mm_per_s, const PlannerCo
     const double v_axis = std::min(cfg.x.max_velocity_mm_per_s, cfg.y.max_velocity_mm_per_s);
     const double a_axis = std::min(cfg.x.max_accel_mm_per_s2, cfg.y.max_accel_mm_per_s2);
     const double j_axis = std::min(cfg.x.max_jerk_mm_per_s3, cfg.y.max_jerk_mm_per_s3);
-    const bool circle = std::fabs(curve.end_radius_mm() - curve.start_radius_mm()) <=
-                        kCircleRadiusRelDiff * curve.start_radius_mm();
+    const bool circle =
+        std::fabs(curve.end_radius_mm() - curve.start_radius_mm()) <= kCircleRadiusRelDiff * curve.start_radius_mm();
     const double normal_share = circle ? kNormalShareCircle : kNormalShareSpiral;
     const double stretch = curve.max_stretch();
     const double v_centripetal = std::sqrt(normal_share * a_axis / curve.max_curvature_per_mm());
-    return PathLimits{std::min({feed_mm_per_s, v_axis / stretch, v_centripetal}),
-                      kTangentialShare * a_axis / stretch, j_axis / stretch};
+    return PathLimits{std::min({feed_mm_per_s, v_axis / stretch, v_centripetal}), kTangentialShare * a_axis / stretch,
+                      j_axis / stretch};
 }
 
 }  // namespace cnc::host::planner

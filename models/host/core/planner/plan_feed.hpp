@@ -53,11 +53,11 @@ private:
     PlanStream m_stream;
     Trajectory m_traj;
     bool m_complete = false;
-    std::size_t m_waits_added = 0;        // of m_moves->program().waits
-    std::size_t m_read = 0;               // programmed moves read
-    std::deque<FedMove> m_unplanned;      // read, their window not known yet, in order
-    std::deque<FedMove> m_planned;        // window known, not dropped
-    std::size_t m_first_planned = 0;      // the index of m_planned.front()
+    std::size_t m_waits_added = 0;    // of m_moves->program().waits
+    std::size_t m_read = 0;           // programmed moves read
+    std::deque<FedMove> m_unplanned;  // read, their window not known yet, in order
+    std::deque<FedMove> m_planned;    // window known, not dropped
+    std::size_t m_first_planned = 0;  // the index of m_planned.front()
 };
 
 }  // namespace cnc::host::planner

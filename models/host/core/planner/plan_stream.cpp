@@ -37,9 +37,12 @@ double feed_of(const ProgrammedMove& m, const std::string& file) {
 std::pair<BlendMode, double> path_control(const ProgrammedMove& m, const PlannerConfig& cfg) {
     if (!m.path_control) return {cfg.mode, cfg.path_tolerance_mm};
     switch (m.path_control->mode) {
-        case PathMode::ExactStop: return {BlendMode::ExactStop, 0.0};
-        case PathMode::ExactPath: return {BlendMode::Continuous, 0.0};
-        case PathMode::Blend: break;
+        case PathMode::ExactStop:
+            return {BlendMode::ExactStop, 0.0};
+        case PathMode::ExactPath:
+            return {BlendMode::Continuous, 0.0};
+        case PathMode::Blend:
+            break;
     }
     const double p = m.path_control->tolerance_mm.value_or(0.0);
     return {BlendMode::Continuous, p > 0.0 ? p : cfg.path_tolerance_mm};
@@ -135,7 +138,8 @@ std::vector<std::pair<double, double>> PlanStream::take_windows() {
 void PlanStream::schedule(bool ended) {
     while (const std::optional<double> exit = m_look.next_exit(ended)) {
         const Draft& d = m_unscheduled.front();
-        const SpeedProfile sp = make_speed_profile(m_cfg.profile, d.path.length_mm(), m_entry_mm_per_s, *exit, d.limits);
+        const SpeedProfile sp =
+            make_speed_profile(m_cfg.profile, d.path.length_mm(), m_entry_mm_per_s, *exit, d.limits);
         m_t_s += d.wait_before_s;
         const PlannedPiece piece{d.path, d.move, m_t_s, m_t_s + sp.duration_s(), sp};
         m_t_s = piece.t_end_s;

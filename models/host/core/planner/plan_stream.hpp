@@ -63,8 +63,7 @@ private:
         bool own;
     };
 
-    void lay_out(const KeptMove& kept, const std::optional<Curve>& after, bool stop_after,
-                 const KeptMove* next);
+    void lay_out(const KeptMove& kept, const std::optional<Curve>& after, bool stop_after, const KeptMove* next);
     void add_draft(Draft d, bool stop_before, int last_move_needed);
     void schedule(bool ended);
 
@@ -72,20 +71,20 @@ private:
     std::string m_filename;
     int m_moves_read = 0;
     bool m_finished = false;
-    double m_waits_s = 0.0;  // since the last kept move
+    double m_waits_s = 0.0;                           // since the last kept move
     std::optional<geom::Vec2> m_first_start_mm;       // of the first move
     std::optional<geom::Vec2> m_first_kept_start_mm;  // of the first kept move
-    std::optional<KeptMove> m_last_kept;  // waiting for the join after it
-    std::optional<Curve> m_blend_before;  // the blend at the last kept move's start
-    int m_next_unassigned = 0;            // moves before a kept one were skipped: empty window where it starts
-    bool m_stop_pending = true;           // the program starts at rest
-    std::size_t m_drafts = 0;             // laid out so far
+    std::optional<KeptMove> m_last_kept;              // waiting for the join after it
+    std::optional<Curve> m_blend_before;              // the blend at the last kept move's start
+    int m_next_unassigned = 0;   // moves before a kept one were skipped: empty window where it starts
+    bool m_stop_pending = true;  // the program starts at rest
+    std::size_t m_drafts = 0;    // laid out so far
     std::optional<double> m_prev_velocity_mm_per_s;  // the last draft's speed limit
     Lookahead m_look;
-    std::deque<Draft> m_unscheduled;   // drafts whose exit speed is not final yet
+    std::deque<Draft> m_unscheduled;     // drafts whose exit speed is not final yet
     std::deque<WindowSource> m_sources;  // windows not known yet, in move order
     std::size_t m_scheduled = 0;
-    double m_t_s = 0.0;          // the end of the last piece scheduled
+    double m_t_s = 0.0;  // the end of the last piece scheduled
     double m_entry_mm_per_s = 0.0;
     std::vector<PlannedPiece> m_pieces;
     std::vector<std::pair<double, double>> m_windows;

@@ -14,8 +14,12 @@ constexpr double kQuinticPeakJerk = 5.773502691896257;  // 10 / sqrt(3)
 constexpr int kPeakBisectionSteps = 100;
 
 // Shortest quintic blend: T = max(c1 dv, sqrt(c2 dv)).
-double quintic_c1(const PathLimits& l) { return kQuinticPeakAccel / l.accel_mm_per_s2; }
-double quintic_c2(const PathLimits& l) { return kQuinticPeakJerk / l.jerk_mm_per_s3; }
+double quintic_c1(const PathLimits& l) {
+    return kQuinticPeakAccel / l.accel_mm_per_s2;
+}
+double quintic_c2(const PathLimits& l) {
+    return kQuinticPeakJerk / l.jerk_mm_per_s3;
+}
 
 PathState transition_state(Profile shape, double v0, double v1, double duration_s, double t_s) {
     const double dv = v1 - v0;

@@ -28,7 +28,9 @@ std::uint64_t SplitMix64::next() {
     return z ^ (z >> 31);
 }
 
-double SplitMix64::next_unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+double SplitMix64::next_unit() {
+    return static_cast<double>(next() >> 11) * 0x1.0p-53;
+}
 
 TimePs latency_quantile(const LatencyConfig& cfg, double u) {
     if (cfg.max_ps <= 0) return 0;
@@ -48,6 +50,8 @@ TimePs latency_quantile(const LatencyConfig& cfg, double u) {
 LatencyGenerator::LatencyGenerator(const LatencyConfig& cfg, std::uint64_t seed)
     : m_cfg(cfg), m_rng(seed ^ kLatencyStream) {}
 
-TimePs LatencyGenerator::next() { return latency_quantile(m_cfg, m_rng.next_unit()); }
+TimePs LatencyGenerator::next() {
+    return latency_quantile(m_cfg, m_rng.next_unit());
+}
 
 }  // namespace cnc::host::servo

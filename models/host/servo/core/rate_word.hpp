@@ -18,6 +18,8 @@ namespace cnc::host::servo {
                                           const spi::AxisRate& previous);
 // The rate the generator runs at for a word: +-clk / period (forward positive), 0 when stopped.
 [[nodiscard]] double signed_rate(const spi::AxisRate& word, std::uint32_t clk_hz);
-[[nodiscard]] inline bool is_running(const spi::AxisRate& word) { return word.period_cycles != 0; }
+[[nodiscard]] inline bool is_running(const spi::AxisRate& word) {
+    return word.period_cycles != 0;
+}
 
 }  // namespace cnc::host::servo

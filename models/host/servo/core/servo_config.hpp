@@ -30,7 +30,7 @@ struct ServoConfig {
     // joint's, pncconf/stepconf-generated configs 25 %; the loop needs the headroom to catch up its lag.
     double stepgen_margin = 0.25;
     std::array<AxisServoConfig, 2> axes{};
-    geom::Vec2 origin_mm{};       // machine position at step count 0 (the FPGA counters start at 0)
+    geom::Vec2 origin_mm{};  // machine position at step count 0 (the FPGA counters start at 0)
     std::uint32_t clk_hz = 50'000'000;
     std::uint32_t min_period_cycles = 101;  // the FPGA's shortest STEP period (pulse + 1 clock)
 };

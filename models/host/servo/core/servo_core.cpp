@@ -17,15 +17,20 @@ constexpr double kRestSpeedMmPerS = 1e-12;
 // axis always stands on the step nearest its command (no other step is nearer than that).
 constexpr double kStoppedDeadbandSteps = 0.5;
 
-double axis_of(geom::Vec2 v, std::size_t axis) { return axis == 0 ? v.x_mm : v.y_mm; }
+double axis_of(geom::Vec2 v, std::size_t axis) {
+    return axis == 0 ? v.x_mm : v.y_mm;
+}
 
 }  // namespace
 
 const char* to_string(PeriodMode m) {
     switch (m) {
-        case PeriodMode::Track: return "track";
-        case PeriodMode::Land: return "land";
-        case PeriodMode::Done: return "done";
+        case PeriodMode::Track:
+            return "track";
+        case PeriodMode::Land:
+            return "land";
+        case PeriodMode::Done:
+            return "done";
     }
     return "?";
 }
@@ -65,8 +70,8 @@ std::uint64_t count_rest_points(planner::PlanFeed& plan) {
             after_s = r;
             continue;
         }
-        const double planned_s = plan.complete() ? plan.trajectory().duration_s()
-                                                 : plan.trajectory().pieces().back().t_end_s;
+        const double planned_s =
+            plan.complete() ? plan.trajectory().duration_s() : plan.trajectory().pieces().back().t_end_s;
         if (!(until_s < planned_s)) return n;
         plan.drop_before(until_s);
         plan.drop_moves_before(std::numeric_limits<std::size_t>::max());
@@ -149,8 +154,7 @@ void ServoCore::track(PeriodRecord& rec) {
     rec.path_speed_mm_per_s = s.path_speed_mm_per_s;
     const std::array<double, kAxes> cmd = position_steps(s.pos_mm);
     for (std::size_t a = 0; a < kAxes; ++a) {
-        const double pos_fb =
-            static_cast<double>(m_count[a]) + signed_rate(m_word_prev[a], m_cfg.clk_hz) * m_period_s;
+        const double pos_fb = static_cast<double>(m_count[a]) + signed_rate(m_word_prev[a], m_cfg.clk_hz) * m_period_s;
         StepgenParams params = m_params[a];
         if (count_is_exact(a)) params.deadband_steps = kStoppedDeadbandSteps;
         const StepgenOutput out = stepgen_velocity(params, m_law[a], cmd[a], pos_fb, m_period_s);

@@ -72,14 +72,14 @@ struct PeriodRecord {
     double tau_s = 0.0;
     double path_speed_mm_per_s = 0.0;  // planner path speed at tau while tracking; 0 while landing
     PeriodMode mode = PeriodMode::Track;
-    std::uint32_t fifo_level = 0;      // of the feedback used
+    std::uint32_t fifo_level = 0;  // of the feedback used
     std::array<AxisPeriod, kAxes> axes{};
-    bool laser_on = false;             // sent this period (the frame's laser bit)
+    bool laser_on = false;  // sent this period (the frame's laser bit)
 };
 
 struct ServoStats {
     std::uint64_t landing_pulses = 0;
-    std::uint64_t rest_points = 0;          // rest points of the plan (holds)
+    std::uint64_t rest_points = 0;  // rest points of the plan (holds)
     std::uint64_t rest_points_landed = 0;
     std::uint64_t replies_dropped_flag = 0;   // replies reporting a frame dropped (FIFO full)
     std::uint64_t replies_rejected_flag = 0;  // replies reporting a rejected frame

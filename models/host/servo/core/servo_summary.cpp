@@ -16,8 +16,8 @@ void ServoSummary::add(const PeriodRecord& rec, const Wakeup& wakeup) {
     m_latency_max_ps = std::max(m_latency_max_ps, wakeup.latency_ps);
     m_latency_sum_ps += static_cast<long double>(wakeup.latency_ps);
 
-    const bool running = std::any_of(rec.axes.begin(), rec.axes.end(),
-                                     [](const AxisPeriod& a) { return a.word.period_cycles != 0; });
+    const bool running =
+        std::any_of(rec.axes.begin(), rec.axes.end(), [](const AxisPeriod& a) { return a.word.period_cycles != 0; });
     if ((running || !m_staircase.empty()) && m_staircase.size() < kStaircaseRows) {
         StaircaseRow row{wakeup.t_ps, {}, {}};
         for (std::size_t a = 0; a < kAxes; ++a) {

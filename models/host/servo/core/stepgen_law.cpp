@@ -5,8 +5,8 @@
 
 namespace cnc::host::servo {
 
-StepgenOutput stepgen_velocity(const StepgenParams& p, StepgenState& state, double pos_cmd_steps,
-                               double pos_fb_steps, double period_s) {
+StepgenOutput stepgen_velocity(const StepgenParams& p, StepgenState& state, double pos_cmd_steps, double pos_fb_steps,
+                               double period_s) {
     const double dt = period_s;
     const double a = p.max_accel_steps_per_s2;
     const double vel_fb = state.vel_fb_steps_per_s;

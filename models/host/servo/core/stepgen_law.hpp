@@ -39,7 +39,7 @@ struct StepgenOutput {
 };
 
 // One period of the law. Updates state.old_pos_cmd; the caller sets state.vel_fb to the rate it sends.
-StepgenOutput stepgen_velocity(const StepgenParams& p, StepgenState& state, double pos_cmd_steps,
-                               double pos_fb_steps, double period_s);
+StepgenOutput stepgen_velocity(const StepgenParams& p, StepgenState& state, double pos_cmd_steps, double pos_fb_steps,
+                               double period_s);
 
 }  // namespace cnc::host::servo

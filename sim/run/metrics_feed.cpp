@@ -75,4 +75,14 @@ metrics::RunMetrics MetricsFeed::finish(TimePs t_job_end_ps) {
     return m_stream.finish(t_job_end_ps);
 }
 
+void RateSegmentFeed::hand_over(MetricsFeed& feed, const std::vector<std::vector<metrics::RateSegment>>& segments) {
+    metrics::RunInput& pending = feed.pending();
+    pending.rate_segments.resize(segments.size());
+    m_kept.resize(segments.size());
+    for (std::size_t a = 0; a < segments.size(); ++a) {
+        pending.rate_segments[a].insert(pending.rate_segments[a].end(), segments[a].begin(), segments[a].end());
+        if (m_keep) m_kept[a].insert(m_kept[a].end(), segments[a].begin(), segments[a].end());
+    }
+}
+
 }  // namespace cnc::sim

@@ -69,4 +69,20 @@ private:
     TimePs m_measured_ps = -1;
 };
 
+// The commanded rate segments of a controller that changes rates on its own schedule, handed to the streaming
+// metrics as they are known (RunInput::rate_segments); with `keep` (--detail) also kept whole for the report's
+// commanded rates, which the run's input hands over at its end.
+class RateSegmentFeed {
+public:
+    explicit RateSegmentFeed(bool keep) : m_keep(keep) {}
+    // [axis] the segments known since the last call, in time order.
+    void hand_over(MetricsFeed& feed, const std::vector<std::vector<metrics::RateSegment>>& segments);
+    // Every segment kept (one empty list per axis without `keep`): the report's commanded_rates, null then.
+    [[nodiscard]] std::vector<std::vector<metrics::RateSegment>> take_kept() { return std::move(m_kept); }
+
+private:
+    bool m_keep;
+    std::vector<std::vector<metrics::RateSegment>> m_kept;
+};
+
 }  // namespace cnc::sim

@@ -97,7 +97,8 @@ public:
           m_grid{s.interpreter.start_mm, {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}},
           m_edges(m_plan, m_grid, end_ps, kScanStepPs),
           m_generator("ideal", m_edges),
-          m_planned(*m_plan, m_grid) {
+          m_planned(*m_plan, m_grid),
+          m_rate_feed(s.detail) {
         m_generator.step_x(pins.step_x);
         m_generator.dir_x(pins.dir_x);
         m_generator.step_y(pins.step_y);
@@ -135,7 +136,7 @@ public:
     void finish_feed(MetricsFeed& feed) override { hand_over(feed, std::numeric_limits<TimePs>::max(), true); }
     void finish_input(metrics::RunInput& in, bool streamed) override {
         if (streamed) {
-            in.rate_segments = std::move(m_detail_segments);  // the report's commanded_rates: null without --detail
+            in.rate_segments = m_rate_feed.take_kept();
             return;
         }
         in.moves = m_planned.take(m_clock, true);
@@ -159,14 +160,8 @@ private:
     void hand_over(MetricsFeed& feed, TimePs now_ps, bool ended) {
         for (metrics::MoveSpec& m : m_planned.take(m_clock, ended)) feed.add_piece(std::move(m));
         const std::vector<std::vector<metrics::RateSegment>> begun = m_edges.take_rate_segments(now_ps);
-        metrics::RunInput& pending = feed.pending();
-        pending.rate_segments.resize(begun.size());
-        m_detail_segments.resize(begun.size());
-        for (std::size_t a = 0; a < begun.size(); ++a) {
-            pending.rate_segments[a].insert(pending.rate_segments[a].end(), begun[a].begin(), begun[a].end());
-            if (m_s.detail) m_detail_segments[a].insert(m_detail_segments[a].end(), begun[a].begin(), begun[a].end());
-        }
-        commanded_known(*pending.commanded, m_clock);
+        m_rate_feed.hand_over(feed, begun);
+        commanded_known(*feed.pending().commanded, m_clock);
     }
 
     const Scenario& m_s;
@@ -181,7 +176,7 @@ private:
     IdealEdges m_edges;
     IdealStepGenerator m_generator;
     PlannedMoves m_planned;
-    std::vector<std::vector<metrics::RateSegment>> m_detail_segments;
+    RateSegmentFeed m_rate_feed;
 };
 
 }  // namespace

@@ -56,7 +56,8 @@ public:
           m_master("spi_master", m_link),
           m_fpga("fpga", m_f.fpga),
           m_host("host", servo_config(s, m_f), *m_plan, std::move(ahead.servo), m_master),
-          m_planned(*m_plan, step_grid(s)) {
+          m_planned(*m_plan, step_grid(s)),
+          m_rate_feed(s.detail) {
         m_master.keep_transfer_log(false);  // the report counts them
         m_master.sclk(m_wires.sclk);
         m_master.mosi(m_wires.mosi);
@@ -117,7 +118,7 @@ public:
     void finish_feed(MetricsFeed& feed) override { hand_over(feed, true); }
     void finish_input(metrics::RunInput& in, bool streamed) override {
         if (streamed) {
-            in.rate_segments = std::move(m_detail_segments);  // the report's commanded_rates: null without --detail
+            in.rate_segments = m_rate_feed.take_kept();
             return;
         }
         const host::servo::ServoCore& core = m_host.core();
@@ -159,14 +160,8 @@ private:
         const host::servo::ServoCore& core = m_host.core();
         for (metrics::MoveSpec& m : m_planned.take(core.clock(), ended)) feed.add_piece(std::move(m));
         const std::vector<std::vector<metrics::RateSegment>> closed = m_segments.take(m_fpga, core, ended);
-        metrics::RunInput& pending = feed.pending();
-        pending.rate_segments.resize(closed.size());
-        m_detail_segments.resize(closed.size());
-        for (std::size_t a = 0; a < closed.size(); ++a) {
-            pending.rate_segments[a].insert(pending.rate_segments[a].end(), closed[a].begin(), closed[a].end());
-            if (m_s.detail) m_detail_segments[a].insert(m_detail_segments[a].end(), closed[a].begin(), closed[a].end());
-        }
-        commanded_known(*pending.commanded, core.clock());
+        m_rate_feed.hand_over(feed, closed);
+        commanded_known(*feed.pending().commanded, core.clock());
         if (!m_s.detail) m_host.drop_log_before(m_segments.first_needed_period());  // --detail lists every period
     }
 
@@ -183,7 +178,7 @@ private:
     host::servo::ServoThread m_host;
     PlannedMoves m_planned;
     RateSegments m_segments;
-    std::vector<std::vector<metrics::RateSegment>> m_detail_segments;
+    RateSegmentFeed m_rate_feed;
 };
 
 }  // namespace

@@ -53,7 +53,7 @@ class AvrCore : public sc_core::sc_module {
 public:
     sc_core::sc_out<bool> step_x;
     sc_core::sc_out<bool> dir_x;
-    sc_core::sc_out<bool> en_x;  // active low at the DRV8825 (seed 003 §2.2)
+    sc_core::sc_out<bool> en_x;  // active low at the DRV8825 (seed 003 §5.2.5)
     sc_core::sc_out<bool> step_y;
     sc_core::sc_out<bool> dir_y;
     sc_core::sc_out<bool> en_y;

@@ -1,4 +1,4 @@
-// laser_ctrl (seed 000 §5.5, Π.6 "fixed version"): engrave latched from motion on every pkt_valid (even one
+// laser_ctrl (seed 000 §5.2.5, Π.6 "fixed version"): engrave latched from motion on every pkt_valid (even one
 // step_gen ignores because it is busy), laser <= engrave & busy one clock later.
 #pragma once
 #include <cstdint>

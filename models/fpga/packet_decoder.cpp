@@ -19,7 +19,7 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
       m_core(cfg.numerator_default),
       m_writer("writer") {
     SC_HAS_PROCESS(PacketDecoder);
-    numerator_x.initialize(cfg.numerator_default);  // seed 000 §5.3 reset value
+    numerator_x.initialize(cfg.numerator_default);  // seed 000 §5.2.3 (Π.4) reset value
     numerator_y.initialize(cfg.numerator_default);
     SC_METHOD(on_rx_valid);
     sensitive << rx_valid;

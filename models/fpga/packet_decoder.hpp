@@ -1,4 +1,4 @@
-// packet_decoder (seed 000 §5.3, Π.4): bytes from uart_rx -> registered motion/init fields with a one-clock
+// packet_decoder (seed 000 §5.2.3, Π.4): bytes from uart_rx -> registered motion/init fields with a one-clock
 // pkt_valid/cfg_valid, and the 100 ms inter-byte watchdog as one timed event instead of a counter.
 #pragma once
 #include <cstddef>

@@ -18,7 +18,7 @@ StepGen::StepGen(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       busy("busy"),
       m_cfg(cfg),
       m_period_ps(clock_period_ps(cfg)),
-      m_num_x(cfg.numerator_default),  // seed 000 §5.4 NUMERATOR_DEFAULT
+      m_num_x(cfg.numerator_default),  // seed 000 §5.2.4 NUMERATOR_DEFAULT
       m_num_y(cfg.numerator_default) {
     SC_HAS_PROCESS(StepGen);
     SC_METHOD(on_pkt_valid);

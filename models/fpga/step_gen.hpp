@@ -1,4 +1,4 @@
-// step_gen (seed 000 §5.4, Π.5): IDLE/SETUP/DIR_WAIT/RUN/DONE STEP/DIR generator. On an accepted pkt_valid
+// step_gen (seed 000 §5.2.4, Π.5): IDLE/SETUP/DIR_WAIT/RUN/DONE STEP/DIR generator. On an accepted pkt_valid
 // it builds the move's edge schedule (core/step_schedule.hpp) and wakes once per edge time; pkt_valid while not
 // IDLE is logged as lost; cfg_valid latches the numerators only in IDLE.
 #pragma once

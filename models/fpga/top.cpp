@@ -90,7 +90,7 @@ void Top::on_busy() {
     const std::int64_t f = now_ps() / m_period_ps;
     const TimePs t_start = (f + 1) * m_period_ps;
     ++m_pkt_count;
-    if (m_tx_busy.read()) {  // no pending flag: the ACK is lost (seed 000 §4.3)
+    if (m_tx_busy.read()) {  // no pending flag: the ACK is lost (seed 000 §4.13)
         ++m_acks_dropped;
         m_acks.push_back({f * m_period_ps, -1});
         return;

@@ -1,4 +1,4 @@
-// top (seed 000 §5.6, Π.1): uart_rx -> packet_decoder -> step_gen + laser_ctrl, uart_tx sending the 0xAA ACK
+// top (seed 000 §5.2.6, Π.1): uart_rx -> packet_decoder -> step_gen + laser_ctrl, uart_tx sending the 0xAA ACK
 // when busy falls (only if uart_tx is idle then), wired as top.v. init_packet_wired = false keeps top.v's
 // unconnected numerator path (seed 000 §5.2.6 says it must be driven). LEDR/HEX are not modelled. Besides the
 // board pins, five internal nets are exported for tracing; every output must be bound (tx to a signal that starts
@@ -68,7 +68,7 @@ private:
     sc_core::sc_signal<std::uint32_t> m_numerator_x;
     sc_core::sc_signal<std::uint32_t> m_numerator_y;
     sc_core::sc_signal<bool> m_tx_busy{"tx_busy", false};
-    sc_core::sc_signal<std::uint8_t> m_ack_byte{"ack_byte", 0xAA};  // top.v: .tx_data(8'hAA), seed 000 §4.2
+    sc_core::sc_signal<std::uint8_t> m_ack_byte{"ack_byte", 0xAA};  // top.v: .tx_data(8'hAA), seed 000 §4.11
     // top.v leaves step_gen's cfg_valid/numerator inputs unconnected; synthesis ties them low.
     sc_core::sc_signal<bool> m_cfg_valid_unconnected{"cfg_valid_unconnected", false};
     sc_core::sc_signal<std::uint32_t> m_numerator_unconnected{"numerator_unconnected", 0};

@@ -78,7 +78,7 @@ void UartRx::fsm_thread() {
             });
             m_writer.at((stop + 1) * m_period_ps, [this] { rx_valid.write(false); });
         } else {
-            ++m_framing_errors;  // seed 000 §5.1: a bad stop bit drops the byte silently
+            ++m_framing_errors;  // seed 000 §5.2.1: a bad stop bit drops the byte silently
         }
         n_idle = n0 + m_timing.idle_after_stop();
         m_line.forget_before((n_idle - UartRxTiming::kSyncStages) * m_period_ps);

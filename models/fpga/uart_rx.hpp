@@ -1,4 +1,4 @@
-// uart_rx (seed 000 §5.1, Π.2): 8N1 receiver with a 2-FF synchroniser, mid-bit sampling from a HALF_BIT
+// uart_rx (seed 000 §5.2.1, Π.2): 8N1 receiver with a 2-FF synchroniser, mid-bit sampling from a HALF_BIT
 // start check and FULL_BIT steps, rx_valid for one clock on a good stop bit. Event-driven: it wakes on rx
 // changes and on the few edges where the FSM samples, and reads the sampled levels from a line history.
 #pragma once

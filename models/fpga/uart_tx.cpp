@@ -12,7 +12,7 @@ UartTx::UartTx(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       m_period_ps(clock_period_ps(cfg)),
       m_writer("writer") {
     SC_HAS_PROCESS(UartTx);
-    tx.initialize(true);  // seed 000 §5.2: reset drives the line idle high
+    tx.initialize(true);  // seed 000 §5.2.2: reset drives the line idle high
     SC_METHOD(on_tx_start);
     sensitive << tx_start;
     dont_initialize();

@@ -1,4 +1,4 @@
-// uart_tx (seed 000 §5.2, Π.3): IDLE/START/DATA/STOP, FULL_BIT cycles per bit, LSB first; the whole frame is
+// uart_tx (seed 000 §5.2.2, Π.3): IDLE/START/DATA/STOP, FULL_BIT cycles per bit, LSB first; the whole frame is
 // scheduled when IDLE sees tx_start.
 #pragma once
 #include <cstdint>

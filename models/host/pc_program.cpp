@@ -112,7 +112,7 @@ void PcProgram::stop_on_mismatch(std::uint8_t first, const std::string& place) {
 }
 
 void PcProgram::run() {
-    m_port.reset_input_buffer();  // PurgeComm(RX | TX) comes before the Sleep (seed 003 §3.4)
+    m_port.reset_input_buffer();  // PurgeComm(RX | TX) comes before the Sleep (seed 003 §5.3.2)
     wait_ps(m_cfg.settle_ps);
     TimePs timeout_ps = m_timeouts.round_trip_ps + kConfirmMarginPs;
     TimePs deadline_ps = now_ps() + timeout_ps;

@@ -1,4 +1,4 @@
-// The seed 003 PC program (CAD2G V42, §3.3-3.4, §5.3.2-5.4) as the host side of the atmega architecture: it opens
+// The seed 003 PC program (CAD2G V42, §3.3, §5.3.2-5.4) as the host side of the atmega architecture: it opens
 // the port (PurgeComm, then Sleep(ARDUINO_WAIT_TIME) = host.settle_s), computes each command or chord
 // (host.packet_processing_us) and writes its bytes ONE PER WriteFile call (writeSerialPort always writes 1 byte),
 // each after it has read a confirm byte from the MCU (non-blocking readSerialPort polled until a byte is there).

@@ -1,4 +1,4 @@
-// The laser module's TTL enable input (active high; seed 000 §5.5 laser_ctrl drives it): its state and total
+// The laser module's TTL enable input (active high; seed 000 §5.2.5 laser_ctrl drives it): its state and total
 // on-time. Power modulation is not part of the seed (ON/OFF only, seed 000 §5.2.5). The on/off history is the
 // probes' (the metrics and the VCD record the pin): kept here it would grow with the job.
 #pragma once

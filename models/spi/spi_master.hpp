@@ -1,4 +1,4 @@
-// SPI mode 0 master (a Raspberry-Pi-class host, seed 004 §1): transfer() is called from the host's SC_THREAD and
+// SPI mode 0 master (a Raspberry-Pi-class host, seed 004 §4.3.2): transfer() is called from the host's SC_THREAD and
 // blocks for the transfer time of core/spi_timing.hpp while it drives SS low, toggles SCLK (one wake per SCLK
 // edge), shifts MOSI on falling edges and samples MISO on rising edges, MSB first. MISO is sampled as it was
 // just before the rising edge (a change at the same picosecond is not seen, the FPGA's clock convention).

@@ -1,5 +1,5 @@
 // The CP2102 USB-to-UART bridge between the host program and the controller's serial pins
-// (seed 000 §4.1: 115200 8N1, 3.3 V TTL, no flow control).
+// (seed 000 §4.2: 115200 8N1, 3.3 V TTL, no flow control).
 //
 // Host side (USB): bytes written by the host reach the chip at the next USB full-speed frame start, queue in
 // the 640-byte TX FIFO and are sent back to back on TXD. Bytes received on RXD enter the 576-byte RX FIFO,

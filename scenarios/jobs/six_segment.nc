@@ -1,4 +1,4 @@
-(seed 000 sec. 7.3: the six moves of six_segment.steps as G-code, at 160 steps/mm every end point is a whole step)
+(seed 000 sec. 6.3.1: the six moves of six_segment.steps as G-code, at 160 steps/mm every end point is a whole step)
 (F of each G1 is the steps file's PathFeed, so the seed 000 CAM makes the same packets; the G0 packets match)
 (with host.correct_rapid_feed = false, as the log's rapids carry F1200 uncorrected)
 G21 G90

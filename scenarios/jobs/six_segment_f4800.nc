@@ -1,4 +1,4 @@
-(the seed 000 sec. 7.3 six-segment shape, every move at the seed's target speed: 80 mm/s = F4800)
+(the seed 000 sec. 6.3.1 six-segment shape, every move at the seed's target speed: 80 mm/s = F4800)
 (rapids too: the scenario sets host.rapid_feed_mm_per_min = 4800)
 G21 G90
 G0 X26.60625 Y99.30625

@@ -40,7 +40,8 @@ struct MachinePins {
     sc_core::sc_signal<bool> laser{"laser", false};
 };
 
-// MODE0..2 strapped on the driver board (seed 000 §8: microstepping is set on the PCB, not by the FPGA).
+// MODE0..2 strapped on the driver board (seed 000: microstepping is set on the PCB, not by the FPGA; top.v, Π.1,
+// drives no M0..M2).
 struct ModeStraps {
     ModeStraps(int microsteps, const std::string& axis);
     sc_core::sc_signal<bool> m0, m1, m2;

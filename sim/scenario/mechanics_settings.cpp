@@ -68,9 +68,9 @@ void read_mechanics_settings(KeyReader& r, MechanicsSettings& s) {
                                                  "dynamic model: longest integration step, us");
 
     s.driver.supply_v = r.get_float("driver.supply_v", s.driver.supply_v, 1.0, 45.0,
-                                    "DRV8825 VMOT, V (seed 000 sec. 8: 12 V; the chip allows 8.2 .. 45 V)");
+                                    "DRV8825 VMOT, V (seed 000 sec. 2.3: 12 V; the chip allows 8.2 .. 45 V)");
     const double limit_a = r.get_float("driver.current_limit_a", s.driver.current_limit_a, 0.0, 2.5,
-                                       "full-scale phase current, A (seed 000 sec. 8: the motor's rated 0.4 A; "
+                                       "full-scale phase current, A (seed 000 sec. 2.3: the motor's rated 0.4 A; "
                                        "DRV8825 max 2.5 A); ignored when driver.vref_v is set");
     const double vref_v = r.get_float("driver.vref_v", 0.0, 0.0, 3.3,
                                       "VREF, V: sets the current limit to VREF / (5 R_SENSE) (SLVSA73 sec. 8.3.4); "
@@ -86,7 +86,7 @@ void read_mechanics_settings(KeyReader& r, MechanicsSettings& s) {
     mech::HybridStepperParams& m = s.motor;
     m.holding_torque_nm = kNmPerGcm * r.get_float("motor.holding_torque_gcm", m.holding_torque_nm / kNmPerGcm, 1.0, 1e7,
                                                   "holding torque, g cm, both phases at the rated current "
-                                                  "(42BYGHW208: 2800, seed 000 sec. 8)");
+                                                  "(42BYGHW208: 2800, seed 000 sec. 2.3)");
     m.rated_current_a =
         r.get_float("motor.rated_current_a", m.rated_current_a, 0.01, 20.0, "rated phase current, A (42BYGHW208: 0.4)");
     m.resistance_ohm = r.get_float("motor.resistance_ohm", m.resistance_ohm, 0.01, 1000.0,
@@ -102,8 +102,8 @@ void read_mechanics_settings(KeyReader& r, MechanicsSettings& s) {
                                          "motor viscous damping, N m s/rad (estimate)");
     m.coulomb_nm = r.get_float("motor.coulomb_nm", m.coulomb_nm, 0.0, 10.0, "motor bearing friction, N m (estimate)");
 
-    // seed 000 sec. 8: X moves both X carriages, the Y carriage, the connecting shaft and the Y belt, 3.8 kg.
-    read_load(r, "x", s.x, 3.8, "seed 000 sec. 8: 3.8 kg", 1.5);
+    // seed 000 sec. 2.3: X moves both X carriages, the Y carriage, the connecting shaft and the Y belt, 3.8 kg.
+    read_load(r, "x", s.x, 3.8, "seed 000 sec. 2.3: 3.8 kg", 1.5);
     // Y moves only the Y carriage with the 2.5 W laser module: our estimate of 0.8 kg (plate, bearings,
     // belt clamp, module); the seed gives no figure.
     read_load(r, "y", s.y, 0.8, "Y carriage and laser: our estimate, the seed gives none", 0.3);

@@ -59,7 +59,7 @@ TEST(Cad2gSpeed, ThesisExampleN1NeedsThirteenBits) {
     EXPECT_EQ(o.value, 255);
 }
 
-// §4.6 ranges at 1/32, N = 1024: OCR 255 .. 0 = 0.191 .. 48.8 mm/s; outside, the word is held to the range.
+// The ranges of eq. 2.3 at 1/32, N = 1024: OCR 255 .. 0 = 0.191 .. 48.8 mm/s; outside, the word is held to the range.
 TEST(Cad2gSpeed, EightBitRangeAndClamps) {
     EXPECT_NEAR(cad2g::speed_mm_per_s(255, kMmPerStep), 0.1907, 1e-4);
     EXPECT_NEAR(cad2g::speed_mm_per_s(0, kMmPerStep), 48.828, 1e-3);
@@ -100,7 +100,7 @@ TEST(Cad2gPlan, DiagonalSpeedsAreQuantisedSeparately) {
     EXPECT_EQ(m.portb, 0xC2);  // both enabled, both positive, head on
 }
 
-// §4.4 note 1: dx = 0 would make OCR0A meaningless, so X's timer times |dy| steps at Y's speed, X disabled.
+// §5.4.2 note 1: dx = 0 would make OCR0A meaningless, so X's timer times |dy| steps at Y's speed, X disabled.
 TEST(Cad2gPlan, DxZeroWorkaround) {
     const cad2g::Plan p = plan("G1 Y-10 F600\n");
     const cad2g::Motion& m = p.commands.at(0).motions.at(0);

@@ -28,7 +28,7 @@ AvrCoreConfig m16(const std::string& elf, const std::string& pins = "") {
     AvrCoreConfig cfg;
     cfg.firmware_elf = elf;
     cfg.mcu = "atmega16";
-    cfg.f_cpu_hz = 8'000'000;  // seed 002 §6.1 F_CPU
+    cfg.f_cpu_hz = 8'000'000;  // seed 002 §2.5.3 F_CPU
     if (!pins.empty()) cfg.pins = cnc::avr::parse_pin_map(pins, "test");
     return cfg;
 }
@@ -92,7 +92,7 @@ TEST(Atmega16, SeedTimerModes) {
     const auto oc2 = all_edges(ev, kEnX);
     ASSERT_GE(oc2.size(), 100U);
     for (std::size_t k = 0; k < oc2.size(); ++k) ASSERT_EQ(oc2[k], g + 128 * static_cast<Cycle>(k + 1)) << k;
-    // Timer0 CTC, N = 1024, OCR0 = 2: the 3rd tick toggles OC0: g + 3072 k. T_s = (OCR0 + 1) * 128 us (§6.2).
+    // Timer0 CTC, N = 1024, OCR0 = 2: the 3rd tick toggles OC0: g + 3072 k. T_s = (OCR0 + 1) * 128 us (§2.5.3).
     const auto oc0 = all_edges(ev, kStepY);
     ASSERT_GE(oc0.size(), 5U);
     for (std::size_t k = 0; k < oc0.size(); ++k) ASSERT_EQ(oc0[k], g + 3072 * static_cast<Cycle>(k + 1)) << k;

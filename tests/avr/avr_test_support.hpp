@@ -18,7 +18,7 @@
 
 namespace cnc::avr::test {
 
-inline constexpr TimePs kCyclePs = 62'500;  // 16 MHz (seed 003 §2.1)
+inline constexpr TimePs kCyclePs = 62'500;  // 16 MHz (seed 003 §5.2.4)
 inline constexpr TimePs ps_of(Cycle c) {
     return c * kCyclePs;
 }

@@ -1,6 +1,6 @@
 // USART0 of the ATmega328P model at line level (datasheet §20): frame timing on TXD, the UDRE0/TXC0 timing the
 // firmware sees, and reception at the AVR's own bit clock from senders off its baud rate. UBRR0 = 16, U2X0 = 0
-// (seed 003 §2.4): 16 * 17 = 272 cycles per bit (58 823.5 Bd), 2720 cycles per 8N1 frame.
+// (seed 003 §5.3.1): 16 * 17 = 272 cycles per bit (58 823.5 Bd), 2720 cycles per 8N1 frame.
 #include "avr_test_support.hpp"
 #include "uart/core/uart_frame.hpp"
 #include "uart/cp2102.hpp"

@@ -30,7 +30,7 @@ struct Fixture {
     explicit Fixture(bool keep_logs = true) : u(rec, keep_logs) { rec.unit = &u; }  // most tests read the logs
     Recorder rec;
     UsartUnit u;
-    void setup_58823(Cycle c) {  // seed 003 §2.4: UBRR0 = 16, U2X0 = 0, RXEN0 | TXEN0, 8N1
+    void setup_58823(Cycle c) {  // seed 003 §5.3.1: UBRR0 = 16, U2X0 = 0, RXEN0 | TXEN0, 8N1
         u.write_ubrrh(c, 0);
         u.write_ubrrl(c, 16);
         u.write_ucsrb(c, 0x18);

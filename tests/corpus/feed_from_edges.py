@@ -6,7 +6,7 @@ G90/G91, X Y I J F) and measures each cutting move's feed from the edges, then c
 per-move feed error (metrics.moves, matched by G-code line).
 
 Edges to moves: the STEP rising edges (while the driver's active-low nENBL is low; DIR gives the sign, high = +
-except on atmega, seed 003 sec. 2.2: DIR 0 = +) are walked in time order and the net step counts give the tool's
+except on atmega, seed 003 sec. 5.2.5: DIR 0 = +) are walked in time order and the net step counts give the tool's
 position on the step grid (origin 0,0, steps/mm from the report's scenario section).
 
 - fpga-uart, atmega (no planner): a move owns the edges from the end of the move before it until its position

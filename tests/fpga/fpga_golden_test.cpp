@@ -49,7 +49,7 @@ void check_worked_example(UartWave w) {
     const auto logs = bench.logs();
 
     EXPECT_EQ(edges_in_cycles(logs.at("pkt_valid").rising()), std::vector<std::int64_t>{k});
-    // §5.4 timeline: k+1 busy, k+2 DIR and laser, k+203 first STEP, k+203+N busy falls, k+204+N tx_start.
+    // §5.2.4 timeline: k+1 busy, k+2 DIR and laser, k+203 first STEP, k+203+N busy falls, k+204+N tx_start.
     EXPECT_EQ(edges_in_cycles(logs.at("busy").rising()), std::vector<std::int64_t>{k + 1});
     EXPECT_EQ(edges_in_cycles(logs.at("busy").falling()), std::vector<std::int64_t>{k + 203 + kRunCycles});
     EXPECT_EQ(edges_in_cycles(logs.at("dir_x").rising()), std::vector<std::int64_t>{k + 2});

@@ -33,7 +33,7 @@ TEST(Seed000Golden, WorkedExamplePeriodsAndTimeline) {
     EXPECT_EQ(s.periods().x_cycles, 15'625U);  // 312.5 us
     EXPECT_EQ(s.periods().y_cycles, 31'250U);
     EXPECT_EQ(cycles_to_ps(15'625, cfg.clk_hz), 312'500'000);
-    EXPECT_EQ(s.run_start(), 203);                           // §5.4: RUN starts at k+203
+    EXPECT_EQ(s.run_start(), 203);                           // §5.2.4: RUN starts at k+203
     EXPECT_EQ(s.run_start() - StepSchedule::kDirEdge, 201);  // DIR -> first STEP: 4.02 us >= 4 us
     EXPECT_EQ(s.run_cycles(), 320LL * 15'625);
     EXPECT_EQ(s.busy_fall(), 203 + 5'000'000);  // DONE at k+203+N

@@ -47,7 +47,7 @@ TEST(StepSchedule, RunDurationIsTheMoveAtItsFeed) {
     const FpgaConfig cfg;
     // 2 mm of X at 160 steps/mm and F1200 (20 mm/s), Y half as far: 0.1 s.
     EXPECT_EQ(run_duration_ps({320, -160, 1200, 18'750'000, 18'750'000}, cfg), 100 * kPsPerMs);
-    // seed 000 sec. 6: 100 mm at F500 (8.33 mm/s) is a 12 s move.
+    // 100 mm at F500 (8.33 mm/s) is a 12 s move, longer than the 10 s ACK timeout of seed 000 App. A.2.
     EXPECT_EQ(run_duration_ps({16'000, 0, 500, 18'750'000, 18'750'000}, cfg), 12 * kPsPerSec);
     EXPECT_EQ(run_duration_ps({0, 0, 500, 18'750'000, 18'750'000}, cfg), 0);
 }

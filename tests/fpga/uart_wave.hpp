@@ -36,7 +36,7 @@ private:
     bool m_level = true;
 };
 
-// Seed 000 §4.2 packets, big-endian.
+// Seed 000 §4.5-§4.9 packets, big-endian.
 std::vector<std::uint8_t> init_packet(std::uint32_t num_x, std::uint32_t num_y);
 std::vector<std::uint8_t> motion_packet(std::uint8_t motion, std::int32_t steps_x, std::int32_t steps_y,
                                         std::uint16_t feed);

@@ -490,7 +490,7 @@ TEST(HostCam, DifferentStepsPerMmPerAxis) {
     EXPECT_EQ(segs[0].feed, 707);  // X has more steps; 10 mm of a 14.14 mm path
     EXPECT_EQ(segs[1].steps_y, 2400);
     EXPECT_DOUBLE_EQ(segs[1].dy_mm, 30.0);
-    // 1600 steps on both axes: X is dominant on a tie (step_gen, seed 000 §5.4), though Y moves 20 mm to X's 10.
+    // 1600 steps on both axes: X is dominant on a tie (step_gen, seed 000 §5.2.4), though Y moves 20 mm to X's 10.
     EXPECT_EQ(segs[2].steps_x, 1600);
     EXPECT_EQ(segs[2].steps_y, 1600);
     EXPECT_EQ(segs[2].feed, 447);  // 1000 * 10 / sqrt(500)

@@ -14,7 +14,7 @@ using test::kEps;
 using test::run_gcode;
 
 TEST(HostGcode, SeedSampleRectangle) {
-    // seed 000 §3.1 (§2.2 sample program): 40 x 20 mm rectangle from (10,10).
+    // seed 000 §2.2 (Table 2.1 and its sample program): 40 x 20 mm rectangle from (10,10).
     const Program p = run_gcode(
         "G21\nG90\nG17\nG94\nG0 X10.000 Y10.000\nM3 S255\nG1 X50.000 Y10.000 F800\nG1 X50.000 Y30.000 F800\n"
         "G1 X10.000 Y30.000 F800\nG1 X10.000 Y10.000 F800\nM5\nM30\n");

@@ -20,7 +20,7 @@ TEST(HostSeed000, ReferenceMachineIs160StepsPerMmAndNumerator18750000) {
 
 TEST(HostSeed000, InitPacketBytes) {
     const std::uint32_t n = numerator(160.0);
-    const InitBytes expected{0xFF, 0x01, 0x1E, 0x1A, 0x30, 0x01, 0x1E, 0x1A, 0x30};  // §4.5, T4.9
+    const InitBytes expected{0xFF, 0x01, 0x1E, 0x1A, 0x30, 0x01, 0x1E, 0x1A, 0x30};  // §4.9
     EXPECT_EQ(encode_init(n, n), expected);
 }
 
@@ -54,7 +54,7 @@ TEST(HostSeed000, SixSegmentTestLogStepsFile) {
         std::int64_t x, y, feed;
     };
     const Row log[] = {
-        // §7.3, Fig 6.4/6.5 sender log
+        // §6.3.1, Fig 6.4/6.5 sender log
         {MotionKind::Rapid, 4257, 15889, 1200},  {MotionKind::Linear, 0, 8000, 800},
         {MotionKind::Rapid, 2317, -5034, 1200},  {MotionKind::Linear, 4132, 3864, 800},
         {MotionKind::Rapid, -3807, -6829, 1200}, {MotionKind::Linear, 6000, 0, 800},

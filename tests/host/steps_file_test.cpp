@@ -104,7 +104,7 @@ TEST(HostStepsFile, CorruptRowsAreErrorsWithFileLineAndColumn) {
     expect_read_error("2;0;1;0;0;1;2;800;800", {"1 columns"});
 }
 
-// send_steps.py skips line 1 (seed 000 §6): a file that starts with a data row would lose that segment.
+// send_steps.py skips line 1 (seed 000 App. A.2): a file that starts with a data row would lose that segment.
 TEST(HostStepsFile, AFileWithoutItsHeaderIsRefusedNotShortened) {
     expect_bad_input([] { read_text("1,1,1,10,5,1600,800,1000,894\n2,1,1,10,5,1600,800,1000,894\n"); },
                      {"s.steps:1:", "a data row where the header belongs", kStepsFileHeader});

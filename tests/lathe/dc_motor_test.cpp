@@ -1,4 +1,4 @@
-// The derived motor against the seed's identified model (seed 002 §8.3): G(s) = 2.0866 / (s/74.29 + 1) from duty
+// The derived motor against the seed's identified model (seed 002 §4.3): G(s) = 2.0866 / (s/74.29 + 1) from duty
 // counts to motor pulses/s, and the optional second pole at -163.6.
 #include <gtest/gtest.h>
 
@@ -14,13 +14,13 @@ using cnc::lathe::DcMotorParams;
 using cnc::lathe::derive_motor;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kK = 2136.75 / 1024.0;  // §8.3: 2.0866 pulses/s per duty count
+constexpr double kK = 2136.75 / 1024.0;  // §4.3: 2.0866 pulses/s per duty count
 
 double pulses_per_s(const DcMotor& m) {
     return m.state().omega_rad_per_s * 30.0 / (2.0 * kPi);
 }
 
-// The roots of L J s^2 + (L b + R J) s + (R b + Kt^2) (§2.2), as positive rates, slow first.
+// The roots of L J s^2 + (L b + R J) s + (R b + Kt^2) (§1.3.2), as positive rates, slow first.
 std::pair<double, double> poles(const DcMotorParams& p) {
     const double a = p.l_h * p.j_kg_m2;
     const double b = p.l_h * p.b_nm_s_per_rad + p.r_ohm * p.j_kg_m2;
@@ -48,7 +48,7 @@ TEST(DcMotor, TwoPoleOptionHasTheFittedPoles) {
     EXPECT_NEAR(p2, 163.6, 1e-6);
 }
 
-// Full duty from rest (the tuning run of §8.3). Against G(s): the motor's electrical pole (about -5440 s^-1)
+// Full duty from rest (the tuning run of §4.3). Against G(s): the motor's electrical pole (about -5440 s^-1)
 // adds a lag; the difference from the first-order response is at most p1 / (p2 - p1) = 1.38 % of the final
 // speed. Against its own two-pole step response the integration must agree to 0.01 %.
 TEST(DcMotor, FullDutyStepFollowsG) {

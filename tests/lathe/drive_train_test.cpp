@@ -1,4 +1,4 @@
-// Gearbox, belt, leadscrew and backlash (seed 002 §3, §8.2): 780 motor-encoder pulses per leadscrew revolution.
+// Gearbox, belt, leadscrew and backlash (seed 002 §2.3, §4.2): 780 motor-encoder pulses per leadscrew revolution.
 #include <gtest/gtest.h>
 
 #include "lathe/core/drive_train.hpp"
@@ -7,14 +7,14 @@ namespace {
 
 constexpr double kTwoPi = 6.28318530717958647692;
 
-// 30 slots x 26 = 780 pulses per 3.175 mm: 4.0705 um per pulse (§7).
+// 30 slots x 26 = 780 pulses per 3.175 mm: 4.0705 um per pulse (LS_PPR and LS_PITCH of §2.5.3).
 TEST(DriveTrain, OneMotorPulseIs4Point07Um) {
     cnc::lathe::DriveTrain d({});
     EXPECT_NEAR(d.follow(kTwoPi / 30.0) * 1000.0, 3.175 / 780.0 * 1000.0, 1e-9);
     EXPECT_NEAR(3.175 / 780.0 * 1000.0, 4.0705, 1e-4);
 }
 
-// With 0.1 mm of play: a reversal moves the gearbox through the play before the carriage follows (§8.2).
+// With 0.1 mm of play: a reversal moves the gearbox through the play before the carriage follows (§4.2.1).
 TEST(DriveTrain, BacklashHoldsTheCarriageOnReversal) {
     cnc::lathe::DriveTrainParams p;
     p.backlash_mm = 0.1;

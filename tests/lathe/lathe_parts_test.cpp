@@ -1,4 +1,4 @@
-// The plant's small parts against their datasheets' truth tables and seed 002's wiring (§3, §6.6).
+// The plant's small parts against their datasheets' truth tables and seed 002's wiring (§2.3, §2.5.3).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,7 +16,7 @@ using cnc::lathe::L298;
 using cnc::lathe::SlottedEncoder;
 
 // L298 datasheet, bidirectional motor control table: Ven = H, C != D turns the motor (C = H forward), C = D is a
-// fast motor stop; Ven = L is a free running motor stop whatever C and D. 24 V less 2 V of drop (seed 002 §3).
+// fast motor stop; Ven = L is a free running motor stop whatever C and D. 24 V less 2 V of drop (seed 002 §2.3).
 TEST(L298, TruthTable) {
     L298 b;
     for (const bool in1 : {false, true}) {
@@ -50,7 +50,7 @@ std::vector<double> falls(const SlottedEncoder& e) {
     return out;
 }
 
-// The motor disc: 30 slots (seed 002 §3), one fall per slot pitch, 1/30 rev apart; starting at a fall (phase
+// The motor disc: 30 slots (seed 002 §2.3), one fall per slot pitch, 1/30 rev apart; starting at a fall (phase
 // 1/2), the next falls are at k/30.
 TEST(SlottedEncoder, MotorDiscFallsEverySlot) {
     const std::vector<double> f = falls(SlottedEncoder(30.0, 0.5));
@@ -68,7 +68,7 @@ TEST(SlottedEncoder, IndexDiscFallsOncePerRevolution) {
     EXPECT_FALSE(index.y_at(0.6));
 }
 
-// §6.6: a pressed key joins its column to its row; rows are pulled up. '5' is column 2 (PB6), row 2 (PB2).
+// §2.3, §2.5.3: a pressed key joins its column to its row; rows are pulled up. '5' is column 2 (PB6), row 2 (PB2).
 TEST(KeypadMatrix, PressedKeyPullsItsRowWithItsColumn) {
     KeypadMatrix m;
     const std::array<bool, 4> all_high{true, true, true, true};

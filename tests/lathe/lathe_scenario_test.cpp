@@ -1,5 +1,5 @@
-// The shipped scenarios/lathe-sync/ runs, one test each, asserting their key numbers against the seed
-// (seed 002 §7, §8.3, §10) and the thread's bounds (passes within 2 motor pulses, pitch within 0.1 %).
+// The shipped scenarios/lathe-sync/ runs, one test each, asserting their key numbers against the seed (seed 002 §2.5.3,
+// §4.3, and our arithmetic with them) and the thread's bounds (passes within 2 motor pulses, pitch within 0.1 %).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,7 +15,7 @@
 
 namespace {
 
-constexpr double kPulseUm = 3175.0 / 780.0;  // carriage per motor pulse (§7): 4.07 um
+constexpr double kPulseUm = 3175.0 / 780.0;  // carriage per motor pulse (§2.5.3): 4.07 um
 
 nlohmann::json lathe_report(const std::string& name, const std::string& vcd_path = "") {
     auto s = cnc::sim::load_scenario(std::string(CNC_SOURCE_DIR) + "/scenarios/lathe-sync/" + name + ".toml", {});
@@ -34,7 +34,7 @@ std::string trimmed(const std::string& s) {
 }
 
 // The LCD transcript of the M6 run shows the prompts in the order of the firmware's UI state machine (seed 002
-// §6.6; models/avr/firmware/lathe_sync/main.c, motion.c): the main menu (the splash is overwritten at once), the
+// §2.5.2; models/avr/firmware/lathe_sync/main.c, motion.c): the main menu (the splash is overwritten at once), the
 // cut menu, the pitch with the digits echoed as typed, the hand ("List length" from makelist lasts under 1 ms
 // before it), the length, then per pass "press OK to cut", doCut's "waiting for sp" and "slip: <n>" (1 s),
 // "OK to retract", doMove's "moving", and "press OK to cut" again at the end.
@@ -69,7 +69,7 @@ void expect_m6_transcript(const nlohmann::json& r) {
 }
 
 // The M6 run's VCD holds the ATmega16's pins with their edges at their clock cycles: OC1A's fast PWM repeats every
-// 1024 cycles at 8 MHz (Timer1 TOP = ICR1 = 1023, clk/1: 128 us, 7812.5 Hz, seed 002 §6.2), and every LCD E pulse
+// 1024 cycles at 8 MHz (Timer1 TOP = ICR1 = 1023, clk/1: 128 us, 7812.5 Hz, seed 002 §2.5.3), and every LCD E pulse
 // is at least the HD44780U's PWEH, 230 ns (the firmware's sbi, nop, nop, cbi: 4 cycles = 500 ns).
 void expect_m6_vcd() {
     std::ifstream in(m6_vcd_path());
@@ -99,9 +99,9 @@ void expect_m6_vcd() {
     std::filesystem::remove(m6_vcd_path());
 }
 
-// §7: 1.0 mm is exactly 780/127. The bounds on the settled thread (2 revolutions left out, the default):
-// the passes end within 2 motor pulses of pass 1, and the thread's fitted pitch is within 0.1 % (1 um). One run
-// (25 s of CPU) for the thread, its LCD transcript and its VCD.
+// With the constants of §2.5.3, 1.0 mm is exactly 780/127. The bounds on the settled thread (2 revolutions left out,
+// the default): the passes end within 2 motor pulses of pass 1, and the thread's fitted pitch is within 0.1 % (1 um).
+// One run (25 s of CPU) for the thread, its LCD transcript and its VCD.
 TEST(LatheScenario, M6Thread) {
     const nlohmann::json r = lathe_report("m6_thread", m6_vcd_path());
     EXPECT_EQ(r["ratio_list"]["num"], 780);
@@ -127,7 +127,7 @@ TEST(LatheScenario, M6CuttingLoadDips) {
     EXPECT_FALSE(r["following_error_grows"].get<bool>());
 }
 
-// §7: 2.5 mm is exactly 1950/127; 0.1 % of 2.5 mm is 2.5 um.
+// With the constants of §2.5.3, 2.5 mm is exactly 1950/127; 0.1 % of 2.5 mm is 2.5 um.
 TEST(LatheScenario, Thread2Point5Mm) {
     const nlohmann::json r = lathe_report("thread_2_5mm");
     EXPECT_EQ(r["ratio_list"]["num"], 1950);
@@ -137,7 +137,8 @@ TEST(LatheScenario, Thread2Point5Mm) {
     EXPECT_LT(std::abs(r["thread"]["pitch_fit_error_um"].get<double>()), 2.5);
 }
 
-// §7: 0.04 mm asks lambda = 156/635; the list gives 14/57, -5.5e-5, a pitch of 0.039991 mm.
+// Our arithmetic with §2.5.3's constants: 0.04 mm asks lambda = 156/635; the list gives 14/57, -5.5e-5, a pitch of
+// 0.039991 mm.
 TEST(LatheScenario, FineFeed) {
     const nlohmann::json r = lathe_report("fine_feed");
     EXPECT_EQ(r["ratio_list"]["num"], 14);
@@ -147,7 +148,8 @@ TEST(LatheScenario, FineFeed) {
     ASSERT_EQ(r["passes"].size(), 1U);
 }
 
-// §7: 0.08 mm asks lambda = 312/635; the list gives 57/116, +4.1e-5, a pitch of 0.080007 mm.
+// Our arithmetic with §2.5.3's constants: 0.08 mm asks lambda = 312/635; the list gives 57/116, +4.1e-5, a pitch of
+// 0.080007 mm.
 TEST(LatheScenario, CoarseFeed) {
     const nlohmann::json r = lathe_report("coarse_feed");
     EXPECT_EQ(r["ratio_list"]["num"], 57);
@@ -157,14 +159,14 @@ TEST(LatheScenario, CoarseFeed) {
     ASSERT_EQ(r["passes"].size(), 1U);
 }
 
-// §8.3: the steady state of the record is 468 us per motor pulse (39 counts of the author's 12 us); within 5 %.
+// §4.3: the steady state of the record is 468 us per motor pulse (39 counts of the author's 12 us); within 5 %.
 TEST(LatheScenario, Tuning) {
     const nlohmann::json r = lathe_report("tuning");
     ASSERT_TRUE(r["tuning_record_written"].get<bool>());
     EXPECT_NEAR(r["tuning_steady_period_us"].get<double>(), 468.0, 0.05 * 468.0);
 }
 
-// §10: 700 rpm at 1 mm asks 700 / 60 x 40 x 780 / 127 = 2866 pulses/s of a motor that gives 2136.75 at 100 %:
+// 700 rpm at 1 mm asks 700 / 60 x 40 x 780 / 127 = 2866 pulses/s of a motor that gives 2136.75 at 100 % (§4.3):
 // the following error grows by 2866 - 2137 = 729 pulses/s (within 10 %), and the PID output sits at 1023 for
 // most of the pass.
 TEST(LatheScenario, SpindleTooFast) {

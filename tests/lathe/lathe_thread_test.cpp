@@ -1,5 +1,5 @@
 // The seed 002 firmware (our C, on the ATmega16 model) cutting an M6 thread (1.0 mm) as a
-// machinist would key it in (§6.6): 1 (cut), 3 (thread), pitch 1#00 D, 1 (hand), length 10 D, then D to cut and
+// machinist would key it in (§2.5.2): 1 (cut), 3 (thread), pitch 1#00 D, 1 (hand), length 10 D, then D to cut and
 // D to retract, pass after pass. Thread metrics as docs/metrics.md "Lathe" (models/lathe/core/thread_metrics).
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ using namespace cnc::lathe::test;
 using cnc::lathe::ThreadMetrics;
 using cnc::lathe::ThreadPass;
 
-constexpr double kPulseUm = 3175.0 / 780.0;  // carriage per motor pulse (§7): 4.07 um
+constexpr double kPulseUm = 3175.0 / 780.0;  // carriage per motor pulse (§2.5.3): 4.07 um
 
 // cut_s after OK: the wait for the index (< 1 revolution), 10 revolutions, the 500 ms brake and the slip shown 1 s.
 // retract_s: 10 mm at full then slow speed (< 2 s) and the brake.
@@ -53,14 +53,14 @@ ThreadMetrics m6_metrics(const std::vector<ThreadPass>& passes, int settle_revol
     return m;
 }
 
-// With the pulse ISRs made atomic (seed option PULSE_ISR_ATOMIC, control.c, §11.9), at 60 rpm, leaving out
+// With the pulse ISRs made atomic (seed option PULSE_ISR_ATOMIC, control.c), at 60 rpm, leaving out
 // the first 2 revolutions of each pass: the passes end on one helix (the last common revolution within 2 motor
 // pulses, 8.14 um, of pass 1) and the thread's mean pitch is within 0.1 % (1 um per revolution at 1 mm).
 // What the seed's loop does not do, asserted so that the report's figures stay explained:
-//   * Passes 2 and 3 start slip pulses (about 12) behind the helix (Error = slip, §6.4): the P term alone asks
-//     2305 x 12 / 32 > 1023, full duty, and the output cannot go below 0 (§11.15) to brake, so the motor coasts
-//     through the helix with its 13.5 ms time constant (§8.3) and rings down with the PID's slow pole (-1.17 s^-1,
-//     §8.3): over the whole common length the passes differ by far more than 2 pulses.
+//   * Passes 2 and 3 start slip pulses (about 12) behind the helix (Error = slip, §2.5.1): the P term alone asks
+//     2305 x 12 / 32 > 1023, full duty, and the output cannot go below 0 (§2.5.3's clamp) to brake, so the motor coasts
+//     through the helix with its 13.5 ms time constant (§4.3) and rings down with the PID's slow pole (-1.17 s^-1,
+//     from §4.3's model and gains): over the whole common length the passes differ by far more than 2 pulses.
 //   * At 60 rpm the motor runs at 11 % duty and each B(n) (6 or 7 pulses every 25 ms) is a step the P and D terms
 //     answer with a burst of full duty: the carriage is a few pulses off the helix at any one spindle pulse, so the
 //     pitch error of single revolutions is tens of um; their mean over a 10-revolution pass carries the few pulses
@@ -74,7 +74,7 @@ TEST(LatheThread, ThreePassesEndOnOneHelix) {
     EXPECT_GT(m6_metrics(passes).phase_error_max_um, 5 * kPulseUm);
 }
 
-// The seed's nested pulse ISRs (every ISR ISR_NOBLOCK, §6.2) at 200 rpm: INT1 preempting INT0's ls_pulses++ makes
+// The seed's nested pulse ISRs (every ISR ISR_NOBLOCK, §2.5.3) at 200 rpm: INT1 preempting INT0's ls_pulses++ makes
 // Error lose a whole interval's pulses (a B(n), 6 or 7 at 1 mm), and the passes end more than 2 pulses apart;
 // the same cut with the atomic ISRs ends within 2 pulses. (The chance of a hit per spindle pulse is the motor
 // pulse rate times the few-us windows, so it grows with the spindle speed.)
@@ -84,7 +84,8 @@ TEST(LatheThread, SeedNestedPulseIsrsShiftTheHelix) {
 }
 
 TEST(LatheThread, SpindleTooFastSaturatesAndTheErrorGrows) {
-    // 700 rpm at 1 mm asks 11.7 mm/s of carriage, 1.34 x the motor's 8.70 mm/s at 100 % duty (§10: about 522 rpm).
+    // 700 rpm at 1 mm asks 11.7 mm/s of carriage, 1.34 x the motor's 8.70 mm/s at 100 % duty (about 522 rpm, from
+    // §4.3).
     LatheBench b(700.0);
     thread_m6(b, 1, 4.0);
     ASSERT_FALSE(b.passes.empty());

@@ -1,4 +1,5 @@
-// The firmware's B(n) list for the pitches of seed 002 §7, against the seed's own numbers.
+// The firmware's B(n) list for the pitches of seed 002 (the threads of §4.4, the feeds of §2.5.3), against
+// numbers worked out from the thesis's formulas (it prints no table of lists).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +16,7 @@ int sum(const std::vector<std::uint8_t>& b) {
     return std::accumulate(b.begin(), b.end(), 0);
 }
 
-// §7 table: 0.04 mm -> 14/57, lambda error -5.5e-5 (14/57 - 156/635 = -5.53e-5), pitch 0.039991 mm.
+// Worked out: 0.04 mm -> 14/57, lambda error -5.5e-5 (14/57 - 156/635 = -5.53e-5), pitch 0.039991 mm.
 TEST(RatioList, FineFeedIs14Over57) {
     const auto l = make_ratio_list(4, MakelistMode::Intended);
     EXPECT_EQ(l.num, 14);
@@ -27,7 +28,7 @@ TEST(RatioList, FineFeedIs14Over57) {
     EXPECT_NEAR(l.pitch_produced_mm, 0.039991, 0.0000005);
 }
 
-// §7 table: 0.08 mm -> 57/116, lambda error +4.1e-5, pitch 0.080007 mm.
+// Worked out: 0.08 mm -> 57/116, lambda error +4.1e-5, pitch 0.080007 mm.
 TEST(RatioList, CoarseFeedIs57Over116) {
     const auto l = make_ratio_list(8, MakelistMode::Intended);
     EXPECT_EQ(l.num, 57);
@@ -37,7 +38,8 @@ TEST(RatioList, CoarseFeedIs57Over116) {
     EXPECT_NEAR(l.pitch_produced_mm, 0.080007, 0.0000005);
 }
 
-// §7: 1.0 mm is exactly 780/127: seven 6s then 7, then 17 groups of (six 6s, 7); eighteen 7s, sum 780.
+// With the constants of §2.5.3, 1.0 mm is exactly 780/127: seven 6s then 7, then 17 groups of (six 6s, 7); eighteen 7s,
+// sum 780.
 TEST(RatioList, M6PitchIsExactWithTheSeedPattern) {
     const auto l = make_ratio_list(100, MakelistMode::Intended);
     EXPECT_EQ(l.num, 780);
@@ -55,7 +57,8 @@ TEST(RatioList, M6PitchIsExactWithTheSeedPattern) {
     EXPECT_EQ(l.lambda_error, 0.0);
 }
 
-// §7: every multiple of 0.05 mm is k/127 exactly (lambda = 39 P / 635 = 780 P / 12700); 1.5 mm starts 9,9,9,9,10.
+// With the constants of §2.5.3, every multiple of 0.05 mm is k/127 exactly (lambda = 39 P / 635 = 780 P / 12700);
+// 1.5 mm starts 9,9,9,9,10.
 TEST(RatioList, MultiplesOfFiveHundredthsAreExactOver127) {
     for (const int p : {50, 70, 80, 100, 125, 150, 175, 200, 250, 300}) {
         const auto l = make_ratio_list(p, MakelistMode::Intended);
@@ -69,7 +72,7 @@ TEST(RatioList, MultiplesOfFiveHundredthsAreExactOver127) {
     EXPECT_EQ((std::vector<std::uint8_t>(l.b.begin(), l.b.begin() + 5)), (std::vector<std::uint8_t>{9, 9, 9, 9, 10}));
 }
 
-// The rounding bound of §5: |lambda error| < 1 / (2 d) for the chosen d <= 150, for every 2-decimal pitch up to
+// The rounding bound of §2.2: |lambda error| < 1 / (2 d) for the chosen d <= 150, for every 2-decimal pitch up to
 // the uint8 limit; and the list takes only the values floor(lambda) and floor(lambda) + 1.
 TEST(RatioList, RoundingBoundHoldsForEveryPitch) {
     for (int p = 1; p <= cnc::lathe::kMaxPitchCentiMm; ++p) {
@@ -91,7 +94,7 @@ TEST(RatioList, Uint8LimitIs41Point51Mm) {
     EXPECT_GT(39.0 * 4152 / 635, 255.0);
 }
 
-// §11.3a: the listing as printed (int32 against uint32) gives 46635/34 for 1.00 mm (the seed's emulation).
+// The listing as §2.5.3 prints it (int32 against uint32) gives 46635/34 for 1.00 mm (our emulation of it).
 TEST(RatioList, AsPrintedReproducesTheSeedsDefect) {
     const auto l = make_ratio_list(100, MakelistMode::AsPrinted);
     EXPECT_EQ(l.num, 46635);

@@ -18,7 +18,7 @@ TEST(Drv8825Modes, AllEightPinCombinations) {
 
 TEST(Drv8825Modes, InverseRoundTripsAndRejectsOtherValues) {
     for (int m : {1, 2, 4, 8, 16, 32}) EXPECT_EQ(microsteps_for(mode_pins_for(m)), m);
-    const ModePins p32 = mode_pins_for(32);  // seed 000 §8: M0=1 M1=0 M2=1
+    const ModePins p32 = mode_pins_for(32);  // seed 000 §2.3, Fig. 2.7: M0=1 M1=0 M2=1
     EXPECT_TRUE(p32.m0);
     EXPECT_FALSE(p32.m1);
     EXPECT_TRUE(p32.m2);

@@ -17,7 +17,7 @@ void pulse(Drv8825TimingChecker& c, TimePs t_rise, TimePs high) {
 }  // namespace
 
 TEST(Drv8825Timing, CleanFpgaTraceHasNoViolations) {
-    // seed 000 §5.4: STEP high 100 clocks = 2 us; DIR -> first STEP 201 clocks = 4.02 us (derived timeline);
+    // seed 000 §5.2.4: STEP high 100 clocks = 2 us; DIR -> first STEP 201 clocks = 4.02 us (derived timeline);
     // 312.5 us period (160 steps/mm at 1200 mm/min).
     Drv8825TimingChecker c;
     c.on_dir(100 * kUs, true);

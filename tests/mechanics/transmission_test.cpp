@@ -7,7 +7,7 @@
 using namespace cnc::mech;
 
 TEST(IdealStepperBelt, OneRevolutionIs40mmAt160StepsPerMm) {
-    // seed 000 §2.2: 1.8 deg, 1/32, GT2 (2 mm) x 20 teeth -> 6400 microsteps per 40 mm = 160 steps/mm
+    // seed 000 §3.4.2 (T3.4): 1.8 deg, 1/32, GT2 (2 mm) x 20 teeth -> 6400 microsteps per 40 mm = 160 steps/mm
     IdealStepper motor(1.8);
     const Belt belt(20, 2.0);
     motor.on_microstep(0, 6'400, 32);
@@ -24,7 +24,7 @@ TEST(Transmission, LeadscrewAndGearRatio) {
     EXPECT_DOUBLE_EQ(Leadscrew(2.0, 4).carriage_mm(360.0), 8.0);  // Tr8x8: 2 mm pitch, 4 starts
     EXPECT_DOUBLE_EQ(Leadscrew(8.0, 1, 2.0).carriage_mm(360.0), 4.0);
     EXPECT_DOUBLE_EQ(Belt(20, 2.0, 4.0).travel_per_motor_rev_mm(), 10.0);
-    EXPECT_DOUBLE_EQ(Belt(28, 2.0).carriage_mm(1.8), 0.28);  // seed 000 §8 printed column (28-tooth pulley)
+    EXPECT_DOUBLE_EQ(Belt(28, 2.0).carriage_mm(1.8), 0.28);  // seed 000 Fig. 2.7 printed column (28-tooth pulley)
 }
 
 TEST(Transmission, CalibratedDriveMovesItsTravelPerRevolution) {

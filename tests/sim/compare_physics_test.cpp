@@ -104,7 +104,7 @@ TEST_F(ComparePhysics, AtmegaRateErrorOnTheSeedSpeedExampleIsTheTruncatedCompare
     EXPECT_NEAR(c.metric("atmega", "metrics/pulse/rate_error_worst_pct"), expected_pct, 0.1);
 }
 
-// Stop-and-wait (seed 000 §4.4): between two moves the ACK must cross the line and reach the host, and the next
+// Stop-and-wait (seed 000 §4.14): between two moves the ACK must cross the line and reach the host, and the next
 // 11-byte packet must cross the line before the FPGA can step again. The CP2102 runs 115200 Bd as 24 MHz / 208 =
 // 115 384.6 Bd (AN205): 11 bytes x 10 bits (8N1) = 953.3 us, the ACK's 10 bits = 86.7 us; the host's driver sees
 // received bytes link.usb_latency_ms (1 ms) after a USB frame boundary at the earliest. Every gap is at least

@@ -23,7 +23,7 @@ constexpr TimePs kClockPs = 20'000;  // 50 MHz
 // metrics. The chords are the packets' step counts; per chord:
 //   - the packet feed is F x dominant / length, rounded (§3.4.5), at 160 steps/mm on both axes;
 //   - the dominant period is NUMERATOR / feed, NUMERATOR = 50 MHz x 60 s / 160 steps/mm = 18 750 000, and the other
-//     axis's is that x N_dominant / N_other, both truncated to clocks (§5.4);
+//     axis's is that x N_dominant / N_other, both truncated to clocks (§5.2.4);
 //   - step_gen fires both axes on the first RUN clock and then once a period: step k of an axis at k periods,
 //     k = 0 .. N - 1, and steps of both axes at the same clock move the tool together.
 // The contour error of the tool after each step event is | |p - c| - R |. (The G0 before the circle, along
@@ -100,7 +100,7 @@ TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
     const TimePs busy_rise = busy.rising()[0];
     const TimePs busy_fall = busy.falling()[0];
     const TimePs last_period_end = xr.back() + 15'625 * kClockPs;
-    EXPECT_EQ(busy_fall, last_period_end);  // DONE: the edge after the last RUN cycle (seed §5.4: k+203+N)
+    EXPECT_EQ(busy_fall, last_period_end);  // DONE: the edge after the last RUN cycle (seed 000 §5.2.4: k+203+N)
     const auto& laser = *out.arch.input.laser;
     ASSERT_EQ(laser.rising().size(), 1U);
     ASSERT_EQ(laser.falling().size(), 1U);
@@ -126,7 +126,7 @@ TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
 TEST(FpgaUartSixSegment, MotionTimeAndDeadTimeBreakdown) {
     const auto out = run_shipped("six_segment");
     ASSERT_TRUE(out.ok) << out.failure;
-    // sum of dominant steps x NUMERATOR/feed clocks: 17.171694 s (seed 000 §7.3 [derived] 17.17 s)
+    // sum of dominant steps x NUMERATOR/feed clocks: 17.171694 s (17.17 s worked out from the log of seed 000 §6.3.1)
     const double expected_s =
         (15889.0 * 15625 + 8000.0 * 23437 + 5034.0 * 15625 + 4132.0 * 23437 + 6829.0 * 15625 + 6000.0 * 23437) * 20e-9;
     ASSERT_TRUE(out.metrics.timing.motion_time_s.has_value());
@@ -293,7 +293,7 @@ TEST(FpgaUartCalibratedMachine, StepsPerMmDrivesStepsAndCarriage) {
     // the carriage ends on the programmed (10, 0): the mechanics move 1/100 and 1/50 mm per microstep
     EXPECT_LT(*out.metrics.path.job_end_um, 1e-6);
     // The Y-only move at F1000: 16.67 mm/s x 50 steps/mm = 833.3 steps/s, 1.2 ms = 60,000 clocks at 50 MHz
-    // (NUMERATOR_Y = 50 MHz x 60 / 50 = 60,000,000, divided by the feed; seed 000 §2.2).
+    // (NUMERATOR_Y = 50 MHz x 60 / 50 = 60,000,000, divided by the feed; seed 000 §3.4.5).
     const auto& p = out.report.at("fpga-uart").at("fpga").at("packets");
     EXPECT_EQ(p.at(1).at("period_cycles").at(1), 60'000);
 }

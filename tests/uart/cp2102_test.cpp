@@ -15,7 +15,7 @@ using namespace cnc::uart;
 namespace {
 
 constexpr TimePs kMs = cnc::kPsPerMs;
-// seed 000 §4.2: the worked motion packet
+// seed 000 §4.9: the worked motion packet
 const std::vector<std::uint8_t> kPacket{0x01, 0x00, 0x00, 0x01, 0x40, 0xFF, 0xFF, 0xFF, 0x60, 0x04, 0xB0};
 
 sc_core::sc_time at(TimePs t) {

@@ -10,7 +10,7 @@ using namespace cnc::uart;
 
 namespace {
 
-constexpr BitClock kRx{434, 50'000'000};  // receiver: seed 000 §4.1, 115 207 Bd
+constexpr BitClock kRx{434, 50'000'000};  // receiver: seed 000 §4.2, 115 207 Bd
 
 // Back-to-back frames sent at `tx` from t = 0.
 EdgeLog line_of(std::initializer_list<std::uint8_t> bytes, BitClock tx) {

@@ -23,7 +23,7 @@ TEST(RateTolerance, SeedLinksPassAndMismatchedOnesDoNot) {
     const double cp2102_51200 = 24e6 / 469;         // scenarios/atmega/baud_mismatch.toml
     const double avr_ubrr16 = 16e6 / (16 * 17);     // seed 003 §5.3.1: UBRR0 = 16, U2X0 = 0
     const double avr_ubrr16_u2x = 16e6 / (8 * 17);  // grbl 1.1 at 115200: UBRR0 = 16, U2X0 = 1
-    const double fpga_115200 = 50e6 / 434;          // seed 000 §5.1 FULL_BIT = 434
+    const double fpga_115200 = 50e6 / 434;          // seed 000 §5.2.1 FULL_BIT = 434
 
     EXPECT_NEAR(rate_mismatch(avr_ubrr16, cp2102_57600) * 100.0, 2.206, 0.001);
     EXPECT_TRUE(rates_within_tolerance(cp2102_57600, avr_ubrr16, kFormat8N1));

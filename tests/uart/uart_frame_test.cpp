@@ -9,7 +9,7 @@ using namespace cnc::uart;
 
 namespace {
 
-constexpr BitClock kFpga434{434, 50'000'000};  // seed 000 §4.1: 434 cycles of 50 MHz = 8.68 us
+constexpr BitClock kFpga434{434, 50'000'000};  // seed 000 §4.2: 434 cycles of 50 MHz = 8.68 us
 constexpr BitClock kCp2102At115200{208, 24'000'000};
 
 bool same(const std::vector<Edge>& a, const std::vector<Edge>& b) {
@@ -58,7 +58,7 @@ TEST(UartFrame, Cp2102BitBoundariesHaveNoDriftOver10000Bits) {
 }
 
 TEST(UartFrame, MidBitIsHalfWayBetweenBoundaries) {
-    EXPECT_EQ(kFpga434.mid_bit(0), 4'340'000);          // 217 cycles: seed 000 §4.1 HALF_BIT
+    EXPECT_EQ(kFpga434.mid_bit(0), 4'340'000);          // 217 cycles: seed 000 §4.2 HALF_BIT
     EXPECT_EQ(kFpga434.mid_bit(9), 82'460'000);         // 9.5 bits
     EXPECT_EQ(kCp2102At115200.mid_bit(9), 82'333'333);  // 9.5 * 208 / 24 MHz = 82.3333 us, rounded down
 }

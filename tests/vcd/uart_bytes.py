@@ -3,9 +3,9 @@
 model sent and the controller answered, recomputed here from the job and the seeds' documented packet layouts.
 
 fpga-uart STEPS_SCENARIO: uart_rx (host -> FPGA) carries seed 000's init packet FF 01 1E 1A 30 01 1E 1A 30
-(NUMERATOR 18 750 000 for both axes: §4.5, T4.9, tests/host/seed000_golden_test.cpp), then one 11-byte motion
+(NUMERATOR 18 750 000 for both axes: §4.9, tests/host/seed000_golden_test.cpp), then one 11-byte motion
 packet per row of the scenario's steps file, packed as send_steps.py does (struct ">BiiH": motion, StepsX, StepsY,
-FeedRate; §4.2); uart_tx (FPGA -> host) one ACK 0xAA per completed packet.
+FeedRate; §4.9); uart_tx (FPGA -> host) one ACK 0xAA per completed packet.
 atmega SCENARIO (scenarios/atmega/speed_10_45.toml, "G1 X20.000 F10.45" in mm/s, then M30): uart_rx carries the
 seed 003 G01 command 01 80 0C 03 FF D2 (ID 0x01; X count 3200 = 20 mm x 160 steps/mm, low byte first; OCR0A 3 for
 10.45 mm/s, eqs. 5.1-5.2; OCR2A 255, Y idle; PORTB 0xD2 = '1' '1' DIR_Y 0 EN_Y 1 STEP_Y 0 EN_X 0 HEADER 1 DIR_X 0)

@@ -10,7 +10,7 @@ namespace cnc::avr {
 struct AvrCoreConfig {
     std::string firmware_elf;        // any ATmega328P ELF (avr.firmware)
     std::string mcu = "atmega328p";  // or "atmega16" (core/mcu_map.hpp); an ELF whose .mmcu names another is refused
-    std::uint32_t f_cpu_hz = 16'000'000;  // seed 003 §2.1: 16 MHz crystal (62.5 ns per cycle)
+    std::uint32_t f_cpu_hz = 16'000'000;  // seed 003 §5.2.4: 16 MHz crystal (62.5 ns per cycle)
     PinMap pins = default_pin_map();      // avr.pins
     // Temporal decoupling: the AVR runs at most this many cycles ahead of SystemC time before its recorded pin events
     // are replayed at their exact times. 160 cycles = 10 us: libsimavr in a SystemC thread ran an idle firmware (a

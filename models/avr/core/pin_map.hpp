@@ -35,7 +35,7 @@ struct PinMap {
     [[nodiscard]] std::string to_string() const;  // in the `avr.pins` syntax, signals in kPinSignals order
 };
 
-// Seed 003 §2.2: STEP_X PD6 (OC0A), DIR_X PB0, EN_X PB2 (active low), STEP_Y PB3 (OC2A), DIR_Y PB5,
+// Seed 003 §5.2.5: STEP_X PD6 (OC0A), DIR_X PB0, EN_X PB2 (active low), STEP_Y PB3 (OC2A), DIR_Y PB5,
 // EN_Y PB4 (active low), head PB1 (OC1A, the servo / "HEADER" bit).
 [[nodiscard]] PinMap default_pin_map();
 

@@ -12,13 +12,13 @@ namespace cnc::fpga {
 enum class PeriodArithmetic { Exact, Wrap32 };
 
 struct FpgaConfig {
-    std::uint32_t clk_hz = 50'000'000;               // seed 000 §5: DE1-SoC CLOCK_50
-    std::uint32_t uart_full_bit_cycles = 434;        // seed 000 §5.1 FULL_BIT; uart_tx CLK_FREQ/BAUD_RATE (§5.2)
-    std::uint32_t uart_half_bit_cycles = 217;        // seed 000 §5.1 HALF_BIT (mid-start-bit check)
-    std::uint32_t watchdog_cycles = 5'000'000;       // seed 000 §5.3 TIMEOUT_CYCLES: 100 ms inter-byte watchdog
-    std::uint32_t pulse_high_cycles = 100;           // seed 000 §5.4 PULSE_HIGH: 2 us STEP high
-    std::uint32_t dir_settle_cycles = 200;           // seed 000 §5.4 DIR_SETTLE: 4 us
-    std::uint32_t numerator_default = 18'750'000;    // seed 000 §5.3/§5.4 reset value of num_x/num_y (160 steps/mm)
+    std::uint32_t clk_hz = 50'000'000;               // seed 000 §5.1.1: DE1-SoC CLOCK_50
+    std::uint32_t uart_full_bit_cycles = 434;        // seed 000 §5.2.1 FULL_BIT; uart_tx CLK_FREQ/BAUD_RATE (§5.2.2)
+    std::uint32_t uart_half_bit_cycles = 217;        // seed 000 §5.2.1 HALF_BIT (mid-start-bit check)
+    std::uint32_t watchdog_cycles = 5'000'000;       // seed 000 §5.2.3 TIMEOUT_CYCLES: 100 ms inter-byte watchdog
+    std::uint32_t pulse_high_cycles = 100;           // seed 000 §5.2.4 PULSE_HIGH: 2 us STEP high
+    std::uint32_t dir_settle_cycles = 200;           // seed 000 §5.2.4 DIR_SETTLE: 4 us
+    std::uint32_t numerator_default = 18'750'000;    // seed 000 §5.2.4 reset value of num_x/num_y (160 steps/mm)
     std::uint32_t feed_zero_period_cycles = 62'500;  // step_gen.v: both periods when feed_rate == 0 (unexplained)
     bool init_packet_wired = true;                   // false = appendix top.v: cfg_valid/numerators unconnected
     PeriodArithmetic period_arithmetic = PeriodArithmetic::Exact;  // Exact = the text, Wrap32 = the appendix

@@ -13,7 +13,7 @@ struct PacketRecord {            // one pkt_valid (accepted by step_gen or ignor
     std::int32_t steps_x = 0;
     std::int32_t steps_y = 0;
     std::uint16_t feed = 0;
-    bool accepted = false;              // false: step_gen was not IDLE, the packet is lost (seed 000 §5.4)
+    bool accepted = false;              // false: step_gen was not IDLE, the packet is lost (seed 000 §5.2.4)
     std::uint32_t period_x_cycles = 0;  // as computed in DIR_WAIT (after the wrap if Wrap32)
     std::uint32_t period_y_cycles = 0;
     bool period_overflow = false;  // (num/feed)*abs_dom exceeded 2^32-1 (flagged in either mode)

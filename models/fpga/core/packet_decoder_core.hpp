@@ -22,8 +22,8 @@ struct InitFields {
 class PacketDecoderCore {
 public:
     enum class Completed { None, Motion, Init };
-    static constexpr std::uint8_t kCfgMarker = 0xFF;  // seed 000 §4.2 CFG_MARKER
-    static constexpr int kInitBytes = 9;              // seed 000 §4.2
+    static constexpr std::uint8_t kCfgMarker = 0xFF;  // seed 000 §4.6 (Π.4 CFG_MARKER)
+    static constexpr int kInitBytes = 9;              // seed 000 §4.6
     static constexpr int kMotionBytes = 11;
 
     explicit PacketDecoderCore(std::uint32_t numerator_default) : m_init{numerator_default, numerator_default} {}

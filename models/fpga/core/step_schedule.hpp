@@ -2,7 +2,7 @@
 // the period arithmetic of DIR_WAIT and the cycle of every busy/DIR/STEP edge, generated lazily (a move can
 // have millions of edges).
 //
-// Timeline, in edges after the edge k at which pkt_valid is high (seed 000 §5.4, derived from the listing):
+// Timeline, in edges after the edge k at which pkt_valid is high (seed 000 §5.2.4, derived from the listing):
 //   k+1  IDLE sees pkt_valid: busy <= 1                        (kBusyRise)
 //   k+2  SETUP: dir <= (steps >= 0), abs <= |steps|             (kDirEdge)
 //   k+3  first DIR_WAIT edge: rem, cnt, periods                (kPeriodsEdge)

@@ -11,7 +11,7 @@ namespace cnc::fpga {
 // uart_rx. Offsets are relative to n0, the first edge at which S_IDLE sees rx_s2 == 0.
 // rx_s1 <= rx, rx_s2 <= rx_s1: the FSM at edge n works on the line level that rx_s1 sampled at edge n-2.
 struct UartRxTiming {
-    static constexpr std::int64_t kSyncStages = 2;  // seed 000 §5.1: 2-FF synchroniser rx_s1, rx_s2
+    static constexpr std::int64_t kSyncStages = 2;  // seed 000 §5.2.1: 2-FF synchroniser rx_s1, rx_s2
     std::int64_t start_check = 0;  // S_START at count == HALF_BIT: still low -> S_RECEIVE, else glitch -> S_IDLE
     std::int64_t first_bit = 0;    // S_RECEIVE at count == FULL_BIT: rx_shift[0]; then one bit every FULL_BIT
     std::int64_t full_bit = 0;

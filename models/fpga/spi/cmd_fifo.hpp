@@ -1,4 +1,4 @@
-// cmd_fifo (seed 004 §2 FIFO bus): frames of rate words from spi_slave to the per-axis pulse generators, as a
+// cmd_fifo (seed 004 §5.1.1 FIFO bus): frames of rate words from spi_slave to the per-axis pulse generators, as a
 // hierarchical channel over core/cmd_fifo_core.hpp (register timing, full and empty behaviour documented there).
 // Its default event fires one delta after a frame is accepted, so a generator can be `sensitive << fifo`; the
 // applied event fires one delta after the read that completes a frame (laser_latch waits on it).

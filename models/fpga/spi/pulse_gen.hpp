@@ -1,4 +1,4 @@
-// pulse_gen (seed 004 §2 pulsegen): STEP and DIR of one axis from the rate words it reads from
+// pulse_gen (seed 004 §5.1.3 pulsegen): STEP and DIR of one axis from the rate words it reads from
 // cmd_fifo, with the semantics of core/pulse_gen_core.hpp. Wakes only at its own pin edges, at a FIFO write
 // (to schedule a read one clock later) and at read edges; never per clock.
 #pragma once

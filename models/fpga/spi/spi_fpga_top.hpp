@@ -1,4 +1,4 @@
-// spi_fpga_top (seed 004 §2 data path, plus step counters): spi_slave -> cmd_fifo -> one pulse_gen per axis, and one
+// spi_fpga_top (seed 004 §5.1 data path, plus step counters): spi_slave -> cmd_fifo -> one pulse_gen per axis, and one
 // step_counter per axis reading the STEP/DIR pins back for the SPI reply. Two axes (X = axis 0, Y = axis 1).
 // laser_latch drives the `laser` pin from the frames' laser bit, switching when a frame's rates all govern.
 // The pins are for the wire path; `spi_target` is the transaction path used by SpiMaster with

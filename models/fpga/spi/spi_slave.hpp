@@ -1,5 +1,5 @@
-// spi_slave (seed 004 §2: mode 0 slave, SS active low) over core/spi_slave_core.hpp. On the wires it wakes once
-// per pin change to sample the pins at the next FPGA clock edge, and once per logic action 2 edges later:
+// spi_slave (seed 004 §5.1.1: mode 0 slave; SS active low, §5.2) over core/spi_slave_core.hpp. On the wires it
+// wakes once per pin change to sample the pins at the next FPGA clock edge, and once per logic action 2 edges later:
 //   FrameStart: the reply is built from the FIFO status and the step counters as loaded at that edge
 //               (counters count STEP rises at edges <= FrameStart - 2) and bit 0 goes out on MISO;
 //   MisoShift:  the next reply bit goes out on MISO;

@@ -14,9 +14,9 @@ namespace cnc::host {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr std::int64_t kInt32Min = -2147483648LL;  // seed 000 §3.4.6: StepsX/StepsY are int32
+constexpr std::int64_t kInt32Min = -2147483648LL;  // seed 000 §4.8: StepsX/StepsY are int32
 constexpr std::int64_t kInt32Max = 2147483647LL;
-constexpr double kMaxFeed = 65535.0;  // seed 000 §3.4.6: FeedRate is uint16, mm/min
+constexpr double kMaxFeed = 65535.0;  // seed 000 §4.8: FeedRate is uint16, mm/min
 // Above 2^53 a double no longer holds every integer, so absolute step positions would stop being exact.
 constexpr double kMaxAbsoluteSteps = 9007199254740992.0;
 // Guard against a tolerance so small that an arc becomes millions of packets (a sign of a wrong setting).
@@ -72,7 +72,7 @@ double max_chord_rad(double radius_mm, double tolerance_mm) {
     return tolerance_mm >= radius_mm ? kPi : 4.0 * std::asin(std::sqrt(tolerance_mm / (2.0 * radius_mm)));
 }
 
-// An arc's chording: the inscribed polygon of n chords of equal angle (seed 000 §3.4).
+// An arc's chording: the inscribed polygon of n chords of equal angle (seed 000 §2.4, §3.4.4).
 struct ArcChords {
     geom::Vec2 center;
     double r_mm;
@@ -206,7 +206,7 @@ std::vector<StepPos> chord_ends(const geom::Segment& path, StepPos from, const S
 // seed 000 §3.4.5 "NUMERATOR concept": F is the path speed; the packet carries the dominant axis' share
 // axisFeed = F x dominant_distance / path_length. The distances are the step-quantised ones (steps / steps_per_mm),
 // i.e. what the machine really moves, so the executed path speed is F even when rounding bent the segment.
-// The dominant axis is the one with more steps, X on a tie, as step_gen decides (seed 000 §5.4).
+// The dominant axis is the one with more steps, X on a tie, as step_gen decides (seed 000 §5.2.4).
 // A path feed that would drive an axis past machine.<axis>.max_velocity_mm_per_s is lowered to that limit first.
 std::int64_t packet_feed(const ProgrammedMove& move, const MotionSegment& seg, const MachineModel& machine,
                          const CamOptions& opt, const std::string& where) {
@@ -288,7 +288,7 @@ std::uint32_t numerator(double steps_per_mm, std::uint32_t clk_hz) {
         throw BadInput("machine", "steps_per_mm must be > 0 for NUMERATOR");
     }
     const double n = std::round(static_cast<double>(clk_hz) * 60.0 / steps_per_mm);
-    if (n < 1.0 || n > 4294967295.0) {  // seed 000 §3.4.6: NUMERATOR is uint32, 1..4,294,967,295
+    if (n < 1.0 || n > 4294967295.0) {  // seed 000 §4.8: NUMERATOR is uint32, 1..4,294,967,295
         throw BadInput("machine", "NUMERATOR = clk_hz x 60 / steps_per_mm = " + number_text(n) +
                                       " does not fit uint32 (1..4294967295)");
     }

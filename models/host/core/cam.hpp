@@ -1,4 +1,4 @@
-// CAM of seed 000 §3.4-3.5 (GCODE2STEPS): programmed moves -> motion segments (one motion packet and one
+// CAM of seed 000 §3.4 (GCODE2STEPS): programmed moves -> motion segments (one motion packet and one
 // steps-file row each): arcs as chords, mm -> signed steps, and the dominant-axis feed ("NUMERATOR concept").
 #pragma once
 #include <cstddef>
@@ -21,7 +21,7 @@ enum class FeedRounding { Round, Truncate };
 //   llround per axis of each vertex of the inscribed polygon, up to 0.71 step off the circle.
 // - OnArc: the grid point nearest the circle among those within a few steps of the vertex that keep the chords
 //   in order and non-empty (rule and margin in cam.cpp).
-// Why OnArc is the default: the FPGA's reference-word step generator (seed 000 §5.4) steps the subordinate
+// Why OnArc is the default: the FPGA's reference-word step generator (seed 000 §5.2.4) steps the subordinate
 // axis at the start of its period, a staircase that adds up to one step to the path; with the chord ends on the
 // circle the path can stay within the chord tolerance plus one step, while Round adds the end's own 0.71 step.
 // Measured with the fpga-uart model, radius 10 mm, 160 steps/mm, tolerance 0.002 mm (limit 8.25 um): centre
@@ -84,7 +84,7 @@ std::vector<MotionSegment> cam(const Program& program, const MachineModel& machi
 // `tolerance_mm` from the arc.
 std::int64_t chord_count(double radius_mm, double sweep_rad, double tolerance_mm);
 
-// seed 000 §2.2: NUMERATOR = CLK_HZ x 60 / steps_per_mm, rounded (18,750,000 at 160 steps/mm); the FPGA's
+// seed 000 §3.4.5: NUMERATOR = CLK_HZ x 60 / steps_per_mm, rounded (18,750,000 at 160 steps/mm); the FPGA's
 // cycles per step are NUMERATOR / FeedRate. BadInput if it is 0 or does not fit uint32.
 std::uint32_t numerator(double steps_per_mm, std::uint32_t clk_hz = 50'000'000);
 

@@ -16,7 +16,7 @@
 
 namespace cnc::host {
 
-// Values equal the seed 000 motion byte (§4.2): 0 rapid (laser off), 1..3 cutting (laser on).
+// Values equal the seed 000 motion byte (§4.7): 0 rapid (laser off), 1..3 cutting (laser on).
 enum class MotionKind : std::uint8_t { Rapid = 0, Linear = 1, ArcCW = 2, ArcCCW = 3 };
 
 // Unit of the F word: seed 000 uses mm/min (G94); seed 003's PC program takes mm/s.
@@ -77,7 +77,7 @@ struct IgnoredWord {
 
 struct InterpreterOptions {
     FeedUnit feed_unit = FeedUnit::MmPerMinute;
-    double rapid_feed_mm_per_min = 1200.0;  // seed 000 §7.3 test log: G0 packets carry F=1200
+    double rapid_feed_mm_per_min = 1200.0;  // seed 000 §6.3.1 test log: G0 packets carry F=1200
     geom::Vec2 start_mm{};                  // machine position when the program starts
     GcodePolicy policy = GcodePolicy::Lenient;
     double operator_pause_s = 5.0;  // M0/M1/M60: the time an operator takes to press cycle start

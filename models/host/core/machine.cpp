@@ -24,7 +24,7 @@ void require_positive(double value, const std::string& where, const char* key) {
 }
 
 bool is_drv8825_microstep(int microsteps) {
-    for (int m : {1, 2, 4, 8, 16, 32}) {  // seed 000 §8: DRV8825 M0..M2 table
+    for (int m : {1, 2, 4, 8, 16, 32}) {  // seed 000 §2.3: DRV8825 M0..M2 table
         if (microsteps == m) return true;
     }
     return false;

@@ -1,4 +1,4 @@
-// Machine model of seed 000 §2 (AddModel "Machine Model Configuration"): per-axis motor, driver and
+// Machine model of seed 000 §3.2 (AddModel "Machine Model Configuration"): per-axis motor, driver and
 // transmission, and the steps/mm that the CAM and the NUMERATOR are derived from.
 #pragma once
 #include <optional>
@@ -17,7 +17,7 @@ struct AxisLimits {
 };
 
 struct AxisMachine {
-    double step_angle_deg = 1.8;  // seed 000 §2.2 T3.4: NEMA17 42BYGHW208, 200 full steps/rev
+    double step_angle_deg = 1.8;  // seed 000 §3.4.2 T3.4: NEMA17 42BYGHW208, 200 full steps/rev
     int microsteps = 32;          // seed 000 T3.4: DRV8825 at 1/32
     Transmission transmission = Transmission::Belt;
     int pulley_teeth = 20;       // seed 000 T3.4: GT2 20T pulley
@@ -25,7 +25,7 @@ struct AxisMachine {
     double lead_mm = 8.0;        // leadscrew only; 8 mm is the common T8 screw (seed 000 gives no leadscrew values)
     int screw_starts = 1;        // leadscrew only; travel_per_rev = lead x starts (seed 000 §3.4.2: belts only)
     double gear_ratio = 1.0;     // motor revs per pulley/screw rev (seed 000 §3.4.2; not on its AddModel form)
-    double travel_mm = 0.0;      // TravelDistance of seed 000 §2.1; 0 = unlimited
+    double travel_mm = 0.0;      // TravelDistance of seed 000 §3.2; 0 = unlimited
     // A measured steps/mm (grbl's $100) that replaces the transmission's: machines are often calibrated, not
     // specified. It counts microsteps at `microsteps`, which still straps the DRV8825 MODE pins, so the motor
     // makes calibrated_steps_per_mm / microsteps full steps per mm.
@@ -34,7 +34,7 @@ struct AxisMachine {
 
     [[nodiscard]] double steps_per_rev() const { return 360.0 / step_angle_deg * microsteps; }
     [[nodiscard]] double travel_per_rev_mm() const;
-    // seed 000 §2.2: steps_per_rev * gear_ratio / travel_per_rev (160 for the defaults), whatever is calibrated.
+    // seed 000 §3.4.2: steps_per_rev * gear_ratio / travel_per_rev (160 for the defaults), whatever is calibrated.
     [[nodiscard]] double transmission_steps_per_mm() const;
     // The steps/mm every model uses: the calibrated value when there is one, else the transmission's.
     [[nodiscard]] double steps_per_mm() const;
@@ -44,7 +44,7 @@ struct AxisMachine {
 };
 
 // The farthest an axis may be from 0, in microsteps: 2^30 - 1, so that any move between two positions is at most
-// 2^31 - 2 steps, within the int32 step counts of the fpga-uart packet (seed 000 §3.4.6) and the spi-fpga FPGA's
+// 2^31 - 2 steps, within the int32 step counts of the fpga-uart packet (seed 000 §4.8) and the spi-fpga FPGA's
 // 32-bit step counters. At 160 steps/mm that is 6,710,886 mm; no machine has such a travel.
 inline constexpr double kMaxPositionSteps = 1073741823.0;
 

@@ -76,7 +76,7 @@ MotionPacket to_packet(const MotionSegment& s) {
     check_range(motion, 0, 3, where, "motion", "0..3");
     check_range(s.steps_x, -2147483648LL, 2147483647LL, where, "steps_x", "int32 (-2147483648..2147483647)");
     check_range(s.steps_y, -2147483648LL, 2147483647LL, where, "steps_y", "int32 (-2147483648..2147483647)");
-    check_range(s.feed, 0, 65535, where, "feed", "0..65535 mm/min");  // seed 000 §3.4.6: uint16
+    check_range(s.feed, 0, 65535, where, "feed", "0..65535 mm/min");  // seed 000 §4.8: uint16
     return MotionPacket{static_cast<std::uint8_t>(motion), static_cast<std::int32_t>(s.steps_x),
                         static_cast<std::int32_t>(s.steps_y), static_cast<std::uint16_t>(s.feed)};
 }

@@ -1,4 +1,4 @@
-// UART packets of seed 000 §4.2 (T3.6, T4.6-4.9): 9-byte init (0xFF, NUMERATOR_X, NUMERATOR_Y) and 11-byte
+// UART packets of seed 000 §4.5-§4.9 (T3.6, T4.6-4.9): 9-byte init (0xFF, NUMERATOR_X, NUMERATOR_Y) and 11-byte
 // motion (motion, StepsX, StepsY, FeedRate), big-endian, two's complement, as Python's struct ">BII" / ">BiiH".
 #pragma once
 #include <array>
@@ -9,8 +9,8 @@
 
 namespace cnc::host {
 
-inline constexpr std::uint8_t kInitMarker = 0xFF;      // seed 000 §4.2: first byte 0xFF = init packet
-inline constexpr std::uint8_t kAckByte = 0xAA;         // seed 000 §4.2: sent when a move completes
+inline constexpr std::uint8_t kInitMarker = 0xFF;      // seed 000 §4.5: first byte 0xFF = init packet
+inline constexpr std::uint8_t kAckByte = 0xAA;         // seed 000 §4.11: sent when a move completes
 inline constexpr std::size_t kInitPacketBytes = 9;     // seed 000 T3.6
 inline constexpr std::size_t kMotionPacketBytes = 11;  // seed 000 T3.6
 

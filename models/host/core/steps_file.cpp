@@ -12,12 +12,12 @@ namespace cnc::host {
 
 namespace {
 
-constexpr std::size_t kColumns = 9;  // seed 000 §6: the sender needs at least 9 columns
+constexpr std::size_t kColumns = 9;  // seed 000 App. A.2: the sender needs at least 9 columns
 constexpr std::array<const char*, kColumns> kColumnNames = {"Segment", "GcodeLine", "Motion",   "DX_mm",   "DY_mm",
                                                             "StepsX",  "StepsY",    "PathFeed", "FeedRate"};
-constexpr std::int64_t kInt32Min = -2147483648LL;  // seed 000 §3.4.6
+constexpr std::int64_t kInt32Min = -2147483648LL;  // seed 000 §4.8
 constexpr std::int64_t kInt32Max = 2147483647LL;
-constexpr double kMaxFeed = 65535.0;  // seed 000 §3.4.6: uint16
+constexpr double kMaxFeed = 65535.0;  // seed 000 §4.8: uint16
 
 std::vector<std::string_view> split_commas(std::string_view line) {
     std::vector<std::string_view> fields;
@@ -105,7 +105,7 @@ std::vector<MotionSegment> read_steps_file(std::istream& in, const std::string& 
     int line = 0;
     while (std::getline(in, text)) {
         if (++line == 1) {
-            // send_steps.py skips line 1 unread (seed 000 §6): a file without its header would lose a segment.
+            // send_steps.py skips line 1 unread (seed 000 App. A.2): a file without its header would lose a segment.
             if (parse_int(split_commas(trim(text)).front())) {
                 throw BadInput(filename + ":1", std::string("a data row where the header belongs (") +
                                                     kStepsFileHeader +

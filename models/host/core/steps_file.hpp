@@ -1,4 +1,4 @@
-// The seed 000 "steps file" (§3.5, §6): the CSV that GCODESTEPS.LSP writes and send_steps.py reads, one row
+// The seed 000 "steps file" (§3.4.3, App. A.2): the CSV that GCODESTEPS.LSP writes and send_steps.py reads, one row
 // per motion packet.
 //
 // Columns. The sender (A.2) reads 0 = segment number, 2 = motion code, 5 = X steps, 6 = Y steps, 8 = feed; the

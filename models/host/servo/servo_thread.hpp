@@ -1,4 +1,4 @@
-// The spi-fpga host's servo thread (seed 004 §4: `addf motion-controller servo-thread` and the SPI driver's
+// The spi-fpga host's servo thread (seed 004 §4.1: `addf motion-controller servo-thread` and the SPI driver's
 // functions on one real-time thread): wakes at n * period + latency_n (core/latency.hpp), runs one period of
 // core/servo_core.hpp with the reply of the previous transfer, and makes this period's full-duplex transfer
 // through the SPI master. The host's computation takes no simulated time. Stops after the period in which

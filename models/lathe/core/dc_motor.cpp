@@ -8,10 +8,10 @@ namespace cnc::lathe {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kStallAmps = 4.0;   // §3 "up to 4 A": the stall current at 22 V
-constexpr double kNoLoadAmps = 0.8;  // §3 "normal current about 0.8 A"
+constexpr double kStallAmps = 4.0;   // §3.2.1 "up to 4 A": the stall current at 22 V
+constexpr double kNoLoadAmps = 0.8;  // §3.2.2 "normal current about 0.8 A"
 constexpr double kFirstOrderInductanceH = 1e-3;
-constexpr double kSupplyVolts = 24.0;  // §3 supply
+constexpr double kSupplyVolts = 24.0;  // §2.3 supply
 constexpr double kDiodeVolts = 1.0;    // 1N4007 forward drop at about 1 A (datasheet)
 constexpr double kMaxStepS = 5e-6;     // RK4 step: 0.03 of the fastest time constant (L/R = 182 us)
 constexpr double kLoadSmoothingRadPerS = 1.0;

@@ -1,4 +1,4 @@
-// The Hitachi HD44780U LCD controller of seed 002's 16x2 display (§3, §9: 4-bit interface, DB4..DB7 on
+// The Hitachi HD44780U LCD controller of seed 002's 16x2 display (§2.3, App. A.1: 4-bit interface, DB4..DB7 on
 // PA0..PA3, RS = PA4, R/W = PA5, E = PA6; line 2 at DDRAM 0x40), as the controller sees its pins: data and
 // instructions are latched on E's falling edge (HD44780U datasheet, Figure 25 write timing). It decodes the
 // instruction set of datasheet Table 6 into the display's visible contents. Not modelled: the busy flag and
@@ -11,7 +11,7 @@
 
 namespace cnc::lathe {
 
-inline constexpr int kLcdColumns = 16;  // 16x2 module (seed 002 §3)
+inline constexpr int kLcdColumns = 16;  // 16x2 module (seed 002 §2.3)
 inline constexpr int kLcdLines = 2;
 
 using LcdLines = std::array<std::string, kLcdLines>;

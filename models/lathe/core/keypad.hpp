@@ -1,4 +1,4 @@
-// Seed 002's 4x4 keypad matrix (§6.6): columns 1..4 on PB7..PB4 (outputs), rows 1..4 on PB3..PB0 (inputs with
+// Seed 002's 4x4 keypad matrix (§2.5.3): columns 1..4 on PB7..PB4 (outputs), rows 1..4 on PB3..PB0 (inputs with
 // pull-ups); a pressed key joins its column to its row.
 #pragma once
 #include <array>

@@ -1,4 +1,4 @@
-// The firmware's B(n) list for a pitch (seed 002 §2.1-2.2, §6.5), built by the same C code the firmware runs
+// The firmware's B(n) list for a pitch (seed 002 §2.1-2.2, §2.5.3), built by the same C code the firmware runs
 // (models/avr/firmware/lathe_sync/ratio_list.c), with what it means for the thread: the ratio it realises and
 // the pitch that ratio cuts.
 #pragma once
@@ -8,12 +8,12 @@
 namespace cnc::lathe {
 
 enum class MakelistMode {
-    Intended,   // the smallest |residual| for a denominator <= 150 (§5, §11.3 recommendation)
-    AsPrinted,  // the listing's search with its int32/uint32 defects (§11.3a, b)
+    Intended,   // the smallest |residual| for a denominator <= 150 (§2.2's final procedure)
+    AsPrinted,  // the listing's search with its int32/uint32 defects (as §2.5.3 prints it)
 };
 
 // The seed's uint8 list entries cap lambda at 255 motor pulses per spindle pulse: ceil(39 P / 635) <= 255 for a
-// pitch P in 0.01 mm (§7: lambda = 39 P / 635) holds up to P = 4151, 41.51 mm.
+// pitch P in 0.01 mm (lambda = 39 P / 635 from the constants of §2.5.3) holds up to P = 4151, 41.51 mm.
 inline constexpr int kMaxPitchCentiMm = 4151;
 
 struct RatioList {

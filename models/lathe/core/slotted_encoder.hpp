@@ -1,4 +1,4 @@
-// A slotted disc read by an opto-interrupter through one 74HC14 inverting Schmitt trigger (seed 002 §3): the
+// A slotted disc read by an opto-interrupter through one 74HC14 inverting Schmitt trigger (seed 002 §2.3): the
 // 30-slot motor disc in the H21A1, the 40-slot spindle disc in the GP1S73P, the half-reflective index disc on
 // the reflective opto. The opto's transistor conducts (pulls its output low) while a slot lets the light through;
 // the 74HC14 inverts that, so the pin the MCU reads (1Y) is high while a slot is in the beam and falls as the

@@ -1,8 +1,8 @@
-// The lathe's spindle, turned by the lathe's own motor (seed 002 §1: the master, not controlled). Set to
+// The lathe's spindle, turned by the lathe's own motor (seed 002 §1.1, §2.3: the master, not controlled). Set to
 // `rpm`, it slows under the cutting torque with a linear speed droop, reached as a first-order lag:
 //   d(deficit)/dt = (droop x T_cut - deficit) / time_constant,   deficit = set speed - speed.
 // A motor without speed feedback loses speed in proportion to its load torque: an induction motor by its slip,
-// a brush motor on an open-loop controller by its I R drop. The seed gives no spindle drive at all (§11.17);
+// a brush motor on an open-loop controller by its I R drop. The seed gives no spindle drive at all;
 // the defaults (lathe.spindle.*) are estimates stated in docs/metrics.md "Lathe".
 #pragma once
 

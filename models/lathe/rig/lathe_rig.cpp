@@ -11,11 +11,11 @@ using avr::Cycle;
 using avr::Pin;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kFcpuHz = 8e6;  // seed 002 §6.1 F_CPU
+constexpr double kFcpuHz = 8e6;  // seed 002 §2.5.3 F_CPU
 constexpr double kCycleS = 1.0 / kFcpuHz;
 constexpr Cycle kStepCycles = 8;  // 1 us
 
-// Seed 002 §3 pin map.
+// Seed 002's pin map (the §2.5.3 listing).
 constexpr Pin kEnA{'D', 5};  // OC1A
 constexpr Pin kDir1{'D', 0};
 constexpr Pin kDir2{'D', 1};

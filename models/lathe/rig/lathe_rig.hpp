@@ -32,7 +32,7 @@
 
 namespace cnc::lathe {
 
-inline constexpr int kSpindleSlots = 40;  // spindle encoder disc: SP_PPR pulses per revolution (seed 002 §6.1)
+inline constexpr int kSpindleSlots = 40;  // spindle encoder disc: SP_PPR pulses per revolution (seed 002 §2.5.3)
 
 struct LatheRigConfig {
     std::string firmware_elf;
@@ -83,7 +83,7 @@ public:
     // The operator presses a key for 100 ms and lets it go for 400 ms (read_key's 200 ms debounce in between).
     void press(char key);
     void type(const std::string& keys);
-    // Holds `key` for `s` (a key held at power-up: B = tuning mode, D = configuration, §6.6).
+    // Holds `key` for `s` (a key held at power-up: B = tuning mode, D = configuration, §2.5.3).
     void hold(char key, double s);
 
     [[nodiscard]] double now_s() const;

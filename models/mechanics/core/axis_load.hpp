@@ -22,8 +22,8 @@ enum class DriveKind { Free, Belt, Leadscrew };  // Free: the rotor alone (no ca
 
 struct AxisLoadParams {
     DriveKind kind = DriveKind::Belt;
-    double travel_per_rev_mm = 40.0;  // GT2 x 20 teeth (seed 000 §2.2) or the screw lead
-    double carriage_mass_kg = 3.8;    // seed 000 §8: the X motor moves 3.8 kg
+    double travel_per_rev_mm = 40.0;  // GT2 x 20 teeth (seed 000 §3.4.2) or the screw lead
+    double carriage_mass_kg = 3.8;    // seed 000 §2.3: the X motor moves 3.8 kg
     double rail_friction_n = 1.5;     // linear bearings on rods, about 0.04 x m g: an estimate
     double rail_viscous_n_per_m_s = 0.0;
     // Belt

@@ -13,7 +13,7 @@ struct Drv8825Config {
     // model cannot know a pulse is too short before it ends, so it moves on the rise as for a valid pulse).
     // This is the pessimistic reading of the data sheet minimums; real chips often accept shorter pulses.
     bool strict = false;
-    bool dir_high_is_positive = true;  // seed 000 §8: the DIR-to-direction mapping depends on the wiring
+    bool dir_high_is_positive = true;  // seed 000 §2.3: the DIR-to-direction mapping depends on the wiring
 };
 
 }  // namespace cnc::mech

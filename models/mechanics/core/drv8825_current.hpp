@@ -15,8 +15,8 @@
 namespace cnc::mech {
 
 struct DriverElectrics {
-    double current_limit_a = 0.4;  // 100 % of the sine table; seed 000 §8: the motor's rated 0.4 A/phase
-    double supply_v = 12.0;        // VMOT: seed 000 §8 drives the motors at 12 V
+    double current_limit_a = 0.4;  // 100 % of the sine table; seed 000 §2.3: the motor's rated 0.4 A/phase
+    double supply_v = 12.0;        // VMOT: seed 000 §2.3 drives the motors at 12 V
     // Averaging time of the chopper: a few PWM periods (the DRV8825's fixed off-time is about 30 us;
     // SLVSA73 §7.6 tOFF). Shorter tracks the set-point more tightly and makes the ODE stiffer.
     double chop_tau_s = 20e-6;

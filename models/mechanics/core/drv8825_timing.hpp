@@ -8,7 +8,7 @@
 
 namespace cnc::mech {
 
-// TI SLVSA73 timing requirements (seed 000 §8).
+// TI SLVSA73 timing requirements (seed 000 §5.2.4 quotes the 1.9 us STEP high time).
 struct DriverLimits {
     TimePs step_high_min_ps = 1'900'000;  // tWH(STEP) 1.9 us
     TimePs step_low_min_ps = 1'900'000;   // tWL(STEP) 1.9 us

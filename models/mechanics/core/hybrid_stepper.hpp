@@ -7,7 +7,7 @@
 // curve T_hold sin(N_r x load angle), stable where the rotor's electrical angle equals the commanded one.
 // Detent (cogging) torque -T_det sin(4 N_r theta) has one period per full step.
 //
-// Defaults: the seed 000 motor, Wantai 42BYGHW208 (seed 000 §8: 1.8 deg, 12 V, 0.4 A/phase, 2,800 g cm).
+// Defaults: the seed 000 motor, Wantai 42BYGHW208 (seed 000 §2.3: 1.8 deg, 12 V, 0.4 A/phase, 2,800 g cm).
 // Winding 30 ohm and 37 mH per phase: Wantai's 42BYGHW208 listing (wantmotor.com, 42BYGHW series, 34 mm
 // body; the same figures are quoted in the ACIS project's motor notes, github.com/mattybabaallos/ACIS/wiki/
 // Motors-Information, which are those of the 0.4 A / 34 mm motor). Rotor inertia and detent torque are not
@@ -22,8 +22,8 @@ inline constexpr double kHomeElectricalRad = 3.14159265358979323846 / 4.0;  // D
 
 struct HybridStepperParams {
     int rotor_teeth = 50;                            // 1.8 deg full step = 90 electrical deg / 50 teeth
-    double holding_torque_nm = 2800.0 * 9.80665e-5;  // 2,800 g cm (seed 000 §8), both phases at rated current
-    double rated_current_a = 0.4;                    // per phase (seed 000 §8)
+    double holding_torque_nm = 2800.0 * 9.80665e-5;  // 2,800 g cm (seed 000 §2.3), both phases at rated current
+    double rated_current_a = 0.4;                    // per phase (seed 000 §2.3)
     double resistance_ohm = 30.0;                    // per phase (Wantai listing)
     double inductance_h = 0.037;                     // per phase, 37 mH (Wantai listing)
     double rotor_inertia_kgm2 = 34e-7;               // 34 g cm2 (typical of the frame; see above)

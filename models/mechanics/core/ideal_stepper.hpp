@@ -7,7 +7,7 @@ namespace cnc::mech {
 
 class IdealStepper : public StepperMotor {
 public:
-    // step_angle_deg: mechanical degrees per full step (42BYGHW208: 1.8 deg, seed 000 §8).
+    // step_angle_deg: mechanical degrees per full step (42BYGHW208: 1.8 deg, seed 000 §2.3).
     explicit IdealStepper(double step_angle_deg = 1.8);
 
     void on_microstep(TimePs t_ps, std::int64_t microstep_index, int microsteps_per_full_step) override;

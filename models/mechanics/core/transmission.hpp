@@ -13,7 +13,7 @@ public:
     [[nodiscard]] virtual double travel_per_motor_rev_mm() const = 0;
 };
 
-// Timing belt on a pulley: travel per pulley revolution = teeth x pitch (GT2 20T: 40 mm; seed 000 §2.2).
+// Timing belt on a pulley: travel per pulley revolution = teeth x pitch (GT2 20T: 40 mm; seed 000 §3.4.2).
 // gear_ratio: motor revolutions per pulley revolution (1 = pulley on the motor shaft).
 class Belt : public Transmission {
 public:

@@ -1,4 +1,4 @@
-// The spi-fpga frame layout (seed 004 §6 leaves it open; models/spi/README.md has the byte table). One
+// The spi-fpga frame layout (the seed 004 thesis leaves it open; models/spi/README.md has the byte table). One
 // full-duplex transfer carries a command frame on MOSI and a feedback frame on MISO, both 1 + 4 x n_axes
 // bytes, big-endian, MSB first on the wire:
 //   MOSI: [command 0x52] then per axis a 32-bit rate word: bit 31 = direction (1 = forward, DIR pin high),
@@ -6,7 +6,7 @@
 //         pulse generator's period in FPGA clocks, 0 = stopped (the direction is then ignored).
 //   MISO: [status] then per axis the signed 32-bit step counter (wraps mod 2^32; the host widens it).
 // A period word rather than a DDS increment (hm2) or a frequency (Remora): the seed's pulse generator counts a
-// period in clocks (§2), so the host does the division and the FPGA needs none. The laser rides in a bit of the
+// period in clocks (§5.1.3), so the host does the division and the FPGA needs none. The laser rides in a bit of the
 // X word, not in a byte of its own, so that the frame stays 9 bytes with the 0x52 header (sigrok decodes that).
 #pragma once
 #include <cstddef>

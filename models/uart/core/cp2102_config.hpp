@@ -11,9 +11,9 @@
 namespace cnc::uart {
 
 struct Cp2102Config {
-    std::uint32_t requested_baud = 115'200;      // seed 000 §4.1
+    std::uint32_t requested_baud = 115'200;      // seed 000 §4.2
     bool ideal_baud = false;                     // true: the line runs at exactly the requested rate
-    FrameFormat format = kFormat8N1;             // seed 000 §4.1: 8N1
+    FrameFormat format = kFormat8N1;             // seed 000 §4.2: 8N1
     TimePs usb_frame_ps = kUsbFullSpeedFramePs;  // the CP2102 is full-speed only: SOF every 1 ms
     TimePs usb_latency_ps = kPsPerMs;            // host driver latency for received data (link.usb_latency_ms)
     std::size_t tx_fifo_bytes = 640;             // CP2102 data sheet: 640-byte transmit buffer

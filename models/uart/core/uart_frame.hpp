@@ -11,7 +11,7 @@
 namespace cnc::uart {
 
 // A bit clock that divides a reference clock: one bit lasts `ticks_per_bit` periods of `clk_hz`
-// (CP2102: 208 ticks of 24 MHz at 115200 Bd; seed 000 §4.1 FPGA: 434 ticks of 50 MHz).
+// (CP2102: 208 ticks of 24 MHz at 115200 Bd; seed 000 §4.2 FPGA: 434 ticks of 50 MHz).
 struct BitClock {
     std::int64_t ticks_per_bit = 1;
     std::int64_t clk_hz = 1;
@@ -34,7 +34,7 @@ struct FrameFormat {
     [[nodiscard]] int bits_per_frame() const { return 1 + data_bits + (parity == Parity::None ? 0 : 1) + stop_bits; }
 };
 
-// 8N1: seed 000 §4.1, and the format every architecture in this project uses.
+// 8N1: seed 000 §4.2, and the format every architecture in this project uses.
 inline constexpr FrameFormat kFormat8N1{};
 
 // Throws BadInput for a format outside 5..8 data bits, 1..2 stop bits.

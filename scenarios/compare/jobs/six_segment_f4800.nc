@@ -1,4 +1,4 @@
-(the six-segment shape of seed 000 sec. 7.3 with every cut at F4800 = 80 mm/s, the target speed of seed 000's machine)
+(the six-segment shape of seed 000 sec. 6.3.1 with every cut at F4800 = 80 mm/s, the target speed of seed 000's machine)
 G21 G90
 G0 X26.60625 Y99.30625
 M3

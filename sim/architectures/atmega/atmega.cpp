@@ -9,7 +9,8 @@ namespace {
 class Atmega final : public Architecture {
 public:
     [[nodiscard]] std::string name() const override { return "atmega"; }
-    // The head's pin follows the motion code (seed 003 §4.3); the PC program plans the job whole before it sends it.
+    // The head's pin follows the motion code (seed 003 App. A2-A4: pen up in G00, down in G01 and the arcs); the PC
+    // program plans the job whole before it sends it.
     [[nodiscard]] JobUse job_use() const override { return {true, false, LaserSwitching::ByMotionKind, false}; }
 
     [[nodiscard]] std::shared_ptr<const ArchSettings> read_settings(KeyReader& r, const Scenario&,

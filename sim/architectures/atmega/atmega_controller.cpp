@@ -57,7 +57,7 @@ avr::AvrCoreConfig avr_config(const Scenario& s, const AtmegaSettings& a) {
 
 uart::Cp2102Config link_config(const AtmegaSettings& a) {
     uart::Cp2102Config link = a.serial.link;
-    if (!a.link_baud_set) link.requested_baud = cad2g::kSeedBaud;  // seed 003 §3.4: CBR_57600
+    if (!a.link_baud_set) link.requested_baud = cad2g::kSeedBaud;  // seed 003 §5.3.2: CBR_57600
     return link;
 }
 
@@ -177,9 +177,9 @@ public:
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
         return {{&m_wires.uart_rx, std::nullopt}, {&m_wires.uart_tx, m_avr_cfg.f_cpu_hz}};
     }
-    // Seed 003 §2.2: DIR 0 = CW = +X / +Y.
+    // Seed 003 §5.2.5: DIR 0 = CW = +X / +Y.
     [[nodiscard]] bool dir_high_is_positive() const override { return false; }
-    // The firmware switches each driver off once its axis has counted its steps (seed 003 §4.2-4.3).
+    // The firmware switches each driver off once its axis has counted its steps (seed 003 App. A2, A4).
     [[nodiscard]] bool drives_enable() const override { return true; }
     // The pins are read slice by slice as the metrics stream; with the whole logs kept, once, at the end. The link's
     // lines only then: only the tests read them.

@@ -10,7 +10,7 @@ void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem
     s.firmware = fw.empty() ? std::string() : (base / fw).lexically_normal().string();
     s.pins = r.get_string("avr.pins", "",
                           "atmega: pins of the machine signals, \"step_x=PD6, dir_x=PB0, en_x=PB2, step_y=PB3, "
-                          "dir_y=PB5, en_y=PB4, head=PB1\" (seed 003 §2.2); entries left out keep these");
+                          "dir_y=PB5, en_y=PB4, head=PB1\" (seed 003 §5.2.5); entries left out keep these");
     s.quantum_cycles = static_cast<std::uint32_t>(
         r.get_int("avr.quantum_cycles", s.quantum_cycles, 1, 1'000'000,
                   "atmega: AVR cycles run ahead of SystemC time between replays of its pin changes (speed only: "

@@ -22,7 +22,7 @@ struct AtmegaSettings final : ArchSettings {
     std::uint32_t quantum_cycles = 1600;
     int g01_timer2_prescaler = 1024;  // which built seed 003 ELF: 1024, or 256 (App. A3's CS = 110 as listed)
     host::cad2g::PcOptions pc;
-    // link.baud set by the scenario: otherwise the PC program asks for 57600 (seed 003 §3.4 CBR_57600), not the
+    // link.baud set by the scenario: otherwise the PC program asks for 57600 (seed 003 §5.3.2 CBR_57600), not the
     // Cp2102Config default of seed 000.
     bool link_baud_set = false;
 };

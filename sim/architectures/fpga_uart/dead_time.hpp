@@ -1,5 +1,5 @@
 // Where the dead time between two fpga-uart moves goes: from the last STEP of one move to the first STEP of
-// the next, split at every hand-over of the stop-and-wait loop (seed 000 §4.4). The parts add up exactly.
+// the next, split at every hand-over of the stop-and-wait loop (seed 000 §4.14). The parts add up exactly.
 #pragma once
 #include <cstddef>
 #include <deque>

@@ -33,7 +33,7 @@ public:
         return s;
     }
 
-    // The NUMERATOR of each axis (clock x 60 / steps per mm) must fit the init packet's uint32 (seed 000 §3.4.6).
+    // The NUMERATOR of each axis (clock x 60 / steps per mm) must fit the init packet's uint32 (seed 000 §4.8).
     void check_machine(const Scenario& s) const override {
         const FpgaUartSettings& own = s.settings<FpgaUartSettings>();
         if (!own.numerator_from_machine) return;

@@ -28,7 +28,7 @@ namespace cnc::sim::fpga_uart {
 
 namespace {
 
-// send_steps.py hard-codes NUMERATOR_X = NUMERATOR_Y = 18_750_000 (seed 000 §6).
+// send_steps.py hard-codes NUMERATOR_X = NUMERATOR_Y = 18_750_000 (seed 000 App. A.2).
 constexpr std::uint32_t kSeedScriptNumerator = 18'750'000;
 
 // The link's wires and the FPGA's internal strobes (the machine's pins are the run's: run/machine.hpp); the VCD
@@ -121,8 +121,8 @@ private:
     std::size_t m_record = 0;
 };
 
-// A steps file's FeedRate 0 (seed 000 T3.6 allows 1 .. 65535; the appendix RTL would run 0 as 62500 clocks per step)
-// is sent only when the scenario asks for it.
+// A steps file's FeedRate 0 (seed 000's text divides by the feed, §3.4.5, so it allows 1 .. 65535; the appendix
+// RTL would run 0 as 62500 clocks per step) is sent only when the scenario asks for it.
 void check_steps_feeds(const Scenario& s, const Job& job, const FpgaUartSettings& f) {
     if (f.allow_feed_zero) return;
     for (const host::MotionSegment& seg : job.steps_file) {

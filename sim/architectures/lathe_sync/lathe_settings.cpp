@@ -60,13 +60,13 @@ std::vector<OperatorStep> default_operator_script(const LatheSettings& s) {
     if (s.mode == "tuning") return {{"", 'B', 0.05, 0.0}, {"", 0, 0.0, 12.0}};
     const double pitch_mm = s.pitch_centi_mm / 100.0;
     const double length_mm = s.length_centi_mm / 100.0;
-    // The carriage at most at the motor's full speed, 8.70 mm/s (seed 002 §10); one revolution waiting for the
-    // index, the 500 ms brake and the slip shown 1 s (§6.4), 10 % and 0.5 s to spare.
+    // The carriage at most at the motor's full speed, 8.70 mm/s (2.739 leadscrew rev/s, seed 002 §4.3); one
+    // revolution waiting for the index, the 500 ms brake and the slip shown 1 s (§2.5.3), 10 % and 0.5 s to spare.
     const double feed_mm_per_s = std::min(pitch_mm * s.spindle_rpm / 60.0, 8.7);
     const double cut_s = 60.0 / s.spindle_rpm + 1.1 * length_mm / feed_mm_per_s + 2.0;
-    // The retract: full speed, the last 6.35 mm at PWM_SLOW = 58.7 % (§6.4), the brake.
+    // The retract: full speed, the last 6.35 mm at PWM_SLOW = 58.7 % (§2.5.3), the brake.
     const double retract_s = length_mm / 5.1 + 1.5;
-    // Menu "1: cut", then "1:coarse 2:fine 3:thread" (3 asks the pitch), the hand, the length (§6.6).
+    // Menu "1: cut", then "1:coarse 2:fine 3:thread" (3 asks the pitch), the hand, the length (§2.5.3).
     const std::string cut = s.mode == "thread" ? "13" + centi_text(s.pitch_centi_mm) + "D"
                             : s.mode == "fine" ? "12"
                                                : "11";
@@ -83,12 +83,12 @@ std::vector<OperatorStep> default_operator_script(const LatheSettings& s) {
 
 void read_lathe_settings(KeyReader& r, LatheSettings& s) {
     s.mode = r.get_choice("lathe.mode", s.mode, {"thread", "fine", "coarse", "tuning"},
-                          "lathe-sync: what the machinist does (seed 002 §6.6): cut a thread of lathe.pitch_mm, "
+                          "lathe-sync: what the machinist does (seed 002 §2.5.2): cut a thread of lathe.pitch_mm, "
                           "the fine (0.04 mm) or coarse (0.08 mm) feed, or power up with B held (tuning mode)");
     const double pitch_mm = r.get_float(
         "lathe.pitch_mm", 1.0, 0.0, 655.35,
         "lathe-sync: thread pitch entered on the keypad, mm, 2 decimals, 0.01 .. 41.51 (the list's uint8 entries, "
-        "seed 002 §7)");
+        "seed 002 §2.5.3)");
     s.pitch_centi_mm = static_cast<int>(std::lround(pitch_mm * 100.0));
     if (std::abs(pitch_mm * 100.0 - s.pitch_centi_mm) > 1e-6) {
         r.fail("lathe.pitch_mm", "the keypad takes 2 decimals (0.01 mm steps)");
@@ -96,13 +96,13 @@ void read_lathe_settings(KeyReader& r, LatheSettings& s) {
     if (s.pitch_centi_mm == 0 || s.pitch_centi_mm > lathe::kMaxPitchCentiMm) {
         r.fail("lathe.pitch_mm",
                "must be 0.01 .. 41.51 mm: above, B(n) passes the list's 8-bit entries (255 "
-               "motor pulses per spindle pulse, seed 002 §7); 0 cuts nothing");
+               "motor pulses per spindle pulse, seed 002 §2.5.3); 0 cuts nothing");
     }
     if (s.mode == "fine") s.pitch_centi_mm = 4;
     if (s.mode == "coarse") s.pitch_centi_mm = 8;
     s.spindle_rpm = r.get_float("lathe.spindle_rpm", s.spindle_rpm, 0.0, 3000.0,
                                 "lathe-sync: spindle speed, rpm, > 0 (turned by the lathe's own motor; the "
-                                "leadscrew motor follows up to about 522 rpm at 1 mm, seed 002 §10)");
+                                "leadscrew motor follows up to about 522 rpm at 1 mm, from seed 002 §4.3)");
     if (s.spindle_rpm <= 0.0) r.fail("lathe.spindle_rpm", "0 rpm: the spindle must turn for the firmware to follow");
     const double length_mm = r.get_float("lathe.length_mm", 10.0, 0.01, 655.35,
                                          "lathe-sync: length of the cut, mm, 2 decimals (the keypad's uint16 x 100)");
@@ -115,11 +115,11 @@ void read_lathe_settings(KeyReader& r, LatheSettings& s) {
     s.as_printed_list =
         r.get_choice("lathe.ratio_list", "intended", {"intended", "as-printed"},
                      "lathe-sync: makelist's search: the smallest |residual| for a list of <= 150 "
-                     "entries, or the listing as printed with its defects (seed 002 §11.3)") == "as-printed";
+                     "entries, or the listing as printed with its defects (seed 002 §2.5.3)") == "as-printed";
     s.atomic_pulse_isrs =
         r.get_choice("lathe.pulse_isrs", "nested", {"nested", "atomic"},
-                     "lathe-sync: the INT0/INT1 pulse ISRs: nested as the seed's ISR_NOBLOCK "
-                     "(their count races shift the helix), or run with interrupts off (§11.9)") == "atomic";
+                     "lathe-sync: the INT0/INT1 pulse ISRs: nested as the seed's ISR_NOBLOCK (§2.5.3; "
+                     "their count races shift the helix), or run with interrupts off") == "atomic";
     if (s.as_printed_list && s.atomic_pulse_isrs) {
         r.fail("lathe.pulse_isrs", "'atomic' is built with the intended list only (lathe.ratio_list = intended)");
     }
@@ -128,13 +128,13 @@ void read_lathe_settings(KeyReader& r, LatheSettings& s) {
                   "lathe-sync: spindle revolutions at the start of each pass left out of the pitch and phase errors "
                   "(the catch-up from the slip); the report gives the whole-pass phase error too"));
     s.second_pole_per_s = r.get_float("lathe.motor.second_pole_per_s", 0.0, 0.0, 1e4,
-                                      "lathe-sync: 0: the first-order motor of seed 002 §8.3 (pole -74.29 s^-1); "
+                                      "lathe-sync: 0: the first-order motor of seed 002 §4.3 (pole -74.29 s^-1); "
                                       "else the two-pole motor, e.g. 163.6 (the Exp2 fit), s^-1");
     if (s.second_pole_per_s != 0.0 && s.second_pole_per_s <= 74.29) {
         r.fail("lathe.motor.second_pole_per_s", "must be 0 or above the dominant pole, 74.29 s^-1");
     }
     s.backlash_mm = r.get_float("lathe.backlash_mm", 0.0, 0.0, 5.0,
-                                "lathe-sync: play of gearbox, belt and nut at the carriage, mm (seed 002 §8.2: "
+                                "lathe-sync: play of gearbox, belt and nut at the carriage, mm (seed 002 §4.2.1: "
                                 "size unknown)");
     s.cut_depth_mm = r.get_float("lathe.cut.depth_mm", s.cut_depth_mm, 0.0, 10.0,
                                  "lathe-sync: depth of cut of every pass, mm; with the feed per revolution (the "

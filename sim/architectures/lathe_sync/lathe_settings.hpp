@@ -18,14 +18,14 @@ struct OperatorStep {
 };
 
 struct LatheSettings final : ArchSettings {
-    std::string mode = "thread";  // thread | fine | coarse | tuning (§6.6)
+    std::string mode = "thread";  // thread | fine | coarse | tuning (§2.5.2)
     int pitch_centi_mm = 100;     // the pitch entered, 0.01 mm (thread); fine 4, coarse 8
     double spindle_rpm = 60.0;
     int length_centi_mm = 1000;
     int passes = 3;
     bool right_hand = true;
-    bool as_printed_list = false;    // makelist as printed (§11.3)
-    bool atomic_pulse_isrs = false;  // PULSE_ISR_ATOMIC (§11.9)
+    bool as_printed_list = false;    // makelist as printed (§2.5.3)
+    bool atomic_pulse_isrs = false;  // PULSE_ISR_ATOMIC (control.c)
     int settle_revolutions = 2;
     double second_pole_per_s = 0.0;  // 0: the first-order motor
     double backlash_mm = 0.0;
@@ -40,7 +40,7 @@ struct LatheSettings final : ArchSettings {
 
 void read_lathe_settings(KeyReader& r, LatheSettings& settings);
 
-// The operator script a machinist follows for mode, pitch, hand, length and passes (§6.6): keys and waits long
+// The operator script a machinist follows for mode, pitch, hand, length and passes (§2.5.2): keys and waits long
 // enough for each cut and retract at the spindle speed.
 [[nodiscard]] std::vector<OperatorStep> default_operator_script(const LatheSettings& s);
 

@@ -18,7 +18,8 @@ namespace cnc::sim::lathe_sync {
 namespace {
 
 // A following error that rises faster than this over the second half of a pass is growing, not settling: the
-// seed's loop settles with its slow pole (-1.17 s^-1, §8.3), so a bounded error falls there.
+// seed's loop settles with its slow pole (-1.17 s^-1, from the model and gains of §4.3), so a bounded error falls
+// there.
 constexpr double kGrowingPulsesPerS = 10.0;
 
 const char* firmware_elf(const LatheSettings& s) {
@@ -116,7 +117,8 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
         if (written) {
             double sum = 0.0;
             for (std::size_t i = 320; i < 420; ++i) sum += ee[i];
-            const double unit_us = (ee[18] + 1) * 4.0;  // (OCR2 + 1) x 32 / 8 MHz, the hardware CTC (§11.5)
+            // (OCR2 + 1) x 32 / 8 MHz, the hardware CTC (the thesis's unit in §4.3 leaves out the + 1)
+            const double unit_us = (ee[18] + 1) * 4.0;
             d["tuning_ocr2"] = ee[18];
             d["tuning_steady_counts"] = sum / 100.0;
             d["tuning_steady_period_us"] = sum / 100.0 * unit_us;

@@ -8,7 +8,7 @@ namespace cnc::sim {
 
 namespace {
 
-constexpr std::int64_t kFcpuHz = 8'000'000;               // seed 002 §6.1
+constexpr std::int64_t kFcpuHz = 8'000'000;               // seed 002 §2.5.3
 constexpr TimePs kCyclePs = 1'000'000'000'000 / kFcpuHz;  // 125 ns
 
 }  // namespace

@@ -10,7 +10,7 @@ void read_planner_settings(KeyReader& r, const host::MachineModel& machine, host
                     : host::planner::Profile::JerkLimited;
     c.mode = r.get_choice("planner.mode", "continuous", {"continuous", "exact-stop"},
                           "continuous (G64 P: corners blended within path_tolerance_mm) or exact-stop (G61: rest "
-                          "at every move end; seed 004 §3.3)") == "continuous"
+                          "at every move end; seed 004 §3.2)") == "continuous"
                  ? host::planner::BlendMode::Continuous
                  : host::planner::BlendMode::ExactStop;
     c.path_tolerance_mm = r.get_float("planner.path_tolerance_mm", c.path_tolerance_mm, 0.0, 100.0,

@@ -22,7 +22,7 @@ TimePs ns_to_ps(double ns) {
 
 void read_servo(KeyReader& r, host::servo::ServoConfig& c) {
     c.period_ps = us_to_ps(r.get_float("host.servo_period_us", 1000.0, 1.0, 100'000.0,
-                                       "servo thread period, us (LinuxCNC default 1 ms; seed 004 §4)"));
+                                       "servo thread period, us (LinuxCNC default 1 ms; seed 004 §4.1 gives none)"));
     c.latency.max_ps = us_to_ps(r.get_float("host.latency_max_us", 50.0, 0.0, 100'000.0,
                                             "bound of the servo thread's wake-up latency, us (LinuxCNC latency "
                                             "test: < 50 us OK on PREEMPT_RT); 0: exact wake-ups"));

@@ -1,5 +1,5 @@
 // The STEP pulses a DRV8825 acts on: rising edges while its enable input is active, with the falling edge that
-// ends each of them. Seed 003 stops an axis by EN while its timer keeps toggling STEP (§4.3-4.5), so the raw pin
+// ends each of them. Seed 003 stops an axis by EN while its timer keeps toggling STEP (App. A2-A4), so the raw pin
 // carries pulses no motor sees; the metrics count what a logic analyser triggered on STEP and qualified by the
 // enable would count: our stand-in for the caliper of seed 003's abstract, whose measurements the thesis does not
 // give. `cncsim analyze --enable` applies the same rule.

@@ -1,4 +1,4 @@
-/* Pin assignment of seed 003 §2.2 / §5.2.6 (Arduino Uno numbering in brackets). */
+/* Pin assignment of seed 003 §5.2.5 / §5.2.6 (Arduino Uno numbering in brackets). */
 #pragma once
 #include <avr/io.h>
 

@@ -27,7 +27,7 @@ enum {
 };
 
 /* PORTB, the "start byte" (seed 003 §5.2.6): PB7 '1' PB6 '1' PB5 Y_DIR PB4 Y_EN PB3 Y_STP PB2 X_EN PB1 HEADER
- * PB0 X_DIR. EN is active low (1 = driver disabled); DIR 0 = +, 1 = - (seed 003 §2.2). */
+ * PB0 X_DIR. EN is active low (1 = driver disabled); DIR 0 = +, 1 = - (seed 003 §5.2.5). */
 enum {
     LASER_ENGRAVER_PB_DIR_X = 0,
     LASER_ENGRAVER_PB_HEADER = 1,

@@ -16,10 +16,10 @@ volatile uint16_t previous_ls_pulses;
 volatile uint8_t sp_index;
 struct listNode* volatile Ptr;
 
-static struct listNode dummy = {0, &dummy}; /* §6.5 dummyPtr: a 1-node self-loop with info = 0 */
+static struct listNode dummy = {0, &dummy}; /* §2.5.3 dummyPtr: a 1-node self-loop with info = 0 */
 static struct listNode* list_start;
 
-/* AVR221-style PID data (§6.3). */
+/* AVR221-style PID data (§2.5.3). */
 static struct {
     int16_t lastError;
     int32_t sumError;
@@ -44,7 +44,7 @@ static void pid_init(void) {
 
 void control_init(void) {
     Ptr = &dummy;
-    MCUCR = 0x0A;  /* INT0 and INT1 on falling edges (§6.2) */
+    MCUCR = 0x0A;  /* INT0 and INT1 on falling edges (§2.5.3) */
     GICR = 0xC0;
     TCCR0 = 0x08;  /* CTC, stopped */
     OCR0 = eeprom_read_byte(EE_OCR0);
@@ -58,8 +58,9 @@ void control_init(void) {
     pid_init();
 }
 
-/* Seed option (§11.9): the seed declares every ISR ISR_NOBLOCK, and its pulse counts are multi-byte variables
- * shared between nested ISRs. Two races follow, both seen on the model (tests/lathe/lathe_thread_test.cpp):
+/* Seed option: the seed declares every ISR ISR_NOBLOCK (§2.5.3), and its pulse counts are multi-byte variables
+ * shared between nested ISRs (the thesis does not show their types). Two races follow, both seen on the model
+ * (tests/lathe/lathe_thread_test.cpp):
  *   - INT1 preempting INT0 between its load and store of ls_pulses: INT0 then stores the interval's count + 1
  *     over the 0 INT1 wrote, the interval's pulses are subtracted twice and Error drops by a whole B(n);
  *   - INT0 preempting INT1 between its read and its clear of ls_pulses: that motor pulse is never subtracted.
@@ -82,13 +83,13 @@ static int16_t read_error(void) {
 #endif
 }
 
-/* Motor encoder pulse (§6.2). */
+/* Motor encoder pulse (§2.5.3). */
 ISR(INT0_vect, PULSE_ISR_ATTR) {
     ls_pulses++;
     total_ls_pulses++;
 }
 
-/* Spindle encoder pulse: add the list's B(n), subtract the motor pulses of the interval (§2.1, §6.2). */
+/* Spindle encoder pulse: add the list's B(n), subtract the motor pulses of the interval (§2.1, §2.5.3). */
 ISR(INT1_vect, PULSE_ISR_ATTR) {
     sp_index++;
     if (sp_index == SP_PPR) sp_index = 0;
@@ -98,7 +99,7 @@ ISR(INT1_vect, PULSE_ISR_ATTR) {
     Ptr = Ptr->next;
 }
 
-/* PID tick every (OCR0 + 1) x 128 us (§6.3): position form, gains x32, output clamped to 0..PWM_TOP. */
+/* PID tick every (OCR0 + 1) x 128 us (§2.5.3): position form, gains x32, output clamped to 0..PWM_TOP. */
 ISR(TIMER0_COMP_vect, ISR_NOBLOCK) {
     const int16_t pid_error = read_error();
     int16_t p_term, d_term;

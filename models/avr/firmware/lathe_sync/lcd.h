@@ -1,4 +1,4 @@
-/* HD44780 16x2 in 4-bit mode on PORTA (§9 App. A.1: PA0..PA3 = D4..D7, PA4 = RS, PA5 = RW, PA6 = E), busy-flag
+/* HD44780 16x2 in 4-bit mode on PORTA (App. A.1: PA0..PA3 = D4..D7, PA4 = RS, PA5 = RW, PA6 = E), busy-flag
  * polling as the Fleury library the seed used. */
 #ifndef LATHE_SYNC_LCD_H
 #define LATHE_SYNC_LCD_H

@@ -1,6 +1,6 @@
-/* Seed 002'sxfirmware (§6), our C re-implementation for the ATmega16 at 8 MHz. Power-up keys: D held
+/* Seed 002's firmware (§2.5.3), our C re-implementation for the ATmega16 at 8 MHz. Power-up keys: D held
  * = configuration, B held = tuning_mode, C held = test mode (not re-implemented: it only displays counters);
- * then the main menu "1: cut 2: move" (§6.6). */
+ * then the main menu "1: cut 2: move" (§2.5.2, §2.5.3). */
 #include <avr/eeprom.h>
 #include <avr/interrupt.h>
 #include <avr/io.h>
@@ -15,9 +15,9 @@
 
 AVR_MCU(F_CPU, CNC_MCU_NAME);
 
-/* The seed does not give its OCR0 or integer gains (§8.3, §11.4); the defaults are §8.3's discretisation of the
- * Simulink autotune (Kp 72.0371, Ki 82.6077, Kd 0.6721) at OCR0 = 39, T_s = 40 x 128 us = 5.12 ms:
- * P = round(72.04 x 32) = 2305, I = round(Ki T_s 32) = 14 (13.5), D = round(Kd / T_s x 32) = 4201. */
+/* The seed does not give its OCR0 or integer gains (§4.3 reports the continuous ones); the defaults are our
+ * discretisation of §4.3's Simulink autotune (Kp 72.0371, Ki 82.6077, Kd 0.6721) at OCR0 = 39, T_s = 40 x 128 us
+ * = 5.12 ms: P = round(72.04 x 32) = 2305, I = round(Ki T_s 32) = 14 (13.5), D = round(Kd / T_s x 32) = 4201. */
 uint8_t ee_image[10] EEMEM = {0xFF, 0xFF, 0xFF, 39, 2305 & 0xFF, 2305 >> 8, 14, 0, 4201 & 0xFF, 4201 >> 8};
 
 static uint16_t ask(const char* prompt) {
@@ -34,11 +34,12 @@ static void configuration(void) {
 }
 
 static int32_t pulses_of(uint16_t length_centi_mm) {
-    const int32_t p = (int32_t)LS_PPR * length_centi_mm * 10 / LS_PITCH; /* truncation, as §6.6 */
+    const int32_t p = (int32_t)LS_PPR * length_centi_mm * 10 / LS_PITCH; /* truncation, as §2.5.3 */
     return p == 0 ? -1 : p;
 }
 
-/* Waits for OK (D: returns 1) or cancel (C: returns 0), as §11.10's intended reading of the wait loops. */
+/* Waits for OK (D: returns 1) or cancel (C: returns 0), our reading of the wait loops of §2.5.3's main(), whose
+ * braces are garbled as printed. */
 static uint8_t wait_ok(const char* prompt) {
     lcd_show_p(prompt, NULL);
     for (;;) {

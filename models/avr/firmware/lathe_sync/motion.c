@@ -21,7 +21,7 @@ static int32_t total(void) {
 
 void doBrake(void) {
     const uint8_t was_left = direction() == LEFT;
-    set_direction(was_left ? 0x00 : 0x03); /* alternates the shorting transistor pair (§6.4) */
+    set_direction(was_left ? 0x00 : 0x03); /* alternates the shorting transistor pair (§2.5.3) */
     PORTD |= 1 << PD5;                     /* EN high with DIR1 == DIR2: brake */
     _delay_ms(500);
     PORTD &= (uint8_t)~(1 << PD5);
@@ -74,7 +74,7 @@ void doMove(int32_t length_puls) {
     for (;;) {
         const int32_t t = total();
         if (PRESSED_D || !LIMIT_OK() || (length_puls != -1 && t >= length_puls)) break;
-        /* Seed option (§11.13): the approach slowdown 2 leadscrew revolutions before the target, tested with
+        /* Seed option (doMove, §2.5.3): the approach slowdown 2 leadscrew revolutions before the target, tested with
          * >= instead of the listing's equality, which can miss the one count. */
         if (length_puls > 0 && (t - length_puls + 2 * LS_PPR >= 0 || length_puls < 2 * LS_PPR)) OCR1A = PWM_SLOW;
     }

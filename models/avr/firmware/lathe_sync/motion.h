@@ -1,4 +1,4 @@
-/* The passes (§6.4): doCut (one synchronised pass from the spindle index), doMove (full speed, no PID: the
+/* The passes (§2.5.3): doCut (one synchronised pass from the spindle index), doMove (full speed, no PID: the
  * retract or a plain move), doBrake (500 ms dynamic braking), with the slip bookkeeping of §2.5.1. */
 #ifndef LATHE_SYNC_MOTION_H
 #define LATHE_SYNC_MOTION_H

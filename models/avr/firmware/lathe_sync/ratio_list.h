@@ -1,4 +1,4 @@
-/* The B(n) list of seed 002 (§2.1-2.2, makelist in §6.5): motor pulses per spindle pulse as a circular list of
+/* The B(n) list of seed 002 (§2.1-2.2, makelist in §2.5.3): motor pulses per spindle pulse as a circular list of
  * integers whose running sum follows n * lambda, lambda = (pitch / LS_PITCH) * (LS_PPR / SP_PPR).
  * Shared by the firmware (avr-gcc, C) and the simulator's reference (host C++): one implementation of the
  * arithmetic, with the seed's integer types, so that both agree to the bit. */
@@ -11,10 +11,10 @@
 extern "C" {
 #endif
 
-#define RATIO_LS_PPR 780u      /* leadscrew pulses per rev: 30 slots x 1:26 gearbox (seed 002 §6.1 LS_PPR) */
-#define RATIO_SP_PPR 40u       /* spindle pulses per rev (§6.1 SP_PPR) */
-#define RATIO_LS_PITCH 3175u   /* leadscrew pitch, um (§6.1 LS_PITCH) */
-#define RATIO_MAX_DEN 150u     /* largest list length: the "general memory limit" d_max (§5) */
+#define RATIO_LS_PPR 780u      /* leadscrew pulses per rev: 30 slots x 1:26 gearbox (seed 002 §2.5.3 LS_PPR) */
+#define RATIO_SP_PPR 40u       /* spindle pulses per rev (§2.5.3 SP_PPR) */
+#define RATIO_LS_PITCH 3175u   /* leadscrew pitch, um (§2.5.3 LS_PITCH) */
+#define RATIO_MAX_DEN 150u     /* largest list length: the "general memory limit" d_max (§2.2, §2.5.3) */
 
 typedef struct {
     uint16_t num;      /* motor pulses per list period (bestx) */
@@ -26,16 +26,17 @@ typedef struct {
 uint32_t ratio_x(uint16_t pitch_centi_mm);
 uint32_t ratio_y(void);
 
-/* The intended algorithm (§5 "final procedure", §11.3 recommendation): the denominator <= 150 whose rounded
- * numerator leaves the smallest |residual|; ties keep the smaller denominator; an exact fraction stops early. */
+/* The intended algorithm (§2.2's final procedure; makelist as printed does not do it): the denominator <= 150
+ * whose rounded numerator leaves the smallest |residual|; ties keep the smaller denominator; an exact fraction stops
+ * early. */
 ratio_fraction ratio_best(uint16_t pitch_centi_mm);
 
-/* makelist's search as printed (§6.5), with the missing ';' restored: `bError > y/2` compares int32 with uint32,
- * so a negative residual runs the subtraction loop until it wraps (§11.3a), and `bError < bestError` keeps the
- * most negative residual (§11.3b). 1.00 mm gives 46635/34. */
+/* makelist's search as printed (§2.5.3), with the missing ';' restored: `bError > y/2` compares int32 with
+ * uint32, so a negative residual runs the subtraction loop until it wraps, and `bError < bestError` keeps the
+ * most negative residual. 1.00 mm gives 46635/34. */
 ratio_fraction ratio_best_as_printed(uint16_t pitch_centi_mm);
 
-/* One list entry by truncation (§2.1, Bresenham form of §6.5): *rem is (n - 1) * num mod den before the call
+/* One list entry by truncation (§2.1, Bresenham form of §2.5.3): *rem is (n - 1) * num mod den before the call
  * and n * num mod den after; returns floor(n num / den) - floor((n - 1) num / den) as the seed's uint8 info. */
 uint8_t ratio_next(uint16_t* rem, uint16_t num, uint16_t den);
 

@@ -19,7 +19,7 @@ ISR(TIMER2_COMP_vect, ISR_NOBLOCK) {
 }
 
 void tuning_mode(void) {
-    uint8_t data[TUNING_PERIODS]; /* on the stack, as the seed (§11.14): no list exists during tuning */
+    uint8_t data[TUNING_PERIODS]; /* on the stack, as the seed (§2.5.3): no list exists during tuning */
     lcd_show_p(PSTR("tuning"), NULL);
     /* Seed option: the retry starts at OCR2 = 1 (the thesis gives only the final 3). At OCR2 = 0 a match comes every
      * 32 cycles, fewer than this ISR_NOBLOCK ISR takes (about 35 with its prologue), so the nested ISRs would
@@ -29,7 +29,7 @@ void tuning_mode(void) {
         OCR2 = ocr2;
         overflow = 0;
         set_direction(LEFT);
-        TCCR2 = 0x0B; /* CTC, clk/32 (§6.2) */
+        TCCR2 = 0x0B; /* CTC, clk/32 (§2.5.3) */
         TIMSK |= 1 << OCIE2;
         sei();
         uint16_t last = ls_pulses;

@@ -1,5 +1,5 @@
 // ATmega16 INT0 (PD2) and INT1 (PD3) on falling edges (MCUCR = 0b00001010, GICR = 0b11000000: the seed 002
-// firmware's setting, §6.2). The naked ISRs set PB0 (INT0) and PB5 (INT1) first thing; main runs NOPs.
+// firmware's setting, §2.5.3). The naked ISRs set PB0 (INT0) and PB5 (INT1) first thing; main runs NOPs.
 #include "fw_test.h"
 
 ISR(INT0_vect, ISR_NAKED) {

@@ -1,4 +1,4 @@
-// The ATmega16 timer modes of the seed 002 firmware (§6.2). Marker PB0 rises at cycle M, then one `out` per cycle:
+// The ATmega16 timer modes of the seed 002 firmware (§2.5.3). Marker PB0 rises at cycle M, then one `out` per cycle:
 // SFIOR = PSR2 | PSR10 (both prescalers restart at M + 1), TCCR2 (M + 2), TCCR0 (M + 3), TCCR1B (M + 4).
 //   * Timer2 CTC, OCR2 = 3, clk/32 (the seed's tuning timer TCCR2 = 0b00001011, plus COM20 to toggle OC2 = PD7).
 //   * Timer0 CTC, OCR0 = 2, clk/1024 (the seed's PID tick TCCR0 = 0b00001101, plus COM00 to toggle OC0 = PB3).

@@ -1,4 +1,4 @@
-// USART0 receiver at UBRR0 = 16, U2X0 = 0 (seed 003 §2.4), polled as seed 003's `Receive` routine does.
+// USART0 receiver at UBRR0 = 16, U2X0 = 0 (seed 003 §5.3.1), polled as seed 003's `Receive` routine does.
 // UBRR0 is set at once, but the receiver stays off for the first 2 ms (bytes arriving then are lost); then
 // RXEN0/TXEN0 are set and the marker PB0 rises. Each byte: PB5 (dir_y) toggles 4..8 cycles after RXC0 is set, FE0 is read, then UDR0; the
 // byte is echoed, or 0xFE if it had a framing error.

@@ -1,4 +1,4 @@
-// USART0 transmitter at UBRR0 = 16, U2X0 = 0 (seed 003 §2.4: 58 823.5 Bd, 272 cycles per bit), 8N1.
+// USART0 transmitter at UBRR0 = 16, U2X0 = 0 (seed 003 §5.3.1: 58 823.5 Bd, 272 cycles per bit), 8N1.
 //   UBRR0L written at M1 + 1 (marker PB0 rises at M1): the baud rate generator restarts there.
 //   UDR0 = 0x55 written at M2 + 1 (marker PB5 rises at M2).
 //   Then, polling UCSR0A (lds 2 + sbrs 1 + rjmp 2 = 5 cycles per turn), PB4 (en_y) toggles 4..8 cycles after

@@ -1,4 +1,4 @@
-// cmd_fifo bookkeeping (seed 004 §2 FIFO bus between the SPI slave and the pulse generators): one write port
+// cmd_fifo bookkeeping (seed 004 §5.1.1 FIFO bus between the SPI slave and the pulse generators): one write port
 // (whole frames, written by the slave) and one read port per axis (each generator takes its own rate word
 // of the oldest frame it has not read). An entry is freed once every axis has read it: from that edge the whole
 // frame governs, and its laser bit goes to laser_latch (the read says so). Register timing:

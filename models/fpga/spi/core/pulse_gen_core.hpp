@@ -1,4 +1,4 @@
-// pulse_gen for one axis (seed 004 §2 pulsegen: a pulse of `duration` clocks every period; here the period is
+// pulse_gen for one axis (seed 004 §5.1.3 pulsegen: a pulse of `duration` clocks every period; here the period is
 // the rate word, so STEP rises exactly `period` clocks apart), plus DIR with setup and hold enforced by delaying:
 //   - DIR never changes within dir_hold clocks after a STEP rise;
 //   - STEP never rises within dir_setup clocks after a DIR change.

@@ -1,4 +1,4 @@
-// Parameters of the spi-fpga FPGA design (seed 004 §2; the thesis's iCE40 design extended to two axes with
+// Parameters of the spi-fpga FPGA design (seed 004 §5.1; the thesis's iCE40 design extended to two axes with
 // step counters), the link constraints of its oversampling SPI slave, and the shortest STEP period.
 #pragma once
 #include <cstdint>
@@ -8,7 +8,7 @@
 
 namespace cnc::fpga {
 
-// When a rate word read from the FIFO governs the generator (seed 004 §6 leaves it open).
+// When a rate word read from the FIFO governs the generator (the seed 004 thesis does not say).
 //  AtNextPulse: a running generator reads the FIFO only at the edge where its running period ends (its next
 //               STEP rise); a stopped one reads at once. The new period starts at that edge.
 //  Immediately: the generator reads an entry one clock after it is written; the period counter compares
@@ -18,7 +18,7 @@ enum class RateApply { AtNextPulse, Immediately };
 struct SpiFpgaConfig {
     std::uint32_t clk_hz = 50'000'000;    // 50 MHz, as seed 000's board
     std::uint32_t fifo_depth = 4;         // frames between the SPI slave and the generators
-    std::uint32_t pulse_cycles = 100;     // seed 004 §2 `duration`; 100 clocks = 2 us (seed 000 PULSE_HIGH)
+    std::uint32_t pulse_cycles = 100;     // seed 004 §5.1.3 `duration`; 100 clocks = 2 us (seed 000 PULSE_HIGH)
     std::uint32_t dir_setup_cycles = 50;  // 1 us from a DIR change to the next STEP rise (DRV8825: 650 ns)
     std::uint32_t dir_hold_cycles = 50;   // 1 us from a STEP rise to a DIR change (DRV8825: 650 ns)
     RateApply rate_apply = RateApply::AtNextPulse;

@@ -1,4 +1,4 @@
-// spi_slave logic (seed 004 §2: mode 0, SS active low), clocked by the FPGA clock. SCLK, MOSI and SS pass a
+// spi_slave logic (seed 004 §5.1.1: mode 0; SS active low, §5.2), clocked by the FPGA clock. SCLK, MOSI and SS pass a
 // 2-FF synchroniser; the first flip-flop samples all three at the same edge e and the logic acts on that
 // sample at edge e + kSpiSyncStages (its registers change their outputs then):
 //   SS fell        -> FrameStart: bit counter cleared, the reply (status + step counters) loaded, MISO = bit 0

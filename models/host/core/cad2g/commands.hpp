@@ -32,7 +32,7 @@ struct Motion {
     std::int64_t steps_y = 0;
     std::uint16_t count_x = 0;          // X count sent (G01 and chords: |dx|, or |dy| as a timebase when dx = 0)
     std::uint16_t count_y = 0;          // G00 only: Y count sent
-    bool x_timebase = false;            // dx = 0: X's timer times |dy| steps with driver X disabled (seed §4.4 note 1)
+    bool x_timebase = false;            // dx = 0: X's timer times |dy| steps, with X disabled (seed 003 §5.4.2 note 1)
     bool wrapped = false;               // a count above 16 bits, sent modulo 65536 (atmega.long_moves = wrap)
     double path_feed_mm_per_min = 0.0;  // programmed F (G00: the rapid feed, v_max)
     double speed_x_mm_per_s = 0.0;      // asked per-axis speeds (eqs. 4.76; G00: v_max on both)
@@ -47,7 +47,7 @@ struct Command {
     std::vector<Motion> motions;  // G00 / G01: one; G02 / G03: the chords; M30: none
 };
 
-// PORTB start byte: DIR 1 = negative, EN 1 = disabled (seed 003 §2.2); HEADER = head on.
+// PORTB start byte: DIR 1 = negative, EN 1 = disabled (seed 003 §5.2.5); HEADER = head on.
 [[nodiscard]] std::uint8_t start_byte(std::int64_t steps_x, bool enable_x, std::int64_t steps_y, bool enable_y,
                                       bool header);
 [[nodiscard]] bool enabled_x(std::uint8_t portb);

@@ -121,7 +121,7 @@ private:
         m.speed_y_mm_per_s = std::fabs(dy_mm) / dz_mm * v0;
         m.ocr_y = ocr_for_speed(m.speed_y_mm_per_s, m_machine.y.mm_per_step(), m_opt.timer);
         if (sx == 0) {
-            m.x_timebase = true;  // seed 003 §4.4 note 1: stepx = stepy and v_x = v_y, X disabled
+            m.x_timebase = true;  // seed 003 §5.4.2 note 1: stepx = stepy and v_x = v_y, X disabled
             m.ocr_x = m.ocr_y;
             m.count_x = count(sy, m.wrapped);
         } else {

@@ -1,4 +1,4 @@
-// Speed words of seed 003 §4.6 / §5.5: a STEP rate is an 8-bit compare value of a CTC toggle timer,
+// Speed words of seed 003 §5.2.4 / §5.5: a STEP rate is an 8-bit compare value of a CTC toggle timer,
 // f_OCnA = f_clk / (2 N (1 + OCRnA)) (eq. 2.3), so one microstep of s mm per toggle period gives
 // v = f s / (2 N (OCR + 1)) and the PC program sends OCR = f / (2 N (v / s)) - 1 with the fraction dropped
 // (eqs. 4.73, 4.77, 5.1). 10.45 mm/s at s = 0.00625 mm, N = 1024: 3.67 -> 3 -> 12.207 mm/s (eq. 5.2).
@@ -8,7 +8,7 @@
 namespace cnc::host::cad2g {
 
 struct TimerClock {
-    double f_cpu_hz = 16'000'000.0;  // seed 003 §2.1: 16 MHz crystal
+    double f_cpu_hz = 16'000'000.0;  // seed 003 §5.2.4: 16 MHz crystal
     int prescaler = 1024;            // seed 003 App. A3: TCCR0B = 0b101; the PC computes with 1024
 };
 

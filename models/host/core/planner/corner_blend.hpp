@@ -1,4 +1,4 @@
-// Corner rounding for continuous mode (seed 004 §3.3 figs. 3.5-3.6; LinuxCNC G64 P): a circular arc tangent to
+// Corner rounding for continuous mode (seed 004 §3.2 figs. 3.5-3.6; LinuxCNC G64 P): a circular arc tangent to
 // the incoming and the outgoing curve replaces the corner.
 #pragma once
 #include <optional>

@@ -1,4 +1,4 @@
-// Look-ahead over the planned pieces (seed 004 §3.3: the planner's virtual position runs ahead of the machine):
+// Look-ahead over the planned pieces (seed 004 §3.2: the planner's virtual position runs ahead of the machine):
 // the speed at every piece boundary, such that the machine can always stop at the end of what it has seen.
 #pragma once
 #include <cstddef>

@@ -15,8 +15,8 @@ using AxisLimits = host::AxisLimits;
 enum class Profile { Trapezoidal, JerkLimited };
 
 enum class BlendMode {
-    ExactStop,   // G61: every programmed move starts and ends at rest (seed 004 §3.3 "point-to-point")
-    Continuous,  // G64 P: corners rounded by arcs at most path_tolerance_mm from the corner (seed 004 §3.3)
+    ExactStop,   // G61: every programmed move starts and ends at rest (seed 004 §3.2 "point-to-point")
+    Continuous,  // G64 P: corners rounded by arcs at most path_tolerance_mm from the corner (seed 004 §3.2)
 };
 
 struct PlannerConfig {

@@ -1,4 +1,4 @@
-// Wake-up latency of the host's servo thread (seed 004 §6: not measured in the thesis; use the LinuxCNC /
+// Wake-up latency of the host's servo thread (not measured in the seed 004 thesis; use the LinuxCNC /
 // Machinekit typical figures). Wake-up n happens at n * period + L_n, L_n drawn from a bounded distribution with
 // an explicit, seeded PRNG (splitmix64, Steele et al. 2014) and our own inverse CDF: std::*_distribution differ
 // between standard libraries, which would make a scenario's numbers depend on the compiler.

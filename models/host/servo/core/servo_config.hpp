@@ -1,4 +1,4 @@
-// Settings of the spi-fpga host's servo thread (seed 004 §1, §4: Machinekit's motion controller and the SPI
+// Settings of the spi-fpga host's servo thread (seed 004 §4.1, §4.3.2: Machinekit's motion controller and the SPI
 // driver's read/update/write on one real-time thread; values from LinuxCNC's hostmot2 stepgen).
 #pragma once
 #include <array>
@@ -21,7 +21,7 @@ struct AxisServoConfig {
 };
 
 struct ServoConfig {
-    TimePs period_ps = kPsPerMs;  // LinuxCNC's default servo thread, 1 ms (seed 004 §4)
+    TimePs period_ps = kPsPerMs;  // LinuxCNC's default servo thread, 1 ms (seed 004 §4.1 gives no period)
     LatencyConfig latency;
     std::uint64_t seed = 1;       // the scenario seed: latency draws
     double position_gain = 0.5;   // hm2 stepgen: 0.5 * error_at_match / period

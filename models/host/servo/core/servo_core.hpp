@@ -1,4 +1,4 @@
-// The servo thread's work in one period (seed 004 §1 driver contract: commanded velocity -> step frequency ->
+// The servo thread's work in one period (seed 004 §4.3.2 driver contract: commanded velocity -> step frequency ->
 // device, position back in the same full-duplex transfer), without SystemC: the shell (../servo_thread.hpp)
 // calls step() at each wake-up with the reply of the previous transfer and sends the words it returns.
 //

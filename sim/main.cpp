@@ -92,7 +92,7 @@ std::vector<cnc::metrics::AxisSignalNames> analyze_axes(const std::vector<std::s
     }
     std::vector<cnc::metrics::AxisSignalNames> axes;
     for (std::size_t i = 0; i < steps.size(); ++i) {
-        cnc::metrics::AxisSignalNames a{steps[i], dirs[i], "", cnc::metrics::EnableLevel::ActiveHigh};
+        cnc::metrics::AxisSignalNames a{steps[i], dirs[i], "", cnc::metrics::EnableLevel::ActiveLow};
         if (!enables.empty()) {
             const cnc::metrics::EnableOption e = cnc::metrics::parse_enable_option(enables[i]);
             a.enable = e.name;
@@ -220,9 +220,9 @@ int dispatch(int argc, char* argv[]) {
     one_per_axis(analyze->add_option("--step", steps, "STEP signal name; repeat for more axes")->required());
     one_per_axis(analyze->add_option("--dir", dirs, "DIR signal name, one per --step")->required());
     one_per_axis(analyze->add_option("--enable", enables,
-                                     "NAME[:active-low]: the driver's enable, one per --step; STEP edges while "
-                                     "disabled do not count (active high unless :active-low, e.g. the DRV8825's "
-                                     "nENBL)"));
+                                     "NAME[:active-high]: the driver's enable, one per --step; STEP edges while "
+                                     "disabled do not count (active low, as the DRV8825's nENBL, unless "
+                                     ":active-high)"));
     analyze->add_option("--steps-per-mm", steps_per_mm, "steps per mm, for distances and speeds")
         ->check(CLI::PositiveNumber);
     analyze->add_option("--commanded", commanded,

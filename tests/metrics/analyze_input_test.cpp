@@ -86,11 +86,72 @@ TEST(MetricsAnalyze, EnableSignalDropsTheStepsOfADisabledDriver) {
     EXPECT_EQ(rising("n_enbl_x", EnableLevel::ActiveHigh), 6U);
 }
 
+// A run's VCD as cncsim writes it: the carriage's position, a real variable, changes between the pin edges and at
+// the same instants ("r<value> <id>", IEEE 1364 §18.2), its identifier "$" and one pin's "#" (VCD identifiers are
+// any printable characters). STEP rises at 200, 300, 400 and 500 ns; nENBL is low from 100 to 450 ns: the driver
+// acts on three of the four pulses, counted by hand.
+TEST(MetricsAnalyze, RealValuesBetweenTheEdgesDoNotHideAnyEdge) {
+    const std::string text = R"($timescale 1 ns $end
+$scope module cncsim $end
+$var wire 1 ! step_x $end
+$var wire 1 " dir_x $end
+$var wire 1 # n_enbl_x $end
+$var real 64 $ carriage_x_mm $end
+$upscope $end
+$enddefinitions $end
+#0
+$dumpvars
+0!
+0"
+1#
+r0 $
+$end
+#100
+0#
+#150
+r0.0015 $
+#200
+1!
+#201
+r0.00625 $
+#202
+0!
+#300
+r1.000000000000001e-05 $
+1!
+#302
+0!
+r-0.5 $
+#400
+1!
+#402
+0!
+#450
+1#
+r-0.75 $
+#500
+1!
+#502
+0!
+#600
+r1.5 $
+)";
+    std::istringstream in(text);
+    const VcdContents vcd = read_vcd(in, "run.vcd");
+    EXPECT_EQ(vcd.signals.at("step_x").rising(), (std::vector<TimePs>{200'000, 300'000, 400'000, 500'000}));
+    EXPECT_EQ(vcd.signals.at("n_enbl_x").edges.size(), 2U);
+    EXPECT_EQ(vcd.other_variables.at("carriage_x_mm"), "64 bits wide (real)");
+    const RunInput run = analyze_input(vcd, "run.vcd", {{"step_x", "dir_x", "n_enbl_x", EnableLevel::ActiveLow}});
+    EXPECT_EQ(run.axes.at(0).step.rising(), (std::vector<TimePs>{200'000, 300'000, 400'000}));
+    EXPECT_EQ(compute_metrics(run).axes.at(0).rising_edges, 3U);
+}
+
 TEST(MetricsAnalyze, EnableOptionSuffix) {
     EXPECT_EQ(parse_enable_option("n_enbl_x:active-low").name, "n_enbl_x");
     EXPECT_EQ(parse_enable_option("n_enbl_x:active-low").active, EnableLevel::ActiveLow);
     EXPECT_EQ(parse_enable_option("en:active-high").active, EnableLevel::ActiveHigh);
-    EXPECT_EQ(parse_enable_option("en").active, EnableLevel::ActiveHigh);
+    EXPECT_EQ(parse_enable_option("n_enbl_x").active, EnableLevel::ActiveLow);  // the DRV8825's nENBL
+    EXPECT_EQ(parse_enable_option("en:active-low").name, "en");
     EXPECT_EQ(parse_enable_option("top:en").name, "top:en");  // a colon of the name stays
 }
 

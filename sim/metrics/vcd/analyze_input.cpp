@@ -31,7 +31,7 @@ EnableOption parse_enable_option(const std::string& text) {
             return {text.substr(0, text.size() - s.size()), level};
         }
     }
-    return {text, EnableLevel::ActiveHigh};
+    return {text, EnableLevel::ActiveLow};
 }
 
 RunInput analyze_input(const VcdContents& vcd, const std::string& filename, const std::vector<AxisSignalNames>& axes,

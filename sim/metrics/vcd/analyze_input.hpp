@@ -15,14 +15,16 @@ struct AxisSignalNames {
     std::string step;
     std::string dir;     // empty: no DIR signal (constant low)
     std::string enable;  // empty: the driver is always enabled
-    EnableLevel enable_active = EnableLevel::ActiveHigh;
+    EnableLevel enable_active = EnableLevel::ActiveLow;
 };
 
-// The --enable option "NAME", "NAME:active-high" or "NAME:active-low" (the DRV8825's nENBL). A colon followed by
-// anything else is part of the name.
+// The --enable option "NAME", "NAME:active-low" or "NAME:active-high". Active low unless said: the driver whose
+// timing analyze checks, the DRV8825, steps while its nENBL is low (DRV8825 datasheet, "nENBL"), as the enables of
+// the other common step drivers do (A4988 ENABLE with its bar, TMC2208 ENN); counting the pulses while it is high
+// would count those of a disabled driver. A colon followed by anything else is part of the name.
 struct EnableOption {
     std::string name;
-    EnableLevel active = EnableLevel::ActiveHigh;
+    EnableLevel active = EnableLevel::ActiveLow;
 };
 [[nodiscard]] EnableOption parse_enable_option(const std::string& text);
 

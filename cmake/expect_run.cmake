@@ -1,5 +1,6 @@
 # Runs CMD (a |-list), then checks its exit code against EXIT and its stderr+stdout against each regex in MATCH
-# (a |-list). Used for the CLI's bad-input contract: exit code 2 and a message naming the file, line or key.
+# (a |-list), and against none of NO_MATCH (a |-list, optional). Used for the CLI's bad-input contract: exit code 2
+# and a message naming the file, line or key.
 # Optionally: NO_FILE must not exist afterwards; FILE must exist and match each regex in FILE_MATCH; STDOUT is a
 # file that takes the standard output instead (e.g. /dev/full), and then only stderr is matched.
 string(REPLACE "|" ";" cmd "${CMD}")
@@ -21,6 +22,14 @@ function(expect_matches text patterns what)
   endforeach()
 endfunction()
 expect_matches("${out}${err}" "${MATCH}" "output")
+if(DEFINED NO_MATCH)
+  string(REPLACE "|" ";" unwanted "${NO_MATCH}")
+  foreach(p IN LISTS unwanted)
+    if("${out}${err}" MATCHES "${p}")
+      message(FATAL_ERROR "output matches '${p}'\n${out}${err}")
+    endif()
+  endforeach()
+endif()
 if(DEFINED NO_FILE AND EXISTS "${NO_FILE}")
   message(FATAL_ERROR "${NO_FILE} was written although the run failed")
 endif()

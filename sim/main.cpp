@@ -17,6 +17,7 @@
 #include "architectures/catalog.hpp"
 #include "common/bad_input.hpp"
 #include "compare/compare.hpp"
+#include "compare/compare_check.hpp"
 #include "compare/compare_outputs.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/pulse/commanded_rates.hpp"
@@ -149,13 +150,16 @@ int cmd_compare(const std::string& scenario_path, const std::string& archs, cons
     }
     // Bad input is reported once, here, not once per child.
     const cnc::sim::Scenario scenario = cnc::sim::load_scenario(scenario_path, sets);
+    cnc::sim::check_compare_columns(scenario_path, list, sets);
     if (!report.empty()) cnc::sim::check_output_path(report, "--report");
+    const bool with_baseline = cnc::sim::baseline_runs(scenario_path, list, sets, std::cerr);
     if (!out_dir.empty()) {
         cnc::sim::check_output_dir(out_dir, "--out");
         std::filesystem::create_directories(out_dir);
     }
     const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-    const cnc::sim::Comparison comparison = cnc::sim::run_compare(self, scenario_path, list, sets, out_dir);
+    const cnc::sim::Comparison comparison =
+        cnc::sim::run_compare(self, scenario_path, list, sets, out_dir, with_baseline);
     const cnc::sim::TableFormat format = format_name == "markdown" ? cnc::sim::TableFormat::Markdown
                                          : format_name == "csv"    ? cnc::sim::TableFormat::Csv
                                          : format_name == "json"   ? cnc::sim::TableFormat::Json

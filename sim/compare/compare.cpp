@@ -172,12 +172,12 @@ std::string status(const CompareColumn& c) {
 }
 
 Comparison run_compare(const std::string& self_exe, const std::string& scenario, const std::vector<std::string>& asked,
-                       const std::vector<std::string>& sets, const std::string& out_dir) {
+                       const std::vector<std::string>& sets, const std::string& out_dir, bool with_baseline) {
     // The baseline runs too when it is not asked for; its report alone, in the temporary folder.
     std::vector<std::string> architectures = asked;
     const Architecture* baseline = baseline_architecture();
     const bool hidden_baseline =
-        baseline != nullptr && std::find(asked.begin(), asked.end(), baseline->name()) == asked.end();
+        with_baseline && baseline != nullptr && std::find(asked.begin(), asked.end(), baseline->name()) == asked.end();
     if (hidden_baseline) architectures.push_back(baseline->name());
     std::string dir_template = (fs::temp_directory_path() / "cncsim-compare-XXXXXX").string();
     if (mkdtemp(dir_template.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder");

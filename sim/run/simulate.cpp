@@ -1,12 +1,11 @@
 #include "run/simulate.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <iostream>
 
 #include "common/sc_time.hpp"
 #include "common/text_format.hpp"
-#include "run/progress.hpp"
+#include "run/timed_progress.hpp"
 
 namespace cnc::sim {
 
@@ -24,10 +23,6 @@ constexpr TimePs kSliceMaxPs = kPsPerSec;
 // The largest scenario.max_sim_s (11.6 days), also for a job whose estimate is longer: TimePs holds 106 days.
 constexpr double kMaxLimitS = 1e6;
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 RunBudget run_budget(const Scenario& s, const JobEstimate& estimate) {
@@ -43,8 +38,7 @@ RunBudget run_budget(const Scenario& s, const JobEstimate& estimate) {
 
 SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& finished, TimePs check_ps,
                        const std::function<void(TimePs)>& after_slice) {
-    Progress progress(std::cerr, budget.progress, budget.estimate.expected_s, budget.label);
-    const auto start = std::chrono::steady_clock::now();
+    TimedProgress progress(std::cerr, budget.progress, budget.estimate.expected_s, budget.label);
     // A model asked every check_ps never starves (an MCU's timers run on): each slice runs to its end, as
     // one bounded sc_start per check always did. Otherwise a slice stops at its last event, as one
     // sc_start(limit, SC_EXIT_ON_STARVATION) would, so that the run ends where the model went quiet.
@@ -69,18 +63,17 @@ SimulationEnd simulate(const RunBudget& budget, const std::function<bool()>& fin
             end.limit_reached = true;
             break;
         }
-        const double slice_start_s = seconds_since(start);
+        const double slice_start_s = progress.wall_s();
         sc_core::sc_start(ps_time(until_ps - end.t_ps), policy);
         if (after_slice) after_slice(now_ps());
-        const double wall_s = seconds_since(start);
-        progress.update(ps_to_s(now_ps()), wall_s);
+        progress.update(ps_to_s(now_ps()));
         if (check_ps == 0) {
-            const double slice_wall_s = wall_s - slice_start_s;
+            const double slice_wall_s = progress.wall_s() - slice_start_s;
             if (slice_wall_s < kSliceWallMinS) slice_ps = std::min({2 * slice_ps, budget.limit_ps, kSliceMaxPs});
             if (slice_wall_s > kSliceWallMaxS && slice_ps > 1) slice_ps /= 2;
         }
     }
-    progress.finish(ps_to_s(end.t_ps), seconds_since(start));
+    progress.finish(ps_to_s(end.t_ps));
     return end;
 }
 

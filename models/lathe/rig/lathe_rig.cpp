@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace cnc::lathe {
 
@@ -211,12 +212,24 @@ void LatheRig::step() {
 
 void LatheRig::run_for(double s) {
     const Cycle end = chip.cycle() + static_cast<Cycle>(s * kFcpuHz);
-    while (chip.cycle() < end) step();
+    while (chip.cycle() < end) {
+        step();
+        if (m_on_slice && chip.cycle() >= m_next_slice) {
+            m_next_slice = chip.cycle() + m_slice_cycles;
+            m_on_slice(now_s());
+        }
+    }
+}
+
+void LatheRig::on_slice(double every_s, std::function<void(double now_s)> f) {
+    m_slice_cycles = std::max<Cycle>(kStepCycles, static_cast<Cycle>(every_s * kFcpuHz));
+    m_next_slice = chip.cycle() + m_slice_cycles;
+    m_on_slice = std::move(f);
 }
 
 void LatheRig::press(char key) {
-    hold(key, 0.1);
-    run_for(0.4);
+    hold(key, kKeyHeldS);
+    run_for(kKeyReleasedS);
 }
 
 void LatheRig::type(const std::string& keys) {

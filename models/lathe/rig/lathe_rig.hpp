@@ -16,6 +16,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@
 namespace cnc::lathe {
 
 inline constexpr int kSpindleSlots = 40;  // spindle encoder disc: SP_PPR pulses per revolution (seed 002 §2.5.3)
+// The operator's key press (LatheRig::press): held long enough for read_key's 4 ms scan, then let go past its
+// 200 ms debounce (seed 002 §2.5.3).
+inline constexpr double kKeyHeldS = 0.1;
+inline constexpr double kKeyReleasedS = 0.4;
 
 struct LatheRigConfig {
     std::string firmware_elf;
@@ -80,7 +85,9 @@ public:
 
     void step();  // 1 us
     void run_for(double s);
-    // The operator presses a key for 100 ms and lets it go for 400 ms (read_key's 200 ms debounce in between).
+    // `f` is called with the simulated time each time run_for has run another `every_s` (the progress display).
+    void on_slice(double every_s, std::function<void(double now_s)> f);
+    // The operator presses a key for kKeyHeldS and lets it go for kKeyReleasedS.
     void press(char key);
     void type(const std::string& keys);
     // Holds `key` for `s` (a key held at power-up: B = tuning mode, D = configuration, §2.5.3).
@@ -126,6 +133,9 @@ private:
     double m_cut_sign = 1.0;
     double m_brake_from_mm = 0.0;
     double m_brake_until_s = -1.0;
+    avr::Cycle m_slice_cycles = 0;
+    avr::Cycle m_next_slice = 0;
+    std::function<void(double)> m_on_slice;
     bool m_trace_on = false;
     std::vector<bool> m_trace_initial;
     std::vector<bool> m_trace_level;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iostream>
 #include <optional>
 #include <sstream>
 
@@ -11,6 +12,7 @@
 #include "lathe/core/thread_metrics.hpp"
 #include "lathe/rig/lathe_rig.hpp"
 #include "run/arch_run.hpp"
+#include "run/timed_progress.hpp"
 #include "scenario/scenario.hpp"
 
 namespace cnc::sim::lathe_sync {
@@ -21,6 +23,9 @@ namespace {
 // seed's loop settles with its slow pole (-1.17 s^-1, from the model and gains of §4.3), so a bounded error falls
 // there.
 constexpr double kGrowingPulsesPerS = 10.0;
+// The progress display follows the run this often (simulated time): a few times a second of wall time at the
+// rig's speed of about real time.
+constexpr double kProgressSliceS = 0.05;
 
 const char* firmware_elf(const LatheSettings& s) {
     if (s.as_printed_list) return CNC_LATHE_SYNC_AS_PRINTED_ELF;
@@ -71,12 +76,24 @@ void report_lcd(lathe::LatheRig& rig, nlohmann::json& d, std::ostringstream& tex
     d["lcd_transcript"] = screens;
 }
 
-void run_operator(lathe::LatheRig& rig, const std::vector<OperatorStep>& steps) {
+// How long the operator's script runs the rig: the length of the run, exactly (the progress display's 100 %).
+double script_s(const std::vector<OperatorStep>& steps) {
+    double total_s = 0.0;
+    for (const OperatorStep& step : steps) {
+        total_s += step.hold_s + static_cast<double>(step.keys.size()) * (lathe::kKeyHeldS + lathe::kKeyReleasedS) +
+                   step.wait_s;
+    }
+    return total_s;
+}
+
+void run_operator(lathe::LatheRig& rig, const std::vector<OperatorStep>& steps, TimedProgress& progress) {
+    rig.on_slice(kProgressSliceS, [&progress](double now_s) { progress.update(now_s); });
     for (const OperatorStep& step : steps) {
         if (step.held != 0) rig.hold(step.held, step.hold_s);
         if (!step.keys.empty()) rig.type(step.keys);
         if (step.wait_s > 0.0) rig.run_for(step.wait_s);
     }
+    progress.finish(rig.now_s());
 }
 
 }  // namespace
@@ -96,7 +113,8 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     std::optional<LatheTrace> trace;
     if (cfg.trace_pins) trace.emplace(scenario);
     lathe::LatheRig rig(cfg);
-    run_operator(rig, s.operator_steps);
+    TimedProgress progress(std::cerr, scenario.progress, script_s(s.operator_steps), scenario.architecture);
+    run_operator(rig, s.operator_steps, progress);
     if (trace) trace->write(rig);
 
     ArchRun out;

@@ -6,6 +6,7 @@
 namespace {
 
 using cnc::lathe::LcdLines;
+using cnc::lathe::LcdScreen;
 using cnc::lathe::LcdTranscript;
 
 TEST(LcdTranscript, KeepsSettledScreensOnly) {
@@ -25,6 +26,21 @@ TEST(LcdTranscript, KeepsSettledScreensOnly) {
     ASSERT_EQ(s.size(), 2U);
     EXPECT_EQ(s[1].lines[0], "move");
     EXPECT_DOUBLE_EQ(s[1].t_s, 2.000);
+}
+
+// The screens' bars stay in one column when the times gain a digit (9.999 s -> 10.000 s -> 100.000 s): every line
+// is as long as the others, the times right-aligned.
+TEST(LcdTranscript, TextKeepsTheScreensInOneColumn) {
+    const std::vector<LcdScreen> screens = {{0.001, LcdLines{"cut", "1"}},
+                                            {9.9994, LcdLines{"cut", "2"}},
+                                            {10.0, LcdLines{"cut", "3"}},
+                                            {100.25, LcdLines{"cut", "4"}}};
+    EXPECT_EQ(cnc::lathe::transcript_text(screens),
+              "    0.001 s  |cut|1|\n"
+              "    9.999 s  |cut|2|\n"
+              "   10.000 s  |cut|3|\n"
+              "  100.250 s  |cut|4|\n");
+    EXPECT_EQ(cnc::lathe::transcript_text({}), "");
 }
 
 }  // namespace

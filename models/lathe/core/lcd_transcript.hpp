@@ -4,6 +4,7 @@
 // reads, and the liquid crystal itself needs tens of ms to switch (typical TN response, 20 to 50 ms), so they
 // are left out.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "lathe/core/hd44780.hpp"
@@ -16,6 +17,10 @@ struct LcdScreen {
     double t_s = 0.0;  // when these contents were complete (the last change)
     LcdLines lines;
 };
+
+// One line per screen, "  <time> s  |<line 1>|<line 2>|", the times (s, to the ms) right-aligned to the widest,
+// so that the screens stay in one column past 10 s and 100 s.
+[[nodiscard]] std::string transcript_text(const std::vector<LcdScreen>& screens);
 
 class LcdTranscript {
 public:

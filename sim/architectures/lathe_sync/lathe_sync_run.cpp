@@ -8,6 +8,7 @@
 
 #include "architectures/lathe_sync/lathe_settings.hpp"
 #include "architectures/lathe_sync/lathe_trace.hpp"
+#include "lathe/core/lcd_transcript.hpp"
 #include "lathe/core/ratio_list.hpp"
 #include "lathe/core/thread_metrics.hpp"
 #include "lathe/rig/lathe_rig.hpp"
@@ -71,8 +72,8 @@ void report_lcd(lathe::LatheRig& rig, nlohmann::json& d, std::ostringstream& tex
          << " ms or more):\n";
     for (const lathe::LcdScreen& screen : rig.lcd_screens()) {
         screens.push_back({{"t_s", screen.t_s}, {"lines", {screen.lines[0], screen.lines[1]}}});
-        text << "  " << fixed(screen.t_s, 3) << " s  |" << screen.lines[0] << "|" << screen.lines[1] << "|\n";
     }
+    text << lathe::transcript_text(rig.lcd_screens());
     d["lcd_transcript"] = screens;
 }
 

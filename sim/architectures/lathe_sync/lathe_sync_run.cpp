@@ -4,12 +4,15 @@
 #include <cstdio>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "architectures/lathe_sync/lathe_settings.hpp"
 #include "architectures/lathe_sync/lathe_trace.hpp"
 #include "lathe/core/ratio_list.hpp"
 #include "lathe/core/thread_metrics.hpp"
 #include "lathe/rig/lathe_rig.hpp"
+#include "metrics/metrics.hpp"
 #include "run/arch_run.hpp"
 #include "scenario/scenario.hpp"
 
@@ -71,6 +74,14 @@ void report_lcd(lathe::LatheRig& rig, nlohmann::json& d, std::ostringstream& tex
     d["lcd_transcript"] = screens;
 }
 
+// Where the phase error's max lies, for the summary: which pass, which way, at which spindle revolution.
+std::string phase_max_where(const lathe::ThreadMetrics& m) {
+    if (m.phase_error_max_um <= 0.0) return "";
+    return " (pass " + std::to_string(m.phase_error_max_pass + 1) +
+           (m.phase_error_max_signed_um > 0.0 ? " ahead of" : " behind") + " pass 1 at revolution " +
+           fixed(static_cast<double>(m.phase_error_max_pulse) / lathe::kSpindleSlots, 3) + ")";
+}
+
 void run_operator(lathe::LatheRig& rig, const std::vector<OperatorStep>& steps) {
     for (const OperatorStep& step : steps) {
         if (step.held != 0) rig.hold(step.held, step.hold_s);
@@ -93,6 +104,7 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     cfg.cut = {s.cut_depth_mm, s.cut_kc_n_per_mm2, s.workpiece_diameter_mm};
     cfg.feed_mm_per_rev = s.pitch_centi_mm / 100.0;
     cfg.trace_pins = !scenario.vcd_path.empty();
+    cfg.record_carriage = scenario.keep_run_input;
     std::optional<LatheTrace> trace;
     if (cfg.trace_pins) trace.emplace(scenario);
     lathe::LatheRig rig(cfg);
@@ -100,6 +112,9 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     if (trace) trace->write(rig);
 
     ArchRun out;
+    // The carriage for --samples only: the XY metrics have no moves to measure it against.
+    out.input.tool = std::move(rig.carriage_samples);
+    out.metrics = metrics::compute_metrics(metrics::RunInput{});
     nlohmann::json& d = out.details;
     std::ostringstream text;
     text << "lathe-sync: " << s.mode << " at " << fixed(s.spindle_rpm, 1) << " rpm, firmware "
@@ -177,6 +192,10 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
                           {"following_error_trend_pulses_per_s", trend},
                           {"overshoot_after_brake_pulses",
                            overshoot_measured ? nlohmann::json(overshoot_pulses) : nlohmann::json(nullptr)}});
+        if (scenario.detail) {  // the data of the phase and following error plots (docs/metrics.md "Lathe")
+            passes.back()["carriage_at_spindle_pulses_mm"] = p.thread.x_mm;
+            passes.back()["motor_pulses_at_spindle_pulses"] = p.motor_pulses;
+        }
         text << "pass " << passes.size() << ": " << fixed(p.pid_s, 3) << " s under the PID, at 1023 for "
              << fixed(p.at_full_s, 3) << " s, at 0 for " << fixed(p.at_zero_s, 3) << " s; following error max "
              << fixed(max_e, 1) << " pulses, trend " << fixed(trend, 1) << " pulses/s; overshoot after the brake "
@@ -195,6 +214,9 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
                    {"phase_error_max_um", m.phase_error_max_um},
                    {"phase_error_end_um", m.phase_error_end_um},
                    {"phase_error_max_whole_pass_um", whole.phase_error_max_um},
+                   {"phase_error_max_signed_um", m.phase_error_max_signed_um},
+                   {"phase_error_max_pass", m.phase_error_max_pass + 1},
+                   {"phase_error_max_revolution", static_cast<double>(m.phase_error_max_pulse) / lathe::kSpindleSlots},
                    {"common_from_mm", m.common_from_mm},
                    {"common_to_mm", m.common_to_mm}};
     d["following_error_grows"] = growing;
@@ -203,9 +225,9 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
          << " revolutions of each left out): pitch error mean " << fixed(m.pitch_error_mean_um, 2) << " um, max "
          << fixed(m.pitch_error_max_um, 2) << " um per revolution; fitted pitch error "
          << fixed(m.pitch_fit_error_um, 3) << " um (" << fixed(m.pitch_fit_error_um / (pitch_mm * 10.0), 4)
-         << " %); phase error between passes max " << fixed(m.phase_error_max_um, 2) << " um, at the end "
-         << fixed(m.phase_error_end_um, 2) << " um (whole passes: max " << fixed(whole.phase_error_max_um, 2)
-         << " um)\n";
+         << " %); phase error between passes max " << fixed(m.phase_error_max_um, 2) << " um" << phase_max_where(m)
+         << ", at the end " << fixed(m.phase_error_end_um, 2) << " um (whole passes: max "
+         << fixed(whole.phase_error_max_um, 2) << " um)\n";
     if (growing) {
         text << "the following error GROWS: the spindle is faster than the motor can follow (the PID output sat at "
                 "its clamp 1023 for "

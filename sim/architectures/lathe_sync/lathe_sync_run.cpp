@@ -205,20 +205,23 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     d["passes"] = passes;
     const lathe::ThreadMetrics m = lathe::thread_metrics(thread, pitch_mm, lathe::kSpindleSlots, s.settle_revolutions);
     const lathe::ThreadMetrics whole = lathe::thread_metrics(thread, pitch_mm, lathe::kSpindleSlots);
-    d["thread"] = {{"settle_revolutions", s.settle_revolutions},
-                   {"revolutions", m.revolutions},
-                   {"pitch_error_mean_um", m.pitch_error_mean_um},
-                   {"pitch_error_max_um", m.pitch_error_max_um},
-                   {"pitch_fit_error_um", m.pitch_fit_error_um},
-                   {"pitch_fit_error_pct", m.pitch_fit_error_um / (pitch_mm * 10.0)},
-                   {"phase_error_max_um", m.phase_error_max_um},
-                   {"phase_error_end_um", m.phase_error_end_um},
-                   {"phase_error_max_whole_pass_um", whole.phase_error_max_um},
-                   {"phase_error_max_signed_um", m.phase_error_max_signed_um},
-                   {"phase_error_max_pass", m.phase_error_max_pass + 1},
-                   {"phase_error_max_revolution", static_cast<double>(m.phase_error_max_pulse) / lathe::kSpindleSlots},
-                   {"common_from_mm", m.common_from_mm},
-                   {"common_to_mm", m.common_to_mm}};
+    const bool has_phase = m.phase_error_max_um > 0.0;  // else no pass differs from pass 1: no place to name
+    d["thread"] = {
+        {"settle_revolutions", s.settle_revolutions},
+        {"revolutions", m.revolutions},
+        {"pitch_error_mean_um", m.pitch_error_mean_um},
+        {"pitch_error_max_um", m.pitch_error_max_um},
+        {"pitch_fit_error_um", m.pitch_fit_error_um},
+        {"pitch_fit_error_pct", m.pitch_fit_error_um / (pitch_mm * 10.0)},
+        {"phase_error_max_um", m.phase_error_max_um},
+        {"phase_error_end_um", m.phase_error_end_um},
+        {"phase_error_max_whole_pass_um", whole.phase_error_max_um},
+        {"phase_error_max_signed_um", m.phase_error_max_signed_um},
+        {"phase_error_max_pass", has_phase ? nlohmann::json(m.phase_error_max_pass + 1) : nullptr},
+        {"phase_error_max_revolution",
+         has_phase ? nlohmann::json(static_cast<double>(m.phase_error_max_pulse) / lathe::kSpindleSlots) : nullptr},
+        {"common_from_mm", m.common_from_mm},
+        {"common_to_mm", m.common_to_mm}};
     d["following_error_grows"] = growing;
     d["pid_at_1023_s"] = at_full_s;
     text << "thread (" << rig.passes.size() << " passes, first " << s.settle_revolutions

@@ -30,6 +30,27 @@ TEST(ThreadMetrics, PitchAndPhaseOverTheCommonLength) {
     EXPECT_NEAR(m.pitch_fit_error_um, 0.5, 1e-9);
     EXPECT_NEAR(m.phase_error_max_um, 13.975, 1e-9);
     EXPECT_NEAR(m.phase_error_end_um, 13.4875, 1e-9);
+    EXPECT_EQ(m.phase_error_max_pass, 1u);
+    EXPECT_EQ(m.phase_error_max_pulse, 399u);
+    EXPECT_NEAR(m.phase_error_max_signed_um, 13.975, 1e-9);
+}
+
+// Pass 2 runs 30 um behind pass 1 at pulse 100 only, pass 3 20 um ahead at pulse 200 only: the max is pass 2's lag,
+// where it lies and with its sign.
+TEST(ThreadMetrics, PhaseMaxSaysWhichPassWhereAndWhichWay) {
+    ThreadPass a;
+    ThreadPass b;
+    ThreadPass c;
+    for (int j = 0; j <= 400; ++j) {
+        a.x_mm.push_back(j / 40.0);
+        b.x_mm.push_back(j / 40.0 - (j == 100 ? 0.030 : 0.0));
+        c.x_mm.push_back(j / 40.0 + (j == 200 ? 0.020 : 0.0));
+    }
+    const auto m = cnc::lathe::thread_metrics({a, b, c}, 1.0, 40);
+    EXPECT_NEAR(m.phase_error_max_um, 30.0, 1e-9);
+    EXPECT_NEAR(m.phase_error_max_signed_um, -30.0, 1e-9);
+    EXPECT_EQ(m.phase_error_max_pass, 1u);
+    EXPECT_EQ(m.phase_error_max_pulse, 100u);
 }
 
 TEST(ThreadMetrics, NoPassesNoFigures) {

@@ -70,7 +70,12 @@ ThreadMetrics thread_metrics(const std::vector<ThreadPass>& passes, double pitch
                 continue;
             }
             d_um.push_back((passes[k].x_mm[j] - first.x_mm[j]) * 1000.0);
-            m.phase_error_max_um = std::max(m.phase_error_max_um, std::abs(d_um.back()));
+            if (std::abs(d_um.back()) > m.phase_error_max_um) {
+                m.phase_error_max_um = std::abs(d_um.back());
+                m.phase_error_max_signed_um = d_um.back();
+                m.phase_error_max_pass = k;
+                m.phase_error_max_pulse = j;
+            }
         }
         if (d_um.empty()) continue;
         const std::size_t n = std::min(d_um.size(), rev);

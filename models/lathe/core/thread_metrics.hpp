@@ -1,6 +1,7 @@
 // The thread a multi-pass cut leaves (docs/metrics.md, "Lathe"): pitch error per spindle revolution and phase error
 // between passes, from the carriage position at each spindle pulse of each pass.
 #pragma once
+#include <cstddef>
 #include <vector>
 
 namespace cnc::lathe {
@@ -25,6 +26,11 @@ struct ThreadMetrics {
     // largest |mean| over the last common revolution (where the passes have settled).
     double phase_error_max_um = 0.0;
     double phase_error_end_um = 0.0;
+    // Where that max lies: the later pass (index into the passes, 0 when there is none), the spindle pulse j
+    // counted from the passes' start index, and its sign (+: the later pass ahead of pass 1 along the cut).
+    std::size_t phase_error_max_pass = 0;
+    std::size_t phase_error_max_pulse = 0;
+    double phase_error_max_signed_um = 0.0;
     // The common length: the carriage range every pass covers.
     double common_from_mm = 0.0;
     double common_to_mm = 0.0;

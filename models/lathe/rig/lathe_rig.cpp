@@ -85,7 +85,8 @@ LatheRig::LatheRig(const LatheRigConfig& cfg)
       spindle_encoder(kSpindleSlots, 0.0),
       spindle_index(1.0, -0.5 / kSpindleSlots),
       spindle(spindle_at(cfg)),
-      m_cut_torque_nm(cutting_torque_nm(cfg.cut, cfg.feed_mm_per_rev)) {
+      m_cut_torque_nm(cutting_torque_nm(cfg.cut, cfg.feed_mm_per_rev)),
+      m_record_carriage(cfg.record_carriage) {
     chip.on_output_change([this](Cycle c) { outputs_changed(c); });
     drive(kLcdD7, false);  // the LCD's busy flag (D7) always reads ready
     drive(kLimit, true);   // limit switch closed (normally 1)
@@ -105,6 +106,12 @@ double LatheRig::now_s() const {
 
 bool LatheRig::pid_running() const {
     return chip.timer(0).divisor() != 0;
+}
+
+void LatheRig::sample_carriage() {
+    if (!m_record_carriage) return;
+    constexpr TimePs kPsPerCycle = kPsPerSec / static_cast<TimePs>(kFcpuHz);
+    carriage_samples.push_back({static_cast<TimePs>(chip.cycle()) * kPsPerCycle, {train.carriage_mm(), 0.0}});
 }
 
 void LatheRig::drive(const Pin& pin, bool level) {
@@ -137,7 +144,10 @@ void LatheRig::update_spindle(bool force) {
     const double rev = spindle.rev();
     const bool slot_level = spindle_encoder.y_at(rev);
     const bool index_level = spindle_index.y_at(rev);
-    if (force || slot_level != m_spindle_level) drive(kSpindlePulse, slot_level);
+    if (force || slot_level != m_spindle_level) {
+        drive(kSpindlePulse, slot_level);
+        sample_carriage();
+    }
     if (force || index_level != m_index) drive(kIndex, index_level);
     if (!force && m_spindle_level && !slot_level && pid_running() && !passes.empty()) {
         passes.back().thread.x_mm.push_back(m_cut_sign * train.carriage_mm());
@@ -201,7 +211,10 @@ void LatheRig::step() {
     chip.run_until(to);
     spindle.advance_to(now_s(), pid_running() ? m_cut_torque_nm : 0.0);
     const bool level = motor_encoder.y_at(motor.state().angle_rad / (2 * kPi));
-    if (level != m_motor_level) drive(kMotorPulse, level);
+    if (level != m_motor_level) {
+        drive(kMotorPulse, level);
+        sample_carriage();
+    }
     if (m_motor_level && !level) ++motor_pulses;
     m_motor_level = level;
     record(dt);

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "avr/avr_chip.hpp"
+#include "common/tool_sample.hpp"
 #include "lathe/core/dc_motor.hpp"
 #include "lathe/core/drive_train.hpp"
 #include "lathe/core/hd44780.hpp"
@@ -48,6 +49,9 @@ struct LatheRigConfig {
     CutParams cut;          // depth 0: no cutting load
     double feed_mm_per_rev = 0.0;
     bool trace_pins = false;  // record the pin edges (LatheRig::trace)
+    // Record the carriage at each motor and spindle encoder edge (LatheRig::carriage_samples): an independent
+    // reading of the thread beside the pins (cncsim run --samples).
+    bool record_carriage = false;
 };
 
 // One cutting pass as recorded: the carriage along the cut at its start and at each spindle pulse, the motor
@@ -113,6 +117,9 @@ public:
     Hd44780 lcd;
     std::vector<RecordedPass> passes;
     long motor_pulses = 0;
+    // The carriage (x: mm from power-up, positive with DIR1 high) at each motor and spindle encoder edge, at the
+    // edge's cycle (LatheRigConfig::record_carriage).
+    std::vector<ToolSample> carriage_samples;
 
 private:
     void outputs_changed(avr::Cycle c);
@@ -120,6 +127,7 @@ private:
     void update_keypad();
     void record(double dt_s);  // the step just run, s
     void drive(const avr::Pin& pin, bool level);
+    void sample_carriage();
 
     double m_cut_torque_nm;
     LcdTranscript m_transcript;
@@ -136,6 +144,7 @@ private:
     avr::Cycle m_slice_cycles = 0;
     avr::Cycle m_next_slice = 0;
     std::function<void(double)> m_on_slice;
+    bool m_record_carriage;
     bool m_trace_on = false;
     std::vector<bool> m_trace_initial;
     std::vector<bool> m_trace_level;

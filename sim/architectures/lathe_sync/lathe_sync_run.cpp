@@ -5,6 +5,8 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "architectures/lathe_sync/lathe_settings.hpp"
 #include "architectures/lathe_sync/lathe_trace.hpp"
@@ -12,6 +14,7 @@
 #include "lathe/core/ratio_list.hpp"
 #include "lathe/core/thread_metrics.hpp"
 #include "lathe/rig/lathe_rig.hpp"
+#include "metrics/metrics.hpp"
 #include "run/arch_run.hpp"
 #include "run/timed_progress.hpp"
 #include "scenario/scenario.hpp"
@@ -87,6 +90,14 @@ double script_s(const std::vector<OperatorStep>& steps) {
     return total_s;
 }
 
+// Where the phase error's max lies, for the summary: which pass, which way, at which spindle revolution.
+std::string phase_max_where(const lathe::ThreadMetrics& m) {
+    if (m.phase_error_max_um <= 0.0) return "";
+    return " (pass " + std::to_string(m.phase_error_max_pass + 1) +
+           (m.phase_error_max_signed_um > 0.0 ? " ahead of" : " behind") + " pass 1 at revolution " +
+           fixed(static_cast<double>(m.phase_error_max_pulse) / lathe::kSpindleSlots, 3) + ")";
+}
+
 void run_operator(lathe::LatheRig& rig, const std::vector<OperatorStep>& steps, TimedProgress& progress) {
     rig.on_slice(kProgressSliceS, [&progress](double now_s) { progress.update(now_s); });
     for (const OperatorStep& step : steps) {
@@ -111,6 +122,7 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     cfg.cut = {s.cut_depth_mm, s.cut_kc_n_per_mm2, s.workpiece_diameter_mm};
     cfg.feed_mm_per_rev = s.pitch_centi_mm / 100.0;
     cfg.trace_pins = !scenario.vcd_path.empty();
+    cfg.record_carriage = scenario.keep_run_input;
     std::optional<LatheTrace> trace;
     if (cfg.trace_pins) trace.emplace(scenario);
     lathe::LatheRig rig(cfg);
@@ -119,6 +131,9 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     if (trace) trace->write(rig);
 
     ArchRun out;
+    // The carriage for --samples only: the XY metrics have no moves to measure it against.
+    out.input.tool = std::move(rig.carriage_samples);
+    out.metrics = metrics::compute_metrics(metrics::RunInput{});
     nlohmann::json& d = out.details;
     std::ostringstream text;
     text << "lathe-sync: " << s.mode << " at " << fixed(s.spindle_rpm, 1) << " rpm, firmware "
@@ -196,6 +211,10 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
                           {"following_error_trend_pulses_per_s", trend},
                           {"overshoot_after_brake_pulses",
                            overshoot_measured ? nlohmann::json(overshoot_pulses) : nlohmann::json(nullptr)}});
+        if (scenario.detail) {  // the data of the phase and following error plots (docs/metrics.md "Lathe")
+            passes.back()["carriage_at_spindle_pulses_mm"] = p.thread.x_mm;
+            passes.back()["motor_pulses_at_spindle_pulses"] = p.motor_pulses;
+        }
         text << "pass " << passes.size() << ": " << fixed(p.pid_s, 3) << " s under the PID, at 1023 for "
              << fixed(p.at_full_s, 3) << " s, at 0 for " << fixed(p.at_zero_s, 3) << " s; following error max "
              << fixed(max_e, 1) << " pulses, trend " << fixed(trend, 1) << " pulses/s; overshoot after the brake "
@@ -205,26 +224,32 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     d["passes"] = passes;
     const lathe::ThreadMetrics m = lathe::thread_metrics(thread, pitch_mm, lathe::kSpindleSlots, s.settle_revolutions);
     const lathe::ThreadMetrics whole = lathe::thread_metrics(thread, pitch_mm, lathe::kSpindleSlots);
-    d["thread"] = {{"settle_revolutions", s.settle_revolutions},
-                   {"revolutions", m.revolutions},
-                   {"pitch_error_mean_um", m.pitch_error_mean_um},
-                   {"pitch_error_max_um", m.pitch_error_max_um},
-                   {"pitch_fit_error_um", m.pitch_fit_error_um},
-                   {"pitch_fit_error_pct", m.pitch_fit_error_um / (pitch_mm * 10.0)},
-                   {"phase_error_max_um", m.phase_error_max_um},
-                   {"phase_error_end_um", m.phase_error_end_um},
-                   {"phase_error_max_whole_pass_um", whole.phase_error_max_um},
-                   {"common_from_mm", m.common_from_mm},
-                   {"common_to_mm", m.common_to_mm}};
+    const bool has_phase = m.phase_error_max_um > 0.0;  // else no pass differs from pass 1: no place to name
+    d["thread"] = {
+        {"settle_revolutions", s.settle_revolutions},
+        {"revolutions", m.revolutions},
+        {"pitch_error_mean_um", m.pitch_error_mean_um},
+        {"pitch_error_max_um", m.pitch_error_max_um},
+        {"pitch_fit_error_um", m.pitch_fit_error_um},
+        {"pitch_fit_error_pct", m.pitch_fit_error_um / (pitch_mm * 10.0)},
+        {"phase_error_max_um", m.phase_error_max_um},
+        {"phase_error_end_um", m.phase_error_end_um},
+        {"phase_error_max_whole_pass_um", whole.phase_error_max_um},
+        {"phase_error_max_signed_um", m.phase_error_max_signed_um},
+        {"phase_error_max_pass", has_phase ? nlohmann::json(m.phase_error_max_pass + 1) : nullptr},
+        {"phase_error_max_revolution",
+         has_phase ? nlohmann::json(static_cast<double>(m.phase_error_max_pulse) / lathe::kSpindleSlots) : nullptr},
+        {"common_from_mm", m.common_from_mm},
+        {"common_to_mm", m.common_to_mm}};
     d["following_error_grows"] = growing;
     d["pid_at_1023_s"] = at_full_s;
     text << "thread (" << rig.passes.size() << " passes, first " << s.settle_revolutions
          << " revolutions of each left out): pitch error mean " << fixed(m.pitch_error_mean_um, 2) << " um, max "
          << fixed(m.pitch_error_max_um, 2) << " um per revolution; fitted pitch error "
          << fixed(m.pitch_fit_error_um, 3) << " um (" << fixed(m.pitch_fit_error_um / (pitch_mm * 10.0), 4)
-         << " %); phase error between passes max " << fixed(m.phase_error_max_um, 2) << " um, at the end "
-         << fixed(m.phase_error_end_um, 2) << " um (whole passes: max " << fixed(whole.phase_error_max_um, 2)
-         << " um)\n";
+         << " %); phase error between passes max " << fixed(m.phase_error_max_um, 2) << " um" << phase_max_where(m)
+         << ", at the end " << fixed(m.phase_error_end_um, 2) << " um (whole passes: max "
+         << fixed(whole.phase_error_max_um, 2) << " um)\n";
     if (growing) {
         text << "the following error GROWS: the spindle is faster than the motor can follow (the PID output sat at "
                 "its clamp 1023 for "

@@ -1,4 +1,5 @@
 // cncsim: the command line. Exit codes: 0 ok, 1 run failed, 2 bad input.
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -19,6 +20,7 @@
 #include "compare/compare.hpp"
 #include "compare/compare_check.hpp"
 #include "compare/compare_outputs.hpp"
+#include "init_cmd.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/pulse/commanded_rates.hpp"
 #include "metrics/report/report.hpp"
@@ -29,6 +31,7 @@
 #include "output/samples_csv.hpp"
 #include "plots/run_plots.hpp"
 #include "run/run.hpp"
+#include "scenario/key_listing.hpp"
 #include "scenario/scenario.hpp"
 
 namespace {
@@ -41,10 +44,31 @@ void write_json(const std::string& path, const nlohmann::json& j) {
     cnc::sim::write_output_file(path, "--report", cnc::metrics::report_text(j));
 }
 
-int cmd_run(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& vcd,
-            const std::string& report, bool detail, const std::string& progress, const std::string& plots,
-            const std::string& plot_data, const std::string& samples) {
-    cnc::sim::Scenario s = cnc::sim::load_scenario(scenario_path, sets);
+// What `run` and `compare` read: a scenario, or a job with the machine it runs on (scenario.hpp, input_kind).
+struct Input {
+    std::string file;
+    std::string machine;  // --machine
+    std::string arch;     // run --arch
+    [[nodiscard]] bool job() const { return cnc::sim::input_kind(file) == cnc::sim::InputKind::Job; }
+};
+
+cnc::sim::Scenario load_input(const Input& in, const std::vector<std::string>& sets) {
+    if (!in.arch.empty()) (void)cnc::sim::find_architecture(in.arch, "--arch " + in.arch);
+    if (in.job()) return cnc::sim::load_job_run({in.file, in.machine, in.arch}, sets);
+    if (!in.machine.empty()) {
+        throw cnc::BadInput("--machine " + in.machine,
+                            "goes with a job (cncsim run JOB.nc --machine MACHINE.toml); " + in.file +
+                                " is a scenario, which names its machine file as scenario.machine");
+    }
+    std::vector<std::string> with_arch = sets;  // --arch first: a --set of the key still wins
+    if (!in.arch.empty()) with_arch.insert(with_arch.begin(), "scenario.architecture=" + in.arch);
+    return cnc::sim::load_scenario(in.file, with_arch);
+}
+
+int cmd_run(const Input& input, const std::vector<std::string>& sets, const std::string& vcd, const std::string& report,
+            bool detail, const std::string& progress, const std::string& plots, const std::string& plot_data,
+            const std::string& samples) {
+    cnc::sim::Scenario s = load_input(input, sets);
     if (detail) s.detail = true;
     if (!vcd.empty()) s.vcd_path = vcd;
     if (!report.empty()) s.report_path = report;
@@ -137,7 +161,14 @@ std::string job_architectures(const std::string& separator = ", ", bool shown = 
     return text;
 }
 
-int cmd_compare(const std::string& scenario_path, const std::string& archs, const std::vector<std::string>& sets,
+std::string read_text(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+int cmd_compare(const Input& input, const std::string& archs, const std::vector<std::string>& sets,
                 const std::string& format_name, const std::string& report, const std::string& out_dir) {
     std::vector<std::string> list;
     std::stringstream ss(archs);
@@ -149,32 +180,50 @@ int cmd_compare(const std::string& scenario_path, const std::string& archs, cons
         list.push_back(a);
     }
     // Bad input is reported once, here, not once per child.
-    const cnc::sim::Scenario scenario = cnc::sim::load_scenario(scenario_path, sets);
-    cnc::sim::check_compare_columns(scenario_path, list, sets);
+    const cnc::sim::Scenario scenario = load_input(input, sets);
+    const cnc::sim::CompareInput compare_input{
+        input.file, [&input](const std::vector<std::string>& overrides) { return load_input(input, overrides); }};
+    cnc::sim::check_compare_columns(compare_input, list, sets);
     if (!report.empty()) cnc::sim::check_output_path(report, "--report");
-    const bool with_baseline = cnc::sim::baseline_runs(scenario_path, list, sets, std::cerr);
+    const bool with_baseline = cnc::sim::baseline_runs(compare_input, list, sets, std::cerr);
     if (!out_dir.empty()) {
         cnc::sim::check_output_dir(out_dir, "--out");
         std::filesystem::create_directories(out_dir);
     }
     const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+    std::vector<std::string> child_input = {input.file};
+    if (!input.machine.empty()) child_input.insert(child_input.end(), {"--machine", input.machine});
     const cnc::sim::Comparison comparison =
-        cnc::sim::run_compare(self, scenario_path, list, sets, out_dir, with_baseline);
+        cnc::sim::run_compare(self, child_input, list, sets, out_dir, with_baseline);
     const cnc::sim::TableFormat format = format_name == "markdown" ? cnc::sim::TableFormat::Markdown
                                          : format_name == "csv"    ? cnc::sim::TableFormat::Csv
                                          : format_name == "json"   ? cnc::sim::TableFormat::Json
                                                                    : cnc::sim::TableFormat::Text;
     std::cout << cnc::sim::compare_table(comparison, format);
     if (!report.empty()) write_json(report, cnc::sim::compare_json(comparison));
-    if (!out_dir.empty()) cnc::sim::write_compare_outputs(comparison, scenario_path, sets, scenario.job_path, out_dir);
+    if (!out_dir.empty()) {
+        const bool job = input.job();
+        const std::string shown = job ? input.machine : input.file;
+        cnc::sim::write_compare_outputs(comparison, shown.empty() ? "the default machine" : shown,
+                                        shown.empty() ? "" : read_text(shown), sets, scenario.job_path, out_dir);
+    }
     int worst = kExitOk;
     for (const auto& c : comparison.columns)
         worst = std::max(worst, c.exit_code == kExitBadInput ? kExitBadInput : c.exit_code);
     return worst;
 }
 
-int cmd_keys() {
-    std::cout << cnc::sim::keys_markdown(cnc::sim::scenario_keys());
+// The Markdown table (what docs/scenario-reference.md holds) to a pipe or a file, lines the terminal's width to a
+// terminal.
+int cmd_keys(const std::string& prefix) {
+    std::vector<cnc::sim::KeyDoc> keys = cnc::sim::scenario_keys();
+    if (!prefix.empty()) keys = cnc::sim::keys_with_prefix(keys, prefix);
+    winsize size{};
+    if (isatty(STDOUT_FILENO) && ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0) {
+        std::cout << cnc::sim::keys_text(keys, size.ws_col);
+    } else {
+        std::cout << cnc::sim::keys_markdown(keys);
+    }
     return kExitOk;
 }
 
@@ -194,13 +243,25 @@ int dispatch(int argc, char* argv[]) {
     app.set_version_flag("--version", std::string("cncsim ") + CNCSIM_VERSION + "\nSystemC " + sc_core::sc_release(),
                          "print the cncsim and SystemC versions and exit");
 
-    std::string scenario, vcd, report, vcd_in, commanded, plots, plot_data, out_dir, samples;
+    std::string scenario, vcd, report, vcd_in, commanded, plots, plot_data, out_dir, samples, keys_prefix;
+    std::string init_dir = ".";
+    Input input;
     std::vector<std::string> sets, steps, dirs, enables;
     double steps_per_mm = 0.0;
     bool detail = false;
 
-    CLI::App* run = app.add_subcommand("run", "run one scenario, print the summary, write the JSON report");
-    run->add_option("scenario", scenario, "scenario file (TOML)")->required();
+    const std::string input_help =
+        "scenario (TOML), or a job (G-code: .nc, .ngc, .gcode, .tap, .txt, ...; a steps file) to run on --machine "
+        "or the default machine (docs/usage.md says how the two are told apart)";
+    const std::string machine_help =
+        "with a job: the machine file (TOML: its [machine], [driver], [motor], [mechanics] tables; `cncsim init` "
+        "writes one); default: every machine key's default, the seed 000 machine";
+    CLI::App* run = app.add_subcommand("run", "run one scenario or job, print the summary, write the JSON report");
+    run->add_option("file", input.file, input_help)->required();
+    run->add_option("--machine", input.machine, machine_help);
+    run->add_option(
+        "--arch", input.arch,
+        "architecture, instead of the scenario's (a job's default: " + cnc::sim::architecture_names().front() + ")");
     run->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
     run->add_option("--vcd", vcd, "write a VCD trace to this file");
     run->add_option("--report", report, "write the JSON report to this file");
@@ -238,7 +299,8 @@ int dispatch(int argc, char* argv[]) {
     std::string table_format = "text";
     CLI::App* compare =
         app.add_subcommand("compare", "the same job and machine on several architectures, side by side");
-    compare->add_option("scenario", scenario, "scenario file (TOML); its architecture is overridden")->required();
+    compare->add_option("file", input.file, input_help + "; its architecture is overridden")->required();
+    compare->add_option("--machine", input.machine, machine_help);
     const cnc::sim::Architecture* baseline = cnc::sim::baseline_architecture();
     compare
         ->add_option("--arch", archs,
@@ -266,7 +328,12 @@ int dispatch(int argc, char* argv[]) {
     curve->add_option("--axis", curve_axis, "axis")->check(CLI::IsMember({"x", "y"}))->capture_default_str();
     curve->add_option("--csv", curve_csv, "also write the table as CSV to this file");
 
-    app.add_subcommand("keys", "print every scenario key (type, default, range, meaning) as Markdown");
+    CLI::App* keys = app.add_subcommand(
+        "keys", "print the scenario keys (type, default, range, meaning): Markdown, or lines to fit a terminal");
+    keys->add_option("prefix", keys_prefix, "only the keys that start with it (machine.x, link, ...)");
+    CLI::App* init = app.add_subcommand(
+        "init", "write a scenario, its machine file and a small job to start from (overwrites nothing)");
+    init->add_option("dir", init_dir, "folder to write them in (created if needed)")->capture_default_str();
 
     try {
         app.parse(argc, argv);
@@ -275,13 +342,14 @@ int dispatch(int argc, char* argv[]) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
     try {
-        if (run->parsed()) return cmd_run(scenario, sets, vcd, report, detail, progress, plots, plot_data, samples);
-        if (compare->parsed()) return cmd_compare(scenario, archs, sets, table_format, report, out_dir);
+        if (run->parsed()) return cmd_run(input, sets, vcd, report, detail, progress, plots, plot_data, samples);
+        if (compare->parsed()) return cmd_compare(input, archs, sets, table_format, report, out_dir);
         if (curve->parsed()) return cnc::sim::cmd_motor_curve(scenario, sets, curve_axis, curve_csv, std::cout);
         if (analyze->parsed()) {
             return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, commanded, report);
         }
-        return cmd_keys();
+        if (init->parsed()) return cnc::sim::cmd_init(init_dir, std::cout);
+        return cmd_keys(keys_prefix);
     } catch (const cnc::BadInput& e) {
         std::cerr << "cncsim: " << e.what() << '\n';
         return kExitBadInput;

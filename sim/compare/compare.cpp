@@ -143,12 +143,13 @@ std::string join(const std::vector<std::string>& parts, const char* sep) {
     return out;
 }
 
-std::vector<std::string> child_args(const std::string& self_exe, const std::string& scenario, const std::string& arch,
-                                    const std::vector<std::string>& sets, const fs::path& report,
-                                    const std::string& out_dir) {
+std::vector<std::string> child_args(const std::string& self_exe, const std::vector<std::string>& input,
+                                    const std::string& arch, const std::vector<std::string>& sets,
+                                    const fs::path& report, const std::string& out_dir) {
     // Progress as whole lines (a line per 10 % of the child's estimate), named by architecture.
-    std::vector<std::string> args = {
-        self_exe, "run", scenario, "--progress", "log", "--set", "scenario.architecture=" + arch};
+    std::vector<std::string> args = {self_exe, "run"};
+    args.insert(args.end(), input.begin(), input.end());
+    args.insert(args.end(), {"--progress", "log", "--set", "scenario.architecture=" + arch});
     for (const std::string& s : sets) {
         args.push_back("--set");
         args.push_back(s);
@@ -171,8 +172,9 @@ std::string status(const CompareColumn& c) {
     return c.exit_code == 2 ? "bad input" : "failed";
 }
 
-Comparison run_compare(const std::string& self_exe, const std::string& scenario, const std::vector<std::string>& asked,
-                       const std::vector<std::string>& sets, const std::string& out_dir, bool with_baseline) {
+Comparison run_compare(const std::string& self_exe, const std::vector<std::string>& input,
+                       const std::vector<std::string>& asked, const std::vector<std::string>& sets,
+                       const std::string& out_dir, bool with_baseline) {
     // The baseline runs too when it is not asked for; its report alone, in the temporary folder.
     std::vector<std::string> architectures = asked;
     const Architecture* baseline = baseline_architecture();
@@ -197,7 +199,7 @@ Comparison run_compare(const std::string& self_exe, const std::string& scenario,
             std::cerr << "cncsim compare: " << arch << (next < asked.size() ? "" : " (baseline)") << " running"
                       << std::endl;
             started[next] = std::chrono::steady_clock::now();
-            running[spawn_child(child_args(self_exe, scenario, arch, sets, report_dir(next) / (arch + ".json"),
+            running[spawn_child(child_args(self_exe, input, arch, sets, report_dir(next) / (arch + ".json"),
                                            with_outputs(next) ? out_dir : ""))] = next;
             ++next;
         }

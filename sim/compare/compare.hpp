@@ -27,12 +27,12 @@ struct Comparison {
 
 enum class TableFormat { Text, Markdown, Csv, Json };
 
-// Runs `self_exe run SCENARIO --set scenario.architecture=A [--set ...] --report R` for each architecture, and for
-// the baseline architecture when it is not one of them and `with_baseline`, as many at once as the machine has
-// cores. With `out_dir`,
+// Runs `self_exe run INPUT... --set scenario.architecture=A [--set ...] --report R` for each architecture (INPUT: the
+// scenario, or the job and its --machine), and for the baseline architecture when it is not one of them and
+// `with_baseline`, as many at once as the machine has cores. With `out_dir`,
 // R is out_dir/A.json and each child also writes out_dir/A.vcd and its plot data in out_dir/data/A/ (the baseline,
 // when it is not asked for, writes none of them); without, R is a temporary file.
-Comparison run_compare(const std::string& self_exe, const std::string& scenario,
+Comparison run_compare(const std::string& self_exe, const std::vector<std::string>& input,
                        const std::vector<std::string>& architectures, const std::vector<std::string>& sets,
                        const std::string& out_dir = "", bool with_baseline = true);
 

@@ -9,13 +9,13 @@
 
 namespace cnc::sim {
 
-std::optional<std::string> why_not_runnable(const std::string& scenario, const std::string& architecture,
+std::optional<std::string> why_not_runnable(const CompareInput& input, const std::string& architecture,
                                             const std::vector<std::string>& sets) {
     // The child's own order: the architecture first, then the user's --set.
     std::vector<std::string> overrides = {"scenario.architecture=" + architecture};
     overrides.insert(overrides.end(), sets.begin(), sets.end());
     try {
-        const Scenario s = load_scenario(scenario, overrides);
+        const Scenario s = input.load(overrides);
         const Architecture& a = find_architecture(s.architecture, s.file + ": scenario.architecture");
         if (a.job_use().runs_job) (void)load_job(s, a);
     } catch (const BadInput& e) {
@@ -24,13 +24,13 @@ std::optional<std::string> why_not_runnable(const std::string& scenario, const s
     return std::nullopt;
 }
 
-void check_compare_columns(const std::string& scenario, const std::vector<std::string>& architectures,
+void check_compare_columns(const CompareInput& input, const std::vector<std::string>& architectures,
                            const std::vector<std::string>& sets) {
     std::string runnable;              // "a,b": for --arch
     std::string refused;               // "ARCH cannot run it: why; ..."
     std::vector<std::string> reasons;  // each different reason once
     for (const std::string& a : architectures) {
-        const std::optional<std::string> why = why_not_runnable(scenario, a, sets);
+        const std::optional<std::string> why = why_not_runnable(input, a, sets);
         if (!why) {
             runnable += (runnable.empty() ? "" : ",") + a;
             continue;
@@ -41,18 +41,18 @@ void check_compare_columns(const std::string& scenario, const std::vector<std::s
     if (refused.empty()) return;
     // Said as `cncsim run` says it when no column differs.
     if (runnable.empty() && reasons.size() == 1) throw BadInput("", reasons.front());
-    const std::string what = "compare " + scenario + ": " + refused;
+    const std::string what = "compare " + input.name + ": " + refused;
     if (runnable.empty()) throw BadInput("", what);
     // A table with a column of nothing is no comparison: the user picks the columns that can be compared.
     throw BadInput("--arch", what + "; compare those that can with --arch " + runnable);
 }
 
-bool baseline_runs(const std::string& scenario, const std::vector<std::string>& architectures,
+bool baseline_runs(const CompareInput& input, const std::vector<std::string>& architectures,
                    const std::vector<std::string>& sets, std::ostream& log) {
     const Architecture* baseline = baseline_architecture();
     if (baseline == nullptr) return false;
     if (std::find(architectures.begin(), architectures.end(), baseline->name()) != architectures.end()) return true;
-    const std::optional<std::string> why = why_not_runnable(scenario, baseline->name(), sets);
+    const std::optional<std::string> why = why_not_runnable(input, baseline->name(), sets);
     if (why) log << "cncsim compare: no rows over " << baseline->name() << ", which cannot run it: " << *why << '\n';
     return !why;
 }

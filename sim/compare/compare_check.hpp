@@ -1,6 +1,7 @@
 // What compare checks before it starts a child: each column's scenario as its `cncsim run` reads it, so that bad
 // input is reported once, by compare itself, and no child starts for a comparison that cannot be made.
 #pragma once
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -8,20 +9,29 @@
 
 namespace cnc::sim {
 
-// Why `cncsim run SCENARIO --set scenario.architecture=ARCH [--set ...]` would refuse its input: the scenario
-// loaded with those overrides (load_scenario), then its job read and checked against the machine as that
+struct Scenario;
+
+// What compare compares: its input as the user named it (a scenario, or a job and its machine), and how a child's
+// `cncsim run` reads it with a list of --set overrides.
+struct CompareInput {
+    std::string name;
+    std::function<Scenario(const std::vector<std::string>& overrides)> load;
+};
+
+// Why `cncsim run INPUT --set scenario.architecture=ARCH [--set ...]` would refuse its input: the input loaded
+// with those overrides, then its job read and checked against the machine as that
 // architecture takes it (load_job). nullopt when it would not.
-[[nodiscard]] std::optional<std::string> why_not_runnable(const std::string& scenario, const std::string& architecture,
+[[nodiscard]] std::optional<std::string> why_not_runnable(const CompareInput& input, const std::string& architecture,
                                                           const std::vector<std::string>& sets);
 
 // Throws cnc::BadInput when any of `architectures` cannot run the scenario: the message once when they all give the
 // same one, else each architecture with its own, and which of them could run it (for --arch).
-void check_compare_columns(const std::string& scenario, const std::vector<std::string>& architectures,
+void check_compare_columns(const CompareInput& input, const std::vector<std::string>& architectures,
                            const std::vector<std::string>& sets);
 
 // Whether compare runs the baseline (Architecture::baseline) beside `architectures`, when it is not one of them:
 // not when it cannot run the scenario, which is then compared without the rows over it (said on `log`).
-[[nodiscard]] bool baseline_runs(const std::string& scenario, const std::vector<std::string>& architectures,
+[[nodiscard]] bool baseline_runs(const CompareInput& input, const std::vector<std::string>& architectures,
                                  const std::vector<std::string>& sets, std::ostream& log);
 
 }  // namespace cnc::sim

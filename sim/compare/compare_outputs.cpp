@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <stdexcept>
 
 #include "common/text_format.hpp"
@@ -26,18 +25,11 @@ void write_file(const fs::path& file, const std::string& text) {
     write_output_file(file.string(), "--out", text);
 }
 
-std::string read_file(const std::string& path) {
-    std::ifstream in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 }  // namespace
 
-void write_compare_outputs(const Comparison& comparison, const std::string& scenario_path,
-                           const std::vector<std::string>& sets, const std::string& job_path,
-                           const std::string& out_dir) {
+void write_compare_outputs(const Comparison& comparison, const std::string& scenario_label,
+                           const std::string& scenario_text, const std::vector<std::string>& sets,
+                           const std::string& job_path, const std::string& out_dir) {
     const fs::path dir(out_dir);
     write_file(dir / "table.md", compare_table(comparison, TableFormat::Markdown));
     write_file(dir / "table.csv", compare_table(comparison, TableFormat::Csv));
@@ -50,7 +42,7 @@ void write_compare_outputs(const Comparison& comparison, const std::string& scen
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
     std::cerr << "cncsim compare: " << plots.size() << format(" plots rendered in %.2f s", wall.count()) << std::endl;
 
-    HtmlJob job{scenario_path, read_file(scenario_path), sets, job_path, "", 0};
+    HtmlJob job{scenario_label, scenario_text, sets, job_path, "", 0};
     std::ifstream in(job_path);
     for (std::string line; std::getline(in, line); ++job.job_lines) {
         if (job.job_lines < kJobLinesShown) job.job_text += line + "\n";

@@ -8,9 +8,10 @@
 
 namespace cnc::sim {
 
-// job_path: the scenario's job, resolved. Prints the plotting time on stderr.
-void write_compare_outputs(const Comparison& comparison, const std::string& scenario_path,
-                           const std::vector<std::string>& sets, const std::string& job_path,
-                           const std::string& out_dir);
+// scenario_label and scenario_text: the scenario file and its text, or for a job the machine file (or "the
+// default machine") and its text; job_path: the job, resolved. Prints the plotting time on stderr.
+void write_compare_outputs(const Comparison& comparison, const std::string& scenario_label,
+                           const std::string& scenario_text, const std::vector<std::string>& sets,
+                           const std::string& job_path, const std::string& out_dir);
 
 }  // namespace cnc::sim

@@ -74,9 +74,13 @@ std::string KeyReader::where(const std::string& key) const {
     if (const auto o = override_of(key)) return "--set " + *o;
     const toml::node* n = find(key);
     if (n != nullptr && n->source().begin.line > 0) {
-        return m_file + ":" + std::to_string(n->source().begin.line) + ": " + key;
+        return file_of(*n) + ":" + std::to_string(n->source().begin.line) + ": " + key;
     }
     return m_file + ": " + key;
+}
+
+std::string KeyReader::file_of(const toml::node& n) const {
+    return n.source().path ? *n.source().path : m_file;
 }
 
 void KeyReader::fail(const std::string& key, const std::string& what) const {
@@ -181,8 +185,9 @@ void KeyReader::reject_unknown_keys() const {
             const std::string scope = prefix.empty() ? "at the top level" : "in [" + prefix + "]";
             const int line = node.source().begin.line;
             const std::optional<std::string> o = override_of(key);
-            throw BadInput(o ? "--set " + *o : m_file + (line > 0 ? ":" + std::to_string(line) : "") + ": " + key,
-                           "unknown key (allowed " + scope + ":" + allowed + ")");
+            throw BadInput(
+                o ? "--set " + *o : file_of(node) + (line > 0 ? ":" + std::to_string(line) : "") + ": " + key,
+                "unknown key (allowed " + scope + ":" + allowed + ")");
         }
     };
     walk(m_root, "");

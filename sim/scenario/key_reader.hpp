@@ -21,7 +21,8 @@ struct KeyDoc {
 
 class KeyReader {
 public:
-    // `file` names the scenario in messages; `root` is the whole document (after --set overrides). Messages about
+    // `file` names the scenario in messages (a key read from another file, its machine file, names that one); `root`
+    // is the whole document (after --set overrides). Messages about
     // a key that `overridden` lists (--set keys) name "--set key" instead of the file.
     KeyReader(const toml::table& root, std::string file, std::vector<std::string> overridden = {});
 
@@ -48,6 +49,8 @@ public:
 
 private:
     const toml::node* find(const std::string& key) const;
+    // The file a key was read from: a scenario's machine file (scenario.machine) for the keys it gave.
+    std::string file_of(const toml::node& n) const;
     void record(KeyDoc doc);
     // The --set key that set `key` or, for a table, a key inside it.
     std::optional<std::string> override_of(const std::string& key) const;

@@ -1,6 +1,7 @@
 #include "scenario/scenario.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +22,10 @@ namespace cnc::sim {
 namespace {
 
 namespace fs = std::filesystem;
+
+const char* const kMachineDoc =
+    "machine file, relative to the scenario: a TOML file of [machine], [driver], [motor] and [mechanics] tables "
+    "(`cncsim init` writes one); the scenario's own keys of those tables override it; empty: none";
 
 // A calibrated steps/mm given together with motor or transmission keys must be the value they imply: two
 // different numbers for one axis are a mistake in the scenario, not a choice. microsteps alone does not count:
@@ -168,6 +173,7 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                                   "controller architecture (docs/architectures.md)");
     const std::string job =
         r.get_string("scenario.job", "", "job file, relative to the scenario: G-code, or a seed 000 steps file");
+    r.get_string("scenario.machine", "", kMachineDoc);  // its tables joined the document before this reading
     const std::string format = r.get_choice("scenario.job_format", "auto", {"auto", "gcode", "steps"},
                                             "job format; auto: .steps and .csv are steps files, the rest G-code");
     s.seed = static_cast<std::uint64_t>(r.get_int("scenario.seed", 1, 0, INT64_MAX, "seed of every random source"));
@@ -243,28 +249,173 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
 
 }  // namespace
 
-Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides) {
-    if (fs::is_directory(path)) throw BadInput(path, "is a folder, not a scenario file (TOML)");
+namespace {
+
+toml::table parse_toml(const std::string& path, const std::string& what) {
+    if (fs::is_directory(path)) throw BadInput(path, "is a folder, not a " + what + " (TOML)");
     std::ifstream in(path);
-    if (!in) throw BadInput(path, "cannot open the scenario file");
+    if (!in) throw BadInput(path, "cannot open the " + what);
     std::stringstream text;
     text << in.rdbuf();
-    toml::table root;
     try {
-        root = toml::parse(text.str(), path);
+        return toml::parse(text.str(), path);
     } catch (const toml::parse_error& e) {
         throw BadInput(path + ":" + std::to_string(e.source().begin.line), std::string(e.description()));
     }
+}
+
+std::string machine_tables_text() {
+    std::string text;
+    for (const std::string& t : machine_tables()) text += (text.empty() ? "[" : ", [") + t + "]";
+    return text;
+}
+
+// A machine file holds the machine and nothing else: the job and the controller belong to a scenario.
+void check_machine_file(const toml::table& machine, const std::string& path) {
+    for (const auto& [k, node] : machine) {
+        const std::string key(k.str());
+        if (node.is_table() && is_machine_key(key + ".")) continue;
+        const int line = node.source().begin.line;
+        throw BadInput(path + (line > 0 ? ":" + std::to_string(line) : "") + ": " + key,
+                       "not a machine table: a machine file holds only " + machine_tables_text() +
+                           " (`cncsim keys machine` lists the machine's keys); the job, the architecture and the "
+                           "controller's keys go in a scenario, or on the command line (--set key=value)");
+    }
+}
+
+// The machine file's keys join the scenario's, moved so that messages name the machine file and line; a key the
+// scenario or --set gives wins.
+void merge_missing(toml::table& into, toml::table& from) {
+    for (auto&& [k, node] : from) {
+        toml::node* mine = into.get(k.str());
+        if (mine == nullptr) {
+            into.insert(std::string(k.str()), std::move(node));
+        } else if (mine->is_table() && node.is_table()) {
+            merge_missing(*mine->as_table(), *node.as_table());
+        }
+    }
+}
+
+void include_machine_file(toml::table& root, const std::string& file, const fs::path& base,
+                          const std::vector<std::string>& overridden) {
+    KeyReader r(root, file, overridden);
+    const std::string name = r.get_string("scenario.machine", "", kMachineDoc);
+    if (name.empty()) return;
+    const std::string path = (base / name).lexically_normal().string();
+    std::error_code ec;
+    if (!fs::exists(path, ec)) r.fail("scenario.machine", "the machine file " + path + " does not exist");
+    toml::table machine = parse_toml(path, "machine file");
+    check_machine_file(machine, path);
+    merge_missing(root, machine);
+}
+
+bool overrides_key(const std::vector<std::string>& overrides, const std::string& key) {
+    return std::any_of(overrides.begin(), overrides.end(),
+                       [&](const std::string& o) { return override_key(o) == key; });
+}
+
+// A TOML document read as a scenario: `file` names it in messages, `base` resolves its relative paths.
+Scenario load_document(toml::table root, const std::string& file, const fs::path& base,
+                       const std::vector<std::string>& overrides) {
     std::vector<std::string> overridden;
     for (const std::string& o : overrides) {
         apply_override(root, o);
         overridden.push_back(override_key(o));
     }
-    KeyReader reader(root, path, overridden);
-    Scenario s = read(reader, path, fs::path(path).parent_path());
+    include_machine_file(root, file, base, overridden);
+    KeyReader reader(root, file, overridden);
+    Scenario s = read(reader, file, base);
     reader.reject_unknown_keys();
-    if (s.job_path.empty() && find_architecture(s.architecture, path).job_use().runs_job) {
+    if (s.job_path.empty() && find_architecture(s.architecture, file).job_use().runs_job) {
         reader.fail("scenario.job", "missing: the job file to run is required");
+    }
+    return s;
+}
+
+// A job given where a scenario belongs: how to run it instead.
+void refuse_job_file(const std::string& path) {
+    if (fs::is_directory(path)) return;  // named as a folder by parse_toml
+    if (input_kind(path) == InputKind::Job) {
+        throw BadInput(path, "is a job file, not a scenario (TOML): `cncsim run " + path +
+                                 "` runs it on the default machine (--machine MACHINE.toml: on yours), `cncsim "
+                                 "compare " +
+                                 path +
+                                 "` on every architecture; a scenario names it as scenario.job "
+                                 "(`cncsim init` writes one to start from)");
+    }
+}
+
+// A machine file given as a scenario (no job to run): how to run a job on it.
+void refuse_machine_file(const toml::table& root, const std::string& path, const std::vector<std::string>& overrides) {
+    const bool only_machine = std::all_of(root.begin(), root.end(), [](const auto& kv) {
+        return kv.second.is_table() && is_machine_key(std::string(kv.first.str()) + ".");
+    });
+    if (root.empty() || !only_machine || overrides_key(overrides, "scenario.job")) return;
+    throw BadInput(path, "holds only " + machine_tables_text() +
+                             ": a machine file, not a scenario; run a job on it with `cncsim run JOB.nc --machine " +
+                             path + "`, or name it as scenario.machine in a scenario");
+}
+
+// A file named on the command line: it must exist and be a file.
+void check_input_file(const std::string& path, const std::string& where, const std::string& what) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw BadInput(where, "is a folder, not a " + what);
+    if (!fs::exists(path, ec)) throw BadInput(where, "no such " + what);
+}
+
+}  // namespace
+
+const std::vector<std::string>& machine_tables() {
+    static const std::vector<std::string> tables = {"machine", "driver", "motor", "mechanics"};
+    return tables;
+}
+
+bool is_machine_key(const std::string& key) {
+    const auto& t = machine_tables();
+    return std::any_of(t.begin(), t.end(), [&](const std::string& table) { return key.rfind(table + ".", 0) == 0; });
+}
+
+InputKind input_kind(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".toml") return InputKind::Scenario;
+    for (const char* job : {".nc", ".ngc", ".gcode", ".gco", ".g", ".tap", ".cnc", ".txt", ".steps", ".csv"}) {
+        if (ext == job) return InputKind::Job;
+    }
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);) {
+        const std::size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#') continue;
+        if (line[first] == '[') return InputKind::Scenario;
+        const std::size_t eq = line.find('=');
+        const bool key = eq != std::string::npos && eq > first &&
+                         line.find_first_not_of(
+                             "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-.\"' \t", first) == eq;
+        return key ? InputKind::Scenario : InputKind::Job;
+    }
+    return InputKind::Scenario;
+}
+
+Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides) {
+    refuse_job_file(path);
+    toml::table root = parse_toml(path, "scenario file");
+    refuse_machine_file(root, path, overrides);
+    return load_document(std::move(root), path, fs::path(path).parent_path(), overrides);
+}
+
+Scenario load_job_run(const JobRun& run, const std::vector<std::string>& overrides) {
+    check_input_file(run.job, run.job, "job file");
+    if (!run.machine.empty()) check_input_file(run.machine, "--machine " + run.machine, "machine file");
+    toml::table scenario{{"job", run.job}, {"name", fs::path(run.job).stem().string()}};
+    if (!run.machine.empty()) scenario.insert("machine", run.machine);
+    if (!run.architecture.empty()) scenario.insert("architecture", run.architecture);
+    toml::table root{{"scenario", std::move(scenario)}};
+    Scenario s = load_document(std::move(root), run.machine.empty() ? run.job : run.machine, fs::path(), overrides);
+    if (!overrides_key(overrides, "scenario.job")) s.job_key = run.job;
+    if (!find_architecture(s.architecture, s.file).job_use().runs_job) {
+        throw BadInput(overrides_key(overrides, "scenario.architecture") ? "--set scenario.architecture"
+                                                                         : "--arch " + s.architecture,
+                       s.architecture + " runs no job: it takes a scenario of its own (docs/architectures.md)");
     }
     return s;
 }

@@ -58,8 +58,31 @@ struct Scenario {
     }
 };
 
-// Reads and validates; throws BadInput naming the file, line and key.
+// Reads and validates; throws BadInput naming the file, line and key. A G-code job or a machine file given as a
+// scenario is refused with what to do instead.
 Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides);
+
+// A job run without a scenario (`cncsim run JOB.nc`): the job on a machine file, or on the default machine (every
+// key's default: the seed 000 machine), through one architecture. Paths are relative to the working folder.
+struct JobRun {
+    std::string job;
+    std::string machine;       // a machine file; empty: the default machine
+    std::string architecture;  // empty: the default architecture
+};
+// Reads it as the scenario {scenario.job = job, scenario.machine = machine, scenario.architecture}, then the
+// overrides: the same keys, checks and messages as a scenario.
+Scenario load_job_run(const JobRun& run, const std::vector<std::string>& overrides);
+
+// The tables a machine file holds (scenario.machine, --machine): the machine every architecture drives.
+const std::vector<std::string>& machine_tables();
+[[nodiscard]] bool is_machine_key(const std::string& key);
+
+// What `cncsim run FILE` takes FILE for. By its extension: .toml a scenario; .nc, .ngc, .gcode, .gco, .g, .tap,
+// .cnc, .txt, .steps and .csv a job. Otherwise by its first line that is neither blank nor a TOML comment: a
+// table header ([...]) or a key = value assignment is a scenario, anything else (G-code) a job. A file that
+// cannot be read is a scenario, so that its message names it as one.
+enum class InputKind { Scenario, Job };
+InputKind input_kind(const std::string& path);
 
 // Every scenario key with its type, default, range and meaning, in reading order.
 std::vector<KeyDoc> scenario_keys();

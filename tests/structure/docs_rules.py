@@ -23,7 +23,8 @@ CITATION = re.compile(r"DESIGN\.md|peers\.md|toolchain\.md|style\.md|spec/seed-\
                       re.I)
 README_MAX_LINES = 350
 QUICK_START_OUTPUTS = ["out/my_machine.json", "out/my_machine.vcd", "out/my_compare/index.html",
-                       "out/my_compare/table.md", "out/my_compare/path.png"]
+                       "out/my_compare/table.md", "out/my_compare/path.png", "out/start/scenario.toml",
+                       "out/start/machine.toml", "out/start/job.nc"]
 
 
 def slug(heading):

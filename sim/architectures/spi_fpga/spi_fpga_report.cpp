@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "common/rounding.hpp"
 #include "spi/core/spi_frame.hpp"
 #include "spi/core/spi_timing.hpp"
 

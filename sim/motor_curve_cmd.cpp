@@ -3,7 +3,8 @@
 #include <optional>
 #include <sstream>
 
-#include "common/text_format.hpp"
+#include <fmt/format.h>
+
 #include "mechanics/core/motor_curve.hpp"
 #include "output/output_file.hpp"
 #include "scenario/scenario.hpp"
@@ -31,25 +32,26 @@ int cmd_motor_curve(const std::string& scenario_path, const std::vector<std::str
     if (!csv_path.empty()) csv_file.emplace(csv_path, "--csv");
     std::ostringstream csv;
     csv << "full_steps_per_s,speed_mm_per_s,pull_out_torque_nm,required_torque_nm,required_torque_at_max_accel_nm\n";
-    out << "motor curve, axis " << axis << ": " << format("%.3f", p.driver.current_limit_a) << " A at "
-        << format("%.1f", p.driver.supply_v) << " V, 1/" << m.microsteps << " step, "
-        << format("%.2f", p.load.carriage_mass_kg) << " kg, holding torque at this current "
-        << format("%.4f", p.motor.torque_constant_nm_per_a() * p.driver.current_limit_a) << " N m\n";
-    out << "  steps/s    mm/s  pull-out N m  required N m  at " << format("%.0f", m.limits.max_accel_mm_per_s2)
-        << " mm/s2\n";
+    out << fmt::format(FMT_STRING("motor curve, axis {}: {:.3f} A at {:.1f} V, 1/{} step, {:.2f} kg, holding torque at "
+                                  "this current {:.4f} N m\n"),
+                       axis, p.driver.current_limit_a, p.driver.supply_v, m.microsteps, p.load.carriage_mass_kg,
+                       p.motor.torque_constant_nm_per_a() * p.driver.current_limit_a);
+    out << fmt::format(FMT_STRING("  steps/s    mm/s  pull-out N m  required N m  at {:.0f} mm/s2\n"),
+                       m.limits.max_accel_mm_per_s2);
     for (int i = 1; i <= kRatePoints; ++i) {
         const double rate = max_rate * kRateSpanOfMaxVelocity * i / kRatePoints;
         const double pull_out = mech::pull_out_torque_nm(p, m.microsteps, rate);
         const double required = mech::required_torque_nm(p, rate);
         const double speed = rate / full_steps_per_mm;
-        out << format("%9.1f %7.2f %13.4f", rate, speed, pull_out)
-            << format(" %13.4f %13.4f\n", required, required + accel_nm);
-        csv << format("%.3f,%.4f,%.6f", rate, speed, pull_out) << format(",%.6f,%.6f\n", required, required + accel_nm);
+        out << fmt::format(FMT_STRING("{:>9.1f} {:>7.2f} {:>13.4f} {:>13.4f} {:>13.4f}\n"), rate, speed, pull_out,
+                           required, required + accel_nm);
+        csv << fmt::format(FMT_STRING("{:.3f},{:.4f},{:.6f},{:.6f},{:.6f}\n"), rate, speed, pull_out, required,
+                           required + accel_nm);
     }
     const double pull_in = mech::pull_in_rate(p, m.microsteps, max_rate * kPullInSearchOfMaxVelocity);
-    out << "pull-in (start-stop without a ramp, this load): " << format("%.1f", pull_in)
-        << " full steps/s = " << format("%.2f", pull_in / full_steps_per_mm) << " mm/s = F"
-        << format("%.0f", 60.0 * pull_in / full_steps_per_mm) << "\n";
+    out << fmt::format(FMT_STRING("pull-in (start-stop without a ramp, this load): {:.1f} full steps/s = {:.2f} mm/s = "
+                                  "F{:.0f}\n"),
+                       pull_in, pull_in / full_steps_per_mm, 60.0 * pull_in / full_steps_per_mm);
     if (csv_file) {
         csv_file->stream() << csv.str();
         csv_file->close();

@@ -2,8 +2,9 @@
 
 #include <cstdio>
 
+#include <fmt/format.h>
+
 #include "common/sc_time.hpp"
-#include "common/text_format.hpp"
 
 namespace cnc::host {
 
@@ -45,7 +46,7 @@ std::string as_hex(const std::vector<std::uint8_t>& bytes) {
 }
 
 std::string ms_text(TimePs t_ps) {
-    return format("%.1f ms", static_cast<double>(t_ps) / kPsPerMs);
+    return fmt::format(FMT_STRING("{:.1f} ms"), static_cast<double>(t_ps) / kPsPerMs);
 }
 
 }  // namespace

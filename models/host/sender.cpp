@@ -3,7 +3,8 @@
 
 #include <cstdio>
 
-#include "common/text_format.hpp"
+#include <fmt/format.h>
+
 #include "host/core/packet_codec.hpp"
 
 namespace cnc::host {
@@ -25,9 +26,9 @@ constexpr TimePs kAckPathAllowancePs = 100 * kPsPerMs;
 // packet or ACK (framing errors, a busy step_gen), which no timeout fixes.
 std::string ack_timeout_text(int segment, const OutgoingPacket& packet, TimePs timeout_ps) {
     const std::string line = packet.gcode_line > 0 ? "G-code line " + std::to_string(packet.gcode_line) + ", " : "";
-    const std::string text =
-        "seg " + std::to_string(segment) + " (" + line +
-        format("a %.2f s move): no ACK within %.1f s", ps_to_s(packet.expected_run_ps), ps_to_s(timeout_ps));
+    const std::string text = "seg " + std::to_string(segment) + " (" + line +
+                             fmt::format(FMT_STRING("a {:.2f} s move): no ACK within {:.1f} s"),
+                                         ps_to_s(packet.expected_run_ps), ps_to_s(timeout_ps));
     if (packet.expected_run_ps + kAckPathAllowancePs >= timeout_ps) {
         return text + "; raise host.ack_timeout_s above the longest move";
     }

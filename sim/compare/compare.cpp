@@ -13,8 +13,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "architectures/catalog.hpp"
-#include "common/text_format.hpp"
 #include "compare/spawn.hpp"
 
 namespace cnc::sim {
@@ -23,10 +24,26 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A row's value as printed: fixed decimals, with its sign always shown for a deviation that goes either way.
+struct Decimals {
+    int places;
+    bool sign = false;
+};
+constexpr Decimals fixed(int places) {
+    return {places, false};
+}
+constexpr Decimals signed_fixed(int places) {
+    return {places, true};
+}
+
+std::string shown(double v, Decimals d) {
+    return d.sign ? fmt::format(FMT_STRING("{:+.{}f}"), v, d.places) : fmt::format(FMT_STRING("{:.{}f}"), v, d.places);
+}
+
 struct Row {
     const char* label;
     const char* pointer;           // JSON pointer into a run report
-    const char* format;            // printf format of the value
+    Decimals decimals;             // of the value as printed
     bool setting = false;          // what the run was given (shown for a failed run too), not a result
     bool in_arch_section = false;  // the pointer is into the architecture's own section (report[arch])
     // Followed, with a baseline run, by the column's value minus the baseline's: what the controller adds to the
@@ -36,36 +53,36 @@ struct Row {
 
 // The machine each run used, then the headline numbers of docs/metrics.md in the order a reader compares them.
 constexpr Row kRows[] = {
-    {"machine: X steps/mm", "/scenario/machine/x/steps_per_mm", "%.4f", true},
-    {"machine: X velocity max [mm/s]", "/scenario/machine/x/max_velocity_mm_per_s", "%.1f", true},
-    {"machine: X accel max [mm/s^2]", "/scenario/machine/x/max_accel_mm_per_s2", "%.0f", true},
-    {"machine: X jerk max [mm/s^3]", "/scenario/machine/x/max_jerk_mm_per_s3", "%.0f", true},
-    {"machine: Y steps/mm", "/scenario/machine/y/steps_per_mm", "%.4f", true},
-    {"machine: Y velocity max [mm/s]", "/scenario/machine/y/max_velocity_mm_per_s", "%.1f", true},
-    {"machine: Y accel max [mm/s^2]", "/scenario/machine/y/max_accel_mm_per_s2", "%.0f", true},
-    {"machine: Y jerk max [mm/s^3]", "/scenario/machine/y/max_jerk_mm_per_s3", "%.0f", true},
-    {"machine: rapid speed [mm/min]", "/scenario/machine/rapid_feed_mm_per_min", "%.1f", true},
-    {"job time [s]", "/metrics/job/job_time_s", "%.4f"},
-    {"motion time [s]", "/metrics/job/motion_time_s", "%.4f"},
-    {"dead time total [ms]", "/metrics/job/dead_total_ms", "%.3f"},
-    {"dead time mean [ms]", "/metrics/job/dead_mean_ms", "%.3f"},
-    {"TIE max [ns]", "/metrics/pulse/tie_max_ns", "%.3f"},
-    {"period jitter p-p max [ns]", "/metrics/pulse/jitter_pp_max_ns", "%.3f"},
-    {"rate error worst [%]", "/metrics/pulse/rate_error_worst_pct", "%+.4f"},
-    {"sync error max [us]", "/metrics/pulse/sync_max_us", "%.1f"},
-    {"feed error max [%]", "/metrics/feed/feed_error_max_abs_pct", "%.4f"},
-    {"contour error max [um]", "/metrics/path/contour_max_um", "%.2f", false, false, true},
-    {"contour error rms [um]", "/metrics/path/contour_rms_um", "%.2f"},
-    {"following error max [um]", "/metrics/path/following_max_um", "%.2f"},
-    {"job end error [um]", "/metrics/path/job_end_um", "%.2f"},
+    {"machine: X steps/mm", "/scenario/machine/x/steps_per_mm", fixed(4), true},
+    {"machine: X velocity max [mm/s]", "/scenario/machine/x/max_velocity_mm_per_s", fixed(1), true},
+    {"machine: X accel max [mm/s^2]", "/scenario/machine/x/max_accel_mm_per_s2", fixed(0), true},
+    {"machine: X jerk max [mm/s^3]", "/scenario/machine/x/max_jerk_mm_per_s3", fixed(0), true},
+    {"machine: Y steps/mm", "/scenario/machine/y/steps_per_mm", fixed(4), true},
+    {"machine: Y velocity max [mm/s]", "/scenario/machine/y/max_velocity_mm_per_s", fixed(1), true},
+    {"machine: Y accel max [mm/s^2]", "/scenario/machine/y/max_accel_mm_per_s2", fixed(0), true},
+    {"machine: Y jerk max [mm/s^3]", "/scenario/machine/y/max_jerk_mm_per_s3", fixed(0), true},
+    {"machine: rapid speed [mm/min]", "/scenario/machine/rapid_feed_mm_per_min", fixed(1), true},
+    {"job time [s]", "/metrics/job/job_time_s", fixed(4)},
+    {"motion time [s]", "/metrics/job/motion_time_s", fixed(4)},
+    {"dead time total [ms]", "/metrics/job/dead_total_ms", fixed(3)},
+    {"dead time mean [ms]", "/metrics/job/dead_mean_ms", fixed(3)},
+    {"TIE max [ns]", "/metrics/pulse/tie_max_ns", fixed(3)},
+    {"period jitter p-p max [ns]", "/metrics/pulse/jitter_pp_max_ns", fixed(3)},
+    {"rate error worst [%]", "/metrics/pulse/rate_error_worst_pct", signed_fixed(4)},
+    {"sync error max [us]", "/metrics/pulse/sync_max_us", fixed(1)},
+    {"feed error max [%]", "/metrics/feed/feed_error_max_abs_pct", fixed(4)},
+    {"contour error max [um]", "/metrics/path/contour_max_um", fixed(2), false, false, true},
+    {"contour error rms [um]", "/metrics/path/contour_rms_um", fixed(2)},
+    {"following error max [um]", "/metrics/path/following_max_um", fixed(2)},
+    {"job end error [um]", "/metrics/path/job_end_um", fixed(2)},
     // The dynamic mechanics' (none with the ideal carriage): 90 electrical degrees is pull-out, a slip 4 full steps.
-    {"lost full steps X", "/mechanics/x/lost_full_steps", "%.0f", false, true},
-    {"lost full steps Y", "/mechanics/y/lost_full_steps", "%.0f", false, true},
-    {"peak load angle X [el. deg]", "/mechanics/x/peak_load_angle_electrical_deg", "%.1f", false, true},
-    {"peak load angle Y [el. deg]", "/mechanics/y/peak_load_angle_electrical_deg", "%.1f", false, true},
-    {"DRV8825 violations", "/metrics/pulse/driver_violations", "%.0f"},
-    {"laser dwell [ms]", "/metrics/laser/dwell_ms", "%.3f"},
-    {"laser on in rapids [ms]", "/metrics/laser/on_in_rapid_ms", "%.3f"},
+    {"lost full steps X", "/mechanics/x/lost_full_steps", fixed(0), false, true},
+    {"lost full steps Y", "/mechanics/y/lost_full_steps", fixed(0), false, true},
+    {"peak load angle X [el. deg]", "/mechanics/x/peak_load_angle_electrical_deg", fixed(1), false, true},
+    {"peak load angle Y [el. deg]", "/mechanics/y/peak_load_angle_electrical_deg", fixed(1), false, true},
+    {"DRV8825 violations", "/metrics/pulse/driver_violations", fixed(0)},
+    {"laser dwell [ms]", "/metrics/laser/dwell_ms", fixed(3)},
+    {"laser on in rapids [ms]", "/metrics/laser/on_in_rapid_ms", fixed(3)},
 };
 
 nlohmann::json::json_pointer where(const Row& row, const CompareColumn& c) {
@@ -85,7 +102,7 @@ std::optional<double> figure(const CompareColumn& c, const Row& row) {
 std::string cell(const CompareColumn& c, const Row& row) {
     const std::optional<double> v = figure(c, row);
     if (!v || (c.exit_code != 0 && !row.setting)) return "-";
-    return format(row.format, *v);
+    return shown(*v, row.decimals);
 }
 
 // The column's figure minus the baseline's, when both runs have it.
@@ -99,7 +116,7 @@ std::optional<double> over(const CompareColumn& c, const Row& row, const Compare
 std::string over_cell(const CompareColumn& c, const Row& row, const CompareColumn& baseline) {
     const std::optional<double> d = over(c, row, baseline);
     if (!d || c.exit_code != 0 || baseline.exit_code != 0) return "-";
-    return format(row.format, *d);
+    return shown(*d, row.decimals);
 }
 
 // "contour error max over ideal [um]": the row's label with the baseline named before its unit.
@@ -219,10 +236,11 @@ Comparison run_compare(const std::string& self_exe, const std::vector<std::strin
         std::string ratio;
         if (c.exit_code == 0 && c.report.contains(nlohmann::json::json_pointer("/metrics/job/job_time_s"))) {
             const double sim_s = c.report["metrics"]["job"]["job_time_s"].get<double>();
-            ratio = format(" (%.3f s simulated, %.1fx real time)", sim_s, sim_s / c.wall_s);
+            ratio = fmt::format(FMT_STRING(" ({:.3f} s simulated, {:.1f}x real time)"), sim_s, sim_s / c.wall_s);
         }
-        std::cerr << "cncsim compare: " << c.architecture << " " << status(c) << format(" after %.1f s", c.wall_s)
-                  << ratio << " [" << done << '/' << architectures.size() << " done]" << std::endl;
+        std::cerr << "cncsim compare: " << c.architecture << " " << status(c)
+                  << fmt::format(FMT_STRING(" after {:.1f} s"), c.wall_s) << ratio << " [" << done << '/'
+                  << architectures.size() << " done]" << std::endl;
     }
     fs::remove_all(temp_dir);
     Comparison out;

@@ -6,7 +6,8 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "common/text_format.hpp"
+#include <fmt/format.h>
+
 #include "compare/html_report.hpp"
 #include "output/output_file.hpp"
 #include "plots/plot_render.hpp"
@@ -40,7 +41,8 @@ void write_compare_outputs(const Comparison& comparison, const std::string& scen
     for (const CompareColumn& c : comparison.columns) archs.push_back(c.architecture);
     const std::vector<Plot> plots = render_plots(load_plot_runs(dir, archs), dir);
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-    std::cerr << "cncsim compare: " << plots.size() << format(" plots rendered in %.2f s", wall.count()) << std::endl;
+    std::cerr << "cncsim compare: " << plots.size()
+              << fmt::format(FMT_STRING(" plots rendered in {:.2f} s"), wall.count()) << std::endl;
 
     HtmlJob job{scenario_label, scenario_text, sets, job_path, "", 0};
     std::ifstream in(job_path);
@@ -48,7 +50,7 @@ void write_compare_outputs(const Comparison& comparison, const std::string& scen
         if (job.job_lines < kJobLinesShown) job.job_text += line + "\n";
     }
     if (job.job_lines > kJobLinesShown)
-        job.job_text += format("... (%zu more lines)\n", job.job_lines - kJobLinesShown);
+        job.job_text += fmt::format(FMT_STRING("... ({} more lines)\n"), job.job_lines - kJobLinesShown);
     write_file(dir / "index.html", html_report(comparison, plots, job));
 }
 

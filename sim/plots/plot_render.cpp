@@ -9,8 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "architectures/catalog.hpp"
-#include "common/text_format.hpp"
 #include "compare/spawn.hpp"
 
 namespace cnc::sim {
@@ -82,7 +83,7 @@ std::string header(const Plot& p) {
 // A constant range (e.g. TIE 0 on every edge) opens to +-1 around it.
 std::string yrange_for(const ColumnRange& r) {
     if (r.rows == 0 || r.lo != r.hi) return "";
-    return format("set yrange [%g:%g]\n", r.lo - 1.0, r.hi + 1.0);
+    return fmt::format(FMT_STRING("set yrange [{:g}:{:g}]\n"), r.lo - 1.0, r.hi + 1.0);
 }
 
 // One curve per run that has rows: `using` columns and style; empty when no run has data.
@@ -151,11 +152,15 @@ std::optional<Script> path_plot(const std::vector<PlotRun>& runs, const fs::path
     const double x = (*worst)["x_mm"].get<double>();
     const double y = (*worst)["y_mm"].get<double>();
     body << "set multiplot\nset origin 0,0\nset size 0.64,1\n"
-         << format("set object 1 rect from %g,%g to %g,%g front fillstyle empty border lc rgb 'black' lw 1.5\n",
-                   x - half, y - half, x + half, y + half)
+         << fmt::format(
+                FMT_STRING("set object 1 rect from {:g},{:g} to {:g},{:g} front fillstyle empty border lc rgb 'black' "
+                           "lw 1.5\n"),
+                x - half, y - half, x + half, y + half)
          << plot_line(clauses) << "unset object 1\nset origin 0.63,0.12\nset size 0.37,0.8\nunset key\n"
-         << "set title " << quoted("largest cut error: " + worst_arch + format(", %.1f um", err_mm * 1000.0)) << "\n"
-         << format("set xrange [%g:%g]\nset yrange [%g:%g]\n", x - half, x + half, y - half, y + half)
+         << "set title "
+         << quoted("largest cut error: " + worst_arch + fmt::format(FMT_STRING(", {:.1f} um"), err_mm * 1000.0)) << "\n"
+         << fmt::format(FMT_STRING("set xrange [{:g}:{:g}]\nset yrange [{:g}:{:g}]\n"), x - half, x + half, y - half,
+                        y + half)
          << "set xtics rotate by -30\n"
          << plot_line(clauses) << "unset multiplot\n";
     s.body = body.str();
@@ -189,7 +194,7 @@ std::optional<Script> error_plot(const std::vector<PlotRun>& runs, const fs::pat
     }
     const bool log = hi_max > kLogSpan * lo_max;
     const std::string y =
-        log ? format("($%g > %g ? $%g : %g)", ycol, kLogFloorUm, ycol, kLogFloorUm) : std::to_string(ycol);
+        log ? fmt::format(FMT_STRING("(${0} > {1:g} ? ${0} : {1:g})"), ycol, kLogFloorUm) : std::to_string(ycol);
     const std::string extra = log ? "set logscale y\nset format y '%g'\n" : "";
     return simple_plot(runs, out_dir, std::move(plot), "tool.dat", ycol,
                        std::to_string(xcol) + ":" + y + " with lines lw 1.2", extra);
@@ -216,8 +221,8 @@ std::optional<Script> dead_time_plot(const std::vector<PlotRun>& runs, const fs:
     for (const PlotRun& r : runs) {
         const std::string file = file_of(r, "dead_time.dat");
         const ColumnRange total = column_range(out_dir / file, 3);
-        body << "set title " << quoted(r.architecture + format(": %zu gaps", total.rows)) << "\nset xlabel "
-             << quoted(s.plot.xlabel) << "\nset ylabel " << quoted(s.plot.ylabel)
+        body << "set title " << quoted(r.architecture + fmt::format(FMT_STRING(": {} gaps"), total.rows))
+             << "\nset xlabel " << quoted(s.plot.xlabel) << "\nset ylabel " << quoted(s.plot.ylabel)
              << "\nset grid ytics\nset key outside right top\nset style fill solid 0.9 border -1\nset boxwidth 0.8\n"
              << "set yrange [0:*]\n";
         if (total.rows == 0) {
@@ -226,8 +231,9 @@ std::optional<Script> dead_time_plot(const std::vector<PlotRun>& runs, const fs:
             continue;
         }
         any = true;
-        if (total.lo == total.hi) body << format("set yrange [0:%g]\n", total.hi > 0 ? 1.2 * total.hi : 1.0);
-        body << format("set xrange [0:%g]\n", static_cast<double>(total.rows + 1));
+        if (total.lo == total.hi)
+            body << fmt::format(FMT_STRING("set yrange [0:{:g}]\n"), total.hi > 0 ? 1.2 * total.hi : 1.0);
+        body << fmt::format(FMT_STRING("set xrange [0:{}]\n"), total.rows + 1);
         const std::vector<std::string> causes = r.meta.value("causes", std::vector<std::string>{});
         std::vector<std::string> clauses;
         // Stacked bars: each cause's bar reaches the sum of it and the causes before it, drawn tallest first.

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/text_format.hpp"
+#include <fmt/format.h>
+
 #include "common/units.hpp"
 
 namespace cnc::sim {
@@ -52,9 +53,8 @@ JobEstimate estimate_job(const host::Program& program, const ArchPace& pace) {
 }
 
 std::string limit_formula(const JobEstimate& estimate) {
-    return format("%.0f x %.3f s + %.0f s x %.0f moves", kLimitFactor, estimate.expected_s, kLimitPerMoveS,
-                  static_cast<double>(estimate.moves)) +
-           format(" + %.0f s", kLimitFixedS);
+    return fmt::format(FMT_STRING("{:.0f} x {:.3f} s + {:.0f} s x {} moves + {:.0f} s"), kLimitFactor,
+                       estimate.expected_s, kLimitPerMoveS, estimate.moves, kLimitFixedS);
 }
 
 }  // namespace cnc::sim

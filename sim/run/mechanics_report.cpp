@@ -4,7 +4,8 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "common/text_format.hpp"
+#include <fmt/format.h>
+
 #include "metrics/laser/laser_exposure.hpp"
 
 namespace cnc::sim {
@@ -28,11 +29,12 @@ nlohmann::json axis_json(const mech::DynamicAxis& axis) {
 std::string axis_text(const char* name, const mech::DynamicAxisStats& st) {
     std::ostringstream t;
     t << "  " << name << ": lost " << st.lost_full_steps << " full steps";
-    if (!st.events.empty()) t << " (first at " << format("%.6f", ps_to_s(st.events.front().t_ps)) << " s)";
-    t << ", peak load angle " << format("%.1f", st.peak_load_angle_deg) << " electrical deg at "
-      << format("%.6f", ps_to_s(st.peak_load_angle_ps)) << " s, velocity ripple rms "
-      << format("%.3f", st.velocity_ripple_rms_mm_s) << " / peak " << format("%.3f", st.velocity_ripple_peak_mm_s)
-      << " mm/s\n";
+    if (!st.events.empty()) t << fmt::format(FMT_STRING(" (first at {:.6f} s)"), ps_to_s(st.events.front().t_ps));
+    t << fmt::format(
+        FMT_STRING(", peak load angle {:.1f} electrical deg at {:.6f} s, velocity ripple rms {:.3f} / peak "
+                   "{:.3f} mm/s\n"),
+        st.peak_load_angle_deg, ps_to_s(st.peak_load_angle_ps), st.velocity_ripple_rms_mm_s,
+        st.velocity_ripple_peak_mm_s);
     return t.str();
 }
 
@@ -72,10 +74,10 @@ void add_mechanics_report(const Machine& machine, const std::optional<MetricsFee
     std::ostringstream t;
     t << "Mechanics (dynamic): the carriage position above comes from the axis models; contour and following "
          "error include their lag and ringing\n"
-      << axis_text("x", x->stats()) << axis_text("y", y->stats()) << "  laser exposure: mean "
-      << format("%.4f", e.mean_s_per_mm) << " s/mm over " << format("%.2f", e.lasered_path_mm) << " mm, peak "
-      << format("%.4f", e.peak_s_per_mm) << " s/mm (" << format("%.1f", metrics::kExposureBinMm) << " mm bin at "
-      << format("%.2f", e.peak_at_path_mm) << " mm of lasered path)\n";
+      << axis_text("x", x->stats()) << axis_text("y", y->stats())
+      << fmt::format(FMT_STRING("  laser exposure: mean {:.4f} s/mm over {:.2f} mm, peak {:.4f} s/mm ({:.1f} mm bin "
+                                "at {:.2f} mm of lasered path)\n"),
+                     e.mean_s_per_mm, e.lasered_path_mm, e.peak_s_per_mm, metrics::kExposureBinMm, e.peak_at_path_mm);
     run.details_text += t.str();
     add_series("x", x->stats(), run);
     add_series("y", y->stats(), run);

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "common/text_format.hpp"
+#include <fmt/format.h>
 
 namespace cnc::sim {
 
@@ -49,15 +49,15 @@ std::string program_text(const host::Program& program) {
     if (!program.waits.empty()) {
         t << "  host waits (XY at rest):";
         for (const host::WaitCause c : kCauses) {
-            t << ' ' << host::to_string(c) << ' ' << format("%.3f s", program.wait_s(c)) << " ("
-              << wait_count(program, c) << ')';
+            t << fmt::format(FMT_STRING(" {} {:.3f} s ({})"), host::to_string(c), program.wait_s(c),
+                             wait_count(program, c));
         }
         t << '\n';
     }
     if (program.z_travel_mm > 0.0) {
-        t << format(
-            "  Z travel %.3f mm: this architecture has no Z STEP pins; a Z-only move is timed at its feed "
-            "and added as host dead time, a move with XY and Z runs its XY path at the XY share of F\n",
+        t << fmt::format(
+            FMT_STRING("  Z travel {:.3f} mm: this architecture has no Z STEP pins; a Z-only move is timed at its feed "
+                       "and added as host dead time, a move with XY and Z runs its XY path at the XY share of F\n"),
             program.z_travel_mm);
     }
     if (!program.ignored.empty()) {

@@ -1,6 +1,6 @@
 #include "run/progress.hpp"
 
-#include "common/text_format.hpp"
+#include <fmt/format.h>
 
 namespace cnc::sim {
 
@@ -24,10 +24,10 @@ std::string Progress::prefix() const {
 
 std::string Progress::text(double sim_s, double wall_s) const {
     const double fraction = sim_s / m_expected_s;
-    std::string t = prefix() + format("simulated %.1f s of ~%.1f s", sim_s, m_expected_s);
-    if (fraction >= 1.0) return t + format(" (past the estimate), %.1f s wall", wall_s);
-    t += format(" (%.0f %%), %.1f s wall", 100.0 * fraction, wall_s);
-    if (sim_s > 0.0) t += format(", about %.0f s to go", wall_s * (m_expected_s - sim_s) / sim_s);
+    std::string t = prefix() + fmt::format(FMT_STRING("simulated {:.1f} s of ~{:.1f} s"), sim_s, m_expected_s);
+    if (fraction >= 1.0) return t + fmt::format(FMT_STRING(" (past the estimate), {:.1f} s wall"), wall_s);
+    t += fmt::format(FMT_STRING(" ({:.0f} %), {:.1f} s wall"), 100.0 * fraction, wall_s);
+    if (sim_s > 0.0) t += fmt::format(FMT_STRING(", about {:.0f} s to go"), wall_s * (m_expected_s - sim_s) / sim_s);
     return t;
 }
 
@@ -61,7 +61,7 @@ void Progress::update(double sim_s, double wall_s) {
 
 void Progress::finish(double sim_s, double wall_s) {
     if (!m_shown) return;
-    const std::string done = prefix() + format("simulated %.1f s in %.1f s wall", sim_s, wall_s);
+    const std::string done = prefix() + fmt::format(FMT_STRING("simulated {:.1f} s in {:.1f} s wall"), sim_s, wall_s);
     if (m_style == ProgressStyle::Terminal) {
         show(done);
         m_out << '\n' << std::flush;

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <iostream>
 
+#include <fmt/format.h>
+
 #include "common/sc_time.hpp"
-#include "common/text_format.hpp"
 #include "run/timed_progress.hpp"
 
 namespace cnc::sim {
@@ -83,14 +84,17 @@ void record_budget(const RunBudget& budget, ArchRun& run) {
 }
 
 std::string time_limit_text(const RunBudget& budget, const SimulationEnd& end) {
-    const std::string stopped = format("stopped at %.3f s of simulated time by ", ps_to_s(end.t_ps));
+    const std::string stopped = fmt::format(FMT_STRING("stopped at {:.3f} s of simulated time by "), ps_to_s(end.t_ps));
     const double limit_s = ps_to_s(budget.limit_ps);
     if (budget.limit_from_scenario) {
-        return stopped + format("scenario.max_sim_s = %g s (this job's estimate: %.3f s); raise scenario.max_sim_s",
-                                limit_s, budget.estimate.expected_s);
+        return stopped + fmt::format(FMT_STRING("scenario.max_sim_s = {:g} s (this job's estimate: {:.3f} s); raise "
+                                                "scenario.max_sim_s"),
+                                     limit_s, budget.estimate.expected_s);
     }
-    return stopped + format("this job's limit, %.3f s = ", limit_s) + limit_formula(budget.estimate) +
-           format(" from its %.3f s estimate; set scenario.max_sim_s higher", budget.estimate.expected_s);
+    return stopped +
+           fmt::format(FMT_STRING("this job's limit, {:.3f} s = {} from its {:.3f} s estimate; set scenario.max_sim_s "
+                                  "higher"),
+                       limit_s, limit_formula(budget.estimate), budget.estimate.expected_s);
 }
 
 }  // namespace cnc::sim

@@ -10,9 +10,10 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "architectures/catalog.hpp"
 #include "common/bad_input.hpp"
-#include "common/text_format.hpp"
 #include "common/units.hpp"
 #include "host/core/soft_limits.hpp"
 #include "metrics/vcd/vcd_timescale.hpp"
@@ -43,10 +44,10 @@ void check_calibration(const KeyReader& r, const std::string& p, const host::Axi
     const double implied = m.transmission_steps_per_mm();
     constexpr double kRelativeTolerance = 1e-9;  // rounding of a value typed as a decimal, not a real difference
     if (std::abs(calibrated - implied) <= kRelativeTolerance * std::max(calibrated, implied)) return;
-    r.fail(p + "steps_per_mm", format("%.10g", calibrated) + " differs from the " + format("%.10g", implied) +
-                                   " steps/mm that " + given +
-                                   " give (with the defaults of the keys not set); "
-                                   "give steps_per_mm alone, or values that agree");
+    r.fail(p + "steps_per_mm",
+           fmt::format(FMT_STRING("{:.10g} differs from the {:.10g} steps/mm that "), calibrated, implied) + given +
+               " give (with the defaults of the keys not set); "
+               "give steps_per_mm alone, or values that agree");
 }
 
 // An axis limit of 0 would leave the planner without a profile: refused by name rather than as a range.
@@ -133,7 +134,7 @@ void read_trace_window(KeyReader& r, Scenario& s) {
                                     "end of the VCD's window, s of simulated time, > trace.from_s; 0: the end of "
                                     "the run");
     if (to_s > 0.0 && !(to_s > from_s)) {
-        r.fail("trace.to_s", format("%g s must be after trace.from_s = ", to_s) + format("%g s", from_s));
+        r.fail("trace.to_s", fmt::format(FMT_STRING("{:g} s must be after trace.from_s = {:g} s"), to_s, from_s));
     }
     s.trace_from_ps = s_to_ps(from_s);
     if (to_s > 0.0) s.trace_to_ps = s_to_ps(to_s);

@@ -2,8 +2,9 @@
 
 #include <tuple>
 
+#include <fmt/format.h>
+
 #include "common/bad_input.hpp"
-#include "common/text_format.hpp"
 
 namespace cnc::host {
 
@@ -25,12 +26,12 @@ std::optional<std::string> soft_limit_breach(const MachineModel& machine, Machin
     const std::string name = x ? "X " : "Y ";
     const std::string key = x ? "machine.x.travel_mm" : "machine.y.travel_mm";
     if (hi_mm > travel_mm + kRoundingMm) {
-        return name + format("%.10g", hi_mm) + " mm is past " + key + " = " + format("%.10g", travel_mm) +
-               kHowToTurnOff;
+        return fmt::format(FMT_STRING("{}{:.10g} mm is past {} = {:.10g}{}"), name, hi_mm, key, travel_mm,
+                           kHowToTurnOff);
     }
     if (lo_mm < -kRoundingMm) {
-        return name + format("%.10g", lo_mm) + " mm is below 0, the start of " + key + " = " +
-               format("%.10g", travel_mm) + kHowToTurnOff;
+        return fmt::format(FMT_STRING("{}{:.10g} mm is below 0, the start of {} = {:.10g}{}"), name, lo_mm, key,
+                           travel_mm, kHowToTurnOff);
     }
     return std::nullopt;
 }

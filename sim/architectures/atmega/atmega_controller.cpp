@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "architectures/atmega/atmega_pins.hpp"
 #include "architectures/atmega/atmega_report.hpp"
 #include "architectures/atmega/atmega_settings.hpp"
@@ -16,7 +18,6 @@
 #include "architectures/serial_host/link_checks.hpp"
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
-#include "common/text_format.hpp"
 #include "host/core/cad2g/firmware_busy.hpp"
 #include "host/pc_program.hpp"
 #include "run/controller.hpp"
@@ -287,7 +288,8 @@ void AtmegaController::report(ArchRun& run, const RunBudget& budget, const Simul
 
     if (const std::optional<std::string> why = link_failure(m_mcu, m_cp2102, m_pc)) {
         run.ok = false;
-        run.failure = *why + format(" (run stopped at %.3f s of simulated time)", ps_to_s(m_stop_ps));
+        run.failure =
+            *why + fmt::format(FMT_STRING(" (run stopped at {:.3f} s of simulated time)"), ps_to_s(m_stop_ps));
     } else if (!m_pc.finished()) {
         run.ok = false;
         run.failure = m_mcu.stopped() ? "the firmware stopped before the PC program had sent the job"

@@ -4,7 +4,7 @@
 #include <map>
 #include <sstream>
 
-#include "common/text_format.hpp"
+#include <fmt/format.h>
 
 namespace cnc::sim {
 
@@ -144,11 +144,12 @@ std::string details_text(const AtmegaFacts& f) {
     }
     std::ostringstream t;
     t << "atmega link and host\n"
-      << format("  line %.2f Bd (%+.3f %% vs requested), MCU USART %.1f Bd: ", baud.actual_bd, baud.error_pct,
-                f.mcu_baud)
-      << format("%+.3f %% against the line\n", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0) << "  PC wrote "
-      << f.pc.writes().size() << " bytes, one per confirm"
-      << (f.pc.failure() ? format(" (stopped at %.3f s: ", ps_to_s(f.pc.failure()->t_ps)) + f.pc.failure()->reason + ")"
+      << fmt::format(FMT_STRING("  line {:.2f} Bd ({:+.3f} % vs requested), MCU USART {:.1f} Bd: {:+.3f} % against "
+                                "the line\n"),
+                     baud.actual_bd, baud.error_pct, f.mcu_baud, (f.mcu_baud / baud.actual_bd - 1.0) * 100.0)
+      << "  PC wrote " << f.pc.writes().size() << " bytes, one per confirm"
+      << (f.pc.failure() ? fmt::format(FMT_STRING(" (stopped at {:.3f} s: {})"), ps_to_s(f.pc.failure()->t_ps),
+                                       f.pc.failure()->reason)
                          : std::string())
       << "; framing errors at the MCU " << st.usart.rx_framing_errors << ", at the CP2102 "
       << f.cp2102.stats().framing_errors << '\n'
@@ -159,7 +160,8 @@ std::string details_text(const AtmegaFacts& f) {
     }
     t << '\n'
       << "  chords with late data " << gaps.late
-      << format(", longest wait %.3f ms, Y steps while waiting ", static_cast<double>(gaps.wait_max_ps) / 1e9)
+      << fmt::format(FMT_STRING(", longest wait {:.3f} ms, Y steps while waiting "),
+                     static_cast<double>(gaps.wait_max_ps) / 1e9)
       << gaps.y_steps_waiting << '\n';
     return t.str();
 }

@@ -1,7 +1,8 @@
 #include "architectures/atmega/firmware_usart.hpp"
 
+#include <fmt/format.h>
+
 #include "avr/avr_chip.hpp"
-#include "common/text_format.hpp"
 
 namespace cnc::sim {
 
@@ -13,8 +14,8 @@ constexpr avr::Cycle kProbeSliceCycles = 1600;
 }  // namespace
 
 std::string FirmwareUsart::text(double f_cpu_hz) const {
-    return format("%.1f Bd (UBRR0 = %.0f, ", baud, ubrr) + (u2x ? "U2X0 = 1" : "U2X0 = 0") +
-           format(": %.0f cycles a bit at %g MHz)", static_cast<double>(bit_cycles), f_cpu_hz / 1e6);
+    return fmt::format(FMT_STRING("{:.1f} Bd (UBRR0 = {}, U2X0 = {:d}: {} cycles a bit at {:g} MHz)"), baud, ubrr, u2x,
+                       bit_cycles, f_cpu_hz / 1e6);
 }
 
 std::optional<FirmwareUsart> probe_firmware_usart(const avr::AvrCoreConfig& cfg) {

@@ -3,9 +3,10 @@
 #include <string>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "architectures/fpga_uart/fpga_uart_settings.hpp"
 #include "common/bad_input.hpp"
-#include "common/text_format.hpp"
 #include "host/core/packet_codec.hpp"
 #include "scenario/scenario.hpp"
 
@@ -45,7 +46,8 @@ public:
                 throw BadInput(s.file + ": " + p + "steps_per_mm (or " + p +
                                    "step_angle_deg, microsteps and the "
                                    "transmission keys), fpga.clock_hz",
-                               format("%.10g steps/mm: ", machine->steps_per_mm()) + numerator_problem(e) +
+                               fmt::format(FMT_STRING("{:.10g} steps/mm: "), machine->steps_per_mm()) +
+                                   numerator_problem(e) +
                                    "; host.numerator = \"seed-constant\" sends the script's constant instead");
             }
         }

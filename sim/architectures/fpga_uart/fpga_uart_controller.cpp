@@ -7,6 +7,8 @@
 #include <sstream>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "architectures/fpga_uart/dead_time.hpp"
 #include "architectures/fpga_uart/fpga_uart.hpp"
 #include "architectures/fpga_uart/fpga_uart_settings.hpp"
@@ -14,7 +16,6 @@
 #include "architectures/serial_host/link_checks.hpp"
 #include "common/bad_input.hpp"
 #include "common/record_log.hpp"
-#include "common/text_format.hpp"
 #include "fpga/core/step_schedule.hpp"
 #include "fpga/top.hpp"
 #include "host/core/packet_codec.hpp"
@@ -305,10 +306,10 @@ nlohmann::json sent_json(const host::SentPacket& p) {
 // The FPGA UART's rate (clock / FULL_BIT) against the CP2102's, before anything is simulated.
 void check_fpga_rate(const Scenario& s, const FpgaUartSettings& f) {
     const double fpga_bd = static_cast<double>(f.fpga.clk_hz) / f.fpga.uart_full_bit_cycles;
-    check_line_rates(s.file + ": link.baud, fpga.uart_baud", cp2102_end(f.serial.link),
-                     {fpga_bd, format("the FPGA UART at %.2f Bd (fpga.uart_baud: ", fpga_bd) +
-                                   format("%g MHz / %.0f clocks a bit)", f.fpga.clk_hz / 1e6,
-                                          static_cast<double>(f.fpga.uart_full_bit_cycles))});
+    check_line_rates(
+        s.file + ": link.baud, fpga.uart_baud", cp2102_end(f.serial.link),
+        {fpga_bd, fmt::format(FMT_STRING("the FPGA UART at {:.2f} Bd (fpga.uart_baud: {:g} MHz / {} clocks a bit)"),
+                              fpga_bd, f.fpga.clk_hz / 1e6, f.fpga.uart_full_bit_cycles)});
 }
 
 // The seed 000 system between the job and the machine's pins: the CAM (GCODE2STEPS) on the host, or the steps file
@@ -471,13 +472,13 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
 
     std::ostringstream text;
     text << "fpga-uart link and host\n"
-         << format("  line %.1f Bd (%+.3f %% vs requested), FPGA bit %.0f clocks\n", baud.actual_bd, baud.error_pct,
-                   m_f.fpga.uart_full_bit_cycles)
+         << fmt::format(FMT_STRING("  line {:.1f} Bd ({:+.3f} % vs requested), FPGA bit {} clocks\n"), baud.actual_bd,
+                        baud.error_pct, m_f.fpga.uart_full_bit_cycles)
          << "  packets sent " << m_sender.packets().size() << ", ACK timeouts " << m_sender.errors() << ", FPGA ACKs "
          << st.acks_sent << " (dropped " << st.acks_dropped << ")\n"
          << summary_text(dead);
     for (const host::SenderMessage& m : m_sender.messages()) {
-        text << format("  host at %.6f s: ", ps_to_s(m.t_ps)) << m.text << '\n';
+        text << fmt::format(FMT_STRING("  host at {:.6f} s: {}\n"), ps_to_s(m.t_ps), m.text);
     }
     run.details_text = text.str();
 

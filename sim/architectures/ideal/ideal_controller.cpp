@@ -5,13 +5,14 @@
 
 #include <systemc>
 
+#include <fmt/format.h>
+
 #include "architectures/ideal/ideal.hpp"
 #include "architectures/ideal/ideal_edges.hpp"
 #include "architectures/ideal/ideal_settings.hpp"
 #include "architectures/planner/planned_job.hpp"
 #include "architectures/planner/planned_moves.hpp"
 #include "common/sc_time.hpp"
-#include "common/text_format.hpp"
 #include "run/controller.hpp"
 #include "run/machine_run.hpp"
 
@@ -146,8 +147,8 @@ public:
     void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override {
         const double duration_s = ps_to_s(m_end_ps);
         run.details = {{"trajectory_s", duration_s}, {"scan_step_us", ps_to_us(kScanStepPs)}};
-        run.details_text =
-            format("ideal: the planned trajectory, %.6f s, stepped at its half-step crossings\n", duration_s);
+        run.details_text = fmt::format(
+            FMT_STRING("ideal: the planned trajectory, {:.6f} s, stepped at its half-step crossings\n"), duration_s);
         if (!m_generator.finished()) {
             run.ok = false;
             run.failure = "the job did not finish: " + time_limit_text(budget, end);

@@ -1,7 +1,8 @@
 #include "architectures/serial_host/link_checks.hpp"
 
+#include <fmt/format.h>
+
 #include "common/bad_input.hpp"
-#include "common/text_format.hpp"
 #include "uart/core/cp2102_baud.hpp"
 #include "uart/core/rate_tolerance.hpp"
 
@@ -9,22 +10,23 @@ namespace cnc::sim {
 
 LineEnd cp2102_end(const uart::Cp2102Config& link) {
     const uart::Cp2102Baud b = uart::cp2102_baud(link.requested_baud, link.ideal_baud);
-    const std::string rate = link.ideal_baud ? format("(link.ideal_baud: exactly %.0f Bd)", b.actual_bd)
-                                             : format("(the CP2102 runs %.2f Bd)", b.actual_bd);
-    return {b.actual_bd, format("link.baud = %.0f ", link.requested_baud) + rate};
+    const std::string rate = link.ideal_baud
+                                 ? fmt::format(FMT_STRING("(link.ideal_baud: exactly {:.0f} Bd)"), b.actual_bd)
+                                 : fmt::format(FMT_STRING("(the CP2102 runs {:.2f} Bd)"), b.actual_bd);
+    return {b.actual_bd, fmt::format(FMT_STRING("link.baud = {} {}"), link.requested_baud, rate)};
 }
 
 void check_line_rates(const std::string& where, const LineEnd& host, const LineEnd& controller) {
-    const uart::FrameFormat fmt = uart::kFormat8N1;  // every UART link of the project
-    if (uart::rates_within_tolerance(host.baud, controller.baud, fmt)) return;
-    const double bits = uart::stop_sample_bits(fmt);
-    throw BadInput(where, "baud mismatch: " + host.setting + " against " + controller.setting +
-                              format(": the host's line runs %+.2f %% off the receiver's rate, ",
-                                     uart::rate_mismatch(host.baud, controller.baud) * 100.0) +
-                              format("and 8N1 works within +-%.2f %% (the stop bit is sampled %.1f bits after the "
-                                     "start edge: 0.5 / %.1f = ",
-                                     uart::max_rate_mismatch(fmt) * 100.0, bits, bits) +
-                              format("%.2f %% at most, halved for margin); give both ends one rate", 50.0 / bits));
+    const uart::FrameFormat frame = uart::kFormat8N1;  // every UART link of the project
+    if (uart::rates_within_tolerance(host.baud, controller.baud, frame)) return;
+    const double bits = uart::stop_sample_bits(frame);
+    throw BadInput(
+        where, fmt::format(FMT_STRING("baud mismatch: {} against {}: the host's line runs {:+.2f} % off the "
+                                      "receiver's rate, and 8N1 works within +-{:.2f} % (the stop bit is "
+                                      "sampled {:.1f} bits after the start edge: 0.5 / {:.1f} = {:.2f} % at "
+                                      "most, halved for margin); give both ends one rate"),
+                           host.setting, controller.setting, uart::rate_mismatch(host.baud, controller.baud) * 100.0,
+                           uart::max_rate_mismatch(frame) * 100.0, bits, bits, 50.0 / bits));
 }
 
 std::optional<std::string> framing_failure(std::int64_t at_controller, const std::string& controller,

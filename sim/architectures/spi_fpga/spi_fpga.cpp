@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "architectures/spi_fpga/spi_fpga_settings.hpp"
 #include "common/bad_input.hpp"
-#include "common/text_format.hpp"
 #include "scenario/scenario.hpp"
 #include "spi/core/spi_frame.hpp"
 
@@ -42,10 +43,11 @@ public:
             mm_per_s * std::max(share_x * s.machine.x.steps_per_mm(), share_y * s.machine.y.steps_per_mm());
         const double slowest = spi::rate_for_period(spi::kMaxPeriodCycles, s.settings<SpiFpgaSettings>().fpga.clk_hz);
         if (steps_per_s < slowest) {
-            throw BadInput(where, format("feed %.6g mm/min steps the leading axis %.6g times a second, slower "
-                                         "than the spi-fpga rate word's slowest step (one per 2^30 - 1 clocks: ",
-                                         m.feed_mm_per_min, steps_per_s) +
-                                      format("%.4g steps/s at fpga_spi.clock_hz); raise F", slowest));
+            throw BadInput(where, fmt::format(FMT_STRING("feed {:.6g} mm/min steps the leading axis {:.6g} times a "
+                                                         "second, slower than the spi-fpga rate word's slowest step "
+                                                         "(one per 2^30 - 1 clocks: {:.4g} steps/s at "
+                                                         "fpga_spi.clock_hz); raise F"),
+                                              m.feed_mm_per_min, steps_per_s, slowest));
         }
     }
 

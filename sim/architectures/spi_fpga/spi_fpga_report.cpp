@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <sstream>
 
-#include "common/text_format.hpp"
+#include <fmt/format.h>
+
+#include "common/rounding.hpp"
 #include "spi/core/spi_frame.hpp"
 #include "spi/core/spi_timing.hpp"
 
@@ -98,10 +100,10 @@ std::string staircase_text(const host::servo::ServoSummary& summary) {
     std::ostringstream os;
     os << "  rate log from the first running word (t; x, y: steps/s -> period word in clocks, signed by DIR):\n";
     for (const host::servo::StaircaseRow& row : summary.staircase()) {
-        os << format("    %9.6f s", ps_to_s(row.t_ps));
+        os << fmt::format(FMT_STRING("    {:>9.6f} s"), ps_to_s(row.t_ps));
         for (std::size_t a = 0; a < host::servo::kAxes; ++a) {
-            os << format("  %+10.1f -> %+11.0f", row.requested_steps_per_s[a],
-                         static_cast<double>(signed_period(row.word[a])));
+            os << fmt::format(FMT_STRING("  {:>+10.1f} -> {:>+11}"), row.requested_steps_per_s[a],
+                              signed_period(row.word[a]));
         }
         os << '\n';
     }
@@ -185,26 +187,23 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
 
     std::ostringstream text;
     text << "spi-fpga host, link and FPGA\n"
-         << format("  servo: %.0f us period, %.0f periods (%.0f tracking, %.0f landing)\n", ps_to_us(cfg.period_ps),
-                   static_cast<double>(sum.periods()), static_cast<double>(sum.tracking_periods()),
-                   static_cast<double>(sum.landing_periods()))
-         << "  wake-up latency " << to_string(cfg.latency.distribution)
-         << format(" <= %.1f us: min %.3f, mean %.3f, max %.3f us\n", ps_to_us(cfg.latency.max_ps), latency_min_us,
-                   latency_mean_us, latency_max_us)
-         << format("  landing: %.0f of %.0f rest points, %.0f landing pulses",
-                   static_cast<double>(st.rest_points_landed), static_cast<double>(st.rest_points),
-                   static_cast<double>(st.landing_pulses));
-    if (host.t_done_ps()) text << format(", job done at %.6f s", ps_to_s(*host.t_done_ps()));
+         << fmt::format(FMT_STRING("  servo: {:.0f} us period, {} periods ({} tracking, {} landing)\n"),
+                        ps_to_us(cfg.period_ps), sum.periods(), sum.tracking_periods(), sum.landing_periods())
+         << fmt::format(FMT_STRING("  wake-up latency {} <= {:.1f} us: min {:.3f}, mean {:.3f}, max {:.3f} us\n"),
+                        to_string(cfg.latency.distribution), ps_to_us(cfg.latency.max_ps), latency_min_us,
+                        latency_mean_us, latency_max_us)
+         << fmt::format(FMT_STRING("  landing: {} of {} rest points, {} landing pulses"), st.rest_points_landed,
+                        st.rest_points, st.landing_pulses);
+    if (host.t_done_ps()) text << fmt::format(FMT_STRING(", job done at {:.6f} s"), ps_to_s(*host.t_done_ps()));
     text << '\n'
-         << format("  SPI: %.0f-bit frames at %.0f Hz: %.3f us with SS low", static_cast<double>(bits),
-                   static_cast<double>(link.sclk_hz), ps_to_us(transfer))
-         << format(" (%.3f us slot), %.3f %% of the servo period; link busy %.3f %%\n", ps_to_us(slot), share_pct,
-                   busy_pct)
-         << "  FPGA: rate_apply " << out.details["fpga"]["rate_apply"].get<std::string>()
-         << format(", FIFO depth %.0f: max level %.0f, %.0f frames dropped", static_cast<double>(fcfg.fifo_depth),
-                   static_cast<double>(fpga.fifo.core().max_level()), static_cast<double>(drops))
-         << format(", %.0f rejected, %.0f stretched words\n", static_cast<double>(rejected),
-                   static_cast<double>(stretched))
+         << fmt::format(FMT_STRING("  SPI: {}-bit frames at {} Hz: {:.3f} us with SS low ({:.3f} us slot), {:.3f} % of "
+                                   "the servo period; link busy {:.3f} %\n"),
+                        bits, link.sclk_hz, ps_to_us(transfer), ps_to_us(slot), share_pct, busy_pct)
+         << fmt::format(
+                FMT_STRING("  FPGA: rate_apply {}, FIFO depth {}: max level {}, {} frames dropped, {} rejected, "
+                           "{} stretched words\n"),
+                out.details["fpga"]["rate_apply"].get<std::string>(), fcfg.fifo_depth, fpga.fifo.core().max_level(),
+                drops, rejected, stretched)
          << staircase_text(sum);
     out.text = text.str();
 

@@ -7,7 +7,7 @@
 #include <ostream>
 #include <string>
 
-#include "common/text_format.hpp"
+#include "common/rounding.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/report/report.hpp"
 
@@ -120,7 +120,7 @@ json rounded_opt(const std::optional<double>& v, double per_unit) {
     return v ? json(rounded(*v, per_unit)) : json(nullptr);
 }
 
-// Per-unit resolutions of the per-move figures (text_format.hpp rounded()).
+// Per-unit resolutions of the per-move figures (common/rounding.hpp rounded()).
 constexpr double kToTheNm = 1e3;            // um
 constexpr double kToThePs = 1e3;            // ns
 constexpr double kToTheNs = 1e9;            // s

@@ -5,8 +5,9 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include <fmt/format.h>
+
 #include "common/bad_input.hpp"
-#include "common/text_format.hpp"
 
 namespace cnc::host::cad2g {
 
@@ -95,8 +96,10 @@ private:
         const double x = p.x_mm * m_machine.x.steps_per_mm();
         const double y = p.y_mm * m_machine.y.steps_per_mm();
         if (!(std::fabs(x) <= kMaxPositionSteps && std::fabs(y) <= kMaxPositionSteps)) {
-            throw BadInput(source_line(move), format("position (%.10g, %.10g) mm is beyond the ", p.x_mm, p.y_mm) +
-                                                  format("%.0f steps an axis may go from 0", kMaxPositionSteps));
+            throw BadInput(source_line(move),
+                           fmt::format(FMT_STRING("position ({:.10g}, {:.10g}) mm is beyond the {:.0f} steps an axis "
+                                                  "may go from 0"),
+                                       p.x_mm, p.y_mm, kMaxPositionSteps));
         }
         return {std::llround(x), std::llround(y)};
     }
@@ -197,8 +200,9 @@ private:
         // (a corrupt end point) would need more than memory holds.
         const double chords_needed = std::max({1.0, by_angle, by_count});
         if (!(chords_needed <= kMaxArcChords)) {
-            throw BadInput(source_line(move), format("arc of %.6g mm needs %.6g chords", length_mm, chords_needed) +
-                                                  format(", more than %.0f", kMaxArcChords));
+            throw BadInput(source_line(move),
+                           fmt::format(FMT_STRING("arc of {:.6g} mm needs {:.6g} chords, more than {:.0f}"), length_mm,
+                                       chords_needed, kMaxArcChords));
         }
         const auto chords = static_cast<std::int64_t>(chords_needed);
         int chord = 0;
@@ -229,8 +233,8 @@ private:
             static_cast<double>(kCountMax + 1) / std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm());
         std::string text = std::string(g_name(id)) + " count " + std::to_string(longest) +
                            " exceeds the 16-bit step counter" +
-                           format(" (%.1f mm at %.0f steps/mm): ", limit_mm,
-                                  std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm()));
+                           fmt::format(FMT_STRING(" ({:.1f} mm at {:.0f} steps/mm): "), limit_mm,
+                                       std::max(m_machine.x.steps_per_mm(), m_machine.y.steps_per_mm()));
         if (m_opt.long_moves == LongMoves::Split) {
             text += "sent as " + std::to_string((longest + kCountMax - 1) / kCountMax) +
                     " commands (atmega.long_moves = split)";
@@ -262,8 +266,9 @@ private:
                                            std::to_string(k.fast + k.slow) + " of " + std::to_string(motions) +
                                            (move.path.is_arc ? " chords (" : " commands (") + std::to_string(k.slow) +
                                            " held to 255, " + std::to_string(k.fast) + " to 0): " + axis +
-                                           format(" asked %.4g..%.4g mm/s, the 8-bit range is %.4g..%.4g mm/s",
-                                                  k.min_asked, k.max_asked, slowest, fastest)});
+                                           fmt::format(FMT_STRING(" asked {:.4g}..{:.4g} mm/s, the 8-bit range is "
+                                                                  "{:.4g}..{:.4g} mm/s"),
+                                                       k.min_asked, k.max_asked, slowest, fastest)});
         };
         report(x, "ocr0a_range", "OCR0A", "X", m_machine.x.mm_per_step());
         report(y, "ocr2a_range", "OCR2A", "Y", m_machine.y.mm_per_step());

@@ -100,6 +100,14 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     if (trace) trace->write(rig);
 
     ArchRun out;
+    if (trace) {
+        out.trace = trace->layout();
+        // The save file zooms on the first pass under the PID.
+        if (!rig.passes.empty()) {
+            const lathe::RecordedPass& p = rig.passes.front();
+            out.first_move = TimeSpan{s_to_ps(p.start_s), s_to_ps(p.start_s + p.pid_s)};
+        }
+    }
     nlohmann::json& d = out.details;
     std::ostringstream text;
     text << "lathe-sync: " << s.mode << " at " << fixed(s.spindle_rpm, 1) << " rpm, firmware "

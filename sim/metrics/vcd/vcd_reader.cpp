@@ -297,7 +297,7 @@ const EdgeLog* find_vcd_signal(const VcdContents& vcd, const std::string& name) 
     const EdgeLog* found = nullptr;
     for (const auto& [path, key] : vcd.paths) {
         const bool ends = path.size() > tail.size() && path.compare(path.size() - tail.size(), tail.size(), tail) == 0;
-        if (!ends) continue;
+        if (!ends && path != name) continue;
         if (found != nullptr) return nullptr;
         found = &vcd.signals.at(key);
     }

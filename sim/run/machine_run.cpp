@@ -25,12 +25,13 @@ void record_pins(EdgeRecorder& rec, const MachinePins& pins, bool enable) {
     rec.watch(pins.laser, pins.laser.basename());
 }
 
-// The VCD's pins in the order the signals go (docs/vcd.md): the controller's own (its link, its FPGA's nets), then
-// each DRV8825's STEP, DIR and nENBL and the laser head's input, each with the clock that times it.
+// The VCD's pins: each DRV8825's STEP, DIR and nENBL and the laser head's input, each with the clock that times it,
+// then the controller's own (its link, its FPGA's nets). The machine's come first: sigrok-cli 0.7.2 decodes a STEP
+// pin declared after the link's lines wrongly (116 of 9600 rising edges on the fpga-uart square).
 std::vector<TracedPin> traced_pins(const MachinePins& pins, const Controller& ctl) {
     const MachinePinClocks clocks = ctl.pin_clocks();
     const std::optional<std::int64_t> out = clocks.step_dir_laser_hz;
-    std::vector<TracedPin> traced = ctl.traced_pins();
+    std::vector<TracedPin> traced;
     for (const TracedPin& p : std::initializer_list<TracedPin>{{&pins.step_x, "driver_x", out},
                                                                {&pins.dir_x, "driver_x", out},
                                                                {&pins.n_enbl_x, "driver_x", clocks.enable_hz},
@@ -40,6 +41,7 @@ std::vector<TracedPin> traced_pins(const MachinePins& pins, const Controller& ct
                                                                {&pins.laser, "laser", out}}) {
         traced.push_back(p);
     }
+    for (const TracedPin& p : ctl.traced_pins()) traced.push_back(p);
     return traced;
 }
 

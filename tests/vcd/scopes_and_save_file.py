@@ -23,14 +23,15 @@ import sys
 
 from vcd_tools import fail
 
-MACHINE = [("driver_x", ["step_x", "dir_x", "n_enbl_x"]), ("driver_y", ["step_y", "dir_y", "n_enbl_y"]),
-           ("laser", ["laser"]), ("carriage", ["carriage_x_mm", "carriage_y_mm"])]
+DRIVERS = [("driver_x", ["step_x", "dir_x", "n_enbl_x"]), ("driver_y", ["step_y", "dir_y", "n_enbl_y"]),
+           ("laser", ["laser"])]
+CARRIAGE = [("carriage", ["carriage_x_mm", "carriage_y_mm"])]
 EXPECTED = {
-    "fpga-uart": [("link", ["uart_rx", "uart_tx"]), ("fpga", ["busy", "pkt_valid", "cfg_valid", "rx_valid", "ack"])]
-    + MACHINE,
-    "atmega": [("link", ["uart_rx", "uart_tx"])] + MACHINE,
-    "spi-fpga": [("link", ["sclk", "mosi", "miso", "ss"])] + MACHINE,
-    "ideal": MACHINE,
+    "fpga-uart": DRIVERS + [("link", ["uart_rx", "uart_tx"]),
+                            ("fpga", ["busy", "pkt_valid", "cfg_valid", "rx_valid", "ack"])] + CARRIAGE,
+    "atmega": DRIVERS + [("link", ["uart_rx", "uart_tx"])] + CARRIAGE,
+    "spi-fpga": DRIVERS + [("link", ["sclk", "mosi", "miso", "ss"])] + CARRIAGE,
+    "ideal": DRIVERS + CARRIAGE,
     "lathe-sync": [("l298", ["oc1a_ena_pd5", "dir1_in1_pd0", "dir2_in2_pd1"]),
                    ("motor_encoder", ["int0_motor_pd2"]),
                    ("spindle_encoder", ["int1_spindle_pd3", "index_pd6"]),

@@ -15,12 +15,14 @@ namespace cnc::metrics {
 
 namespace {
 
-// Short identifiers from the printable ASCII range '!'..'~', as VCD writers use.
+// Short identifiers from the printable ASCII range '!'..'~', as VCD writers use, without '$': sigrok-cli 0.7.2
+// (libsigrok 0.5.2) drops the changes of a variable whose identifier has it.
 std::string vcd_id(std::size_t n) {
-    constexpr std::size_t kBase = '~' - '!' + 1;
+    constexpr std::size_t kBase = '~' - '!';  // the range less '$'
     std::string id;
     do {
-        id += static_cast<char>('!' + n % kBase);
+        const char c = static_cast<char>('!' + n % kBase);
+        id += c >= '$' ? static_cast<char>(c + 1) : c;
         n /= kBase;
     } while (n > 0);
     return id;

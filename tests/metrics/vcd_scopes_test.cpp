@@ -29,9 +29,9 @@ TEST(MetricsVcdScopes, OneScopePerBlockInTheOrderTheBlocksFirstCome) {
     EXPECT_NE(out.str().find("$scope module cncsim $end\n"
                              "$scope module link $end\n$var wire 1 ! uart_rx $end\n$var wire 1 # uart_tx $end\n"
                              "$upscope $end\n"
-                             "$scope module driver_x $end\n$var wire 1 \" step_x $end\n$var wire 1 $ dir_x $end\n"
+                             "$scope module driver_x $end\n$var wire 1 \" step_x $end\n$var wire 1 % dir_x $end\n"
                              "$upscope $end\n"
-                             "$var wire 1 % marker $end\n"
+                             "$var wire 1 & marker $end\n"
                              "$upscope $end\n$enddefinitions $end\n"),
               std::string::npos)
         << out.str();

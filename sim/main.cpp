@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -27,6 +28,7 @@
 #include "metrics/vcd/analyze_input.hpp"
 #include "metrics/vcd/vcd_reader.hpp"
 #include "motor_curve_cmd.hpp"
+#include "output/gtkw_save.hpp"
 #include "output/output_file.hpp"
 #include "output/samples_csv.hpp"
 #include "plots/run_plots.hpp"
@@ -74,7 +76,10 @@ int cmd_run(const Input& input, const std::vector<std::string>& sets, const std:
     if (!report.empty()) s.report_path = report;
     s.keep_run_input = !plots.empty() || !plot_data.empty() || !samples.empty();
     // Every output can be written before anything is simulated; the report is opened now and filled at the end.
-    if (!s.vcd_path.empty()) cnc::sim::check_output_path(s.vcd_path, vcd.empty() ? s.file + ": trace.vcd" : "--vcd");
+    const std::string vcd_label = vcd.empty() ? s.file + ": trace.vcd" : "--vcd";
+    const std::optional<std::string> gtkw = s.vcd_path.empty() ? std::nullopt : cnc::sim::gtkw_path(s.vcd_path);
+    if (!s.vcd_path.empty()) cnc::sim::check_output_path(s.vcd_path, vcd_label);
+    if (gtkw) cnc::sim::check_output_path(*gtkw, vcd_label + " (its gtkwave save file)");
     if (!plots.empty()) cnc::sim::check_output_dir(plots, "--plots");
     if (!plot_data.empty()) cnc::sim::check_output_dir(plot_data, "--plot-data");
     std::optional<cnc::sim::OutputFile> samples_file;
@@ -89,6 +94,10 @@ int cmd_run(const Input& input, const std::vector<std::string>& sets, const std:
                                          : cnc::sim::ProgressStyle::Log;
     const cnc::sim::RunOutcome out = cnc::sim::run_scenario(s);
     std::cout << out.summary;
+    if (gtkw && out.arch.trace) {  // the VCD's view, written with it for a failed run too
+        cnc::sim::write_output_file(*gtkw, vcd_label + " (its gtkwave save file)",
+                                    cnc::sim::gtkw_text(s.vcd_path, *out.arch.trace, out.arch.first_move));
+    }
     if (samples_file) {  // a trace of what ran, like the VCD: written for a failed run too
         cnc::sim::write_samples_csv(samples_file->stream(), out.arch.input.tool);
         samples_file->close();

@@ -16,24 +16,32 @@ std::string allowed_names(const std::vector<TraceCandidate>& all) {
 
 }  // namespace
 
+bool names_signal(const std::string& requested, const std::string& block, const std::string& name) {
+    return requested == name || (!block.empty() && requested == block + "." + name);
+}
+
 std::vector<std::size_t> select_traced(const Scenario& s, const std::vector<TraceCandidate>& all) {
     const std::string key = s.file + ": trace.signals";
-    for (const std::string& name : s.trace_signals) {
-        const auto named = [&](const TraceCandidate& c) { return name == c.name; };
-        if (std::none_of(all.begin(), all.end(), named)) {
-            throw BadInput(
-                key, "'" + name + "' is not a signal of " + s.architecture + " (allowed: " + allowed_names(all) + ")");
-        }
-        if (std::count(s.trace_signals.begin(), s.trace_signals.end(), name) > 1) {
-            throw BadInput(key, "'" + name + "' is named twice");
-        }
-    }
     std::vector<std::size_t> out;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        const bool named =
-            std::find(s.trace_signals.begin(), s.trace_signals.end(), all[i].name) != s.trace_signals.end();
-        if (s.trace_signals.empty() ? !all[i].on_request : named) out.push_back(i);
+    for (const std::string& requested : s.trace_signals) {
+        const auto named = [&](const TraceCandidate& c) { return names_signal(requested, c.block, c.name); };
+        const auto it = std::find_if(all.begin(), all.end(), named);
+        if (it == all.end()) {
+            throw BadInput(key, "'" + requested + "' is not a signal of " + s.architecture +
+                                    " (allowed: " + allowed_names(all) + ", or each as BLOCK.NAME)");
+        }
+        const auto k = static_cast<std::size_t>(it - all.begin());
+        if (std::find(out.begin(), out.end(), k) != out.end()) {
+            throw BadInput(key, "'" + requested + "' names " + it->name + " a second time");
+        }
+        out.push_back(k);
     }
+    if (s.trace_signals.empty()) {
+        for (std::size_t i = 0; i < all.size(); ++i) {
+            if (!all[i].on_request) out.push_back(i);
+        }
+    }
+    std::sort(out.begin(), out.end());  // the architecture's order
     return out;
 }
 

@@ -16,8 +16,8 @@ TimePs now_ps() {
 
 std::vector<TraceCandidate> candidates(const std::vector<TracedPin>& pins, const std::vector<TracedReal>& reals) {
     std::vector<TraceCandidate> all;
-    for (const TracedPin& p : pins) all.push_back({p.signal->basename(), p.on_request});
-    for (const TracedReal& r : reals) all.push_back({r.signal->basename(), false});
+    for (const TracedPin& p : pins) all.push_back({p.signal->basename(), p.on_request, p.block});
+    for (const TracedReal& r : reals) all.push_back({r.signal->basename(), false, r.block});
     return all;
 }
 
@@ -32,10 +32,11 @@ void spawn_on(const sc_core::sc_event& event, const std::string& name, F f) {
 
 }  // namespace
 
-bool trace_names_any(const Scenario& s, std::initializer_list<const char*> names) {
+bool trace_names_any(const Scenario& s, const char* block, std::initializer_list<const char*> names) {
     if (s.vcd_path.empty()) return false;
     return std::any_of(names.begin(), names.end(), [&](const char* n) {
-        return std::find(s.trace_signals.begin(), s.trace_signals.end(), n) != s.trace_signals.end();
+        return std::any_of(s.trace_signals.begin(), s.trace_signals.end(),
+                           [&](const std::string& requested) { return names_signal(requested, block, n); });
     });
 }
 
@@ -46,6 +47,7 @@ void VcdTrace::change(Write write, Keep keep) {
     if (m_to_ps && t_ps > *m_to_ps) {
         if (!m_writer) open_at(m_from_ps);
         m_writer->finish(*m_to_ps);
+        m_layout.to_ps = *m_to_ps;
         m_ended = true;
         return;
     }
@@ -67,13 +69,19 @@ VcdTrace::VcdTrace(const Scenario& s, const std::vector<TracedPin>& pins, const 
       m_to_ps(s.trace_to_ps) {
     const std::vector<TraceCandidate> all = candidates(pins, reals);
     const std::vector<std::size_t> chosen = select_traced(s, all);
+    m_layout.top_scope = metrics::kVcdTopScope;
+    m_layout.timescale_fs = m_timescale_fs;
+    m_layout.from_ps = m_from_ps;
     for (const std::size_t k : chosen) {
         if (k < pins.size()) {
             m_signals.push_back({all[k].name, pins[k].signal->read(), pins[k].clock_hz});
+            m_layout.signals.push_back({all[k].block, all[k].name});
         } else {
-            const double value = reals[k - pins.size()].signal->read();
-            m_signals.push_back({all[k].name, false, std::nullopt, metrics::VcdVarKind::Real, value});
+            const TracedReal& r = reals[k - pins.size()];
+            m_signals.push_back({all[k].name, false, std::nullopt, metrics::VcdVarKind::Real, r.signal->read()});
+            m_layout.signals.push_back({all[k].block, all[k].name, true, r.sampled});
         }
+        m_signals.back().scope = all[k].block;
     }
     metrics::check_vcd_signals(m_timescale_fs, m_signals, m_timescale_key);  // before the file: a refusal leaves none
     m_file.emplace(s.vcd_path, "the VCD");
@@ -104,7 +112,8 @@ void VcdTrace::close() {
     if (!m_ended) {
         const TimePs end_ps = m_to_ps ? std::min(*m_to_ps, now_ps()) : now_ps();
         if (!m_writer) open_at(m_from_ps);  // nothing changed in the window: the last levels hold through it
-        m_writer->finish(std::max(end_ps, m_from_ps));
+        m_layout.to_ps = std::max(end_ps, m_from_ps);
+        m_writer->finish(m_layout.to_ps);
     }
     m_ended = true;
     m_file->close();

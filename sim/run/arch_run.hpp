@@ -12,6 +12,7 @@
 #include "common/warning.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/run_input.hpp"
+#include "output/gtkw_save.hpp"
 
 namespace cnc::sim {
 
@@ -45,6 +46,10 @@ struct ArchRun {
     std::string failure;
     double estimated_s = 0.0;  // the job's estimate and the simulated-time limit the run had (run/simulate.hpp)
     double max_sim_s = 0.0;
+    // What the VCD holds, for its gtkwave save file, when the run wrote one; and where the save file zooms: the
+    // first move, which an architecture without programmed moves sets (run_scenario sets the others').
+    std::optional<TraceLayout> trace;
+    std::optional<TimeSpan> first_move;
 };
 
 }  // namespace cnc::sim

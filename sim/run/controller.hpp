@@ -35,7 +35,8 @@ public:
 
     // --- Elaboration (the controller is built and bound to the machine's pins; the machine and recorder follow.)
     [[nodiscard]] virtual MachinePinClocks pin_clocks() const = 0;
-    // Its own wires in the VCD, after the machine's pins.
+    // Its own wires in the VCD, each in the scope of its hardware block (link, fpga; docs/vcd.md), after the
+    // machine's pins.
     [[nodiscard]] virtual std::vector<TracedPin> traced_pins() const { return {}; }
     // The DIR level that moves an axis the positive way: the DRV8825s are wired so, and the metrics read DIR so.
     [[nodiscard]] virtual bool dir_high_is_positive() const { return true; }

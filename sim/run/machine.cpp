@@ -96,7 +96,8 @@ void Machine::finish_mechanics(SimulationEnd& end, TimePs limit_ps, bool runs_to
 }
 
 std::vector<TracedReal> Machine::traced_positions() const {
-    return {{&m_carriage.carriage_x_mm()}, {&m_carriage.carriage_y_mm()}};
+    const bool sampled = m_axis_x.dynamic != nullptr;  // dynamic axes move between the samples written
+    return {{&m_carriage.carriage_x_mm(), "carriage", sampled}, {&m_carriage.carriage_y_mm(), "carriage", sampled}};
 }
 
 void Machine::bind(MachinePins& pins) {

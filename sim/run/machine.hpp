@@ -66,7 +66,8 @@ public:
     [[nodiscard]] const mech::Drv8825& driver_x() const { return m_drv_x; }
     [[nodiscard]] const mech::Drv8825& driver_y() const { return m_drv_y; }
     [[nodiscard]] const mech::LaserHead& laser_head() const { return m_head; }
-    // The carriage position per axis for the VCD: carriage_x_mm, carriage_y_mm (real-valued).
+    // The carriage position per axis for the VCD, in the carriage's scope: carriage_x_mm, carriage_y_mm
+    // (real-valued).
     [[nodiscard]] std::vector<TracedReal> traced_positions() const;
     // The simulation has stopped (simulate()'s `end`, with the run's time limit; `runs_to_time`: it was simulated
     // with a check period, in slices that run to their end). With the axes on the worker thread, the worker takes

@@ -25,17 +25,22 @@ void record_pins(EdgeRecorder& rec, const MachinePins& pins, bool enable) {
     rec.watch(pins.laser, pins.laser.basename());
 }
 
-// The VCD's pins: the machine's, each with the clock that times it, then the controller's own.
+// The VCD's pins: each DRV8825's STEP, DIR and nENBL and the laser head's input, each with the clock that times it,
+// then the controller's own (its link, its FPGA's nets). The machine's come first: sigrok-cli 0.7.2 decodes a STEP
+// pin declared after the link's lines wrongly (116 of 9600 rising edges on the fpga-uart square).
 std::vector<TracedPin> traced_pins(const MachinePins& pins, const Controller& ctl) {
     const MachinePinClocks clocks = ctl.pin_clocks();
     const std::optional<std::int64_t> out = clocks.step_dir_laser_hz;
-    std::vector<TracedPin> traced = {{&pins.step_x, out},
-                                     {&pins.dir_x, out},
-                                     {&pins.step_y, out},
-                                     {&pins.dir_y, out},
-                                     {&pins.n_enbl_x, clocks.enable_hz},
-                                     {&pins.n_enbl_y, clocks.enable_hz},
-                                     {&pins.laser, out}};
+    std::vector<TracedPin> traced;
+    for (const TracedPin& p : std::initializer_list<TracedPin>{{&pins.step_x, "driver_x", out},
+                                                               {&pins.dir_x, "driver_x", out},
+                                                               {&pins.n_enbl_x, "driver_x", clocks.enable_hz},
+                                                               {&pins.step_y, "driver_y", out},
+                                                               {&pins.dir_y, "driver_y", out},
+                                                               {&pins.n_enbl_y, "driver_y", clocks.enable_hz},
+                                                               {&pins.laser, "laser", out}}) {
+        traced.push_back(p);
+    }
     for (const TracedPin& p : ctl.traced_pins()) traced.push_back(p);
     return traced;
 }
@@ -77,6 +82,7 @@ ArchRun run_on_machine(const Scenario& s, const Job& job, const MakeController& 
     machine.finish_mechanics(end, budget.limit_ps, check_ps > 0);
 
     ArchRun run;
+    if (vcd) run.trace = vcd->layout();
     record_budget(budget, run);
     ctl->simulation_ended(stop_ps);
     metrics::RunInput& in = run.input;

@@ -56,6 +56,15 @@ nlohmann::json warnings_json(const std::vector<Warning>& warnings, bool detail) 
     return out;
 }
 
+// The first programmed move that stepped an axis, from its first to its last STEP edge.
+std::optional<TimeSpan> first_move(const metrics::RunMetrics& m) {
+    for (std::size_t i = 0; i < m.moves.size(); ++i) {
+        const metrics::MoveMetrics move = m.moves.at(i);
+        if (move.t_first_edge_ps && move.t_last_edge_ps) return TimeSpan{*move.t_first_edge_ps, *move.t_last_edge_ps};
+    }
+    return std::nullopt;
+}
+
 // The registry entry named by scenario.architecture runs it.
 template <typename... Entries>
 ArchRun run_architecture(const Scenario& s, const Job& job, EntryList<Entries...>) {
@@ -76,6 +85,7 @@ RunOutcome run_scenario(const Scenario& s) {
     out.arch.warnings.insert(out.arch.warnings.end(), job.move_warnings.begin(), job.move_warnings.end());
     out.arch.warnings.insert(out.arch.warnings.begin(), job.warnings.begin(), job.warnings.end());
     out.metrics = out.arch.metrics ? std::move(*out.arch.metrics) : metrics::compute_metrics(out.arch.input);
+    if (out.arch.trace && !out.arch.first_move) out.arch.first_move = first_move(out.metrics);
     const ArchRun& arch = out.arch;
     const metrics::RunMetrics& m = out.metrics;
 

@@ -122,8 +122,9 @@ void check_start(const KeyReader& r, geom::Vec2 start_mm, const host::MachineMod
 void read_trace_window(KeyReader& r, Scenario& s) {
     s.trace_signals = r.get_string_list(
         "trace.signals",
-        "pins and signals the VCD holds, by name (docs/vcd.md: the pins of each architecture, and the "
-        "real-valued carriage_x_mm, carriage_y_mm); an unknown name is refused with the allowed ones; []: all of "
+        "pins and signals the VCD holds, by name or as BLOCK.NAME (docs/vcd.md: the pins of each architecture "
+        "by block, and the real-valued carriage_x_mm, carriage_y_mm); an unknown name is refused with the allowed "
+        "ones; []: all of "
         "them except the SPI wires sclk, mosi, miso and ss, which are driven bit by bit only when named here (or "
         "with spi.trace_wires = true)");
     constexpr double kMaxTraceS = 1e6;  // the largest scenario.max_sim_s
@@ -226,7 +227,9 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
         if (a->name() == s.architecture) s.arch_settings = std::move(settings);
     }
 
-    s.vcd_path = r.get_string("trace.vcd", "", "VCD file to write (relative to the working directory); empty: none");
+    s.vcd_path = r.get_string("trace.vcd", "",
+                              "VCD file to write (relative to the working directory), with its gtkwave save file "
+                              "beside it (FILE.vcd -> FILE.gtkw); empty: none");
     s.vcd_timescale_fs = *metrics::parse_vcd_timescale_fs(r.get_choice(
         "trace.timescale", "100 ps", metrics::vcd_timescale_names(),
         "VCD time unit: 100 ps keeps every FPGA (20 ns) and AVR (62.5 ns) clock edge exact, a unit that would round "

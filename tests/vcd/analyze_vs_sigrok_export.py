@@ -3,7 +3,7 @@
 header, changes on the timestamp's line) and agrees with analyze of the original capture within one sample.
 
 The run's VCD (100 ps) is resampled by sigrok-cli at 10 MHz (one sample = 100 ns) and written back with -O vcd,
-keeping the channels the analyze options name. Per axis, both give the same STEP rising and falling edges, DIR
+keeping every channel. Per axis, both give the same STEP rising and falling edges, DIR
 changes and pulse runs (edges of each); each run's mean period, the worst jitter and TIE and every DRV8825 timing
 minimum differ by at most one sample.
 
@@ -15,13 +15,6 @@ import sys
 from vcd_tools import DOWNSAMPLE_TO_10MHZ, analyze, expect_equal, fail, run_cncsim, sigrok_cli
 
 SAMPLE_NS = 100.0  # 10 MHz
-SIGNAL_OPTIONS = ("--step", "--dir", "--enable")
-
-
-def channels(options):
-    """The signal names the analyze options give (an --enable's :active-low suffix dropped)."""
-    names = [options[i + 1].split(":")[0] for i in range(len(options) - 1) if options[i] in SIGNAL_OPTIONS]
-    return ",".join(names)
 
 
 def within_one_sample(what, exported, original):
@@ -54,8 +47,9 @@ def main():
     options = sys.argv[4:]
     vcd, _ = run_cncsim(cncsim, workdir, "run", scenario)
     export = os.path.join(workdir, "sigrok_export.vcd")
-    sigrok_cli("-i", vcd, "-I", "vcd:downsample=%d" % DOWNSAMPLE_TO_10MHZ, "-C", channels(options), "-O", "vcd",
-               "-o", export)
+    # Every channel: sigrok-cli 0.7.2's -C exports channels that are not adjacent in the file under the wrong
+    # names (step_y's edges as dir_y when n_enbl_x lies between them).
+    sigrok_cli("-i", vcd, "-I", "vcd:downsample=%d" % DOWNSAMPLE_TO_10MHZ, "-O", "vcd", "-o", export)
     with open(export) as f:
         if not f.readline().startswith("META samplerate: "):
             fail("%s does not start with sigrok-cli's META samplerate line: a different sigrok-cli?" % export)

@@ -8,7 +8,8 @@ Ideal mechanics on the fpga-uart square (scenarios/fpga-uart/square_20mm.toml, s
 at the machine origin 0,0): after every STEP_X rising edge, and so at the last one, the VCD's carriage_x_mm is the
 signed count of STEP_X edges so far (DIR_X giving the sign) / 160 mm. The sign convention is taken from the job:
 its first move goes to +X (G0 X10), and it reaches X30 (its square's far side) and ends at X0.
-A window (trace.from_s/to_s) with trace.signals naming carriage_x_mm holds only the signals named, starts with the
+A window (trace.from_s/to_s) with trace.signals naming carriage_x_mm holds only the signals named (by name or as
+BLOCK.NAME), starts with the
 position the full trace has at trace.from_s, and sigrok-cli reads it (its VCD input skips real variables).
 Dynamic mechanics: the trace ends within a full step (32 microsteps = 0.2 mm) of the commanded X0.
 
@@ -114,7 +115,7 @@ def value_at(changes, ident, tick):
 def check_window(cncsim, scenario, workdir, full_vars, full_changes):
     vcd = os.path.join(workdir, "window.vcd")
     variables, changes = run(cncsim, scenario, vcd, "mechanics.model=ideal",
-                             'trace.signals=["step_x", "dir_x", "carriage_x_mm"]',
+                             'trace.signals=["driver_x.step_x", "dir_x", "carriage.carriage_x_mm"]',
                              "trace.from_s=%g" % WINDOW_FROM_S, "trace.to_s=%g" % WINDOW_TO_S)
     if sorted(variables) != ["carriage_x_mm", "dir_x", "step_x"]:
         fail("window: the VCD holds %s, not the signals named" % sorted(variables))

@@ -1,10 +1,9 @@
 #!/usr/bin/env python3
-"""Every architecture's VCD has the same machine pins, declared first and in the same order (docs/vcd.md:
-step/dir and the DRV8825's nENBL per axis, the laser), then its own link pins: a trace of one architecture can be
-analysed with the options of another. The carriage position per axis (real-valued) comes
-after them in every architecture. spi-fpga's SPI wires toggle bit by bit, so they are
-traced only when asked for (`spi.trace_wires = true` or named in `trace.signals`): asked for here. The ideal
-controller has no link: the machine's pins alone.
+"""Every architecture's VCD has the same machine pins, declared first and in the same order (docs/vcd.md: per
+DRV8825 its STEP, DIR and nENBL, the laser head's input), then its own link pins, and last the carriage position
+per axis (real-valued): a trace of one architecture can be analysed with the options of another. spi-fpga's SPI wires
+toggle bit by bit, so they are traced only when asked for (`spi.trace_wires = true` or named in `trace.signals`):
+asked for here. The ideal controller has no link: the machine's pins alone.
 
 Usage: machine_pins.py CNCSIM SCENARIO WORKDIR ARCHITECTURE...
 """
@@ -14,7 +13,7 @@ import sys
 
 from vcd_tools import fail
 
-MACHINE_PINS = ["step_x", "dir_x", "step_y", "dir_y", "n_enbl_x", "n_enbl_y", "laser"]
+MACHINE_PINS = ["step_x", "dir_x", "n_enbl_x", "step_y", "dir_y", "n_enbl_y", "laser"]
 CARRIAGE = ["carriage_x_mm", "carriage_y_mm"]
 LINK_PINS = {"fpga-uart": {"uart_rx", "uart_tx"}, "atmega": {"uart_rx", "uart_tx"},
              "spi-fpga": {"sclk", "mosi", "miso", "ss"}, "ideal": set()}
@@ -47,11 +46,9 @@ def main():
         if run.returncode != 0:
             fail("%s: exit %d\n%s" % (" ".join(cmd), run.returncode, run.stderr))
         names = declared(vcd)
-        if names[:len(MACHINE_PINS)] != MACHINE_PINS:
-            fail("%s: the VCD starts with %s, expected the machine pins %s" % (arch, names[:len(MACHINE_PINS)],
-                                                                             MACHINE_PINS))
-        if names[-len(CARRIAGE):] != CARRIAGE:
-            fail("%s: the VCD ends with %s, expected the carriage positions %s" % (arch, names[-2:], CARRIAGE))
+        if names[:len(MACHINE_PINS)] != MACHINE_PINS or names[-len(CARRIAGE):] != CARRIAGE:
+            fail("%s: the VCD declares %s, expected the machine pins %s first and the carriage %s last" %
+                 (arch, names, MACHINE_PINS, CARRIAGE))
         missing = LINK_PINS[arch] - set(names)
         if missing:
             fail("%s: no link pin %s in %s" % (arch, sorted(missing), names))

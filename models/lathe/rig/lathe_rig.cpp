@@ -46,28 +46,29 @@ SpindleParams spindle_at(const LatheRigConfig& cfg) {
 }  // namespace
 
 const std::vector<TracedPin>& traced_pins() {
-    static const std::vector<TracedPin> pins = {{"oc1a_ena_pd5", kEnA},
-                                                {"dir1_in1_pd0", kDir1},
-                                                {"dir2_in2_pd1", kDir2},
-                                                {"int0_motor_pd2", kMotorPulse},
-                                                {"int1_spindle_pd3", kSpindlePulse},
-                                                {"index_pd6", kIndex},
-                                                {"limit_pd7", kLimit},
-                                                {"col1_pb7", {'B', 7}},
-                                                {"col2_pb6", {'B', 6}},
-                                                {"col3_pb5", {'B', 5}},
-                                                {"col4_pb4", {'B', 4}},
-                                                {"row1_pb3", {'B', 3}},
-                                                {"row2_pb2", {'B', 2}},
-                                                {"row3_pb1", {'B', 1}},
-                                                {"row4_pb0", {'B', 0}},
-                                                {"lcd_rs_pa4", kLcdRs},
-                                                {"lcd_rw_pa5", kLcdRw},
-                                                {"lcd_e_pa6", kLcdE},
-                                                {"lcd_d4_pa0", {'A', 0}},
-                                                {"lcd_d5_pa1", {'A', 1}},
-                                                {"lcd_d6_pa2", {'A', 2}},
-                                                {"lcd_d7_pa3", kLcdD7}};
+    // Grouped by the part at each pin's other end (docs/architectures.md, "lathe-sync": the chain).
+    static const std::vector<TracedPin> pins = {{"oc1a_ena_pd5", kEnA, "l298"},
+                                                {"dir1_in1_pd0", kDir1, "l298"},
+                                                {"dir2_in2_pd1", kDir2, "l298"},
+                                                {"int0_motor_pd2", kMotorPulse, "motor_encoder"},
+                                                {"int1_spindle_pd3", kSpindlePulse, "spindle_encoder"},
+                                                {"index_pd6", kIndex, "spindle_encoder"},
+                                                {"limit_pd7", kLimit, "limit_switch"},
+                                                {"col1_pb7", {'B', 7}, "keypad"},
+                                                {"col2_pb6", {'B', 6}, "keypad"},
+                                                {"col3_pb5", {'B', 5}, "keypad"},
+                                                {"col4_pb4", {'B', 4}, "keypad"},
+                                                {"row1_pb3", {'B', 3}, "keypad"},
+                                                {"row2_pb2", {'B', 2}, "keypad"},
+                                                {"row3_pb1", {'B', 1}, "keypad"},
+                                                {"row4_pb0", {'B', 0}, "keypad"},
+                                                {"lcd_rs_pa4", kLcdRs, "lcd"},
+                                                {"lcd_rw_pa5", kLcdRw, "lcd"},
+                                                {"lcd_e_pa6", kLcdE, "lcd"},
+                                                {"lcd_d4_pa0", {'A', 0}, "lcd"},
+                                                {"lcd_d5_pa1", {'A', 1}, "lcd"},
+                                                {"lcd_d6_pa2", {'A', 2}, "lcd"},
+                                                {"lcd_d7_pa3", kLcdD7, "lcd"}};
     return pins;
 }
 

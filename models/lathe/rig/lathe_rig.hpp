@@ -67,10 +67,12 @@ struct RecordedPass {
     double spindle_min_rpm = 0.0;  // the slowest the spindle turned under the cut
 };
 
-// The MCU pins the rig traces, with their signal names (LatheRig::trace).
+// The MCU pins the rig traces, with their signal names (LatheRig::trace) and the part wired to each (the L298, an
+// encoder, the keypad, the LCD: the VCD's scopes).
 struct TracedPin {
     const char* name;
     avr::Pin pin;
+    const char* block;
 };
 [[nodiscard]] const std::vector<TracedPin>& traced_pins();
 

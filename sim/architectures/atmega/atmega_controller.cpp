@@ -176,7 +176,7 @@ public:
     // The AVR times every pin it drives; the CP2102 (uart_rx) starts its frames when USB delivers the bytes.
     [[nodiscard]] MachinePinClocks pin_clocks() const override { return {m_avr_cfg.f_cpu_hz, m_avr_cfg.f_cpu_hz}; }
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
-        return {{&m_wires.uart_rx, std::nullopt}, {&m_wires.uart_tx, m_avr_cfg.f_cpu_hz}};
+        return {{&m_wires.uart_rx, "link", std::nullopt}, {&m_wires.uart_tx, "link", m_avr_cfg.f_cpu_hz}};
     }
     // Seed 003 §5.2.5: DIR 0 = CW = +X / +Y.
     [[nodiscard]] bool dir_high_is_positive() const override { return false; }

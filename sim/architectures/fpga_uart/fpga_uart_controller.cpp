@@ -354,8 +354,9 @@ public:
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
         const std::optional<std::int64_t> fpga = m_f.fpga.clk_hz;
         const Wires& w = m_wires;
-        return {{&w.uart_rx, {}},     {&w.uart_tx, fpga},  {&w.busy, fpga}, {&w.pkt_valid, fpga},
-                {&w.cfg_valid, fpga}, {&w.rx_valid, fpga}, {&w.ack, fpga}};
+        return {{&w.uart_rx, "link", {}},     {&w.uart_tx, "link", fpga},   {&w.busy, "fpga", fpga},
+                {&w.pkt_valid, "fpga", fpga}, {&w.cfg_valid, "fpga", fpga}, {&w.rx_valid, "fpga", fpga},
+                {&w.ack, "fpga", fpga}};
     }
     // The link's lines and busy go into ArchRun::lines only when the whole logs are kept (--plots, --samples,
     // tests): a long job's UART lines are its largest log after the STEPs, and no metric reads them.

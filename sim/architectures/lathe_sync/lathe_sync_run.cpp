@@ -134,6 +134,14 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     // The carriage for --samples only: the XY metrics have no moves to measure it against.
     out.input.tool = std::move(rig.carriage_samples);
     out.metrics = metrics::compute_metrics(metrics::RunInput{});
+    if (trace) {
+        out.trace = trace->layout();
+        // The save file zooms on the first pass under the PID.
+        if (!rig.passes.empty()) {
+            const lathe::RecordedPass& p = rig.passes.front();
+            out.first_move = TimeSpan{s_to_ps(p.start_s), s_to_ps(p.start_s + p.pid_s)};
+        }
+    }
     nlohmann::json& d = out.details;
     std::ostringstream text;
     text << "lathe-sync: " << s.mode << " at " << fixed(s.spindle_rpm, 1) << " rpm, firmware "

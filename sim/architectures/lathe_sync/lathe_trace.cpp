@@ -15,9 +15,16 @@ constexpr TimePs kCyclePs = 1'000'000'000'000 / kFcpuHz;  // 125 ns
 
 LatheTrace::LatheTrace(const Scenario& s) : m_s(s) {
     std::vector<TraceCandidate> all;
-    for (const lathe::TracedPin& p : lathe::traced_pins()) all.push_back({p.name, false});
+    for (const lathe::TracedPin& p : lathe::traced_pins()) all.push_back({p.name, false, p.block});
     m_chosen = select_traced(s, all);
-    for (const std::size_t i : m_chosen) m_signals.push_back({all[i].name, false, kFcpuHz});
+    m_layout.top_scope = metrics::kVcdTopScope;
+    m_layout.timescale_fs = s.vcd_timescale_fs;
+    m_layout.from_ps = s.trace_from_ps;
+    for (const std::size_t i : m_chosen) {
+        m_signals.push_back({all[i].name, false, kFcpuHz});
+        m_signals.back().scope = all[i].block;
+        m_layout.signals.push_back({all[i].block, all[i].name});
+    }
     metrics::check_vcd_signals(s.vcd_timescale_fs, m_signals, s.file + ": trace.timescale");
     m_file.emplace(s.vcd_path, "the VCD");
 }
@@ -45,7 +52,8 @@ void LatheTrace::write(const lathe::LatheRig& rig) {
         if (t_ps > to_ps) break;
         if (slot[edges[e].pin] >= 0) vcd.change(t_ps, static_cast<std::size_t>(slot[edges[e].pin]), edges[e].level);
     }
-    vcd.finish(std::max(to_ps, m_s.trace_from_ps));
+    m_layout.to_ps = std::max(to_ps, m_s.trace_from_ps);
+    vcd.finish(m_layout.to_ps);
     m_file->close();
 }
 

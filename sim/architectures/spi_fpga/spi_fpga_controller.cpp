@@ -84,10 +84,10 @@ public:
     // are traced when asked for (trace.signals, spi.trace_wires).
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
         const bool on_request = !m_link.trace_wires;
-        return {{&m_wires.sclk, {}, on_request},
-                {&m_wires.mosi, {}, on_request},
-                {&m_wires.miso, {}, on_request},
-                {&m_wires.ss, {}, on_request}};
+        return {{&m_wires.sclk, "link", {}, on_request},
+                {&m_wires.mosi, "link", {}, on_request},
+                {&m_wires.miso, "link", {}, on_request},
+                {&m_wires.ss, "link", {}, on_request}};
     }
     void record(EdgeRecorder& rec, bool) override {
         if (!m_link.trace_wires) return;
@@ -150,7 +150,7 @@ private:
     }
     static spi::SpiConfig spi_link(const Scenario& s, const SpiFpgaSettings& f) {
         spi::SpiConfig link = f.link;
-        link.trace_wires = link.trace_wires || trace_names_any(s, {"sclk", "mosi", "miso", "ss"});
+        link.trace_wires = link.trace_wires || trace_names_any(s, "link", {"sclk", "mosi", "miso", "ss"});
         return link;
     }
 

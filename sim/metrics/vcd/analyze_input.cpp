@@ -10,8 +10,7 @@ namespace {
 
 const EdgeLog& find_signal(const VcdContents& vcd, const std::string& filename, const std::string& option,
                            const std::string& name) {
-    const auto it = vcd.signals.find(name);
-    if (it != vcd.signals.end()) return it->second;
+    if (const EdgeLog* log = find_vcd_signal(vcd, name)) return *log;
     std::string available;
     for (const auto& [key, log] : vcd.signals) available += (available.empty() ? "" : ", ") + key;
     const auto other = vcd.other_variables.find(name);

@@ -28,7 +28,8 @@ struct EnableOption {
 };
 [[nodiscard]] EnableOption parse_enable_option(const std::string& text);
 
-// Each axis is labelled with its STEP signal's name; with an enable signal its STEP edges while the driver is
+// A signal is named by its name or its dotted scope path (find_vcd_signal: step_x or driver_x.step_x). Each axis
+// is labelled with its STEP signal's name as given; with an enable signal its STEP edges while the driver is
 // disabled do not count (enabled_steps.hpp). The job window runs from the first to the last edge of the counted
 // STEP and the DIR signals. Throws cnc::BadInput("<filename>: --step NAME", ...) (or --dir, --enable) naming the
 // available 1-bit signals when a signal is missing, and what it is when the file has it with another width;

@@ -266,6 +266,7 @@ private:
             const std::string key = leaf_count[v.leaf_name] == 1 ? v.leaf_name : v.full_name;
             if (out.signals.count(key) != 0) fail(v.decl_line, "signal '" + key + "' is declared twice");
             v.log.name = key;
+            out.paths.emplace(v.full_name, key);
             out.signals.emplace(key, std::move(v.log));
         }
         return out;
@@ -287,6 +288,20 @@ private:
 
 VcdContents read_vcd(std::istream& in, const std::string& filename) {
     return VcdReader(in, filename).read();
+}
+
+const EdgeLog* find_vcd_signal(const VcdContents& vcd, const std::string& name) {
+    const auto it = vcd.signals.find(name);
+    if (it != vcd.signals.end()) return &it->second;
+    const std::string tail = "." + name;
+    const EdgeLog* found = nullptr;
+    for (const auto& [path, key] : vcd.paths) {
+        const bool ends = path.size() > tail.size() && path.compare(path.size() - tail.size(), tail.size(), tail) == 0;
+        if (!ends && path != name) continue;
+        if (found != nullptr) return nullptr;
+        found = &vcd.signals.at(key);
+    }
+    return found;
 }
 
 }  // namespace cnc::metrics

@@ -14,6 +14,8 @@ struct VcdContents {
     // is unique among the 1-bit variables, else the dotted scope path ("SystemC.top.step_x"). A bit-select
     // reference keeps its index ("data[3]").
     std::map<std::string, EdgeLog> signals;
+    // Every 1-bit variable's dotted scope path ("cncsim.driver_x.step_x") -> its key in `signals`.
+    std::map<std::string, std::string> paths;
     // Every other variable (not read), by leaf name and by dotted path: what it is ("32 bits wide (wire)").
     std::map<std::string, std::string> other_variables;
 };
@@ -24,5 +26,9 @@ struct VcdContents {
 // nearest ps. Header lines "META key: value" (sigrok-cli's -O vcd puts one before $date) are skipped.
 // Malformed content throws cnc::BadInput("<filename>:<line>", ...).
 [[nodiscard]] VcdContents read_vcd(std::istream& in, const std::string& filename);
+
+// The 1-bit signal `name` names: its key in `signals`, else the one signal whose dotted path ends with `name` at a
+// scope boundary ("driver_x.step_x" names cncsim.driver_x.step_x); nullptr when none does, or more than one.
+[[nodiscard]] const EdgeLog* find_vcd_signal(const VcdContents& vcd, const std::string& name);
 
 }  // namespace cnc::metrics

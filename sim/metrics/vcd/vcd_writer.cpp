@@ -15,12 +15,14 @@ namespace cnc::metrics {
 
 namespace {
 
-// Short identifiers from the printable ASCII range '!'..'~', as VCD writers use.
+// Short identifiers from the printable ASCII range '!'..'~', as VCD writers use, without '$': sigrok-cli 0.7.2
+// (libsigrok 0.5.2) drops the changes of a variable whose identifier has it.
 std::string vcd_id(std::size_t n) {
-    constexpr std::size_t kBase = '~' - '!' + 1;
+    constexpr std::size_t kBase = '~' - '!';  // the range less '$'
     std::string id;
     do {
-        id += static_cast<char>('!' + n % kBase);
+        const char c = static_cast<char>('!' + n % kBase);
+        id += c >= '$' ? static_cast<char>(c + 1) : c;
         n /= kBase;
     } while (n > 0);
     return id;
@@ -58,17 +60,29 @@ std::string coarsest_exact_timescale(const std::vector<VcdSignal>& signals) {
     return "1 fs";
 }
 
+bool has_space(const std::string& text) {
+    return std::any_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c) != 0; });
+}
+
+// The scopes in the order their first signal comes; "" (the top scope's own signals) among them.
+std::vector<std::string> scopes_in_order(const std::vector<VcdSignal>& signals) {
+    std::vector<std::string> scopes;
+    for (const VcdSignal& s : signals) {
+        if (std::find(scopes.begin(), scopes.end(), s.scope) == scopes.end()) scopes.push_back(s.scope);
+    }
+    return scopes;
+}
+
 }  // namespace
 
 void check_vcd_signals(std::int64_t timescale_fs, const std::vector<VcdSignal>& signals, const std::string& where) {
     (void)timescale_text(timescale_fs, where);
     std::set<std::string> names;
     for (const VcdSignal& s : signals) {
-        const bool has_space =
-            std::any_of(s.name.begin(), s.name.end(), [](unsigned char c) { return std::isspace(c) != 0; });
-        if (s.name.empty() || has_space) {
+        if (s.name.empty() || has_space(s.name)) {
             throw BadInput(where, "signal name '" + s.name + "' is empty or contains white space");
         }
+        if (has_space(s.scope)) throw BadInput(where, "scope name '" + s.scope + "' contains white space");
         if (!names.insert(s.name).second) throw BadInput(where, "signal '" + s.name + "' given twice");
         const std::optional<TimePs> period = exact_period_ps(s);
         if (period && !on_vcd_tick(*period, timescale_fs)) {
@@ -93,12 +107,17 @@ VcdWriter::VcdWriter(std::ostream& out, std::int64_t timescale_fs, std::vector<V
       m_last_ps(start_ps),
       m_written_tick(ps_to_vcd_ticks(start_ps, timescale_fs)) {
     check_vcd_signals(timescale_fs, m_signals, where);
-    m_out << "$version cncsim $end\n$timescale " << timescale_text(timescale_fs, where)
-          << " $end\n$scope module cncsim $end\n";
-    for (std::size_t i = 0; i < m_signals.size(); ++i) {
-        m_ids.push_back(vcd_id(i));
-        const bool real = m_signals[i].kind == VcdVarKind::Real;
-        m_out << (real ? "$var real 64 " : "$var wire 1 ") << m_ids[i] << ' ' << m_signals[i].name << " $end\n";
+    m_out << "$version cncsim $end\n$timescale " << timescale_text(timescale_fs, where) << " $end\n$scope module "
+          << kVcdTopScope << " $end\n";
+    for (std::size_t i = 0; i < m_signals.size(); ++i) m_ids.push_back(vcd_id(i));
+    for (const std::string& scope : scopes_in_order(m_signals)) {
+        if (!scope.empty()) m_out << "$scope module " << scope << " $end\n";
+        for (std::size_t i = 0; i < m_signals.size(); ++i) {
+            if (m_signals[i].scope != scope) continue;
+            const bool real = m_signals[i].kind == VcdVarKind::Real;
+            m_out << (real ? "$var real 64 " : "$var wire 1 ") << m_ids[i] << ' ' << m_signals[i].name << " $end\n";
+        }
+        if (!scope.empty()) m_out << "$upscope $end\n";
     }
     m_out << "$upscope $end\n$enddefinitions $end\n#" << m_written_tick << "\n$dumpvars\n";
     for (std::size_t i = 0; i < m_signals.size(); ++i) {

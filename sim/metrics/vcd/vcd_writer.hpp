@@ -1,4 +1,5 @@
-// VCD writing, as the simulation runs (VcdWriter) or from finished edge logs (write_vcd): one scope "cncsim",
+// VCD writing, as the simulation runs (VcdWriter) or from finished edge logs (write_vcd): a top scope "cncsim"
+// holding one scope per hardware block (VcdSignal::scope: driver_x, link, ...) in the order the blocks first come,
 // 1-bit wires and 64-bit real variables (IEEE 1364 §18.2: "r<value> <id>", written as %.16g, what gtkwave reads;
 // sigrok-cli's VCD input skips them), the initial values in $dumpvars and nothing after $enddefinitions but
 // value changes and times, so that every reader (gtkwave, sigrok, PulseView) sees the whole file.
@@ -17,7 +18,9 @@ namespace cnc::metrics {
 enum class VcdVarKind { Wire, Real };
 
 struct VcdSignal {
-    std::string name;      // unique, no white space
+    // Unique in the file, not only in its scope, no white space: sigrok-cli's VCD input (libsigrok 0.5.2) names its
+    // channels by the variable's name alone, without the scopes.
+    std::string name;
     bool initial = false;  // level at time 0 (wires)
     // The clock that times every edge of the signal. When its period is a whole number of ps (50 MHz, 16 MHz)
     // each edge is a multiple of that period and stays exact: the timescale must divide the period. Without one
@@ -26,14 +29,19 @@ struct VcdSignal {
     std::optional<std::int64_t> clock_hz;
     VcdVarKind kind = VcdVarKind::Wire;
     double initial_value = 0.0;  // value at time 0 (reals)
+    std::string scope;           // the hardware block it belongs to; empty: directly in the top scope
 };
+
+// The top scope of every VCD cncsim writes.
+inline constexpr const char* kVcdTopScope = "cncsim";
 
 // The whole-ps period of a clock, if it has one.
 [[nodiscard]] std::optional<TimePs> whole_period_ps(std::int64_t clock_hz);
 
 // What VcdWriter checks before it writes: throws cnc::BadInput(where, ...) for a timescale that is not 1, 10 or
-// 100 of s .. fs, a name that is empty, has white space or comes twice, and a timescale that does not divide the
-// period of a signal's clock (the message gives the coarsest timescale that does).
+// 100 of s .. fs, a name that is empty, has white space or comes twice (in any scope), a scope with white space,
+// and a timescale that does not divide the period of a signal's clock (the message gives the coarsest timescale
+// that does).
 void check_vcd_signals(std::int64_t timescale_fs, const std::vector<VcdSignal>& signals, const std::string& where);
 
 class VcdWriter {

@@ -37,10 +37,14 @@ struct Row {
 // The machine each run used, then the headline numbers of docs/metrics.md in the order a reader compares them.
 constexpr Row kRows[] = {
     {"machine: X steps/mm", "/scenario/machine/x/steps_per_mm", "%.4f", true},
+    {"machine: X microsteps", "/scenario/machine/x/microsteps", "%.0f", true},
+    {"machine: X full steps/mm", "/scenario/machine/x/full_steps_per_mm", "%.4f", true},
     {"machine: X velocity max [mm/s]", "/scenario/machine/x/max_velocity_mm_per_s", "%.1f", true},
     {"machine: X accel max [mm/s^2]", "/scenario/machine/x/max_accel_mm_per_s2", "%.0f", true},
     {"machine: X jerk max [mm/s^3]", "/scenario/machine/x/max_jerk_mm_per_s3", "%.0f", true},
     {"machine: Y steps/mm", "/scenario/machine/y/steps_per_mm", "%.4f", true},
+    {"machine: Y microsteps", "/scenario/machine/y/microsteps", "%.0f", true},
+    {"machine: Y full steps/mm", "/scenario/machine/y/full_steps_per_mm", "%.4f", true},
     {"machine: Y velocity max [mm/s]", "/scenario/machine/y/max_velocity_mm_per_s", "%.1f", true},
     {"machine: Y accel max [mm/s^2]", "/scenario/machine/y/max_accel_mm_per_s2", "%.0f", true},
     {"machine: Y jerk max [mm/s^3]", "/scenario/machine/y/max_jerk_mm_per_s3", "%.0f", true},

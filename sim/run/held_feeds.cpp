@@ -65,25 +65,26 @@ void HeldFeedWarnings::add(const host::ProgrammedMove& m) {
         close();
         return;
     }
-    if (m_open && m_open->asked_mm_per_min == m.feed_mm_per_min && m_open->held.axis == h.axis &&
-        m_open->held.feed_mm_per_min == h.feed_mm_per_min) {
-        m_open->last_line = m.line;
-        return;
+    if (!(m_open && m_open->asked_mm_per_min == m.feed_mm_per_min &&
+          m_open->held.feed_mm_per_min == h.feed_mm_per_min)) {
+        close();
+        m_open = Held{m.line, m.line, m.feed_mm_per_min, h};
     }
-    close();
-    m_open = Held{m.line, m.line, m.feed_mm_per_min, h};
+    m_open->last_line = m.line;
+    (h.axis == 'x' ? m_open->by_x : m_open->by_y) = true;
 }
 
 void HeldFeedWarnings::close() {
     if (!m_open) return;
     const Held& h = *m_open;
-    const host::AxisMachine& axis = h.held.axis == 'x' ? m_machine.x : m_machine.y;
     std::ostringstream where, text;
     where << m_file << ':' << h.first_line;
     if (h.last_line != h.first_line) where << '-' << h.last_line;
-    text << "feed " << mm_per_min(h.asked_mm_per_min) << " held to " << mm_per_min(h.held.feed_mm_per_min)
-         << " by machine." << h.held.axis << ".max_velocity_mm_per_s = " << axis.limits.max_velocity_mm_per_s
-         << ": every architecture holds a move to its axes' velocity limits, so it runs slower than asked (its feed "
+    text << "feed " << mm_per_min(h.asked_mm_per_min) << " held to " << mm_per_min(h.held.feed_mm_per_min) << " by ";
+    if (h.by_x) text << "machine.x.max_velocity_mm_per_s = " << m_machine.x.limits.max_velocity_mm_per_s;
+    if (h.by_x && h.by_y) text << " and ";
+    if (h.by_y) text << "machine.y.max_velocity_mm_per_s = " << m_machine.y.limits.max_velocity_mm_per_s;
+    text << ": every architecture holds a move to its axes' velocity limits, so it runs slower than asked (its feed "
             "error is against the F asked)";
     m_done.push_back({"feed_held", where.str(), text.str()});
     m_open.reset();

@@ -1,8 +1,8 @@
 // Where the job asks a feed faster than the machine's axes allow. Every architecture holds a move to the axis
 // velocity limits (host::feed_within_axis_limits; docs/scenario-reference.md, machine.<axis>.max_velocity_mm_per_s),
 // so the job gets less than it asked without an error, and the feed error (docs/metrics.md) is measured against
-// the F it asked. One warning per run of consecutive moves that ask, and are held to, the same feeds by the same
-// axis: a job at one too-high F gives one line, not one per move.
+// the F it asked. One warning per run of consecutive moves that ask, and are held to, the same feeds: a job at
+// one too-high F gives one line, not one per move.
 #pragma once
 #include <optional>
 #include <string>
@@ -38,6 +38,8 @@ private:
         int last_line = 0;
         double asked_mm_per_min = 0.0;
         HeldFeed held;
+        bool by_x = false;  // the axes whose limits held the run's moves
+        bool by_y = false;
     };
     void close();
 

@@ -54,10 +54,14 @@ struct Row {
 // The machine each run used, then the headline numbers of docs/metrics.md in the order a reader compares them.
 constexpr Row kRows[] = {
     {"machine: X steps/mm", "/scenario/machine/x/steps_per_mm", fixed(4), true},
+    {"machine: X microsteps", "/scenario/machine/x/microsteps", fixed(0), true},
+    {"machine: X full steps/mm", "/scenario/machine/x/full_steps_per_mm", fixed(4), true},
     {"machine: X velocity max [mm/s]", "/scenario/machine/x/max_velocity_mm_per_s", fixed(1), true},
     {"machine: X accel max [mm/s^2]", "/scenario/machine/x/max_accel_mm_per_s2", fixed(0), true},
     {"machine: X jerk max [mm/s^3]", "/scenario/machine/x/max_jerk_mm_per_s3", fixed(0), true},
     {"machine: Y steps/mm", "/scenario/machine/y/steps_per_mm", fixed(4), true},
+    {"machine: Y microsteps", "/scenario/machine/y/microsteps", fixed(0), true},
+    {"machine: Y full steps/mm", "/scenario/machine/y/full_steps_per_mm", fixed(4), true},
     {"machine: Y velocity max [mm/s]", "/scenario/machine/y/max_velocity_mm_per_s", fixed(1), true},
     {"machine: Y accel max [mm/s^2]", "/scenario/machine/y/max_accel_mm_per_s2", fixed(0), true},
     {"machine: Y jerk max [mm/s^3]", "/scenario/machine/y/max_jerk_mm_per_s3", fixed(0), true},

@@ -71,8 +71,15 @@ void warnings_html(std::ostream& os, const std::vector<CompareColumn>& columns) 
             continue;
         }
         os << "<ul>\n";
+        // The first places (the G-code lines, an axis and a time) before the first one's text, as the summary has.
         for (const nlohmann::json& w : warnings) {
-            os << "<li>" << escape(w.value("message", std::string())) << " (" << w.value("count", 0) << " x, "
+            std::string places;
+            for (const nlohmann::json& p : w.value("first", nlohmann::json::array())) {
+                places += (places.empty() ? "" : ", ") + p.get<std::string>();
+            }
+            if (!places.empty() && w.value("count", std::size_t{0}) > w["first"].size()) places += ", ...";
+            os << "<li>" << (places.empty() ? std::string() : escape(places) + ": ")
+               << escape(w.value("message", std::string())) << " (" << w.value("count", 0) << " x, "
                << escape(w.value("kind", std::string())) << ")</li>\n";
         }
         os << "</ul>\n";

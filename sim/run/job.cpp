@@ -7,6 +7,7 @@
 #include "common/bad_input.hpp"
 #include "host/core/soft_limits.hpp"
 #include "host/core/steps_file.hpp"
+#include "run/held_feeds.hpp"
 #include "run/job_limits.hpp"
 
 namespace cnc::sim {
@@ -57,6 +58,7 @@ Job load_job(const Scenario& s, const Architecture& architecture) {
     // move past the soft limits, then the first past the machine's limits.
     host::GcodeStream stream(s.job_path, s.interpreter, !use.streams_job);
     JobLimits limits(s, architecture, s.job_path);
+    HeldFeedWarnings held_feeds(s.machine, s.job_path);
     std::optional<BadInput> soft_breach, limit_breach;
     for (std::size_t i = 0; const std::optional<host::ProgrammedMove> move = stream.next(); ++i) {
         try {
@@ -70,7 +72,9 @@ Job load_job(const Scenario& s, const Architecture& architecture) {
             limit_breach = e;
         }
         laser_warnings(*move, s.job_path, use.laser_switching, job.move_warnings);
+        held_feeds.add(*move);
     }
+    held_feeds.finish(job.move_warnings);
     if (soft_breach) throw *soft_breach;
     if (limit_breach) throw *limit_breach;
     limits.finish(stream.program().waits);

@@ -19,7 +19,8 @@ struct Job {
     std::optional<host::Program> program;
     std::vector<host::MotionSegment> steps_file;  // steps-file job (JobUse::takes_steps_file)
     std::vector<Warning> warnings;                // about the job as a whole (one without a move)
-    std::vector<Warning> move_warnings;           // about its moves: the laser against the job's intent
+    // About its moves: the laser against the job's intent, feeds held to the axis limits (run/held_feeds.hpp).
+    std::vector<Warning> move_warnings;
 };
 
 // Reads the job as `architecture` takes it (one pass over the file, the moves kept unless it streams the job) and

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iomanip>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -36,6 +37,29 @@ std::string axis_text(const char* name, const mech::DynamicAxisStats& st) {
         st.peak_load_angle_deg, ps_to_s(st.peak_load_angle_ps), st.velocity_ripple_rms_mm_s,
         st.velocity_ripple_peak_mm_s);
     return t.str();
+}
+
+// A peak load angle near or past pull-out, as a warning: the motor had little or no torque left there, whether it
+// lost steps or not. A hybrid stepper's torque goes as the sine of the load angle and peaks at 90 electrical
+// degrees (pull-out, docs/mechanics.md, "Outputs"); within 10 % of it, from 81, it already gives sin 81 = 98.8 % of
+// its largest torque.
+void load_angle_warning(const char* axis, const mech::DynamicAxisStats& st, std::vector<Warning>& out) {
+    constexpr double kPullOutDeg = 90.0;
+    constexpr double kNearFraction = 0.9;
+    const double peak = st.peak_load_angle_deg;
+    if (peak < kNearFraction * kPullOutDeg) return;
+    const bool past = peak > kPullOutDeg;
+    std::ostringstream where, text;
+    where << axis << " at " << std::fixed << std::setprecision(6) << ps_to_s(st.peak_load_angle_ps) << " s";
+    text
+        << "peak load angle " << std::fixed << std::setprecision(1) << peak << " electrical deg, "
+        << (past ? "past pull-out (90: the motor's largest torque)" : "within 10 % of pull-out (90)") << ", with "
+        << st.lost_full_steps << " full steps lost on the axis: "
+        << (past
+                ? "beyond the torque's peak more lag gives less torque, and the rotor keeps step only if the load eases"
+                : "about 1 % of the motor's torque is left in reserve")
+        << " (a lower feed or acceleration, more current, or a lighter carriage gives margin)";
+    out.push_back({past ? "load_angle_past_pull_out" : "load_angle_near_pull_out", where.str(), text.str()});
 }
 
 // The load angle's peaks and the lost full steps (cumulative) over time, per axis: what the plots draw.
@@ -81,6 +105,8 @@ void add_mechanics_report(const Machine& machine, const std::optional<MetricsFee
     run.details_text += t.str();
     add_series("x", x->stats(), run);
     add_series("y", y->stats(), run);
+    load_angle_warning("X", x->stats(), run.warnings);
+    load_angle_warning("Y", y->stats(), run.warnings);
 }
 
 }  // namespace cnc::sim

@@ -16,12 +16,15 @@ namespace cnc::sim {
 
 namespace {
 
-// The machine every architecture of a comparison shares (its columns show it): per axis the resolution and the
+// The machine every architecture of a comparison shares (its columns show it): per axis the resolution (the
+// microsteps the controller counts, and the full steps the motor turns: what loads the dynamic motor) and the
 // limits, and the rapid speed.
 nlohmann::json machine_json(const Scenario& s) {
     nlohmann::json out = {{"rapid_feed_mm_per_min", s.interpreter.rapid_feed_mm_per_min}};
     for (const auto& [name, axis] : {std::pair{"x", &s.machine.x}, std::pair{"y", &s.machine.y}}) {
         out[name] = {{"steps_per_mm", axis->steps_per_mm()},
+                     {"microsteps", axis->microsteps},
+                     {"full_steps_per_mm", axis->steps_per_mm() / axis->microsteps},
                      {"max_velocity_mm_per_s", axis->limits.max_velocity_mm_per_s},
                      {"max_accel_mm_per_s2", axis->limits.max_accel_mm_per_s2},
                      {"max_jerk_mm_per_s3", axis->limits.max_jerk_mm_per_s3}};

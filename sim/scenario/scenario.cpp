@@ -27,6 +27,9 @@ namespace fs = std::filesystem;
 const char* const kMachineDoc =
     "machine file, relative to the scenario: a TOML file of [machine], [driver], [motor] and [mechanics] tables "
     "(`cncsim init` writes one); the scenario's own keys of those tables override it; empty: none";
+// The keys that describe an axis's motor and transmission, from which its steps/mm follows.
+constexpr const char* kTransmissionKeys[] = {"step_angle_deg", "transmission", "pulley_teeth", "belt_pitch_mm",
+                                             "lead_mm",        "screw_starts", "gear_ratio"};
 
 // A calibrated steps/mm given together with motor or transmission keys must be the value they imply: two
 // different numbers for one axis are a mistake in the scenario, not a choice. microsteps alone does not count:
@@ -34,8 +37,7 @@ const char* const kMachineDoc =
 void check_calibration(const KeyReader& r, const std::string& p, const host::AxisMachine& m) {
     if (!m.calibrated_steps_per_mm) return;
     std::string given;
-    for (const char* key :
-         {"step_angle_deg", "transmission", "pulley_teeth", "belt_pitch_mm", "lead_mm", "screw_starts", "gear_ratio"}) {
+    for (const char* key : kTransmissionKeys) {
         if (r.has(p + key)) given += (given.empty() ? "" : ", ") + p + key;
     }
     if (given.empty()) return;
@@ -48,6 +50,34 @@ void check_calibration(const KeyReader& r, const std::string& p, const host::Axi
            fmt::format(FMT_STRING("{:.10g} differs from the {:.10g} steps/mm that "), calibrated, implied) + given +
                " give (with the defaults of the keys not set); "
                "give steps_per_mm alone, or values that agree");
+}
+
+// The dynamic motor turns steps_per_mm / microsteps full steps per mm. A steps_per_mm given alone (grbl's $100,
+// which counts microsteps) leaves that to the default 1/32 mode, which the user did not choose: 80 steps/mm would
+// run the motor at 2.5 full steps per mm instead of the 5 of a 1/16 machine, and load it twice as hard. Refused,
+// naming what fixes it, rather than guessed from a transmission the user did not describe either.
+void check_full_steps(const KeyReader& r, const std::string& p, const host::AxisMachine& m) {
+    if (!m.calibrated_steps_per_mm || r.has(p + "microsteps")) return;
+    for (const char* key : kTransmissionKeys) {
+        if (r.has(p + key)) return;  // check_calibration holds steps_per_mm to what they give
+    }
+    const double spm = *m.calibrated_steps_per_mm;
+    std::ostringstream t;
+    t << spm << " steps/mm without " << p
+      << "microsteps: the dynamic motor (mechanics.model = \"dynamic\") turns steps_per_mm / microsteps full steps "
+         "per mm, "
+      << spm / m.microsteps << " at the default 1/" << m.microsteps << "; set " << p
+      << "microsteps to the driver's mode (DRV8825 MODE pins: 1, 2, 4, 8, 16 or 32; a grbl $100 counts microsteps)";
+    // What the motor and transmission defaults would need, when that is a DRV8825 mode: a hint, not a choice.
+    const double mode = spm / (m.transmission_steps_per_mm() / m.microsteps);
+    for (const int allowed : {1, 2, 4, 8, 16, 32}) {
+        if (std::abs(mode - allowed) < 1e-9 * allowed) {
+            t << " (" << allowed << " gives " << spm << " steps/mm on the default " << m.step_angle_deg
+              << " deg motor and " << m.travel_per_rev_mm() << " mm per revolution)";
+        }
+    }
+    t << ", or the motor and transmission keys instead of steps_per_mm, or mechanics.model = \"ideal\"";
+    r.fail(p + "steps_per_mm", t.str());
 }
 
 // An axis limit of 0 would leave the planner without a profile: refused by name rather than as a range.
@@ -93,9 +123,13 @@ void read_axis(KeyReader& r, const std::string& axis, host::AxisMachine& m) {
     const double calibrated = r.get_float(
         p + "steps_per_mm", 0.0, 0.0, 1e6,
         "calibrated microsteps per mm at " + p +
-            "microsteps (full steps per mm = steps_per_mm / microsteps), "
-            "instead of the motor and transmission keys above (given with them, it must equal their value); "
-            "0: computed from them");
+            "microsteps (full steps per mm = steps_per_mm / microsteps; grbl's $100), instead of the motor and "
+            "transmission keys above (given with them, it must equal their value)" +
+            // Z has no motor model (no architecture has Z STEP pins): its microstep mode changes nothing.
+            (axis == "z" ? std::string()
+                         : "; with mechanics.model = \"dynamic\" it needs " + p +
+                               "microsteps (or those keys) beside it, else it is refused") +
+            "; 0: computed from them");
     if (calibrated > 0.0) m.calibrated_steps_per_mm = calibrated;
     read_axis_limits(r, axis, m.limits);
     m.travel_mm = r.get_float(p + "travel_mm", m.travel_mm, 0.0, 1e6, "axis travel, mm (0 = unlimited)");
@@ -213,6 +247,10 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.driver.strict = r.get_bool("driver.strict", s.driver.strict,
                                  "DRV8825 drops STEP pulses that break tWH/tWL (false: counts every rising edge)");
     read_mechanics_settings(r, s.mechanics);
+    if (s.mechanics.model == MechanicsModel::Dynamic) {
+        check_full_steps(r, "machine.x.", s.machine.x);
+        check_full_steps(r, "machine.y.", s.machine.y);
+    }
 
     s.interpreter.operator_pause_s =
         r.get_float("host.operator_pause_s", s.interpreter.operator_pause_s, 0.0, 1e6,

@@ -2,8 +2,12 @@
 // (fpga-uart) keeps of the program.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/bad_input.hpp"
 #include "run/job.hpp"
@@ -82,6 +86,61 @@ TEST(LoadJob, AStreamingArchitectureKeepsTheSummaryAndTheMoveWarnings) {
     const Job whole = load_job(s, architecture(true));
     EXPECT_EQ(whole.program->moves.size(), 2u);
     EXPECT_EQ(whole.move_warnings.size(), 1u);
+}
+
+// The default machine with X held to 150 mm/s and Y to 100 mm/s.
+Scenario limited_machine(const std::string& name, const std::string& gcode) {
+    const std::string job = test::test_path(name + ".nc");
+    std::ofstream(job) << gcode;
+    const std::string path = test::test_path(name + ".toml");
+    std::ofstream(path) << "[scenario]\njob = \"" << job
+                        << "\"\n[machine.x]\nmax_velocity_mm_per_s = 150\n[machine.y]\nmax_velocity_mm_per_s = 100\n";
+    return load_scenario(path, {});
+}
+
+std::vector<Warning> held_warnings(const Job& job) {
+    std::vector<Warning> held;
+    for (const Warning& w : job.move_warnings) {
+        if (w.kind == "feed_held") held.push_back(w);
+    }
+    return held;
+}
+
+TEST(LoadJob, AFeedAboveTheAxisLimitsIsAWarningPerRunOfLinesWithBothFeeds) {
+    // Lines 2-3 along X at F20000 (333 mm/s): held to 150 mm/s = F9000; line 4 the same feed along Y, held by Y to
+    // 100 mm/s = F6000; line 5 at F5000 within both; line 6 (0.6, 0.8) at F20000: X may go 150 / 0.6 = 250 mm/s, Y
+    // 100 / 0.8 = 125 mm/s, so F7500 by Y.
+    const Scenario s =
+        limited_machine("held", "G0 X0 Y0\nG1 X10 F20000\nG1 X20\nG1 Y10\nG1 Y20 F5000\nG1 X26 Y28 F20000\nM30\n");
+    const std::vector<Warning> held = held_warnings(load_job(s, architecture(true)));
+    ASSERT_EQ(held.size(), 3u);
+    EXPECT_EQ(held[0].where, s.job_path + ":2-3");
+    EXPECT_NE(held[0].text.find("feed 20000.0 mm/min held to 9000.0 mm/min by machine.x.max_velocity_mm_per_s = 150"),
+              std::string::npos)
+        << held[0].text;
+    EXPECT_EQ(held[1].where, s.job_path + ":4");
+    EXPECT_NE(held[1].text.find("held to 6000.0 mm/min by machine.y.max_velocity_mm_per_s = 100"), std::string::npos)
+        << held[1].text;
+    EXPECT_EQ(held[2].where, s.job_path + ":6");
+    EXPECT_NE(held[2].text.find("held to 7500.0 mm/min by machine.y"), std::string::npos) << held[2].text;
+}
+
+TEST(LoadJob, AnArcIsHeldWhereItsTangentRunsMostAlongTheLimitingAxis) {
+    // Line 2: a full circle of radius 10 at F20000 runs along Y at its right and left: F6000 there. Line 3: from 30
+    // to 60 degrees about (0, 0), crossing no axis: the tangent (-sin 30, cos 30) at the start asks the most of Y,
+    // 100 / cos 30 = 115.47 mm/s = F6928.2. Line 4: a rapid is at the machine's rapid speed, not the job's F.
+    const double deg30_rad = std::atan(1.0) * 4.0 / 6.0;
+    const double c30 = 10.0 * std::cos(deg30_rad), s30 = 10.0 * std::sin(deg30_rad);
+    std::ostringstream g;
+    g << std::setprecision(17) << "G0 X10 Y0\nG2 I-10 J0 F20000\nG0 X" << c30 << " Y" << s30 << "\nG3 X" << s30 << " Y"
+      << c30 << " I" << -c30 << " J" << -s30 << "\nG0 X0 Y0\n";
+    const Scenario s = limited_machine("held_arc", g.str());
+    const std::vector<Warning> held = held_warnings(load_job(s, architecture(true)));
+    ASSERT_EQ(held.size(), 2u);
+    EXPECT_EQ(held[0].where, s.job_path + ":2");
+    EXPECT_NE(held[0].text.find("held to 6000.0 mm/min by machine.y"), std::string::npos) << held[0].text;
+    EXPECT_EQ(held[1].where, s.job_path + ":4");
+    EXPECT_NE(held[1].text.find("held to 6928.2 mm/min by machine.y"), std::string::npos) << held[1].text;
 }
 
 }  // namespace

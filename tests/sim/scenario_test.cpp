@@ -63,6 +63,36 @@ TEST(Scenario, StepsPerMmAloneReplacesTheTransmissionAndKeepsTheMicrostepMode) {
     EXPECT_DOUBLE_EQ(s.machine.y.steps_per_mm(), 160.0);
 }
 
+TEST(Scenario, StepsPerMmWithoutMicrostepsIsRefusedUnderTheDynamicMotor) {
+    // grbl's $100 = 80 on a 1/16 belt machine: alone it would leave the DRV8825 at the default 1/32, and the
+    // motor at 80 / 32 = 2.5 full steps per mm instead of 80 / 16 = 5.
+    const std::string path = write_scenario("spm_alone", std::string(kJob) + "[machine.x]\nsteps_per_mm = 80\n");
+    const std::string err = load_error(path);
+    EXPECT_NE(err.find(path + ":4: machine.x.steps_per_mm: 80 steps/mm without machine.x.microsteps"),
+              std::string::npos)
+        << err;
+    EXPECT_NE(err.find("2.5 at the default 1/32"), std::string::npos) << err;
+    // 1.8 deg, GT2 20T: 200 full steps per 40 mm = 5 full steps/mm, so 80 steps/mm is 1/16.
+    EXPECT_NE(err.find("16 gives 80 steps/mm"), std::string::npos) << err;
+    EXPECT_NE(load_error(path, {"machine.y.steps_per_mm=80", "machine.x.microsteps=16"}).find("machine.y.microsteps"),
+              std::string::npos);
+}
+
+TEST(Scenario, StepsPerMmWithMicrostepsFixesTheFullStepsPerMm) {
+    const auto s = cnc::sim::load_scenario(
+        write_scenario("spm_micro", std::string(kJob) + "[machine.x]\nsteps_per_mm = 80\nmicrosteps = 16\n"), {});
+    EXPECT_DOUBLE_EQ(s.machine.x.steps_per_mm() / s.machine.x.microsteps, 5.0);
+    // What the motor turns per mm: 1 / 5 mm per full step, 1.8 deg each, is 200 full steps per 40 mm.
+    EXPECT_DOUBLE_EQ(s.machine.x.travel_per_motor_rev_mm(), 40.0);
+}
+
+TEST(Scenario, StepsPerMmAloneIsTakenWhereNoMotorIsModelled) {
+    // The ideal carriage moves one microstep per step whatever the mode; Z has no motor model at all.
+    const std::string path = write_scenario("spm_ideal", std::string(kJob) + "[machine.x]\nsteps_per_mm = 80\n");
+    EXPECT_EQ(load_error(path, {"mechanics.model=ideal"}), "");
+    EXPECT_EQ(load_error(write_scenario("spm_z", std::string(kJob) + "[machine.z]\nsteps_per_mm = 400\n")), "");
+}
+
 TEST(Scenario, StepsPerMmEqualToTheTransmissionsIsAccepted) {
     // Leadscrew 8 mm, 1/16: 3200 / 8 = 400 steps/mm; a difference of 1e-12 relative is rounding.
     const auto s = cnc::sim::load_scenario(

@@ -47,8 +47,11 @@ constexpr Row kRows[] = {
     {"machine: rapid speed [mm/min]", "/scenario/machine/rapid_feed_mm_per_min", "%.1f", true},
     {"job time [s]", "/metrics/job/job_time_s", "%.4f"},
     {"motion time [s]", "/metrics/job/motion_time_s", "%.4f"},
-    {"dead time total [ms]", "/metrics/job/dead_total_ms", "%.3f"},
-    {"dead time mean [ms]", "/metrics/job/dead_mean_ms", "%.3f"},
+    // Between the programmed moves, inside them (between an arc's chords, a long line's commands), and the sum.
+    {"dead time between moves [ms]", "/metrics/job/dead_total_ms", "%.3f"},
+    {"dead time inside moves [ms]", "/metrics/job/dead_inside_total_ms", "%.3f"},
+    {"dead time total [ms]", "/metrics/job/dead_all_total_ms", "%.3f"},
+    {"dead time mean between moves [ms]", "/metrics/job/dead_mean_ms", "%.3f"},
     {"TIE max [ns]", "/metrics/pulse/tie_max_ns", "%.3f"},
     {"period jitter p-p max [ns]", "/metrics/pulse/jitter_pp_max_ns", "%.3f"},
     {"rate error worst [%]", "/metrics/pulse/rate_error_worst_pct", "%+.4f"},

@@ -6,6 +6,7 @@
 #include "metrics/metrics.hpp"
 #include "metrics/report/report.hpp"
 #include "metrics/report/text_table.hpp"
+#include "metrics/stats.hpp"
 #include "metrics/timing/worst_moves.hpp"
 
 namespace cnc::metrics {
@@ -123,7 +124,12 @@ std::string job_section(const RunMetrics& m) {
                fixed(j.dead_max_ms, 3)});
     d.add_row({"inside moves", gaps(j.inside_gap_count), fixed(j.dead_inside_total_ms, 3),
                fixed(j.dead_inside_mean_ms, 3), fixed(j.dead_inside_max_ms, 3)});
-    d.add_row({"total", gaps(j.gap_count + j.inside_gap_count), fixed(j.dead_all_total_ms, 3), "", ""});
+    const std::size_t all_gaps = j.gap_count + j.inside_gap_count;
+    std::optional<double> all_mean_ms, all_max_ms;
+    if (all_gaps > 0) all_mean_ms = *j.dead_all_total_ms / static_cast<double>(all_gaps);
+    keep_max(all_max_ms, j.dead_max_ms);
+    keep_max(all_max_ms, j.dead_inside_max_ms);
+    d.add_row({"total", gaps(all_gaps), fixed(j.dead_all_total_ms, 3), fixed(all_mean_ms, 3), fixed(all_max_ms, 3)});
     return t.render(m.with_moves ? "Job timing" : "Job timing (the span of the traced edges)") + '\n' +
            d.render("Dead time (between programmed moves; inside them, between their pieces)");
 }

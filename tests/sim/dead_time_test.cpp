@@ -47,28 +47,28 @@ nlohmann::json detailed_report(const std::string& scenario) {
 TEST(DeadTime, FpgaUartInsideTheCircleIsTheSumOfItsChordGaps) {
     const nlohmann::json r = detailed_report(kScenarios + "fpga-uart/circle_r10.toml");
     const nlohmann::json& job = r.at("metrics").at("job");
-    const std::vector<std::size_t> pieces = r.at("metrics").at("moves").at("pieces");
+    const auto pieces = r.at("metrics").at("moves").at("pieces").get<std::vector<std::size_t>>();
     ASSERT_EQ(pieces.size(), 2U);                   // G0, G2
     const std::size_t first_chord = pieces[0] + 1;  // 1-based packets
     const std::size_t last_chord = pieces[0] + pieces[1];
     double chord_gaps_us = 0.0;
     std::size_t chord_gaps = 0;
     for (const nlohmann::json& g : r.at("fpga-uart").at("dead_time").at("per_gap")) {
-        const std::size_t after = g.at("after_packet");
+        const auto after = g.at("after_packet").get<std::size_t>();
         if (after < first_chord || after + 1 > last_chord) continue;
         chord_gaps_us += g.at("total_us").get<double>();
         ++chord_gaps;
     }
     EXPECT_GT(pieces[1], 100U);  // the host's CAM chords the circle at 2 um tolerance
     EXPECT_EQ(chord_gaps, pieces[1] - 1);
-    EXPECT_EQ(job.at("dead_inside_gaps"), pieces[1] - 1);
+    EXPECT_EQ(job.at("dead_inside_gaps").get<std::size_t>(), pieces[1] - 1);
     EXPECT_NEAR(job.at("dead_inside_total_ms").get<double>() * 1e3, chord_gaps_us, 1.0);
     // The detailed list holds the same gaps, each inside move 2.
     const nlohmann::json& inside = job.at("dead_times_inside");
     ASSERT_EQ(inside.size(), chord_gaps);
     double listed_ms = 0.0;
     for (const nlohmann::json& g : inside) {
-        EXPECT_EQ(g.at("move"), 2);
+        EXPECT_EQ(g.at("move").get<int>(), 2);
         listed_ms += g.at("dead_ms").get<double>();
     }
     EXPECT_NEAR(listed_ms * 1e3, chord_gaps_us, 1.0);
@@ -83,11 +83,11 @@ TEST(DeadTime, TotalIsBetweenPlusInsideOnEveryArchitecture) {
                                                                     "--format json"));
         ASSERT_EQ(columns.size(), 4U) << job;
         for (const nlohmann::json& c : columns) {
-            const std::string arch = c.at("architecture");
+            const auto arch = c.at("architecture").get<std::string>();
             const nlohmann::json& m = c.at("metrics");
-            const double between = m.at("metrics/job/dead_total_ms");
-            const double inside = m.at("metrics/job/dead_inside_total_ms");
-            const double total = m.at("metrics/job/dead_all_total_ms");
+            const double between = m.at("metrics/job/dead_total_ms").get<double>();
+            const double inside = m.at("metrics/job/dead_inside_total_ms").get<double>();
+            const double total = m.at("metrics/job/dead_all_total_ms").get<double>();
             EXPECT_GE(between, 0.0) << job << " " << arch;
             EXPECT_GE(inside, 0.0) << job << " " << arch;
             EXPECT_NEAR(total, between + inside, 1e-9) << job << " " << arch;

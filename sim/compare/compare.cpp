@@ -68,8 +68,11 @@ constexpr Row kRows[] = {
     {"machine: rapid speed [mm/min]", "/scenario/machine/rapid_feed_mm_per_min", fixed(1), true},
     {"job time [s]", "/metrics/job/job_time_s", fixed(4)},
     {"motion time [s]", "/metrics/job/motion_time_s", fixed(4)},
-    {"dead time total [ms]", "/metrics/job/dead_total_ms", fixed(3)},
-    {"dead time mean [ms]", "/metrics/job/dead_mean_ms", fixed(3)},
+    // Between the programmed moves, inside them (between an arc's chords, a long line's commands), and the sum.
+    {"dead time between moves [ms]", "/metrics/job/dead_total_ms", fixed(3)},
+    {"dead time inside moves [ms]", "/metrics/job/dead_inside_total_ms", fixed(3)},
+    {"dead time total [ms]", "/metrics/job/dead_all_total_ms", fixed(3)},
+    {"dead time mean between moves [ms]", "/metrics/job/dead_mean_ms", fixed(3)},
     {"TIE max [ns]", "/metrics/pulse/tie_max_ns", fixed(3)},
     {"period jitter p-p max [ns]", "/metrics/pulse/jitter_pp_max_ns", fixed(3)},
     {"rate error worst [%]", "/metrics/pulse/rate_error_worst_pct", signed_fixed(4)},

@@ -12,6 +12,7 @@
 #include "metrics/path/path_accuracy.hpp"
 #include "metrics/pulse/edge_index.hpp"
 #include "metrics/pulse/pulse_runs.hpp"
+#include "metrics/timing/job_gaps.hpp"
 #include "metrics/timing/programmed_moves.hpp"
 
 namespace cnc::sim {
@@ -198,31 +199,42 @@ void write_velocity(const RunInput& in, const metrics::RunMetrics& m, const fs::
     }
 }
 
-// Returns the cause names, in the order of the columns (none unless every gap has its split).
-std::vector<std::string> write_dead_time(const metrics::RunMetrics& m, const ArchRun& run, const fs::path& dir) {
-    std::map<std::size_t, const GapCauses*> by_move;
-    for (const GapCauses& g : run.gap_causes) by_move[g.after_move] = &g;
-    std::vector<std::string> causes;
-    const std::vector<metrics::DeadGap> gaps = metrics::dead_gaps(m.moves);
-    const bool split = !gaps.empty() && std::all_of(gaps.begin(), gaps.end(), [&](const metrics::DeadGap& g) {
-        return by_move.count(g.after_move);
-    });
+struct DeadTimeRows {
+    std::vector<std::string> causes;  // in the order of the columns (none unless every gap has its split)
+    std::size_t between = 0, inside = 0;
+};
+
+// Every gap of the job, between and inside the programmed moves, in order: a move's gaps (the one that leads into
+// it, then those between its pieces) are consecutive rows.
+DeadTimeRows write_dead_time(const metrics::RunMetrics& m, const ArchRun& run, const fs::path& dir) {
+    std::map<std::size_t, const GapCauses*> by_piece;
+    for (const GapCauses& g : run.gap_causes) by_piece[g.after_piece] = &g;
+    const std::vector<metrics::JobGap> gaps = metrics::job_gaps(m.moves, m.pieces);
+    // The architecture's split is of the gap from one piece to the next: a gap across a piece that made no step
+    // is none of its gaps.
+    const auto split_of = [&by_piece](const metrics::JobGap& g) -> const GapCauses* {
+        const auto it = by_piece.find(g.after_piece);
+        return it != by_piece.end() && g.before_piece == g.after_piece + 1 ? it->second : nullptr;
+    };
+    const bool split = !gaps.empty() && std::all_of(gaps.begin(), gaps.end(), split_of);
+    DeadTimeRows rows;
     if (split) {
-        for (const auto& part : by_move.begin()->second->parts_ms) causes.push_back(part.first);
+        for (const auto& part : by_piece.begin()->second->parts_ms) rows.causes.push_back(part.first);
     }
-    std::string header = "gap after_move total_ms";
-    for (const std::string& c : causes) header += ' ' + c + "_ms";
+    std::string header = "gap move inside total_ms";
+    for (const std::string& c : rows.causes) header += ' ' + c + "_ms";
     std::ofstream out = open(dir / "dead_time.dat", header);
     for (std::size_t k = 0; k < gaps.size(); ++k) {
-        const metrics::DeadGap& g = gaps[k];
-        out << k + 1 << ' ' << g.after_move + 1 << ' '
+        const metrics::JobGap& g = gaps[k];
+        ++(g.inside() ? rows.inside : rows.between);
+        out << k + 1 << ' ' << g.before_move + 1 << ' ' << (g.inside() ? 1 : 0) << ' '
             << num(static_cast<double>(g.dead_ps) / static_cast<double>(kPsPerMs));
         if (split) {
-            for (const auto& part : by_move.at(g.after_move)->parts_ms) out << ' ' << num(part.second);
+            for (const auto& part : split_of(g)->parts_ms) out << ' ' << num(part.second);
         }
         out << '\n';
     }
-    return causes;
+    return rows;
 }
 
 nlohmann::json write_series(const ArchRun& run, const fs::path& dir) {
@@ -248,9 +260,12 @@ void write_plot_data(const std::string& architecture, const ArchRun& run, const 
     const std::optional<ToolRow> worst = write_tool(in, idx, dir);
     write_pulses(in, m, idx, dir);
     write_velocity(in, m, dir);
+    const DeadTimeRows gaps = write_dead_time(m, run, dir);
     nlohmann::json meta = {{"architecture", architecture},
                            {"axes", nlohmann::json::array()},
-                           {"causes", write_dead_time(m, run, dir)},
+                           {"causes", gaps.causes},
+                           {"gaps_between_moves", gaps.between},
+                           {"gaps_inside_moves", gaps.inside},
                            {"series", write_series(run, dir)},
                            {"job_time_s", ps_to_s(in.t_job_end_ps - in.t_job_start_ps)},
                            {"program_extent_mm", extent_mm},

@@ -18,7 +18,8 @@ namespace cnc::sim {
 //   periods_<axis>.dat        period_us count: STEP periods within the axis's pulse runs
 //   tie_<axis>.dat            t_s tie_ns: TIE of each edge against its run's fitted grid (worst per time bin)
 //   velocity.dat              t_s commanded_mm_per_s carriage_mm_per_s: path speeds on a uniform grid
-//   dead_time.dat             gap after_move total_ms [one column per cause, ms]
+//   dead_time.dat             gap move inside total_ms [one column per cause, ms]: every gap of the job, between
+//                             the programmed moves (inside 0, move: the one it leads into) and inside them (1)
 //   series_<k>.dat            t_s value: ArchRun::series[k]
 //   meta.json                 architecture, axes, causes, series, the worst contour sample, the job's extent
 void write_plot_data(const std::string& architecture, const ArchRun& run, const metrics::RunMetrics& m,

@@ -24,6 +24,8 @@ constexpr const char* kProgramColour = "#9a9a9a";
 // Dead-time causes, in the order the architectures report them; the palette avoids the architecture colours.
 constexpr const char* kCauseColours[] = {"#e69f00", "#56b4e9", "#f0e442", "#cc79a7", "#999999",
                                          "#000000", "#882255", "#44aa99", "#ddcc77", "#117733"};
+// The gaps inside a programmed move (between its pieces) where the run reports no causes.
+constexpr const char* kInsideColour = "#999999";
 constexpr int kWidthPx = 960;
 constexpr int kHeightPx = 640;
 constexpr int kPanelHeightPx = 260;
@@ -212,21 +214,25 @@ std::optional<Script> velocity_plot(const std::vector<PlotRun>& runs, const fs::
     return s;
 }
 
-// One panel per run: a bar per gap, stacked by cause where the run reports the causes.
+// One panel per run: a bar per gap of the job, between and inside the programmed moves in job order (a move's gaps
+// side by side, the one that leads into it marked), stacked by cause where the run reports the causes.
 std::optional<Script> dead_time_plot(const std::vector<PlotRun>& runs, const fs::path& out_dir) {
-    Script s({"dead_time", "Dead time per move", "gap between moves [number]", "dead time [ms]"});
+    Script s({"dead_time", "Dead time between and inside programmed moves",
+              "gap [number, in job order: each move's gaps side by side]", "dead time [ms]"});
     bool any = false;
     std::ostringstream body;
     body << "reset\nset multiplot layout " << runs.size() << ",1 title " << quoted(s.plot.title) << "\n";
     for (const PlotRun& r : runs) {
         const std::string file = file_of(r, "dead_time.dat");
-        const ColumnRange total = column_range(out_dir / file, 3);
+        const ColumnRange total = column_range(out_dir / file, 4);
         body << "set title " << quoted(r.architecture + fmt::format(FMT_STRING(": {} gaps"), total.rows))
-             << "\nset xlabel " << quoted(s.plot.xlabel) << "\nset ylabel " << quoted(s.plot.ylabel)
+             << "
+set xlabel " << quoted(s.plot.xlabel) << "
+set ylabel " << quoted(s.plot.ylabel)
              << "\nset grid ytics\nset key outside right top\nset style fill solid 0.9 border -1\nset boxwidth 0.8\n"
              << "set yrange [0:*]\n";
         if (total.rows == 0) {
-            body << "set label 1 'no dead time between moves' at graph 0.5,0.5 center\nset xrange [0:1]\n"
+            body << "set label 1 'no dead time' at graph 0.5,0.5 center\nset xrange [0:1]\n"
                  << "set yrange [0:1]\nplot NaN notitle\nunset label 1\nset xrange [*:*]\n";
             continue;
         }
@@ -239,13 +245,25 @@ std::optional<Script> dead_time_plot(const std::vector<PlotRun>& runs, const fs:
         // Stacked bars: each cause's bar reaches the sum of it and the causes before it, drawn tallest first.
         for (std::size_t k = causes.size(); k-- > 0;) {
             std::string sum;
-            for (std::size_t j = 0; j <= k; ++j) sum += (j ? "+$" : "$") + std::to_string(4 + j);
+            for (std::size_t j = 0; j <= k; ++j) sum += (j ? "+$" : "$") + std::to_string(5 + j);
             clauses.push_back(quoted(file) + " using 1:(" + sum + ") with boxes lc rgb " +
                               quoted(kCauseColours[k % std::size(kCauseColours)]) + " title " + quoted(causes[k]));
         }
-        if (causes.empty()) {
-            clauses.push_back(quoted(file) + " using 1:3 with boxes lc rgb " + quoted(arch_colour(r.architecture)) +
-                              " title " + quoted(r.architecture));
+        // A clause with no row of its kind would leave gnuplot warning about a file with no valid points.
+        const bool inside = r.meta.value("gaps_inside_moves", 0) > 0;
+        const bool between = r.meta.value("gaps_between_moves", 0) > 0;
+        if (causes.empty() && inside) {
+            clauses.push_back(quoted(file) + " using 1:($3 == 1 ? $4 : NaN) with boxes lc rgb " +
+                              quoted(kInsideColour) + " title 'inside moves'");
+        }
+        if (causes.empty() && between) {
+            clauses.push_back(quoted(file) + " using 1:($3 == 0 ? $4 : NaN) with boxes lc rgb " +
+                              quoted(arch_colour(r.architecture)) + " title 'between moves'");
+        }
+        if (!causes.empty() && between && inside) {
+            clauses.push_back(quoted(file) +
+                              " using 1:($3 == 0 ? $4 : NaN) with points pt 9 ps 0.8 lc rgb 'black' title "
+                              "'between moves (each starts a move)'");
         }
         body << plot_line(clauses) << "set yrange [*:*]\nset xrange [*:*]\n";
     }

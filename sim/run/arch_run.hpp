@@ -16,9 +16,10 @@
 
 namespace cnc::sim {
 
-// Where one dead-time gap goes, for an architecture that knows (seed 000's stop-and-wait hand-overs).
+// Where one dead-time gap goes, for an architecture that knows (seed 000's stop-and-wait hand-overs): the gap from
+// one executed piece to the next, between programmed moves or inside one.
 struct GapCauses {
-    std::size_t after_move = 0;                            // index of the move the gap follows
+    std::size_t after_piece = 0;                           // index of the piece the gap follows (RunInput::moves)
     std::vector<std::pair<std::string, double>> parts_ms;  // cause and its share, ms; the parts add up to the gap
 };
 

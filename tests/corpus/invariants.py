@@ -2,7 +2,8 @@
 """Timing invariants over every shipped scenario run on one architecture.
 
 For every scenarios/*/*.toml run with scenario.architecture = ARCH (a steps-file job only on fpga-uart): a run
-that ends ok has motion time <= job time, every dead time >= 0, lead-in >= 0 and tail >= 0, and (G-code jobs) the
+that ends ok has motion time <= job time, every dead time >= 0 (between moves, inside them, total), the total
+dead time = between + inside, lead-in >= 0 and tail >= 0, and (G-code jobs) the
 feed error of its constant-feed lines and arcs equals what the STEP edges of its VCD give (feed_from_edges.py;
 at least one move compared per architecture). A run that fails (some scenarios exist to show a failure) must say
 so in its report (ok false, a failure reason).
@@ -18,6 +19,7 @@ import sys
 from feed_from_edges import compare_feeds
 
 EPS_S = 1e-12
+EPS_MS = 1e-9
 # spi-fpga traces its SPI wires bit by bit in a VCD (72 bits a servo period): a VCD of the 276 s slow diagonal takes
 # minutes to write. On spi-fpga the feeds are compared on jobs up to this long, rerun with the VCD.
 SPI_VCD_MAX_JOB_S = 30.0
@@ -55,9 +57,15 @@ def main():
         job = r["metrics"]["job"]
         if job.get("motion_time_s") is not None and job["motion_time_s"] > job["job_time_s"] + EPS_S:
             failures.append("%s: motion %.6f s > job %.6f s" % (name, job["motion_time_s"], job["job_time_s"]))
-        for key in ("lead_in_ms", "tail_ms", "dead_total_ms", "dead_max_ms"):
+        for key in ("lead_in_ms", "tail_ms", "dead_total_ms", "dead_max_ms", "dead_inside_total_ms",
+                    "dead_inside_max_ms", "dead_all_total_ms"):
             if job.get(key) is not None and job[key] < 0:
                 failures.append("%s: %s = %g < 0" % (name, key, job[key]))
+        if job.get("dead_all_total_ms") is not None:
+            parts = (job["dead_total_ms"] or 0.0) + job["dead_inside_total_ms"]
+            if abs(job["dead_all_total_ms"] - parts) > EPS_MS:
+                failures.append("%s: dead time total %g ms != between + inside %g ms"
+                                % (name, job["dead_all_total_ms"], parts))
         if r["gcode"] is None:
             continue
         if arch == "spi-fpga":

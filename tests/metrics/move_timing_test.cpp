@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "metrics/metrics.hpp"
+#include "metrics/timing/job_gaps.hpp"
 #include "metrics_test_util.hpp"
 
 namespace cnc::metrics {
@@ -50,7 +51,7 @@ TEST(MetricsMoveTiming, SingleStepAxisUsesItsCommandedRateAndRapidsHaveNoFeedErr
 }
 
 // Two pieces of one programmed move (programmed = 0, as an arc's chords) and a move of its own: timing is defined
-// on the programmed move, the pause between its pieces inside its motion time, not a dead time.
+// on the programmed move, the pause between its pieces inside its motion time, and a dead time inside the move.
 TEST(MetricsMoveTiming, PiecesOfOneProgrammedMoveAreTimedAsOneMove) {
     // Piece 0: X steps at 1..10 ms; piece 1: at 12..21 ms (a 2 ms pause after 10 ms); move 2: 24..28 ms.
     RunInput in;
@@ -85,6 +86,31 @@ TEST(MetricsMoveTiming, PiecesOfOneProgrammedMoveAreTimedAsOneMove) {
     ASSERT_EQ(gaps.size(), 1U);
     EXPECT_EQ(gaps[0].dead_ps, 3 * kPsPerMs);
     EXPECT_NEAR(*m.timing.motion_time_s, 0.026, 1e-12);
+    // Inside move 1: piece 0's last edge at 10 ms to piece 1's first at 12 ms, 2 ms; job: 3 + 2 = 5 ms.
+    EXPECT_EQ(m.moves[0].timing.inside_gaps, 1U);
+    EXPECT_EQ(m.moves[0].timing.dead_inside_ps, 2 * kPsPerMs);
+    EXPECT_EQ(m.moves[1].timing.inside_gaps, 0U);
+    EXPECT_EQ(m.timing.gap_count, 1U);
+    EXPECT_EQ(m.timing.inside_gap_count, 1U);
+    EXPECT_DOUBLE_EQ(*m.timing.dead_inside_total_ms, 2.0);
+    EXPECT_DOUBLE_EQ(*m.timing.dead_inside_mean_ms, 2.0);
+    EXPECT_DOUBLE_EQ(*m.timing.dead_inside_max_ms, 2.0);
+    EXPECT_DOUBLE_EQ(*m.timing.dead_all_total_ms, 5.0);
+    // Every gap in job order, with its pieces: inside move 0 (pieces 0 -> 1), then between moves 0 and 1 (1 -> 2).
+    const std::vector<JobGap> all = job_gaps(m.moves, m.pieces);
+    ASSERT_EQ(all.size(), 2U);
+    EXPECT_TRUE(all[0].inside());
+    EXPECT_EQ(all[0].after_move, 0U);
+    EXPECT_EQ(all[0].after_piece, 0U);
+    EXPECT_EQ(all[0].before_piece, 1U);
+    EXPECT_EQ(all[0].dead_ps, 2 * kPsPerMs);
+    EXPECT_FALSE(all[1].inside());
+    EXPECT_EQ(all[1].before_move, 1U);
+    EXPECT_EQ(all[1].after_piece, 1U);
+    EXPECT_EQ(all[1].before_piece, 2U);
+    EXPECT_EQ(all[1].dead_ps, 3 * kPsPerMs);
+    // Without the pieces (a streamed run without --detail) there is no list.
+    EXPECT_TRUE(job_gaps(m.moves, {}).empty());
 }
 
 TEST(MetricsMoveTiming, DeadTimeBetweenMovesAndJobTotals) {
@@ -108,6 +134,11 @@ TEST(MetricsMoveTiming, DeadTimeBetweenMovesAndJobTotals) {
     EXPECT_DOUBLE_EQ(*m.timing.dead_total_ms, 2.5);
     EXPECT_DOUBLE_EQ(*m.timing.dead_mean_ms, 2.5);
     EXPECT_DOUBLE_EQ(*m.timing.dead_max_ms, 2.5);
+    // Each move steps in one piece: nothing inside, the total is the gap between.
+    EXPECT_EQ(m.timing.inside_gap_count, 0U);
+    EXPECT_DOUBLE_EQ(*m.timing.dead_inside_total_ms, 0.0);
+    EXPECT_FALSE(m.timing.dead_inside_mean_ms.has_value());
+    EXPECT_DOUBLE_EQ(*m.timing.dead_all_total_ms, 2.5);
     EXPECT_DOUBLE_EQ(m.timing.job_time_s, 0.020);
     EXPECT_DOUBLE_EQ(*m.timing.lead_in_ms, 1.0);
     EXPECT_DOUBLE_EQ(*m.timing.tail_ms, 3.5);  // last step at 16.5 ms

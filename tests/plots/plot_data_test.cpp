@@ -82,7 +82,8 @@ TEST_F(PlotData, DeadTimeRowsCarryTheGapAndItsCauses) {
     write();
     const auto gaps = rows(dir / "dead_time.dat");
     ASSERT_EQ(gaps.size(), 1U);
-    EXPECT_EQ(gaps[0], (std::vector<double>{1, 1, 4.0, 1.5, 2.5}));  // gap 1 after move 1: 4 ms = 1.5 + 2.5
+    // Gap 1, leading into move 2, between moves: 4 ms = 1.5 + 2.5.
+    EXPECT_EQ(gaps[0], (std::vector<double>{1, 2, 0, 4.0, 1.5, 2.5}));
     std::ifstream meta_in(dir / "meta.json");
     const nlohmann::json meta = nlohmann::json::parse(meta_in);
     EXPECT_EQ(meta.at("causes"), nlohmann::json({"wire", "host"}));

@@ -37,15 +37,16 @@ struct Comparison {
     double metric(const std::string& arch, const char* key) const {
         return column(arch).at("metrics").at(key).get<double>();
     }
-    // The dead time of every gap between moves, ms, as the plot data has it (data/<arch>/dead_time.dat).
+    // The dead time of every gap, between moves and inside them, ms, as the plot data has it
+    // (data/<arch>/dead_time.dat).
     std::vector<double> gaps_ms(const std::string& arch) const {
         std::ifstream in(out / "data" / arch / "dead_time.dat");
         std::vector<double> out_ms;
         for (std::string line; std::getline(in, line);) {
             if (line.empty() || line[0] == '#') continue;
             std::istringstream f(line);
-            double gap = 0, after = 0, total = 0;
-            f >> gap >> after >> total;
+            double gap = 0, move = 0, inside = 0, total = 0;
+            f >> gap >> move >> inside >> total;
             out_ms.push_back(total);
         }
         return out_ms;
@@ -104,7 +105,7 @@ TEST_F(ComparePhysics, AtmegaRateErrorOnTheSeedSpeedExampleIsTheTruncatedCompare
     EXPECT_NEAR(c.metric("atmega", "metrics/pulse/rate_error_worst_pct"), expected_pct, 0.1);
 }
 
-// Stop-and-wait (seed 000 §4.14): between two moves the ACK must cross the line and reach the host, and the next
+// Stop-and-wait (seed 000 §4.14): between two packets (two moves, or two chords of the circle) the ACK must cross the line and reach the host, and the next
 // 11-byte packet must cross the line before the FPGA can step again. The CP2102 runs 115200 Bd as 24 MHz / 208 =
 // 115 384.6 Bd (AN205): 11 bytes x 10 bits (8N1) = 953.3 us, the ACK's 10 bits = 86.7 us; the host's driver sees
 // received bytes link.usb_latency_ms (1 ms) after a USB frame boundary at the earliest. Every gap is at least

@@ -83,7 +83,7 @@ void DeadTimeFold::fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const 
         const TimePs last_a = *piece_a.t_last_ps;
         const TimePs first_b = *piece_b.t_first_ps;
         GapBreakdown g;
-        g.after_move = static_cast<int>(i) + 1;
+        g.after_packet = static_cast<int>(i) + 1;
         g.step_tail_ps = done.t_busy_fall_ps - last_a;
         g.ack_wire_ps = ack->t_stop_end_ps - done.t_busy_fall_ps;
         g.usb_in_ps = ack->t_host_visible_ps - ack->t_stop_end_ps;
@@ -124,7 +124,7 @@ nlohmann::json to_json(const DeadTimeBreakdown& d, bool detail) {
     if (!detail) return j;
     nlohmann::json gaps = nlohmann::json::array();
     for (const GapBreakdown& g : d.gaps) {
-        nlohmann::json row = {{"after_move", g.after_move}};
+        nlohmann::json row = {{"after_packet", g.after_packet}};
         for (const Part& p : kParts) row[std::string(p.name) + "_us"] = static_cast<double>(g.*p.field) / kPsPerUs;
         gaps.push_back(row);
     }
@@ -136,7 +136,7 @@ std::vector<GapCauses> gap_causes(const DeadTimeBreakdown& d) {
     std::vector<GapCauses> out;
     for (const GapBreakdown& g : d.gaps) {
         GapCauses c;
-        c.after_move = static_cast<std::size_t>(g.after_move - 1);
+        c.after_piece = static_cast<std::size_t>(g.after_packet - 1);
         for (const Part& p : kParts) {
             if (p.field == &GapBreakdown::total_ps) continue;
             c.parts_ms.emplace_back(p.name, static_cast<double>(g.*p.field) / static_cast<double>(kPsPerMs));
@@ -147,7 +147,7 @@ std::vector<GapCauses> gap_causes(const DeadTimeBreakdown& d) {
 }
 
 std::string summary_text(const DeadTimeBreakdown& d) {
-    std::string out = "  dead time between moves (" + std::to_string(d.gap_count) + " gaps), ms:   mean      max\n";
+    std::string out = "  dead time between packets (" + std::to_string(d.gap_count) + " gaps), ms: mean      max\n";
     for (const Part& p : kParts) {
         char line[96];
         std::snprintf(line, sizeof line, "    %-12s %28.4f %8.4f\n", p.name, mean_ms(d, p.field), max_ms(d, p.field));

@@ -1,5 +1,6 @@
-// Where the dead time between two fpga-uart moves goes: from the last STEP of one move to the first STEP of
-// the next, split at every hand-over of the stop-and-wait loop (seed 000 §4.14). The parts add up exactly.
+// Where the dead time between two fpga-uart packets goes (between programmed moves, or inside one between an arc's
+// chords): from the last STEP of one packet to the first STEP of the next, split at every hand-over of the
+// stop-and-wait loop (seed 000 §4.14). The parts add up exactly.
 #pragma once
 #include <cstddef>
 #include <deque>
@@ -19,7 +20,7 @@
 namespace cnc::sim {
 
 struct GapBreakdown {
-    int after_move = 0;         // 1-based move the gap follows
+    int after_packet = 0;       // 1-based motion packet (executed piece) the gap follows
     TimePs step_tail_ps = 0;    // last STEP rise -> busy falls (rest of the last period + DONE)
     TimePs ack_wire_ps = 0;     // busy falls -> ACK stop bit ends at the CP2102 (tx_start + 10 bits)
     TimePs usb_in_ps = 0;       // ACK received -> the host sees it (USB frame + driver latency)
@@ -33,7 +34,7 @@ struct GapBreakdown {
 
 struct DeadTimeBreakdown {
     std::size_t gap_count = 0;
-    GapBreakdown sum, max;                 // each part summed and at its largest over the gaps (after_move unused)
+    GapBreakdown sum, max;                 // each part summed and at its largest over the gaps (after_packet unused)
     std::vector<GapBreakdown> gaps;        // every gap, when kept (a long job has one per packet)
     double utilisation_to_fpga_pct = 0.0;  // host -> FPGA line busy time over the job time
     double utilisation_from_fpga_pct = 0.0;

@@ -10,6 +10,7 @@
 #include "common/rounding.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/report/report.hpp"
+#include "metrics/timing/job_gaps.hpp"
 
 namespace cnc::metrics {
 
@@ -268,7 +269,12 @@ json job_json(const RunMetrics& m, bool detail) {
               {"dead_gaps", of_moves(t.gap_count)},
               {"dead_total_ms", opt(t.dead_total_ms)},
               {"dead_mean_ms", opt(t.dead_mean_ms)},
-              {"dead_max_ms", opt(t.dead_max_ms)}};
+              {"dead_max_ms", opt(t.dead_max_ms)},
+              {"dead_inside_gaps", of_moves(t.inside_gap_count)},
+              {"dead_inside_total_ms", opt(t.dead_inside_total_ms)},
+              {"dead_inside_mean_ms", opt(t.dead_inside_mean_ms)},
+              {"dead_inside_max_ms", opt(t.dead_inside_max_ms)},
+              {"dead_all_total_ms", opt(t.dead_all_total_ms)}};
     if (detail) {
         json gaps = json::array();
         for (const DeadGap& g : dead_gaps(m.moves)) {
@@ -277,6 +283,15 @@ json job_json(const RunMetrics& m, bool detail) {
                             {"dead_ms", ps_to_s(g.dead_ps) * 1e3}});
         }
         j["dead_times"] = std::move(gaps);
+        json inside = json::array();
+        for (const JobGap& g : job_gaps(m.moves, m.pieces)) {
+            if (!g.inside()) continue;
+            inside.push_back({{"move", m.moves.at(g.after_move).index},
+                              {"after_piece", g.after_piece + 1},
+                              {"before_piece", g.before_piece + 1},
+                              {"dead_ms", ps_to_s(g.dead_ps) * 1e3}});
+        }
+        j["dead_times_inside"] = std::move(inside);
     }
     return j;
 }

@@ -6,6 +6,7 @@
 #include "metrics/metrics.hpp"
 #include "metrics/report/report.hpp"
 #include "metrics/report/text_table.hpp"
+#include "metrics/stats.hpp"
 #include "metrics/timing/worst_moves.hpp"
 
 namespace cnc::metrics {
@@ -112,14 +113,25 @@ std::string worst_section(const RunMetrics& m) {
 
 std::string job_section(const RunMetrics& m) {
     const TimingResult& j = m.timing;
-    TextTable t({"job [s]", "motion [s]", "lead-in [ms]", "tail [ms]", "gaps", "dead total [ms]", "dead mean [ms]",
-                 "dead max [ms]"});
+    TextTable t({"job [s]", "motion [s]", "lead-in [ms]", "tail [ms]"});
     // Without moves (analyze) the job is only the span of the traced edges: no lead-in, tail or gaps to count.
     const auto of_moves = [&m](std::optional<double> v) { return m.with_moves ? v : std::nullopt; };
+    const auto gaps = [&m](std::size_t n) { return m.with_moves ? count(n) : "-"; };
     t.add_row({fixed(j.job_time_s, 6), fixed(j.motion_time_s, 6), fixed(of_moves(j.lead_in_ms), 3),
-               fixed(of_moves(j.tail_ms), 3), m.with_moves ? count(j.gap_count) : "-", fixed(j.dead_total_ms, 3),
-               fixed(j.dead_mean_ms, 3), fixed(j.dead_max_ms, 3)});
-    return t.render(m.with_moves ? "Job timing" : "Job timing (the span of the traced edges)");
+               fixed(of_moves(j.tail_ms), 3)});
+    TextTable d({"dead time", "gaps", "total [ms]", "mean [ms]", "max [ms]"});
+    d.add_row({"between moves", gaps(j.gap_count), fixed(j.dead_total_ms, 3), fixed(j.dead_mean_ms, 3),
+               fixed(j.dead_max_ms, 3)});
+    d.add_row({"inside moves", gaps(j.inside_gap_count), fixed(j.dead_inside_total_ms, 3),
+               fixed(j.dead_inside_mean_ms, 3), fixed(j.dead_inside_max_ms, 3)});
+    const std::size_t all_gaps = j.gap_count + j.inside_gap_count;
+    std::optional<double> all_mean_ms, all_max_ms;
+    if (all_gaps > 0) all_mean_ms = *j.dead_all_total_ms / static_cast<double>(all_gaps);
+    keep_max(all_max_ms, j.dead_max_ms);
+    keep_max(all_max_ms, j.dead_inside_max_ms);
+    d.add_row({"total", gaps(all_gaps), fixed(j.dead_all_total_ms, 3), fixed(all_mean_ms, 3), fixed(all_max_ms, 3)});
+    return t.render(m.with_moves ? "Job timing" : "Job timing (the span of the traced edges)") + '\n' +
+           d.render("Dead time (between programmed moves; inside them, between their pieces)");
 }
 
 std::string laser_section(const LaserResult& l) {

@@ -63,6 +63,23 @@ std::optional<double> motion_time_s(const RunInput& in, const EdgeIndex& idx,
     return ps_to_s(end - *pm.t_first_edge_ps);
 }
 
+// The gaps between the pieces of programmed move pm that step: from the last rising edge of one to the first of the
+// next (a piece with no edge is passed over).
+void inside_gaps(const EdgeIndex& idx, const ProgrammedMove& pm, MoveTiming& mt) {
+    std::optional<TimePs> last_ps;
+    for (std::size_t p = pm.first_piece; p < pm.end_piece; ++p) {
+        const std::optional<TimePs> first_ps = idx.move_first_edge_ps[p];
+        if (!first_ps) continue;
+        if (last_ps) {
+            const TimePs dead = *first_ps - *last_ps;
+            ++mt.inside_gaps;
+            mt.dead_inside_ps += dead;
+            mt.dead_inside_max_ps = std::max(mt.dead_inside_max_ps, dead);
+        }
+        last_ps = idx.move_last_edge_ps[p];
+    }
+}
+
 // The achieved feed of a cutting move run by a planner: the STEP edges' path speed over its cruise (none: the
 // commanded speed never reached F, or the cruise holds fewer than two edge instants).
 std::optional<double> cruise_feed_mm_per_min(const RunInput& in, const ProgrammedMove& pm, StepPosition& position,
@@ -92,6 +109,9 @@ void TimingFold::add(std::size_t move, MoveTiming& mt, std::optional<TimePs> t_f
     mt.dead_after_move.reset();
     mt.dead_before_ps.reset();
     if (!t_first_edge_ps) return;
+    m_out.inside_gap_count += mt.inside_gaps;
+    m_dead_inside_ps += mt.dead_inside_ps;
+    m_dead_inside_max_ps = std::max(m_dead_inside_max_ps, mt.dead_inside_max_ps);
     if (m_previous) {
         const TimePs dead = *t_first_edge_ps - m_previous_last_edge_ps;
         mt.dead_after_move = *m_previous;
@@ -115,6 +135,14 @@ TimingResult TimingFold::finish(TimePs t_job_start_ps, TimePs t_job_end_ps, std:
         out.dead_total_ms = ps_to_s(m_dead_total_ps) * 1e3;
         out.dead_mean_ms = *out.dead_total_ms / static_cast<double>(out.gap_count);
     }
+    if (m_previous) {
+        out.dead_inside_total_ms = ps_to_s(m_dead_inside_ps) * 1e3;
+        out.dead_all_total_ms = ps_to_s(m_dead_total_ps + m_dead_inside_ps) * 1e3;
+    }
+    if (out.inside_gap_count > 0) {
+        out.dead_inside_mean_ms = *out.dead_inside_total_ms / static_cast<double>(out.inside_gap_count);
+        out.dead_inside_max_ms = ps_to_s(m_dead_inside_max_ps) * 1e3;
+    }
     // A controller that goes on stepping after its host stopped (an aborted run: its metrics are partial) keeps
     // the job open to its last edge, so that motion <= job and the tail >= 0 on every run.
     const TimePs job_end_ps = last_edge_ps ? std::max(t_job_end_ps, *last_edge_ps) : t_job_end_ps;
@@ -135,6 +163,7 @@ TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx, const std:
         const MoveSpec& first = in.moves[pm.first_piece];
         MoveTiming& mt = moves[m];
         mt.motion_time_s = motion_time_s(in, idx, programmed, m);
+        inside_gaps(idx, pm, mt);
         const bool cutting = mt.motion_time_s && !first.rapid && first.feed_mm_per_min > 0.0 && *mt.motion_time_s > 0.0;
         if (cutting) {
             if (in.commanded) {

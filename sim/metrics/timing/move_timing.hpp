@@ -1,5 +1,6 @@
 // Per programmed move timing: motion time, achieved feed against the programmed F, dead time between programmed
-// moves, and the job totals (definitions in docs/metrics.md "Feed error", "Job timing").
+// moves and inside them (between their pieces), and the job totals (definitions in docs/metrics.md "Feed error",
+// "Job timing").
 #pragma once
 #include <cstddef>
 #include <optional>
@@ -34,6 +35,11 @@ struct MoveTiming {
     // moves without. Kept with the move, so that the gaps of a long job are spilled with its moves (MoveRecords).
     std::optional<std::size_t> dead_after_move;
     std::optional<TimePs> dead_before_ps;
+    // The gaps between its own pieces that step (an arc's chords, a long line's commands): from the last rising
+    // edge of one to the first of the next, the same definition as between moves.
+    std::size_t inside_gaps = 0;
+    TimePs dead_inside_ps = 0;      // their sum
+    TimePs dead_inside_max_ps = 0;  // the longest
 };
 
 struct TimingResult {
@@ -47,8 +53,13 @@ struct TimingResult {
     std::optional<double> motion_time_s;  // sum of the per-move motion times
     std::size_t gap_count = 0;            // gaps between consecutive programmed moves that emit steps (dead_gaps())
     std::optional<double> dead_total_ms, dead_mean_ms, dead_max_ms;
-    std::optional<double> lead_in_ms;  // job start to the first rising STEP edge (any axis)
-    std::optional<double> tail_ms;     // last rising STEP edge to the job end
+    // The gaps between the pieces of one programmed move (MoveTiming::inside_gaps), summed over the job; the
+    // totals are 0 on a run whose moves step in one piece each and none without a move that steps.
+    std::size_t inside_gap_count = 0;
+    std::optional<double> dead_inside_total_ms, dead_inside_mean_ms, dead_inside_max_ms;
+    std::optional<double> dead_all_total_ms;  // between + inside: every gap of the job
+    std::optional<double> lead_in_ms;         // job start to the first rising STEP edge (any axis)
+    std::optional<double> tail_ms;            // last rising STEP edge to the job end
 };
 
 // The job figures folded over the programmed moves in order: feed and motion totals, dead-time gaps, then lead-in,
@@ -71,6 +82,8 @@ private:
     std::optional<std::size_t> m_previous;  // the last move with edges, and its last edge
     TimePs m_previous_last_edge_ps = 0;
     TimePs m_dead_total_ps = 0;
+    TimePs m_dead_inside_ps = 0;
+    TimePs m_dead_inside_max_ps = 0;
 };
 
 [[nodiscard]] TimingResult compute_timing(const RunInput& in, const EdgeIndex& idx,

@@ -226,9 +226,7 @@ std::optional<Script> dead_time_plot(const std::vector<PlotRun>& runs, const fs:
         const std::string file = file_of(r, "dead_time.dat");
         const ColumnRange total = column_range(out_dir / file, 4);
         body << "set title " << quoted(r.architecture + fmt::format(FMT_STRING(": {} gaps"), total.rows))
-             << "
-set xlabel " << quoted(s.plot.xlabel) << "
-set ylabel " << quoted(s.plot.ylabel)
+             << "\nset xlabel " << quoted(s.plot.xlabel) << "\nset ylabel " << quoted(s.plot.ylabel)
              << "\nset grid ytics\nset key outside right top\nset style fill solid 0.9 border -1\nset boxwidth 0.8\n"
              << "set yrange [0:*]\n";
         if (total.rows == 0) {

@@ -49,7 +49,16 @@ struct Row {
     // Followed, with a baseline run, by the column's value minus the baseline's: what the controller adds to the
     // machine's own figure.
     bool over_baseline = false;
+    // Measured against the architecture's own commanded motion (uniform rates without a planner, the planned
+    // trajectory with one: docs/metrics.md, Terms), so the columns' figures are not the same quantity and none is
+    // marked best.
+    bool own_reference = false;
 };
+
+constexpr Row against_own_command(Row row) {
+    row.own_reference = true;
+    return row;
+}
 
 // The machine each run used, then the headline numbers of docs/metrics.md in the order a reader compares them.
 constexpr Row kRows[] = {
@@ -75,12 +84,12 @@ constexpr Row kRows[] = {
     {"dead time mean between moves [ms]", "/metrics/job/dead_mean_ms", fixed(3)},
     {"TIE max [ns]", "/metrics/pulse/tie_max_ns", fixed(3)},
     {"period jitter p-p max [ns]", "/metrics/pulse/jitter_pp_max_ns", fixed(3)},
-    {"rate error worst [%]", "/metrics/pulse/rate_error_worst_pct", signed_fixed(4)},
-    {"sync error max [us]", "/metrics/pulse/sync_max_us", fixed(1)},
-    {"feed error max [%]", "/metrics/feed/feed_error_max_abs_pct", fixed(4)},
+    against_own_command({"rate error worst [%]", "/metrics/pulse/rate_error_worst_pct", signed_fixed(4)}),
+    against_own_command({"sync error max [us]", "/metrics/pulse/sync_max_us", fixed(1)}),
+    against_own_command({"feed error max [%]", "/metrics/feed/feed_error_max_abs_pct", fixed(4)}),
     {"contour error max [um]", "/metrics/path/contour_max_um", fixed(2), false, false, true},
     {"contour error rms [um]", "/metrics/path/contour_rms_um", fixed(2)},
-    {"following error max [um]", "/metrics/path/following_max_um", fixed(2)},
+    against_own_command({"following error max [um]", "/metrics/path/following_max_um", fixed(2)}),
     {"job end error [um]", "/metrics/path/job_end_um", fixed(2)},
     // The dynamic mechanics' (none with the ideal carriage): 90 electrical degrees is pull-out, a slip 4 full steps.
     {"lost full steps X", "/mechanics/x/lost_full_steps", fixed(0), false, true},
@@ -268,6 +277,16 @@ const CompareColumn* Comparison::baseline_column() const {
     return nullptr;
 }
 
+std::string not_compared_note(const Comparison& comparison) {
+    std::vector<std::string> labels;
+    for (const TableRow& r : table_rows(comparison)) {
+        if (!r.comparable) labels.push_back(r.label);
+    }
+    return "No best is marked on " + join(labels, ", ") +
+           ": each architecture's is measured against its own commanded motion (uniform rates without a planner, "
+           "the planned trajectory with one), so the figures are not the same quantity (docs/metrics.md).";
+}
+
 std::vector<TableRow> table_rows(const Comparison& comparison) {
     const std::vector<CompareColumn>& columns = comparison.columns;
     const CompareColumn* baseline = comparison.baseline_column();
@@ -276,9 +295,9 @@ std::vector<TableRow> table_rows(const Comparison& comparison) {
     for (const CompareColumn& c : columns) st.cells.push_back(status(c));
     rows.push_back(st);
     for (const Row& row : kRows) {
-        TableRow r{row.label, {}, {}};
+        TableRow r{row.label, {}, {}, !row.own_reference};
         for (const CompareColumn& c : columns) r.cells.push_back(cell(c, row));
-        r.best = best_cells(r.cells);
+        r.best = r.comparable ? best_cells(r.cells) : std::vector<bool>(r.cells.size(), false);
         rows.push_back(r);
         if (!row.over_baseline || baseline == nullptr) continue;
         TableRow o{over_label(row, baseline->architecture), {}, {}};
@@ -393,6 +412,7 @@ std::string compare_table(const Comparison& comparison, TableFormat format_kind)
         }
     }
     if (!md) os << "* best of the row (smallest magnitude)\n";
+    os << not_compared_note(comparison) << '\n';
     return os.str();
 }
 

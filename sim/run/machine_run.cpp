@@ -27,7 +27,7 @@ void record_pins(EdgeRecorder& rec, const MachinePins& pins, bool enable) {
 
 // The VCD's pins: each DRV8825's STEP, DIR and nENBL and the laser head's input, each with the clock that times it,
 // then the controller's own (its link, its FPGA's nets). The machine's come first: sigrok-cli 0.7.2 decodes a STEP
-// pin declared after the link's lines wrongly (116 of 9600 rising edges on the fpga-uart square).
+// pin declared after the link's lines wrongly (116 of 9600 rising edges on the 20 mm square over UART).
 std::vector<TracedPin> traced_pins(const MachinePins& pins, const Controller& ctl) {
     const MachinePinClocks clocks = ctl.pin_clocks();
     const std::optional<std::int64_t> out = clocks.step_dir_laser_hz;

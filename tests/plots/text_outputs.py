@@ -4,8 +4,8 @@ text, and what the plots and the page say of counts agrees with numbers read els
 
 - no control byte (below 0x20, other than tab, line feed and carriage return) and valid UTF-8 in any file written
   but the PNGs: the scripts, data files, tables, reports, SVGs, VCDs and the page;
-- the dead-time plot's title of each run gives its number of gaps, which equals both the report's
-  metrics/job/dead_gaps and the rows of the run's dead_time.dat, and its x range ends one past the last gap;
+- the dead-time plot's title of each run gives its number of gaps, which equals both the report's gaps between
+  and inside moves (metrics/job/dead_gaps + dead_inside_gaps) and the rows of the run's dead_time.dat, and its x range ends one past the last gap;
 - the page shows the job's first 80 lines and says how many more there are (`long_job`: a job of more lines,
   written here).
 
@@ -88,10 +88,11 @@ def check_dead_time(out, reports):
     """reports: {architecture: its JSON report}, the runs plotted in `out`."""
     gaps = {}
     for arch, report in reports.items():
-        gaps[arch] = report["metrics"]["job"]["dead_gaps"]
+        job = report["metrics"]["job"]
+        gaps[arch] = job["dead_gaps"] + (job["dead_inside_gaps"] or 0)
         rows = data_rows(os.path.join(out, "data", arch, "dead_time.dat"))
         if len(rows) != gaps[arch]:
-            fail(f"{arch}: dead_time.dat has {len(rows)} gaps, the report's metrics/job/dead_gaps {gaps[arch]}")
+            fail(f"{arch}: dead_time.dat has {len(rows)} gaps, the report's between and inside moves {gaps[arch]}")
     if "dead_time" not in plot_names(out):
         if any(gaps.values()):
             fail(f"{out}: no dead_time plot, with gaps {gaps}")

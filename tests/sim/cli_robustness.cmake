@@ -96,18 +96,20 @@ cnc_cli_test(trace.window_and_signals golden 0
       --set trace.from_s=1 --set trace.to_s=2
   MATCH "square"
   FILE ${ROBUST}/window.vcd
-  FILE_MATCH "[$]scope module cncsim [$]end\n[$]var wire 1 ! step_x [$]end\n[$]var wire 1 \" dir_x [$]end\n[$]upscope"
+  FILE_MATCH "[$]scope module cncsim [$]end\n[$]scope module driver_x [$]end\n[$]var wire 1 ! step_x [$]end\n"
+             "[$]var wire 1 \" dir_x [$]end\n[$]upscope [$]end\n[$]upscope"
              "[$]enddefinitions [$]end\n#10000000000\n[$]dumpvars\n" "\n#20000000000\n$")
 cnc_bad_input_test(trace_signal_unknown "${SQUARE}|--set|trace.signals=[\"step_x\", \"stepx\"]|--vcd|${ROBUST}/unknown.vcd"
-                   "square_20mm[.]toml: trace[.]signals: 'stepx' is not a signal of fpga-uart [(]allowed: step_x, dir_x, step_y")
+                   "square_20mm[.]toml: trace[.]signals: 'stepx' is not a signal of fpga-uart [(]allowed: step_x, dir_x, n_enbl_x, step_y")
 cnc_bad_input_test(trace_window_reversed "${SQUARE}|--set|trace.from_s=2|--set|trace.to_s=1"
                    "--set trace[.]to_s: 1 s must be after trace[.]from_s = 2 s")
 # spi-fpga: the SPI wires are not driven bit by bit, nor traced, unless asked for: laser is the file's last pin,
-# the carriage positions follow it.
+# the carriage's positions follow it in their own scope.
 cnc_cli_test(trace.spi_wires_on_request golden 0
   CMD run ${SCENARIOS}/spi-fpga/square_20mm.toml --vcd ${ROBUST}/spi_default.vcd --progress off
   MATCH "square" FILE ${ROBUST}/spi_default.vcd
-  FILE_MATCH " laser [$]end\n[$]var real 64 [^ ]+ carriage_x_mm [$]end\n[$]var real 64 [^ ]+ carriage_y_mm [$]end\n[$]upscope")
+  FILE_MATCH " laser [$]end\n[$]upscope [$]end\n[$]scope module carriage [$]end\n"
+             "[$]var real 64 [^ ]+ carriage_x_mm [$]end\n[$]var real 64 [^ ]+ carriage_y_mm [$]end\n[$]upscope")
 
 # --- --samples FILE: the tool samples as CSV, checked and written like every output ---
 find_package(Python3 REQUIRED COMPONENTS Interpreter)

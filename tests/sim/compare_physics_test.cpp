@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/command_output.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -61,12 +63,7 @@ Comparison compare(const std::string& scenario, const std::string& archs) {
     fs::remove_all(out);
     const std::string cmd = std::string(CNCSIM_EXE) + " compare " + scenario + " --arch " + archs + " --out " +
                             out.string() + " --format json 2>/dev/null";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    std::string text;
-    char buf[4096];
-    for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) text.append(buf, n);
-    EXPECT_EQ(pclose(pipe), 0) << cmd;
-    return {nlohmann::json::parse(text), out};
+    return {nlohmann::json::parse(cnc::test::command_output(cmd)), out};
 }
 
 struct CleanUp : ::testing::Test {

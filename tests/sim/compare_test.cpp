@@ -8,17 +8,13 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/compare.hpp"
+#include "support/command_output.hpp"
 
 namespace {
 
 nlohmann::json run_compare_json(const std::string& args) {
-    const std::string cmd = std::string(CNCSIM_EXE) + " compare " + args + " --format json";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    std::string out;
-    char buf[4096];
-    for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-    EXPECT_EQ(pclose(pipe), 0);
-    return nlohmann::json::parse(out);
+    return nlohmann::json::parse(
+        cnc::test::command_output(std::string(CNCSIM_EXE) + " compare " + args + " --format json"));
 }
 
 double metric(const nlohmann::json& column, const char* key) {

@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/command_output.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -20,13 +22,7 @@ const std::string kScenarios = std::string(CNC_SOURCE_DIR) + "/scenarios/";
 
 // Runs cncsim with `args` and returns what it printed on stdout.
 std::string cncsim(const std::string& args) {
-    const std::string cmd = std::string(CNCSIM_EXE) + " " + args + " 2>/dev/null";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    std::string text;
-    char buf[4096];
-    for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) text.append(buf, n);
-    EXPECT_EQ(pclose(pipe), 0) << cmd;
-    return text;
+    return cnc::test::command_output(std::string(CNCSIM_EXE) + " " + args + " 2>/dev/null");
 }
 
 nlohmann::json detailed_report(const std::string& scenario) {

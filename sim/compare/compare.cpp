@@ -277,10 +277,10 @@ const CompareColumn* Comparison::baseline_column() const {
     return nullptr;
 }
 
-std::string not_compared_note(const Comparison& comparison) {
+std::string not_compared_note() {
     std::vector<std::string> labels;
-    for (const TableRow& r : table_rows(comparison)) {
-        if (!r.comparable) labels.push_back(r.label);
+    for (const Row& row : kRows) {
+        if (row.own_reference) labels.emplace_back(row.label);
     }
     return "No best is marked on " + join(labels, ", ") +
            ": each architecture's is measured against its own commanded motion (uniform rates without a planner, "
@@ -412,7 +412,7 @@ std::string compare_table(const Comparison& comparison, TableFormat format_kind)
         }
     }
     if (!md) os << "* best of the row (smallest magnitude)\n";
-    os << not_compared_note(comparison) << '\n';
+    os << not_compared_note() << '\n';
     return os.str();
 }
 

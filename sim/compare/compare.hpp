@@ -47,7 +47,7 @@ struct TableRow {
 // With a baseline run, each row marked Row::over_baseline is followed by the column's value minus the baseline's.
 std::vector<TableRow> table_rows(const Comparison& comparison);
 // Which rows are not marked best, and why: one sentence.
-std::string not_compared_note(const Comparison& comparison);
+std::string not_compared_note();
 std::string status(const CompareColumn& c);
 
 // The comparison table: one row per metric, one column per architecture; best values marked (text: a trailing

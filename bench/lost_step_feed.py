@@ -31,7 +31,8 @@ def lost_steps(cncsim, arch, feed, tmp):
         f.write(text)
     report = os.path.join(tmp, "%s_f%g.json" % (arch, feed))
     cmd = [cncsim, "run", SCENARIO, "--set", "scenario.architecture=" + arch, "--set", "scenario.job=" + job,
-           "--set", "machine.rapid_feed_mm_per_min=%g" % feed, "--progress", "off", "--report", report]
+           "--set", "machine.rapid_feed_mm_per_min=%g" % feed, "--set", "clock.ideal=true", "--progress", "off",
+           "--report", report]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     with open(report) as f:
         mech = json.load(f)[arch]["mechanics"]

@@ -79,6 +79,7 @@ struct AvrChip::Bridge {
 AvrChip::AvrChip(const AvrCoreConfig& cfg)
     : m_map(checked_mcu(cfg)),
       m_f_cpu_hz(cfg.f_cpu_hz),
+      m_clock(cfg.f_cpu_hz == 0 ? 1 : cfg.f_cpu_hz, cfg.clock, "clock"),
       m_usart(static_cast<UsartSink&>(*this), cfg.keep_usart_logs),
       m_port_hooks(std::make_unique<PortHooks>()) {
     if (cfg.f_cpu_hz == 0) throw BadInput(cfg.where, "the AVR clock frequency must be above 0 Hz");

@@ -79,7 +79,7 @@ public:
     [[nodiscard]] bool initial_level(int line) const { return m_initial[static_cast<std::size_t>(line)]; }
 
     // The receiver's bit clock and frame format now (for decoding the RXD line).
-    [[nodiscard]] uart::BitClock rx_clock() const { return m_usart.bit_clock(m_f_cpu_hz); }
+    [[nodiscard]] uart::BitClock rx_clock() const { return m_usart.bit_clock(m_clock.hz()); }
     [[nodiscard]] uart::FrameFormat rx_format() const { return m_usart.format(); }
     // A frame decoded from RXD, started at cycle `start`, decided at cycle `decision` (<= cycle()): the byte is
     // in the receive buffer from `decision` on.
@@ -106,7 +106,9 @@ public:
     [[nodiscard]] const McuMap& mcu() const { return m_map; }
     [[nodiscard]] const UsartUnit& usart() const { return m_usart; }
     [[nodiscard]] const TimerUnit& timer(int n) const { return *m_timers.at(static_cast<std::size_t>(n)); }
+    // The frequency the firmware was built for (F_CPU), and the oscillator's edges as they come.
     [[nodiscard]] std::int64_t f_cpu_hz() const { return m_f_cpu_hz; }
+    [[nodiscard]] const ClockGrid& clock() const { return m_clock; }
 
 private:
     struct Bridge;     // the C callbacks handed to libsimavr (avr_chip.cpp)
@@ -163,6 +165,7 @@ private:
 
     const McuMap& m_map;
     const std::int64_t m_f_cpu_hz;
+    const ClockGrid m_clock;
     std::array<Pin, kPinSignals.size()> m_line_pins{};  // kPinSignals order
     Prescaler m_prescaler01;                            // Timer0 and Timer1 (§17)
     Prescaler m_prescaler2;                             // Timer2 (§18.10)

@@ -47,11 +47,7 @@ AvrCoreStats AvrCore::stats() const {
 }
 
 Cycle AvrCore::first_cycle_at_or_after(TimePs t_ps) const {
-    const auto f = static_cast<long double>(m_chip->f_cpu_hz());
-    auto n = static_cast<Cycle>(std::floor(static_cast<long double>(t_ps) * f / static_cast<long double>(kPsPerSec)));
-    while (cycle_ps(n) < t_ps) ++n;
-    while (n > 0 && cycle_ps(n - 1) >= t_ps) --n;
-    return n;
+    return std::max<Cycle>(0, m_chip->clock().first_at_or_after(t_ps));
 }
 
 void AvrCore::wait_until_ps(TimePs t_ps) {

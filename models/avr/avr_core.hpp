@@ -2,7 +2,8 @@
 // AvrChip), as a SystemC module. No wall-clock pacing: it runs as fast as the host allows.
 //
 // Outputs. Each signal of the pin map (avr.pins) is an sc_out<bool> port, and so is TXD; every change is written
-// at exactly cycle * 62.5 ns (16 MHz). The AVR runs ahead of SystemC time by at most a quantum of cycles
+// at exactly its cycle's clock edge (cycle * 62.5 ns at 16 MHz on an ideal clock; AvrCoreConfig::clock moves the
+// edges as the board's oscillator does). The AVR runs ahead of SystemC time by at most a quantum of cycles
 // (AvrCoreConfig::quantum_cycles: temporal decoupling), then its recorded output changes are
 // replayed at their exact times and the thread waits until SystemC time equals the AVR's time again.
 // A port pin's level is its OCnx output while a timer's COM bits connect it and its DDR bit is set, else its
@@ -66,7 +67,7 @@ public:
 
     [[nodiscard]] const AvrChip& chip() const { return *m_chip; }
     [[nodiscard]] Cycle cycle() const { return m_chip->cycle(); }
-    [[nodiscard]] TimePs cycle_ps(Cycle c) const { return cycles_to_ps(c, m_chip->f_cpu_hz()); }
+    [[nodiscard]] TimePs cycle_ps(Cycle c) const { return m_chip->clock().at(c); }
     [[nodiscard]] AvrCoreStats stats() const;
     [[nodiscard]] bool stopped() const { return m_chip->state() != ChipState::Running; }
     [[nodiscard]] const sc_core::sc_event& stopped_event() const { return m_stopped_ev; }

@@ -8,7 +8,7 @@ LaserCtrl::LaserCtrl(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       pkt_valid("pkt_valid"),
       busy("busy"),
       laser("laser"),
-      m_period_ps(clock_period_ps(cfg)),
+      m_clock(clock_grid(cfg)),
       m_writer("writer") {
     SC_HAS_PROCESS(LaserCtrl);
     SC_METHOD(on_inputs);
@@ -24,8 +24,8 @@ void LaserCtrl::on_inputs() {
     ++m_activations;
     // Every input is a register of another block (or engrave), so it changed exactly at edge n = now / T and
     // holds until at least edge n+1, whose always block reads it.
-    const std::int64_t edge = now_ps() / m_period_ps;
-    const TimePs next_edge_ps = (edge + 1) * m_period_ps;
+    const std::int64_t edge = m_clock.last_at_or_before(now_ps());
+    const TimePs next_edge_ps = m_clock.at(edge + 1);
     if (pkt_valid.event() && pkt_valid.read()) {
         const bool engrave = motion.read() != 0;  // G1/G2/G3 engrave, G0 does not
         m_writer.at(next_edge_ps, [this, engrave] { m_engrave.write(engrave); });

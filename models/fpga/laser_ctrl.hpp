@@ -23,7 +23,7 @@ public:
 private:
     void on_inputs();
 
-    const TimePs m_period_ps;
+    const ClockGrid m_clock;
     sc_core::sc_signal<bool> m_engrave{"engrave", false};  // register, reset 0 (laser safe OFF)
     TimedWriter m_writer;
     std::uint64_t m_activations = 0;

@@ -15,7 +15,7 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
       numerator_y("numerator_y"),
       cfg_valid("cfg_valid"),
       m_cfg(cfg),
-      m_period_ps(clock_period_ps(cfg)),
+      m_clock(clock_grid(cfg)),
       m_core(cfg.numerator_default),
       m_writer("writer") {
     SC_HAS_PROCESS(PacketDecoder);
@@ -34,8 +34,8 @@ void PacketDecoder::on_rx_valid() {
     if (!rx_valid.read()) return;
     // rx_valid rose at edge n; the decoder's always block sees it (and rx_data) at edge n+1. A watchdog
     // that expired at or before edge n has already run (timed event, delta 0 of its edge).
-    const std::int64_t edge = first_edge_after(now_ps(), m_period_ps);
-    const TimePs t = edge * m_period_ps;
+    const std::int64_t edge = m_clock.first_after(now_ps());
+    const TimePs t = m_clock.at(edge);
     const auto done = m_core.on_byte(rx_data.read());
     if (done == PacketDecoderCore::Completed::Motion) {
         const MotionFields f = m_core.motion();
@@ -47,7 +47,7 @@ void PacketDecoder::on_rx_valid() {
             feed_rate.write(f.feed);
             pkt_valid.write(true);
         });
-        m_writer.at(t + m_period_ps, [this] { pkt_valid.write(false); });
+        m_writer.at(m_clock.at(edge + 1), [this] { pkt_valid.write(false); });
     } else if (done == PacketDecoderCore::Completed::Init) {
         const InitFields f = m_core.init();
         m_writer.at(t, [this, f] {
@@ -55,13 +55,13 @@ void PacketDecoder::on_rx_valid() {
             numerator_y.write(f.num_y);
             cfg_valid.write(true);
         });
-        m_writer.at(t + m_period_ps, [this] { cfg_valid.write(false); });
+        m_writer.at(m_clock.at(edge + 1), [this] { cfg_valid.write(false); });
     }
     // timeout_cnt restarts at this byte: with no byte on edges edge+1 .. edge+TIMEOUT_CYCLES, the edge
     // edge+TIMEOUT_CYCLES sees timeout_cnt == TIMEOUT_CYCLES-1 and clears the partial packet.
     m_watchdog.cancel();
     if (m_core.timeout_active()) {
-        m_watchdog.notify(ps(t + std::int64_t{m_cfg.watchdog_cycles} * m_period_ps - now_ps()));
+        m_watchdog.notify(ps(m_clock.at(edge + std::int64_t{m_cfg.watchdog_cycles}) - now_ps()));
     }
 }
 

@@ -43,7 +43,7 @@ private:
     void on_watchdog();
 
     const FpgaConfig m_cfg;
-    const TimePs m_period_ps;
+    const ClockGrid m_clock;
     PacketDecoderCore m_core;
     sc_core::sc_event m_watchdog;
     TimedWriter m_writer;

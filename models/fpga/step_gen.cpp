@@ -17,7 +17,7 @@ StepGen::StepGen(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       step_y("step_y"),
       busy("busy"),
       m_cfg(cfg),
-      m_period_ps(clock_period_ps(cfg)),
+      m_clock(clock_grid(cfg)),
       m_num_x(cfg.numerator_default),  // seed 000 §5.2.4 NUMERATOR_DEFAULT
       m_num_y(cfg.numerator_default) {
     SC_HAS_PROCESS(StepGen);
@@ -36,7 +36,7 @@ void StepGen::on_cfg_valid() {
     ++m_activations;
     if (!cfg_valid.read()) return;
     // cfg_valid high at edge k is seen at k+1; latched only if the FSM is IDLE there (an init mid-move is lost).
-    if (idle_at_edge(first_edge_after(now_ps(), m_period_ps))) {
+    if (idle_at_edge(m_clock.first_after(now_ps()))) {
         m_num_x = numerator_x.read();
         m_num_y = numerator_y.read();
     }
@@ -45,9 +45,9 @@ void StepGen::on_cfg_valid() {
 void StepGen::on_pkt_valid() {
     ++m_activations;
     if (!pkt_valid.read()) return;
-    const std::int64_t k = now_ps() / m_period_ps;
+    const std::int64_t k = m_clock.last_at_or_before(now_ps());
     Move move;
-    move.t_pkt_valid_ps = k * m_period_ps;
+    move.t_pkt_valid_ps = m_clock.at(k);
     if (!idle_at_edge(k + 1)) {  // SETUP/DIR_WAIT/RUN/DONE ignore pkt_valid: the packet is lost
         m_moves.push_back(move);
         return;
@@ -62,8 +62,8 @@ void StepGen::on_pkt_valid() {
     m_idle_from = k + m_schedule->idle_from();
     move.accepted = true;
     move.periods = m_schedule->periods();
-    if (m_schedule->has_run()) move.t_run_start_ps = (k + m_schedule->run_start()) * m_period_ps;
-    move.t_busy_fall_ps = (k + m_schedule->busy_fall()) * m_period_ps;
+    if (m_schedule->has_run()) move.t_run_start_ps = m_clock.at(k + m_schedule->run_start());
+    move.t_busy_fall_ps = m_clock.at(k + m_schedule->busy_fall());
     m_moves.push_back(move);
     fetch_next_edge();
     notify_next_edge();
@@ -79,12 +79,12 @@ void StepGen::fetch_next_edge() {
 }
 
 void StepGen::notify_next_edge() {
-    if (m_next) m_edge_due.notify(ps((m_move_edge + m_next->cycle) * m_period_ps - now_ps()));
+    if (m_next) m_edge_due.notify(ps(m_clock.at(m_move_edge + m_next->cycle) - now_ps()));
 }
 
 void StepGen::emit_edges() {
     ++m_activations;
-    const std::int64_t edge = now_ps() / m_period_ps;
+    const std::int64_t edge = m_clock.last_at_or_before(now_ps());
     while (m_next && m_move_edge + m_next->cycle == edge) {
         const bool level = m_next->level;
         switch (m_next->pin) {

@@ -53,7 +53,7 @@ private:
     void notify_next_edge();
 
     const FpgaConfig m_cfg;
-    const TimePs m_period_ps;
+    const ClockGrid m_clock;
     std::uint32_t m_num_x;
     std::uint32_t m_num_y;
     bool m_dir_x = false;  // reset values

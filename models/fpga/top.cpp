@@ -20,7 +20,7 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       rx_valid("rx_valid"),
       tx_start("tx_start"),
       m_cfg((validate(cfg), cfg)),
-      m_period_ps(clock_period_ps(cfg)),
+      m_clock(clock_grid(cfg)),
       m_numerator_x("numerator_x", cfg.numerator_default),
       m_numerator_y("numerator_y", cfg.numerator_default),
       uart_rx_inst("uart_rx_inst", cfg),
@@ -87,25 +87,25 @@ void Top::on_busy() {
     ++m_activations;
     if (busy.read()) return;
     // busy fell at edge f: edge f+1 sees busy_prev && !busy and samples tx_busy as it was after edge f.
-    const std::int64_t f = now_ps() / m_period_ps;
-    const TimePs t_start = (f + 1) * m_period_ps;
+    const std::int64_t f = m_clock.last_at_or_before(now_ps());
+    const TimePs t_start = m_clock.at(f + 1);
     ++m_pkt_count;
     if (m_tx_busy.read()) {  // no pending flag: the ACK is lost (seed 000 §4.13)
         ++m_acks_dropped;
-        m_acks.push_back({f * m_period_ps, -1});
+        m_acks.push_back({m_clock.at(f), -1});
         return;
     }
     ++m_acks_sent;
-    m_acks.push_back({f * m_period_ps, t_start});
+    m_acks.push_back({m_clock.at(f), t_start});
     m_writer.at(t_start, [this] { tx_start.write(true); });
-    m_writer.at(t_start + m_period_ps, [this] { tx_start.write(false); });
+    m_writer.at(m_clock.at(f + 2), [this] { tx_start.write(false); });
 }
 
 void Top::on_cfg_valid() {
     ++m_activations;
     if (!cfg_valid.read()) return;
-    const std::int64_t k = now_ps() / m_period_ps;
-    m_inits.push_back({k * m_period_ps, m_numerator_x.read(), m_numerator_y.read(),
+    const std::int64_t k = m_clock.last_at_or_before(now_ps());
+    m_inits.push_back({m_clock.at(k), m_numerator_x.read(), m_numerator_y.read(),
                        m_cfg.init_packet_wired && step_gen_inst.idle_at_edge(k + 1)});
 }
 

@@ -59,7 +59,7 @@ private:
     void on_cfg_valid();
 
     const FpgaConfig m_cfg;
-    const TimePs m_period_ps;
+    const ClockGrid m_clock;
     sc_core::sc_signal<std::uint8_t> m_rx_data{"rx_data", 0};
     sc_core::sc_signal<std::uint8_t> m_motion{"motion", 0};
     sc_core::sc_signal<std::int32_t> m_steps_x{"steps_x", 0};

@@ -8,7 +8,7 @@ UartRx::UartRx(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       rx_data("rx_data"),
       rx_valid("rx_valid"),
       m_cfg(cfg),
-      m_period_ps(clock_period_ps(cfg)),
+      m_clock(clock_grid(cfg)),
       m_timing(cfg),
       m_writer("writer") {
     SC_HAS_PROCESS(UartRx);
@@ -24,11 +24,11 @@ void UartRx::record_line() {
 }
 
 bool UartRx::fsm_level(std::int64_t n) const {
-    return m_line.level_before((n - UartRxTiming::kSyncStages) * m_period_ps);
+    return m_line.level_before(m_clock.at(n - UartRxTiming::kSyncStages));
 }
 
 void UartRx::wait_until_edge(std::int64_t n) {
-    const TimePs t = n * m_period_ps;
+    const TimePs t = m_clock.at(n);
     const TimePs now = now_ps();
     if (t > now) {
         wait(ps(t - now));
@@ -42,7 +42,7 @@ std::int64_t UartRx::wait_for_start(std::int64_t n_idle) {
         // The level seen at edge n is final once every change before edge n-2 has happened.
         wait_until_edge(n - UartRxTiming::kSyncStages);
         if (!fsm_level(n)) return n;
-        const auto change = m_line.first_change_at_or_after((n - UartRxTiming::kSyncStages) * m_period_ps);
+        const auto change = m_line.first_change_at_or_after(m_clock.at(n - UartRxTiming::kSyncStages));
         if (!change) {
             wait(m_line_changed);
             ++m_activations;
@@ -50,7 +50,7 @@ std::int64_t UartRx::wait_for_start(std::int64_t n_idle) {
         }
         // The line fell after the level edge n saw; the first edge that can see it (a glitch that rose
         // again before that edge is invisible and the loop moves on to the next change).
-        n = first_edge_after(*change, m_period_ps) + UartRxTiming::kSyncStages;
+        n = m_clock.first_after(*change) + UartRxTiming::kSyncStages;
     }
 }
 
@@ -72,16 +72,16 @@ void UartRx::fsm_thread() {
         }
         if (fsm_level(stop)) {
             ++m_bytes;
-            m_writer.at(stop * m_period_ps, [this, byte] {
+            m_writer.at(m_clock.at(stop), [this, byte] {
                 rx_data.write(byte);
                 rx_valid.write(true);
             });
-            m_writer.at((stop + 1) * m_period_ps, [this] { rx_valid.write(false); });
+            m_writer.at(m_clock.at(stop + 1), [this] { rx_valid.write(false); });
         } else {
             ++m_framing_errors;  // seed 000 §5.2.1: a bad stop bit drops the byte silently
         }
         n_idle = n0 + m_timing.idle_after_stop();
-        m_line.forget_before((n_idle - UartRxTiming::kSyncStages) * m_period_ps);
+        m_line.forget_before(m_clock.at(n_idle - UartRxTiming::kSyncStages));
     }
 }
 

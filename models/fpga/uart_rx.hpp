@@ -34,7 +34,7 @@ private:
     void wait_until_edge(std::int64_t n);
 
     const FpgaConfig m_cfg;
-    const TimePs m_period_ps;
+    const ClockGrid m_clock;
     const UartRxTiming m_timing;
     LineHistory m_line{true};  // rx_s1/rx_s2 reset to 1: the line reads idle before time 0
     sc_core::sc_event m_line_changed;

@@ -24,7 +24,7 @@ private:
     void on_tx_start();
 
     const FpgaConfig m_cfg;
-    const TimePs m_period_ps;
+    const ClockGrid m_clock;
     std::int64_t m_idle_from = 0;  // first edge at which the FSM is IDLE again
     TimedWriter m_writer;
     std::uint64_t m_activations = 0;

@@ -17,6 +17,7 @@
 
 #include "architectures/catalog.hpp"
 #include "compare/spawn.hpp"
+#include "metrics/report/zero_notes.hpp"
 
 namespace cnc::sim {
 
@@ -82,6 +83,9 @@ constexpr Row kRows[] = {
     {"dead time inside moves [ms]", "/metrics/job/dead_inside_total_ms", fixed(3)},
     {"dead time total [ms]", "/metrics/job/dead_all_total_ms", fixed(3)},
     {"dead time mean between moves [ms]", "/metrics/job/dead_mean_ms", fixed(3)},
+    // The clock each run's logic had (none for an architecture without one: docs/metrics.md "Clocks").
+    {"clock offset [ppm]", "/clock/offset_ppm", signed_fixed(3), true},
+    {"clock jitter rms [ps]", "/clock/jitter_rms_ps", fixed(1), true},
     {"TIE max [ns]", "/metrics/pulse/tie_max_ns", fixed(3)},
     {"period jitter p-p max [ns]", "/metrics/pulse/jitter_pp_max_ns", fixed(3)},
     against_own_command({"rate error worst [%]", "/metrics/pulse/rate_error_worst_pct", signed_fixed(4)}),
@@ -287,6 +291,15 @@ std::string not_compared_note() {
            "the planned trajectory with one), so the figures are not the same quantity (docs/metrics.md).";
 }
 
+std::vector<std::string> zero_notes(const Comparison& comparison) {
+    std::vector<std::string> notes;
+    for (const CompareColumn& c : comparison.columns) {
+        if (c.report.is_null() || c.exit_code != 0) continue;
+        for (const std::string& n : metrics::zero_by_construction(c.report)) notes.push_back(c.architecture + ": " + n);
+    }
+    return notes;
+}
+
 std::vector<TableRow> table_rows(const Comparison& comparison) {
     const std::vector<CompareColumn>& columns = comparison.columns;
     const CompareColumn* baseline = comparison.baseline_column();
@@ -413,6 +426,7 @@ std::string compare_table(const Comparison& comparison, TableFormat format_kind)
     }
     if (!md) os << "* best of the row (smallest magnitude)\n";
     os << not_compared_note() << '\n';
+    for (const std::string& n : zero_notes(comparison)) os << n << '\n';
     return os.str();
 }
 

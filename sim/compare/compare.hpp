@@ -48,6 +48,8 @@ struct TableRow {
 std::vector<TableRow> table_rows(const Comparison& comparison);
 // Which rows are not marked best, and why: one sentence.
 std::string not_compared_note();
+// Per column, the figures that are 0 by construction and why ("fpga-uart: TIE and ... are 0 by construction: ...").
+std::vector<std::string> zero_notes(const Comparison& comparison);
 std::string status(const CompareColumn& c);
 
 // The comparison table: one row per metric, one column per architecture; best values marked (text: a trailing

@@ -53,6 +53,7 @@ void table_html(std::ostream& os, const Comparison& comparison) {
     os << "</table>\n<p>Bold: the best value of the row (the smallest magnitude). A <code>-</code> is a figure the run "
           "does not have; a failed run shows none. "
        << escape(not_compared_note()) << "</p>\n";
+    for (const std::string& n : zero_notes(comparison)) os << "<p>" << escape(n) << "</p>\n";
 }
 
 void warnings_html(std::ostream& os, const std::vector<CompareColumn>& columns) {

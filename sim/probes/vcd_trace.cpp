@@ -63,14 +63,13 @@ void VcdTrace::change(Write write, Keep keep) {
 }
 
 VcdTrace::VcdTrace(const Scenario& s, const std::vector<TracedPin>& pins, const std::vector<TracedReal>& reals)
-    : m_timescale_fs(s.vcd_timescale_fs),
+    : m_timescale_fs(0),
       m_timescale_key(s.file + ": trace.timescale"),
       m_from_ps(s.trace_from_ps),
       m_to_ps(s.trace_to_ps) {
     const std::vector<TraceCandidate> all = candidates(pins, reals);
     const std::vector<std::size_t> chosen = select_traced(s, all);
     m_layout.top_scope = metrics::kVcdTopScope;
-    m_layout.timescale_fs = m_timescale_fs;
     m_layout.from_ps = m_from_ps;
     for (const std::size_t k : chosen) {
         if (k < pins.size()) {
@@ -83,6 +82,8 @@ VcdTrace::VcdTrace(const Scenario& s, const std::vector<TracedPin>& pins, const 
         }
         m_signals.back().scope = all[k].block;
     }
+    m_timescale_fs = metrics::chosen_timescale_fs(s.vcd_timescale_fs, m_signals);
+    m_layout.timescale_fs = m_timescale_fs;
     metrics::check_vcd_signals(m_timescale_fs, m_signals, m_timescale_key);  // before the file: a refusal leaves none
     m_file.emplace(s.vcd_path, "the VCD");
     if (m_from_ps == 0) open_at(0);

@@ -38,7 +38,11 @@ struct ArchRun {
     std::map<std::string, EdgeLog> lines;
     nlohmann::json details = nlohmann::json::object();  // architecture section of the JSON report
     std::string details_text;                           // the same, for the summary
-    std::vector<Warning> warnings;                      // grouped by kind in the reports (run.cpp)
+    // The clock its logic ran on (report["clock"], docs/metrics.md "Clocks") and its summary line; null and empty
+    // for an architecture without one.
+    nlohmann::json clock;
+    std::string clock_text;
+    std::vector<Warning> warnings;  // grouped by kind in the reports (run.cpp)
     // Empty: the architecture reports no split (the plots draw whole gaps); filled only for the plots
     // (Scenario::keep_run_input).
     std::vector<GapCauses> gap_causes;

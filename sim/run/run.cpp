@@ -9,6 +9,7 @@
 #include "metrics/metrics.hpp"
 #include "metrics/pulse/commanded_rates.hpp"
 #include "metrics/report/report.hpp"
+#include "metrics/report/zero_notes.hpp"
 #include "run/job.hpp"
 #include "run/program_report.hpp"
 
@@ -101,6 +102,7 @@ RunOutcome run_scenario(const Scenario& s) {
                   {"warnings", warnings_json(arch.warnings, s.detail)},
                   {"gcode", job.program ? program_json(*job.program) : nlohmann::json(nullptr)},
                   {"ok", arch.ok}};
+    if (!arch.clock.is_null()) out.report["clock"] = arch.clock;
     // What `analyze --commanded` splits pulse runs by; per servo period, so only with --detail.
     if (!arch.input.rate_segments.empty()) {
         out.report["commanded_rates"] = s.detail ? metrics::commanded_rates_json(arch.input) : nlohmann::json(nullptr);
@@ -119,6 +121,9 @@ RunOutcome run_scenario(const Scenario& s) {
     }
     // A controller without STEP/DIR axes (the lathe's DC motor) has no pulse figures to tabulate.
     if (!m.axes.empty()) text << metrics::summary_table(m) << '\n';
+    std::string clock_lines = arch.clock_text;
+    for (const std::string& note : metrics::zero_by_construction(out.report)) clock_lines += note + '\n';
+    if (!clock_lines.empty()) text << clock_lines << '\n';
     text << (job.program ? program_text(*job.program) : std::string()) << '\n' << arch.details_text;
     for (const WarningGroup& g : group_warnings(arch.warnings)) text << "warning: " << summary_line(g) << '\n';
     out.summary = text.str();

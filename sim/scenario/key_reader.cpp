@@ -103,6 +103,15 @@ double KeyReader::get_float(const std::string& key, double def, double min, doub
     return v;
 }
 
+std::optional<double> KeyReader::get_optional_float(const std::string& key, double min, double max,
+                                                    const std::string& default_text, const std::string& doc) {
+    if (find(key) == nullptr) {
+        record({key, "float", default_text, number_text(min) + " .. " + number_text(max), doc});
+        return std::nullopt;
+    }
+    return get_float(key, 0.0, min, max, doc);
+}
+
 std::int64_t KeyReader::get_int(const std::string& key, std::int64_t def, std::int64_t min, std::int64_t max,
                                 const std::string& doc) {
     record({key, "integer", std::to_string(def), std::to_string(min) + " .. " + std::to_string(max), doc});

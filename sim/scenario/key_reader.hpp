@@ -30,6 +30,9 @@ public:
     std::int64_t get_int(const std::string& key, std::int64_t def, std::int64_t min, std::int64_t max,
                          const std::string& doc);
     bool get_bool(const std::string& key, bool def, const std::string& doc);
+    // A number with no default value: empty when the document does not set it (`default_text` says what then).
+    std::optional<double> get_optional_float(const std::string& key, double min, double max,
+                                             const std::string& default_text, const std::string& doc);
     std::string get_string(const std::string& key, const std::string& def, const std::string& doc);
     // An array of strings (empty by default).
     std::vector<std::string> get_string_list(const std::string& key, const std::string& doc);

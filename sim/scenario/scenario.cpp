@@ -268,10 +268,15 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.vcd_path = r.get_string("trace.vcd", "",
                               "VCD file to write (relative to the working directory), with its gtkwave save file "
                               "beside it (FILE.vcd -> FILE.gtkw); empty: none");
-    s.vcd_timescale_fs = *metrics::parse_vcd_timescale_fs(r.get_choice(
-        "trace.timescale", "100 ps", metrics::vcd_timescale_names(),
-        "VCD time unit: 100 ps keeps every FPGA (20 ns) and AVR (62.5 ns) clock edge exact, a unit that would round "
-        "them is refused; pins timed otherwise (CP2102, SPI master) are written at the nearest tick"));
+    std::vector<std::string> timescales = metrics::vcd_timescale_names();
+    timescales.insert(timescales.begin(), "auto");
+    const std::string timescale = r.get_choice(
+        "trace.timescale", "auto", timescales,
+        "VCD time unit; auto: 100 ps, which keeps every edge of an ideal FPGA (20 ns) and AVR (62.5 ns) clock exact, "
+        "or 1 ps when a clock's offset or jitter (docs/metrics.md, Clocks) puts its edges between; a unit that "
+        "would round a clocked edge is refused; pins timed otherwise (CP2102, SPI master) are written at the "
+        "nearest tick");
+    if (timescale != "auto") s.vcd_timescale_fs = *metrics::parse_vcd_timescale_fs(timescale);
     read_trace_window(r, s);
     s.report_path = r.get_string("trace.report", "", "JSON report to write; empty: none");
     s.detail = r.get_bool("trace.detail", false,

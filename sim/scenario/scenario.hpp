@@ -39,12 +39,12 @@ struct Scenario {
     // The chosen architecture's own keys, read by its Architecture::read_settings.
     std::shared_ptr<const ArchSettings> arch_settings;
 
-    std::string vcd_path;                     // empty: no VCD
-    std::int64_t vcd_timescale_fs = 100'000;  // trace.timescale
-    std::vector<std::string> trace_signals;   // trace.signals; empty: every pin not traced on request only
-    TimePs trace_from_ps = 0;                 // trace.from_s
-    std::optional<TimePs> trace_to_ps;        // trace.to_s; none: the end of the run
-    std::string report_path;                  // empty: no JSON file
+    std::string vcd_path;                          // empty: no VCD
+    std::optional<std::int64_t> vcd_timescale_fs;  // trace.timescale; empty: "auto"
+    std::vector<std::string> trace_signals;        // trace.signals; empty: every pin not traced on request only
+    TimePs trace_from_ps = 0;                      // trace.from_s
+    std::optional<TimePs> trace_to_ps;             // trace.to_s; none: the end of the run
+    std::string report_path;                       // empty: no JSON file
     bool detail = false;  // the report also holds the logs that grow with steps, periods and packets
     ProgressStyle progress = ProgressStyle::Off;  // set by the CLI from stderr, not a scenario key
     // Set by the CLI for --plots, --plot-data and --samples, which read every edge and tool sample after the run:

@@ -34,7 +34,9 @@ def job_time(cncsim, arch, workdir, name, gcode):
         f.write('[scenario]\njob = "%s"\narchitecture = "%s"\n[host]\noperator_pause_s = 7.0\n'
                 '[planner]\nmode = "exact-stop"\n' % (job, arch))
     report = os.path.join(workdir, name + ".json")
-    run = subprocess.run([cncsim, "run", scenario, "--report", report], capture_output=True, text=True)
+    # The firmware times its waits with its own clock: exact here, so a wait adds exactly its length.
+    run = subprocess.run([cncsim, "run", scenario, "--report", report, "--set", "clock.ideal=true"],
+                         capture_output=True, text=True)
     if run.returncode != 0:
         sys.exit("%s: exit %d\n%s" % (name, run.returncode, run.stderr))
     with open(report) as f:

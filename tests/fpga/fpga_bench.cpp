@@ -21,7 +21,7 @@ void PinMonitor::record() {
 }
 
 FpgaBench::FpgaBench(const sc_core::sc_module_name& name, const FpgaConfig& cfg, std::vector<Edge> rx_changes)
-    : sc_module(name), top("top", cfg), m_rx_changes(std::move(rx_changes)), m_period_ps(clock_period_ps(cfg)) {
+    : sc_module(name), top("top", cfg), m_rx_changes(std::move(rx_changes)), m_clock(clock_grid(cfg)) {
     SC_HAS_PROCESS(FpgaBench);
     top.rx(m_rx);
     for (const std::string& pin : fpga_pins()) {
@@ -52,7 +52,7 @@ std::map<std::string, EdgeLog> FpgaBench::logs() const {
 }
 
 void FpgaBench::run_to_edge(std::int64_t edge) {
-    const TimePs target = edge * m_period_ps + m_period_ps / 2;
+    const TimePs target = (m_clock.at(edge) + m_clock.at(edge + 1)) / 2;
     const auto now = static_cast<TimePs>(sc_core::sc_time_stamp().value());
     sc_core::sc_start(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(target - now)));
 }

@@ -35,7 +35,7 @@ private:
     void drive_rx();
 
     std::vector<Edge> m_rx_changes;
-    TimePs m_period_ps;
+    ClockGrid m_clock;
     sc_core::sc_signal<bool> m_rx{"rx", true};
     std::vector<std::unique_ptr<sc_core::sc_signal<bool>>> m_pins;
     std::vector<std::unique_ptr<PinMonitor>> m_monitors;

@@ -346,7 +346,7 @@ void RefFpga::tick(bool rx) {
 }
 
 void RefFpga::log_outputs() {
-    const TimePs t = m_edge * clock_period_ps(m_cfg);
+    const TimePs t = clock_grid(m_cfg).at(m_edge);
     auto log = [&](const char* pin, bool level) {
         EdgeLog& l = m_logs[pin];
         const bool prev = l.edges.empty() ? l.initial : l.edges.back().level;
@@ -368,11 +368,11 @@ void RefFpga::log_outputs() {
 std::map<std::string, EdgeLog> run_reference(const FpgaConfig& cfg, const std::vector<Edge>& rx_changes,
                                              std::int64_t last_edge) {
     RefFpga fpga(cfg);
-    const TimePs period = clock_period_ps(cfg);
+    const ClockGrid clock = clock_grid(cfg);
     std::size_t next = 0;
     bool level = true;
     for (std::int64_t n = 1; n <= last_edge; ++n) {
-        while (next < rx_changes.size() && rx_changes[next].t_ps < n * period) level = rx_changes[next++].level;
+        while (next < rx_changes.size() && rx_changes[next].t_ps < clock.at(n)) level = rx_changes[next++].level;
         fpga.tick(level);
     }
     return fpga.logs();

@@ -128,3 +128,9 @@ cnc_cli_test(output.summary_to_dev_full golden 1 CMD run ${SQUARE} --progress of
   MATCH "^cncsim: run failed: writing standard output: No space left on device\n$")
 cnc_cli_test(output.keys_to_dev_full golden 1 CMD keys STDOUT /dev/full
   MATCH "^cncsim: run failed: writing standard output: No space left on device\n$")
+
+# A clock no oscillator part is: a jitter whose edges could pass each other, an offset outside the part's tolerance.
+cnc_bad_input_test(clock_jitter_past_period "${SQUARE}|--set|fpga.clock_jitter_rms_ps=1250"
+                   "--set fpga[.]clock_jitter_rms_ps: 1250 ps: must be below a sixteenth of the clock's period")
+cnc_bad_input_test(clock_offset_outside_tolerance "${SQUARE}|--set|clock.offset_ppm=80"
+                   "--set clock[.]offset_ppm: 80 ppm is outside the part's tolerance of [+]-50 ppm")

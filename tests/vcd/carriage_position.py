@@ -60,7 +60,7 @@ def parse_vcd(path):
 
 
 def run(cncsim, scenario, vcd, *sets):
-    cmd = [cncsim, "run", scenario, "--vcd", vcd, "--progress", "off"]
+    cmd = [cncsim, "run", scenario, "--vcd", vcd, "--progress", "off", "--set", "clock.ideal=true"]
     for s in sets:
         cmd += ["--set", s]
     r = subprocess.run(cmd, capture_output=True, text=True)

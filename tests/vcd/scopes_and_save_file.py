@@ -156,9 +156,10 @@ def main():
             if os.path.exists(stale):
                 os.remove(stale)
         if arch == "lathe-sync":
-            cmd = [cncsim, "run", lathe_scenario, "--set", "lathe.passes=1", "--set", "lathe.length_mm=1"]
+            cmd = [cncsim, "run", lathe_scenario, "--set", "lathe.passes=1", "--set", "lathe.length_mm=1",
+                   "--set", "clock.ideal=true"]
         else:
-            cmd = [cncsim, "run", xy_scenario, "--set", "scenario.architecture=" + arch]
+            cmd = [cncsim, "run", xy_scenario, "--set", "scenario.architecture=" + arch, "--set", "clock.ideal=true"]
         cmd += ["--vcd", vcd, "--progress", "off"]
         if arch == "spi-fpga":
             cmd += ["--set", "spi.trace_wires=true"]

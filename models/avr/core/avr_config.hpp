@@ -4,6 +4,7 @@
 #include <string>
 
 #include "avr/core/pin_map.hpp"
+#include "common/clock_grid.hpp"
 
 namespace cnc::avr {
 
@@ -11,7 +12,10 @@ struct AvrCoreConfig {
     std::string firmware_elf;        // any ATmega328P ELF (avr.firmware)
     std::string mcu = "atmega328p";  // or "atmega16" (core/mcu_map.hpp); an ELF whose .mmcu names another is refused
     std::uint32_t f_cpu_hz = 16'000'000;  // seed 003 §5.2.4: 16 MHz crystal (62.5 ns per cycle)
-    PinMap pins = default_pin_map();      // avr.pins
+    // How this board's oscillator departs from f_cpu_hz (all zero: ideal). The firmware was built for f_cpu_hz;
+    // every cycle, timer and USART bit takes the oscillator's real time.
+    ClockDeviation clock;
+    PinMap pins = default_pin_map();  // avr.pins
     // Temporal decoupling: the AVR runs at most this many cycles ahead of SystemC time before its recorded pin events
     // are replayed at their exact times. 160 cycles = 10 us: libsimavr in a SystemC thread ran an idle firmware (a
     // 10 kHz timer ISR) at 150 sim-MHz (9.4x real time) there, against 75 at 16 cycles and 175 at 1600. Outputs are

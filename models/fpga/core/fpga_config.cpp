@@ -6,8 +6,8 @@
 
 namespace cnc::fpga {
 
-TimePs clock_period_ps(const FpgaConfig& cfg) {
-    return kPsPerSec / static_cast<TimePs>(cfg.clk_hz);
+ClockGrid clock_grid(const FpgaConfig& cfg) {
+    return ClockGrid(cfg.clk_hz, cfg.clock, "fpga: clock");
 }
 
 namespace {

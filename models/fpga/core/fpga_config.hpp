@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 
+#include "common/clock_grid.hpp"
 #include "common/units.hpp"
 
 namespace cnc::fpga {
@@ -22,10 +23,11 @@ struct FpgaConfig {
     std::uint32_t feed_zero_period_cycles = 62'500;  // step_gen.v: both periods when feed_rate == 0 (unexplained)
     bool init_packet_wired = true;                   // false = appendix top.v: cfg_valid/numerators unconnected
     PeriodArithmetic period_arithmetic = PeriodArithmetic::Exact;  // Exact = the text, Wrap32 = the appendix
+    ClockDeviation clock;  // the board oscillator's offset and jitter (all zero: an ideal CLOCK_50)
 };
 
-// One clock period in ps; validate() guarantees it is exact (50 MHz -> 20 000 ps).
-[[nodiscard]] TimePs clock_period_ps(const FpgaConfig& cfg);
+// The edges of the FPGA's clock: clk_hz as this board's oscillator makes it.
+[[nodiscard]] ClockGrid clock_grid(const FpgaConfig& cfg);
 
 // Rejects values the RTL registers cannot hold (cnc::BadInput naming the key): uart_rx's 10-bit count,
 // uart_tx's 9-bit clk_count, step_gen's 9-bit dir_cnt, packet_decoder's 23-bit timeout_cnt.

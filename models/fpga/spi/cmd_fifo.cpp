@@ -3,7 +3,7 @@
 namespace cnc::fpga {
 
 CmdFifo::CmdFifo(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg, std::size_t n_axes)
-    : sc_module(name), m_period_ps(clock_period_ps(cfg)), m_core(cfg.fifo_depth, n_axes) {}
+    : sc_module(name), m_clock(clock_grid(cfg)), m_core(cfg.fifo_depth, n_axes) {}
 
 bool CmdFifo::push(std::int64_t edge, std::uint64_t seq, const spi::Command& command) {
     const bool accepted = m_core.push(edge, seq, command);
@@ -28,7 +28,7 @@ bool CmdFifo::readable(std::size_t axis, std::int64_t edge) const {
 std::optional<FifoRead> CmdFifo::read(std::size_t axis, std::int64_t edge) {
     const std::optional<FifoRead> r = m_core.read(axis, edge);
     if (r && r->frame_applied) {
-        m_last_applied = {edge, edge * m_period_ps, r->seq, r->laser_on};
+        m_last_applied = {edge, m_clock.at(edge), r->seq, r->laser_on};
         if (m_keep_applied_log) m_applied.push_back(m_last_applied);
         m_applied_event.notify(sc_core::SC_ZERO_TIME);
     }

@@ -59,7 +59,7 @@ public:
     [[nodiscard]] const CmdFifoCore& core() const { return m_core; }
 
 private:
-    const TimePs m_period_ps;
+    const ClockGrid m_clock;
     CmdFifoCore m_core;
     sc_core::sc_event m_pushed;
     sc_core::sc_event m_applied_event;

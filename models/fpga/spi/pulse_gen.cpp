@@ -7,13 +7,7 @@
 namespace cnc::fpga {
 
 PulseGen::PulseGen(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg, std::size_t axis)
-    : sc_module(name),
-      step("step"),
-      dir("dir"),
-      fifo("fifo"),
-      m_axis(axis),
-      m_period_ps(clock_period_ps(cfg)),
-      m_core(cfg) {
+    : sc_module(name), step("step"), dir("dir"), fifo("fifo"), m_axis(axis), m_clock(clock_grid(cfg)), m_core(cfg) {
     SC_HAS_PROCESS(PulseGen);
     step.initialize(false);  // reset levels
     dir.initialize(false);
@@ -28,7 +22,7 @@ PulseGen::PulseGen(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg
 void PulseGen::on_push() {
     ++m_activations;
     // Written at this edge, readable from the next one.
-    const std::int64_t readable_edge = now_ps() / m_period_ps + 1;
+    const std::int64_t readable_edge = m_clock.last_at_or_before(now_ps()) + 1;
     m_read_due = m_read_due ? std::min(*m_read_due, readable_edge) : readable_edge;
     schedule();
 }
@@ -41,13 +35,13 @@ std::vector<AppliedRate> PulseGen::take_applied() {
 
 void PulseGen::on_wake() {
     ++m_activations;
-    const std::int64_t edge = now_ps() / m_period_ps;
+    const std::int64_t edge = m_clock.last_at_or_before(now_ps());
     if (m_read_due && *m_read_due <= edge) m_read_due.reset();
     if (m_core.reads_at(edge)) {
         if (const auto entry = fifo->read(m_axis, edge)) {
             const bool stretched = m_core.load(edge, entry->rate);
             m_stretched += stretched ? 1 : 0;
-            m_applied.push_back({edge, edge * m_period_ps, entry->seq, entry->rate, stretched});
+            m_applied.push_back({edge, m_clock.at(edge), entry->seq, entry->rate, stretched});
             ++m_applied_count;
             // One read per edge: a further entry is considered from the next edge.
             if (fifo->readable(m_axis, edge + 1)) m_read_due = edge + 1;
@@ -65,7 +59,7 @@ void PulseGen::schedule() {
     if (const auto c = m_core.next_change()) next = next ? std::min(*next, c->edge) : c->edge;
     if (!next) return;
     // An earlier pending notification wins; on_wake reschedules after it.
-    m_wake.notify(ps(*next * m_period_ps - now_ps()));
+    m_wake.notify(ps(m_clock.at(*next) - now_ps()));
 }
 
 }  // namespace cnc::fpga

@@ -36,7 +36,7 @@ private:
     void schedule();
 
     const std::size_t m_axis;
-    const TimePs m_period_ps;
+    const ClockGrid m_clock;
     PulseGenCore m_core;
     std::optional<std::int64_t> m_read_due;  // edge at which a readable entry should be considered
     sc_core::sc_event m_wake;

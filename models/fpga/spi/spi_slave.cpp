@@ -14,7 +14,7 @@ SpiSlave::SpiSlave(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg
       fifo("fifo"),
       counters("counters"),
       m_axes(n_axes),
-      m_period_ps(clock_period_ps(cfg)),
+      m_clock(clock_grid(cfg)),
       m_writer("writer") {
     SC_HAS_PROCESS(SpiSlave);
     miso.initialize(false);    // not selected: MISO low
@@ -39,19 +39,19 @@ void SpiSlave::on_pin_change() {
     // All changes before an edge are captured together by that edge; a pending notification is for the same
     // edge (a change at the edge's own time is seen by the next one, after that edge's sample has run).
     const TimePs now = now_ps();
-    m_sample.notify(ps(first_edge_after(now, m_period_ps) * m_period_ps - now));
+    m_sample.notify(ps(m_clock.at(m_clock.first_after(now)) - now));
 }
 
 void SpiSlave::on_sample() {
     ++m_activations;
     // Timed wake, first delta of the edge: the pins still show their levels from before the edge.
     m_events.clear();
-    m_core.sample(now_ps() / m_period_ps, ss.read(), sclk.read(), mosi.read(), m_events);
+    m_core.sample(m_clock.last_at_or_before(now_ps()), ss.read(), sclk.read(), mosi.read(), m_events);
     for (const SlaveEvent& e : m_events) act(e, true);
 }
 
 void SpiSlave::select(TimePs t_ss_fall_ps) {
-    const SlaveEvent e = m_core.select(first_edge_after(t_ss_fall_ps, m_period_ps));
+    const SlaveEvent e = m_core.select(m_clock.first_after(t_ss_fall_ps));
     m_select_edge = e.edge;
     act(e, false);
 }
@@ -64,19 +64,19 @@ void SpiSlave::deselect(TimePs t_ss_rise_ps, const std::vector<std::uint8_t>& mo
     for (std::size_t k = 0; k < 8 * mosi_bytes.size(); ++k) {
         if (reply_bit(k)) miso_bytes[k / 8] = static_cast<std::uint8_t>(miso_bytes[k / 8] | (0x80U >> (k % 8)));
     }
-    act(m_core.deselect(first_edge_after(t_ss_rise_ps, m_period_ps), mosi_bytes), false);
+    act(m_core.deselect(m_clock.first_after(t_ss_rise_ps), mosi_bytes), false);
 }
 
 void SpiSlave::act(const SlaveEvent& e, bool wires) {
     switch (e.kind) {
         case SlaveEvent::Kind::FrameStart:
-            m_writer.at(e.edge * m_period_ps, [this, edge = e.edge, wires] { frame_start(edge, wires); });
+            m_writer.at(m_clock.at(e.edge), [this, edge = e.edge, wires] { frame_start(edge, wires); });
             break;
         case SlaveEvent::Kind::MisoShift:
-            m_writer.at(e.edge * m_period_ps, [this, k = e.miso_bit] { miso.write(reply_bit(k)); });
+            m_writer.at(m_clock.at(e.edge), [this, k = e.miso_bit] { miso.write(reply_bit(k)); });
             break;
         case SlaveEvent::Kind::FrameEnd:
-            m_writer.at(e.edge * m_period_ps, [this, e, wires] { frame_end(e, wires); });
+            m_writer.at(m_clock.at(e.edge), [this, e, wires] { frame_end(e, wires); });
             break;
     }
 }
@@ -99,7 +99,7 @@ void SpiSlave::frame_start(std::int64_t edge, bool wires) {
     m_reply_edge = edge;
     SlaveFrameRecord& r = m_keep_frame_log ? m_frames.emplace_back() : (m_frame = SlaveFrameRecord{});
     r.seq = m_frame_count++;
-    r.t_snapshot_ps = edge * m_period_ps;
+    r.t_snapshot_ps = m_clock.at(edge);
     if (m_keep_frame_log) r.reply = m_reply;
     if (wires) miso.write(reply_bit(0));
 }
@@ -107,7 +107,7 @@ void SpiSlave::frame_start(std::int64_t edge, bool wires) {
 void SpiSlave::frame_end(const SlaveEvent& e, bool wires) {
     if (wires) miso.write(false);
     SlaveFrameRecord& r = m_keep_frame_log ? m_frames.back() : m_frame;
-    r.t_end_ps = e.edge * m_period_ps;
+    r.t_end_ps = m_clock.at(e.edge);
     r.mosi_bits = e.mosi_bits;
     const auto command = e.mosi_bits == spi::frame_bits(m_axes) ? spi::decode_command(e.mosi, m_axes) : std::nullopt;
     if (!command) {

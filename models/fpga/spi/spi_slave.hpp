@@ -57,7 +57,7 @@ private:
     [[nodiscard]] bool reply_bit(std::size_t k) const;
 
     const std::size_t m_axes;
-    const TimePs m_period_ps;
+    const ClockGrid m_clock;
     SpiSlaveCore m_core;
     TimedWriter m_writer;
     sc_core::sc_event m_sample;

@@ -8,7 +8,7 @@
 namespace cnc::fpga {
 
 StepCounter::StepCounter(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg)
-    : sc_module(name), step("step"), dir("dir"), m_period_ps(clock_period_ps(cfg)) {
+    : sc_module(name), step("step"), dir("dir"), m_clock(clock_grid(cfg)) {
     SC_HAS_PROCESS(StepCounter);
     SC_METHOD(on_step_rise);
     sensitive << step.pos();
@@ -19,9 +19,9 @@ void StepCounter::on_step_rise() {
     ++m_activations;
     const TimePs now = now_ps();
     // STEP is a register of this clock domain: it only changes on clock edges.
-    if (now % m_period_ps != 0) throw std::logic_error(std::string(name()) + ": STEP rose between clock edges");
+    if (!m_clock.is_edge(now)) throw std::logic_error(std::string(name()) + ": STEP rose between clock edges");
     // DIR as registered at that edge (setup >= 1 keeps it from changing at the same edge).
-    m_history.add_rise(now / m_period_ps, dir.read());
+    m_history.add_rise(m_clock.last_at_or_before(now), dir.read());
 }
 
 }  // namespace cnc::fpga

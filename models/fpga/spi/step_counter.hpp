@@ -31,7 +31,7 @@ public:
 private:
     void on_step_rise();
 
-    const TimePs m_period_ps;
+    const ClockGrid m_clock;
     StepCountHistory m_history;
     std::uint64_t m_activations = 0;
 };

@@ -12,9 +12,8 @@ using avr::Cycle;
 using avr::Pin;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kFcpuHz = 8e6;  // seed 002 §2.5.3 F_CPU
-constexpr double kCycleS = 1.0 / kFcpuHz;
-constexpr Cycle kStepCycles = 8;  // 1 us
+constexpr double kFcpuHz = 8e6;   // seed 002 §2.5.3 F_CPU
+constexpr Cycle kStepCycles = 8;  // 1 us at F_CPU
 
 // Seed 002's pin map (the §2.5.3 listing).
 constexpr Pin kEnA{'D', 5};  // OC1A
@@ -29,11 +28,12 @@ constexpr Pin kLcdRs{'A', 4};
 constexpr Pin kLcdRw{'A', 5};
 constexpr Pin kLcdE{'A', 6};
 
-avr::AvrCoreConfig firmware(const std::string& elf) {
+avr::AvrCoreConfig firmware(const LatheRigConfig& rig) {
     avr::AvrCoreConfig cfg;
-    cfg.firmware_elf = elf;
+    cfg.firmware_elf = rig.firmware_elf;
     cfg.mcu = "atmega16";
     cfg.f_cpu_hz = 8'000'000;
+    cfg.clock = rig.clock;
     return cfg;
 }
 
@@ -79,7 +79,7 @@ const std::vector<TracedPin>& traced_pins() {
 // (which start from the retract's slip) swing into a limit cycle with following errors of 60 to 160 pulses
 // instead of 2. The thesis does not say where its index sits relative to the slots (docs/metrics.md "Lathe").
 LatheRig::LatheRig(const LatheRigConfig& cfg)
-    : chip(firmware(cfg.firmware_elf)),
+    : chip(firmware(cfg)),
       motor(cfg.motor),
       train(cfg.train),
       motor_encoder(kMotorSlots, 0.5),
@@ -102,7 +102,18 @@ LatheRig::LatheRig(const LatheRigConfig& cfg)
 }
 
 double LatheRig::now_s() const {
-    return static_cast<double>(chip.cycle()) * kCycleS;
+    return cycle_s(chip.cycle());
+}
+
+// A 1 us step asks for the same two cycles' times several times: remembered, since a jittered clock draws each.
+double LatheRig::cycle_s(Cycle c) const {
+    for (const CycleTime& k : m_cycle_times) {
+        if (k.cycle == c) return k.s;
+    }
+    m_cycle_times[m_cycle_time_next] = {c, ps_to_s(chip.clock().at(c))};
+    const double t = m_cycle_times[m_cycle_time_next].s;
+    m_cycle_time_next = (m_cycle_time_next + 1) % m_cycle_times.size();
+    return t;
 }
 
 bool LatheRig::pid_running() const {
@@ -111,8 +122,7 @@ bool LatheRig::pid_running() const {
 
 void LatheRig::sample_carriage() {
     if (!m_record_carriage) return;
-    constexpr TimePs kPsPerCycle = kPsPerSec / static_cast<TimePs>(kFcpuHz);
-    carriage_samples.push_back({static_cast<TimePs>(chip.cycle()) * kPsPerCycle, {train.carriage_mm(), 0.0}});
+    carriage_samples.push_back({chip.clock().at(chip.cycle()), {train.carriage_mm(), 0.0}});
 }
 
 void LatheRig::drive(const Pin& pin, bool level) {
@@ -129,7 +139,7 @@ void LatheRig::outputs_changed(Cycle c) {
         for (int bit = 0; bit < 4; ++bit) data |= static_cast<std::uint8_t>(chip.pin_level(Pin{'A', bit}) << bit);
         const std::uint64_t before = lcd.changes();
         lcd.pins(chip.pin_level(kLcdRs), chip.pin_level(kLcdRw), e, data);
-        if (lcd.changes() != before) m_transcript.changed(static_cast<double>(c) * kCycleS, lcd.lines());
+        if (lcd.changes() != before) m_transcript.changed(cycle_s(c), lcd.lines());
     }
     if (!m_trace_on) return;
     const std::vector<TracedPin>& pins = traced_pins();
@@ -202,7 +212,7 @@ void LatheRig::record(double dt_s) {
 // The tool cuts while the PID runs the pass (the machinist set the depth before pressing OK).
 void LatheRig::step() {
     const Cycle to = chip.cycle() + kStepCycles;
-    const double dt = static_cast<double>(to - m_last) * kCycleS;
+    const double dt = cycle_s(to) - cycle_s(m_last);
     m_last = to;
     bridge.en_a = chip.pin_level(kEnA);
     bridge.in1 = chip.pin_level(kDir1);
@@ -225,7 +235,7 @@ void LatheRig::step() {
 }
 
 void LatheRig::run_for(double s) {
-    const Cycle end = chip.cycle() + static_cast<Cycle>(s * kFcpuHz);
+    const Cycle end = chip.cycle() + static_cast<Cycle>(s * static_cast<double>(chip.clock().hz()));
     while (chip.cycle() < end) {
         step();
         if (m_on_slice && chip.cycle() >= m_next_slice) {

@@ -52,6 +52,7 @@ struct LatheRigConfig {
     // Record the carriage at each motor and spindle encoder edge (LatheRig::carriage_samples): an independent
     // reading of the thread beside the pins (cncsim run --samples).
     bool record_carriage = false;
+    ClockDeviation clock;  // how the board's 8 MHz oscillator departs from F_CPU (all zero: ideal)
 };
 
 // One cutting pass as recorded: the carriage along the cut at its start and at each spindle pulse, the motor
@@ -100,6 +101,8 @@ public:
     void hold(char key, double s);
 
     [[nodiscard]] double now_s() const;
+    // The time of a cycle of the ATmega16's clock, s.
+    [[nodiscard]] double cycle_s(avr::Cycle c) const;
     [[nodiscard]] bool pid_running() const;
     // The screens the LCD settled on so far.
     [[nodiscard]] const std::vector<LcdScreen>& lcd_screens() { return m_transcript.screens(now_s()); }
@@ -124,6 +127,12 @@ public:
     std::vector<ToolSample> carriage_samples;
 
 private:
+    struct CycleTime {
+        avr::Cycle cycle = -1;
+        double s = 0.0;
+    };
+    mutable std::array<CycleTime, 2> m_cycle_times{};
+    mutable std::size_t m_cycle_time_next = 0;
     void outputs_changed(avr::Cycle c);
     void update_spindle(bool force);
     void update_keypad();

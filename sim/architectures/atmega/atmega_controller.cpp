@@ -53,6 +53,7 @@ avr::AvrCoreConfig avr_config(const Scenario& s, const AtmegaSettings& a) {
     cfg.pins = avr::parse_pin_map(a.pins, s.file + ": avr.pins");
     cfg.where = s.file + ": avr.firmware";
     cfg.quantum_cycles = a.quantum_cycles;
+    cfg.clock = clock_deviation(a.clock, s.seed);
     return cfg;
 }
 
@@ -174,9 +175,12 @@ public:
     }
 
     // The AVR times every pin it drives; the CP2102 (uart_rx) starts its frames when USB delivers the bytes.
-    [[nodiscard]] MachinePinClocks pin_clocks() const override { return {m_avr_cfg.f_cpu_hz, m_avr_cfg.f_cpu_hz}; }
+    [[nodiscard]] MachinePinClocks pin_clocks() const override {
+        const std::optional<std::int64_t> hz = m_mcu.chip().clock().grid_hz();
+        return {hz, hz};
+    }
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
-        return {{&m_wires.uart_rx, "link", std::nullopt}, {&m_wires.uart_tx, "link", m_avr_cfg.f_cpu_hz}};
+        return {{&m_wires.uart_rx, "link", std::nullopt}, {&m_wires.uart_tx, "link", m_mcu.chip().clock().grid_hz()}};
     }
     // Seed 003 §5.2.5: DIR 0 = CW = +X / +Y.
     [[nodiscard]] bool dir_high_is_positive() const override { return false; }
@@ -285,6 +289,8 @@ void AtmegaController::report(ArchRun& run, const RunBudget& budget, const Simul
     for (Warning& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
     run.details = details_json(facts, m_s.detail);
     run.details_text = details_text(facts);
+    run.clock = oscillator_json(m_a.clock, m_mcu.chip().clock());
+    run.clock_text = oscillator_text(m_a.clock, m_mcu.chip().clock());
 
     if (const std::optional<std::string> why = link_failure(m_mcu, m_cp2102, m_pc)) {
         run.ok = false;

@@ -2,6 +2,12 @@
 
 namespace cnc::sim {
 
+// seed 003 §5.2.4 runs the ATmega328P on an Arduino board at 16 MHz: the Uno clocks it from a ceramic resonator.
+constexpr OscillatorPart kUnoResonator{
+    "avr",  "16 MHz ceramic resonator of the Arduino Uno (Murata CSTCE16M0V53-R0)",
+    5000.0, "Murata CERALOCK catalogue: initial tolerance +-0.5 %",
+    10.0,   "no resonator data sheet gives it: our estimate, a few times a crystal oscillator's"};
+
 void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem::path& base) {
     read_serial_host_settings(r, s.serial);
     const std::string fw = r.get_string(
@@ -31,6 +37,7 @@ void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem
                           ? host::cad2g::LongMoves::Split
                           : host::cad2g::LongMoves::Wrap;
     s.link_baud_set = r.has("link.baud");
+    read_oscillator_settings(r, kUnoResonator, 16'000'000, s.clock);  // seed 003 §5.2.4
 }
 
 }  // namespace cnc::sim

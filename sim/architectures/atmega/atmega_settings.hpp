@@ -7,6 +7,7 @@
 #include <string>
 
 #include "architectures/architecture.hpp"
+#include "architectures/oscillator/oscillator_settings.hpp"
 #include "architectures/serial_host/serial_host_settings.hpp"
 #include "host/core/cad2g/plan.hpp"
 #include "scenario/key_reader.hpp"
@@ -25,6 +26,7 @@ struct AtmegaSettings final : ArchSettings {
     // link.baud set by the scenario: otherwise the PC program asks for 57600 (seed 003 §5.3.2 CBR_57600), not the
     // Cp2102Config default of seed 000.
     bool link_baud_set = false;
+    OscillatorSettings clock;  // the Arduino's resonator
 };
 
 void read_atmega_settings(KeyReader& r, AtmegaSettings& settings, const std::filesystem::path& base);

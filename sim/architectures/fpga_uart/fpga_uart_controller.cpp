@@ -109,7 +109,8 @@ public:
             if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
             const MadeSegment made = sent.executed();
             metrics::MoveSpec m = moves.next(made.seg, made.programmed_path ? &*made.programmed_path : nullptr);
-            m.t_begin_ps = r.t_pkt_valid_ps + clock_period_ps(top.config());
+            const ClockGrid clock = fpga::clock_grid(top.config());
+            m.t_begin_ps = clock.at(clock.first_after(r.t_pkt_valid_ps));
             m.t_end_ps = r.t_busy_fall_ps;
             f(std::move(m));
         }
@@ -312,6 +313,13 @@ void check_fpga_rate(const Scenario& s, const FpgaUartSettings& f) {
                               fpga_bd, f.fpga.clk_hz / 1e6, f.fpga.uart_full_bit_cycles)});
 }
 
+// The seed's FPGA on this unit's oscillator.
+fpga::FpgaConfig clocked(const FpgaUartSettings& f, std::uint64_t scenario_seed) {
+    fpga::FpgaConfig cfg = f.fpga;
+    cfg.clock = clock_deviation(f.clock, scenario_seed);
+    return cfg;
+}
+
 // The seed 000 system between the job and the machine's pins: the CAM (GCODE2STEPS) on the host, or the steps file
 // it wrote, send_steps.py through the CP2102, the FPGA.
 class FpgaUartController final : public Controller {
@@ -326,7 +334,7 @@ public:
           m_cp2102("cp2102", m_f.serial.link),
           m_packets(s, job, m_numerators),
           m_sender("host", m_f.serial.sender, m_cp2102, host::encode_init(m_numerators.x, m_numerators.y), m_packets),
-          m_fpga("fpga", m_f.fpga),
+          m_fpga("fpga", clocked(m_f, s.seed)),
           m_moves(s.machine, s.interpreter.start_mm),
           // Every gap only for the detailed report and the plots (which keep the whole run anyway).
           m_dead_fold(s.detail || s.keep_run_input),
@@ -350,9 +358,11 @@ public:
 
     // The FPGA times everything it drives and drives no EN pin; the CP2102 (uart_rx) starts its frames when USB
     // delivers the bytes.
-    [[nodiscard]] MachinePinClocks pin_clocks() const override { return {m_f.fpga.clk_hz, std::nullopt}; }
+    [[nodiscard]] MachinePinClocks pin_clocks() const override {
+        return {fpga::clock_grid(m_fpga.config()).grid_hz(), std::nullopt};
+    }
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
-        const std::optional<std::int64_t> fpga = m_f.fpga.clk_hz;
+        const std::optional<std::int64_t> fpga = fpga::clock_grid(m_fpga.config()).grid_hz();
         const Wires& w = m_wires;
         return {{&w.uart_rx, "link", {}},     {&w.uart_tx, "link", fpga},   {&w.busy, "fpga", fpga},
                 {&w.pkt_valid, "fpga", fpga}, {&w.cfg_valid, "fpga", fpga}, {&w.rx_valid, "fpga", fpga},
@@ -436,6 +446,8 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
     m_warnings.finish(m_fpga, run.warnings);
     const fpga::FpgaStats st = m_fpga.stats();
     const uart::Cp2102Baud& baud = m_cp2102.baud();
+    run.clock = oscillator_json(m_f.clock, fpga::clock_grid(m_fpga.config()));
+    run.clock_text = oscillator_text(m_f.clock, fpga::clock_grid(m_fpga.config()));
     nlohmann::json msgs = nlohmann::json::array();
     for (const host::SenderMessage& m : m_sender.messages()) {
         msgs.push_back({{"t_s", ps_to_s(m.t_ps)}, {"text", m.text}});

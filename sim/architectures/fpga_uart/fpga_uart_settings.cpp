@@ -76,10 +76,17 @@ void read_fpga(KeyReader& r, fpga::FpgaConfig& cfg) {
 
 }  // namespace
 
+// seed 000 §5.1.1: the DE1-SoC's CLOCK_50.
+constexpr OscillatorPart kDe1SocClock50{
+    "fpga", "50 MHz crystal oscillator of the DE1-SoC (CLOCK_50)",
+    50.0,   "the DE1-SoC manual names no part: the common +-50 ppm grade of 50 MHz CMOS crystal oscillators",
+    3.0,    "such an oscillator's period jitter is a few ps rms; 3 ps of phase jitter"};
+
 void read_fpga_uart_settings(KeyReader& r, FpgaUartSettings& s) {
     read_serial_host_settings(r, s.serial);
     read_host(r, s);
     read_fpga(r, s.fpga);
+    read_oscillator_settings(r, kDe1SocClock50, s.fpga.clk_hz, s.clock);
 }
 
 }  // namespace cnc::sim

@@ -3,6 +3,7 @@
 // host.correct_rapid_feed), what the host sends (host.numerator, host.allow_feed_zero) and the FPGA ([fpga]).
 #pragma once
 #include "architectures/architecture.hpp"
+#include "architectures/oscillator/oscillator_settings.hpp"
 #include "architectures/serial_host/serial_host_settings.hpp"
 #include "fpga/core/fpga_config.hpp"
 #include "host/core/cam.hpp"
@@ -16,6 +17,7 @@ struct FpgaUartSettings final : ArchSettings {
     bool numerator_from_machine = true;  // false: send_steps.py's constant NUMERATOR
     bool allow_feed_zero = false;        // a steps file's FeedRate 0 sent as the appendix RTL would run it
     fpga::FpgaConfig fpga;
+    OscillatorSettings clock;  // CLOCK_50's oscillator
 };
 
 // Reads and validates the keys (registering their documentation): BadInput naming the key for a value the FPGA's

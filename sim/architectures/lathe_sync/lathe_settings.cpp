@@ -81,7 +81,14 @@ std::vector<OperatorStep> default_operator_script(const LatheSettings& s) {
     return steps;
 }
 
+// seed 002 §2.5.3 runs the ATmega16 at F_CPU = 8 MHz and does not say from which source; we take a crystal.
+constexpr OscillatorPart kAtmega16Crystal{
+    "lathe", "8 MHz crystal of the ATmega16 (seed 002 names no clock source)",
+    30.0,    "the common +-30 ppm grade of HC-49 crystals",
+    5.0,     "no crystal data sheet gives it: our estimate of the phase jitter on the AVR's Pierce oscillator"};
+
 void read_lathe_settings(KeyReader& r, LatheSettings& s) {
+    read_oscillator_settings(r, kAtmega16Crystal, 8'000'000, s.clock);  // seed 002 §2.5.3 F_CPU
     s.mode = r.get_choice("lathe.mode", s.mode, {"thread", "fine", "coarse", "tuning"},
                           "lathe-sync: what the machinist does (seed 002 §2.5.2): cut a thread of lathe.pitch_mm, "
                           "the fine (0.04 mm) or coarse (0.08 mm) feed, or power up with B held (tuning mode)");

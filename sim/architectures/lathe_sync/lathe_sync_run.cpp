@@ -123,9 +123,10 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     cfg.feed_mm_per_rev = s.pitch_centi_mm / 100.0;
     cfg.trace_pins = !scenario.vcd_path.empty();
     cfg.record_carriage = scenario.keep_run_input;
-    std::optional<LatheTrace> trace;
-    if (cfg.trace_pins) trace.emplace(scenario);
+    cfg.clock = clock_deviation(s.clock, scenario.seed);
     lathe::LatheRig rig(cfg);
+    std::optional<LatheTrace> trace;
+    if (cfg.trace_pins) trace.emplace(scenario, rig.chip.clock().grid_hz());
     TimedProgress progress(std::cerr, scenario.progress, script_s(s.operator_steps), scenario.architecture);
     run_operator(rig, s.operator_steps, progress);
     if (trace) trace->write(rig);
@@ -142,6 +143,8 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
             out.first_move = TimeSpan{s_to_ps(p.start_s), s_to_ps(p.start_s + p.pid_s)};
         }
     }
+    out.clock = oscillator_json(s.clock, rig.chip.clock());
+    out.clock_text = oscillator_text(s.clock, rig.chip.clock());
     nlohmann::json& d = out.details;
     std::ostringstream text;
     text << "lathe-sync: " << s.mode << " at " << fixed(s.spindle_rpm, 1) << " rpm, firmware "

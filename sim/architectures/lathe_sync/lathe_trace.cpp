@@ -6,26 +6,19 @@
 
 namespace cnc::sim {
 
-namespace {
-
-constexpr std::int64_t kFcpuHz = 8'000'000;               // seed 002 §2.5.3
-constexpr TimePs kCyclePs = 1'000'000'000'000 / kFcpuHz;  // 125 ns
-
-}  // namespace
-
-LatheTrace::LatheTrace(const Scenario& s) : m_s(s) {
+LatheTrace::LatheTrace(const Scenario& s, std::optional<std::int64_t> clock_hz) : m_s(s) {
     std::vector<TraceCandidate> all;
     for (const lathe::TracedPin& p : lathe::traced_pins()) all.push_back({p.name, false, p.block});
     m_chosen = select_traced(s, all);
     m_layout.top_scope = metrics::kVcdTopScope;
-    m_layout.timescale_fs = s.vcd_timescale_fs;
     m_layout.from_ps = s.trace_from_ps;
     for (const std::size_t i : m_chosen) {
-        m_signals.push_back({all[i].name, false, kFcpuHz});
+        m_signals.push_back({all[i].name, false, clock_hz});
         m_signals.back().scope = all[i].block;
         m_layout.signals.push_back({all[i].block, all[i].name});
     }
-    metrics::check_vcd_signals(s.vcd_timescale_fs, m_signals, s.file + ": trace.timescale");
+    m_layout.timescale_fs = metrics::chosen_timescale_fs(s.vcd_timescale_fs, m_signals);
+    metrics::check_vcd_signals(m_layout.timescale_fs, m_signals, s.file + ": trace.timescale");
     m_file.emplace(s.vcd_path, "the VCD");
 }
 
@@ -39,16 +32,17 @@ void LatheTrace::write(const lathe::LatheRig& rig) {
         slot[m_chosen[k]] = static_cast<int>(k);
         m_signals[k].initial = rig.trace_initial()[m_chosen[k]];
     }
-    const TimePs end_ps = static_cast<TimePs>(rig.chip.cycle()) * kCyclePs;
+    const ClockGrid& clock = rig.chip.clock();
+    const TimePs end_ps = clock.at(rig.chip.cycle());
     const TimePs to_ps = m_s.trace_to_ps ? std::min(*m_s.trace_to_ps, end_ps) : end_ps;
     std::size_t e = 0;
-    for (; e < edges.size() && static_cast<TimePs>(edges[e].cycle) * kCyclePs < m_s.trace_from_ps; ++e) {
+    for (; e < edges.size() && clock.at(edges[e].cycle) < m_s.trace_from_ps; ++e) {
         if (slot[edges[e].pin] >= 0) m_signals[static_cast<std::size_t>(slot[edges[e].pin])].initial = edges[e].level;
     }
-    metrics::VcdWriter vcd(m_file->stream(), m_s.vcd_timescale_fs, m_signals, m_s.file + ": trace.timescale",
+    metrics::VcdWriter vcd(m_file->stream(), m_layout.timescale_fs, m_signals, m_s.file + ": trace.timescale",
                            m_s.trace_from_ps);
     for (; e < edges.size(); ++e) {
-        const TimePs t_ps = static_cast<TimePs>(edges[e].cycle) * kCyclePs;
+        const TimePs t_ps = clock.at(edges[e].cycle);
         if (t_ps > to_ps) break;
         if (slot[edges[e].pin] >= 0) vcd.change(t_ps, static_cast<std::size_t>(slot[edges[e].pin]), edges[e].level);
     }

@@ -19,7 +19,8 @@ class LatheTrace {
 public:
     // Before the run: BadInput naming trace.signals or trace.timescale for a name or unit the trace cannot take,
     // the file when it cannot be written.
-    explicit LatheTrace(const Scenario& s);
+    // `clock_hz`: the ATmega16's clock when its edges fall on a whole-picosecond grid.
+    LatheTrace(const Scenario& s, std::optional<std::int64_t> clock_hz);
 
     // After the run: writes the rig's edges (LatheRigConfig::trace_pins) and closes the file.
     void write(const lathe::LatheRig& rig);

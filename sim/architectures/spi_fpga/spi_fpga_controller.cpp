@@ -41,6 +41,13 @@ host::servo::ServoConfig servo_config(const Scenario& s, const SpiFpgaSettings& 
     return c;
 }
 
+// The FPGA on this unit's oscillator; the host still computes its rate words for the nominal clock.
+fpga::SpiFpgaConfig clocked(const SpiFpgaSettings& f, std::uint64_t scenario_seed) {
+    fpga::SpiFpgaConfig cfg = f.fpga;
+    cfg.clock = clock_deviation(f.clock, scenario_seed);
+    return cfg;
+}
+
 // The seed 004 system between the job and the machine's pins: the planner and the servo thread on the host, the SPI
 // master, the FPGA.
 class SpiFpgaController final : public Controller {
@@ -54,7 +61,7 @@ public:
           m_trajectory(m_plan, &m_plan->trajectory()),
           m_link(spi_link(s, m_f)),
           m_master("spi_master", m_link),
-          m_fpga("fpga", m_f.fpga),
+          m_fpga("fpga", clocked(m_f, s.seed)),
           m_host("host", servo_config(s, m_f), *m_plan, std::move(ahead.servo), m_master),
           m_planned(*m_plan, step_grid(s)),
           m_rate_feed(s.detail) {
@@ -78,7 +85,9 @@ public:
     }
 
     // The FPGA times its step, dir and laser outputs and drives no EN pin.
-    [[nodiscard]] MachinePinClocks pin_clocks() const override { return {m_f.fpga.clk_hz, std::nullopt}; }
+    [[nodiscard]] MachinePinClocks pin_clocks() const override {
+        return {fpga::clock_grid(m_fpga.config()).grid_hz(), std::nullopt};
+    }
     // The host's servo thread times the SPI master (sclk, mosi, ss); the FPGA answers on miso at SS edges as well as
     // on its clock. The SPI wires toggle only when they are driven bit by bit, which costs simulation time: they
     // are traced when asked for (trace.signals, spi.trace_wires).
@@ -134,6 +143,8 @@ public:
         SpiFpgaReport report = spi_fpga_report(m_host, m_master, m_fpga, run.input.t_job_end_ps, m_s.detail);
         run.details = std::move(report.details);
         run.details_text = std::move(report.text);
+        run.clock = oscillator_json(m_f.clock, fpga::clock_grid(m_fpga.config()));
+        run.clock_text = oscillator_text(m_f.clock, fpga::clock_grid(m_fpga.config()));
         run.warnings = std::move(report.warnings);
         if (!m_host.finished()) {
             run.ok = false;

@@ -124,11 +124,18 @@ void check_period(KeyReader& r, const SpiFpgaSettings& s) {
 
 }  // namespace
 
+// seed 004 §5.1.4 names the iCE40 HX8K but not its board; the model keeps a 50 MHz clock (fpga_spi.clock_hz).
+constexpr OscillatorPart kFpgaBoardClock{
+    "fpga_spi", "50 MHz crystal oscillator of the FPGA board (seed 004 names none)",
+    50.0,       "the common +-50 ppm grade of 50 MHz CMOS crystal oscillators",
+    3.0,        "such an oscillator's period jitter is a few ps rms; 3 ps of phase jitter"};
+
 void read_spi_fpga_settings(KeyReader& r, SpiFpgaSettings& s, const host::MachineModel& machine) {
     read_planner_settings(r, machine, s.planner);
     read_servo(r, s.servo);
     read_link(r, s.link);
     read_fpga(r, s.fpga);
+    read_oscillator_settings(r, kFpgaBoardClock, s.fpga.clk_hz, s.clock);
     checked(r, kLinkKeys, [&] { spi::validate(s.link); });
     checked(r, kFpgaKeys, [&] { fpga::validate(s.fpga); });
     checked(r, kLinkKeys, [&] { fpga::check_link(s.link, s.fpga); });

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "architectures/architecture.hpp"
+#include "architectures/oscillator/oscillator_settings.hpp"
 #include "fpga/spi/core/spi_fpga_config.hpp"
 #include "host/core/machine.hpp"
 #include "host/core/planner/planner_config.hpp"
@@ -22,6 +23,7 @@ struct SpiFpgaSettings final : ArchSettings {
     // trace_wires is the spi.trace_wires key; the system also drives the wires when trace.signals names one.
     spi::SpiConfig link;
     fpga::SpiFpgaConfig fpga;
+    OscillatorSettings clock;  // the FPGA board's oscillator
 };
 
 // Reads and validates the keys (registering their documentation). BadInput naming the key for an axis limit of 0,

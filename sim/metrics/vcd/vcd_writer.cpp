@@ -75,6 +75,24 @@ std::vector<std::string> scopes_in_order(const std::vector<VcdSignal>& signals) 
 
 }  // namespace
 
+std::int64_t auto_timescale_fs(const std::vector<VcdSignal>& signals) {
+    constexpr std::int64_t kDefaultFs = 100'000;  // 100 ps: every 50 MHz FPGA and 16 or 8 MHz AVR edge
+    for (const std::string& name : vcd_timescale_names()) {
+        const std::int64_t ts = *parse_vcd_timescale_fs(name);
+        if (ts > kDefaultFs) continue;
+        const bool exact = std::all_of(signals.begin(), signals.end(), [ts](const VcdSignal& s) {
+            const std::optional<TimePs> period = exact_period_ps(s);
+            return !period || on_vcd_tick(*period, ts);
+        });
+        if (exact) return ts;
+    }
+    return 1;
+}
+
+std::int64_t chosen_timescale_fs(std::optional<std::int64_t> asked_fs, const std::vector<VcdSignal>& signals) {
+    return asked_fs ? *asked_fs : auto_timescale_fs(signals);
+}
+
 void check_vcd_signals(std::int64_t timescale_fs, const std::vector<VcdSignal>& signals, const std::string& where) {
     (void)timescale_text(timescale_fs, where);
     std::set<std::string> names;

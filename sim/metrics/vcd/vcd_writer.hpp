@@ -43,6 +43,12 @@ inline constexpr const char* kVcdTopScope = "cncsim";
 // and a timescale that does not divide the period of a signal's clock (the message gives the coarsest timescale
 // that does).
 void check_vcd_signals(std::int64_t timescale_fs, const std::vector<VcdSignal>& signals, const std::string& where);
+// trace.timescale = "auto": 100 ps, or the coarsest finer unit that keeps every clocked edge exact (1 ps for a
+// clock whose offset or jitter puts its edges on no coarser grid).
+[[nodiscard]] std::int64_t auto_timescale_fs(const std::vector<VcdSignal>& signals);
+// The timescale asked for, or auto_timescale_fs() when none was.
+[[nodiscard]] std::int64_t chosen_timescale_fs(std::optional<std::int64_t> asked_fs,
+                                               const std::vector<VcdSignal>& signals);
 
 class VcdWriter {
 public:

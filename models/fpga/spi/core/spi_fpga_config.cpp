@@ -22,6 +22,10 @@ TimePs clock_period_ps(const SpiFpgaConfig& cfg) {
     return kPsPerSec / static_cast<TimePs>(cfg.clk_hz);
 }
 
+ClockGrid clock_grid(const SpiFpgaConfig& cfg) {
+    return ClockGrid(cfg.clk_hz, cfg.clock, "fpga: clock");
+}
+
 void validate(const SpiFpgaConfig& cfg) {
     require(cfg.clk_hz > 0 && kPsPerSec % cfg.clk_hz == 0, "fpga: clk_hz",
             "must divide 1e12 so that a clock period is a whole number of ps");

@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 
+#include "common/clock_grid.hpp"
 #include "common/units.hpp"
 #include "spi/core/spi_timing.hpp"
 
@@ -22,13 +23,17 @@ struct SpiFpgaConfig {
     std::uint32_t dir_setup_cycles = 50;  // 1 us from a DIR change to the next STEP rise (DRV8825: 650 ns)
     std::uint32_t dir_hold_cycles = 50;   // 1 us from a STEP rise to a DIR change (DRV8825: 650 ns)
     RateApply rate_apply = RateApply::AtNextPulse;
+    ClockDeviation clock;  // the board oscillator's offset and jitter (all zero: an ideal clock)
 };
 
 // The logic sees a pin level kSpiSyncStages edges after the first flip-flop samples it (2-FF synchroniser,
 // the edge detector's third register compares stage 2 with its previous value in the same clock).
 inline constexpr std::int64_t kSpiSyncStages = 2;
 
+// The nominal clock period, for the link's design-time margins (a few ppm of offset do not move them).
 [[nodiscard]] TimePs clock_period_ps(const SpiFpgaConfig& cfg);
+// The edges of the FPGA's clock: clk_hz as this board's oscillator makes it.
+[[nodiscard]] ClockGrid clock_grid(const SpiFpgaConfig& cfg);
 // Shortest STEP period: the pulse plus one low clock. Shorter words are stretched to it (and counted).
 [[nodiscard]] constexpr std::uint32_t min_period_cycles(const SpiFpgaConfig& cfg) {
     return cfg.pulse_cycles + 1;

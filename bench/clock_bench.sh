@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# What the oscillators cost (docs/metrics.md, "Clocks"): each scenario run alternately on the ideal clock
+# (clock.ideal = true) and on its default part with its offset and jitter, the median wall time of each, and the
+# difference. Target: at most 5 % (a jittered clock draws every edge it times).
+# Usage: bench/clock_bench.sh [build dir] [repetitions]. Prints one Markdown row per scenario.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${1:-build}
+REPS=${2:-5}
+CNCSIM=$BUILD/sim/cncsim
+
+median() {
+    printf '%s\n' "$@" | sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'
+}
+
+wall_ns() {  # scenario [--set ...]
+    local t0 t1
+    t0=$(date +%s%N)
+    "$CNCSIM" run "$@" --progress off > /dev/null
+    t1=$(date +%s%N)
+    echo $(( t1 - t0 ))
+}
+
+echo "| scenario | ideal clock [s] | default clock [s] | cost |"
+echo "|---|---|---|---|"
+for scenario in scenarios/fpga-uart/six_segment.toml scenarios/atmega/square_20mm.toml \
+                scenarios/spi-fpga/square_20mm.toml scenarios/lathe-sync/m6_thread.toml; do
+    ideal=() real=()
+    for _ in $(seq "$REPS"); do
+        ideal+=("$(wall_ns "$scenario" --set clock.ideal=true)")
+        real+=("$(wall_ns "$scenario")")
+    done
+    mi=$(median "${ideal[@]}")
+    mr=$(median "${real[@]}")
+    awk -v s="$scenario" -v i="$mi" -v r="$mr" \
+        'BEGIN { printf "| %s | %.3f | %.3f | %+.1f %% |\n", s, i / 1e9, r / 1e9, (r - i) / i * 100 }'
+done

@@ -332,7 +332,11 @@ int dispatch(int argc, char* argv[]) {
     std::string curve_csv;
     CLI::App* curve =
         app.add_subcommand("motor-curve", "pull-out torque, the load's torque and the pull-in rate of one axis");
-    curve->add_option("scenario", scenario, "scenario file (TOML)")->required();
+    std::string curve_machine;
+    curve->add_option("scenario", scenario, "scenario file (TOML), or --machine");
+    curve->add_option("--machine", curve_machine,
+                      "instead of a scenario: a machine file (TOML: its [machine], [driver], [motor], [mechanics] "
+                      "tables; `cncsim init` writes one)");
     curve->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
     curve->add_option("--axis", curve_axis, "axis")->check(CLI::IsMember({"x", "y"}))->capture_default_str();
     curve->add_option("--csv", curve_csv, "also write the table as CSV to this file");
@@ -353,7 +357,9 @@ int dispatch(int argc, char* argv[]) {
     try {
         if (run->parsed()) return cmd_run(input, sets, vcd, report, detail, progress, plots, plot_data, samples);
         if (compare->parsed()) return cmd_compare(input, archs, sets, table_format, report, out_dir);
-        if (curve->parsed()) return cnc::sim::cmd_motor_curve(scenario, sets, curve_axis, curve_csv, std::cout);
+        if (curve->parsed()) {
+            return cnc::sim::cmd_motor_curve(scenario, curve_machine, sets, curve_axis, curve_csv, std::cout);
+        }
         if (analyze->parsed()) {
             return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, commanded, report);
         }

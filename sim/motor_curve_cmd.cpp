@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "common/bad_input.hpp"
 #include "mechanics/core/motor_curve.hpp"
 #include "output/output_file.hpp"
 #include "scenario/scenario.hpp"
@@ -17,11 +18,22 @@ constexpr int kRatePoints = 16;
 constexpr double kRateSpanOfMaxVelocity = 2.0;  // the table runs to twice the axis velocity limit
 constexpr double kPullInSearchOfMaxVelocity = 4.0;
 
+Scenario load(const std::string& scenario_path, const std::string& machine_path, const std::vector<std::string>& sets) {
+    if (!scenario_path.empty() && !machine_path.empty()) {
+        throw BadInput("--machine " + machine_path,
+                       "goes without a scenario: " + scenario_path + " names its machine file as scenario.machine");
+    }
+    if (!machine_path.empty()) return load_machine(machine_path, sets);
+    if (scenario_path.empty()) throw BadInput("motor-curve", "give a scenario, or --machine MACHINE.toml");
+    return load_scenario(scenario_path, sets);
+}
+
 }  // namespace
 
-int cmd_motor_curve(const std::string& scenario_path, const std::vector<std::string>& sets, const std::string& axis,
-                    const std::string& csv_path, std::ostream& out) {
-    const Scenario s = load_scenario(scenario_path, sets);
+int cmd_motor_curve(const std::string& scenario_path, const std::string& machine_path,
+                    const std::vector<std::string>& sets, const std::string& axis, const std::string& csv_path,
+                    std::ostream& out) {
+    const Scenario s = load(scenario_path, machine_path, sets);
     const host::AxisMachine& m = axis == "x" ? s.machine.x : s.machine.y;
     const mech::AxisParams p = axis_params(s.mechanics, m, axis == "x" ? s.mechanics.x : s.mechanics.y);
     const double full_steps_per_mm = 360.0 / m.step_angle_deg / m.travel_per_motor_rev_mm();

@@ -14,6 +14,7 @@
 #include "metrics/pulse/pulse_runs.hpp"
 #include "metrics/timing/job_gaps.hpp"
 #include "metrics/timing/programmed_moves.hpp"
+#include "plots/arch_plot.hpp"
 
 namespace cnc::sim {
 
@@ -267,6 +268,7 @@ void write_plot_data(const std::string& architecture, const ArchRun& run, const 
                            {"gaps_between_moves", gaps.between},
                            {"gaps_inside_moves", gaps.inside},
                            {"series", write_series(run, dir)},
+                           {"arch_plots", write_arch_plots(run.plots, dir)},
                            {"job_time_s", ps_to_s(in.t_job_end_ps - in.t_job_start_ps)},
                            {"program_extent_mm", extent_mm},
                            {"worst_contour", nullptr}};

@@ -1,7 +1,7 @@
 // The data behind the plots of one run, written as gnuplot data files (whitespace columns, `#` header lines) and
 // a meta.json that says which files exist. Everything is drawn from what a run already measured (the edge logs,
-// tool samples, moves and metrics) and from what its architecture adds (ArchRun::gap_causes, ArchRun::series), so
-// a model that reports more gets more plots without touching the renderer.
+// tool samples, moves and metrics) and from what its architecture adds (ArchRun::gap_causes, ArchRun::series,
+// ArchRun::plots), so a model that reports more gets more plots without touching the renderer.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -21,7 +21,8 @@ namespace cnc::sim {
 //   dead_time.dat             gap move inside total_ms [one column per cause, ms]: every gap of the job, between
 //                             the programmed moves (inside 0, move: the one it leads into) and inside them (1)
 //   series_<k>.dat            t_s value: ArchRun::series[k]
-//   meta.json                 architecture, axes, causes, series, the worst contour sample, the job's extent
+//   meta.json                 architecture, axes, causes, series, the worst contour sample, the job's extent,
+//                             the architecture's own plots (ArchRun::plots, whose tables go to `dir` too)
 void write_plot_data(const std::string& architecture, const ArchRun& run, const metrics::RunMetrics& m,
                      const std::filesystem::path& dir);
 

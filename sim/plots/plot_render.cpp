@@ -303,6 +303,20 @@ std::vector<Script> series_plots(const std::vector<PlotRun>& runs, const fs::pat
     return out;
 }
 
+// The plots an architecture draws of its own data (plots/arch_plot.hpp), its script after the common header.
+std::vector<Script> arch_plots(const std::vector<PlotRun>& runs) {
+    std::vector<Script> out;
+    for (const PlotRun& r : runs) {
+        for (const nlohmann::json& p : r.meta.value("arch_plots", nlohmann::json::array())) {
+            Script s({p["name"].get<std::string>(), p["title"].get<std::string>(), p["xlabel"].get<std::string>(),
+                      p["ylabel"].get<std::string>()});
+            s.body = header(s.plot) + "data_dir = " + quoted(r.data_dir) + "\n" + p["script"].get<std::string>();
+            out.push_back(std::move(s));
+        }
+    }
+    return out;
+}
+
 std::vector<Script> scripts(const std::vector<PlotRun>& runs, const fs::path& out_dir) {
     std::vector<std::optional<Script>> all;
     all.push_back(path_plot(runs, out_dir));
@@ -333,6 +347,7 @@ std::vector<Script> scripts(const std::vector<PlotRun>& runs, const fs::path& ou
         if (s) out.push_back(std::move(*s));
     }
     for (Script& s : series_plots(runs, out_dir)) out.push_back(std::move(s));
+    for (Script& s : arch_plots(runs)) out.push_back(std::move(s));
     return out;
 }
 

@@ -13,6 +13,7 @@
 #include "metrics/metrics.hpp"
 #include "metrics/run_input.hpp"
 #include "output/gtkw_save.hpp"
+#include "plots/arch_plot.hpp"
 
 namespace cnc::sim {
 
@@ -47,6 +48,8 @@ struct ArchRun {
     // (Scenario::keep_run_input).
     std::vector<GapCauses> gap_causes;
     std::vector<TimeSeries> series;  // plotted per quantity when present (sim/plots/plot_data.hpp)
+    // The architecture's own plots (sim/plots/arch_plot.hpp); filled only for the plots (Scenario::keep_run_input).
+    std::vector<ArchPlot> plots;
     bool ok = true;
     std::string failure;
     double estimated_s = 0.0;  // the job's estimate and the simulated-time limit the run had (run/simulate.hpp)

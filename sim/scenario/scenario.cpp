@@ -361,9 +361,12 @@ bool overrides_key(const std::vector<std::string>& overrides, const std::string&
                        [&](const std::string& o) { return override_key(o) == key; });
 }
 
-// A TOML document read as a scenario: `file` names it in messages, `base` resolves its relative paths.
+enum class JobNeed { Required, None };
+
+// A TOML document read as a scenario: `file` names it in messages, `base` resolves its relative paths. Without a
+// job (JobNeed::None) it describes a machine and a controller only, which nothing runs.
 Scenario load_document(toml::table root, const std::string& file, const fs::path& base,
-                       const std::vector<std::string>& overrides) {
+                       const std::vector<std::string>& overrides, JobNeed job = JobNeed::Required) {
     std::vector<std::string> overridden;
     for (const std::string& o : overrides) {
         apply_override(root, o);
@@ -373,7 +376,7 @@ Scenario load_document(toml::table root, const std::string& file, const fs::path
     KeyReader reader(root, file, overridden);
     Scenario s = read(reader, file, base);
     reader.reject_unknown_keys();
-    if (s.job_path.empty() && find_architecture(s.architecture, file).job_use().runs_job) {
+    if (job == JobNeed::Required && s.job_path.empty() && find_architecture(s.architecture, file).job_use().runs_job) {
         reader.fail("scenario.job", "missing: the job file to run is required");
     }
     return s;
@@ -465,6 +468,12 @@ Scenario load_job_run(const JobRun& run, const std::vector<std::string>& overrid
                        s.architecture + " runs no job: it takes a scenario of its own (docs/architectures.md)");
     }
     return s;
+}
+
+Scenario load_machine(const std::string& machine, const std::vector<std::string>& overrides) {
+    check_input_file(machine, "--machine " + machine, "machine file");
+    toml::table root{{"scenario", toml::table{{"machine", machine}}}};
+    return load_document(std::move(root), machine, fs::path(), overrides, JobNeed::None);
 }
 
 std::vector<KeyDoc> scenario_keys() {

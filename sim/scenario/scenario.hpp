@@ -73,6 +73,10 @@ struct JobRun {
 // overrides: the same keys, checks and messages as a scenario.
 Scenario load_job_run(const JobRun& run, const std::vector<std::string>& overrides);
 
+// A machine file alone (`cncsim motor-curve --machine`): read as the scenario {scenario.machine = machine}, then
+// the overrides, with the same checks and messages; no job is read or needed.
+Scenario load_machine(const std::string& machine, const std::vector<std::string>& overrides);
+
 // The tables a machine file holds (scenario.machine, --machine): the machine every architecture drives.
 const std::vector<std::string>& machine_tables();
 [[nodiscard]] bool is_machine_key(const std::string& key);

@@ -91,6 +91,30 @@ TEST_F(PlotData, DeadTimeRowsCarryTheGapAndItsCauses) {
     EXPECT_EQ(rows(dir / meta.at("series").at(0).at("file").get<std::string>()).size(), 2U);
 }
 
+// An architecture's own plot (ArchRun::plots): its table in blocks gnuplot reads as `index 0`, `index 1` (two blank
+// lines apart), and its labels and script in meta.json for the renderer.
+TEST_F(PlotData, AnArchitecturesOwnPlotWritesItsTableInBlocks) {
+    sim::ArchRun run;
+    sim::ArchPlot plot;
+    plot.name = "own";
+    plot.title = "Own";
+    plot.xlabel = "x [mm]";
+    plot.ylabel = "y [um]";
+    plot.tables.push_back({"own.dat", "x_mm y_um", {{{0.0, 1.5}, {0.25, -2.0}}, {{1.0, 3.0}}}});
+    plot.script = "plot data_dir.'/own.dat' index 1 using 1:2\n";
+    run.plots.push_back(plot);
+    sim::write_plot_data("fpga-uart", run, metrics::compute_metrics(run.input), dir);
+    std::ifstream table(dir / "own.dat");
+    std::stringstream text;
+    text << table.rdbuf();
+    EXPECT_EQ(text.str(), "# x_mm y_um\n0 1.5\n0.25 -2\n\n\n1 3\n");
+    std::ifstream meta_in(dir / "meta.json");
+    const nlohmann::json own = nlohmann::json::parse(meta_in).at("arch_plots").at(0);
+    EXPECT_EQ(own.at("name"), "own");
+    EXPECT_EQ(own.at("ylabel"), "y [um]");
+    EXPECT_EQ(own.at("script"), plot.script);
+}
+
 TEST_F(PlotData, ToolRowsFollowTheLineAtTheCommandedSpeed) {
     write();
     const auto tool = rows(dir / "tool.dat");

@@ -1,5 +1,6 @@
 // A first run: a job without a scenario on the default machine or a machine file, how `run` tells a job from a
-// scenario, the machine file a scenario names, `keys PREFIX`, and the files `init` writes.
+// scenario, the machine file a scenario names or `motor-curve --machine` reads alone, `keys PREFIX`, and the files
+// `init` writes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -106,6 +107,21 @@ TEST(JobRun, BadInputNamesTheFileAndKey) {
                              cnc::sim::load_job_run({job, "", "lathe-sync"}, {});
                          }),
                          "--arch lathe-sync: lathe-sync runs no job"));
+}
+
+// `motor-curve --machine`: the machine file alone, no job read or needed, the overrides on top.
+TEST(MachineOnly, ReadsTheMachineFileWithoutAJob) {
+    const std::string machine = write_file("machine.toml", kMachine);
+    const cnc::sim::Scenario s = cnc::sim::load_machine(machine, {"machine.y.microsteps=8"});
+    EXPECT_TRUE(s.job_path.empty());
+    EXPECT_DOUBLE_EQ(s.machine.x.steps_per_mm(), 80.0);
+    EXPECT_DOUBLE_EQ(s.machine.y.steps_per_mm(), 40.0);  // 200 x 8 / 40 mm
+    EXPECT_DOUBLE_EQ(s.mechanics.x.carriage_mass_kg, 2.0);
+    const std::string bad_key = write_file("bad_key.toml", "[machine.x]\nmicrostep = 8\n");
+    EXPECT_TRUE(contains(bad_input_message([&] { cnc::sim::load_machine(bad_key, {}); }),
+                         bad_key + ":2: machine.x.microstep: unknown key"));
+    EXPECT_TRUE(contains(bad_input_message([&] { cnc::sim::load_machine(machine + "x", {}); }),
+                         "--machine " + machine + "x: no such machine file"));
 }
 
 TEST(ScenarioMachine, TheScenarioNamesAMachineFileAndItsOwnKeysWin) {

@@ -15,6 +15,15 @@ bool inside(const ThreadPass& p, std::size_t j, double from, double to) {
 
 }  // namespace
 
+std::optional<double> phase_error_um(const std::vector<ThreadPass>& passes, std::size_t k, std::size_t j,
+                                     const ThreadMetrics& m) {
+    if (!inside(passes.front(), j, m.common_from_mm, m.common_to_mm) ||
+        !inside(passes[k], j, m.common_from_mm, m.common_to_mm)) {
+        return std::nullopt;
+    }
+    return (passes[k].x_mm[j] - passes.front().x_mm[j]) * 1000.0;
+}
+
 ThreadMetrics thread_metrics(const std::vector<ThreadPass>& passes, double pitch_mm, int pulses_per_rev,
                              int settle_revolutions) {
     ThreadMetrics m;
@@ -65,11 +74,9 @@ ThreadMetrics thread_metrics(const std::vector<ThreadPass>& passes, double pitch
     for (std::size_t k = 1; k < passes.size(); ++k) {
         std::vector<double> d_um;
         for (std::size_t j = first_j; j < first.x_mm.size(); ++j) {
-            if (!inside(first, j, m.common_from_mm, m.common_to_mm) ||
-                !inside(passes[k], j, m.common_from_mm, m.common_to_mm)) {
-                continue;
-            }
-            d_um.push_back((passes[k].x_mm[j] - first.x_mm[j]) * 1000.0);
+            const std::optional<double> d = phase_error_um(passes, k, j, m);
+            if (!d) continue;
+            d_um.push_back(*d);
             if (std::abs(d_um.back()) > m.phase_error_max_um) {
                 m.phase_error_max_um = std::abs(d_um.back());
                 m.phase_error_max_signed_um = d_um.back();

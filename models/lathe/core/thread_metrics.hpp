@@ -2,6 +2,7 @@
 // between passes, from the carriage position at each spindle pulse of each pass.
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace cnc::lathe {
@@ -35,6 +36,11 @@ struct ThreadMetrics {
     double common_from_mm = 0.0;
     double common_to_mm = 0.0;
 };
+
+// Pass k's carriage minus pass 1's at spindle pulse j, um (+: pass k ahead along the cut), where both lie inside
+// the common length of `m`; none elsewhere. The phase error between passes above, at one pulse.
+[[nodiscard]] std::optional<double> phase_error_um(const std::vector<ThreadPass>& passes, std::size_t k, std::size_t j,
+                                                   const ThreadMetrics& m);
 
 // The first settle_revolutions of every pass (the catch-up from the slip and the PID's slow settling) are left
 // out of both errors; the common length is that of the whole passes. Passes without a common length give zero

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "architectures/lathe_sync/lathe_plots.hpp"
 #include "architectures/lathe_sync/lathe_settings.hpp"
 #include "architectures/lathe_sync/lathe_trace.hpp"
 #include "lathe/core/lcd_transcript.hpp"
@@ -202,11 +203,13 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     std::vector<lathe::ThreadPass> thread;
     nlohmann::json passes = nlohmann::json::array();
     const double spindle_pulse_s = 60.0 / s.spindle_rpm / lathe::kSpindleSlots;
+    std::vector<std::vector<double>> following;  // per pass
     bool growing = false;
     double at_full_s = 0.0;
     for (const lathe::RecordedPass& p : rig.passes) {
         thread.push_back(p.thread);
-        const std::vector<double> e = following_error(p, list.lambda_list);
+        following.push_back(following_error(p, list.lambda_list));
+        const std::vector<double>& e = following.back();
         const double max_e = e.empty() ? 0.0 : *std::max_element(e.begin(), e.end());
         const bool overshoot_measured = p.overshoot_mm >= 0.0;  // RecordedPass leaves -1 when it has none
         const double overshoot_pulses = p.overshoot_mm / mm_per_motor_pulse;
@@ -252,6 +255,9 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
          has_phase ? nlohmann::json(static_cast<double>(m.phase_error_max_pulse) / lathe::kSpindleSlots) : nullptr},
         {"common_from_mm", m.common_from_mm},
         {"common_to_mm", m.common_to_mm}};
+    if (scenario.keep_run_input) {
+        out.plots = lathe_plots({rig.passes, following, m, s.settle_revolutions, list.lambda_list, mm_per_motor_pulse});
+    }
     d["following_error_grows"] = growing;
     d["pid_at_1023_s"] = at_full_s;
     text << "thread (" << rig.passes.size() << " passes, first " << s.settle_revolutions

@@ -355,6 +355,7 @@ nlohmann::json compare_json(const Comparison& comparison) {
             {"machine", c.report.is_null()
                             ? nlohmann::json(nullptr)
                             : c.report.value("scenario", nlohmann::json::object()).value("machine", nlohmann::json())},
+            {"clock", c.report.is_null() ? nlohmann::json(nullptr) : c.report.value("clock", nlohmann::json())},
             {"warnings",
              c.report.is_null() ? nlohmann::json::array() : c.report.value("warnings", nlohmann::json::array())},
             {"best", best}};

@@ -48,7 +48,7 @@ struct TableRow {
 std::vector<TableRow> table_rows(const Comparison& comparison);
 // Which rows are not marked best, and why: one sentence.
 std::string not_compared_note();
-// Per column, the figures that are 0 by construction and why ("fpga-uart: TIE and ... are 0 by construction: ...").
+// Per column, the figures that are 0 by construction and why, each line led by the column's architecture.
 std::vector<std::string> zero_notes(const Comparison& comparison);
 std::string status(const CompareColumn& c);
 

@@ -88,6 +88,7 @@ LatheRig::LatheRig(const LatheRigConfig& cfg)
       spindle(spindle_at(cfg)),
       m_cut_torque_nm(cutting_torque_nm(cfg.cut, cfg.feed_mm_per_rev)),
       m_record_carriage(cfg.record_carriage) {
+    m_cycle_period_s = 1.0 / static_cast<double>(chip.clock().hz());
     chip.on_output_change([this](Cycle c) { outputs_changed(c); });
     drive(kLcdD7, false);  // the LCD's busy flag (D7) always reads ready
     drive(kLimit, true);   // limit switch closed (normally 1)
@@ -105,15 +106,10 @@ double LatheRig::now_s() const {
     return cycle_s(chip.cycle());
 }
 
-// A 1 us step asks for the same two cycles' times several times: remembered, since a jittered clock draws each.
+// A cycle's time as the clock's whole cycles plus its edge's jitter: the cycles' part is the same double as the
+// nominal clock's c x (1 / F_CPU), so the ideal clock reproduces the seed's timing to the last bit.
 double LatheRig::cycle_s(Cycle c) const {
-    for (const CycleTime& k : m_cycle_times) {
-        if (k.cycle == c) return k.s;
-    }
-    m_cycle_times[m_cycle_time_next] = {c, ps_to_s(chip.clock().at(c))};
-    const double t = m_cycle_times[m_cycle_time_next].s;
-    m_cycle_time_next = (m_cycle_time_next + 1) % m_cycle_times.size();
-    return t;
+    return static_cast<double>(c) * m_cycle_period_s + ps_to_s(chip.clock().jitter_ps(c));
 }
 
 bool LatheRig::pid_running() const {
@@ -212,7 +208,8 @@ void LatheRig::record(double dt_s) {
 // The tool cuts while the PID runs the pass (the machinist set the depth before pressing OK).
 void LatheRig::step() {
     const Cycle to = chip.cycle() + kStepCycles;
-    const double dt = cycle_s(to) - cycle_s(m_last);
+    const double dt = static_cast<double>(to - m_last) * m_cycle_period_s +
+                      ps_to_s(chip.clock().jitter_ps(to) - chip.clock().jitter_ps(m_last));
     m_last = to;
     bridge.en_a = chip.pin_level(kEnA);
     bridge.in1 = chip.pin_level(kDir1);

@@ -127,12 +127,6 @@ public:
     std::vector<ToolSample> carriage_samples;
 
 private:
-    struct CycleTime {
-        avr::Cycle cycle = -1;
-        double s = 0.0;
-    };
-    mutable std::array<CycleTime, 2> m_cycle_times{};
-    mutable std::size_t m_cycle_time_next = 0;
     void outputs_changed(avr::Cycle c);
     void update_spindle(bool force);
     void update_keypad();
@@ -143,6 +137,7 @@ private:
     double m_cut_torque_nm;
     LcdTranscript m_transcript;
     avr::Cycle m_last = 0;
+    double m_cycle_period_s = 0.0;  // 1 / the clock's whole hertz
     bool m_motor_level = true;
     bool m_spindle_level = true;
     bool m_index = true;

@@ -77,7 +77,7 @@ ClockDeviation clock_deviation(const OscillatorSettings& s, std::uint64_t scenar
 
 nlohmann::json oscillator_json(const OscillatorSettings& s, const ClockGrid& clock) {
     return {{"part", s.part},
-            {"ideal", s.ideal},
+            {"exact", s.ideal},  // clock.ideal
             {"nominal_hz", clock.nominal_hz()},
             {"hz", clock.hz()},
             {"tolerance_ppm", s.tolerance_ppm},

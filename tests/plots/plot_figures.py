@@ -177,7 +177,7 @@ def check_path(out, colours, reports):
         away = re.findall(r"([a-z-]+) \([\d.]+ mm\)", panel["title"].partition("not in view:")[2])
         for n in names:
             if n in away:
-                if counts[n] or drawn[n]:
+                if counts[n] >= MIN_PIXELS or drawn[n]:
                     fail(f"panel {panel['title']!r} says {n} is not in view, and draws it: {counts[n]} pixels, "
                          f"{drawn[n]:.1f} px of lines")
                 continue

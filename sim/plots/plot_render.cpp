@@ -39,6 +39,8 @@ constexpr const char* kCauseColours[] = {"#e69f00", "#56b4e9", "#f0e442", "#cc79
 // The gaps inside a programmed move (between its pieces) where the run reports no causes.
 constexpr const char* kInsideColour = "#999999";
 constexpr int kPanelHeightPx = 260;
+// Beyond this many gaps in a panel a bar is a few pixels wide, and a black border on each would paint it black.
+constexpr std::size_t kMaxBorderedBars = 100;
 constexpr int kPanelFramePx = 110;  // a panel's title, tic labels and axis label
 constexpr int kKeyRowPx = 20;       // a key row in the SVG's 13 pt
 // The panels of one plot share their left and right edges, so that their axes line up whatever each one's key
@@ -129,8 +131,8 @@ std::optional<Script> dead_time_plot(const std::vector<PlotRun>& runs, const fs:
         const ColumnRange total = column_range(out_dir / file, 4);
         body << "set title " << quoted(r.architecture + fmt::format(FMT_STRING(": {} gaps"), total.rows))
              << "\nset xlabel " << quoted(s.plot.xlabel) << "\nset ylabel " << quoted(s.plot.ylabel)
-             << "\nset grid ytics\nset key outside right top\nset style fill solid 0.9 border -1\nset boxwidth 0.8\n"
-             << "set yrange [0:*]\n";
+             << "\nset grid ytics\nset key outside right top\nset style fill solid 0.9 "
+             << (total.rows > kMaxBorderedBars ? "noborder" : "border -1") << "\nset boxwidth 0.8\nset yrange [0:*]\n";
         if (total.rows == 0) {
             body << "set label 1 'no dead time' at graph 0.5,0.5 center\nset xrange [0:1]\n"
                  << "set yrange [0:1]\nplot NaN notitle\nunset label 1\nset xrange [*:*]\n";

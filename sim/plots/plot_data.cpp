@@ -26,9 +26,16 @@ using metrics::RunInput;
 // Sizes that keep a plot readable and its SVG small whatever the job's length; the figures themselves (maxima)
 // survive the thinning because each window keeps its worst sample.
 constexpr std::size_t kMaxToolRows = 6000;
+// The zoom panels draw only what falls in their window, from a file of their own that keeps ten times the rows:
+// on the 104 s sample drawing (about 494,000 samples, one per step) a row every 9 samples, at most 9 microsteps
+// (0.06 mm at 160 steps/mm) per axis.
+constexpr std::size_t kMaxZoomRows = 60000;
 constexpr std::size_t kTimeBins = 2000;
 constexpr double kArcPointSpacingMm = 0.05;
-constexpr TimePs kVelocityWindowPs = 5 * kPsPerMs;  // 5 ms: a 160 steps/mm axis makes >= 1 step in it above 1.25 mm/s
+// 5 ms: a 160 steps/mm axis makes >= 1 step in it above 1.25 mm/s. On a job longer than kTimeBins x 5 ms (10 s) the
+// grid is coarser than that, and the window widens to the grid step: a 5 ms window sampled every 50 ms would show
+// where in its ringing each sample fell instead of the speed between samples.
+constexpr TimePs kVelocityWindowPs = 5 * kPsPerMs;
 
 std::ofstream open(const fs::path& file, const std::string& header) {
     std::ofstream out(file);
@@ -79,35 +86,68 @@ struct ToolRow {
     metrics::SampleError error;
 };
 
-// Returns the worst-contour sample of the feed moves (of any move if there are only rapids), for the zoomed inset:
-// where the cutting differs most, which a controller's own rapid path (seed 003's dog-leg G0) would hide.
-std::optional<ToolRow> write_tool(const RunInput& in, const metrics::EdgeIndex& idx, const fs::path& dir) {
+// Thins the tool samples to at most `max_rows`: of each window of consecutive samples, the one of largest contour
+// error.
+class WorstPerWindow {
+public:
+    WorstPerWindow(std::size_t samples, std::size_t max_rows)
+        : m_samples(samples), m_window((samples + max_rows - 1) / max_rows) {}
+    // The row to write when `row` closes its window.
+    std::optional<ToolRow> add(const ToolRow& row) {
+        if (!m_open || row.error.contour_um > m_kept.error.contour_um) m_kept = row;
+        m_open = true;
+        if ((row.sample + 1) % m_window != 0 && row.sample + 1 != m_samples) return std::nullopt;
+        m_open = false;
+        return m_kept;
+    }
+
+private:
+    std::size_t m_samples;
+    std::size_t m_window;
+    ToolRow m_kept;
+    bool m_open = false;
+};
+
+// The samples of largest contour error: over the feed moves (over any move if there are only rapids), where the
+// zoom panels look, since a controller's own rapid path (seed 003's dog-leg G0) would hide where the cutting
+// differs; and over every move, the report's contour error max (docs/metrics.md: rapids are included).
+struct WorstRows {
+    std::optional<ToolRow> cut;
+    std::optional<ToolRow> any;
+};
+
+WorstRows write_tool(const RunInput& in, const metrics::EdgeIndex& idx, const fs::path& dir) {
     std::ofstream out = open(dir / "tool.dat", "t_s x_mm y_mm travel_mm contour_um following_um");
-    if (in.tool.empty() || in.moves.empty()) return std::nullopt;
+    std::ofstream zoom = open(dir / "tool_zoom.dat", "x_mm y_mm: the tool path at the zoom panels' resolution");
+    if (in.tool.empty() || in.moves.empty()) return {};
     const metrics::MoveTimeline timeline(in.moves);
-    const std::size_t window = (in.tool.size() + kMaxToolRows - 1) / kMaxToolRows;
-    ToolRow worst, kept;
+    WorstPerWindow rows(in.tool.size(), kMaxToolRows);
+    WorstPerWindow zoom_rows(in.tool.size(), kMaxZoomRows);
+    ToolRow worst, worst_any;
     bool worst_rapid = false;
-    bool window_open = false;
     double travel = 0.0;
     for (std::size_t i = 0; i < in.tool.size(); ++i) {
         if (i > 0) travel += geom::distance(in.tool[i - 1].pos, in.tool[i].pos);
         const ToolRow row{i, travel, metrics::sample_error(in, idx, timeline, i)};
-        if (!window_open || row.error.contour_um > kept.error.contour_um) kept = row;
-        window_open = true;
         const bool rapid = in.moves[row.error.move].rapid;
         if (i == 0 || (worst_rapid && !rapid) ||
             (rapid == worst_rapid && row.error.contour_um > worst.error.contour_um)) {
             worst = row;
             worst_rapid = rapid;
         }
-        if ((i + 1) % window != 0 && i + 1 != in.tool.size()) continue;
-        const ToolSample& s = in.tool[kept.sample];
-        out << num(ps_to_s(s.t_ps)) << ' ' << num(s.pos.x_mm) << ' ' << num(s.pos.y_mm) << ' ' << num(kept.travel_mm)
-            << ' ' << num(kept.error.contour_um) << ' ' << num(kept.error.following_um) << '\n';
-        window_open = false;
+        if (i == 0 || row.error.contour_um > worst_any.error.contour_um) worst_any = row;
+        if (const std::optional<ToolRow> kept = rows.add(row)) {
+            const ToolSample& s = in.tool[kept->sample];
+            out << num(ps_to_s(s.t_ps)) << ' ' << num(s.pos.x_mm) << ' ' << num(s.pos.y_mm) << ' '
+                << num(kept->travel_mm) << ' ' << num(kept->error.contour_um) << ' ' << num(kept->error.following_um)
+                << '\n';
+        }
+        if (const std::optional<ToolRow> kept = zoom_rows.add(row)) {
+            const ToolSample& s = in.tool[kept->sample];
+            zoom << num(s.pos.x_mm) << ' ' << num(s.pos.y_mm) << '\n';
+        }
     }
-    return worst;
+    return {worst, worst_any};
 }
 
 // Keeps, per time bin, the value of largest magnitude.
@@ -192,10 +232,10 @@ void write_velocity(const RunInput& in, const metrics::RunMetrics& m, const fs::
         return it == in.tool.begin() ? 0.0 : travel[static_cast<std::size_t>(it - in.tool.begin()) - 1];
     };
     CommandedSpeed commanded(in, m);
-    const TimePs half = kVelocityWindowPs / 2;
+    const TimePs window = std::max(kVelocityWindowPs, dt);
+    const TimePs half = window / 2;
     for (TimePs t = in.t_job_start_ps; t <= in.t_job_end_ps; t += dt) {
-        const double carriage =
-            in.tool.empty() ? 0.0 : (travel_at(t + half) - travel_at(t - half)) / ps_to_s(kVelocityWindowPs);
+        const double carriage = in.tool.empty() ? 0.0 : (travel_at(t + half) - travel_at(t - half)) / ps_to_s(2 * half);
         out << num(ps_to_s(t)) << ' ' << num(commanded.at(t)) << ' ' << num(carriage) << '\n';
     }
 }
@@ -245,7 +285,9 @@ nlohmann::json write_series(const ArchRun& run, const fs::path& dir) {
         const std::string file = "series_" + std::to_string(k) + ".dat";
         std::ofstream out = open(dir / file, "t_s value: " + s.quantity + ", axis " + s.axis);
         for (const auto& [t, v] : s.points) out << num(ps_to_s(t)) << ' ' << num(v) << '\n';
-        list.push_back({{"file", file}, {"quantity", s.quantity}, {"axis", s.axis}});
+        nlohmann::json marks = nlohmann::json::array();
+        for (const SeriesMark& mark : s.marks) marks.push_back({{"value", mark.value}, {"label", mark.label}});
+        list.push_back({{"file", file}, {"quantity", s.quantity}, {"axis", s.axis}, {"marks", marks}});
     }
     return list;
 }
@@ -258,7 +300,7 @@ void write_plot_data(const std::string& architecture, const ArchRun& run, const 
     const RunInput& in = run.input;
     const metrics::EdgeIndex idx = metrics::index_edges(in);
     const double extent_mm = write_program(in, dir);
-    const std::optional<ToolRow> worst = write_tool(in, idx, dir);
+    const WorstRows worst = write_tool(in, idx, dir);
     write_pulses(in, m, idx, dir);
     write_velocity(in, m, dir);
     const DeadTimeRows gaps = write_dead_time(m, run, dir);
@@ -270,13 +312,20 @@ void write_plot_data(const std::string& architecture, const ArchRun& run, const 
                            {"series", write_series(run, dir)},
                            {"arch_plots", write_arch_plots(run.plots, dir)},
                            {"job_time_s", ps_to_s(in.t_job_end_ps - in.t_job_start_ps)},
-                           {"program_extent_mm", extent_mm},
-                           {"worst_contour", nullptr}};
+                           {"program_extent_mm", extent_mm}};
     for (const metrics::AxisMetrics& a : m.axes) meta["axes"].push_back(a.name);
-    if (worst) {
-        const geom::Vec2 p = in.tool[worst->sample].pos;
-        meta["worst_contour"] = {{"x_mm", p.x_mm}, {"y_mm", p.y_mm}, {"contour_um", worst->error.contour_um}};
-    }
+    const auto where = [&in](const std::optional<ToolRow>& row) -> nlohmann::json {
+        if (!row) return nullptr;
+        const geom::Vec2 p = in.tool[row->sample].pos;
+        const metrics::MoveSpec& move = in.moves[row->error.move];
+        return {{"x_mm", p.x_mm},
+                {"y_mm", p.y_mm},
+                {"contour_um", row->error.contour_um},
+                {"line", move.line},
+                {"rapid", move.rapid}};
+    };
+    meta["worst_contour"] = where(worst.cut);
+    meta["contour_max"] = where(worst.any);
     std::ofstream out(dir / "meta.json");
     if (!out) throw std::runtime_error("cannot write " + (dir / "meta.json").string());
     out << meta.dump(2) << '\n';

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -13,6 +12,8 @@
 
 #include "architectures/catalog.hpp"
 #include "compare/spawn.hpp"
+#include "plots/gnuplot_script.hpp"
+#include "plots/path_plot.hpp"
 
 namespace cnc::sim {
 
@@ -20,154 +21,31 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kProgramColour = "#9a9a9a";
+using gp::column_range;
+using gp::ColumnRange;
+using gp::Curves;
+using gp::curves;
+using gp::file_of;
+using gp::header;
+using gp::merge;
+using gp::plot_line;
+using gp::quoted;
+using gp::Script;
+using gp::yrange_for;
+
 // Dead-time causes, in the order the architectures report them; the palette avoids the architecture colours.
 constexpr const char* kCauseColours[] = {"#e69f00", "#56b4e9", "#f0e442", "#cc79a7", "#999999",
                                          "#000000", "#882255", "#44aa99", "#ddcc77", "#117733"};
 // The gaps inside a programmed move (between its pieces) where the run reports no causes.
 constexpr const char* kInsideColour = "#999999";
-constexpr int kWidthPx = 960;
-constexpr int kHeightPx = 640;
 constexpr int kPanelHeightPx = 260;
-
-// Rows of a data file and the range of one column (1-based), so that a script never plots an empty file and a
-// constant series gets a visible range instead of gnuplot's "empty range" warning.
-struct ColumnRange {
-    std::size_t rows = 0;
-    double lo = 0.0;
-    double hi = 0.0;
-};
-
-ColumnRange column_range(const fs::path& file, int column) {
-    ColumnRange r;
-    std::ifstream in(file);
-    for (std::string line; std::getline(in, line);) {
-        if (line.empty() || line[0] == '#') continue;
-        std::istringstream fields(line);
-        double v = 0.0;
-        for (int c = 0; c < column; ++c) fields >> v;
-        if (!fields) continue;
-        r.lo = r.rows == 0 ? v : std::min(r.lo, v);
-        r.hi = r.rows == 0 ? v : std::max(r.hi, v);
-        ++r.rows;
-    }
-    return r;
-}
-
-ColumnRange merge(ColumnRange a, const ColumnRange& b) {
-    if (b.rows == 0) return a;
-    if (a.rows == 0) return b;
-    return {a.rows + b.rows, std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
-}
-
-std::string quoted(const std::string& s) {
-    std::string out = "'";
-    for (const char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-    return out + "'";
-}
-
-std::string file_of(const PlotRun& r, const std::string& name) {
-    return r.data_dir + "/" + name;
-}
-
-struct Script {
-    explicit Script(Plot p) : plot(std::move(p)) {}
-    Plot plot;
-    int height_px = kHeightPx;
-    std::string body;
-};
-
-std::string header(const Plot& p) {
-    return "reset\nset title " + quoted(p.title) + "\nset xlabel " + quoted(p.xlabel) + "\nset ylabel " +
-           quoted(p.ylabel) + "\nset grid\nset key top right box opaque\n";
-}
-
-// A constant range (e.g. TIE 0 on every edge) opens to +-1 around it.
-std::string yrange_for(const ColumnRange& r) {
-    if (r.rows == 0 || r.lo != r.hi) return "";
-    return fmt::format(FMT_STRING("set yrange [{:g}:{:g}]\n"), r.lo - 1.0, r.hi + 1.0);
-}
-
-// One curve per run that has rows: `using` columns and style; empty when no run has data.
-struct Curves {
-    std::vector<std::string> clauses;
-    ColumnRange y;
-};
-
-Curves curves(const std::vector<PlotRun>& runs, const fs::path& out_dir, const std::string& file, int ycol,
-              const std::string& using_style, const std::string& suffix = "") {
-    Curves c;
-    for (const PlotRun& r : runs) {
-        const ColumnRange y = column_range(out_dir / file_of(r, file), ycol);
-        if (y.rows == 0) continue;
-        c.y = merge(c.y, y);
-        c.clauses.push_back(quoted(file_of(r, file)) + " using " + using_style + " lc rgb " +
-                            quoted(arch_colour(r.architecture)) + " title " + quoted(r.architecture + suffix));
-    }
-    return c;
-}
-
-std::string plot_line(const std::vector<std::string>& clauses) {
-    std::string out = "plot ";
-    for (std::size_t i = 0; i < clauses.size(); ++i) out += (i ? ", \\\n     " : "") + clauses[i];
-    return out + "\n";
-}
-
-std::optional<Script> path_plot(const std::vector<PlotRun>& runs, const fs::path& out_dir) {
-    Script s({"path", "Tool path over the programmed path", "X [mm]", "Y [mm]"});
-    std::vector<std::string> clauses;
-    const PlotRun& first = runs.front();
-    if (column_range(out_dir / file_of(first, "program.dat"), 1).rows > 0) {
-        clauses.push_back(quoted(file_of(first, "program.dat")) + " using 1:2 with lines lw 4 lc rgb " +
-                          quoted(kProgramColour) + " title 'programmed'");
-    }
-    if (column_range(out_dir / file_of(first, "rapids.dat"), 1).rows > 0) {
-        clauses.push_back(quoted(file_of(first, "rapids.dat")) + " using 1:2 with lines lw 2 dt 2 lc rgb " +
-                          quoted(kProgramColour) + " title 'programmed rapids'");
-    }
-    const Curves tools = curves(runs, out_dir, "tool.dat", 2, "2:3 with lines lw 1.5");
-    if (tools.clauses.empty()) return std::nullopt;
-    clauses.insert(clauses.end(), tools.clauses.begin(), tools.clauses.end());
-
-    // The zoom: around the sample of largest contour error over every run, wide enough to show the deviation and
-    // the path on both sides of it, at most an eighth of the job's extent.
-    const nlohmann::json* worst = nullptr;
-    std::string worst_arch;
-    double extent_mm = 1.0;
-    for (const PlotRun& r : runs) {
-        extent_mm = std::max(extent_mm, r.meta.value("program_extent_mm", 0.0));
-        const nlohmann::json& w = r.meta["worst_contour"];
-        if (!w.is_null() && (worst == nullptr || w["contour_um"] > (*worst)["contour_um"])) {
-            worst = &w;
-            worst_arch = r.architecture;
-        }
-    }
-    std::ostringstream body;
-    body << header(s.plot) << "set size ratio -1\nset key outside top center horizontal\n";
-    if (worst == nullptr) {
-        body << plot_line(clauses);
-        s.body = body.str();
-        return s;
-    }
-    const double err_mm = (*worst)["contour_um"].get<double>() / 1000.0;
-    const double half = std::clamp(3.0 * err_mm, 0.02, extent_mm / 8.0);
-    const double x = (*worst)["x_mm"].get<double>();
-    const double y = (*worst)["y_mm"].get<double>();
-    body << "set multiplot\nset origin 0,0\nset size 0.64,1\n"
-         << fmt::format(
-                FMT_STRING("set object 1 rect from {:g},{:g} to {:g},{:g} front fillstyle empty border lc rgb 'black' "
-                           "lw 1.5\n"),
-                x - half, y - half, x + half, y + half)
-         << plot_line(clauses) << "unset object 1\nset origin 0.63,0.12\nset size 0.37,0.8\nunset key\n"
-         << "set title "
-         << quoted("largest cut error: " + worst_arch + fmt::format(FMT_STRING(", {:.1f} um"), err_mm * 1000.0)) << "\n"
-         << fmt::format(FMT_STRING("set xrange [{:g}:{:g}]\nset yrange [{:g}:{:g}]\n"), x - half, x + half, y - half,
-                        y + half)
-         << "set xtics rotate by -30\n"
-         << plot_line(clauses) << "unset multiplot\n";
-    s.body = body.str();
-    return s;
-}
+// Beyond this many gaps in a panel a bar is a few pixels wide, and a black border on each would paint it black.
+constexpr std::size_t kMaxBorderedBars = 100;
+constexpr int kPanelFramePx = 110;  // a panel's title, tic labels and axis label
+constexpr int kKeyRowPx = 20;       // a key row in the SVG's 13 pt
+// The panels of one plot share their left and right edges, so that their axes line up whatever each one's key
+// holds; the keys go right of them.
+constexpr const char* kPanelMargins = "set lmargin at screen 0.09\nset rmargin at screen 0.77\n";
 
 std::optional<Script> simple_plot(const std::vector<PlotRun>& runs, const fs::path& out_dir, Plot plot,
                                   const std::string& file, int ycol, const std::string& using_style,
@@ -202,15 +80,39 @@ std::optional<Script> error_plot(const std::vector<PlotRun>& runs, const fs::pat
                        std::to_string(xcol) + ":" + y + " with lines lw 1.2", extra);
 }
 
+// One panel per run on the same axes, the commanded path speed (dashed, in the programmed path's colour) over the
+// carriage's: the curves of several runs on one axis tangle as soon as a job has more than a few moves.
 std::optional<Script> velocity_plot(const std::vector<PlotRun>& runs, const fs::path& out_dir) {
     Script s({"velocity", "Commanded and carriage path velocity", "time [s]", "path velocity [mm/s]"});
-    const Curves commanded = curves(runs, out_dir, "velocity.dat", 2, "1:2 with lines dt 2 lw 2", " commanded");
-    const Curves carriage = curves(runs, out_dir, "velocity.dat", 3, "1:3 with lines lw 1", " carriage");
-    if (commanded.clauses.empty()) return std::nullopt;
-    std::vector<std::string> clauses = commanded.clauses;
-    clauses.insert(clauses.end(), carriage.clauses.begin(), carriage.clauses.end());
-    s.body = header(s.plot) + "set key outside bottom center horizontal\n" +
-             yrange_for(merge(commanded.y, carriage.y)) + plot_line(clauses);
+    std::vector<const PlotRun*> drawn;
+    ColumnRange t, v;
+    for (const PlotRun& r : runs) {
+        const fs::path file = out_dir / file_of(r, "velocity.dat");
+        const ColumnRange rt = column_range(file, 1);
+        if (rt.rows == 0) continue;
+        drawn.push_back(&r);
+        t = merge(t, rt);
+        v = merge(merge(v, column_range(file, 2)), column_range(file, 3));
+    }
+    if (drawn.empty()) return std::nullopt;
+    std::ostringstream body;
+    body << "reset\nset multiplot layout " << drawn.size() << ",1 title " << quoted(s.plot.title) << "\n"
+         << kPanelMargins
+         << fmt::format(FMT_STRING("set xrange [{:g}:{:g}]\nset yrange [{:g}:{:g}]\n"), t.lo,
+                        t.hi > t.lo ? t.hi : t.lo + 1.0, std::min(0.0, v.lo), v.hi > 0.0 ? 1.05 * v.hi : 1.0)
+         << "set xlabel " << quoted(s.plot.xlabel) << "\nset ylabel " << quoted(s.plot.ylabel)
+         << "\nset grid\nset key outside right top vertical box\n";
+    for (const PlotRun* r : drawn) {
+        const std::string file = quoted(file_of(*r, "velocity.dat"));
+        body << "set title " << quoted(r->architecture) << "\n"
+             << plot_line({file + " using 1:3 with lines lw 1 lc rgb " + quoted(arch_colour(r->architecture)) +
+                               " title 'carriage'",
+                           file + " using 1:2 with lines lw 1.5 dt 2 lc rgb " + quoted(gp::kProgramColour) +
+                               " title 'commanded'"});
+    }
+    body << "unset multiplot\n";
+    s.body = body.str();
+    s.height_px = std::max(gp::kHeightPx / 2, kPanelHeightPx * static_cast<int>(drawn.size()) + 60);
     return s;
 }
 
@@ -220,15 +122,17 @@ std::optional<Script> dead_time_plot(const std::vector<PlotRun>& runs, const fs:
     Script s({"dead_time", "Dead time between and inside programmed moves",
               "gap [number, in job order: each move's gaps side by side]", "dead time [ms]"});
     bool any = false;
+    int key_rows = 0;
     std::ostringstream body;
-    body << "reset\nset multiplot layout " << runs.size() << ",1 title " << quoted(s.plot.title) << "\n";
+    body << "reset\nset multiplot layout " << runs.size() << ",1 title " << quoted(s.plot.title) << "\n"
+         << kPanelMargins;
     for (const PlotRun& r : runs) {
         const std::string file = file_of(r, "dead_time.dat");
         const ColumnRange total = column_range(out_dir / file, 4);
         body << "set title " << quoted(r.architecture + fmt::format(FMT_STRING(": {} gaps"), total.rows))
              << "\nset xlabel " << quoted(s.plot.xlabel) << "\nset ylabel " << quoted(s.plot.ylabel)
-             << "\nset grid ytics\nset key outside right top\nset style fill solid 0.9 border -1\nset boxwidth 0.8\n"
-             << "set yrange [0:*]\n";
+             << "\nset grid ytics\nset key outside right top\nset style fill solid 0.9 "
+             << (total.rows > kMaxBorderedBars ? "noborder" : "border -1") << "\nset boxwidth 0.8\nset yrange [0:*]\n";
         if (total.rows == 0) {
             body << "set label 1 'no dead time' at graph 0.5,0.5 center\nset xrange [0:1]\n"
                  << "set yrange [0:1]\nplot NaN notitle\nunset label 1\nset xrange [*:*]\n";
@@ -261,21 +165,43 @@ std::optional<Script> dead_time_plot(const std::vector<PlotRun>& runs, const fs:
         if (!causes.empty() && between && inside) {
             clauses.push_back(quoted(file) +
                               " using 1:($3 == 0 ? $4 : NaN) with points pt 9 ps 0.8 lc rgb 'black' title "
-                              "'between moves (each starts a move)'");
+                              "'between moves'");
         }
+        key_rows = std::max(key_rows, static_cast<int>(clauses.size()));
         body << plot_line(clauses) << "set yrange [*:*]\nset xrange [*:*]\n";
     }
     if (!any) return std::nullopt;
     body << "unset multiplot\n";
     s.body = body.str();
-    s.height_px = std::max(kHeightPx / 2, kPanelHeightPx * static_cast<int>(runs.size()) + 60);
+    // A panel as tall as its key: a key taller than the panel wraps into a second column over the bars.
+    const int panel_px = std::max(kPanelHeightPx, kPanelFramePx + kKeyRowPx * key_rows);
+    s.height_px = std::max(gp::kHeightPx / 2, panel_px * static_cast<int>(runs.size()) + 60);
     return s;
+}
+
+// A series' marks (TimeSeries::marks) as labelled lines across the plot, the y range taking them in with room
+// for their labels over them.
+std::string marks_of(const std::map<double, std::string>& marks, ColumnRange y) {
+    if (marks.empty()) return yrange_for(y);
+    std::string out;
+    int tag = 1;
+    for (const auto& [value, label] : marks) {
+        y = merge(y, {1, value, value});
+        out += fmt::format(FMT_STRING("set arrow {0} from graph 0, first {1:g} to graph 1, first {1:g} nohead front "
+                                      "lc rgb 'black' lw 1.5 dt 4\nset label {0} {2} at graph 0.01, first {1:g} left "
+                                      "offset 0,0.7 front\n"),
+                           tag, value, quoted(label));
+        ++tag;
+    }
+    const double span = y.hi > y.lo ? y.hi - y.lo : 1.0;
+    return out + fmt::format(FMT_STRING("set yrange [{:g}:{:g}]\n"), std::min(y.lo, 0.0), y.hi + 0.08 * span);
 }
 
 // A plot per reported quantity (ArchRun::series): a curve per run and axis, the axes told apart by dash.
 std::vector<Script> series_plots(const std::vector<PlotRun>& runs, const fs::path& out_dir) {
     std::map<std::string, std::vector<std::string>> clauses;  // by quantity
     std::map<std::string, ColumnRange> ranges;
+    std::map<std::string, std::map<double, std::string>> marks;  // by quantity: level, label
     for (const PlotRun& r : runs) {
         const std::vector<std::string> axes = r.meta.value("axes", std::vector<std::string>{});
         for (const nlohmann::json& e : r.meta.value("series", nlohmann::json::array())) {
@@ -286,6 +212,8 @@ std::vector<Script> series_plots(const std::vector<PlotRun>& runs, const fs::pat
             const std::string axis = e["axis"].get<std::string>();
             const auto dash = std::find(axes.begin(), axes.end(), axis) - axes.begin() + 1;
             ranges[quantity] = merge(ranges[quantity], y);
+            for (const nlohmann::json& m : e.value("marks", nlohmann::json::array()))
+                marks[quantity][m["value"].get<double>()] = m["label"].get<std::string>();
             clauses[quantity].push_back(quoted(file) + " using 1:2 with steps lw 1.5 dt " + std::to_string(dash) +
                                         " lc rgb " + quoted(arch_colour(r.architecture)) + " title " +
                                         quoted(r.architecture + ", axis " + axis));
@@ -297,7 +225,7 @@ std::vector<Script> series_plots(const std::vector<PlotRun>& runs, const fs::pat
         for (const char c : quantity.substr(0, quantity.find(" [")))
             name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
         Script s({name, quantity.substr(0, quantity.find(" [")) + " over time", "time [s]", quantity});
-        s.body = header(s.plot) + yrange_for(ranges[quantity]) + plot_line(list);
+        s.body = header(s.plot) + marks_of(marks[quantity], ranges[quantity]) + plot_line(list);
         out.push_back(std::move(s));
     }
     return out;
@@ -380,10 +308,10 @@ std::vector<Plot> render_plots(const std::vector<PlotRun>& runs, const fs::path&
         const std::string script = "data/" + s.plot.name + ".gp";
         std::ofstream out(out_dir / script);
         out << s.body;
-        all << "set terminal svg size " << kWidthPx << ',' << s.height_px
+        all << "set terminal svg size " << gp::kWidthPx << ',' << s.height_px
             << " dynamic noenhanced font 'sans,13' background rgb 'white'\nset output " << quoted(s.plot.name + ".svg")
             << "\nload " << quoted(script) << "\nunset output\n"
-            << "set terminal pngcairo size " << kWidthPx << ',' << s.height_px
+            << "set terminal pngcairo size " << gp::kWidthPx << ',' << s.height_px
             << " noenhanced font 'sans,10' background rgb 'white'\nset output " << quoted(s.plot.name + ".png")
             << "\nload " << quoted(script) << "\nunset output\n";
         plots.push_back(s.plot);
@@ -392,6 +320,12 @@ std::vector<Plot> render_plots(const std::vector<PlotRun>& runs, const fs::path&
                         {"xlabel", s.plot.xlabel},
                         {"ylabel", s.plot.ylabel},
                         {"files", {s.plot.name + ".svg", s.plot.name + ".png"}}});
+        if (!s.panels.empty()) {
+            nlohmann::json& panels = list.back()["panels"] = nlohmann::json::array();
+            for (const gp::PanelBox& b : s.panels) {
+                panels.push_back({{"title", b.title}, {"box_px", {b.left_px, b.top_px, b.right_px, b.bottom_px}}});
+            }
+        }
     }
     all.close();
     std::ofstream(out_dir / "plots.json") << list.dump(2) << '\n';

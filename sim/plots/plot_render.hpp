@@ -28,7 +28,8 @@ std::vector<PlotRun> load_plot_runs(const std::filesystem::path& out_dir,
                                     const std::vector<std::string>& architectures);
 
 // Writes the scripts, runs gnuplot in out_dir and returns the plots it drew (a plot with no data in any run is left
-// out; the load angle and lost steps plots exist only when a run reports them). Also writes plots.json, the list.
+// out; the load angle and lost steps plots exist only when a run reports them). Also writes plots.json, the list
+// (with the path plot's panels: docs/plots.md).
 // Throws std::runtime_error when gnuplot is missing or fails.
 std::vector<Plot> render_plots(const std::vector<PlotRun>& runs, const std::filesystem::path& out_dir);
 

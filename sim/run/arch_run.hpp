@@ -24,11 +24,18 @@ struct GapCauses {
     std::vector<std::pair<std::string, double>> parts_ms;  // cause and its share, ms; the parts add up to the gap
 };
 
+// A level of a series that means something to the reader (a limit, a threshold): drawn across its plot, labelled.
+struct SeriesMark {
+    double value = 0.0;  // in the series' unit
+    std::string label;
+};
+
 // A quantity a model reports over time beyond the edges and tool samples, e.g. the dynamic mechanics' load angle.
 struct TimeSeries {
     std::string quantity;  // what the plot is titled with, unit in brackets: "load angle [deg]"
     std::string axis;      // x, y
     std::vector<std::pair<TimePs, double>> points;
+    std::vector<SeriesMark> marks;
 };
 
 struct ArchRun {

@@ -39,12 +39,13 @@ std::string axis_text(const char* name, const mech::DynamicAxisStats& st) {
     return t.str();
 }
 
+// A hybrid stepper's torque goes as the sine of the load angle and peaks at 90 electrical degrees (pull-out,
+// docs/mechanics.md, "Outputs").
+constexpr double kPullOutDeg = 90.0;
+
 // A peak load angle near or past pull-out, as a warning: the motor had little or no torque left there, whether it
-// lost steps or not. A hybrid stepper's torque goes as the sine of the load angle and peaks at 90 electrical
-// degrees (pull-out, docs/mechanics.md, "Outputs"); within 10 % of it, from 81, it already gives sin 81 = 98.8 % of
-// its largest torque.
+// lost steps or not. Within 10 % of pull-out, from 81, the motor already gives sin 81 = 98.8 % of its largest torque.
 void load_angle_warning(const char* axis, const mech::DynamicAxisStats& st, std::vector<Warning>& out) {
-    constexpr double kPullOutDeg = 90.0;
     constexpr double kNearFraction = 0.9;
     const double peak = st.peak_load_angle_deg;
     if (peak < kNearFraction * kPullOutDeg) return;
@@ -64,8 +65,11 @@ void load_angle_warning(const char* axis, const mech::DynamicAxisStats& st, std:
 
 // The load angle's peaks and the lost full steps (cumulative) over time, per axis: what the plots draw.
 void add_series(const char* axis, const mech::DynamicAxisStats& st, ArchRun& run) {
-    run.series.push_back({"load angle [electrical deg]", axis, st.load_angle_deg_trace.points()});
-    TimeSeries lost{"lost full steps [cumulative]", axis, {{0, 0.0}}};
+    run.series.push_back({"load angle [electrical deg]",
+                          axis,
+                          st.load_angle_deg_trace.points(),
+                          {{kPullOutDeg, "pull-out, 90 electrical deg: the motor's largest torque"}}});
+    TimeSeries lost{"lost full steps [cumulative]", axis, {{0, 0.0}}, {}};
     std::int64_t total = 0;
     for (const mech::LostStepEvent& e : st.events) {
         total += std::abs(e.full_steps);

@@ -7,7 +7,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -45,7 +47,13 @@ struct PlotData : ::testing::Test {
          std::to_string(getpid()));
     void TearDown() override { fs::remove_all(dir); }
 
-    void write() {
+    nlohmann::json meta() const {
+        std::ifstream in(dir / "meta.json");
+        return nlohmann::json::parse(in);
+    }
+
+    // `change` edits the run before its metrics and plot data are computed. Returns the metrics' contour error max.
+    std::optional<double> write(const std::function<void(sim::ArchRun&)>& change = {}) {
         sim::ArchRun run;
         const std::vector<TimePs> first = grid(kPsPerMs, kPeriodPs, kSteps);
         const TimePs second_start = first.back() + kGapPs;
@@ -63,8 +71,11 @@ struct PlotData : ::testing::Test {
         }
         in.t_job_end_ps = rises.back() + kPeriodPs;
         run.gap_causes = {{0, {{"wire", 1.5}, {"host", 2.5}}}};
-        run.series = {{"load angle [deg]", "x", {{kPsPerMs, 1.0}, {2 * kPsPerMs, 2.0}}}};
-        sim::write_plot_data("fpga-uart", run, metrics::compute_metrics(in), dir);
+        run.series = {{"load angle [deg]", "x", {{kPsPerMs, 1.0}, {2 * kPsPerMs, 2.0}}, {{90.0, "pull-out"}}}};
+        if (change) change(run);
+        const metrics::RunMetrics m = metrics::compute_metrics(in);
+        sim::write_plot_data("fpga-uart", run, m, dir);
+        return m.path.contour_max_um;
     }
 };
 
@@ -84,11 +95,63 @@ TEST_F(PlotData, DeadTimeRowsCarryTheGapAndItsCauses) {
     ASSERT_EQ(gaps.size(), 1U);
     // Gap 1, leading into move 2, between moves: 4 ms = 1.5 + 2.5.
     EXPECT_EQ(gaps[0], (std::vector<double>{1, 2, 0, 4.0, 1.5, 2.5}));
-    std::ifstream meta_in(dir / "meta.json");
-    const nlohmann::json meta = nlohmann::json::parse(meta_in);
-    EXPECT_EQ(meta.at("causes"), nlohmann::json({"wire", "host"}));
-    EXPECT_EQ(meta.at("series").at(0).at("quantity"), "load angle [deg]");
-    EXPECT_EQ(rows(dir / meta.at("series").at(0).at("file").get<std::string>()).size(), 2U);
+    const nlohmann::json m = meta();
+    EXPECT_EQ(m.at("causes"), nlohmann::json({"wire", "host"}));
+    EXPECT_EQ(m.at("series").at(0).at("quantity"), "load angle [deg]");
+    EXPECT_EQ(m.at("series").at(0).at("marks"), nlohmann::json::parse(R"([{"value": 90.0, "label": "pull-out"}])"));
+    EXPECT_EQ(rows(dir / m.at("series").at(0).at("file").get<std::string>()).size(), 2U);
+}
+
+// Move 1 (line 1) made a rapid with its 51st sample 20 um off the line, move 2 (line 2) with its 51st 10 um off:
+// the zoom looks at the cut's 10 um, and the worst of all is the rapid's 20 um, the report's contour error max.
+TEST_F(PlotData, ZoomPointIsTheWorstCutAndTheWorstOfAllIsTheReportsMax) {
+    const std::optional<double> contour_max_um = write([](sim::ArchRun& run) {
+        run.input.moves[0].rapid = true;
+        run.input.tool[50].pos.y_mm += 0.020;
+        run.input.tool[kSteps + 50].pos.y_mm += 0.010;
+    });
+    const nlohmann::json cut = meta().at("worst_contour");
+    EXPECT_NEAR(cut.at("contour_um").get<double>(), 10.0, 1e-6);
+    EXPECT_EQ(cut.at("line"), 2);
+    EXPECT_EQ(cut.at("rapid"), false);
+    EXPECT_NEAR(cut.at("x_mm").get<double>(), (kSteps + 51) * kMicrostepMm, 1e-12);
+    EXPECT_NEAR(cut.at("y_mm").get<double>(), 0.010, 1e-12);
+    const nlohmann::json all = meta().at("contour_max");
+    EXPECT_NEAR(all.at("contour_um").get<double>(), 20.0, 1e-6);
+    EXPECT_EQ(all.at("line"), 1);
+    EXPECT_EQ(all.at("rapid"), true);
+    ASSERT_TRUE(contour_max_um.has_value());
+    EXPECT_NEAR(*contour_max_um, 20.0, 1e-6);
+}
+
+// A 20 s job whose carriage moves in bursts, 8 steps 100 us apart every 10 ms: the grid is 20 s / 2000 = 10 ms,
+// and a window of the grid's step holds one burst wherever it falls, 8 / 160 mm in 10 ms = 5 mm/s at every row
+// (a 5 ms window would hold a burst or none: 10 or 0 mm/s).
+TEST_F(PlotData, CarriageSpeedOfALongJobIsTheMeanOverTheGridStep) {
+    constexpr TimePs kBurstPs = 10 * kPsPerMs;
+    constexpr int kBursts = 2000;
+    write([](sim::ArchRun& run) {
+        metrics::RunInput& in = run.input;
+        std::vector<TimePs> rises;
+        for (int b = 0; b < kBursts; ++b) {
+            for (const TimePs t : grid(b * kBurstPs + kPsPerMs, 100 * kPsPerUs, 8)) rises.push_back(t);
+        }
+        in.axes = {axis(rises, "x")};
+        in.axes[0].steps_per_mm = 160.0;
+        in.t_job_start_ps = 0;
+        in.t_job_end_ps = kBursts * kBurstPs;
+        const double length_mm = static_cast<double>(rises.size()) * kMicrostepMm;
+        in.moves = {line_move(0, {0, 0}, {length_mm, 0}, 300.0, 0, in.t_job_end_ps)};
+        in.tool.clear();
+        for (std::size_t k = 0; k < rises.size(); ++k) {
+            in.tool.push_back({rises[k], {static_cast<double>(k + 1) * kMicrostepMm, 0.0}});
+        }
+        run.gap_causes.clear();
+    });
+    const auto velocity = rows(dir / "velocity.dat");
+    ASSERT_EQ(velocity.size(), static_cast<std::size_t>(kBursts) + 1);
+    // The first and last rows' windows reach past the job's ends.
+    for (std::size_t i = 1; i + 1 < velocity.size(); ++i) ASSERT_NEAR(velocity[i][2], 5.0, 1e-9) << "row " << i;
 }
 
 // An architecture's own plot (ArchRun::plots): its table in blocks gnuplot reads as `index 0`, `index 1` (two blank
@@ -128,6 +191,5 @@ TEST_F(PlotData, ToolRowsFollowTheLineAtTheCommandedSpeed) {
         EXPECT_DOUBLE_EQ(r[1], 20.0);
         EXPECT_NEAR(r[2], 20.0, 1e-9);
     }
-    std::ifstream meta_in(dir / "meta.json");
-    EXPECT_NEAR(nlohmann::json::parse(meta_in).at("program_extent_mm").get<double>(), 2 * kSteps * kMicrostepMm, 1e-12);
+    EXPECT_NEAR(meta().at("program_extent_mm").get<double>(), 2 * kSteps * kMicrostepMm, 1e-12);
 }

@@ -308,7 +308,8 @@ std::vector<TableRow> table_rows(const Comparison& comparison) {
     for (const CompareColumn& c : columns) st.cells.push_back(status(c));
     rows.push_back(st);
     for (const Row& row : kRows) {
-        TableRow r{row.label, {}, {}, !row.own_reference};
+        // A setting (the machine, the clock part) is what the run was given, not a result: never a best.
+        TableRow r{row.label, {}, {}, !row.own_reference && !row.setting};
         for (const CompareColumn& c : columns) r.cells.push_back(cell(c, row));
         r.best = r.comparable ? best_cells(r.cells) : std::vector<bool>(r.cells.size(), false);
         rows.push_back(r);

@@ -6,21 +6,13 @@
 #include <vector>
 
 #include "common/bad_input.hpp"
+#include "common/splitmix64.hpp"
 
 namespace cnc {
 
 namespace {
 
 constexpr double kMaxOffsetPpm = 1e5;
-
-// SplitMix64 (Steele, Lea, Flood, "Fast splittable pseudorandom number generators", OOPSLA 2014): a counter-based
-// draw, so edge n's jitter does not depend on which edges were asked for before it.
-std::uint64_t splitmix64(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ULL;
-    x = (x ^ (x >> 30U)) * 0xbf58476d1ce4e5b9ULL;
-    x = (x ^ (x >> 27U)) * 0x94d049bb133111ebULL;
-    return x ^ (x >> 31U);
-}
 
 // The standard normal distribution at kQuantiles equally likely points (its quantiles at (i + 1/2) / kQuantiles): a
 // draw is one table entry picked by the hash, so a jittered edge costs one hash and a load, not a log and a cosine

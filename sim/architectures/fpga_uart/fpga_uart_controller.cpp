@@ -103,13 +103,13 @@ public:
     template <typename F>
     void time_ended(const fpga::Top& top, std::optional<TimePs> until_ps, SentPackets& sent, CommandedMoves& moves,
                     F f) {
+        const ClockGrid clock = fpga::clock_grid(top.config());
         for (; m_record < top.packet_count() && sent.unexecuted(); ++m_record) {
             const fpga::PacketRecord r = top.packet(m_record);
             if (!r.accepted) continue;
             if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
             const MadeSegment made = sent.executed();
             metrics::MoveSpec m = moves.next(made.seg, made.programmed_path ? &*made.programmed_path : nullptr);
-            const ClockGrid clock = fpga::clock_grid(top.config());
             m.t_begin_ps = clock.at(clock.first_after(r.t_pkt_valid_ps));
             m.t_end_ps = r.t_busy_fall_ps;
             f(std::move(m));
@@ -446,8 +446,9 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
     m_warnings.finish(m_fpga, run.warnings);
     const fpga::FpgaStats st = m_fpga.stats();
     const uart::Cp2102Baud& baud = m_cp2102.baud();
-    run.clock = oscillator_json(m_f.clock, fpga::clock_grid(m_fpga.config()));
-    run.clock_text = oscillator_text(m_f.clock, fpga::clock_grid(m_fpga.config()));
+    const ClockGrid clock = fpga::clock_grid(m_fpga.config());
+    run.clock = oscillator_json(m_f.clock, clock);
+    run.clock_text = oscillator_text(m_f.clock, clock);
     nlohmann::json msgs = nlohmann::json::array();
     for (const host::SenderMessage& m : m_sender.messages()) {
         msgs.push_back({{"t_s", ps_to_s(m.t_ps)}, {"text", m.text}});

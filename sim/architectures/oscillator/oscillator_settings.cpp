@@ -4,17 +4,12 @@
 
 #include <fmt/format.h>
 
+#include "common/splitmix64.hpp"
+
 namespace cnc::sim {
 
 namespace {
 
-// SplitMix64 finaliser (as ClockGrid's jitter): one independent draw per purpose from the scenario's seed.
-std::uint64_t mix(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ULL;
-    x = (x ^ (x >> 30U)) * 0xbf58476d1ce4e5b9ULL;
-    x = (x ^ (x >> 27U)) * 0x94d049bb133111ebULL;
-    return x ^ (x >> 31U);
-}
 constexpr std::uint64_t kOffsetStream = 0x636c6f636b6f6666ULL;  // "clockoff"
 constexpr std::uint64_t kJitterStream = 0x636c6f636b6a6974ULL;  // "clockjit"
 
@@ -62,16 +57,16 @@ void read_oscillator_settings(KeyReader& r, const OscillatorPart& part, std::int
 
 ClockDeviation clock_deviation(const OscillatorSettings& s, std::uint64_t scenario_seed) {
     if (s.ideal) return {};
-    const std::uint64_t part_seed = mix(scenario_seed ^ name_hash(s.table));
+    const std::uint64_t part_seed = splitmix64(scenario_seed ^ name_hash(s.table));
     ClockDeviation d;
     if (s.offset_ppm) {
         d.offset_ppm = *s.offset_ppm;
     } else {
-        const double unit = static_cast<double>(mix(part_seed ^ kOffsetStream) >> 11U) / 9007199254740992.0;
+        const double unit = static_cast<double>(splitmix64(part_seed ^ kOffsetStream) >> 11U) / 9007199254740992.0;
         d.offset_ppm = (2.0 * unit - 1.0) * s.tolerance_ppm;
     }
     d.jitter_rms_ps = s.jitter_rms_ps;
-    d.seed = mix(part_seed ^ kJitterStream);
+    d.seed = splitmix64(part_seed ^ kJitterStream);
     return d;
 }
 

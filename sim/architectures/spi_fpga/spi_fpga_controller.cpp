@@ -143,8 +143,9 @@ public:
         SpiFpgaReport report = spi_fpga_report(m_host, m_master, m_fpga, run.input.t_job_end_ps, m_s.detail);
         run.details = std::move(report.details);
         run.details_text = std::move(report.text);
-        run.clock = oscillator_json(m_f.clock, fpga::clock_grid(m_fpga.config()));
-        run.clock_text = oscillator_text(m_f.clock, fpga::clock_grid(m_fpga.config()));
+        const ClockGrid clock = fpga::clock_grid(m_fpga.config());
+        run.clock = oscillator_json(m_f.clock, clock);
+        run.clock_text = oscillator_text(m_f.clock, clock);
         run.warnings = std::move(report.warnings);
         if (!m_host.finished()) {
             run.ok = false;

@@ -21,6 +21,7 @@ struct ClockDeviation {
 // The Gaussian draw is cut at this many standard deviations, so no edge passes its neighbour.
 inline constexpr double kJitterCutSigmas = 4.0;
 
+// Each block owns its copy; one copy is not for two threads at once (it keeps its last draw).
 class ClockGrid {
 public:
     // Throws BadInput (naming `where`) for a frequency that is not positive, an offset beyond +-1e5 ppm (10 %, past
@@ -55,6 +56,9 @@ private:
     std::int64_t m_hz;
     double m_jitter_rms_ps;
     std::uint64_t m_seed;
+    // The last edge drawn and its jitter: a block asks for the edge at a time, then for that edge's time.
+    mutable std::int64_t m_drawn_edge = 0;
+    mutable TimePs m_drawn_jitter_ps = 0;
 };
 
 }  // namespace cnc

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
 
 #include "common/bad_input.hpp"
@@ -9,6 +10,8 @@
 using cnc::ClockDeviation;
 using cnc::ClockGrid;
 using cnc::TimePs;
+using cnc::cycles_to_ps;
+using cnc::kJitterCutSigmas;
 
 TEST(ClockGrid, IdealClockIsTheWholePicosecondGrid) {
     const ClockGrid g(50'000'000, {});
@@ -96,6 +99,23 @@ TEST(ClockGrid, InverseFindsTheEdgeAroundAnyTime) {
         EXPECT_TRUE(g.is_edge(g.at(n)));
         EXPECT_EQ(g.first_at_or_after(g.at(n)), n);
         EXPECT_EQ(g.first_after(g.at(n)), n + 1);
+    }
+}
+
+// Next to every edge, where the inverse takes its shortcut, against a scan of the edges themselves; on a clock whose
+// jitter is as large as the constructor allows, so neighbouring edges' jitter ranges almost meet.
+TEST(ClockGrid, InverseMatchesAScanNextToEveryEdge) {
+    for (const ClockGrid& g : {ClockGrid(50'000'000, {-40.0, 1240.0, 11}), ClockGrid(16'000'000, {3000.0, 10.0, 5})}) {
+        const TimePs reach_ps = std::llround(kJitterCutSigmas * g.jitter_rms_ps()) + 2;
+        for (std::int64_t k = 1; k < 3000; ++k) {
+            for (const TimePs centre : {g.at(k), cycles_to_ps(k, g.hz())}) {
+                for (TimePs t = centre - reach_ps; t <= centre + reach_ps; t += std::max<TimePs>(1, reach_ps / 7)) {
+                    std::int64_t scan = k - 2;
+                    while (g.at(scan + 1) <= t) ++scan;
+                    ASSERT_EQ(g.last_at_or_before(t), scan) << "t = " << t << " ps";
+                }
+            }
+        }
     }
 }
 

@@ -8,7 +8,9 @@ feed error of its constant-feed lines and arcs equals what the STEP edges of its
 at least one move compared per architecture). A run that fails (some scenarios exist to show a failure) must say
 so in its report (ok false, a failure reason).
 
-Usage: invariants.py CNCSIM SOURCE_DIR ARCH WORKDIR
+Usage: invariants.py CNCSIM SOURCE_DIR ARCH WORKDIR [short|long]: `short` leaves out the scenarios of LONG_JOBS,
+`long` runs only them (on the AVR core they take minutes: the atmega test of the default suite runs `short`, the
+`long` label the rest); neither runs every scenario.
 """
 import glob
 import json
@@ -23,14 +25,20 @@ EPS_MS = 1e-9
 # spi-fpga traces its SPI wires bit by bit in a VCD (72 bits a servo period): a VCD of the 276 s slow diagonal takes
 # minutes to write. On spi-fpga the feeds are compared on jobs up to this long, rerun with the VCD.
 SPI_VCD_MAX_JOB_S = 30.0
+# The shipped scenarios whose jobs last more than a minute of simulated time (the 273 s slow diagonal, the 81 s
+# sample drawing).
+LONG_JOBS = {"scenarios/fpga-uart/overflow_slow_diagonal.toml", "scenarios/compare/sample_drawing.toml"}
 
 
 def main():
     cncsim, source, arch, workdir = sys.argv[1:5]
+    part = sys.argv[5] if len(sys.argv) > 5 else "all"
     os.makedirs(workdir, exist_ok=True)
     failures, refused, checked, feeds_compared = [], [], 0, 0
     for scenario in sorted(glob.glob(os.path.join(source, "scenarios", "*", "*.toml"))):
         name = os.path.relpath(scenario, source)
+        if part != "all" and (name in LONG_JOBS) != (part == "long"):
+            continue
         with open(scenario) as f:
             if ".steps" in f.read() and arch != "fpga-uart":
                 continue  # a steps file is seed 000's format: refused elsewhere (exit 2), checked by its own test

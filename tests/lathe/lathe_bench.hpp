@@ -10,7 +10,14 @@ inline constexpr double kCycleS = 1.0 / 8e6;
 
 struct LatheBench : LatheRig {
     explicit LatheBench(double spindle_rpm = 0.0, const char* elf = LATHE_SYNC_ELF)
-        : LatheRig({elf, spindle_rpm, derive_motor(), {}}) {}
+        : LatheRig(config(elf, spindle_rpm)) {}
+
+    static LatheRigConfig config(const char* elf, double spindle_rpm) {
+        LatheRigConfig c;
+        c.firmware_elf = elf;
+        c.spindle_rpm = spindle_rpm;
+        return c;
+    }
 };
 
 }  // namespace cnc::lathe::test

@@ -10,23 +10,18 @@
   circle_contour CNCSIM ROOT: the fpga-uart circle: the contour error with dynamic mechanics exceeds the ideal one
     (and its plots draw the load angle and the lost steps over time), and the summary says where it comes from.
 """
-import json
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from cncsim_report import run_report  # noqa: E402
+
 
 def run(cncsim, scenario, sets, tmp, tag, extra=()):
-    report = os.path.join(tmp, tag + ".json")
     # The table of docs/mechanics.md was searched on exact clocks: a boundary feed can move with a unit's offset.
-    cmd = [cncsim, "run", scenario, "--progress", "off", "--report", report, "--set", "clock.ideal=true"] + list(extra)
-    for s in sets:
-        cmd += ["--set", s]
-    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    with open(report) as f:
-        return json.load(f), out
+    return run_report(cncsim, scenario, tmp, tag, ["clock.ideal=true", *sets], extra)
 
 
 def lost(report, arch):

@@ -14,23 +14,16 @@
     byte for byte; another seed draws another oscillator (another offset). The VCD's timescale is 1 ps (auto), so
     the jittered edges are written where they fell.
 """
-import json
 import os
-import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from cncsim_report import run_report  # noqa: E402
+
 
 def run(cncsim, scenario, tmp, tag, sets=(), vcd=False):
-    report = os.path.join(tmp, tag + ".json")
-    cmd = [cncsim, "run", scenario, "--progress", "off", "--report", report]
-    if vcd:
-        cmd += ["--vcd", os.path.join(tmp, tag + ".vcd")]
-    for s in sets:
-        cmd += ["--set", s]
-    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    with open(report) as f:
-        return json.load(f), out
+    return run_report(cncsim, scenario, tmp, tag, sets, ["--vcd", os.path.join(tmp, tag + ".vcd")] if vcd else [])
 
 
 def check(ok, what):

@@ -10,23 +10,15 @@
     10 %) or more has the warning of its kind, at the axis and the time of the peak, and no other axis has one.
 """
 import html
-import json
 import os
 import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from cncsim_report import run_report  # noqa: E402
+
 PULL_OUT_DEG = 90.0  # a hybrid stepper's torque peaks at 90 electrical degrees of load angle
-
-
-def run(cncsim, scenario, sets, tmp, tag):
-    report = os.path.join(tmp, tag + ".json")
-    cmd = [cncsim, "run", scenario, "--progress", "off", "--report", report]
-    for s in sets:
-        cmd += ["--set", s]
-    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    with open(report) as f:
-        return json.load(f), out
 
 
 def compare_page(cncsim, scenario, sets, tmp, arch):
@@ -58,7 +50,7 @@ def feed_held(cncsim, root, tmp):
     scenario = os.path.join(root, "scenarios", "fpga-uart", "square_20mm.toml")
     sets = ["scenario.job=" + job, "machine.x.max_velocity_mm_per_s=%g" % v_max_mm_per_s,
             "machine.y.max_velocity_mm_per_s=%g" % v_max_mm_per_s]
-    report, out = run(cncsim, scenario, sets, tmp, "square_f20000")
+    report, out = run_report(cncsim, scenario, tmp, "square_f20000", sets)
     where = "%s:%d-%d" % (job, lines[0], lines[-1])
     figures = ("feed %.1f mm/min held to %.1f mm/min by machine.x.max_velocity_mm_per_s = %g and "
                "machine.y.max_velocity_mm_per_s = %g" % (asked, held, v_max_mm_per_s, v_max_mm_per_s))
@@ -69,7 +61,7 @@ def feed_held(cncsim, root, tmp):
     page = compare_page(cncsim, scenario, sets, tmp, "fpga-uart")
     assert html.escape(where) + ": " + html.escape(figures) in page, "the compare page has no feed_held warning"
     # Within the limits, no warning.
-    report, _ = run(cncsim, scenario, sets[1:], tmp, "square_f800")
+    report, _ = run_report(cncsim, scenario, tmp, "square_f800", sets[1:])
     assert not warnings_of(report, "feed_held"), report["warnings"]
     print("square at F%d: %s: %s" % (asked, where, figures))
 
@@ -77,7 +69,7 @@ def feed_held(cncsim, root, tmp):
 def load_angle(cncsim, root, tmp):
     scenario = os.path.join(root, "scenarios", "mechanics", "six_segment_f4800.toml")
     for arch in ("fpga-uart", "spi-fpga"):
-        report, out = run(cncsim, scenario, ["scenario.architecture=" + arch], tmp, arch)
+        report, out = run_report(cncsim, scenario, tmp, arch, ["scenario.architecture=" + arch])
         near = warnings_of(report, "load_angle_near_pull_out")
         past = warnings_of(report, "load_angle_past_pull_out")
         expected_near, expected_past = [], []

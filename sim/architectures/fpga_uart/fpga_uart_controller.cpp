@@ -313,13 +313,6 @@ void check_fpga_rate(const Scenario& s, const FpgaUartSettings& f) {
                               fpga_bd, f.fpga.clk_hz / 1e6, f.fpga.uart_full_bit_cycles)});
 }
 
-// The seed's FPGA on this unit's oscillator.
-fpga::FpgaConfig clocked(const FpgaUartSettings& f, std::uint64_t scenario_seed) {
-    fpga::FpgaConfig cfg = f.fpga;
-    cfg.clock = clock_deviation(f.clock, scenario_seed);
-    return cfg;
-}
-
 // The seed 000 system between the job and the machine's pins: the CAM (GCODE2STEPS) on the host, or the steps file
 // it wrote, send_steps.py through the CP2102, the FPGA.
 class FpgaUartController final : public Controller {
@@ -334,7 +327,7 @@ public:
           m_cp2102("cp2102", m_f.serial.link),
           m_packets(s, job, m_numerators),
           m_sender("host", m_f.serial.sender, m_cp2102, host::encode_init(m_numerators.x, m_numerators.y), m_packets),
-          m_fpga("fpga", clocked(m_f, s.seed)),
+          m_fpga("fpga", on_oscillator(m_f.fpga, m_f.clock, s.seed)),
           m_moves(s.machine, s.interpreter.start_mm),
           // Every gap only for the detailed report and the plots (which keep the whole run anyway).
           m_dead_fold(s.detail || s.keep_run_input),

@@ -98,14 +98,8 @@ std::optional<ArchPlot> phase_plot(const LathePlotInput& in) {
             right_half ? "right" : "left", right_half ? "-1.2" : "1.2",
             m.phase_error_max_signed_um > 0 ? "0.8" : "-0.8");
     }
-    ArchPlot plot;
-    plot.name = "phase_error_passes";
-    plot.title = "Phase error of each pass against pass 1";
-    plot.xlabel = kRevolutionLabel;
-    plot.ylabel = "phase error [um] (+: ahead of pass 1)";
-    plot.tables.push_back(std::move(table));
-    plot.script = script + join_plot(clauses);
-    return plot;
+    return ArchPlot{"phase_error_passes", "Phase error of each pass against pass 1", kRevolutionLabel,
+                    "phase error [um] (+: ahead of pass 1)", {std::move(table)}, script + join_plot(clauses)};
 }
 
 // Each pass's following error as the firmware counts it (the motor encoder's pulses: lines) and as the carriage
@@ -150,14 +144,8 @@ std::optional<ArchPlot> following_plot(const LathePlotInput& in) {
                                "set yrange [{:g}:{:g}]\nset ytics {:g}\n"),
                     kRevolutionLabel, -range, range, tic_step(2.0 * range)) +
         join_plot(differences) + "unset multiplot\n";
-    ArchPlot plot;
-    plot.name = "following_error_passes";
-    plot.title = "Following error of each pass: the firmware count and the carriage";
-    plot.xlabel = kRevolutionLabel;
-    plot.ylabel = "following error [motor pulses]";
-    plot.tables.push_back(std::move(table));
-    plot.script = script;
-    return plot;
+    return ArchPlot{"following_error_passes", "Following error of each pass: the firmware count and the carriage",
+                    kRevolutionLabel, "following error [motor pulses]", {std::move(table)}, script};
 }
 
 }  // namespace

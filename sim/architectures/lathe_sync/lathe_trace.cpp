@@ -13,8 +13,10 @@ LatheTrace::LatheTrace(const Scenario& s, std::optional<std::int64_t> clock_hz) 
     m_layout.top_scope = metrics::kVcdTopScope;
     m_layout.from_ps = s.trace_from_ps;
     for (const std::size_t i : m_chosen) {
-        m_signals.push_back({all[i].name, false, clock_hz});
-        m_signals.back().scope = all[i].block;
+        metrics::VcdSignal& signal = m_signals.emplace_back();
+        signal.name = all[i].name;
+        signal.clock_hz = clock_hz;
+        signal.scope = all[i].block;
         m_layout.signals.push_back({all[i].block, all[i].name});
     }
     m_layout.timescale_fs = metrics::chosen_timescale_fs(s.vcd_timescale_fs, m_signals);

@@ -40,6 +40,13 @@ void read_oscillator_settings(KeyReader& r, const OscillatorPart& part, std::int
 // for each part); the jitter's own seed from it too. All zero with clock.ideal.
 [[nodiscard]] ClockDeviation clock_deviation(const OscillatorSettings& s, std::uint64_t scenario_seed);
 
+// A board's configuration (any with a ClockDeviation `clock`) on this unit's oscillator.
+template <class BoardConfig>
+[[nodiscard]] BoardConfig on_oscillator(BoardConfig cfg, const OscillatorSettings& s, std::uint64_t scenario_seed) {
+    cfg.clock = clock_deviation(s, scenario_seed);
+    return cfg;
+}
+
 // The report's "clock" object and its summary line, for the clock the run had.
 [[nodiscard]] nlohmann::json oscillator_json(const OscillatorSettings& s, const ClockGrid& clock);
 [[nodiscard]] std::string oscillator_text(const OscillatorSettings& s, const ClockGrid& clock);

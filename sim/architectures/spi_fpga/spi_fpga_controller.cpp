@@ -41,13 +41,6 @@ host::servo::ServoConfig servo_config(const Scenario& s, const SpiFpgaSettings& 
     return c;
 }
 
-// The FPGA on this unit's oscillator; the host still computes its rate words for the nominal clock.
-fpga::SpiFpgaConfig clocked(const SpiFpgaSettings& f, std::uint64_t scenario_seed) {
-    fpga::SpiFpgaConfig cfg = f.fpga;
-    cfg.clock = clock_deviation(f.clock, scenario_seed);
-    return cfg;
-}
-
 // The seed 004 system between the job and the machine's pins: the planner and the servo thread on the host, the SPI
 // master, the FPGA.
 class SpiFpgaController final : public Controller {
@@ -61,7 +54,7 @@ public:
           m_trajectory(m_plan, &m_plan->trajectory()),
           m_link(spi_link(s, m_f)),
           m_master("spi_master", m_link),
-          m_fpga("fpga", clocked(m_f, s.seed)),
+          m_fpga("fpga", on_oscillator(m_f.fpga, m_f.clock, s.seed)),  // the host's rate words stay nominal
           m_host("host", servo_config(s, m_f), *m_plan, std::move(ahead.servo), m_master),
           m_planned(*m_plan, step_grid(s)),
           m_rate_feed(s.detail) {

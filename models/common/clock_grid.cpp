@@ -105,9 +105,4 @@ std::int64_t ClockGrid::last_at_or_before(TimePs t) const {
     return n;
 }
 
-bool ClockGrid::is_edge(TimePs t) const {
-    const std::int64_t n = last_at_or_before(t);
-    return n >= 0 && at(n) == t;
-}
-
 }  // namespace cnc

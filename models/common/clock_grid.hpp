@@ -5,7 +5,6 @@
 // STEP period short by the same ratio and jitter moves every edge, as a scope sees them on real hardware.
 #pragma once
 #include <cstdint>
-#include <optional>
 
 #include "common/units.hpp"
 
@@ -46,7 +45,6 @@ public:
     [[nodiscard]] std::int64_t first_after(TimePs t) const { return last_at_or_before(t) + 1; }
     // The first edge at or after t.
     [[nodiscard]] std::int64_t first_at_or_after(TimePs t) const { return last_at_or_before(t - 1) + 1; }
-    [[nodiscard]] bool is_edge(TimePs t) const;
 
     // Edge n's jitter alone, in ps.
     [[nodiscard]] TimePs jitter_ps(std::int64_t n) const;

@@ -50,6 +50,8 @@ public:
     [[nodiscard]] FpgaStats stats() const;
     [[nodiscard]] std::uint8_t pkt_count() const { return m_pkt_count; }  // top.v's 8-bit completed-move count
     [[nodiscard]] const FpgaConfig& config() const { return m_cfg; }
+    // The edges of CLOCK_50 as this board's oscillator makes them.
+    [[nodiscard]] const ClockGrid& clock() const { return m_clock; }
     // Debug: process activations of all blocks (the model must wake per edge, never per clock).
     [[nodiscard]] std::uint64_t activations() const;
     void add_traces(sc_core::sc_trace_file* tf) const;

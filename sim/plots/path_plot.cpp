@@ -113,9 +113,15 @@ std::vector<std::string> zoom_title(std::size_t number, const PlotRun& r, const 
     return title;
 }
 
-std::vector<Zoom> zooms(const std::vector<PlotRun>& runs, const fs::path& out_dir) {
+// The largest programmed extent of the runs, at least 1 mm.
+double program_extent_mm(const std::vector<PlotRun>& runs) {
     double extent_mm = 1.0;
     for (const PlotRun& r : runs) extent_mm = std::max(extent_mm, r.meta.value("program_extent_mm", 0.0));
+    return extent_mm;
+}
+
+std::vector<Zoom> zooms(const std::vector<PlotRun>& runs, const fs::path& out_dir) {
+    const double extent_mm = program_extent_mm(runs);
     std::vector<Polyline> paths;
     for (const PlotRun& r : runs) paths.push_back(tool_polyline(r, out_dir));
     std::vector<Zoom> out;
@@ -146,10 +152,16 @@ std::vector<Zoom> zooms(const std::vector<PlotRun>& runs, const fs::path& out_di
     return out;
 }
 
+// A panel's plot clauses and the number of runs whose tool path they draw (kOnTop's top_runs).
+struct PanelCurves {
+    std::vector<std::string> clauses;
+    std::size_t tool_paths = 0;
+};
+
 // Every run's tool path (from `tool_file`, x and y in columns `x_col` and the next), each run again over the
 // others in its own cells (kOnTop), then the programmed path and rapids over them all.
-std::vector<std::string> clauses(const std::vector<PlotRun>& runs, const fs::path& out_dir,
-                                 const std::string& tool_file, int x_col) {
+PanelCurves clauses(const std::vector<PlotRun>& runs, const fs::path& out_dir, const std::string& tool_file,
+                    int x_col) {
     std::vector<std::string> out, on_top;
     for (std::size_t k = 0; k < runs.size(); ++k) {
         const PlotRun& r = runs[k];
@@ -165,8 +177,9 @@ std::vector<std::string> clauses(const std::vector<PlotRun>& runs, const fs::pat
                                      x_col + 1, on_top.size()) +
                          style + " notitle");
     }
-    if (on_top.size() > 1) out.insert(out.end(), on_top.begin(), on_top.end());
-    if (out.empty()) return out;
+    const std::size_t tool_paths = on_top.size();
+    if (tool_paths > 1) out.insert(out.end(), on_top.begin(), on_top.end());
+    if (out.empty()) return {};
     const PlotRun& first = runs.front();
     const std::string program = fmt::format(FMT_STRING(" using 1:2 with lines lw {:g} "), kProgramWidth);
     if (gp::column_range(out_dir / gp::file_of(first, "rapids.dat"), 1).rows > 0) {
@@ -177,16 +190,16 @@ std::vector<std::string> clauses(const std::vector<PlotRun>& runs, const fs::pat
         out.push_back(gp::quoted(gp::file_of(first, "program.dat")) + program + "dt solid lc rgb " +
                       gp::quoted(gp::kProgramColour) + " title 'programmed'");
     }
-    return out;
+    return {out, tool_paths};
 }
 
 }  // namespace
 
 std::optional<gp::Script> path_plot(const std::vector<PlotRun>& runs, const fs::path& out_dir) {
     gp::Script s({"path", "Tool path over the programmed path", "X [mm]", "Y [mm]"});
-    const std::vector<std::string> curves = clauses(runs, out_dir, "tool.dat", 2);
-    if (curves.empty()) return std::nullopt;
-    const std::vector<std::string> zoom_curves = clauses(runs, out_dir, "tool_zoom.dat", 1);
+    const PanelCurves curves = clauses(runs, out_dir, "tool.dat", 2);
+    if (curves.clauses.empty()) return std::nullopt;
+    const PanelCurves zoom_curves = clauses(runs, out_dir, "tool_zoom.dat", 1);
     const std::vector<Zoom> zoom = zooms(runs, out_dir);
     const int cols = zoom.size() <= 3 ? static_cast<int>(zoom.size()) : static_cast<int>(zoom.size() + 1) / 2;
     const int rows = cols == 0 ? 0 : (static_cast<int>(zoom.size()) + cols - 1) / cols;
@@ -194,13 +207,10 @@ std::optional<gp::Script> path_plot(const std::vector<PlotRun>& runs, const fs::
 
     std::ostringstream body;
     // clip two: a programmed line whose both ends lie outside a zoom window still crosses it.
-    double extent_mm = 1.0;
-    for (const PlotRun& r : runs) extent_mm = std::max(extent_mm, r.meta.value("program_extent_mm", 0.0));
-    int tool_paths = 0;
-    for (const PlotRun& r : runs) tool_paths += gp::column_range(out_dir / gp::file_of(r, "tool.dat"), 2).rows > 0;
     body << "reset\nset multiplot\nset clip two\nset grid\nset size ratio -1\n"
          << kOnTop
-         << fmt::format(FMT_STRING("top_runs = {}\ncell_mm = {:g}\n"), tool_paths, extent_mm / kCellsAcrossJob)
+         << fmt::format(FMT_STRING("top_runs = {}\ncell_mm = {:g}\n"), curves.tool_paths,
+                        program_extent_mm(runs) / kCellsAcrossJob)
          << fmt::format(FMT_STRING("set key at screen 0.5,{:.5f} center top horizontal box width 2\n"),
                         1.0 - static_cast<double>(kKeyTopPx) / s.height_px);
     const PanelBox main{s.plot.title, kLeftPx, kMainTopPx, gp::kWidthPx - kRightPx, kMainBottomPx};
@@ -215,7 +225,7 @@ std::optional<gp::Script> path_plot(const std::vector<PlotRun>& runs, const fs::
                             k + 1, z.x_mm - z.half_mm, z.y_mm - z.half_mm, z.x_mm + z.half_mm, z.y_mm + z.half_mm,
                             1.5 * static_cast<double>(k));
     }
-    body << gp::plot_line(curves) << "unset object\nunset label\nunset key\n";
+    body << gp::plot_line(curves.clauses) << "unset object\nunset label\nunset key\n";
 
     const int col_px = cols == 0 ? gp::kWidthPx : gp::kWidthPx / cols;
     for (std::size_t k = 0; k < zoom.size(); ++k) {
@@ -230,14 +240,15 @@ std::optional<gp::Script> path_plot(const std::vector<PlotRun>& runs, const fs::
         const PanelBox box{joined, left, top + kZoomTitlePx, left + side, top + kZoomTitlePx + side};
         s.panels.push_back(box);
         body << gp::margins(box, s.height_px) << "set title " << gp::quoted_lines(z.title) << "\n"
-             << fmt::format(FMT_STRING("cell_mm = {:g}\n"), 2 * z.half_mm / kCellsAcrossZoom)
+             << fmt::format(FMT_STRING("top_runs = {}\ncell_mm = {:g}\n"), zoom_curves.tool_paths,
+                            2 * z.half_mm / kCellsAcrossZoom)
              << fmt::format(
                     FMT_STRING("set xrange [{:g}:{:g}]\nset yrange [{:g}:{:g}]\nset xtics {:g}\nset ytics {:g}\n"),
                     z.x_mm - z.half_mm, z.x_mm + z.half_mm, z.y_mm - z.half_mm, z.y_mm + z.half_mm,
                     tic_step(2 * z.half_mm), tic_step(2 * z.half_mm))
              << fmt::format(FMT_STRING("set label 1 '' at {:g},{:g} point pt 6 ps 1.6 lc rgb 'black' front\n"), z.x_mm,
                             z.y_mm)
-             << gp::plot_line(zoom_curves) << "unset label 1\n";
+             << gp::plot_line(zoom_curves.clauses) << "unset label 1\n";
     }
     body << "unset multiplot\n";
     s.body = body.str();

@@ -3,8 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "run/run.hpp"
-#include "scenario/scenario.hpp"
+#include "support/shipped_run.hpp"
 
 namespace cnc::test {
 
@@ -15,17 +14,10 @@ constexpr TimePs step_period_ps(int ocr) {
     return 2 * 1024 * (ocr + 1) * kAvrCyclePs;
 }
 
-// out.arch.input keeps every edge and tool sample and out.arch.lines the link's and the raw pins' logs, as --plots
-// and --samples ask (the metrics otherwise stream and drop them as they go: atmega_streamed_test.cpp).
+// out.arch.input keeps every edge and tool sample and out.arch.lines the link's and the raw pins' logs
+// (atmega_streamed_test.cpp runs without them).
 inline sim::RunOutcome run_atmega(const std::string& name, const std::vector<std::string>& sets = {}) {
-    const std::string path = std::string(CNC_SOURCE_DIR) + "/scenarios/atmega/" + name + ".toml";
-    // The design's step arithmetic on an exact clock (clock.ideal; docs/metrics.md "Clocks"); a test of the real
-    // oscillator asks for clock.ideal=false after it.
-    std::vector<std::string> all = {"clock.ideal=true"};
-    all.insert(all.end(), sets.begin(), sets.end());
-    sim::Scenario s = sim::load_scenario(path, all);
-    s.keep_run_input = true;
-    return sim::run_scenario(s);
+    return run_on_exact_clock("atmega", name, sets, true);
 }
 
 inline std::vector<TimePs> periods(const std::vector<TimePs>& t) {

@@ -25,8 +25,8 @@ TEST(ClockGrid, IdealClockIsTheWholePicosecondGrid) {
     EXPECT_EQ(g.first_at_or_after(40'000), 2);
     EXPECT_EQ(g.first_at_or_after(40'001), 3);
     EXPECT_EQ(g.last_at_or_before(-1), -1);
-    EXPECT_TRUE(g.is_edge(60'000));
-    EXPECT_FALSE(g.is_edge(60'001));
+    EXPECT_EQ(g.at(g.last_at_or_before(60'000)), 60'000);  // an edge
+    EXPECT_NE(g.at(g.last_at_or_before(60'001)), 60'001);  // between edges
     EXPECT_EQ(g.grid_hz(), 50'000'000);
 }
 
@@ -96,7 +96,7 @@ TEST(ClockGrid, InverseFindsTheEdgeAroundAnyTime) {
         ASSERT_GE(n, 0);
         EXPECT_LE(g.at(n), t);
         EXPECT_GT(g.at(n + 1), t);
-        EXPECT_TRUE(g.is_edge(g.at(n)));
+        EXPECT_EQ(g.last_at_or_before(g.at(n)), n);
         EXPECT_EQ(g.first_at_or_after(g.at(n)), n);
         EXPECT_EQ(g.first_after(g.at(n)), n + 1);
     }

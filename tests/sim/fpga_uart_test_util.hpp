@@ -3,23 +3,14 @@
 #include <string>
 #include <vector>
 
-#include "run/run.hpp"
-#include "scenario/scenario.hpp"
+#include "support/shipped_run.hpp"
 
 namespace cnc::test {
 
-// `keep_logs`: out.arch.input keeps every edge and tool sample, as --plots and --samples ask (the metrics otherwise
-// stream and drop them as they go).
+// `keep_logs`: run_on_exact_clock's keep_run_input.
 inline sim::RunOutcome run_shipped(const std::string& name, const std::vector<std::string>& sets = {},
                                    bool keep_logs = false) {
-    const std::string path = std::string(CNC_SOURCE_DIR) + "/scenarios/fpga-uart/" + name + ".toml";
-    // The design's step arithmetic on an exact clock (clock.ideal; docs/metrics.md "Clocks"); a test of the real
-    // oscillator asks for clock.ideal=false after it.
-    std::vector<std::string> all = {"clock.ideal=true"};
-    all.insert(all.end(), sets.begin(), sets.end());
-    sim::Scenario s = sim::load_scenario(path, all);
-    s.keep_run_input = keep_logs;
-    return sim::run_scenario(s);
+    return run_on_exact_clock("fpga-uart", name, sets, keep_logs);
 }
 
 inline std::vector<TimePs> diffs(const std::vector<TimePs>& t) {

@@ -6,24 +6,15 @@
 #include <string>
 #include <vector>
 
-#include "run/run.hpp"
-#include "scenario/scenario.hpp"
+#include "support/shipped_run.hpp"
 
 namespace cnc::test {
 
 inline constexpr TimePs kClockPs = 20'000;  // 50 MHz FPGA clock
 
-// out.arch.input keeps every edge and tool sample, as --plots and --samples ask (the metrics otherwise stream and
-// drop them as they go): the tests read them.
+// With every edge and tool sample kept: the tests read them.
 inline sim::RunOutcome run_spi(const std::string& name, const std::vector<std::string>& sets = {}) {
-    const std::string path = std::string(CNC_SOURCE_DIR) + "/scenarios/spi-fpga/" + name + ".toml";
-    // The design's step arithmetic on an exact clock (clock.ideal; docs/metrics.md "Clocks"); a test of the real
-    // oscillator asks for clock.ideal=false after it.
-    std::vector<std::string> all = {"clock.ideal=true"};
-    all.insert(all.end(), sets.begin(), sets.end());
-    sim::Scenario s = sim::load_scenario(path, all);
-    s.keep_run_input = true;
-    return sim::run_scenario(s);
+    return run_on_exact_clock("spi-fpga", name, sets, true);
 }
 
 // Net step count of an axis from its edge logs, over the rising edges at or before t_ps.

@@ -18,10 +18,11 @@ StepCounter::StepCounter(const sc_core::sc_module_name& name, const SpiFpgaConfi
 void StepCounter::on_step_rise() {
     ++m_activations;
     const TimePs now = now_ps();
+    const std::int64_t edge = m_clock.last_at_or_before(now);
     // STEP is a register of this clock domain: it only changes on clock edges.
-    if (!m_clock.is_edge(now)) throw std::logic_error(std::string(name()) + ": STEP rose between clock edges");
+    if (m_clock.at(edge) != now) throw std::logic_error(std::string(name()) + ": STEP rose between clock edges");
     // DIR as registered at that edge (setup >= 1 keeps it from changing at the same edge).
-    m_history.add_rise(m_clock.last_at_or_before(now), dir.read());
+    m_history.add_rise(edge, dir.read());
 }
 
 }  // namespace cnc::fpga

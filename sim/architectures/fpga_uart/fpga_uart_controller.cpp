@@ -103,7 +103,7 @@ public:
     template <typename F>
     void time_ended(const fpga::Top& top, std::optional<TimePs> until_ps, SentPackets& sent, CommandedMoves& moves,
                     F f) {
-        const ClockGrid clock = fpga::clock_grid(top.config());
+        const ClockGrid& clock = top.clock();
         for (; m_record < top.packet_count() && sent.unexecuted(); ++m_record) {
             const fpga::PacketRecord r = top.packet(m_record);
             if (!r.accepted) continue;
@@ -352,10 +352,10 @@ public:
     // The FPGA times everything it drives and drives no EN pin; the CP2102 (uart_rx) starts its frames when USB
     // delivers the bytes.
     [[nodiscard]] MachinePinClocks pin_clocks() const override {
-        return {fpga::clock_grid(m_fpga.config()).grid_hz(), std::nullopt};
+        return {m_fpga.clock().grid_hz(), std::nullopt};
     }
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
-        const std::optional<std::int64_t> fpga = fpga::clock_grid(m_fpga.config()).grid_hz();
+        const std::optional<std::int64_t> fpga = m_fpga.clock().grid_hz();
         const Wires& w = m_wires;
         return {{&w.uart_rx, "link", {}},     {&w.uart_tx, "link", fpga},   {&w.busy, "fpga", fpga},
                 {&w.pkt_valid, "fpga", fpga}, {&w.cfg_valid, "fpga", fpga}, {&w.rx_valid, "fpga", fpga},
@@ -439,9 +439,8 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
     m_warnings.finish(m_fpga, run.warnings);
     const fpga::FpgaStats st = m_fpga.stats();
     const uart::Cp2102Baud& baud = m_cp2102.baud();
-    const ClockGrid clock = fpga::clock_grid(m_fpga.config());
-    run.clock = oscillator_json(m_f.clock, clock);
-    run.clock_text = oscillator_text(m_f.clock, clock);
+    run.clock = oscillator_json(m_f.clock, m_fpga.clock());
+    run.clock_text = oscillator_text(m_f.clock, m_fpga.clock());
     nlohmann::json msgs = nlohmann::json::array();
     for (const host::SenderMessage& m : m_sender.messages()) {
         msgs.push_back({{"t_s", ps_to_s(m.t_ps)}, {"text", m.text}});

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <systemc>
 
 #include "architectures/catalog.hpp"

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/bad_input.hpp"
+#include "common/math_constants.hpp"
 #include "common/splitmix64.hpp"
 
 namespace cnc {
@@ -14,7 +15,6 @@ namespace cnc {
 namespace {
 
 constexpr double kMaxOffsetPpm = 1e5;
-constexpr double kPi = 3.14159265358979323846;
 
 // The standard normal distribution at kQuantiles equally likely points (its quantiles at (i + 1/2) / kQuantiles): a
 // draw is one table entry picked by the hash, so a jittered edge costs one hash and a load, not a log and a cosine
@@ -22,9 +22,13 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kQuantileBits = 14;
 constexpr int kQuantiles = 1 << kQuantileBits;
 
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+double normal_cdf(double x) {
+    return 0.5 * std::erfc(-x / std::sqrt(2.0));
+}
 
-double normal_pdf(double x) { return std::exp(-0.5 * x * x) / std::sqrt(2.0 * kPi); }
+double normal_pdf(double x) {
+    return std::exp(-0.5 * x * x) / std::sqrt(2.0 * kPi);
+}
 
 // The lower half by Newton's method on the CDF, each quantile started from the one before (three steps each, where
 // a bisection takes eighty: the table is built on the first jittered edge of every run); the upper half by symmetry.

@@ -2,10 +2,11 @@
 
 #include <algorithm>
 
+#include "common/math_constants.hpp"
+
 namespace cnc::geom {
 
 namespace {
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 // Coincidence tolerance for deciding that an arc is a full circle: far below one microstep (6.25 um).
 constexpr double kSamePointMm = 1e-9;
 }  // namespace

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "architectures/catalog.hpp"
 #include "compare/spawn.hpp"

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 namespace cnc::sim {
 
 namespace {

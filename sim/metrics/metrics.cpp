@@ -37,6 +37,7 @@ MoveMetrics piece_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t 
     mm.line = spec.line;
     mm.rapid = spec.rapid;
     mm.feed_mm_per_min = spec.feed_mm_per_min;
+    mm.programmed = programmed_end(spec);
     mm.t_first_edge_ps = idx.move_first_edge_ps[m];
     mm.t_last_edge_ps = idx.move_last_edge_ps[m];
     for (std::size_t a = 0; a < idx.axes.size(); ++a) {
@@ -86,6 +87,37 @@ MoveMetrics programmed_metrics(const RunInput& in, const std::vector<MoveMetrics
 }
 
 }  // namespace
+
+ProgrammedEnd programmed_end(const MoveSpec& spec) {
+    ProgrammedEnd e;
+    const geom::Segment& path = spec.path;
+    e.kind = spec.rapid             ? ProgrammedKind::Rapid
+             : !path.is_arc         ? ProgrammedKind::Line
+             : path.sweep_rad < 0.0 ? ProgrammedKind::ArcCw
+                                    : ProgrammedKind::ArcCcw;
+    e.x_mm = path.end.x_mm;
+    e.y_mm = path.end.y_mm;
+    e.z_mm = spec.z_end_mm;
+    if (path.is_arc) {
+        e.center_x_mm = path.center.x_mm;
+        e.center_y_mm = path.center.y_mm;
+    }
+    return e;
+}
+
+const char* to_string(ProgrammedKind kind) {
+    switch (kind) {
+        case ProgrammedKind::Rapid:
+            return "rapid";
+        case ProgrammedKind::Line:
+            return "line";
+        case ProgrammedKind::ArcCw:
+            return "arc_cw";
+        case ProgrammedKind::ArcCcw:
+            return "arc_ccw";
+    }
+    return "?";
+}
 
 void finish_axis(AxisMetrics& am, double steps_per_mm, const AxisPulseSummary& pulse) {
     if (steps_per_mm > 0.0) {

@@ -7,8 +7,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "metrics/laser/laser.hpp"
 #include "metrics/move_metrics.hpp"
 #include "metrics/path/path_accuracy.hpp"

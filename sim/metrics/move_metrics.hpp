@@ -11,6 +11,20 @@
 
 namespace cnc::metrics {
 
+// What the program asked for: the move's kind and where it ends (machine mm, work offsets applied), whatever the
+// controller cut it into.
+enum class ProgrammedKind : std::uint8_t { Rapid, Line, ArcCw, ArcCcw };
+
+struct ProgrammedEnd {
+    ProgrammedKind kind = ProgrammedKind::Line;
+    double x_mm = 0.0, y_mm = 0.0, z_mm = 0.0;
+    std::optional<double> center_x_mm, center_y_mm;  // arcs
+};
+
+// The programmed end of a piece's move (its MoveSpec::path, the parent arc of a chord).
+[[nodiscard]] ProgrammedEnd programmed_end(const MoveSpec& spec);
+[[nodiscard]] const char* to_string(ProgrammedKind kind);
+
 // A programmed move (RunMetrics::moves) or one executed piece of it (RunMetrics::pieces): a programmed move sums
 // its pieces' steps and takes the worst of their figures; timing is defined on programmed moves only.
 struct MoveMetrics {
@@ -26,6 +40,7 @@ struct MoveMetrics {
     std::vector<std::size_t> sync_unmatched_edges;          // [axis], with a commanded trajectory (sync_error.hpp)
     MoveTiming timing;
     MovePath path;
+    ProgrammedEnd programmed;
 };
 
 }  // namespace cnc::metrics

@@ -38,6 +38,7 @@ struct MoveSpec {
                                    // own (a steps-file row). Consecutive pieces of one programmed move share it.
     geom::Segment path;            // programmed geometry the move belongs to (a chord's parent arc, or the line)
     geom::Vec2 from_mm, to_mm;     // this move's own commanded end points (chord ends, step-quantised)
+    double z_end_mm = 0.0;         // the programmed move's Z at its end (no architecture has Z STEP pins)
     double feed_mm_per_min = 0.0;  // programmed path feed F
     bool rapid = false;            // G0
     // Per axis, in the order of RunInput::axes (an axis with no entry is commanded to stand still):

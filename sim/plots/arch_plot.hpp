@@ -4,7 +4,7 @@
 // header, terminals and plots.json entry as the others (docs/plots.md).
 #pragma once
 #include <filesystem>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 

@@ -8,6 +8,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "metrics/commanded.hpp"
 #include "metrics/path/path_accuracy.hpp"
 #include "metrics/pulse/edge_index.hpp"
@@ -58,11 +60,19 @@ bool same_point(geom::Vec2 a, geom::Vec2 b) {
 double write_program(const RunInput& in, const fs::path& dir) {
     std::ofstream feed = open(dir / "program.dat", "x_mm y_mm: programmed feed moves");
     std::ofstream rapid = open(dir / "rapids.dat", "x_mm y_mm: programmed rapids");
+    std::ofstream ends = open(dir / "moves.dat",
+                              "move line kind end_x_mm end_y_mm end_z_mm center_x_mm center_y_mm: where each "
+                              "programmed move ends (an arc's centre, nan for a line)");
     std::optional<geom::Vec2> feed_end, rapid_end;
     geom::Box box{{1e300, 1e300}, {-1e300, -1e300}};
     for (std::size_t i = 0; i < in.moves.size(); ++i) {
         if (i > 0 && metrics::same_programmed_move(in.moves[i - 1], in.moves[i])) continue;  // chords of one arc
         const geom::Segment& seg = in.moves[i].path;
+        const metrics::ProgrammedEnd e = metrics::programmed_end(in.moves[i]);
+        ends << (in.moves[i].programmed >= 0 ? in.moves[i].programmed + 1 : in.moves[i].index) << ' '
+             << in.moves[i].line << ' ' << metrics::to_string(e.kind) << ' ' << num(e.x_mm) << ' ' << num(e.y_mm) << ' '
+             << num(e.z_mm) << ' ' << num(e.center_x_mm.value_or(std::nan(""))) << ' '
+             << num(e.center_y_mm.value_or(std::nan(""))) << '\n';
         std::ofstream& out = in.moves[i].rapid ? rapid : feed;
         std::optional<geom::Vec2>& end = in.moves[i].rapid ? rapid_end : feed_end;
         if (end && !same_point(*end, seg.start)) out << '\n';

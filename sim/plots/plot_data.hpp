@@ -13,6 +13,8 @@ namespace cnc::sim {
 
 // Files in `dir` (created):
 //   program.dat, rapids.dat   x_mm y_mm: the programmed feed moves and rapids, one block per connected piece
+//   moves.dat                 move line kind end_x_mm end_y_mm end_z_mm center_x_mm center_y_mm: each programmed
+//                             move's end as the report's moves give it (kind rapid, line, arc_cw, arc_ccw)
 //   tool.dat                  t_s x_mm y_mm travel_mm contour_um following_um, per tool sample (thinned to the
 //                             worst contour error per window on long jobs)
 //   tool_zoom.dat             x_mm y_mm: the same path thinned ten times less, for the zoom panels

@@ -8,7 +8,7 @@ namespace cnc::sim {
 CommandedMoves::CommandedMoves(const host::MachineModel& machine, geom::Vec2 start_mm)
     : m_mm_per_step_x(machine.x.mm_per_step()), m_mm_per_step_y(machine.y.mm_per_step()), m_start_mm(start_mm) {}
 
-metrics::MoveSpec CommandedMoves::next(const host::MotionSegment& seg, const geom::Segment* programmed_path) {
+metrics::MoveSpec CommandedMoves::next(const host::MotionSegment& seg, const host::ProgrammedMove* programmed_move) {
     metrics::MoveSpec m;
     m.index = seg.index;
     m.line = seg.line;
@@ -18,9 +18,10 @@ metrics::MoveSpec CommandedMoves::next(const host::MotionSegment& seg, const geo
     m_at_y += seg.steps_y;
     m.to_mm = m_start_mm +
               geom::Vec2{static_cast<double>(m_at_x) * m_mm_per_step_x, static_cast<double>(m_at_y) * m_mm_per_step_y};
-    const bool programmed = programmed_path != nullptr && seg.move >= 0;
+    const bool programmed = programmed_move != nullptr && seg.move >= 0;
     m.programmed = programmed ? seg.move : -1;
-    m.path = programmed ? *programmed_path : geom::Segment::line(m.from_mm, m.to_mm);
+    m.path = programmed ? programmed_move->path : geom::Segment::line(m.from_mm, m.to_mm);
+    m.z_end_mm = programmed ? programmed_move->z_end_mm : 0.0;
     m.feed_mm_per_min = seg.path_feed_mm_per_min;
     m.rapid = seg.motion == host::MotionKind::Rapid;
     m.steps = {seg.steps_x, seg.steps_y};
@@ -42,8 +43,7 @@ std::vector<metrics::MoveSpec> commanded_moves(const host::Program* program,
     moves.reserve(segments.size());
     for (const host::MotionSegment& seg : segments) {
         const bool programmed = program != nullptr && seg.move >= 0;
-        moves.push_back(
-            source.next(seg, programmed ? &program->moves[static_cast<std::size_t>(seg.move)].path : nullptr));
+        moves.push_back(source.next(seg, programmed ? &program->moves[static_cast<std::size_t>(seg.move)] : nullptr));
     }
     return moves;
 }

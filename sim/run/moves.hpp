@@ -16,9 +16,9 @@ namespace cnc::sim {
 class CommandedMoves {
 public:
     CommandedMoves(const host::MachineModel& machine, geom::Vec2 start_mm);
-    // The next executed segment's move. `programmed_path` is the path of the programmed move it belongs to; null
-    // for a steps-file row, whose path is its own straight line.
-    [[nodiscard]] metrics::MoveSpec next(const host::MotionSegment& seg, const geom::Segment* programmed_path);
+    // The next executed segment's move. `programmed` is the programmed move it belongs to; null for a steps-file
+    // row, whose path is its own straight line.
+    [[nodiscard]] metrics::MoveSpec next(const host::MotionSegment& seg, const host::ProgrammedMove* programmed);
 
 private:
     double m_mm_per_step_x, m_mm_per_step_y;

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include <nlohmann/json.hpp>
+
 #include "architectures/catalog.hpp"
 #include "architectures/registry.hpp"
 #include "metrics/metrics.hpp"

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "host/core/machine.hpp"
-#include "mechanics/core/axis_integrator.hpp"
 #include "mechanics/core/axis_ode.hpp"
+#include "mechanics/core/integrator_tolerances.hpp"
 #include "scenario/key_reader.hpp"
 
 namespace cnc::sim {

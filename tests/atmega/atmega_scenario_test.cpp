@@ -2,6 +2,7 @@
 // against the seed 003 numbers. The checks that work a position out of step counts set mechanics.model=ideal: a
 // carriage that moves one microstep per step, so the firmware's counting alone decides where the tool is.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdint>

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """One corpus job through `cncsim run` on one architecture, checked from outside the interpreter.
 
-lenient: exit 0, a report marked ok and under 5 MB, and the report's "ignored by this machine" list equal, word by word and line
+lenient: exit 0, a report marked ok and of bounded size, the programmed moves' end points, kinds and arc centres
+equal to those this script's second reader (tests/data/gcode-corpus/check_corpus.py, Machine) finds, to 1e-9 mm,
+one record per XY move; and the report's "ignored by this machine" list equal, word by word and line
 by line, to what this script finds by its own reading of the file (the words docs/gcode.md lists as
 ignored: T D H O M6 M7-M9 M100-M199 G40-G42 G43 G49 G80 G97 G18 G19, '%' lines and '/' block-delete lines).
 strict: exit 2 when the file has any such word, with every one of them named in the message; exit 0 otherwise.
@@ -9,10 +11,14 @@ strict: exit 2 when the file has any such word, with every one of them named in 
 Usage: corpus_run.py CNCSIM JOB ARCH lenient|strict WORKDIR
 """
 import json
+import math
 import os
 import re
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "gcode-corpus"))
+from check_corpus import Machine  # noqa: E402
 
 WORD = re.compile(r"([A-Z])([-+]?(?:\d+\.?\d*|\.\d+))")
 IGNORED_G = {"G40", "G41", "G42", "G41.1", "G42.1", "G43", "G43.1", "G43.2", "G49", "G80", "G97", "G18", "G19"}
@@ -57,6 +63,37 @@ def expected_ignored(path):
     return found
 
 
+def programmed_end_failures(job, report):
+    """The report's programmed moves against the moves check_corpus.py's Machine reads from the file."""
+    machine = Machine(1200.0, False)
+    with open(job, encoding="utf-8") as f:
+        for n, line in enumerate(f.read().splitlines(), start=1):
+            machine.block(line, n)
+    # cncsim's XY moves: an arc, or a line whose XY part is longer than 1e-9 mm (a Z-only move is a host wait).
+    want = [e for e in machine.ends
+            if e[3] is not None or math.hypot(e[2]["X"] - e[1]["X"], e[2]["Y"] - e[1]["Y"]) > 1e-9]
+    moves = report["metrics"]["moves"]
+    failures = []
+    if len(moves["index"]) != report["gcode"]["moves"]:
+        failures.append("%d move records for gcode.moves %d" % (len(moves["index"]), report["gcode"]["moves"]))
+    if len(moves["index"]) != len(want):
+        failures.append("%d move records, the file has %d XY moves" % (len(moves["index"]), len(want)))
+        return failures
+    for k, (kind, _, end, centre, line) in enumerate(want):
+        got = (moves["kind"][k], moves["end_x_mm"][k], moves["end_y_mm"][k], moves["end_z_mm"][k])
+        bad = got[0] != kind or any(abs(a - b) > 1e-9 for a, b in zip(got[1:], (end["X"], end["Y"], end["Z"])))
+        if centre is not None:
+            bad = bad or any(abs(a - b) > 1e-9 for a, b in zip((moves["center_x_mm"][k], moves["center_y_mm"][k]),
+                                                               centre))
+        elif moves["center_x_mm"][k] is not None:
+            bad = True
+        if bad or moves["line"][k] != line:
+            failures.append("move %d (line %d): report %s, centre %s; file %s %s, centre %s" %
+                            (k + 1, line, got, (moves["center_x_mm"][k], moves["center_y_mm"][k]), kind, end, centre))
+            break
+    return failures
+
+
 def main():
     cncsim, job, arch, policy, workdir = sys.argv[1:6]
     os.makedirs(workdir, exist_ok=True)
@@ -88,9 +125,11 @@ def main():
                     failures.append("count of %s is %d for %d lines" % (w["word"], w["count"], len(w["lines"])))
             if r["gcode"]["moves"] == 0:
                 failures.append("no XY move was run")
-            # The default report stays small whatever the job's length: under 5 MB.
-            if os.path.getsize(report) >= 5 * 1024 * 1024:
-                failures.append("default report is %d bytes, not under 5 MB" % os.path.getsize(report))
+            # The default report grows with the job by its per-move columns only: under 1 MB and 160 bytes a move.
+            bound = 1024 * 1024 + 160 * r["gcode"]["moves"]
+            if os.path.getsize(report) >= bound:
+                failures.append("default report is %d bytes, not under %d" % (os.path.getsize(report), bound))
+            failures += programmed_end_failures(job, r)
     else:
         want = 2 if expected else 0
         if run.returncode != want:

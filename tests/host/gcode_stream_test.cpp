@@ -15,10 +15,10 @@ namespace {
 using test::bad_input_message;
 using test::expect_point;
 
-// Every line ending the reader knows (LF, CR LF, a lone CR) after a byte-order mark, a dwell, an arc, a Z-only
+// The line endings of files with LF (LF, CR LF, CR CR LF) after a byte-order mark, a dwell, an arc, a Z-only
 // move and an ignored word: 10 lines up to M30, of which 4 make XY moves.
 const std::string kJob =
-    "\xEF\xBB\xBF(job)\nG21 G90 M3 S100\r\nG0 X1 Y1\rG4 P0.5\nG1 X11 F600 T1\nG2 X21 I5\nG1 Z5 F60\n"
+    "\xEF\xBB\xBF(job)\nG21 G90 M3 S100\r\nG0 X1 Y1\r\r\nG4 P0.5\nG1 X11 F600 T1\nG2 X21 I5\nG1 Z5 F60\n"
     "G1 Y11 F1200\n\nM30\nG1 X99\n";
 
 std::vector<ProgrammedMove> streamed(GcodeStream& stream) {

@@ -2,6 +2,11 @@
 // the ignored-word list, each against a position or time worked out by hand from the G-code.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/math_constants.hpp"
 #include "host_test_util.hpp"
 
 namespace cnc::host {
@@ -109,9 +114,10 @@ TEST(HostGcodeWords, PathControlAndLaserStateTravelWithTheMove) {
     EXPECT_DOUBLE_EQ(*p.moves[0].path_control->tolerance_mm, 0.02);
     EXPECT_EQ(p.moves[0].laser_mode, LaserMode::Dynamic);
     EXPECT_TRUE(p.moves[0].laser_intended());
-    EXPECT_EQ(p.moves[1].path_control->mode, PathMode::ExactStop);
+    // LinuxCNC's G-code reference: G61 exact path, G61.1 exact stop.
+    EXPECT_EQ(p.moves[1].path_control->mode, PathMode::ExactPath);
     EXPECT_FALSE(p.moves[1].laser_intended());  // S0
-    EXPECT_EQ(p.moves[2].path_control->mode, PathMode::ExactPath);
+    EXPECT_EQ(p.moves[2].path_control->mode, PathMode::ExactStop);
     EXPECT_FALSE(p.moves[2].laser_intended());  // M5
 }
 
@@ -127,10 +133,43 @@ TEST(HostGcodeWords, IgnoredWordsAreListedOnceWithEveryLine) {
     EXPECT_EQ(p.ignored[2].lines, (std::vector<int>{3, 8}));
 }
 
+// A file without LF ends its lines in CR (classic Mac); in a file with LF, a CR outside CR* LF is blank space.
 TEST(HostGcodeWords, LineEndingsAndByteOrderMark) {
-    const Program cr = run_gcode("\xEF\xBB\xBFG21\rG0 X1\rM5\rG0 X2\r\nG0 X3\n");
+    const Program cr = run_gcode("\xEF\xBB\xBFG21\rG0 X1\rM5\rG0 X2\rG0 X3\r");
     ASSERT_EQ(cr.moves.size(), 3u);
     EXPECT_EQ(cr.moves[2].line, 5);
+    EXPECT_EQ(cr.lines, 5);
+    const Program lf = run_gcode("G0 X1\rY2\r\r\nG0 X3\r\nG0 Y4\n");
+    ASSERT_EQ(lf.moves.size(), 3u);
+    expect_point(lf.moves[0].path.end, 1, 2);
+    EXPECT_EQ(lf.moves[1].line, 2);
+    EXPECT_EQ(lf.moves[2].line, 3);
+}
+
+// RS274/NGC lets a user M code (M100-M199) take P and Q; Marlin's fan code M106 takes P (the fan) and S.
+TEST(HostGcodeWords, PAndQBesideAnIgnoredCodeAreIgnoredWithIt) {
+    const Program p = run_gcode("M100 P100\nG0 X3 M106 P0 S255\nM101 Q2\nM107\n");
+    ASSERT_EQ(p.moves.size(), 1u);
+    std::vector<std::pair<std::string, std::vector<int>>> got;
+    for (const IgnoredWord& w : p.ignored) got.emplace_back(w.word, w.lines);
+    const std::vector<std::pair<std::string, std::vector<int>>> want{{"M100", {1}}, {"P", {1, 2}}, {"M106", {2}},
+                                                                     {"M101", {3}}, {"Q", {3}},    {"M107", {4}}};
+    EXPECT_EQ(got, want);
+    // With nothing on the line to use them, they are errors, as in LinuxCNC.
+    test::expect_gcode_error("G1 X1 F100 P3\n", {"t.nc:1:", "P is used only with G2/G3 (turns), G4, G10, G64"});
+    test::expect_gcode_error("G0 X3 Q7\n", {"t.nc:1:", "Q is used only with G64"});
+    InterpreterOptions strict;
+    strict.policy = GcodePolicy::Strict;
+    test::expect_bad_input([&] { run_gcode("M100 P100\n", strict); }, {"'M100'", "'P'"});
+}
+
+// LinuxCNC: "P value should be 1 or greater with G2 or G3", "P value not an integer".
+TEST(HostGcodeWords, ArcTurnsAreAWholeNumberFromOne) {
+    test::expect_gcode_error("G0 X10\nG3 X10 Y0 I-10 P0 F600\n", {"t.nc:2:", "G3 P (turns) must be 1 .. 1000"});
+    test::expect_gcode_error("G0 X10\nG2 X10 Y0 I-10 P1.5 F600\n", {"t.nc:2:", "G2 P (turns) must be a whole number"});
+    const Program modal = run_gcode("G0 X10\nG3 X10 Y0 I-10 F600\nX10 Y0 I-10 P3\n");
+    ASSERT_EQ(modal.moves.size(), 3u);
+    EXPECT_NEAR(modal.moves[2].path.sweep_rad, 3.0 * kTwoPi, 1e-12);
 }
 
 TEST(HostGcodeWords, ArcsOutsideTheXyPlaneAreRefused) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The lathe's plots (docs/plots.md "lathe-sync"), checked against the run's own report.
 
-Runs scenarios/lathe-sync/m6_thread.toml with --plots and --report, then:
+Reads the plots and the report of scenarios/lathe-sync/m6_thread.toml run with --plots and --report (the ctest
+fixture scenario/lathe.m6_outputs), then:
   1. plots.json lists exactly the lathe's two plots, with their titles and axis labels; each SVG is well-formed
      with those texts and each PNG decodes and is not blank (compare_outputs.py's checks).
   2. phase_error.dat holds a block per later pass; over the rows after the settle revolutions its largest |value|
@@ -14,12 +15,10 @@ Runs scenarios/lathe-sync/m6_thread.toml with --plots and --report, then:
      pulse: the INT0 count follows the carriage within one pulse (docs/architectures.md "lathe-sync"), so the
      two curves of a pass part by at most that.
 
-Usage: lathe_plots.py CNCSIM SOURCE_DIR WORKDIR
+Usage: lathe_plots.py M6_OUTPUTS  (m6.json and m6_plots/ of that run)
 """
 import json
 import os
-import shutil
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
@@ -113,17 +112,9 @@ def check_following(data, report):
 
 
 def main():
-    cncsim, source, work = sys.argv[1:4]
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    out = os.path.join(work, "plots")
-    report_path = os.path.join(work, "report.json")
-    cmd = [cncsim, "run", os.path.join(source, "scenarios/lathe-sync/m6_thread.toml"), "--plots", out, "--report",
-           report_path, "--progress", "off"]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        fail(f"{' '.join(cmd)} exited {r.returncode}: {r.stderr}")
-    with open(report_path) as f:
+    outputs = sys.argv[1]
+    out = os.path.join(outputs, "m6_plots")
+    with open(os.path.join(outputs, "m6.json")) as f:
         report = json.load(f)["lathe-sync"]
     with open(os.path.join(out, "plots.json")) as f:
         plots = json.load(f)
@@ -140,7 +131,6 @@ def main():
     apart = check_following(data, report)
     print(f"ok: phase error max {top[3]:+.3f} um (pass {top[1]}, revolution {top[2]:.3f}) as reported; "
           f"firmware count and carriage at most {apart:.3f} motor pulses apart")
-    shutil.rmtree(work)
 
 
 if __name__ == "__main__":

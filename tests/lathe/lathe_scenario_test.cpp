@@ -1,6 +1,7 @@
 // The shipped scenarios/lathe-sync/ runs, one test each, asserting their key numbers against the seed (seed 002 §2.5.3,
 // §4.3, and our arithmetic with them) and the thread's bounds (passes within 2 motor pulses, pitch within 0.1 %).
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The lathe's phase error between passes, read again without the code under test (docs/metrics.md "Lathe").
 
-Runs scenarios/lathe-sync/m6_thread.toml with --vcd, --samples and --report, and finds the passes from the
+Reads the outputs of scenarios/lathe-sync/m6_thread.toml run with --vcd, --samples and --report (the ctest
+fixture scenario/lathe.m6_outputs), and finds the passes from the
 ATmega16's pins alone: a pass starts at the index fall after which OC1A starts switching (doCut starts the PID
 there, seed 002 §2.5.3) and ends when DIR1 == DIR2 (doBrake). The carriage at each spindle pulse comes from the
 samples (taken by the rig at the encoders' edges, at the edge's cycle), the motor pulses from INT0's falls.
@@ -21,7 +22,8 @@ Checks:
      pulses), and the passes end within 2 pulses (the bound of docs/architectures.md "lathe-sync").
   5. With lathe.pulse_isrs = "atomic" the settled phase error stays below 12 pulses.
 
-Usage: phase_from_pins.py CNCSIM SOURCE_DIR WORKDIR
+Usage: phase_from_pins.py CNCSIM SOURCE_DIR M6_OUTPUTS WORKDIR
+(M6_OUTPUTS: m6.vcd, m6_samples.csv and m6.json of that run; WORKDIR: the lathe.pulse_isrs = "atomic" run's report)
 """
 import bisect
 import csv
@@ -141,11 +143,10 @@ def phase_max(passes_x, settle):
 
 
 def main():
-    cncsim, source, work = sys.argv[1:4]
+    cncsim, source, outputs, work = sys.argv[1:5]
     os.makedirs(work, exist_ok=True)
-    vcd, samples_csv = os.path.join(work, "m6.vcd"), os.path.join(work, "m6_samples.csv")
-    report, atomic_report = os.path.join(work, "m6.json"), os.path.join(work, "m6_atomic.json")
-    run(cncsim, source, ["--vcd", vcd, "--samples", samples_csv, "--report", report])
+    vcd, samples_csv = os.path.join(outputs, "m6.vcd"), os.path.join(outputs, "m6_samples.csv")
+    report, atomic_report = os.path.join(outputs, "m6.json"), os.path.join(work, "m6_atomic.json")
     run(cncsim, source, ["--set", "lathe.pulse_isrs=atomic", "--report", atomic_report])
     thread = json.load(open(report))["lathe-sync"]["thread"]
     settle = thread["settle_revolutions"]

@@ -1,6 +1,7 @@
 // analyze --commanded: the rate segments a run writes into its report are read back exactly, a report holding only
 // moves gives a segment per move from its first STEP edge, and a report that cannot serve is refused by name.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <string>
 

@@ -44,6 +44,14 @@ std::vector<MoveMetrics> varied_moves(std::size_t n) {
         m.path.following_rms_um = x / 2.0;
         if (i % 5 != 4) m.path.endpoint_vs_command_um = x * 0.25;
         if (i % 8 == 0) m.path.endpoint_vs_program_um = 1e-9 * x;
+        m.programmed.kind = static_cast<ProgrammedKind>(i % 4);
+        m.programmed.x_mm = x * 3.0;
+        m.programmed.y_mm = -x;
+        m.programmed.z_mm = i % 2 == 0 ? 0.0 : x / 3.0;
+        if (i % 4 >= 2) {
+            m.programmed.center_x_mm = x + 0.5;
+            m.programmed.center_y_mm = -x - 0.25;
+        }
         out.push_back(m);
     }
     return out;
@@ -72,6 +80,12 @@ void expect_same(const MoveMetrics& got, const MoveMetrics& want) {
     EXPECT_EQ(got.path.following_rms_um, want.path.following_rms_um);
     EXPECT_EQ(got.path.endpoint_vs_command_um, want.path.endpoint_vs_command_um);
     EXPECT_EQ(got.path.endpoint_vs_program_um, want.path.endpoint_vs_program_um);
+    EXPECT_EQ(got.programmed.kind, want.programmed.kind);
+    EXPECT_EQ(got.programmed.x_mm, want.programmed.x_mm);
+    EXPECT_EQ(got.programmed.y_mm, want.programmed.y_mm);
+    EXPECT_EQ(got.programmed.z_mm, want.programmed.z_mm);
+    EXPECT_EQ(got.programmed.center_x_mm, want.programmed.center_x_mm);
+    EXPECT_EQ(got.programmed.center_y_mm, want.programmed.center_y_mm);
 }
 
 std::filesystem::path test_dir(const std::string& name) {
@@ -81,7 +95,7 @@ std::filesystem::path test_dir(const std::string& name) {
     return dir;
 }
 
-// 3,000 rows: several times the write buffer (64 KiB of rows of about 150 B), so most passes read from the file.
+// 3,000 rows: several times the write buffer (64 KiB of rows of about 200 B), so most passes read from the file.
 constexpr std::size_t kMoves = 3000;
 
 TEST(MoveRecords, InMemoryAndSpilledGiveTheSameRowsPassAfterPass) {

@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 
@@ -10,6 +11,32 @@ namespace cnc::metrics {
 namespace {
 
 using test::grid;
+
+// Each kind of programmed move and where it ends, from the piece's programmed path: a chord's parent arc gives its
+// centre and direction, a G0 is a rapid whatever its path.
+TEST(ProgrammedEnd, KindEndAndCentreFromTheProgrammedPath) {
+    MoveSpec arc;
+    arc.path = geom::Segment::arc({10, 0}, {0, 10}, {0, 0}, true);
+    arc.z_end_mm = -1.5;
+    ProgrammedEnd e = programmed_end(arc);
+    EXPECT_STREQ(to_string(e.kind), "arc_ccw");
+    EXPECT_EQ(e.x_mm, arc.path.end.x_mm);
+    EXPECT_EQ(e.y_mm, arc.path.end.y_mm);
+    EXPECT_EQ(e.z_mm, -1.5);
+    EXPECT_EQ(e.center_x_mm, 0.0);
+    EXPECT_EQ(e.center_y_mm, 0.0);
+    arc.path = geom::Segment::arc({10, 0}, {0, -10}, {0, 0}, false);
+    EXPECT_STREQ(to_string(programmed_end(arc).kind), "arc_cw");
+    MoveSpec line;
+    line.path = geom::Segment::line({1, 2}, {3.25, -4.5});
+    e = programmed_end(line);
+    EXPECT_STREQ(to_string(e.kind), "line");
+    EXPECT_EQ(e.x_mm, 3.25);
+    EXPECT_EQ(e.y_mm, -4.5);
+    EXPECT_FALSE(e.center_x_mm.has_value());
+    line.rapid = true;
+    EXPECT_STREQ(to_string(programmed_end(line).kind), "rapid");
+}
 
 RunMetrics seed_example_metrics() {
     // The seed 000 worked example plus a laser that is on only while cutting.

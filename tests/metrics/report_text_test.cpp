@@ -1,6 +1,7 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "metrics/metrics.hpp"
 #include "metrics/report/report.hpp"

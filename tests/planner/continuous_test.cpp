@@ -1,5 +1,6 @@
 // G64 P: no dead time at colinear joins, corners rounded within the tolerance, reversals stop, arcs followed.
 #include <cmath>
+#include <string>
 
 #include "planner_test_util.hpp"
 
@@ -13,21 +14,40 @@ using test::for_each_sample;
 using test::gcode;
 
 TEST(PlannerContinuous, ColinearMovesHaveNoDip) {
-    // Two 50 mm halves of one 100 mm line: crossed at F, and the total time is that of the single move (1.1 s).
+    // Two 50 mm halves of one 100 mm line, crossed at F: up at 1000 mm/s^2 to 100 mm/s in 0.1 s (5 mm); the
+    // program's last move brakes at half that (LinuxCNC), 0.2 s over 10 mm; 85 mm of cruise, 0.85 s: 1.15 s. The
+    // single 100 mm move, the program's last, has 500 mm/s^2 both ways: 0.2 + 0.8 + 0.2 s.
     const Trajectory t = plan(gcode("G1 X50 F6000\nG1 X100\n"), config(BlendMode::Continuous));
     const Trajectory merged = plan(gcode("G1 X100 F6000\n"), config(BlendMode::Continuous));
     ASSERT_EQ(t.pieces().size(), 2u);
     EXPECT_EQ(t.pieces()[0].speed.exit_mm_per_s, 100.0);
-    EXPECT_NEAR(t.duration_s(), merged.duration_s(), 1e-14);
-    EXPECT_NEAR(t.duration_s(), 1.1, 1e-14);
+    EXPECT_NEAR(t.duration_s(), 1.15, 1e-14);
+    EXPECT_NEAR(merged.duration_s(), 1.2, 1e-14);
     const double boundary = t.move_windows()[0].second;
     EXPECT_EQ(boundary, t.move_windows()[1].first);
     EXPECT_EQ(t.at(boundary).path_speed_mm_per_s, 100.0);
     double slowest = 1e9;
     for_each_sample(t, 1e-4, [&](const Sample& s) {
-        if (s.t_s > 0.1 + 1e-9 && s.t_s < 1.0 - 1e-9) slowest = std::min(slowest, s.path_speed_mm_per_s);
+        if (s.t_s > 0.1 + 1e-9 && s.t_s < 0.95 - 1e-9) slowest = std::min(slowest, s.path_speed_mm_per_s);
     });
     EXPECT_NEAR(slowest, 100.0, 1e-9);
+}
+
+// LinuxCNC (tc.c tcGetOverallMaxAccel): a move whose end condition is still a parabolic blend, in G64 with nothing
+// queued after it, has half the acceleration: the program's last move and the last before a dwell; not in G61/G61.1,
+// and not a move that stops for a reason of its own (a change between G0 and a feed move).
+TEST(PlannerContinuous, LastMoveAtHalfTheAcceleration) {
+    const auto accel = [](const std::string& text, std::size_t piece) {
+        return plan(gcode(text), config(BlendMode::Continuous)).pieces().at(piece).speed.limits.accel_mm_per_s2;
+    };
+    EXPECT_DOUBLE_EQ(accel("G1 X10 F6000\n", 0), 500.0);
+    EXPECT_DOUBLE_EQ(accel("G61\nG1 X10 F6000\n", 0), 1000.0);
+    EXPECT_DOUBLE_EQ(accel("G61.1\nG1 X10 F6000\n", 0), 1000.0);
+    EXPECT_DOUBLE_EQ(accel("G1 X10 F6000\nG4 P1\nG1 X20\n", 0), 500.0);
+    EXPECT_DOUBLE_EQ(accel("G1 X10 F6000\nG0 X20\n", 0), 1000.0);
+    EXPECT_DOUBLE_EQ(accel("G1 X10 F6000\nG0 X20\n", 1), 500.0);
+    // An arc: half of its tangential half, 250 mm/s^2.
+    EXPECT_DOUBLE_EQ(accel("G0 X10\nG2 X10 Y0 I-10 F3000\n", 1), 250.0);
 }
 
 TEST(PlannerContinuous, ColinearMovesWithDifferentFeedsJoinAtTheLowerOne) {
@@ -159,7 +179,8 @@ TEST(PlannerContinuous, LookaheadOfOneMoveStopsEverywhere) {
     std::string text = "G1 X1 F6000\n";
     for (int i = 2; i <= 10; ++i) text += "G1 X" + std::to_string(i) + "\n";
     const Program p = gcode(text);
-    PlannerConfig cfg = config(BlendMode::Continuous);
+    // Exact path (G61): the colinear joins crossed, the last move at the whole acceleration.
+    PlannerConfig cfg = config(BlendMode::ExactPath);
     cfg.lookahead_moves = 1;
     EXPECT_NEAR(plan(p, cfg).duration_s(), 10 * 2 * std::sqrt(0.001), 1e-12);
     cfg.lookahead_moves = 10;

@@ -1,5 +1,6 @@
 // Geometry the planner follows (curve.hpp) and the line-line corner blend (corner_blend.hpp).
 #include <cmath>
+#include <limits>
 
 #include "host/core/planner/corner_blend.hpp"
 #include "host/core/planner/curve.hpp"
@@ -69,9 +70,14 @@ TEST(PlannerCurve, CutKeepsTheCentre) {
     EXPECT_DOUBLE_EQ(line.length_mm(), 5.0);
 }
 
+// A goal speed no corner reaches: the blend keeps the largest radius its tolerance allows (LinuxCNC's radius is
+// then sqrt(a_n R_geom)^2 / a_n = R_geom).
+constexpr double kAnySpeed = std::numeric_limits<double>::infinity();
+constexpr double kAccel = 1000.0;
+
 TEST(PlannerBlend, RightAngleClosedForm) {
     // h = 45 deg: R = tol cos(h) / (1 - cos(h)) = 0.05 * 0.7071 / 0.2929 = 0.120711 mm, tangent length R tan(h).
-    const auto b = corner_blend(Curve::line({0, 0}, {20, 0}), Curve::line({20, 0}, {20, 20}), 0.05);
+    const auto b = corner_blend(Curve::line({0, 0}, {20, 0}), Curve::line({20, 0}, {20, 20}), 0.05, kAnySpeed, kAccel);
     ASSERT_TRUE(b.has_value());
     const double r = 0.05 * std::cos(kPi / 4) / (1 - std::cos(kPi / 4));
     EXPECT_NEAR(b->start_radius_mm(), r, 1e-12);
@@ -85,7 +91,8 @@ TEST(PlannerBlend, RightAngleClosedForm) {
 TEST(PlannerBlend, ShortMovesLimitTheRadiusToHalfTheirLength) {
     // 0.1 mm moves: the tangent length may not exceed 0.05 mm, so R = 0.05 / tan(45 deg) and the
     // deviation 0.05 (sqrt(2) - 1) = 0.0207 mm stays under the 0.05 mm tolerance.
-    const auto b = corner_blend(Curve::line({0, 0}, {0.1, 0}), Curve::line({0.1, 0}, {0.1, -0.1}), 0.05);
+    const auto b =
+        corner_blend(Curve::line({0, 0}, {0.1, 0}), Curve::line({0.1, 0}, {0.1, -0.1}), 0.05, kAnySpeed, kAccel);
     ASSERT_TRUE(b.has_value());
     EXPECT_NEAR(b->start_radius_mm(), 0.05, 1e-15);
     EXPECT_NEAR(b->sweep_rad, -kPi / 2, 1e-15);  // right turn: clockwise
@@ -94,15 +101,32 @@ TEST(PlannerBlend, ShortMovesLimitTheRadiusToHalfTheirLength) {
 
 TEST(PlannerBlend, NoBlendForZeroToleranceOrReversal) {
     const Curve a = Curve::line({0, 0}, {10, 0});
-    EXPECT_FALSE(corner_blend(a, Curve::line({10, 0}, {10, 10}), 0.0).has_value());
-    EXPECT_FALSE(corner_blend(a, Curve::line({10, 0}, {0, 0}), 0.05).has_value());
+    EXPECT_FALSE(corner_blend(a, Curve::line({10, 0}, {10, 10}), 0.0, kAnySpeed, kAccel).has_value());
+    EXPECT_FALSE(corner_blend(a, Curve::line({10, 0}, {0, 0}), 0.05, kAnySpeed, kAccel).has_value());
+}
+
+// LinuxCNC blendmath.c blendComputeParameters, by hand. A 90 degree corner of 20 mm lines, tolerance 5 mm
+// (G64 without P: a quarter of a line), goal 50 mm/s, A = 1000 mm/s^2: R_geom = 10 mm (half a line),
+// v = min(sqrt(866 * 10), 50) = 50, t = min(sqrt(1000 * 10), 50) / 500 = 0.1 s, R = max(2500 / 866,
+// min(0.1 * 50 / (pi/2), 10)) = 3.183 mm, which LinuxCNC 2.9 cuts (its path 1.3186 mm from the corner, halsampler
+// data of tests/data/linuxcnc_planner, x1_square_g64). At P0.05 (R_geom 0.1207) the corner is tolerance-bound.
+TEST(PlannerBlend, RadiusAsLinuxCncPlansIt) {
+    const Curve a = Curve::line({0, 0}, {20, 0});
+    const Curve b = Curve::line({20, 0}, {20, 20});
+    const auto quarter = corner_blend(a, b, 5.0, 50.0, kAccel);
+    ASSERT_TRUE(quarter.has_value());
+    EXPECT_NEAR(quarter->start_radius_mm(), 0.1 * 50.0 / (kPi / 2), 1e-12);
+    EXPECT_NEAR(quarter->segment().distance_to({20, 0}), 1.3186, 5e-4);  // sampled every 1 ms at 50 mm/s
+    const auto tight = corner_blend(a, b, 0.05, 50.0, kAccel);
+    ASSERT_TRUE(tight.has_value());
+    EXPECT_NEAR(tight->start_radius_mm(), 0.05 * std::cos(kPi / 4) / (1 - std::cos(kPi / 4)), 1e-12);
 }
 
 TEST(PlannerBlend, LineIntoArcCorner) {
     // Line along +x into a clockwise semicircle whose tangent at the start is +y: a 90 degree corner.
     const Curve a = Curve::line({0, 0}, {10, 0});
     const Curve b = Curve::arc({10, 0}, {20, 0}, {15, 0}, -kPi);
-    const auto blend = corner_blend(a, b, 0.05);
+    const auto blend = corner_blend(a, b, 0.05, kAnySpeed, kAccel);
     ASSERT_TRUE(blend.has_value());
     EXPECT_NEAR(blend->start.y_mm, 0.0, 1e-12);                   // on the line
     EXPECT_NEAR(geom::distance(blend->end, {15, 0}), 5.0, 1e-9);  // on the circle

@@ -72,7 +72,7 @@ TEST(PlannerJerk, SamePathAsTrapezoidalButSlower) {
 TEST(PlannerJerk, LongLineTimesFromTheQuinticRule) {
     // 0 -> 100 mm/s with a = 1000, j = 50000: T = 15/8 * 100 / 1000 = 0.1875 s covering 9.375 mm, twice;
     // 81.25 mm cruise at 100 mm/s.
-    const Trajectory t = plan(gcode("G1 X100 F6000\n"), config(BlendMode::Continuous, Profile::JerkLimited));
+    const Trajectory t = plan(gcode("G1 X100 F6000\n"), config(BlendMode::ExactStop, Profile::JerkLimited));
     EXPECT_NEAR(t.duration_s(), 2 * 0.1875 + 0.8125, 1e-14);
     EXPECT_NEAR(t.at(0.1875 / 2).acc_mm_per_s2.x_mm, 1000.0, 1e-9);
     EXPECT_NEAR(t.at(0.1875).pos_mm.x_mm, 9.375, 1e-12);

@@ -9,9 +9,11 @@ namespace {
 using test::config;
 using test::gcode;
 
+// The profile's arithmetic, in exact stop (G61.1), where a single move has the whole acceleration: in G64 the
+// program's last move has half of it (continuous_test.cpp, LastMoveAtHalfTheAcceleration).
 TEST(PlannerTrapezoid, LongLineExactTimes) {
     // F6000 = 100 mm/s, a = 1000: accelerate v/a = 0.1 s over v^2/2a = 5 mm, cruise 90 mm in 0.9 s, brake 0.1 s.
-    const Trajectory t = plan(gcode("G1 X100 F6000\n"), config(BlendMode::Continuous));
+    const Trajectory t = plan(gcode("G1 X100 F6000\n"), config(BlendMode::ExactStop));
     ASSERT_EQ(t.pieces().size(), 1u);
     const SpeedProfile& sp = t.pieces()[0].speed;
     EXPECT_DOUBLE_EQ(sp.peak_mm_per_s, 100.0);
@@ -42,7 +44,7 @@ TEST(PlannerTrapezoid, ShortLineIsATriangle) {
 
 TEST(PlannerTrapezoid, DiagonalMayExceedTheAxisLimitsAlongThePath) {
     // 45 deg with equal axes: each axis gets v cos45, so the path may go sqrt(2) * 100 mm/s and sqrt(2) * 1000 mm/s^2.
-    const Trajectory t = plan(gcode("G1 X300 Y300 F60000\n"), config(BlendMode::Continuous));
+    const Trajectory t = plan(gcode("G1 X300 Y300 F60000\n"), config(BlendMode::ExactStop));
     const SpeedProfile& sp = t.pieces()[0].speed;
     EXPECT_NEAR(sp.limits.velocity_mm_per_s, 100.0 * std::sqrt(2.0), 1e-12);
     EXPECT_NEAR(sp.limits.accel_mm_per_s2, 1000.0 * std::sqrt(2.0), 1e-9);
@@ -55,7 +57,7 @@ TEST(PlannerTrapezoid, DiagonalMayExceedTheAxisLimitsAlongThePath) {
 
 TEST(PlannerTrapezoid, UnequalAxesTheTighterOneWins) {
     // Direction (0.6, 0.8): v <= min(100/0.6, 50/0.8) = 62.5, a <= min(1000/0.6, 400/0.8) = 500.
-    PlannerConfig cfg = config(BlendMode::Continuous);
+    PlannerConfig cfg = config(BlendMode::ExactStop);
     cfg.y.max_velocity_mm_per_s = 50.0;
     cfg.y.max_accel_mm_per_s2 = 400.0;
     const Trajectory t = plan(gcode("G1 X300 Y400 F60000\n"), cfg);
@@ -66,7 +68,7 @@ TEST(PlannerTrapezoid, UnequalAxesTheTighterOneWins) {
 }
 
 TEST(PlannerTrapezoid, FeedBelowTheAxisLimit) {
-    const Trajectory t = plan(gcode("G1 X50 F1200\n"), config(BlendMode::Continuous));
+    const Trajectory t = plan(gcode("G1 X50 F1200\n"), config(BlendMode::ExactStop));
     EXPECT_DOUBLE_EQ(t.pieces()[0].speed.peak_mm_per_s, 20.0);  // 1200 mm/min
     EXPECT_NEAR(t.duration_s(), 50.0 / 20.0 + 20.0 / 1000.0, 1e-14);
 }

@@ -2,6 +2,7 @@
 // step counts set mechanics.model=ideal: a carriage that moves one microstep per step, so step_gen's staircase
 // alone decides where the tool is.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -30,7 +30,8 @@ TimePs apply_time(TimePs t_ss_rise) {
 // Within each servo period the STEP train is the rate word's period exactly; words change only when a
 // frame arrives (once per servo period); the cruise of a 3200 steps/s move is one word, 15,625 clocks.
 TEST(SpiFpgaConstantRate, StepPeriodIsTheWordsPeriodAndChangesOnlyAtFrames) {
-    const auto out = run_spi("long_x", {"trace.detail=true"});
+    // Exact stop: the move ramps at the whole 1000 mm/s^2 (in G64 the program's last move has half of it).
+    const auto out = run_spi("long_x", {"trace.detail=true", "planner.mode=exact-stop"});
     ASSERT_TRUE(out.ok) << out.failure;
     const auto& x = out.arch.input.axes[0];
     const std::vector<TimePs> rises = x.step.rising();

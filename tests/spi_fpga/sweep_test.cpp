@@ -44,10 +44,12 @@ std::vector<Point> sweep(const std::vector<std::string>& scenarios) {
 
 TEST(SpiFpgaSweep, FollowingErrorGrowsWithTheLatencyBound) {
     const auto pts = sweep({"latency_000us", "latency_020us", "latency_050us", "latency_100us", "latency_200us"});
+    // The max at every step; the RMS over the whole sweep only: a 20 us bound adds about 141 mm/s x its mean
+    // latency (uniform: 10 us) = 1.4 um to the RMS, as much as the draws of one seed move it either way.
     for (std::size_t i = 1; i < pts.size(); ++i) {
         EXPECT_GT(pts[i].following_max_um, pts[i - 1].following_max_um) << i;
-        EXPECT_GT(pts[i].following_rms_um, pts[i - 1].following_rms_um) << i;
     }
+    EXPECT_GT(pts.back().following_rms_um, pts.front().following_rms_um);
     // 200 us of latency at the square's 141 mm/s rapids: about 141 mm/s x 200 us = 28 um more than none
     EXPECT_GT(pts.back().following_max_um - pts.front().following_max_um, 20.0);
 }

@@ -8,12 +8,12 @@
 #include <utility>
 
 #include "common/bad_input.hpp"
+#include "common/math_constants.hpp"
 
 namespace cnc::host {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr std::int64_t kInt32Min = -2147483648LL;  // seed 000 §4.8: StepsX/StepsY are int32
 constexpr std::int64_t kInt32Max = 2147483647LL;
 constexpr double kMaxFeed = 65535.0;  // seed 000 §4.8: FeedRate is uint16, mm/min

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "common/bad_input.hpp"
+#include "common/math_constants.hpp"
 #include "host/core/gcode_lexer.hpp"
 #include "host/core/gcode_words.hpp"
 #include "host/core/text_number.hpp"
@@ -29,6 +30,9 @@ constexpr double kArcToleranceMm = 0.01;
 constexpr double kSamePointMm = 1e-9;
 // RS274/NGC has nine work coordinate systems, G54 .. G59.3 (P1 .. P9 of G10).
 constexpr std::size_t kCoordSystems = 9;
+// Most turns one G2/G3 P may ask for: far beyond any helix a desktop machine cuts (a thread mill makes a few), and it
+// keeps a typing error from making a job of days.
+constexpr int kMaxTurns = 1000;
 // Problems listed in one message before the rest are only counted.
 constexpr std::size_t kMaxListedProblems = 40;
 constexpr const char* kWordTable =
@@ -196,13 +200,13 @@ private:
         m_feed_mm_per_min = f * m_scale * (m_opt.feed_unit == FeedUnit::MmPerSecond ? kSecondsPerMinute : 1.0);
     }
 
-    // G4: P in seconds (RS274/NGC and grbl); S in seconds (Marlin's seconds form) when there is no P.
+    // G4: P in seconds (RS274/NGC and grbl); S in seconds (Marlin's seconds form) when there is no P, the spindle
+    // speed beside P. G4 uses no axis words, so a motion on its line runs after the dwell (RS274/NGC's order of
+    // execution: dwell before motion).
     void do_dwell(const BlockWords& b) {
-        if (b.p && b.s) throw BadInput(m_where, "G4 takes P (seconds) or S (seconds), not both");
         const std::optional<double> t = b.p ? b.p : b.s;
         if (!t) throw BadInput(m_where, "G4 needs P (dwell time in seconds)");
         if (!(*t >= 0.0)) throw BadInput(m_where, "G4 dwell time must be >= 0 s");
-        if (b.motion) throw BadInput(m_where, "G4 and a motion word on the same line");
         wait(*t, WaitCause::Dwell);
     }
 
@@ -218,22 +222,41 @@ private:
 
     void set_path_mode(const BlockWords& b) {
         PathControl pc;
-        pc.mode = *b.path_mode == 610   ? PathMode::ExactStop
-                  : *b.path_mode == 611 ? PathMode::ExactPath
+        pc.mode = *b.path_mode == 610   ? PathMode::ExactPath
+                  : *b.path_mode == 611 ? PathMode::ExactStop
                                         : PathMode::Blend;
         if (b.p) {
-            if (pc.mode != PathMode::Blend) throw BadInput(m_where, "P is the G64 blend tolerance: not with G61");
+            if (pc.mode != PathMode::Blend)
+                throw BadInput(m_where, "P is the G64 blend tolerance: not with G61 or G61.1");
             if (!(*b.p >= 0.0)) throw BadInput(m_where, "G64 P (path tolerance) must be >= 0");
             pc.tolerance_mm = *b.p * m_scale;
         }
         m_path_control = pc;
     }
 
-    // Words that only G4, G10 and G64 use, left over on a line without them.
-    void check_unused(const BlockWords& b) const {
+    // Words that only some codes use, left over on a line without them. An ignored code (a user M code, a coolant
+    // or tool word) takes P and Q as RS274/NGC allows, and they are ignored with it.
+    void check_unused(const BlockWords& b) {
         if (b.l) throw BadInput(m_where, "L is used only with G10");
-        if (b.p && !b.path_mode && !b.non_modal) throw BadInput(m_where, "P is used only with G4, G10 and G64");
-        if (b.q && !b.path_mode) throw BadInput(m_where, "Q is used only with G64");
+        if (b.p && !b.path_mode && !b.non_modal && !arc_block(b)) {
+            parameter_of_ignored_code('P', b, "G2/G3 (turns), G4, G10, G64");
+        }
+        if (b.q && !b.path_mode) parameter_of_ignored_code('Q', b, "G64");
+    }
+
+    void parameter_of_ignored_code(char letter, const BlockWords& b, const std::string& users) {
+        if (!b.ignored_code) {
+            throw BadInput(m_where, std::string(1, letter) + " is used only with " + users +
+                                        " and the codes this machine ignores (M100-M199 among them)");
+        }
+        ignore({std::string(1, letter), "parameter of an ignored code on the same line"});
+    }
+
+    // A G2/G3 move on this line: the motion word, or the motion mode in force with axis or arc words.
+    bool arc_block(const BlockWords& b) const {
+        const std::optional<MotionKind> kind =
+            b.motion ? std::optional(static_cast<MotionKind>(*b.motion / 10)) : m_motion;
+        return kind && (*kind == MotionKind::ArcCW || *kind == MotionKind::ArcCCW);
     }
 
     void non_modal(const BlockWords& b) {
@@ -427,7 +450,17 @@ private:
         }
         geom::Segment path = geom::Segment::arc(m_pos, target, center, ccw);
         path.end = target;
+        path.sweep_rad += (ccw ? kTwoPi : -kTwoPi) * (turns(b, g) - 1);
         return path;
+    }
+
+    // G2/G3 P: the number of turns, the programmed arc being the last (LinuxCNC; P1 is the plain arc).
+    int turns(const BlockWords& b, const std::string& g) const {
+        if (!b.p) return 1;
+        if (*b.p != std::floor(*b.p)) throw BadInput(m_where, g + " P (turns) must be a whole number");
+        if (*b.p < 1.0 || *b.p > kMaxTurns)
+            throw BadInput(m_where, g + " P (turns) must be 1 .. " + std::to_string(kMaxTurns));
+        return static_cast<int>(*b.p);
     }
 
     // R form (LinuxCNC/Fanuc): the centre lies on the perpendicular bisector of start-end; R > 0 picks the arc
@@ -508,10 +541,13 @@ double Program::wait_s_between(std::size_t first, std::size_t last) const {
     return s;
 }
 
-// Lines end in LF, CR LF or a lone CR (classic Mac files); a UTF-8 byte-order mark at the start is skipped.
+// Lines end in LF, with any CRs before it (CR LF, and the CR CR LF some CAM exports write): one line end each. A file
+// with no LF at all (classic Mac) ends its lines in CR; in a file with LF, a CR elsewhere is blank space, as
+// LinuxCNC's rs274 reads it. A UTF-8 byte-order mark at the start is skipped.
 class GcodeStream::LineReader {
 public:
-    LineReader(std::istream& in, std::string filename) : m_in(in), m_file(std::move(filename)) {}
+    LineReader(std::istream& in, std::string filename)
+        : m_in(in), m_file(std::move(filename)), m_cr_ends_line(!has_line_feed(in)) {}
 
     // The next line without its ending; false at the end of the text.
     bool read(std::string& line) {
@@ -519,12 +555,11 @@ public:
         std::streambuf& buf = *m_in.rdbuf();
         bool ended = false;
         for (int c = buf.sbumpc(); c != std::char_traits<char>::eof(); c = buf.sbumpc()) {
-            if (c == '\n' || c == '\r') {
-                if (c == '\r' && buf.sgetc() == '\n') buf.sbumpc();
+            if (c == '\n' || (c == '\r' && m_cr_ends_line)) {
                 ended = true;
                 break;
             }
-            line.push_back(static_cast<char>(c));
+            line.push_back(c == '\r' ? ' ' : static_cast<char>(c));
         }
         if (m_in.bad()) throw BadInput(m_file, "read error");
         if (m_first && line.rfind(kByteOrderMark, 0) == 0)
@@ -534,9 +569,28 @@ public:
     }
 
 private:
+    // Looks ahead for an LF and goes back to where the text starts. A stream that cannot go back (a pipe) is
+    // taken to end its lines in LF: CR-only text is then one line.
+    static bool has_line_feed(std::istream& in) {
+        const std::istream::pos_type start = in.tellg();
+        if (start == std::istream::pos_type(-1)) return true;
+        std::streambuf& buf = *in.rdbuf();
+        bool found = false;
+        for (int c = buf.sbumpc(); c != std::char_traits<char>::eof(); c = buf.sbumpc()) {
+            if (c == '\n') {
+                found = true;
+                break;
+            }
+        }
+        in.clear();
+        in.seekg(start);
+        return found;
+    }
+
     static constexpr const char* kByteOrderMark = "\xEF\xBB\xBF";
     std::istream& m_in;
     std::string m_file;
+    bool m_cr_ends_line;
     bool m_first = true;
 };
 

@@ -29,7 +29,7 @@ enum class GcodePolicy { Lenient, Strict };
 // M5 off, M3 constant power, M4 grbl's dynamic power (scaled with the speed).
 enum class LaserMode { Off, Constant, Dynamic };
 
-// G61 exact stop, G61.1 exact path, G64 blending (P: the path tolerance).
+// G61 exact path, G61.1 exact stop, G64 blending (P: the path tolerance), as LinuxCNC's G-code reference names them.
 enum class PathMode { ExactStop, ExactPath, Blend };
 
 struct PathControl {

@@ -52,6 +52,11 @@ const char* ignored_g_reason(Code10 c) {
     return nullptr;
 }
 
+void ignore_code(BlockWords& b, const std::string& code, const char* reason) {
+    b.ignored.push_back({code, reason});
+    if (!b.ignored_code) b.ignored_code = code;
+}
+
 void g_word(BlockWords& b, const GcodeWord& w, Code10 c, const std::string& where) {
     if (c <= 30 && c % 10 == 0) return set_once(b.motion, c, w, "motion (G0 G1 G2 G3)", where);
     if (in(c, {170, 180, 190})) return set_once(b.plane, c, w, "plane (G17 G18 G19)", where);
@@ -66,10 +71,7 @@ void g_word(BlockWords& b, const GcodeWord& w, Code10 c, const std::string& wher
     if (in(c, {40, 100, 280, 281, 300, 301, 530, 920, 921, 922, 923})) {
         return set_once(b.non_modal, c, w, "non-modal (G4 G10 G28 G30 G53 G92)", where);
     }
-    if (const char* reason = ignored_g_reason(c)) {
-        b.ignored.push_back({canonical('G', c), reason});
-        return;
-    }
+    if (const char* reason = ignored_g_reason(c)) return ignore_code(b, canonical('G', c), reason);
     b.unsupported.push_back(canonical('G', c));
 }
 
@@ -77,10 +79,10 @@ void m_word(BlockWords& b, const GcodeWord& w, Code10 c, const std::string& wher
     if (in(c, {30, 40, 50})) return set_once(b.laser, c, w, "laser (M3 M4 M5)", where);
     if (in(c, {0, 10, 20, 300, 600})) return set_once(b.stop, c, w, "stop (M0 M1 M2 M30 M60)", where);
     const std::string text = canonical('M', c);
-    if (c == 60) return b.ignored.push_back({text, "tool change: the machine has one tool"});
-    if (in(c, {70, 80, 90})) return b.ignored.push_back({text, "coolant: the machine has none"});
+    if (c == 60) return ignore_code(b, text, "tool change: the machine has one tool");
+    if (in(c, {70, 80, 90})) return ignore_code(b, text, "coolant: the machine has none");
     if (c >= 1000 && c <= 1990 && c % 10 == 0) {
-        return b.ignored.push_back({text, "user-defined M code (M100-M199): nothing is attached to it"});
+        return ignore_code(b, text, "user-defined M code (M100-M199): nothing is attached to it");
     }
     b.unsupported.push_back(text);
 }

@@ -31,7 +31,8 @@ struct BlockWords {
     std::optional<Code10> stop;          // M0 M1 M60 (pause), M2 M30 (end)
     std::optional<double> x, y, z, a, e, i, j, r, f, p, q, s, l;
     std::vector<IgnoredUse> ignored;
-    std::vector<std::string> unsupported;  // word texts
+    std::optional<std::string> ignored_code;  // the first ignored G or M code: RS274/NGC lets it take P and Q
+    std::vector<std::string> unsupported;     // word texts
 };
 
 // BadInput(where, ...) for two words of one modal group, a letter given twice or a G/M number that is not a

@@ -5,8 +5,16 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
+
+#include <boost/numeric/odeint.hpp>
+#include <boost/numeric/odeint/external/eigen/eigen.hpp>
 
 namespace cnc::mech {
+
+struct AxisIntegrator::Dopri5
+    : boost::numeric::odeint::runge_kutta_dopri5<AxisState, double, AxisState, double,
+                                                 boost::numeric::odeint::vector_space_algebra> {};
 
 namespace {
 
@@ -63,7 +71,10 @@ double mode_switch_time_s(const Margin& margin, double t0, double m0, double t1,
 }  // namespace
 
 AxisIntegrator::AxisIntegrator(const AxisParams& params, const IntegratorTolerances& tol)
-    : m_ode(params), m_tol(tol), m_dt_s(std::min(1e-6, tol.max_step_s)) {}
+    : m_ode(params), m_tol(tol), m_stepper(std::make_unique<Dopri5>()), m_dt_s(std::min(1e-6, tol.max_step_s)) {}
+
+AxisIntegrator::~AxisIntegrator() = default;
+AxisIntegrator::AxisIntegrator(AxisIntegrator&&) noexcept = default;
 
 void AxisIntegrator::set_setpoints(const AxisSetpoints& sp) {
     m_ode.set_setpoints(sp);
@@ -106,7 +117,7 @@ AxisState AxisIntegrator::state_in_step(double t_s) const {
     if (t_s == m_front_t_s) return m_front_x;
     const Step& s = *m_last;
     AxisState y;
-    m_stepper.calc_state(t_s, y, s.y0, s.dy0, s.t0_s, s.y1, s.dy1, s.t1_s);
+    m_stepper->calc_state(t_s, y, s.y0, s.dy0, s.t0_s, s.y1, s.dy1, s.t1_s);
     s.frame.leave(t_s, y);
     return y;
 }
@@ -144,7 +155,7 @@ void AxisIntegrator::step() {
         AxisState y1;
         AxisState dy1;
         AxisState err;
-        m_stepper.do_step(std::cref(frame), y0, dy0, t0, y1, dy1, dt, err);  // odeint copies a system per call
+        m_stepper->do_step(std::cref(frame), y0, dy0, t0, y1, dy1, dt, err);  // odeint copies a system per call
         const double ratio = error_ratio(err, y0, dy0, dt, m_tol);
         if (ratio > 1.0) {
             m_dt_s = m_step_control.next_step_s(dt, ratio);

@@ -19,26 +19,21 @@
 // (Dormand-Prince's first-same-as-last stage) until the set-points or the state change.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
-
-#include <boost/numeric/odeint.hpp>
-#include <boost/numeric/odeint/external/eigen/eigen.hpp>
 
 #include "mechanics/core/axis_ode.hpp"
 #include "mechanics/core/current_frame.hpp"
+#include "mechanics/core/integrator_tolerances.hpp"
 #include "mechanics/core/step_size_control.hpp"
 
 namespace cnc::mech {
 
-struct IntegratorTolerances {
-    double abs_tol = 1e-8;     // per step, in the state's SI units (A, rad, rad/s, m, m/s)
-    double rel_tol = 1e-4;     // the reports change by < 0.03 um against 1e-5 (docs/mechanics.md)
-    double max_step_s = 1e-3;  // never step further than this, so the step control sees every transient
-};
-
 class AxisIntegrator {
 public:
     explicit AxisIntegrator(const AxisParams& params, const IntegratorTolerances& tol = {});
+    ~AxisIntegrator();
+    AxisIntegrator(AxisIntegrator&&) noexcept;
 
     // Integrates from the current time to t_s (no-op if t_s is not later).
     void advance_to(double t_s);
@@ -54,8 +49,8 @@ public:
     [[nodiscard]] std::int64_t steps_taken() const { return m_steps; }
 
 private:
-    using Dopri5 = boost::numeric::odeint::runge_kutta_dopri5<AxisState, double, AxisState, double,
-                                                              boost::numeric::odeint::vector_space_algebra>;
+    // Boost.Odeint's runge_kutta_dopri5, defined where it is used: odeint is the heaviest header of the build.
+    struct Dopri5;
 
     [[nodiscard]] bool converged() const;
     // Continues from state x at time t, in the modes of x (`angle`: the rotor angle of x, if known from the
@@ -70,7 +65,7 @@ private:
 
     AxisOde m_ode;
     IntegratorTolerances m_tol;
-    Dopri5 m_stepper;
+    std::unique_ptr<Dopri5> m_stepper;  // keeps the stages of the last step for its dense output
     // The state the caller sees, at the time it last asked for.
     AxisState m_x = AxisState::Zero();
     double m_t_s = 0.0;

@@ -5,12 +5,11 @@
 #include <string>
 
 #include "common/bad_input.hpp"
+#include "common/math_constants.hpp"
 
 namespace cnc::mech {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 void require(bool ok, const char* what, double v) {
     if (!ok) throw BadInput("", std::string(what) + " (got " + std::to_string(v) + ")");

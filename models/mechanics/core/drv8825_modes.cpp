@@ -4,12 +4,11 @@
 #include <string>
 
 #include "common/bad_input.hpp"
+#include "common/math_constants.hpp"
 
 namespace cnc::mech {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Floor division for negative positions too.
 std::int64_t floor_div(std::int64_t a, std::int64_t b) {

@@ -4,13 +4,13 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "common/math_constants.hpp"
 #include "mechanics/core/drv8825_modes.hpp"
 
 namespace cnc::mech {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadToDeg = 180.0 / kPi;
 constexpr int kFullStepsPerElectricalPeriod = 4;  // two-phase motor: 4 x 90 electrical deg
 // A slip counts once the rotor is past the unstable equilibrium, half a period from its own, by this much more: a

@@ -6,6 +6,7 @@
 
 #include <boost/numeric/odeint.hpp>
 
+#include "common/math_constants.hpp"
 #include "mechanics/core/drv8825_modes.hpp"
 #include "mechanics/core/dynamic_axis.hpp"
 
@@ -14,7 +15,6 @@ namespace cnc::mech {
 namespace {
 
 namespace odeint = boost::numeric::odeint;
-constexpr double kPi = 3.14159265358979323846;
 using Currents = std::array<double, 3>;  // i_a, i_b, integral of the torque
 
 // Settling time before the torque is averaged: 8 winding time constants, and at least one period.

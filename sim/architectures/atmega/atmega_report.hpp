@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "architectures/atmega/chord_gaps.hpp"
 #include "architectures/atmega/motion_windows.hpp"

@@ -6,6 +6,8 @@
 #include <iterator>
 #include <limits>
 
+#include <nlohmann/json.hpp>
+
 #include "host/core/packet_codec.hpp"
 
 namespace cnc::sim {

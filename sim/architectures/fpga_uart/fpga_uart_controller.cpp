@@ -8,6 +8,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "architectures/fpga_uart/dead_time.hpp"
 #include "architectures/fpga_uart/fpga_uart.hpp"
@@ -109,7 +110,7 @@ public:
             if (!r.accepted) continue;
             if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
             const MadeSegment made = sent.executed();
-            metrics::MoveSpec m = moves.next(made.seg, made.programmed_path ? &*made.programmed_path : nullptr);
+            metrics::MoveSpec m = moves.next(made.seg, made.programmed ? &*made.programmed : nullptr);
             m.t_begin_ps = clock.at(clock.first_after(r.t_pkt_valid_ps));
             m.t_end_ps = r.t_busy_fall_ps;
             f(std::move(m));
@@ -351,9 +352,7 @@ public:
 
     // The FPGA times everything it drives and drives no EN pin; the CP2102 (uart_rx) starts its frames when USB
     // delivers the bytes.
-    [[nodiscard]] MachinePinClocks pin_clocks() const override {
-        return {m_fpga.clock().grid_hz(), std::nullopt};
-    }
+    [[nodiscard]] MachinePinClocks pin_clocks() const override { return {m_fpga.clock().grid_hz(), std::nullopt}; }
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
         const std::optional<std::int64_t> fpga = m_fpga.clock().grid_hz();
         const Wires& w = m_wires;

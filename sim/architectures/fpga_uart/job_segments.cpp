@@ -25,9 +25,9 @@ std::optional<MadeSegment> JobSegments::next() {
         made.clear();
         m_cam->add(*move, m_next++, made);
         m_pending.assign(made.begin(), made.end());
-        m_path = move->path;
+        m_move = move;
     }
-    MadeSegment out{m_pending.front(), m_path, m_waits->before_unit(static_cast<std::size_t>(m_pending.front().move))};
+    MadeSegment out{m_pending.front(), m_move, m_waits->before_unit(static_cast<std::size_t>(m_pending.front().move))};
     m_pending.pop_front();
     return out;
 }

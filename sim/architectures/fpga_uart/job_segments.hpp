@@ -17,8 +17,8 @@ namespace cnc::sim {
 
 struct MadeSegment {
     host::MotionSegment seg;
-    std::optional<geom::Segment> programmed_path;  // its programmed move's path; none for a steps-file row
-    double wait_before_s = 0.0;                    // the job's host wait before it (dwell, pause, Z move)
+    std::optional<host::ProgrammedMove> programmed;  // its programmed move; none for a steps-file row
+    double wait_before_s = 0.0;                      // the job's host wait before it (dwell, pause, Z move)
 };
 
 // The segments in order. Throws as host::cam() does (a caller that must not fail mid-run reads them all once
@@ -34,9 +34,9 @@ private:
     std::unique_ptr<host::GcodeStream> m_moves;  // G-code: the file, read again
     std::optional<host::CamStream> m_cam;
     std::optional<host::UnitWaitLayer> m_waits;
-    std::deque<host::MotionSegment> m_pending;  // the current programmed move's segments not handed over yet
-    geom::Segment m_path{};                     // the current programmed move's path
-    std::size_t m_next = 0;                     // programmed move, or steps-file row, to read next
+    std::deque<host::MotionSegment> m_pending;   // the current programmed move's segments not handed over yet
+    std::optional<host::ProgrammedMove> m_move;  // the current programmed move
+    std::size_t m_next = 0;                      // programmed move, or steps-file row, to read next
 };
 
 }  // namespace cnc::sim

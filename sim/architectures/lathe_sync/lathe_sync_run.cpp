@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include <nlohmann/json.hpp>
+
 #include "architectures/lathe_sync/lathe_plots.hpp"
 #include "architectures/lathe_sync/lathe_settings.hpp"
 #include "architectures/lathe_sync/lathe_trace.hpp"

@@ -55,6 +55,7 @@ std::vector<metrics::MoveSpec> PlannedMoves::take(const host::servo::TrajectoryC
         m.line = pm.line;
         m.programmed = static_cast<int>(i);
         m.path = pm.path;
+        m.z_end_mm = pm.z_end_mm;
         std::array<std::int64_t, 2> from{};
         std::array<std::int64_t, 2> to{};
         m.from_mm = on_grid(pm.path.start, from);

@@ -1,5 +1,7 @@
 #include "architectures/planner/planner_settings.hpp"
 
+#include <string>
+
 namespace cnc::sim {
 
 void read_planner_settings(KeyReader& r, const host::MachineModel& machine, host::planner::PlannerConfig& c) {
@@ -8,11 +10,14 @@ void read_planner_settings(KeyReader& r, const host::MachineModel& machine, host
                              "(seed 004 §3.2)") == "trapezoidal"
                     ? host::planner::Profile::Trapezoidal
                     : host::planner::Profile::JerkLimited;
-    c.mode = r.get_choice("planner.mode", "continuous", {"continuous", "exact-stop"},
-                          "continuous (G64 P: corners blended within path_tolerance_mm) or exact-stop (G61: rest "
-                          "at every move end; seed 004 §3.2)") == "continuous"
-                 ? host::planner::BlendMode::Continuous
-                 : host::planner::BlendMode::ExactStop;
+    const std::string mode =
+        r.get_choice("planner.mode", "continuous", {"continuous", "exact-path", "exact-stop"},
+                     "until the program sets one: continuous (G64 P: corners blended within path_tolerance_mm), "
+                     "exact-path (G61: a stop at every corner) or exact-stop (G61.1: rest at every move end; seed "
+                     "004 §3.2)");
+    c.mode = mode == "continuous"   ? host::planner::BlendMode::Continuous
+             : mode == "exact-path" ? host::planner::BlendMode::ExactPath
+                                    : host::planner::BlendMode::ExactStop;
     c.path_tolerance_mm = r.get_float("planner.path_tolerance_mm", c.path_tolerance_mm, 0.0, 100.0,
                                       "largest distance of a corner blend from the corner, mm (G64 P); 0: stop");
     c.lookahead_moves = static_cast<int>(

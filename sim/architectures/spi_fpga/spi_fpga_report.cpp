@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "common/rounding.hpp"
 #include "spi/core/spi_frame.hpp"

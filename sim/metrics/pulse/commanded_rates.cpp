@@ -1,5 +1,7 @@
 #include "metrics/pulse/commanded_rates.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "common/bad_input.hpp"
 #include "metrics/pulse/edge_index.hpp"
 

@@ -7,6 +7,8 @@
 #include <ostream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "common/rounding.hpp"
 #include "metrics/metrics.hpp"
 #include "metrics/report/report.hpp"
@@ -148,6 +150,12 @@ const MoveColumn kMoveColumns[] = {
     {"index", false, [](const MoveMetrics& m) { return json(m.index); }},
     {"line", false, [](const MoveMetrics& m) { return json(m.line); }},
     {"rapid", false, [](const MoveMetrics& m) { return json(m.rapid); }},
+    {"kind", false, [](const MoveMetrics& m) { return json(to_string(m.programmed.kind)); }},
+    {"end_x_mm", false, [](const MoveMetrics& m) { return json(m.programmed.x_mm); }},
+    {"end_y_mm", false, [](const MoveMetrics& m) { return json(m.programmed.y_mm); }},
+    {"end_z_mm", false, [](const MoveMetrics& m) { return json(m.programmed.z_mm); }},
+    {"center_x_mm", false, [](const MoveMetrics& m) { return opt(m.programmed.center_x_mm); }},
+    {"center_y_mm", false, [](const MoveMetrics& m) { return opt(m.programmed.center_y_mm); }},
     {"feed_mm_per_min", false, [](const MoveMetrics& m) { return json(rounded(m.feed_mm_per_min, kToThousandths)); }},
     {"pieces", false, [](const MoveMetrics& m) { return json(m.pieces); }, true},
     {"t_first_edge_ps", false, [](const MoveMetrics& m) { return opt(m.t_first_edge_ps); }},

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "metrics/metrics.hpp"
 #include "metrics/report/report.hpp"
 

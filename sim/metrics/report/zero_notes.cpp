@@ -1,5 +1,7 @@
 #include "metrics/report/zero_notes.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace cnc::metrics {
 
 namespace {

@@ -19,7 +19,8 @@ namespace {
 constexpr std::size_t kOptSize = 1 + sizeof(double);
 constexpr std::size_t kFixedSize = 2 * sizeof(std::int32_t) + sizeof(std::uint64_t) + 2 + sizeof(double) +
                                    2 * (1 + sizeof(TimePs)) + 3 * kOptSize + (1 + sizeof(std::size_t)) +
-                                   (1 + sizeof(TimePs)) + sizeof(std::uint64_t) + 5 * kOptSize;
+                                   (1 + sizeof(TimePs)) + sizeof(std::uint64_t) + 5 * kOptSize + 1 +
+                                   3 * sizeof(double) + 2 * kOptSize;
 constexpr std::size_t kPerAxisSize = 2 * sizeof(std::int64_t) + kOptSize;
 constexpr std::size_t kVectorCounts = 3;
 // Rows gathered before a write and read per pread: large enough that a pass costs few system calls, small
@@ -115,6 +116,12 @@ void row_fields(Row& r, Move& m, std::size_t axes) {
     r.field(m.path.following_rms_um);
     r.field(m.path.endpoint_vs_command_um);
     r.field(m.path.endpoint_vs_program_um);
+    r.template as<std::uint8_t>(m.programmed.kind);
+    r.field(m.programmed.x_mm);
+    r.field(m.programmed.y_mm);
+    r.field(m.programmed.z_mm);
+    r.field(m.programmed.center_x_mm);
+    r.field(m.programmed.center_y_mm);
     r.field(m.steps_commanded, axes);
     r.field(m.steps_emitted, axes);
     r.field(m.sync_max_abs_ns, axes);

@@ -81,6 +81,7 @@ class Machine:
         self.arcs = 0
         self.last_code_word = None
         self.extent = {k: [math.inf, -math.inf] for k in "XYZ"}
+        self.ends = []  # each move: (kind, machine start and end points {X, Y, Z}, arc centre (x, y) or None, line)
 
     def where(self, lineno):
         return f"line {lineno}"
@@ -125,6 +126,7 @@ class Machine:
                 self.cut_mm += d
                 self.time_s += d / self.feed * 60.0
             self.moves += 1
+            self.ends.append(("rapid" if rapid else "line", dict(self.pos), t, None, lineno))
         self.pos = t
 
     def arc_move(self, words, cw, lineno):
@@ -166,6 +168,7 @@ class Machine:
         self.time_s += length / self.feed * 60.0
         self.moves += 1
         self.arcs += 1
+        self.ends.append(("arc_cw" if cw else "arc_ccw", dict(self.pos), t, (cx, cy), lineno))
         self.pos = t
 
     def block(self, raw, lineno):

@@ -8,12 +8,12 @@
 #include <fmt/format.h>
 
 #include "common/bad_input.hpp"
+#include "common/math_constants.hpp"
 
 namespace cnc::host::cad2g {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr std::int64_t kCountMax = 0xFFFF;  // STEPH:STEPL and STEPY:STEPVL are 16 bits (seed 003 §5.5)
 // App. A4 MOV STEPL,DXL: a chord's count is 8 bits. Chords are cut for 254 steps of path, so that rounding both
 // ends to the grid (half a step each) keeps every axis within 255.

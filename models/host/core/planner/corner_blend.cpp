@@ -20,6 +20,8 @@ constexpr double kRadiusBracketFactor = 4.0;
 constexpr int kContourSamples = 16;
 constexpr double kRadiusShrink = 0.9;
 constexpr int kMaxShrinks = 60;
+// LinuxCNC blendmath.h BLEND_ACC_RATIO_NORMAL: the centripetal share of a blend's acceleration, sqrt(1 - 0.5^2).
+constexpr double kNormalShare = 0.8660254037844386;
 // Tangency check of a constructed blend (cosine of the angle between the blend's and the curve's tangents).
 constexpr double kMinTangentCos = 1.0 - 1e-9;
 
@@ -151,9 +153,20 @@ bool contour_within(const Curve& blend, const Curve& a, const Curve& b, const Si
     return true;
 }
 
+// LinuxCNC's blend radius out of the largest one (corner_blend.hpp), for a corner of half-turn `half`.
+double planned_radius(double r_geom, double half, double goal_mm_per_s, double accel_mm_per_s2) {
+    const double a_n = kNormalShare * accel_mm_per_s2;
+    const double d_geom = r_geom * std::tan(half);
+    const double v_plan = std::min(std::sqrt(a_n * r_geom), goal_mm_per_s);
+    const double t_blend = std::min(std::sqrt(accel_mm_per_s2 * d_geom), v_plan) / (0.5 * accel_mm_per_s2);
+    const double r_blend = std::min(t_blend * v_plan / (2.0 * half), r_geom);
+    return std::min(r_geom, std::max(v_plan * v_plan / a_n, r_blend));
+}
+
 }  // namespace
 
-std::optional<Curve> corner_blend(const Curve& a, const Curve& b, double tolerance_mm) {
+std::optional<Curve> corner_blend(const Curve& a, const Curve& b, double tolerance_mm, double goal_mm_per_s,
+                                  double accel_mm_per_s2) {
     if (tolerance_mm <= 0.0) return std::nullopt;
     const Vec2 corner = a.end;
     const Vec2 u1 = a.unit_tangent_at(a.length_mm());
@@ -170,9 +183,10 @@ std::optional<Curve> corner_blend(const Curve& a, const Curve& b, double toleran
     const double r_lines = std::min(r_tol, r_len);
     std::optional<Curve> blend;
     if (!a.is_arc && !b.is_arc) {
-        const double d = r_lines * std::tan(half);
+        const double r = planned_radius(r_lines, half, goal_mm_per_s, accel_mm_per_s2);
+        const double d = r * std::tan(half);
         const Vec2 qa = corner - u1 * d;
-        blend = Curve::arc(qa, corner + u2 * d, qa + left_normal(u1) * (sigma * r_lines), sigma * turn);
+        blend = Curve::arc(qa, corner + u2 * d, qa + left_normal(u1) * (sigma * r), sigma * turn);
     } else {
         const Side sa = side_at(a, true, corner);
         const Side sb = side_at(b, false, corner);
@@ -191,6 +205,8 @@ std::optional<Curve> corner_blend(const Curve& a, const Curve& b, double toleran
             lo *= kRadiusShrink;
             blend = i < kMaxShrinks ? blend_of_radius(a, b, sa, sb, lo, sigma, tolerance_mm) : std::nullopt;
         }
+        const double r = blend ? planned_radius(lo, half, goal_mm_per_s, accel_mm_per_s2) : lo;
+        if (blend && r < lo) blend = blend_of_radius(a, b, sa, sb, r, sigma, tolerance_mm);
     }
     if (!blend || blend->length_mm() < kMinBlendMm) return std::nullopt;
     return blend;

@@ -24,7 +24,7 @@ double projected(double limit, double component) {
 
 }  // namespace
 
-PathLimits path_limits(const Curve& curve, double feed_mm_per_s, const PlannerConfig& cfg) {
+PathLimits path_limits(const Curve& curve, double feed_mm_per_s, const PlannerConfig& cfg, bool finalized) {
     if (!curve.is_arc) {
         const geom::Vec2 u = curve.unit_tangent_at(0.0);
         return PathLimits{
@@ -41,7 +41,11 @@ PathLimits path_limits(const Curve& curve, double feed_mm_per_s, const PlannerCo
     const double normal_share = circle ? kNormalShareCircle : kNormalShareSpiral;
     const double stretch = curve.max_stretch();
     const double v_centripetal = std::sqrt(normal_share * a_axis / curve.max_curvature_per_mm());
-    return PathLimits{std::min({feed_mm_per_s, v_axis / stretch, v_centripetal}), kTangentialShare * a_axis / stretch,
+    const double normal_at_v_axis = v_axis * v_axis * curve.max_curvature_per_mm() / a_axis;  // of A
+    const double tangential_share = finalized && circle && normal_at_v_axis < kNormalShareCircle
+                                        ? std::sqrt(1.0 - normal_at_v_axis * normal_at_v_axis)
+                                        : kTangentialShare;
+    return PathLimits{std::min({feed_mm_per_s, v_axis / stretch, v_centripetal}), tangential_share * a_axis / stretch,
                       j_axis / stretch};
 }
 

@@ -17,9 +17,12 @@ struct PathLimits {
 // Arcs: the tangent turns, so the smaller of the two axis limits is used for the whole arc (exact for any arc
 // that passes an axis direction, conservative otherwise), and the acceleration vector is kept inside a circle
 // of that radius A: tangential <= A/2 and centripetal v^2/R <= (sqrt(3)/2) A, so |a| <= A (LinuxCNC's
-// tp split, BLEND_ACC_RATIO_TANGENTIAL/NORMAL). Hence the arc speed cap sqrt((sqrt(3)/2) A R). On a spiral the
-// two parts are not orthogonal, so each gets A/2 (triangle inequality). The jerk limit is along the path only.
+// tp split, BLEND_ACC_RATIO_TANGENTIAL/NORMAL). Hence the arc speed cap sqrt((sqrt(3)/2) A R). A programmed circle
+// with a move queued after it (`finalized`, LinuxCNC tc.c tcUpdateCircleAccRatio and blendmath.c
+// pmCircleActualMaxVel) whose axis speed limit V needs less centripetal acceleration than that, V^2/R < (sqrt(3)/2) A,
+// keeps the rest for the tangent: sqrt(1 - (V^2 / (R A))^2) A. On a spiral the two parts are not orthogonal, so
+// each gets A/2 (triangle inequality). The jerk limit is along the path only.
 // `feed_mm_per_s` is the programmed speed (infinity: no programmed cap).
-PathLimits path_limits(const Curve& curve, double feed_mm_per_s, const PlannerConfig& cfg);
+PathLimits path_limits(const Curve& curve, double feed_mm_per_s, const PlannerConfig& cfg, bool finalized);
 
 }  // namespace cnc::host::planner

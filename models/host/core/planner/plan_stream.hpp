@@ -18,6 +18,12 @@
 
 namespace cnc::host::planner {
 
+// The path control in force at the end of a programmed move (LinuxCNC's segment end condition).
+struct JoinControl {
+    BlendMode mode;
+    std::optional<double> tolerance_mm;  // Continuous: G64 P; none: G64 without P (only the moves' lengths bound it)
+};
+
 class PlanStream {
 public:
     // BadInput for an invalid configuration (validate(cfg, "planner")); `filename` names the job in messages.
@@ -41,14 +47,19 @@ public:
     // After finish(): the host's waits after the last piece.
     [[nodiscard]] double end_hold_s() const { return m_end_hold_s; }
 
-private:
+    // A programmed move the planner keeps (not shorter than 1e-9 mm), as the joins see it.
     struct KeptMove {
         int move;
         Curve curve;
         double feed_mm_per_s;
         double wait_before_s;  // host waits (dwell, pause, Z move) since the kept move before: the tool rests
-        std::pair<BlendMode, double> control;  // path control at its end
+        bool rapid;
+        JoinControl control;       // at its end
+        bool kink_before = false;  // a G61 corner stop at its start / end (plan_stream.cpp, Join::kink)
+        bool kink_after = false;
     };
+
+private:
     // A piece laid out, before its speeds are known.
     struct Draft {
         Curve path;
@@ -64,7 +75,8 @@ private:
     };
 
     void lay_out(const KeptMove& kept, const std::optional<Curve>& after, bool stop_after, const KeptMove* next);
-    void add_draft(Draft d, bool stop_before, int last_move_needed);
+    // `finalized`: a move follows it in the queue (path_limits.hpp); `accel_scale` scales its path acceleration.
+    void add_draft(Draft d, bool stop_before, int last_move_needed, bool finalized, double accel_scale);
     void schedule(bool ended);
 
     PlannerConfig m_cfg;

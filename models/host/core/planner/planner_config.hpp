@@ -1,5 +1,5 @@
 // Trajectory planner settings (seed 004 §3.2-3.3: per-axis limits, trapezoidal or cubic-acceleration profiles,
-// point-to-point or continuous planning with a bounded corner deviation, LinuxCNC G61 / G64 P).
+// point-to-point or continuous planning with a bounded corner deviation, LinuxCNC G61 / G61.1 / G64 P).
 #pragma once
 #include <string>
 
@@ -14,8 +14,10 @@ using AxisLimits = host::AxisLimits;
 // acceleration" profile (acceleration a smooth polynomial, jerk bounded).
 enum class Profile { Trapezoidal, JerkLimited };
 
+// LinuxCNC's path control modes (G-code reference, "G61, G61.1 Exact Path, Exact Stop", "G64 Path Blending").
 enum class BlendMode {
-    ExactStop,   // G61: every programmed move starts and ends at rest (seed 004 §3.2 "point-to-point")
+    ExactStop,   // G61.1: every programmed move starts and ends at rest (seed 004 §3.2 "point-to-point")
+    ExactPath,   // G61: the programmed path exactly, a stop at every corner, tangent joins crossed at speed
     Continuous,  // G64 P: corners rounded by arcs at most path_tolerance_mm from the corner (seed 004 §3.2)
 };
 
@@ -23,7 +25,7 @@ struct PlannerConfig {
     AxisLimits x, y;
     Profile profile = Profile::Trapezoidal;
     BlendMode mode = BlendMode::Continuous;
-    double path_tolerance_mm = 0.05;  // G64 P; 0 makes every non-tangent corner a stop
+    double path_tolerance_mm = 0.05;  // G64 P while the program sets none; 0 makes every non-tangent corner a stop
     int lookahead_moves = 32;         // programmed moves the planner sees ahead (the window must end at rest)
 };
 

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -38,17 +37,20 @@ std::vector<double> numbers(const std::string& args) {
     return v;
 }
 
-// The moving and waiting calls of an rs274 -g listing, in order.
+// The moving and waiting calls of an rs274 -g listing, in order: lines "  12 N..... CALL(ARGS)".
 std::vector<Canon> linuxcnc_calls(const std::string& name) {
     std::ifstream in(data_path(name + ".canon"));
     EXPECT_TRUE(in) << name;
-    static const std::regex kCall(R"(N\.+ (STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|DWELL)\((.*)\))");
     std::vector<Canon> calls;
     for (std::string line; std::getline(in, line);) {
-        std::smatch m;
-        if (!std::regex_search(line, m, kCall)) continue;
-        const std::vector<double> n = numbers(m[2]);
-        Canon c{m[1]};
+        const std::size_t dots = line.find("N..... ");
+        const std::size_t open = line.find('(');
+        if (dots == std::string::npos || open == std::string::npos || line.back() != ')') continue;
+        Canon c{line.substr(dots + 7, open - dots - 7)};
+        if (c.call != "STRAIGHT_TRAVERSE" && c.call != "STRAIGHT_FEED" && c.call != "ARC_FEED" && c.call != "DWELL") {
+            continue;
+        }
+        const std::vector<double> n = numbers(line.substr(open + 1, line.size() - open - 2));
         if (c.call == "DWELL") {
             c.seconds = n.at(0);
         } else if (c.call == "ARC_FEED") {

@@ -26,7 +26,7 @@ std::string data_dir() {
     return std::string(CNC_SOURCE_DIR) + "/tests/data/linuxcnc_planner/";
 }
 
-std::map<std::string, double> linuxcnc_times() {
+std::map<std::string, double> read_linuxcnc_times() {
     std::ifstream in(data_dir() + "times.csv");
     EXPECT_TRUE(in);
     std::map<std::string, double> times;
@@ -36,6 +36,11 @@ std::map<std::string, double> linuxcnc_times() {
         const std::size_t comma = line.find(',');
         times[line.substr(0, comma)] = std::stod(line.substr(comma + 1));
     }
+    return times;
+}
+
+const std::map<std::string, double>& linuxcnc_times() {
+    static const std::map<std::string, double> times = read_linuxcnc_times();
     return times;
 }
 
@@ -50,7 +55,7 @@ double planned_s(const std::string& job) {
 }
 
 void expect_within(const std::string& job, double fraction = kWithinFraction) {
-    const std::map<std::string, double> times = linuxcnc_times();
+    const std::map<std::string, double>& times = linuxcnc_times();
     ASSERT_EQ(times.count(job), 1u) << job;
     const double linuxcnc_s = times.at(job);
     const double ours_s = planned_s(job);

@@ -252,10 +252,14 @@ private:
         ignore({std::string(1, letter), "parameter of an ignored code on the same line"});
     }
 
+    // The motion mode this line moves in: its motion word, else the mode in force.
+    std::optional<MotionKind> motion_of(const BlockWords& b) const {
+        return b.motion ? std::optional(static_cast<MotionKind>(*b.motion / 10)) : m_motion;
+    }
+
     // A G2/G3 move on this line: the motion word, or the motion mode in force with axis or arc words.
     bool arc_block(const BlockWords& b) const {
-        const std::optional<MotionKind> kind =
-            b.motion ? std::optional(static_cast<MotionKind>(*b.motion / 10)) : m_motion;
+        const std::optional<MotionKind> kind = motion_of(b);
         return kind && (*kind == MotionKind::ArcCW || *kind == MotionKind::ArcCCW);
     }
 
@@ -357,7 +361,7 @@ private:
     }
 
     void motion(const BlockWords& b, bool machine_coords) {
-        if (b.motion) m_motion = static_cast<MotionKind>(*b.motion / 10);
+        m_motion = motion_of(b);
         const bool has_axes = b.x || b.y || b.z || b.a || b.e;
         const bool has_arc_words = b.i || b.j || b.r;
         if (!has_axes && !has_arc_words) return;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "host/core/planner/path_limits.hpp"
+
 namespace cnc::host::planner {
 
 using geom::Vec2;
@@ -20,8 +22,6 @@ constexpr double kRadiusBracketFactor = 4.0;
 constexpr int kContourSamples = 16;
 constexpr double kRadiusShrink = 0.9;
 constexpr int kMaxShrinks = 60;
-// LinuxCNC blendmath.h BLEND_ACC_RATIO_NORMAL: the centripetal share of a blend's acceleration, sqrt(1 - 0.5^2).
-constexpr double kNormalShare = 0.8660254037844386;
 // Tangency check of a constructed blend (cosine of the angle between the blend's and the curve's tangents).
 constexpr double kMinTangentCos = 1.0 - 1e-9;
 
@@ -155,7 +155,7 @@ bool contour_within(const Curve& blend, const Curve& a, const Curve& b, const Si
 
 // LinuxCNC's blend radius out of the largest one (corner_blend.hpp), for a corner of half-turn `half`.
 double planned_radius(double r_geom, double half, double goal_mm_per_s, double accel_mm_per_s2) {
-    const double a_n = kNormalShare * accel_mm_per_s2;
+    const double a_n = kNormalShareCircle * accel_mm_per_s2;
     const double d_geom = r_geom * std::tan(half);
     const double v_plan = std::min(std::sqrt(a_n * r_geom), goal_mm_per_s);
     const double t_blend = std::min(std::sqrt(accel_mm_per_s2 * d_geom), v_plan) / (0.5 * accel_mm_per_s2);

@@ -9,9 +9,9 @@ namespace cnc::host::planner {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// LinuxCNC tp (blendmath.h): BLEND_ACC_RATIO_TANGENTIAL 0.5, BLEND_ACC_RATIO_NORMAL sqrt(1 - 0.5^2).
+// LinuxCNC tp (blendmath.h): BLEND_ACC_RATIO_TANGENTIAL 0.5 (the normal share: path_limits.hpp). On a spiral
+// the two are not orthogonal: half each.
 constexpr double kTangentialShare = 0.5;
-constexpr double kNormalShareCircle = 0.8660254037844386;
 constexpr double kNormalShareSpiral = 0.5;
 // Below this relative radius difference an arc counts as a circle: a blend arc's radii differ by rounding only.
 constexpr double kCircleRadiusRelDiff = 1e-9;

@@ -6,6 +6,10 @@
 
 namespace cnc::host::planner {
 
+// LinuxCNC tp (blendmath.h): BLEND_ACC_RATIO_NORMAL, the centripetal share of a circle's acceleration budget,
+// sqrt(1 - BLEND_ACC_RATIO_TANGENTIAL^2) with the tangential share 0.5. Blends (corner_blend.hpp) use it too.
+inline constexpr double kNormalShareCircle = 0.8660254037844386;
+
 struct PathLimits {
     double velocity_mm_per_s;
     double accel_mm_per_s2;  // tangential

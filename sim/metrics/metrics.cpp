@@ -35,7 +35,6 @@ MoveMetrics piece_metrics(const RunInput& in, const EdgeIndex& idx, std::size_t 
     MoveMetrics mm;
     mm.index = spec.index;
     mm.line = spec.line;
-    mm.rapid = spec.rapid;
     mm.feed_mm_per_min = spec.feed_mm_per_min;
     mm.programmed = programmed_end(spec);
     mm.t_first_edge_ps = idx.move_first_edge_ps[m];

@@ -31,7 +31,6 @@ struct MoveMetrics {
     int index = 0;  // programmed move: 1-based in the job (a steps-file row: the row); piece: the piece's own
     int line = 0;
     std::size_t pieces = 1;
-    bool rapid = false;
     double feed_mm_per_min = 0.0;
     std::vector<std::int64_t> steps_commanded;              // [axis]
     std::vector<std::int64_t> steps_emitted;                // [axis] rising edges signed by DIR
@@ -41,6 +40,7 @@ struct MoveMetrics {
     MoveTiming timing;
     MovePath path;
     ProgrammedEnd programmed;
+    [[nodiscard]] bool rapid() const { return programmed.kind == ProgrammedKind::Rapid; }
 };
 
 }  // namespace cnc::metrics

@@ -35,16 +35,43 @@ metrics::MoveSpec CommandedMoves::next(const host::MotionSegment& seg, const hos
     return m;
 }
 
+metrics::MoveSpec CommandedMoves::unstepped(const host::ProgrammedMove& programmed, int move) const {
+    host::MotionSegment seg;
+    seg.index = 0;
+    seg.motion = programmed.kind;
+    seg.path_feed_mm_per_min = programmed.feed_mm_per_min;
+    seg.move = move;
+    seg.line = programmed.line;
+    CommandedMoves here = *this;
+    return here.next(seg, &programmed);
+}
+
+void place_unstepped(metrics::MoveSpec& m, std::optional<TimePs> next_begin_ps, TimePs last_end_ps) {
+    m.t_begin_ps = next_begin_ps ? *next_begin_ps : last_end_ps + 1;
+    m.t_end_ps = m.t_begin_ps;
+}
+
 std::vector<metrics::MoveSpec> commanded_moves(const host::Program* program,
                                                const std::vector<host::MotionSegment>& segments,
                                                const host::MachineModel& machine, geom::Vec2 start_mm) {
     CommandedMoves source(machine, start_mm);
     std::vector<metrics::MoveSpec> moves;
     moves.reserve(segments.size());
+    int next_move = 0;  // the programmed move the next segment should belong to
+    const auto unstepped_until = [&](int move) {
+        for (; next_move < move; ++next_move) {
+            moves.push_back(source.unstepped(program->moves[static_cast<std::size_t>(next_move)], next_move));
+        }
+    };
     for (const host::MotionSegment& seg : segments) {
         const bool programmed = program != nullptr && seg.move >= 0;
+        if (programmed) {
+            unstepped_until(seg.move);
+            next_move = seg.move + 1;
+        }
         moves.push_back(source.next(seg, programmed ? &program->moves[static_cast<std::size_t>(seg.move)] : nullptr));
     }
+    if (program != nullptr) unstepped_until(static_cast<int>(program->moves.size()));
     return moves;
 }
 

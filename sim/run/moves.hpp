@@ -4,6 +4,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "metrics/run_input.hpp"
@@ -19,6 +20,10 @@ public:
     // The next executed segment's move. `programmed` is the programmed move it belongs to; null for a steps-file
     // row, whose path is its own straight line.
     [[nodiscard]] metrics::MoveSpec next(const host::MotionSegment& seg, const host::ProgrammedMove* programmed);
+    // Programmed move number `move` (0-based), too short for one microstep on every axis: it makes no segment, so
+    // no controller runs it, but the metrics record it (docs/metrics.md "Per move"): zero steps where the tool is,
+    // piece index 0, its window to be placed by place_unstepped().
+    [[nodiscard]] metrics::MoveSpec unstepped(const host::ProgrammedMove& programmed, int move) const;
 
 private:
     double m_mm_per_step_x, m_mm_per_step_y;
@@ -26,7 +31,15 @@ private:
     std::int64_t m_at_x = 0, m_at_y = 0;  // step counts before the next segment
 };
 
-// All of them. `program` is null for a steps-file job.
+// A move of unstepped(): piece index 0.
+[[nodiscard]] inline bool is_unstepped(const metrics::MoveSpec& m) { return m.index == 0 && m.programmed >= 0; }
+
+// An unstepped move's window: the instant the next piece begins, so that it owns no STEP edge (the metrics give a
+// piece the edges from its begin to the next piece's); with no piece after it, the instant after the last piece's
+// window ends (`next_begin_ps` none, `last_end_ps` that end).
+void place_unstepped(metrics::MoveSpec& m, std::optional<TimePs> next_begin_ps, TimePs last_end_ps);
+
+// All of them, the unstepped programmed moves among them in program order. `program` is null for a steps-file job.
 std::vector<metrics::MoveSpec> commanded_moves(const host::Program* program,
                                                const std::vector<host::MotionSegment>& segments,
                                                const host::MachineModel& machine, geom::Vec2 start_mm);

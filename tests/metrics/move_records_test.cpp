@@ -23,7 +23,6 @@ std::vector<MoveMetrics> varied_moves(std::size_t n) {
         m.index = k + 1;
         m.line = 3 * k + 7;
         m.pieces = 1 + i % 4;
-        m.rapid = i % 5 == 0;
         m.feed_mm_per_min = 600.0 + x;
         m.steps_commanded = {k * 16, -k};
         m.steps_emitted = i % 7 == 0 ? std::vector<std::int64_t>{k * 16} : std::vector<std::int64_t>{k * 16, 1 - k};
@@ -61,7 +60,6 @@ void expect_same(const MoveMetrics& got, const MoveMetrics& want) {
     EXPECT_EQ(got.index, want.index);
     EXPECT_EQ(got.line, want.line);
     EXPECT_EQ(got.pieces, want.pieces);
-    EXPECT_EQ(got.rapid, want.rapid);
     EXPECT_EQ(got.feed_mm_per_min, want.feed_mm_per_min);
     EXPECT_EQ(got.steps_commanded, want.steps_commanded);
     EXPECT_EQ(got.steps_emitted, want.steps_emitted);

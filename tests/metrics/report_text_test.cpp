@@ -51,7 +51,7 @@ TEST(ReportText, MoveColumnsWrittenFromTheRecordsEqualTheJsonOnes) {
         MoveMetrics mv;
         mv.index = i + 1;
         mv.line = 10 + i;
-        mv.rapid = i == 0;
+        mv.programmed.kind = i == 0 ? ProgrammedKind::Rapid : ProgrammedKind::Line;
         mv.feed_mm_per_min = 1000.0 / 3.0 + i;  // rounded to the thousandth in both
         mv.steps_commanded = {i * 100, -i};
         mv.steps_emitted = {i * 100 - 1, -i};

@@ -213,7 +213,7 @@ public:
         m_pins->read_before(now_ps);
         m_chord_gaps.add_windows(m_pins->windows(), false);
         hand_ended_moves(*feed);
-        if (!m_s.detail) m_pins->drop_windows_before(std::min(m_handed, m_chord_gaps.next_window()));  // --detail
+        if (!m_s.detail) m_pins->drop_windows_before(std::min(m_window, m_chord_gaps.next_window()));  // --detail
         feed->fold(now_ps);
     }
 
@@ -227,12 +227,12 @@ public:
     [[nodiscard]] TimePs job_end_ps(TimePs stop_ps) const override {
         return m_mcu.chip().stop_cycle() ? m_mcu.cycle_ps(*m_mcu.chip().stop_cycle()) : stop_ps;
     }
-    void finish_feed(MetricsFeed& feed) override { hand_ended_moves(feed); }
+    void finish_feed(MetricsFeed& feed) override {
+        hand_ended_moves([&](metrics::MoveSpec m) { feed.add_piece(std::move(m)); }, true);
+    }
     void finish_input(metrics::RunInput& in, bool streamed) override {
         if (streamed) return;
-        for (std::size_t i = 0; i < m_pins->windows().size(); ++i) {
-            in.moves.push_back(executed_move(m_s, m_commanded[i], m_pins->windows()[i]));
-        }
+        hand_ended_moves([&](metrics::MoveSpec m) { in.moves.push_back(std::move(m)); }, true);
     }
     // The STEP pulses the drivers act on (nENBL low), and the DIR and laser edges.
     [[nodiscard]] EdgeLog take_edges(EdgeRecorder&, const std::string& pin) override { return m_pins->hand_over(pin); }
@@ -250,10 +250,28 @@ private:
         read_link_bytes(m_pc, m_cp2102, uart::decision_offset_ps(m_mcu.chip().rx_clock(), m_mcu.chip().rx_format()),
                         [&](std::size_t transfer, TimePs t_ps) { m_chord_gaps.add_byte(transfer, t_ps); });
     }
-    void hand_ended_moves(MetricsFeed& feed) {
-        for (; m_handed < m_pins->windows().size(); ++m_handed) {
-            feed.add_piece(executed_move(m_s, m_commanded[m_handed], m_pins->windows()[m_handed]));
+    // Hands `f` the commanded moves whose motion windows have ended, each with its window, in order; a move too
+    // short for a microstep has none: it waits for the next window's begin, or once the run has ended (`final`)
+    // takes the instant after the last.
+    template <typename F>
+    void hand_ended_moves(F f, bool final) {
+        const auto& windows = m_pins->windows();
+        for (; m_handed < m_commanded.size(); ++m_handed) {
+            metrics::MoveSpec m = m_commanded[m_handed];
+            if (is_unstepped(m)) {
+                if (m_window == windows.size() && !final) return;
+                place_unstepped(m, m_window < windows.size() ? std::optional(windows[m_window].t_begin_ps) : std::nullopt,
+                                m_last_end_ps);
+                f(std::move(m));
+                continue;
+            }
+            if (m_window == windows.size()) return;
+            m_last_end_ps = windows[m_window].t_end_ps;
+            f(executed_move(m_s, std::move(m), windows[m_window++]));
         }
+    }
+    void hand_ended_moves(MetricsFeed& feed) {
+        hand_ended_moves([&](metrics::MoveSpec m) { feed.add_piece(std::move(m)); }, false);
     }
 
     const Scenario& m_s;
@@ -270,7 +288,9 @@ private:
     const std::vector<metrics::MoveSpec> m_commanded;
     std::optional<AtmegaPins> m_pins;  // once the recorder watches the pins
     ChordGapFold m_chord_gaps;
-    std::size_t m_handed = 0;  // motion windows handed to the metrics
+    std::size_t m_handed = 0;    // commanded moves handed to the metrics
+    std::size_t m_window = 0;    // motion windows handed to the metrics
+    TimePs m_last_end_ps = 0;    // the end of the last window handed
     TimePs m_stop_ps = 0;
     bool m_whole_logs = false;
 };

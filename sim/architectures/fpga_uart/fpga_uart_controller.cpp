@@ -77,6 +77,10 @@ public:
         return packet;
     }
     double wait_after_last_s() override { return m_segments.wait_after_last_s(); }
+    // Once next() has returned none: the programmed moves after the last segment's.
+    [[nodiscard]] std::vector<UnsteppedMove> take_unstepped_after_last() {
+        return m_segments.take_unstepped_after_last();
+    }
 
     [[nodiscard]] bool unexecuted() const { return !m_unexecuted.empty(); }
     [[nodiscard]] MadeSegment executed() {  // unexecuted()
@@ -110,18 +114,33 @@ public:
             if (!r.accepted) continue;
             if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
             const MadeSegment made = sent.executed();
+            const TimePs t_begin_ps = clock.at(clock.first_after(r.t_pkt_valid_ps));
+            hand_unstepped(made.unstepped_before, t_begin_ps, moves, f);
             metrics::MoveSpec m = moves.next(made.seg, made.programmed ? &*made.programmed : nullptr);
-            m.t_begin_ps = clock.at(clock.first_after(r.t_pkt_valid_ps));
+            m.t_begin_ps = t_begin_ps;
             m.t_end_ps = r.t_busy_fall_ps;
+            m_last_end_ps = m.t_end_ps;
             f(std::move(m));
         }
+        if (!until_ps) hand_unstepped(sent.take_unstepped_after_last(), std::nullopt, moves, f);
     }
 
     // The first packet record not read yet.
     [[nodiscard]] std::size_t next_record() const { return m_record; }
 
 private:
+    template <typename F>
+    void hand_unstepped(const std::vector<UnsteppedMove>& unstepped, std::optional<TimePs> next_begin_ps,
+                        const CommandedMoves& moves, F& f) const {
+        for (const UnsteppedMove& u : unstepped) {
+            metrics::MoveSpec m = moves.unstepped(u.programmed, u.move);
+            place_unstepped(m, next_begin_ps, m_last_end_ps);
+            f(std::move(m));
+        }
+    }
+
     std::size_t m_record = 0;
+    TimePs m_last_end_ps = 0;  // the last piece's
 };
 
 // A steps file's FeedRate 0 (seed 000's text divides by the feed, §3.4.5, so it allows 1 .. 65535; the appendix
@@ -258,7 +277,7 @@ host::Program packet_moves(const std::vector<host::MotionSegment>& rows, Numerat
     geom::Vec2 at{};
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const geom::Vec2 to = at + geom::Vec2{rows[i].dx_mm, rows[i].dy_mm};
-        const double run_s = ps_to_s(packet_of({rows[i], std::nullopt, 0.0}, n, f).expected_run_ps);
+        const double run_s = ps_to_s(packet_of({rows[i], std::nullopt, 0.0, {}}, n, f).expected_run_ps);
         // A packet step_gen does not run (no steps, or a period of 0) takes no time at any feed.
         const double feed_mm_per_min =
             run_s > 0.0 ? geom::distance(at, to) / run_s * kSecondsPerMinute : std::numeric_limits<double>::infinity();
@@ -376,7 +395,9 @@ public:
     // The dead-time split reads each piece's first and last STEP: handed to it as the stream measures the pieces,
     // and it folds each gap once final.
     [[nodiscard]] metrics::PieceMeasured on_piece_measured() override {
-        return [this](const metrics::MoveMetrics& p) { m_dead_fold.add_piece(piece_steps(p)); };
+        return [this](const metrics::MoveMetrics& p) {
+            if (p.index != 0) m_dead_fold.add_piece(piece_steps(p));  // one per packet: not a move too short to step
+        };
     }
     void slice_ended(TimePs now_ps, MetricsFeed* feed) override {
         if (feed == nullptr) return;

@@ -16,18 +16,22 @@ JobSegments::JobSegments(const Scenario& s, const Job& job) : m_job(job) {
 std::optional<MadeSegment> JobSegments::next() {
     if (!m_moves) {
         if (m_next == m_job.steps_file.size()) return std::nullopt;
-        return MadeSegment{m_job.steps_file[m_next++], std::nullopt, 0.0};
+        return MadeSegment{m_job.steps_file[m_next++], std::nullopt, 0.0, {}};
     }
     std::vector<host::MotionSegment> made;
     while (m_pending.empty()) {
         const std::optional<host::ProgrammedMove> move = m_moves->next();
         if (!move) return std::nullopt;
         made.clear();
-        m_cam->add(*move, m_next++, made);
+        m_cam->add(*move, m_next, made);
+        if (made.empty()) m_unstepped.push_back({static_cast<int>(m_next), *move});
+        ++m_next;
         m_pending.assign(made.begin(), made.end());
         m_move = move;
     }
-    MadeSegment out{m_pending.front(), m_move, m_waits->before_unit(static_cast<std::size_t>(m_pending.front().move))};
+    MadeSegment out{m_pending.front(), m_move, m_waits->before_unit(static_cast<std::size_t>(m_pending.front().move)),
+                    std::move(m_unstepped)};
+    m_unstepped.clear();
     m_pending.pop_front();
     return out;
 }

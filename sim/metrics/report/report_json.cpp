@@ -149,7 +149,7 @@ struct AxisColumn {
 const MoveColumn kMoveColumns[] = {
     {"index", false, [](const MoveMetrics& m) { return json(m.index); }},
     {"line", false, [](const MoveMetrics& m) { return json(m.line); }},
-    {"rapid", false, [](const MoveMetrics& m) { return json(m.rapid); }},
+    {"rapid", false, [](const MoveMetrics& m) { return json(m.rapid()); }},
     {"kind", false, [](const MoveMetrics& m) { return json(to_string(m.programmed.kind)); }},
     {"end_x_mm", false, [](const MoveMetrics& m) { return json(m.programmed.x_mm); }},
     {"end_y_mm", false, [](const MoveMetrics& m) { return json(m.programmed.y_mm); }},

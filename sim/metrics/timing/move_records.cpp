@@ -100,7 +100,6 @@ void row_fields(Row& r, Move& m, std::size_t axes) {
     r.template as<std::int32_t>(m.index);
     r.template as<std::int32_t>(m.line);
     r.template as<std::uint64_t>(m.pieces);
-    r.template as<std::uint8_t>(m.rapid);
     r.template as<std::uint8_t>(m.timing.below_feed);
     r.field(m.feed_mm_per_min);
     r.field(m.t_first_edge_ps);

@@ -10,20 +10,25 @@ namespace cnc::sim::gp {
 
 namespace fs = std::filesystem;
 
-ColumnRange column_range(const fs::path& file, int column) {
-    ColumnRange r;
+std::vector<ColumnRange> column_ranges(const fs::path& file, int columns) {
+    std::vector<ColumnRange> ranges(static_cast<std::size_t>(columns));
     std::ifstream in(file);
     for (std::string line; std::getline(in, line);) {
         if (line.empty() || line[0] == '#') continue;
         std::istringstream fields(line);
-        double v = 0.0;
-        for (int c = 0; c < column; ++c) fields >> v;
-        if (!fields) continue;
-        r.lo = r.rows == 0 ? v : std::min(r.lo, v);
-        r.hi = r.rows == 0 ? v : std::max(r.hi, v);
-        ++r.rows;
+        for (ColumnRange& r : ranges) {
+            double v = 0.0;
+            if (!(fields >> v)) break;
+            r.lo = r.rows == 0 ? v : std::min(r.lo, v);
+            r.hi = r.rows == 0 ? v : std::max(r.hi, v);
+            ++r.rows;
+        }
     }
-    return r;
+    return ranges;
+}
+
+ColumnRange column_range(const fs::path& file, int column) {
+    return column_ranges(file, column).back();
 }
 
 ColumnRange merge(ColumnRange a, const ColumnRange& b) {

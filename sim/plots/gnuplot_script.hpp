@@ -25,6 +25,8 @@ struct ColumnRange {
     double hi = 0.0;
 };
 ColumnRange column_range(const std::filesystem::path& file, int column);
+// Columns 1 .. `columns` in one reading of the file.
+std::vector<ColumnRange> column_ranges(const std::filesystem::path& file, int columns);
 ColumnRange merge(ColumnRange a, const ColumnRange& b);
 
 // The rows of a data file's first columns (x y ...), blank and `#` lines skipped.

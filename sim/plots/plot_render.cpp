@@ -23,6 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using gp::column_range;
+using gp::column_ranges;
 using gp::ColumnRange;
 using gp::Curves;
 using gp::curves;
@@ -89,11 +90,11 @@ std::optional<Script> velocity_plot(const std::vector<PlotRun>& runs, const fs::
     ColumnRange t, v;
     for (const PlotRun& r : runs) {
         const fs::path file = out_dir / file_of(r, "velocity.dat");
-        const ColumnRange rt = column_range(file, 1);
-        if (rt.rows == 0) continue;
+        const std::vector<ColumnRange> columns = column_ranges(file, 3);  // time, commanded, carriage
+        if (columns[0].rows == 0) continue;
         drawn.push_back(&r);
-        t = merge(t, rt);
-        v = merge(merge(v, column_range(file, 2)), column_range(file, 3));
+        t = merge(t, columns[0]);
+        v = merge(merge(v, columns[1]), columns[2]);
     }
     if (drawn.empty()) return std::nullopt;
     std::ostringstream body;

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "support/edge_periods.hpp"
 #include "support/shipped_run.hpp"
 
 namespace cnc::test {
@@ -18,12 +19,6 @@ constexpr TimePs step_period_ps(int ocr) {
 // (atmega_streamed_test.cpp runs without them).
 inline sim::RunOutcome run_atmega(const std::string& name, const std::vector<std::string>& sets = {}) {
     return run_on_exact_clock("atmega", name, sets, true);
-}
-
-inline std::vector<TimePs> periods(const std::vector<TimePs>& t) {
-    std::vector<TimePs> d;
-    for (std::size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
-    return d;
 }
 
 inline bool has_warning(const sim::RunOutcome& out, const std::string& part) {

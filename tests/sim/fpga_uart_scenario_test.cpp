@@ -13,7 +13,7 @@
 
 using cnc::TimePs;
 using cnc::test::bad_input_message;
-using cnc::test::diffs;
+using cnc::test::periods;
 using cnc::test::run_shipped;
 
 namespace {
@@ -77,8 +77,8 @@ TEST(FpgaUartWorkedExample, StepTrainsDirSetupAckAndLaser) {
     const auto yr = y.step.rising();
     ASSERT_EQ(xr.size(), 320U);
     ASSERT_EQ(yr.size(), 160U);
-    for (TimePs d : diffs(xr)) ASSERT_EQ(d, 15'625 * kClockPs);  // 312.5 us
-    for (TimePs d : diffs(yr)) ASSERT_EQ(d, 31'250 * kClockPs);
+    for (TimePs d : periods(xr)) ASSERT_EQ(d, 15'625 * kClockPs);  // 312.5 us
+    for (TimePs d : periods(yr)) ASSERT_EQ(d, 31'250 * kClockPs);
     EXPECT_EQ(xr.front(), yr.front());  // both axes fire on the first RUN cycle
     for (const auto* axis : {&x, &y}) {
         const auto r = axis->step.rising();

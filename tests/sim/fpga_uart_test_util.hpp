@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "support/edge_periods.hpp"
 #include "support/shipped_run.hpp"
 
 namespace cnc::test {
@@ -11,12 +12,6 @@ namespace cnc::test {
 inline sim::RunOutcome run_shipped(const std::string& name, const std::vector<std::string>& sets = {},
                                    bool keep_logs = false) {
     return run_on_exact_clock("fpga-uart", name, sets, keep_logs);
-}
-
-inline std::vector<TimePs> diffs(const std::vector<TimePs>& t) {
-    std::vector<TimePs> d;
-    for (std::size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
-    return d;
 }
 
 }  // namespace cnc::test

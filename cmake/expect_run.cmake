@@ -4,6 +4,12 @@
 # Optionally: NO_FILE must not exist afterwards; FILE must exist and match each regex in FILE_MATCH; STDOUT is a
 # file that takes the standard output instead (e.g. /dev/full), and then only stderr is matched.
 string(REPLACE "|" ";" cmd "${CMD}")
+# What this run is checked for writing or not writing goes first: a file left by an earlier run proves nothing.
+foreach(f IN ITEMS "${NO_FILE}" "${FILE}")
+  if(NOT "${f}" STREQUAL "")
+    file(REMOVE "${f}")
+  endif()
+endforeach()
 if(DEFINED STDOUT)
   execute_process(COMMAND ${cmd} RESULT_VARIABLE rc OUTPUT_FILE "${STDOUT}" ERROR_VARIABLE err)
   set(out "")

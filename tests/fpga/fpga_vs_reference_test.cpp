@@ -88,6 +88,41 @@ TEST(FpgaVsReference, MixedStreamFromTheCp2102) {
     expect_mixed_stream_records(bench.top);
 }
 
+// The 100 ms watchdog at its boundary clock (seed 000 appendix, packet_decoder: timeout_cnt counts the clocks since
+// the last byte and clears a partial packet when it reaches TIMEOUT_CYCLES): a packet's last byte whose start bit
+// comes exactly watchdog_cycles clocks after the previous byte's reaches the decoder on the clock the count would
+// clear it, and completes the packet; one clock later the partial packet is gone and the byte alone starts a new
+// one. The sender is clocked like the FPGA, so a start bit moved by n clocks moves rx_valid by n clocks.
+TEST(FpgaVsReference, TheWatchdogClearsAPartialPacketOneClockAfterItsBoundary) {
+    const FpgaConfig cfg;
+    const std::vector<std::uint8_t> p = motion_packet(1, 20, -10, 1000);
+    std::vector<UartWave> waves;
+    std::int64_t last = 0;
+    for (const std::int64_t late_cycles : {0, 1}) {
+        UartWave w = sync_sender();
+        w.bytes(10 * kUs, init_packet(300'000, 200'000));
+        w.bytes(2 * kMs, {p.begin(), p.end() - 1});
+        const TimePs last_byte_ps = w.frame_starts().back() + (cfg.watchdog_cycles + late_cycles) * kCyclePs;
+        w.byte(last_byte_ps, p.back());
+        last = std::max(last, edge_of(last_byte_ps + 20 * kMs));
+        waves.push_back(std::move(w));
+    }
+    FpgaBench on_time("on_time", cfg, waves[0].changes());
+    FpgaBench late("late", cfg, waves[1].changes());
+    on_time.run_to_edge(last);
+    late.run_to_edge(last);
+    const auto reference_on_time = ref::run_reference(cfg, waves[0].changes(), last);
+    const auto reference_late = ref::run_reference(cfg, waves[1].changes(), last);
+    expect_same_edges(reference_on_time, on_time.logs());
+    expect_same_edges(reference_late, late.logs());
+    EXPECT_EQ(reference_on_time.at("step_x").edges.size(), 2U * 20);  // 20 X steps: rise and fall
+    EXPECT_EQ(reference_late.at("step_x").edges.size(), 0U);
+    EXPECT_EQ(on_time.top.packet_count(), 1U);
+    EXPECT_EQ(on_time.top.stats().watchdog_resets, 0U);
+    EXPECT_EQ(late.top.packet_count(), 0U);
+    EXPECT_EQ(late.top.stats().watchdog_resets, 1U);
+}
+
 // A run that drops its packet records as it reads them (fpga-uart) must see the later ones as a run that keeps
 // them all: the mixed stream twice, side by side, one dropping at 25 ms what it has seen (packets 0-9, the lost
 // packet 8 among them), before packet 10 (its ACK sent) and 11 (accepted during that ACK, its own ACK dropped).

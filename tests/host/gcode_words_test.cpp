@@ -71,6 +71,14 @@ TEST(HostGcodeWords, WorkOffsetsG10AndCoordinateSystems) {
     expect_point(p.moves[4].path.end, 10, 20);
 }
 
+TEST(HostGcodeWords, WorkOffsetsG10InInches) {
+    // G10's coordinates are in the program's units (RS274/NGC): under G20, 1 inch is machine 25.4 mm.
+    const Program p = run_gcode("G20\nG10 L2 P1 X1 Y2\nG0 X1 Y1\nG10 L20 P1 X0.5\nG0 X1 Y0\n");
+    expect_point(p.moves[0].path.end, 2 * 25.4, 3 * 25.4);  // G54 origin at (25.4, 50.8)
+    // L20: the tool (machine X 50.8) is X0.5 in, so G54's X origin is 50.8 - 12.7 = 38.1; X1 = machine 63.5.
+    expect_point(p.moves[1].path.end, 38.1 + 25.4, 2 * 25.4);
+}
+
 TEST(HostGcodeWords, G53AndG28GoToMachineCoordinates) {
     const Program p =
         run_gcode("G10 L2 P1 X50 Y50\nG0 X10 Y10\nG53 G0 X5 Y5\nG28\nG0 X1\nG28 X3\nG28.1\nG0 X20\nG28\n");

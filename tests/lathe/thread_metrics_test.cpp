@@ -53,6 +53,24 @@ TEST(ThreadMetrics, PhaseMaxSaysWhichPassWhereAndWhichWay) {
     EXPECT_EQ(m.phase_error_max_pulse, 100u);
 }
 
+// Every pass is measured against the first (the thread the tool must find again), not against the one before: pass
+// 2 runs 10 um ahead of pass 1 and pass 3 25 um ahead, so pass 3's error is 25 um (15 um against pass 2).
+TEST(ThreadMetrics, TheThirdPassIsMeasuredAgainstTheFirst) {
+    ThreadPass a;
+    ThreadPass b;
+    ThreadPass c;
+    for (int j = 0; j <= 400; ++j) {
+        a.x_mm.push_back(j / 40.0);
+        b.x_mm.push_back(j / 40.0 + 0.010);
+        c.x_mm.push_back(j / 40.0 + 0.025);
+    }
+    const auto m = cnc::lathe::thread_metrics({a, b, c}, 1.0, 40);
+    EXPECT_NEAR(m.phase_error_max_um, 25.0, 1e-9);
+    EXPECT_NEAR(m.phase_error_max_signed_um, 25.0, 1e-9);
+    EXPECT_EQ(m.phase_error_max_pass, 2u);
+    EXPECT_NEAR(m.phase_error_end_um, 25.0, 1e-9);
+}
+
 TEST(ThreadMetrics, NoPassesNoFigures) {
     const auto m = cnc::lathe::thread_metrics({}, 1.0, 40);
     EXPECT_EQ(m.revolutions, 0);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/bad_input.hpp"
+#include "mechanics/core/drv8825_current.hpp"
 #include "mechanics/core/drv8825_modes.hpp"
 
 using namespace cnc::mech;
@@ -53,4 +54,16 @@ TEST(Drv8825Modes, NextIndexerPosition) {
     EXPECT_EQ(next_indexer_position(5, 1, 1), 32);
     EXPECT_EQ(next_indexer_position(5, 1, -1), 0);
     EXPECT_EQ(next_indexer_position(-32, 1, -1), -64);
+}
+
+TEST(Drv8825Current, TheChoppingCurrentIsVrefOverFiveTimesRsense) {
+    // DRV8825 data sheet (TI SLVSA73) §8.3.4 Current Regulation, eq. 1: I_CHOP = V_xREF / (5 x R_SENSE). On the
+    // Pololu carrier's 0.100 ohm sense resistors that is 2 A per volt of VREF (the A4988's formula, / 8 R_SENSE,
+    // would give 1.25).
+    for (const double vref_v : {0.1, 0.5, 0.85, 1.25}) {
+        EXPECT_NEAR(current_limit_from_vref_a(vref_v, 0.100), 2.0 * vref_v, 1e-12) << vref_v << " V";
+    }
+    EXPECT_NEAR(current_limit_from_vref_a(1.0, 0.200), 1.0, 1e-12);
+    EXPECT_NEAR(current_limit_from_vref_a(0.33, 0.330), 0.2, 1e-12);
+    EXPECT_THROW((void)current_limit_from_vref_a(1.0, 0.0), cnc::BadInput);
 }

@@ -55,6 +55,24 @@ TEST(MotorCurve, RequiredTorqueIsTheRailFrictionThroughThePulley) {
                 3.8 * 0.040 / (2 * 3.14159265358979) + 34e-7 * 1.0 / (0.040 / (2 * 3.14159265358979)), 1e-6);
 }
 
+TEST(MotorCurve, ALeadscrewBelowFullEfficiencyAsksForMoreTorque) {
+    // A Tr8 screw (8 mm lead, r = 8 mm / 2 pi) at efficiency 0.4 under a 2 kg carriage with 1.5 N of rail friction:
+    // the screw turns a force F into the shaft torque F r / eta, and the carriage's inertia reflected to the shaft is
+    // m r^2 / eta (the power a lossy screw needs to accelerate the carriage is the carriage's over eta).
+    AxisParams p;
+    p.load.kind = DriveKind::Leadscrew;
+    p.load.travel_per_rev_mm = 8.0;
+    p.load.carriage_mass_kg = 2.0;
+    p.load.screw_efficiency = 0.4;
+    const double r_m = 8e-3 / (2 * 3.14159265358979);
+    const double eta = 0.4;
+    const double omega = 100.0 * 2 * 3.14159265358979 / 200.0;  // 100 full steps/s of a 200-step motor
+    EXPECT_NEAR(required_torque_nm(p, 100.0), 1.5 * r_m / eta + 2e-3 + 1e-4 * omega, 1e-9);
+    const double accel_mm_s2 = 500.0;
+    const double alpha = accel_mm_s2 * 1e-3 / r_m;
+    EXPECT_NEAR(acceleration_torque_nm(p, accel_mm_s2), 34e-7 * alpha + 2.0 * r_m * r_m * alpha / eta, 1e-12);
+}
+
 TEST(MotorCurve, AStepJumpFarAboveThePullOutRateLosesWholeElectricalPeriods) {
     // Lost steps on the core alone: the seed X axis (3.8 kg) commanded from rest straight to 800 full steps/s
     // (160 mm/s), where even the steady pull-out torque (0.074 N m) is barely 5 x the rail friction's, loses

@@ -90,6 +90,18 @@ TEST(MetricsPathAccuracy, ContourUsesTheNeighbouringMovesNearACorner) {
     EXPECT_NEAR(*m.path.contour_max_um, 0.0, 1e-9);
 }
 
+TEST(MetricsPathAccuracy, ContourOfALaggingToolUsesThePreviousMove) {
+    // The carriage lags: just after the second leg became active the tool is still on the first leg, 0.5 mm from
+    // the second: on the programmed path all the same.
+    RunInput in;
+    in.moves.push_back(test::line_move(0, {0, 0}, {1, 0}, 600.0, 0, 10 * kPsPerMs));
+    in.moves.push_back(test::line_move(1, {1, 0}, {1, 1}, 600.0, 10 * kPsPerMs, 20 * kPsPerMs));
+    in.tool = {{11 * kPsPerMs, {0.5, 0}}};
+    const RunMetrics m = compute_metrics(in);
+    EXPECT_NEAR(*m.path.contour_max_um, 0.0, 1e-9);
+    EXPECT_NEAR(*m.moves[1].path.contour_max_um, 0.0, 1e-9);
+}
+
 TEST(MetricsPathAccuracy, NothingWithoutToolSamples) {
     RunInput in;
     in.moves.push_back(test::line_move(0, {0, 0}, {1, 0}, 600.0, 0, 10 * kPsPerMs));

@@ -12,6 +12,7 @@ PACKAGES=(
   gnuplot-nox libxml2-utils python3-pil
   clang libclang-rt-14-dev llvm
   gcc-avr binutils-avr avr-libc simavr libsimavr-dev libelf-dev
+  iverilog
 )
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi

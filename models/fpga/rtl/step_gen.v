@@ -11,7 +11,7 @@ module step_gen #(
     parameter NUMERATOR_DEFAULT = 18750000,
     // 0: the subordinate period's product at 32 bits, as the appendix prints it (it wraps past 2^32 - 1);
     // 1: the product at 64 bits, the quotient saturated at 2^32 - 1 (what the text's formula means).
-    parameter EXACT_PERIOD      = 0
+    parameter EXACT_PERIOD      = 1
 ) (
     input  wire        clk,
     input  wire        rst,

@@ -10,7 +10,7 @@ module top #(
     parameter FEED_ZERO_PERIOD  = 62500,
     parameter TIMEOUT_CYCLES    = 5000000,
     parameter NUMERATOR_DEFAULT = 18750000,
-    parameter EXACT_PERIOD      = 0,
+    parameter EXACT_PERIOD      = 1,
     // 1: the decoder's numerators reach step_gen (what §5.2.6 asks of the final integration); 0: unconnected, as the
     // appendix top.v prints it, so init packets change nothing.
     parameter INIT_WIRED        = 1

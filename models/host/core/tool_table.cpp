@@ -62,7 +62,7 @@ ToolTable ToolTable::parse(std::istream& in, const std::string& filename) {
             }
             seen += letter;
             const std::optional<double> v = parse_double(w.substr(1));
-            if (!v) throw BadInput(where, "'" + w + "' has no number after its letter (" + kAllowed + ")");
+            if (!v) throw BadInput(where, "'" + w + "': the letter is not followed by a number (" + kAllowed + ")");
             if (letter == 'T') e.tool = whole_number(w, *v, 1.0, where);
             if (letter == 'P') e.pocket = whole_number(w, *v, 0.0, where);
             if (letter == 'D') e.diameter_mm = *v;

@@ -57,7 +57,8 @@ std::vector<geom::Vec2> samples(const ProgrammedMove& m, int n = 64) {
             const double a = a0 + t * s.sweep_rad;
             pts.push_back({s.center.x_mm + r * std::cos(a), s.center.y_mm + r * std::sin(a)});
         } else {
-            pts.push_back({s.start.x_mm + t * (s.end.x_mm - s.start.x_mm), s.start.y_mm + t * (s.end.y_mm - s.start.y_mm)});
+            pts.push_back(
+                {s.start.x_mm + t * (s.end.x_mm - s.start.x_mm), s.start.y_mm + t * (s.end.y_mm - s.start.y_mm)});
         }
     }
     return pts;
@@ -128,8 +129,8 @@ TEST(HostCutterComp, OutsideCornersGetAnArcAboutTheCorner) {
         if (!m.path.is_arc) continue;
         ++arcs;
         EXPECT_NEAR(m.path.radius_mm(), kToolRadiusMm, 1e-9);
-        EXPECT_NEAR(m.path.sweep_rad, kPi / 2.0, 1e-9);  // a quarter turn, counter-clockwise round each corner
-        EXPECT_LT(square_distance(m.path.center), 1e-9);   // a corner of the square
+        EXPECT_NEAR(m.path.sweep_rad, kPi / 2.0, 1e-9);   // a quarter turn, counter-clockwise round each corner
+        EXPECT_LT(square_distance(m.path.center), 1e-9);  // a corner of the square
         EXPECT_EQ(m.kind, MotionKind::ArcCCW);
     }
     EXPECT_EQ(arcs, 4);
@@ -222,7 +223,8 @@ TEST(HostCutterComp, ErrorsNameTheLineAsLinuxCnc) {
     expect_error("T1 M6\nG41\nG64 P0.1\n", {"t.nc:3: Cannot change control mode with cutter radius compensation on"});
     expect_error("T1 M6\nG41\nG92 X0\n", {"t.nc:3: Cannot change axis offsets with cutter radius comp"});
     expect_error("T1 M6\nG41\nG28\n", {"t.nc:3: Cannot use g28 or g30 with cutter radius comp"});
-    expect_error("T1 M6\nG0 X-5 Y0\nG41 G1 X0 Y0 F600\nG53 G1 X10\n", {"t.nc:4: Cannot use g53 with cutter radius comp"});
+    expect_error("T1 M6\nG0 X-5 Y0\nG41 G1 X0 Y0 F600\nG53 G1 X10\n",
+                 {"t.nc:4: Cannot use g53 with cutter radius comp"});
 }
 
 TEST(HostCutterComp, ToolWordsAndTheirErrors) {

@@ -249,9 +249,9 @@ TEST(GcodeAsLinuxCnc, ToolLengthOffsetsMoveZ) {
 }
 
 TEST(GcodeAsLinuxCnc, CutterCompErrorsAreLinuxCncs) {
-    for (const char* name : {"comp_err_concave_line", "comp_err_concave_arc", "comp_err_small_arc",
-                             "comp_err_on_when_on", "comp_err_short_entry", "comp_err_arc_after_g40",
-                             "comp_err_tool_change"}) {
+    for (const char* name :
+         {"comp_err_concave_line", "comp_err_concave_arc", "comp_err_small_arc", "comp_err_on_when_on",
+          "comp_err_short_entry", "comp_err_arc_after_g40", "comp_err_tool_change"}) {
         SCOPED_TRACE(name);
         expect_error_as_linuxcnc(name);
     }

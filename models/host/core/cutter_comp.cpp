@@ -103,8 +103,7 @@ CompStep CutterComp::entry_arc(geom::Vec2 from, geom::Vec2 tool, geom::Vec2 to, 
         throw BadInput(where, "Radius of cutter compensation entry arc is not greater than the tool radius");
     }
     if (inside(turns) && geom::distance(center, from) <= r) throw BadInput(where, kToolTooBig);
-    const geom::Vec2 end =
-        to + unit(inside(turns) ? angle_of(center - to) : angle_of(to - center)) * r;
+    const geom::Vec2 end = to + unit(inside(turns) ? angle_of(center - to) : angle_of(to - center)) * r;
     // The new centre lies on the line from `end` toward the programmed centre, as far from `end` as from `from`.
     const double toward_center = angle_of(center - end);
     const double apex = angle_of(from - end) - toward_center;
@@ -156,14 +155,15 @@ CompStep CutterComp::line(geom::Vec2 from, geom::Vec2 tool, geom::Vec2 to, bool 
     const bool after_arc = open != nullptr && open->path.is_arc;
     // LinuxCNC also takes a turn of 180 degrees off the outside of an arc as concave (a line leaving the top of an
     // "h" shape's round part along its stem): the tool stays above and beside, not round the loop.
-    const bool concave = beta < -kCornerRad || beta > kPi + kCornerRad ||
-                         (beta > kPi - kCornerRad && after_arc && !inside(open->turns));
+    const bool concave =
+        beta < -kCornerRad || beta > kPi + kCornerRad || (beta > kPi - kCornerRad && after_arc && !inside(open->turns));
     geom::Vec2 start = tool;
     if (concave && open != nullptr) {
         if (!after_arc) {
             // Back along the last line until the new line's offset crosses it.
             const double half_corner = (beta + kPi) / 2.0;
-            if (half_corner == 0.0) throw BadInput(where, "Zero degree inside corner is invalid for cutter compensation");
+            if (half_corner == 0.0)
+                throw BadInput(where, "Zero degree inside corner is invalid for cutter compensation");
             start = tool + unit(theta + gamma) * (r / std::tan(half_corner));
         } else {
             // Back along the last arc (its tool-centre circle) to where it meets the new line's offset.
@@ -174,8 +174,8 @@ CompStep CutterComp::line(geom::Vec2 from, geom::Vec2 tool, geom::Vec2 to, bool 
             const double to_line = programmed_r * std::cos(normal - angle_of(prev.path.center - from));
             const double l = (inside(prev.turns) ? to_line - r : to_line + r) / old_r;
             if (l > 1.0 || l < -1.0) {
-                throw BadInput(where,
-                               "Arc to straight motion makes a corner the compensated tool can't fit in without gouging");
+                throw BadInput(
+                    where, "Arc to straight motion makes a corner the compensated tool can't fit in without gouging");
             }
             const double back = inside(prev.turns) == (prev.turns > 0) ? -std::acos(l) : std::acos(l);
             start = prev.path.center + unit(normal + kPi + back) * old_r;
@@ -218,8 +218,7 @@ CompStep CutterComp::arc(geom::Vec2 from, geom::Vec2 tool, geom::Vec2 to, geom::
     if (!in) delta += kPi;  // `delta`: from the programmed start to the tool centre's start on this arc
     const geom::Vec2 end = to + unit(in ? angle_of(center - to) : angle_of(to - center)) * r;
     const bool after_arc = open != nullptr && open->path.is_arc;
-    const bool concave = beta < -kCornerRad || beta > kPi + kCornerRad ||
-                         (std::fabs(beta - kPi) < kCornerRad && !in);
+    const bool concave = beta < -kCornerRad || beta > kPi + kCornerRad || (std::fabs(beta - kPi) < kCornerRad && !in);
     geom::Vec2 start = tool;
     if (concave && open != nullptr) {
         if (!after_arc) {

@@ -20,9 +20,9 @@ enum class CompSide { Left, Right };  // G41: the tool left of the path (seen al
 
 // A compensated move that the next programmed move may still cut short.
 struct OpenMove {
-    geom::Segment path;         // the tool centre
-    int turns = 0;              // arcs: + counter-clockwise, - clockwise, the magnitude counts the turns (G2/G3 P)
-    geom::Vec2 direction;       // lines: the way they were made; a corner must not turn them back
+    geom::Segment path;              // the tool centre
+    int turns = 0;                   // arcs: + counter-clockwise, - clockwise, the magnitude counts the turns (G2/G3 P)
+    geom::Vec2 direction;            // lines: the way they were made; a corner must not turn them back
     double planned_sweep_rad = 0.0;  // arcs: the sweep when made; a corner may shorten it, not lengthen it
     bool rapid = false;              // a G0 (for the message of a corner that turns it back)
 };

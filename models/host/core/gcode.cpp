@@ -40,7 +40,8 @@ constexpr std::size_t kMaxListedProblems = 40;
 constexpr const char* kWordTable =
     "executed: G0-G3 G4 G10 L2/L20 G17 G20 G21 G28 G28.1 G30 G30.1 G53 G54-G59.3 G61 G61.1 G64 G90 G91 G90.1 "
     "G91.1 G92 G92.1-G92.3 G93 G94 M0 M1 M2 M3 M4 M5 M30 M60 F S X Y Z A E I J R P Q L N % /; ignored unless "
-    "strict: T D H O M6 M7-M9 M100-M199 G40-G42 G43 G49 G80 G97 G18 G19; table: docs/gcode.md";
+    "strict: T D H O M6 M7-M9 M100-M199 G40-G42 G43 G49 G80 G97 G18 G19 (with scenario.tool_table T D H M6 M61 "
+    "G40-G43 G49 are executed); table: docs/gcode.md";
 
 // X Y Z of a position or offset, machine mm.
 struct Xyz {
@@ -58,7 +59,7 @@ struct MoveDraft {
     LaserMode laser = LaserMode::Off;
     std::optional<double> power_s;
     std::optional<PathControl> path_control;
-    double feed_mm_per_min = 0.0;          // F in force (a rapid: the rapid feed)
+    double feed_mm_per_min = 0.0;           // F in force (a rapid: the rapid feed)
     std::optional<double> inverse_minutes;  // G93: the move's time
 };
 
@@ -215,7 +216,8 @@ private:
         if (b.cutter_comp) cutter_comp(b);
         if (b.tool_length) tool_length(b);
         if (b.coord_system) {
-            if (m_comp.on()) throw BadInput(m_where, "Cannot change coordinate systems with cutter radius compensation on");
+            if (m_comp.on())
+                throw BadInput(m_where, "Cannot change coordinate systems with cutter radius compensation on");
             m_cs = coord_index(*b.coord_system);
         }
         if (b.path_mode) set_path_mode(b);
@@ -450,7 +452,8 @@ private:
             throw BadInput(m_where, g + " needs a feed rate but no F has been programmed");
         }
         if (is_arc && m_arc_not_allowed) {
-            throw BadInput(m_where, "The move just after exiting cutter compensation mode must be straight, not an arc");
+            throw BadInput(m_where,
+                           "The move just after exiting cutter compensation mode must be straight, not an arc");
         }
         const Xyz to = target(b, machine_coords);
         // The programmed path, from the programmed point; without compensation the tool is there.
@@ -478,9 +481,8 @@ private:
         }
         const OpenMove* first = open.empty() ? nullptr : open.front();
         const CompStep step =
-            programmed.is_arc
-                ? m_comp.arc(m_pos, m_tool, programmed.end, programmed.center, turns, first, m_where)
-                : m_comp.line(m_pos, m_tool, programmed.end, kind == MotionKind::Rapid, first, m_where);
+            programmed.is_arc ? m_comp.arc(m_pos, m_tool, programmed.end, programmed.center, turns, first, m_where)
+                              : m_comp.line(m_pos, m_tool, programmed.end, kind == MotionKind::Rapid, first, m_where);
         if (step.cut_open_at) cut_open_moves(open, *step.cut_open_at, m_where);
         if (step.cut_open_at || step.release_open) release_held();
         if (step.corner) {
@@ -751,10 +753,10 @@ private:
     std::string m_where;
     int m_line = 0;
     int m_tape_marks = 0;
-    const ToolTable* m_tools;                      // none: the tool words are ignored
-    geom::Vec2 m_pos;                              // the programmed point, machine mm
-    geom::Vec2 m_tool;                             // the tool centre, machine mm: beside m_pos under G41/G42
-    double m_z = 0.0;                              // machine mm (with the tool length offset)
+    const ToolTable* m_tools;  // none: the tool words are ignored
+    geom::Vec2 m_pos;          // the programmed point, machine mm
+    geom::Vec2 m_tool;         // the tool centre, machine mm: beside m_pos under G41/G42
+    double m_z = 0.0;          // machine mm (with the tool length offset)
     CutterComp m_comp;
     std::deque<Held> m_held;                       // moves and waits cutter compensation holds back
     bool m_arc_not_allowed = false;                // the move after a G40 must be straight (LinuxCNC)

@@ -8,11 +8,11 @@
 namespace cnc::host {
 
 struct ToolEntry {
-    int tool = 0;             // T
-    int pocket = 0;           // P (0 when the line has none)
-    double diameter_mm = 0.0; // D: G41/G42's radius is half of it
-    double z_offset_mm = 0.0; // Z: G43's tool length offset
-    int line = 0;             // 1-based line of the table file
+    int tool = 0;              // T
+    int pocket = 0;            // P (0 when the line has none)
+    double diameter_mm = 0.0;  // D: G41/G42's radius is half of it
+    double z_offset_mm = 0.0;  // Z: G43's tool length offset
+    int line = 0;              // 1-based line of the table file
 };
 
 class ToolTable {

@@ -16,6 +16,7 @@
 #include "common/bad_input.hpp"
 #include "common/units.hpp"
 #include "host/core/soft_limits.hpp"
+#include "host/core/tool_table.hpp"
 #include "metrics/vcd/vcd_timescale.hpp"
 
 namespace cnc::sim {
@@ -209,6 +210,12 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                                   "controller architecture (docs/architectures.md)");
     const std::string job =
         r.get_string("scenario.job", "", "job file, relative to the scenario: G-code, or a seed 000 steps file");
+    const std::string tool_table = r.get_string(
+        "scenario.tool_table", "",
+        "LinuxCNC tool-table file, relative to the scenario (lines `T1 P1 D3.0 Z+0.5 ;comment`: tool, pocket, "
+        "diameter and Z length offset in mm): with it the job's T, M6, M61, G43/G43.1/G43.2/G49 (H) and "
+        "G40/G41/G42/G41.1/G42.1 (D) are executed as LinuxCNC does (docs/gcode.md); empty: none, and those words "
+        "are ignored");
     r.get_string("scenario.machine", "", kMachineDoc);  // its tables joined the document before this reading
     const std::string format = r.get_choice("scenario.job_format", "auto", {"auto", "gcode", "steps"},
                                             "job format; auto: .steps and .csv are steps files, the rest G-code");
@@ -284,6 +291,11 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                           "(pulse runs, rate and velocity logs, packets, dead-time gaps); false: per-move records "
                           "and summaries");
 
+    if (!tool_table.empty()) {
+        const std::string path = (base / tool_table).lexically_normal().string();
+        if (!fs::is_regular_file(path)) r.fail("scenario.tool_table", "the tool table " + path + " is not a file");
+        s.interpreter.tool_table = std::make_shared<const host::ToolTable>(host::ToolTable::load(path));
+    }
     if (!job.empty()) {
         s.job_path = (base / job).lexically_normal().string();
         s.job_key = r.where("scenario.job");

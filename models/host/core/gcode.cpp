@@ -11,9 +11,11 @@
 
 #include "common/bad_input.hpp"
 #include "common/math_constants.hpp"
+#include "host/core/cutter_comp.hpp"
 #include "host/core/gcode_lexer.hpp"
 #include "host/core/gcode_words.hpp"
 #include "host/core/text_number.hpp"
+#include "host/core/tool_table.hpp"
 
 namespace cnc::host {
 
@@ -38,11 +40,34 @@ constexpr std::size_t kMaxListedProblems = 40;
 constexpr const char* kWordTable =
     "executed: G0-G3 G4 G10 L2/L20 G17 G20 G21 G28 G28.1 G30 G30.1 G53 G54-G59.3 G61 G61.1 G64 G90 G91 G90.1 "
     "G91.1 G92 G92.1-G92.3 G93 G94 M0 M1 M2 M3 M4 M5 M30 M60 F S X Y Z A E I J R P Q L N % /; ignored unless "
-    "strict: T D H O M6 M7-M9 M100-M199 G40-G42 G43 G49 G80 G97 G18 G19; table: docs/gcode.md";
+    "strict: T D H O M6 M7-M9 M100-M199 G40-G42 G43 G49 G80 G97 G18 G19 (with scenario.tool_table T D H M6 M61 "
+    "G40-G43 G49 are executed); table: docs/gcode.md";
 
 // X Y Z of a position or offset, machine mm.
 struct Xyz {
     double x = 0.0, y = 0.0, z = 0.0;
+};
+
+// A move with the state it was programmed in, made now or held back while cutter compensation may still move
+// its end (gcode.cpp's `held`).
+struct MoveDraft {
+    MotionKind kind;
+    geom::Segment path;
+    double z_from = 0.0, z_to = 0.0;
+    double other_axes = 0.0;  // A/E travel, for a move of those alone
+    int line = 0;
+    LaserMode laser = LaserMode::Off;
+    std::optional<double> power_s;
+    std::optional<PathControl> path_control;
+    double feed_mm_per_min = 0.0;           // F in force (a rapid: the rapid feed)
+    std::optional<double> inverse_minutes;  // G93: the move's time
+};
+
+// What cutter compensation holds back, in program order: moves still open to a corner, and the waits behind them.
+struct Held {
+    std::optional<MoveDraft> move;
+    OpenMove open;  // the move's tool-centre path
+    HostWait wait{};
 };
 
 std::string mm_text(double v) {
@@ -106,7 +131,12 @@ private:
 class Interpreter {
 public:
     Interpreter(std::string filename, const InterpreterOptions& opt, bool keep_moves)
-        : m_opt(opt), m_keep_moves(keep_moves), m_problems(filename), m_pos(opt.start_mm) {
+        : m_opt(opt),
+          m_keep_moves(keep_moves),
+          m_problems(filename),
+          m_tools(opt.tool_table.get()),
+          m_pos(opt.start_mm),
+          m_tool(opt.start_mm) {
         m_program.filename = std::move(filename);
         if (!(std::isfinite(opt.rapid_feed_mm_per_min) && opt.rapid_feed_mm_per_min > 0.0)) {
             throw BadInput(m_program.filename, "rapid feed must be > 0 mm/min");
@@ -125,7 +155,7 @@ public:
             return true;
         }
         try {
-            const BlockWords b = group_words(lex_gcode_line(text, m_where), m_where);
+            const BlockWords b = group_words(lex_gcode_line(text, m_where), m_where, m_tools != nullptr);
             for (const std::string& w : b.unsupported) m_problems.unsupported(w, line, "unsupported word");
             for (const IgnoredUse& use : b.ignored) ignore(use);
             if (!b.unsupported.empty()) return true;
@@ -136,8 +166,10 @@ public:
         }
     }
 
-    // Throws every problem of the file at once; called at the program's end.
-    void check() const {
+    // The program has ended: the moves cutter compensation holds go out, then every problem of the file is
+    // thrown at once.
+    void finish() {
+        release_held();
         if (m_problems.any()) m_problems.raise();
     }
     [[nodiscard]] const Program& program() const { return m_program; }
@@ -175,16 +207,28 @@ private:
         if (b.f) set_feed(*b.f);
         const bool dwell = b.non_modal == 40;
         if (b.s && !(dwell && !b.p)) m_power_s = *b.s;
+        if (b.t) select_tool(*b.t);
+        if (b.tool_change) change_tool(b);
         if (b.laser)
             m_laser = *b.laser == 30 ? LaserMode::Constant : *b.laser == 40 ? LaserMode::Dynamic : LaserMode::Off;
         if (dwell) do_dwell(b);
         if (b.plane) set_plane(*b.plane);
-        if (b.coord_system) m_cs = coord_index(*b.coord_system);
+        if (b.cutter_comp) cutter_comp(b);
+        if (b.tool_length) tool_length(b);
+        if (b.coord_system) {
+            if (m_comp.on())
+                throw BadInput(m_where, "Cannot change coordinate systems with cutter radius compensation on");
+            m_cs = coord_index(*b.coord_system);
+        }
         if (b.path_mode) set_path_mode(b);
         if (b.distance) m_absolute = *b.distance == 900;
         if (b.arc_distance) m_arc_absolute = *b.arc_distance == 901;
+        check_tool_words(b);
         if (b.non_modal && !dwell) {
             non_modal(b);
+        } else if (b.tool_length == 431 && !b.motion) {
+            // G43.1's axis words are the offset: the line moves only with a motion word on it (LinuxCNC).
+            check_unused(b);
         } else {
             check_unused(b);
             motion(b, false);
@@ -211,6 +255,9 @@ private:
     }
 
     void set_plane(Code10 plane) {
+        if (m_comp.on() && plane != m_plane) {
+            throw BadInput(m_where, "Cannot change planes with cutter radius compensation on");
+        }
         m_plane = plane;
         if (plane != 170) ignore({plane == 180 ? "G18" : "G19", "plane select: arcs are cut in the XY plane only"});
     }
@@ -221,6 +268,7 @@ private:
     }
 
     void set_path_mode(const BlockWords& b) {
+        if (m_comp.on()) throw BadInput(m_where, "Cannot change control mode with cutter radius compensation on");
         PathControl pc;
         pc.mode = *b.path_mode == 610   ? PathMode::ExactPath
                   : *b.path_mode == 611 ? PathMode::ExactStop
@@ -241,7 +289,7 @@ private:
         if (b.p && !b.path_mode && !b.non_modal && !arc_block(b)) {
             parameter_of_ignored_code('P', b, "G2/G3 (turns), G4, G10, G64");
         }
-        if (b.q && !b.path_mode) parameter_of_ignored_code('Q', b, "G64");
+        if (b.q && !b.path_mode && b.tool_change != 610) parameter_of_ignored_code('Q', b, "G64, M61");
     }
 
     void parameter_of_ignored_code(char letter, const BlockWords& b, const std::string& users) {
@@ -265,6 +313,7 @@ private:
 
     void non_modal(const BlockWords& b) {
         const Code10 c = *b.non_modal;
+        refuse_with_comp(c);
         if (c == 530) return motion(b, true);
         if (b.motion) {
             throw BadInput(m_where, "G" + std::to_string(c / 10) + (c % 10 ? "." + std::to_string(c % 10) : "") +
@@ -301,6 +350,20 @@ private:
         }
     }
 
+    // LinuxCNC refuses these while G41/G42 is in force.
+    void refuse_with_comp(Code10 c) const {
+        if (!m_comp.on()) return;
+        // G53 only while the moves are offset (G41 with a radius above 0), as LinuxCNC's straight moves check it.
+        if (c == 530 && m_comp.offsets()) throw BadInput(m_where, "Cannot use g53 with cutter radius comp");
+        if (c == 280 || c == 300) throw BadInput(m_where, "Cannot use g28 or g30 with cutter radius comp");
+        if (c == 281 || c == 301) {
+            throw BadInput(m_where, "Cannot set reference point with cutter compensation in effect");
+        }
+        if (c >= 920 && c <= 923) throw BadInput(m_where, "Cannot change axis offsets with cutter radius comp");
+    }
+
+    // The programmed point (LinuxCNC's current point), machine mm: with cutter compensation the tool centre is
+    // beside it.
     Xyz machine_now() const { return {m_pos.x_mm, m_pos.y_mm, m_z}; }
 
     // G10 L2 Pn: coordinate system n's origin in machine coordinates; L20: set so that the tool is at the given
@@ -319,7 +382,7 @@ private:
         };
         apply(b.x, cs.x, now.x, m_g92.x);
         apply(b.y, cs.y, now.y, m_g92.y);
-        apply(b.z, cs.z, now.z, m_g92.z);
+        apply(b.z, cs.z, now.z - m_tlo_mm, m_g92.z);
     }
 
     // G92: the tool's current position gets the given coordinates (values absolute even in G91).
@@ -329,7 +392,7 @@ private:
         const Xyz& cs = m_cs_offset[m_cs];
         if (b.x) m_g92.x = now.x - cs.x - *b.x * m_scale;
         if (b.y) m_g92.y = now.y - cs.y - *b.y * m_scale;
-        if (b.z) m_g92.z = now.z - cs.z - *b.z * m_scale;
+        if (b.z) m_g92.z = now.z - m_tlo_mm - cs.z - *b.z * m_scale;
         m_g92_saved = m_g92;
     }
 
@@ -345,7 +408,11 @@ private:
         rapid_to(to);
     }
 
-    void rapid_to(const Xyz& to) { emit(MotionKind::Rapid, geom::Segment::line(m_pos, {to.x, to.y}), to.z, 0.0); }
+    void rapid_to(const Xyz& to) {
+        m_arc_not_allowed = false;
+        emit(MotionKind::Rapid, geom::Segment::line(m_tool, {to.x, to.y}), to.z, 0.0);
+        m_pos = {to.x, to.y};
+    }
 
     double axis_target(const std::optional<double>& word, double pos, double offset, bool machine_coords) const {
         if (!word) return pos;
@@ -357,7 +424,7 @@ private:
         const Xyz& cs = m_cs_offset[m_cs];
         return {axis_target(b.x, m_pos.x_mm, cs.x + m_g92.x, machine_coords),
                 axis_target(b.y, m_pos.y_mm, cs.y + m_g92.y, machine_coords),
-                axis_target(b.z, m_z, cs.z + m_g92.z, machine_coords)};
+                axis_target(b.z, m_z, cs.z + m_g92.z + m_tlo_mm, machine_coords)};
     }
 
     void motion(const BlockWords& b, bool machine_coords) {
@@ -384,45 +451,236 @@ private:
         if (kind != MotionKind::Rapid && !m_feed_mm_per_min) {
             throw BadInput(m_where, g + " needs a feed rate but no F has been programmed");
         }
+        if (is_arc && m_arc_not_allowed) {
+            throw BadInput(m_where,
+                           "The move just after exiting cutter compensation mode must be straight, not an arc");
+        }
         const Xyz to = target(b, machine_coords);
+        // The programmed path, from the programmed point; without compensation the tool is there.
         const geom::Segment path =
-            is_arc ? arc(b, {to.x, to.y}, kind == MotionKind::ArcCCW, g) : geom::Segment::line(m_pos, {to.x, to.y});
+            is_arc ? arc(b, {to.x, to.y}, kind == MotionKind::ArcCCW, g) : geom::Segment::line(m_tool, {to.x, to.y});
         const double other = std::max(b.a ? std::fabs(axis_target(b.a, m_a, 0.0, false) - m_a) : 0.0,
                                       b.e ? std::fabs(axis_target(b.e, m_e, 0.0, false) - m_e) : 0.0);
+        if (m_comp.offsets()) {
+            compensated(kind, path, is_arc ? (kind == MotionKind::ArcCCW ? 1 : -1) * turns(b, g) : 0, to.z, other);
+        } else {
+            emit(kind, path, to.z, other);
+        }
         if (b.a) m_a = axis_target(b.a, m_a, 0.0, false);
         if (b.e) m_e = axis_target(b.e, m_e, 0.0, false);
-        emit(kind, path, to.z, other);
+        if (!is_arc) m_arc_not_allowed = false;
+        m_pos = {to.x, to.y};
+    }
+
+    // A move with cutter compensation: its tool-centre path is held until the next move fixes its end; a corner
+    // before it may cut the held moves short (concave) or put an arc round the programmed corner (convex).
+    void compensated(MotionKind kind, const geom::Segment& programmed, int turns, double z_to, double other) {
+        std::vector<OpenMove*> open;
+        for (Held& h : m_held) {
+            if (h.move) open.push_back(&h.open);
+        }
+        const OpenMove* first = open.empty() ? nullptr : open.front();
+        const CompStep step =
+            programmed.is_arc ? m_comp.arc(m_pos, m_tool, programmed.end, programmed.center, turns, first, m_where)
+                              : m_comp.line(m_pos, m_tool, programmed.end, kind == MotionKind::Rapid, first, m_where);
+        if (step.cut_open_at) cut_open_moves(open, *step.cut_open_at, m_where);
+        if (step.cut_open_at || step.release_open) release_held();
+        if (step.corner) {
+            const MotionKind corner_kind = !step.corner->path.is_arc ? MotionKind::Rapid
+                                           : step.corner->turns > 0  ? MotionKind::ArcCCW
+                                                                     : MotionKind::ArcCW;
+            emit(corner_kind, step.corner->path, m_z, 0.0);
+        }
+        const MoveDraft d = draft(kind, step.move.path, z_to, other);
+        advance(d);
+        m_held.push_back(Held{d, step.move, {}});
+    }
+
+    // G40 (LinuxCNC: the held moves go out as they are, and the next move, from the tool centre to the programmed
+    // point, must be a straight one), G41/G42 with the tool's radius (D n: tool n; no D: the tool in the spindle),
+    // G41.1/G42.1 with D the diameter.
+    void cutter_comp(const BlockWords& b) {
+        const Code10 c = *b.cutter_comp;
+        if (c == 400) {
+            if (m_comp.offsets() && !m_comp.entry()) m_arc_not_allowed = true;
+            release_held();
+            m_comp.turn_off();
+            return;
+        }
+        const std::string g = c % 10 ? "G" + std::to_string(c / 10) + ".1" : "G" + std::to_string(c / 10);
+        if (m_plane != 170) {
+            throw BadInput(m_where, g + ": cutter radius compensation is in the XY plane (G17) only on this machine");
+        }
+        if (m_comp.on()) throw BadInput(m_where, "Cannot turn cutter radius comp on when on");
+        double radius_mm = 0.0;
+        if (c == 411 || c == 421) {
+            if (!b.d) throw BadInput(m_where, g + " with no D word (the tool diameter)");
+            radius_mm = *b.d * m_scale / 2.0;
+        } else {
+            int tool = m_loaded_tool;
+            if (b.d) {
+                if (*b.d != std::floor(*b.d)) throw BadInput(m_where, g + " requires D word to be a whole number");
+                if (*b.d < 0.0) throw BadInput(m_where, "Negative d word tool radius index used");
+                tool = tool_number(*b.d, "D");
+            }
+            if (tool == 0) tool = m_loaded_tool;  // D0: the tool in the spindle, as rs274 reads it
+            radius_mm = tool_entry(tool).diameter_mm / 2.0;
+        }
+        m_comp.turn_on(c / 10 == 41 ? CompSide::Left : CompSide::Right, radius_mm, m_where);
+    }
+
+    // G43 (H n: tool n's Z offset; no H: the tool in the spindle's), G43.1 Z (the offset itself), G43.2 (adds
+    // H n's offset or Z), G49 (none). The offset moves the machine Z of the next Z target (LinuxCNC: the tool tip
+    // goes to the programmed Z); the offset's change itself moves nothing.
+    void tool_length(const BlockWords& b) {
+        if (m_comp.on()) throw BadInput(m_where, "Cannot change tool offset with cutter radius compensation on");
+        const Code10 c = *b.tool_length;
+        if ((c == 431 || c == 432) && (b.x || b.y || b.a || b.e)) {
+            throw BadInput(m_where, std::string(c == 431 ? "G43.1" : "G43.2") +
+                                        ": this machine takes a Z tool offset only (no X, Y, A or E offset)");
+        }
+        if (c == 490) {
+            m_tlo_mm = 0.0;
+        } else if (c == 430) {
+            // No H, or H0: the tool in the spindle (rs274 reads H0 so).
+            const int tool = b.h ? tool_number(*b.h, "H") : 0;
+            m_tlo_mm = tool_entry(tool == 0 ? m_loaded_tool : tool).z_offset_mm;
+        } else if (c == 431) {
+            if (b.z) m_tlo_mm = *b.z * m_scale;
+        } else {
+            if (b.h && b.z) throw BadInput(m_where, "G43.2: Can not have both H and axis words");
+            if (!b.h && !b.z) throw BadInput(m_where, "G43.2: No axes specified and H word missing");
+            const int tool = b.h ? tool_number(*b.h, "H") : 0;
+            m_tlo_mm += b.h ? tool_entry(tool == 0 ? m_loaded_tool : tool).z_offset_mm : *b.z * m_scale;
+        }
+    }
+
+    // T n: the tool the next M6 loads (LinuxCNC selects it when T is read: it must be in the table).
+    void select_tool(double t) {
+        const int tool = tool_number(t, "T");
+        tool_entry(tool);
+        m_selected_tool = tool;
+    }
+
+    // M6 loads the selected tool; M61 Q n says tool n is in the spindle. Neither changes the length offset in
+    // force: a G43 after them takes the new tool's (LinuxCNC).
+    void change_tool(const BlockWords& b) {
+        if (*b.tool_change == 610) {
+            if (!b.q || *b.q < 0.0) {
+                throw BadInput(m_where, "Need non-negative Q-word to specify tool number with M61");
+            }
+            const int tool = tool_number(*b.q, "M61 Q");
+            tool_entry(tool);
+            m_loaded_tool = tool;
+            return;
+        }
+        if (!m_selected_tool) throw BadInput(m_where, "Need tool prepared -Txx- for toolchange");
+        if (m_comp.on()) throw BadInput(m_where, "Cannot change tools with cutter radius compensation on");
+        m_loaded_tool = *m_selected_tool;
+    }
+
+    // D and H belong to the codes that use them (LinuxCNC's checks).
+    void check_tool_words(const BlockWords& b) const {
+        if (b.d && !b.cutter_comp) throw BadInput(m_where, "D word with no G41, G41.1, G42 or G42.1 to use it");
+        if (b.d && b.cutter_comp == 400) throw BadInput(m_where, "D word with no G41, G41.1, G42 or G42.1 to use it");
+        if (b.h && b.tool_length != 430 && b.tool_length != 432) {
+            throw BadInput(m_where, "H word with no G43 or G43.2 to use it");
+        }
+    }
+
+    int tool_number(double v, const std::string& word) const {
+        if (v != std::floor(v) || v < 0.0 || v > std::numeric_limits<int>::max()) {
+            throw BadInput(m_where, word + " must be a whole number >= 0 (a tool number; 0: no tool)");
+        }
+        return static_cast<int>(v);
+    }
+
+    // The table's entry of a tool; tool 0 is no tool (diameter and length 0).
+    const ToolEntry& tool_entry(int tool) const {
+        if (const ToolEntry* e = m_tools->find(tool)) return *e;
+        throw BadInput(m_where, "Requested tool " + std::to_string(tool) + " not found in the tool table (" +
+                                    m_tools->file() + ")");
     }
 
     // One programmed move: the XY path goes to the architecture, the time of a Z (or A/E) component that the XY
     // hardware has no STEP pins for is kept. A move with XY and Z runs its XY path at the XY share of F, so that
     // it takes as long as the whole move at F (RS274/NGC feeds the XYZ length; A/E alone are timed at F).
     void emit(MotionKind kind, const geom::Segment& path, double z_to, double other_axes) {
-        const double xy_mm = path.length_mm();
-        const double dz_mm = std::fabs(z_to - m_z);
+        const MoveDraft d = draft(kind, path, z_to, other_axes);
+        advance(d);
+        output(d);
+    }
+
+    // The move with the state now in force (feed, laser, line, path control), from the current Z.
+    MoveDraft draft(MotionKind kind, const geom::Segment& path, double z_to, double other_axes) const {
+        const bool rapid = kind == MotionKind::Rapid;
+        return MoveDraft{kind,
+                         path,
+                         m_z,
+                         z_to,
+                         other_axes,
+                         m_line,
+                         m_laser,
+                         m_power_s,
+                         m_path_control,
+                         rapid ? m_opt.rapid_feed_mm_per_min : *m_feed_mm_per_min,
+                         !rapid && m_inverse_time ? std::optional<double>(1.0 / *m_f_word) : std::nullopt};
+    }
+
+    // The tool centre and Z once the move is made.
+    void advance(const MoveDraft& d) {
+        m_tool = d.path.end;
+        m_z = d.z_to;
+    }
+
+    void output(const MoveDraft& d) {
+        const double xy_mm = d.path.length_mm();
+        const double dz_mm = std::fabs(d.z_to - d.z_from);
         const double linear_mm = std::hypot(xy_mm, dz_mm);
-        const double length_mm = linear_mm > kSamePointMm ? linear_mm : other_axes;
-        double feed = kind == MotionKind::Rapid ? m_opt.rapid_feed_mm_per_min : *m_feed_mm_per_min;
+        const double length_mm = linear_mm > kSamePointMm ? linear_mm : d.other_axes;
+        double feed = d.feed_mm_per_min;
         if (dz_mm > 0.0) feed = std::min(feed, m_opt.z_max_feed_mm_per_min * linear_mm / dz_mm);
-        const bool inverse_time = kind != MotionKind::Rapid && m_inverse_time;
-        const double minutes = inverse_time ? 1.0 / *m_f_word : length_mm / feed;
+        const double minutes = d.inverse_minutes ? *d.inverse_minutes : length_mm / feed;
         m_program.z_travel_mm += dz_mm;
         if (xy_mm > kSamePointMm) {
             // A plain XY move keeps F exactly (the CAM's packet feed rounds it).
-            const double xy_feed = dz_mm == 0.0 && !inverse_time ? feed : xy_mm / minutes;
-            m_made.push_back(ProgrammedMove{kind, path, xy_feed, m_laser != LaserMode::Off, m_line, m_laser, m_power_s,
-                                            m_path_control, m_z, z_to});
+            const double xy_feed = dz_mm == 0.0 && !d.inverse_minutes ? feed : xy_mm / minutes;
+            m_made.push_back(ProgrammedMove{d.kind, d.path, xy_feed, d.laser != LaserMode::Off, d.line, d.laser,
+                                            d.power_s, d.path_control, d.z_from, d.z_to});
             if (m_keep_moves) m_program.moves.push_back(m_made.back());
             ++m_program.move_count;
         } else if (length_mm > kSamePointMm) {
-            wait(minutes * kSecondsPerMinute, WaitCause::OtherAxes);
+            put_wait(HostWait{0, minutes * kSecondsPerMinute, WaitCause::OtherAxes, d.line});
         }
-        m_pos = path.end;
-        m_z = z_to;
     }
 
+    // Behind held moves a wait is held too, so that it stays between the same moves.
     void wait(double seconds, WaitCause cause) {
-        if (seconds > 0.0) m_program.waits.push_back(HostWait{m_program.move_count, seconds, cause, m_line});
+        if (!(seconds > 0.0)) return;
+        const HostWait w{0, seconds, cause, m_line};
+        if (m_held.empty()) {
+            put_wait(w);
+        } else {
+            m_held.push_back(Held{std::nullopt, {}, w});
+        }
+    }
+
+    void put_wait(HostWait w) {
+        w.before_move = m_program.move_count;
+        m_program.waits.push_back(w);
+    }
+
+    // The held moves (their tool-centre paths as the corners left them) and waits go out in order.
+    void release_held() {
+        for (Held& h : m_held) {
+            if (h.move) {
+                h.move->path = h.open.path;
+                output(*h.move);
+            } else {
+                put_wait(h.wait);
+            }
+        }
+        m_held.clear();
     }
 
     bool stop(Code10 code) {
@@ -495,8 +753,16 @@ private:
     std::string m_where;
     int m_line = 0;
     int m_tape_marks = 0;
-    geom::Vec2 m_pos;                              // machine mm
-    double m_z = 0.0;                              // machine mm
+    const ToolTable* m_tools;  // none: the tool words are ignored
+    geom::Vec2 m_pos;          // the programmed point, machine mm
+    geom::Vec2 m_tool;         // the tool centre, machine mm: beside m_pos under G41/G42
+    double m_z = 0.0;          // machine mm (with the tool length offset)
+    CutterComp m_comp;
+    std::deque<Held> m_held;                       // moves and waits cutter compensation holds back
+    bool m_arc_not_allowed = false;                // the move after a G40 must be straight (LinuxCNC)
+    std::optional<int> m_selected_tool;            // T
+    int m_loaded_tool = 0;                         // M6 / M61; 0: none
+    double m_tlo_mm = 0.0;                         // tool length offset in force (G43), machine mm
     double m_a = 0.0, m_e = 0.0;                   // program units of the A and E axes
     std::array<Xyz, kCoordSystems> m_cs_offset{};  // G54 .. G59.3 origins, machine mm
     std::size_t m_cs = 0;                          // G54
@@ -624,7 +890,7 @@ std::optional<ProgrammedMove> GcodeStream::next() {
     std::deque<ProgrammedMove>& made = st.interp.made();
     while (made.empty() && !st.ended) {
         st.ended = !st.lines.read(st.text) || !st.interp.line(st.text, ++st.line);
-        if (st.ended) st.interp.check();
+        if (st.ended) st.interp.finish();
     }
     if (made.empty()) return std::nullopt;
     ProgrammedMove move = made.front();

@@ -16,6 +16,8 @@
 
 namespace cnc::host {
 
+class ToolTable;
+
 // Values equal the seed 000 motion byte (§4.7): 0 rapid (laser off), 1..3 cutting (laser on).
 enum class MotionKind : std::uint8_t { Rapid = 0, Linear = 1, ArcCW = 2, ArcCCW = 3 };
 
@@ -50,7 +52,9 @@ struct ProgrammedMove {
     LaserMode laser_mode = LaserMode::Off;
     std::optional<double> power_s;            // S in force (none: never programmed)
     std::optional<PathControl> path_control;  // G61/G61.1/G64 in force (none: the planner's default)
-    double z_start_mm = 0.0;                  // machine Z, mm (no XY architecture has Z STEP pins)
+    // Machine Z, mm (no XY architecture has Z STEP pins): the controlled point's, so with a tool length offset
+    // (G43) the programmed Z plus the offset, as LinuxCNC's motion moves it; the tool tip is at the programmed Z.
+    double z_start_mm = 0.0;
     double z_end_mm = 0.0;
     // The job's intent for the laser on this move: M3/M4 with S > 0 (or no S programmed) on a cutting move.
     [[nodiscard]] bool laser_intended() const {
@@ -83,6 +87,9 @@ struct InterpreterOptions {
     double operator_pause_s = 5.0;  // M0/M1/M60: the time an operator takes to press cycle start
     // machine.z.max_velocity_mm_per_s: a move is slowed so that its Z part stays within it.
     double z_max_feed_mm_per_min = std::numeric_limits<double>::infinity();
+    // scenario.tool_table: with it T, M6, M61, G43/G43.1/G43.2/G49 (H) and G40/G41/G42/G41.1/G42.1 (D) are
+    // executed as LinuxCNC does; without it they are ignored words (docs/gcode.md).
+    std::shared_ptr<const ToolTable> tool_table;
 };
 
 struct Program {

@@ -57,7 +57,7 @@ void ignore_code(BlockWords& b, const std::string& code, const char* reason) {
     if (!b.ignored_code) b.ignored_code = code;
 }
 
-void g_word(BlockWords& b, const GcodeWord& w, Code10 c, const std::string& where) {
+void g_word(BlockWords& b, const GcodeWord& w, Code10 c, const std::string& where, bool tools) {
     if (c <= 30 && c % 10 == 0) return set_once(b.motion, c, w, "motion (G0 G1 G2 G3)", where);
     if (in(c, {170, 180, 190})) return set_once(b.plane, c, w, "plane (G17 G18 G19)", where);
     if (in(c, {900, 910})) return set_once(b.distance, c, w, "distance mode (G90 G91)", where);
@@ -71,13 +71,20 @@ void g_word(BlockWords& b, const GcodeWord& w, Code10 c, const std::string& wher
     if (in(c, {40, 100, 280, 281, 300, 301, 530, 920, 921, 922, 923})) {
         return set_once(b.non_modal, c, w, "non-modal (G4 G10 G28 G30 G53 G92)", where);
     }
+    if (tools && in(c, {400, 410, 411, 420, 421})) {
+        return set_once(b.cutter_comp, c, w, "cutter compensation (G40 G41 G41.1 G42 G42.1)", where);
+    }
+    if (tools && in(c, {430, 431, 432, 490})) {
+        return set_once(b.tool_length, c, w, "tool length offset (G43 G43.1 G43.2 G49)", where);
+    }
     if (const char* reason = ignored_g_reason(c)) return ignore_code(b, canonical('G', c), reason);
     b.unsupported.push_back(canonical('G', c));
 }
 
-void m_word(BlockWords& b, const GcodeWord& w, Code10 c, const std::string& where) {
+void m_word(BlockWords& b, const GcodeWord& w, Code10 c, const std::string& where, bool tools) {
     if (in(c, {30, 40, 50})) return set_once(b.laser, c, w, "laser (M3 M4 M5)", where);
     if (in(c, {0, 10, 20, 300, 600})) return set_once(b.stop, c, w, "stop (M0 M1 M2 M30 M60)", where);
+    if (tools && in(c, {60, 610})) return set_once(b.tool_change, c, w, "tool change (M6 M61)", where);
     const std::string text = canonical('M', c);
     if (c == 60) return ignore_code(b, text, "tool change: the machine has one tool");
     if (in(c, {70, 80, 90})) return ignore_code(b, text, "coolant: the machine has none");
@@ -89,7 +96,7 @@ void m_word(BlockWords& b, const GcodeWord& w, Code10 c, const std::string& wher
 
 }  // namespace
 
-BlockWords group_words(const std::vector<GcodeWord>& words, const std::string& where) {
+BlockWords group_words(const std::vector<GcodeWord>& words, const std::string& where, bool tool_table) {
     BlockWords b;
     for (const GcodeWord& w : words) {
         switch (w.letter) {
@@ -99,9 +106,9 @@ BlockWords group_words(const std::vector<GcodeWord>& words, const std::string& w
                 if (!code) {
                     b.unsupported.push_back(w.text);
                 } else if (w.letter == 'G') {
-                    g_word(b, w, *code, where);
+                    g_word(b, w, *code, where, tool_table);
                 } else {
-                    m_word(b, w, *code, where);
+                    m_word(b, w, *code, where, tool_table);
                 }
                 break;
             }
@@ -147,13 +154,25 @@ BlockWords group_words(const std::vector<GcodeWord>& words, const std::string& w
             case 'N':
                 break;  // block number
             case 'T':
-                b.ignored.push_back({w.text, "tool select: the machine has one tool"});
+                if (tool_table) {
+                    set_value(b.t, w, where);
+                } else {
+                    b.ignored.push_back({w.text, "tool select: the machine has one tool"});
+                }
                 break;
             case 'D':
-                b.ignored.push_back({w.text, kNoToolTable});
+                if (tool_table) {
+                    set_value(b.d, w, where);
+                } else {
+                    b.ignored.push_back({w.text, kNoToolTable});
+                }
                 break;
             case 'H':
-                b.ignored.push_back({w.text, kNoToolTable});
+                if (tool_table) {
+                    set_value(b.h, w, where);
+                } else {
+                    b.ignored.push_back({w.text, kNoToolTable});
+                }
                 break;
             case 'O':
                 if (std::isnan(w.value)) {

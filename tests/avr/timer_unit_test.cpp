@@ -417,3 +417,58 @@ TEST(AvrTimerUnit, MatchesATickByTickReferenceUnderRandomRegisterWrites) {
         EXPECT_EQ(unit.read_tcnt(30'000), ref.tcnt) << "seed " << seed;
     }
 }
+
+// Every clock select code against the datasheet's tables (Table 15-9 Timer0, 16-5 Timer1: /1 /8 /64 /256 /1024,
+// CS = 110/111 the external T0/T1 pin; Table 18-9 Timer2: /1 /8 /32 /64 /128 /256 /1024). With the prescaler
+// counting from cycle 0 and the clock selected at cycle 0, tap N ticks at N, 2N, ...: TCNT is k at cycle k N
+// and still k - 1 one cycle earlier (the boundary cycle shows an N off by one as well as a wrong tap).
+TEST(AvrTimerUnit, EveryClockSelectCodeDividesByTheDatasheetsFactor) {
+    struct Case {
+        const TimerSpec* spec;
+        std::uint8_t cs;
+        int n;  // 0: no internal clock (stopped, or the external pin, which nothing drives here)
+    };
+    const Case cases[] = {
+        {&kTimer0, 0, 0},    {&kTimer0, 1, 1},    {&kTimer0, 2, 8},    {&kTimer0, 3, 64},  {&kTimer0, 4, 256},
+        {&kTimer0, 5, 1024}, {&kTimer0, 6, 0},    {&kTimer0, 7, 0},    {&kTimer1, 1, 1},   {&kTimer1, 2, 8},
+        {&kTimer1, 3, 64},   {&kTimer1, 4, 256},  {&kTimer1, 5, 1024}, {&kTimer1, 6, 0},   {&kTimer1, 7, 0},
+        {&kTimer2, 0, 0},    {&kTimer2, 1, 1},    {&kTimer2, 2, 8},    {&kTimer2, 3, 32},  {&kTimer2, 4, 64},
+        {&kTimer2, 5, 128},  {&kTimer2, 6, 256},  {&kTimer2, 7, 1024},
+    };
+    for (const Case& c : cases) {
+        Fixture f(*c.spec);
+        f.unit.write_tccrb(0, c.cs);
+        const std::string what = std::string("Timer") + c.spec->name + " CS=" + std::to_string(c.cs);
+        if (c.n == 0) {
+            EXPECT_EQ(f.unit.read_tcnt(100'000), 0) << what;
+            continue;
+        }
+        EXPECT_EQ(f.unit.read_tcnt(3 * c.n - 1), 2) << what;
+        EXPECT_EQ(f.unit.read_tcnt(3 * c.n), 3) << what;
+        EXPECT_EQ(f.unit.read_tcnt(100 * c.n), 100) << what;
+    }
+}
+
+// CTC on the seed 003 STEP pins (§5.2.5: STEP_X = OC0A, STEP_Y = OC2A): the datasheet's output frequency
+// f_OCnA = f_clk / (2 N (1 + OCRnA)) (§15.7.2, §18.7.2), i.e. a toggle every N (1 + OCRnA) cycles. At 16 MHz
+// (seed 003 §5.2.4): Timer2, N = 32, OCR2A = 124: a toggle every 4,000 cycles (2 kHz); Timer0, N = 64,
+// OCR0A = 249: every 16,000 cycles (500 Hz). The first toggle comes (1 + OCR) ticks after the clock starts.
+TEST(AvrTimerUnit, CtcToggleFrequencyIsFclkOver2NTimesOcrPlusOne) {
+    struct Case {
+        const TimerSpec* spec;
+        std::uint8_t cs;
+        int n;
+        std::uint16_t ocr;
+    };
+    for (const Case& c : {Case{&kTimer2, 3, 32, 124}, Case{&kTimer0, 3, 64, 249}}) {
+        Fixture f(*c.spec);
+        f.unit.write_ocr(0, Channel::A, c.ocr);
+        f.unit.write_tccra(0, 0x42);  // COMnA0 (toggle on match), WGMn1 (CTC, TOP = OCRnA)
+        f.unit.write_tccrb(0, c.cs);
+        const Cycle half_period = static_cast<Cycle>(c.n) * (1 + c.ocr);
+        f.unit.advance_to(4 * half_period);
+        const std::vector<Cycle> expected{half_period, 2 * half_period, 3 * half_period, 4 * half_period};
+        EXPECT_EQ(toggle_cycles(f.rec.pins), expected) << "Timer" << c.spec->name;
+        EXPECT_DOUBLE_EQ(16e6 / (2.0 * static_cast<double>(half_period)), c.spec->name == '2' ? 2000.0 : 500.0);
+    }
+}

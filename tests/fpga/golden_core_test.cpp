@@ -2,6 +2,8 @@
 // §3.4.7 example, the 32-bit period overflow, and the cycle timeline of models/fpga/README.md.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "common/units.hpp"
 #include "fpga/core/packet_decoder_core.hpp"
 #include "fpga/core/step_schedule.hpp"
@@ -69,6 +71,30 @@ TEST(Seed000Golden, PulseSettleFeedZeroAndAckDurations) {
     const UartTxFrame ack = uart_tx_frame(0xAA, cfg);
     EXPECT_EQ(ack.idle_from - 2, 4'340);  // start bit to end of stop bit: 86.8 us on the wire
     EXPECT_EQ(cycles_to_ps(4'340, cfg.clk_hz), 86'800'000);
+}
+
+}  // namespace
+}  // namespace cnc::fpga
+
+namespace cnc::fpga {
+namespace {
+
+// seed 000 §5.2.4 NUMERATOR_DEFAULT, the reset value of num_x/num_y: clock x 60 s/min / steps per mm, so that the
+// dominant period num / F cycles steps at exactly F mm/min. With the thesis's 50 MHz CLOCK_50 (§5.1.1) and
+// 160 steps/mm (GT2 20T = 40 mm per 200 x 32 microsteps, §3.4.2): 50e6 x 60 / 160 = 18,750,000. Worked here from
+// those numbers, not read from the config: a move of 160 steps at F600 lasts 100 ms (1 mm at 10 mm/s).
+TEST(Seed000Golden, ResetNumeratorStepsAtTheProgrammedFeedFor160StepsPerMm) {
+    const FpgaConfig cfg;
+    const std::uint32_t steps_per_mm = 200 * 32 / 40;
+    ASSERT_EQ(steps_per_mm, 160U);
+    EXPECT_EQ(cfg.numerator_default, 50'000'000U * 60U / steps_per_mm);
+    EXPECT_EQ(cfg.clk_hz, 50'000'000U);
+    const StepPeriods p = compute_periods(160, 0, 600, cfg.numerator_default, cfg.numerator_default, cfg);
+    EXPECT_EQ(p.x_cycles, 31'250U);  // 625 us between steps: 1,600 steps/s = 10 mm/s
+    EXPECT_EQ(run_duration_ps({160, 0, 600, cfg.numerator_default, cfg.numerator_default}, cfg), 100 * kPsPerMs);
+    // The UART divisor of the same clock (§5.2.1): FULL_BIT = round(50 MHz / 115200) = 434, HALF_BIT = 217.
+    EXPECT_EQ(cfg.uart_full_bit_cycles, static_cast<std::uint32_t>(std::lround(50e6 / 115'200.0)));
+    EXPECT_EQ(cfg.uart_half_bit_cycles, cfg.uart_full_bit_cycles / 2);
 }
 
 }  // namespace

@@ -29,14 +29,14 @@ std::map<std::string, EdgeLog> read_rtl_edges(const std::string& path) {
     return logs;
 }
 
-void expect_rtl_as_reference(const UartWave& w, std::int64_t last_edge) {
+void expect_rtl_as_reference(const UartWave& w, std::int64_t last_edge, const char* testbench = CNC_STREAM_TB) {
     const std::string rx = cnc::test::test_path("rx.txt");
     const std::string out = cnc::test::test_path("pins.txt");
     {
         std::ofstream f(rx);
         for (const Edge& e : w.changes()) f << e.t_ps << ' ' << (e.level ? 1 : 0) << '\n';
     }
-    const std::string cmd = std::string(CNC_VVP) + " -n " + CNC_STREAM_TB + " +rx=" + rx + " +out=" + out +
+    const std::string cmd = std::string(CNC_VVP) + " -n " + testbench + " +rx=" + rx + " +out=" + out +
                             " +edges=" + std::to_string(last_edge) + " > " + cnc::test::test_path("vvp.log") + " 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     const auto rtl = read_rtl_edges(out);
@@ -63,6 +63,14 @@ TEST(FpgaRtlIcarus, MixedStreamFromTheCp2102AsTheReference) {
     UartWave w = cp2102_sender();
     const std::int64_t last = mixed_stream(w);
     expect_rtl_as_reference(w, last);
+}
+
+// step_gen with the sequential divider (DIVIDER = 1, for FPGAs without room for the single-clock one): the same
+// pins. The stream's packets, up to before the watchdog's part (36 ms).
+TEST(FpgaRtlIcarus, TheSequentialDividerGivesTheSameEdges) {
+    UartWave w = cp2102_sender();
+    (void)mixed_stream(w);
+    expect_rtl_as_reference(w, edge_of(36 * kMs), CNC_STREAM_SEQ_TB);
 }
 
 }  // namespace

@@ -11,7 +11,11 @@ module step_gen #(
     parameter NUMERATOR_DEFAULT = 18750000,
     // 0: the subordinate period's product at 32 bits, as the appendix prints it (it wraps past 2^32 - 1);
     // 1: the product at 64 bits, the quotient saturated at 2^32 - 1 (what the text's formula means).
-    parameter EXACT_PERIOD      = 1
+    parameter EXACT_PERIOD      = 1,
+    // 0: the periods in one clock, as the seed computes them (two 32-bit dividers and a multiplier); 1: one bit per
+    // clock in period_divider during DIR_WAIT, the same periods in place before RUN (DIR_SETTLE must be at least
+    // 130: the division takes 129 clocks, 97 with EXACT_PERIOD = 0).
+    parameter DIVIDER           = 0
 ) (
     input  wire        clk,
     input  wire        rst,
@@ -44,6 +48,24 @@ module step_gen #(
     wire [31:0] sub_period = abs_sub == 32'd0 ? 32'd0
                            : EXACT_PERIOD == 0 ? product32 / abs_sub
                            : (quotient64[63:32] != 32'd0 ? 32'hFFFFFFFF : quotient64[31:0]);
+    // The sequential divider's results, and whether they are the periods of this move (not feed 0, not a move of
+    // no steps, whose periods DIR_WAIT sets itself).
+    wire [31:0] seq_per_step, seq_sub_period;
+    wire        seq_done;
+    reg         seq_wanted;
+    generate
+        if (DIVIDER == 1) begin : sequential
+            period_divider #(.EXACT_PERIOD(EXACT_PERIOD)) divider (
+                .clk(clk), .start(state == DIR_WAIT && dir_cnt == 9'd0), .num_dom(x_dominant ? num_x : num_y),
+                .feed(feed_rate), .abs_dom(abs_dom), .abs_sub(abs_sub), .per_step(seq_per_step),
+                .sub_period(seq_sub_period), .done(seq_done));
+        end else begin : single_cycle
+            assign seq_per_step = 32'd0;
+            assign seq_sub_period = 32'd0;
+            assign seq_done = 1'b0;
+        end
+    endgenerate
+
     wire x_done = (rem_x == 32'd1 && cnt_x == period_x - 32'd1) || rem_x == 32'd0 || period_x == 32'd0;
     wire y_done = (rem_y == 32'd1 && cnt_y == period_y - 32'd1) || rem_y == 32'd0 || period_y == 32'd0;
 
@@ -54,6 +76,7 @@ module step_gen #(
             num_y <= NUMERATOR_DEFAULT;
             {abs_x, abs_y, rem_x, rem_y, period_x, period_y, cnt_x, cnt_y} <= 256'd0;
             dir_cnt <= 9'd0;
+            seq_wanted <= 1'b0;
             dir_x <= 1'b0;
             dir_y <= 1'b0;
             step_x <= 1'b0;
@@ -94,6 +117,8 @@ module step_gen #(
                         end else if (abs_x == 32'd0 && abs_y == 32'd0) begin
                             period_x <= 32'd0;
                             period_y <= 32'd0;
+                        end else if (DIVIDER == 1) begin
+                            seq_wanted <= 1'b1;
                         end else if (x_dominant) begin
                             period_x <= per_step;
                             period_y <= sub_period;
@@ -101,6 +126,11 @@ module step_gen #(
                             period_y <= per_step;
                             period_x <= sub_period;
                         end
+                    end
+                    if (seq_done && seq_wanted) begin
+                        seq_wanted <= 1'b0;
+                        period_x <= x_dominant ? seq_per_step : (abs_x == 32'd0 ? 32'd0 : seq_sub_period);
+                        period_y <= x_dominant ? (abs_y == 32'd0 ? 32'd0 : seq_sub_period) : seq_per_step;
                     end
                     if (dir_cnt >= DIR_SETTLE - 1) begin
                         dir_cnt <= 9'd0;

@@ -13,7 +13,10 @@ module top #(
     parameter EXACT_PERIOD      = 1,
     // 1: the decoder's numerators reach step_gen (what §5.2.6 asks of the final integration); 0: unconnected, as the
     // appendix top.v prints it, so init packets change nothing.
-    parameter INIT_WIRED        = 1
+    parameter INIT_WIRED        = 1,
+    // 0: step_gen's periods in one clock (the seed); 1: one bit per clock during DIR_WAIT (period_divider.v), for
+    // FPGAs without room for the single-cycle division: the pins are the same.
+    parameter DIVIDER           = 0
 ) (
     input  wire clk,
     input  wire rst_n,
@@ -49,7 +52,7 @@ module top #(
         .numerator_y(numerator_y), .cfg_valid(cfg_valid));
 
     step_gen #(.PULSE_HIGH(PULSE_HIGH), .DIR_SETTLE(DIR_SETTLE), .FEED_ZERO_PERIOD(FEED_ZERO_PERIOD),
-               .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT), .EXACT_PERIOD(EXACT_PERIOD)) step_gen_inst (
+               .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT), .EXACT_PERIOD(EXACT_PERIOD), .DIVIDER(DIVIDER)) step_gen_inst (
         .clk(clk), .rst(rst), .steps_x(steps_x), .steps_y(steps_y), .feed_rate(feed_rate), .pkt_valid(pkt_valid),
         .numerator_x(INIT_WIRED ? numerator_x : 32'd0), .numerator_y(INIT_WIRED ? numerator_y : 32'd0),
         .cfg_valid(INIT_WIRED ? cfg_valid : 1'b0), .dir_x(dir_x), .step_x(step_x), .dir_y(dir_y), .step_y(step_y),

@@ -8,6 +8,7 @@
 // reference's edges take only the changes strictly before them.
 `timescale 1ps / 1ps
 module stream_tb;
+    parameter DIVIDER = 0;  // top's: the seed's single-clock periods, or the sequential divider
     localparam integer HALF_PS = 10000;  // 50 MHz
     localparam integer RESET_EDGES = 4;
     reg clk = 1'b0;
@@ -15,7 +16,7 @@ module stream_tb;
     reg rx = 1'b1;
     wire tx, dir_x, step_x, n_enbl_x, dir_y, step_y, n_enbl_y, laser, busy;
 
-    top dut (.clk(clk), .rst_n(rst_n), .rx(rx), .tx(tx), .dir_x(dir_x), .step_x(step_x), .n_enbl_x(n_enbl_x),
+    top #(.DIVIDER(DIVIDER)) dut (.clk(clk), .rst_n(rst_n), .rx(rx), .tx(tx), .dir_x(dir_x), .step_x(step_x), .n_enbl_x(n_enbl_x),
              .dir_y(dir_y), .step_y(step_y), .n_enbl_y(n_enbl_y), .laser(laser), .busy(busy));
 
     integer edge_n = -RESET_EDGES;  // the last rising edge, counted from the waveform's edge 1

@@ -8,8 +8,10 @@
 //              changes at d = max(a, last rise + DIR_HOLD); the next rise is at max(a, last DIR change + DIR_SETUP,
 //              last rise + spacing), spacing = P' (IMMEDIATE) or PULSE_CYCLES + 1 (at the next pulse).
 //   After a rise at R: STEP falls at R + PULSE_CYCLES and rises again at R + P'.
-// The absolute edges of the model become counters here: since_rise and since_dir count the clocks since the last
-// STEP rise and DIR change (saturated: "none yet"), rise_wait and dir_wait the clocks to the scheduled ones.
+// The absolute edges of the model become counters here: since_rise counts the clocks since the last STEP rise
+// (saturated: "none yet"), rise_wait and dir_wait the clocks to the scheduled rise and DIR change, and the margins a
+// load needs (hold left, setup left, shortest spacing left) count down from a rise or DIR change to 0, so that a word's
+// schedule is a few small comparisons rather than a chain of 32-bit subtractions (it closes timing at 50 MHz).
 // rd (combinational) takes the FIFO's word at this edge: IMMEDIATE, whenever one is readable (one per edge);
 // otherwise (RateApply::AtNextPulse) only when stopped or at the edge the running period ends (models/fpga/spi/README.md,
 // "When a rate applies").
@@ -39,7 +41,10 @@ module spi_pulse_gen #(
     reg [31:0] rise_wait;  // clocks from this edge to the scheduled rise (0: it is due at this edge)
     reg        dir_pend;
     reg [31:0] dir_wait;
-    reg [31:0] since_rise, since_dir;  // this edge minus the last rise / DIR change
+    reg [31:0] since_rise;  // this edge minus the last rise
+    // Margins at this edge: max(0, DIR_HOLD - since_rise), that + DIR_SETUP, max(0, DIR_SETUP - clocks since the last
+    // DIR change), max(0, PULSE_CYCLES + 1 - since_rise).
+    reg [31:0] hold_left, hold_setup_left, setup_left, space_left;
 
     wire rise_due = running && rise_wait == 32'd0;
     assign rd = readable && (IMMEDIATE != 0 || !running || rise_due);
@@ -48,15 +53,18 @@ module spi_pulse_gen #(
     wire [31:0] w_period = {2'b00, word_period};
     wire [31:0] new_period = w_period < MIN_PERIOD ? MIN_PERIOD : w_period;
     wire        reversal = word_dir != dir;
-    wire [31:0] spacing = IMMEDIATE != 0 ? new_period : MIN_PERIOD;
-    wire [31:0] t_space = since_rise >= spacing ? 32'd0 : spacing - since_rise;
-    wire [31:0] t_hold = since_rise >= HOLD ? 32'd0 : HOLD - since_rise;
-    wire [31:0] t_setup = reversal ? t_hold + SETUP : (since_dir >= SETUP ? 32'd0 : SETUP - since_dir);
+    wire [31:0] t_space = IMMEDIATE == 0 ? space_left
+                        : (since_rise >= new_period ? 32'd0 : new_period - since_rise);
+    wire [31:0] t_setup = reversal ? hold_setup_left : setup_left;
     wire [31:0] delay = t_space > t_setup ? t_space : t_setup;
     wire        load_run = rd && word_period != 30'd0;
 
-    wire rise_now = load_run ? delay == 32'd0 : (!rd && rise_due);
-    wire dir_now = load_run ? (reversal && t_hold == 32'd0) : (!rd && dir_pend && dir_wait == 32'd0);
+    // delay == 0 without waiting for the subtraction and the maximum: every margin is 0 (a reversal never is: it
+    // waits DIR_SETUP >= 1), and with IMMEDIATE the new period has passed since the last rise.
+    wire space_zero = space_left == 32'd0 && (IMMEDIATE == 0 || since_rise >= w_period);
+    wire delay_zero = space_zero && !reversal && setup_left == 32'd0;
+    wire rise_now = load_run ? delay_zero : (!rd && rise_due);
+    wire dir_now = load_run ? (reversal && hold_left == 32'd0) : (!rd && dir_pend && dir_wait == 32'd0);
     wire fall_now = step && since_rise == PULSE;
 
     always @(posedge clk) begin
@@ -67,12 +75,25 @@ module spi_pulse_gen #(
             dir_pend <= 1'b0;
             dir_wait <= 32'd0;
             since_rise <= NONE;
-            since_dir <= NONE;
+            hold_left <= 32'd0;  // no rise, no DIR change yet
+            hold_setup_left <= SETUP;
+            setup_left <= 32'd0;
+            space_left <= 32'd0;
             step <= 1'b0;
             dir <= 1'b0;  // reset low
         end else begin
             since_rise <= rise_now ? 32'd1 : (since_rise == NONE ? NONE : since_rise + 32'd1);
-            since_dir <= dir_now ? 32'd1 : (since_dir == NONE ? NONE : since_dir + 32'd1);
+            if (rise_now) begin
+                hold_left <= HOLD - 32'd1;
+                hold_setup_left <= HOLD - 32'd1 + SETUP;
+                space_left <= MIN_PERIOD - 32'd1;
+            end else begin
+                if (hold_left != 32'd0) hold_left <= hold_left - 32'd1;
+                if (hold_setup_left != SETUP) hold_setup_left <= hold_setup_left - 32'd1;
+                if (space_left != 32'd0) space_left <= space_left - 32'd1;
+            end
+            if (dir_now) setup_left <= SETUP - 32'd1;
+            else if (setup_left != 32'd0) setup_left <= setup_left - 32'd1;
             if (rise_now) step <= 1'b1;
             else if (fall_now) step <= 1'b0;
             if (dir_now) dir <= ~dir;
@@ -80,8 +101,8 @@ module spi_pulse_gen #(
             if (rd) begin
                 // A new word cancels the rise and the DIR change it has not reached yet.
                 running <= load_run;
-                dir_pend <= load_run && reversal && t_hold != 32'd0;
-                dir_wait <= t_hold - 32'd1;
+                dir_pend <= load_run && reversal && hold_left != 32'd0;
+                dir_wait <= hold_left - 32'd1;
                 if (load_run) begin
                     period <= new_period;
                     rise_wait <= rise_now ? new_period - 32'd1 : delay - 32'd1;

@@ -11,7 +11,7 @@
 // The absolute edges of the model become counters here: since_rise counts the clocks since the last STEP rise
 // (saturated: "none yet"), rise_wait and dir_wait the clocks to the scheduled rise and DIR change, and the margins a
 // load needs (hold left, setup left, shortest spacing left) count down from a rise or DIR change to 0, so that a word's
-// schedule is a few small comparisons rather than a chain of 32-bit subtractions (it closes timing at 50 MHz).
+// schedule is a few small comparisons rather than a chain of 32-bit subtractions (a shorter path to the registers).
 // rd (combinational) takes the FIFO's word at this edge: IMMEDIATE, whenever one is readable (one per edge);
 // otherwise (RateApply::AtNextPulse) only when stopped or at the edge the running period ends (models/fpga/spi/README.md,
 // "When a rate applies").
@@ -34,7 +34,7 @@ module spi_pulse_gen #(
     localparam [31:0] PULSE = PULSE_CYCLES;
     localparam [31:0] SETUP = DIR_SETUP;
     localparam [31:0] HOLD = DIR_HOLD;
-    localparam [31:0] NONE = 32'h7FFFFFFF;  // saturated "since": no rise / no DIR change yet, above any spacing
+    localparam [31:0] NONE = 32'h7FFFFFFF;  // saturated since_rise: no rise yet, above any spacing
 
     reg        running;    // a rise is scheduled
     reg [31:0] period;     // P' of the word governing

@@ -28,10 +28,11 @@ def yosys(rtl_dir, work, divider, synth, out_json):
     if run.returncode != 0:
         return None, "yosys %s failed (%s)" % (synth, log)
     text = run.stdout
-    if re.search(r"Latch inferred|\$_DLATCH", text):
-        return None, "%s: a latch was inferred (%s)" % (synth, log)
     stat = text[text.rfind("Number of cells:"):]
     cells = {m.group(1): int(m.group(2)) for m in re.finditer(r"^\s+(\S+)\s+(\d+)$", stat, re.M)}
+    # proc_dlatch says "Latch inferred for signal" for each; a latch left in the netlist is a *LATCH* cell.
+    if "Latch inferred for signal" in text or any("LATCH" in cell.upper() for cell in cells):
+        return None, "%s: a latch was inferred (%s)" % (synth, log)
     return cells, None
 
 

@@ -35,15 +35,14 @@ metrics::MoveSpec CommandedMoves::next(const host::MotionSegment& seg, const hos
     return m;
 }
 
-metrics::MoveSpec CommandedMoves::unstepped(const host::ProgrammedMove& programmed, int move) const {
+metrics::MoveSpec CommandedMoves::unstepped(const host::ProgrammedMove& programmed, int move) {
     host::MotionSegment seg;
     seg.index = 0;
     seg.motion = programmed.kind;
     seg.path_feed_mm_per_min = programmed.feed_mm_per_min;
     seg.move = move;
     seg.line = programmed.line;
-    CommandedMoves here = *this;
-    return here.next(seg, &programmed);
+    return next(seg, &programmed);  // no steps: the position stays
 }
 
 void place_unstepped(metrics::MoveSpec& m, std::optional<TimePs> next_begin_ps, TimePs last_end_ps) {

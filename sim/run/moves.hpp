@@ -23,7 +23,7 @@ public:
     // Programmed move number `move` (0-based), too short for one microstep on every axis: it makes no segment, so
     // no controller runs it, but the metrics record it (docs/metrics.md "Per move"): zero steps where the tool is,
     // piece index 0, its window to be placed by place_unstepped().
-    [[nodiscard]] metrics::MoveSpec unstepped(const host::ProgrammedMove& programmed, int move) const;
+    [[nodiscard]] metrics::MoveSpec unstepped(const host::ProgrammedMove& programmed, int move);
 
 private:
     double m_mm_per_step_x, m_mm_per_step_y;

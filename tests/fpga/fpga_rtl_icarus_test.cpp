@@ -5,29 +5,15 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <map>
 #include <string>
 
 #include "fpga_test_support.hpp"
 #include "reference_fpga.hpp"
+#include "support/rtl_edges.hpp"
 #include "support/test_path.hpp"
 
 namespace cnc::fpga::test {
 namespace {
-
-// stream_tb.v's output: "pin edge level" per change.
-std::map<std::string, EdgeLog> read_rtl_edges(const std::string& path) {
-    std::map<std::string, EdgeLog> logs;
-    for (const char* pin : {"tx", "dir_x", "step_x", "dir_y", "step_y", "laser", "busy"}) {
-        logs[pin] = EdgeLog{pin, std::string(pin) == "tx", {}};
-    }
-    std::ifstream in(path);
-    std::string pin;
-    std::int64_t edge = 0;
-    int level = 0;
-    while (in >> pin >> edge >> level) logs.at(pin).add(edge * kCyclePs, level != 0);
-    return logs;
-}
 
 void expect_rtl_as_reference(const UartWave& w, std::int64_t last_edge, const char* testbench = CNC_STREAM_TB) {
     const std::string rx = cnc::test::test_path("rx.txt");
@@ -39,17 +25,9 @@ void expect_rtl_as_reference(const UartWave& w, std::int64_t last_edge, const ch
     const std::string cmd = std::string(CNC_VVP) + " -n " + testbench + " +rx=" + rx + " +out=" + out +
                             " +edges=" + std::to_string(last_edge) + " > " + cnc::test::test_path("vvp.log") + " 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-    const auto rtl = read_rtl_edges(out);
+    const auto rtl = cnc::test::read_rtl_edges(out, kCyclePs);
     const auto reference = ref::run_reference(FpgaConfig{}, w.changes(), last_edge);
-    for (const auto& [pin, log] : rtl) {
-        const EdgeLog& r = reference.at(pin);
-        EXPECT_EQ(log.initial, r.initial) << pin;
-        ASSERT_EQ(log.edges.size(), r.edges.size()) << pin;
-        for (std::size_t i = 0; i < r.edges.size(); ++i) {
-            ASSERT_EQ(log.edges[i].t_ps, r.edges[i].t_ps) << pin << " edge #" << i;
-            ASSERT_EQ(log.edges[i].level, r.edges[i].level) << pin << " edge #" << i;
-        }
-    }
+    expect_same_edges(reference, rtl, {"tx", "dir_x", "step_x", "dir_y", "step_y", "laser", "busy"});
     EXPECT_GT(reference.at("step_x").edges.size(), 10U);  // the stream moved something
 }
 

@@ -19,6 +19,8 @@
 #include <vector>
 
 #include "spi_bench.hpp"
+#include "support/edge_log_diff.hpp"
+#include "support/rtl_edges.hpp"
 #include "support/test_path.hpp"
 
 namespace cnc::spi::test {
@@ -62,25 +64,6 @@ std::vector<Send> script() {
 }
 constexpr std::int64_t kLastEdge = 190'000;  // 3.8 ms
 
-// spi_stream_tb.v's output: "pin edge level" per change, the levels after reset as edge 0.
-std::map<std::string, EdgeLog> read_rtl_edges(const std::string& path) {
-    std::map<std::string, EdgeLog> logs;
-    std::ifstream in(path);
-    std::string pin;
-    std::int64_t edge = 0;
-    int level = 0;
-    while (in >> pin >> edge >> level) {
-        EdgeLog& log = logs[pin];
-        log.name = pin;
-        if (edge == 0) {
-            log.initial = level != 0;
-        } else {
-            log.add(edge * kCyclePs, level != 0);
-        }
-    }
-    return logs;
-}
-
 // Replies as the master samples them (the level just before each rising SCLK edge of a transfer).
 std::vector<Bytes> replies_on(const EdgeLog& miso, const EdgeLog& sclk, const std::vector<SpiMaster::Transfer>& ts) {
     std::vector<Bytes> out;
@@ -103,28 +86,6 @@ std::int64_t signed_rises(const EdgeLog& step, const EdgeLog& dir) {
     std::int64_t n = 0;
     for (const TimePs r : step.rising()) n += dir.level_at(r) ? 1 : -1;
     return n;
-}
-
-// "" when the two logs are the same, else the first difference (time in ps, levels; "-" past a log's end).
-std::string first_difference(const EdgeLog& rtl, const EdgeLog& model) {
-    std::ostringstream s;
-    if (rtl.initial != model.initial) {
-        s << "level after reset " << rtl.initial << " vs " << model.initial;
-        return s.str();
-    }
-    const std::size_t n = std::max(rtl.edges.size(), model.edges.size());
-    for (std::size_t i = 0; i < n; ++i) {
-        const bool in_r = i < rtl.edges.size();
-        const bool in_m = i < model.edges.size();
-        if (in_r && in_m && rtl.edges[i].t_ps == model.edges[i].t_ps && rtl.edges[i].level == model.edges[i].level)
-            continue;
-        s << "edge #" << i << ": ";
-        if (in_r) s << rtl.edges[i].level << " at " << rtl.edges[i].t_ps << " ps"; else s << "-";
-        s << " vs ";
-        if (in_m) s << model.edges[i].level << " at " << model.edges[i].t_ps << " ps"; else s << "-";
-        return s.str();
-    }
-    return "";
 }
 
 std::string iverilog_params(const SpiFpgaConfig& cfg) {
@@ -173,12 +134,12 @@ void expect_rtl_as_model(SpiBench& b, const SpiFpgaConfig& cfg) {
     const std::string run = std::string(CNC_VVP) + " -n " + vvp + " +in=" + in + " +out=" + out +
                             " +edges=" + std::to_string(kLastEdge) + " > " + cnc::test::test_path("vvp.log") + " 2>&1";
     ASSERT_EQ(std::system(run.c_str()), 0) << run;
-    const auto rtl = read_rtl_edges(out);
+    const auto rtl = cnc::test::read_rtl_edges(out, kCyclePs);
 
     // Every pin is compared (no early stop), so a failure names each pin that differs and its first difference.
     for (const char* pin : kOutputs) {
         ASSERT_EQ(rtl.count(pin), 1U) << pin << " missing from " << out;
-        EXPECT_EQ(first_difference(rtl.at(pin), b.log(pin)), "") << pin << ": RTL vs model";
+        EXPECT_EQ(cnc::test::first_difference(rtl.at(pin), b.log(pin)), "") << pin << ": RTL vs model";
     }
     // nENBL: no pin of the model (nor of the seed's FPGA); held low, drivers enabled (spi_fpga_top.v).
     for (const char* pin : {"n_enbl_x", "n_enbl_y"}) {

@@ -131,7 +131,7 @@ public:
 private:
     template <typename F>
     void hand_unstepped(const std::vector<UnsteppedMove>& unstepped, std::optional<TimePs> next_begin_ps,
-                        const CommandedMoves& moves, F& f) const {
+                        CommandedMoves& moves, F& f) const {
         for (const UnsteppedMove& u : unstepped) {
             metrics::MoveSpec m = moves.unstepped(u.programmed, u.move);
             place_unstepped(m, next_begin_ps, m_last_end_ps);

@@ -1,7 +1,8 @@
 // Icarus Verilog testbench that plays an rx waveform into our seed 000 RTL (models/fpga/rtl/top.v) and writes every
 // change of its output pins, for the comparison with the cycle-ticked reference (fpga_rtl_icarus_test.cpp).
 //   +rx=FILE   the rx line's changes, one "t_ps level" per line, in time order (idle high before the first)
-//   +out=FILE  written: "pin edge level" per output change, edge n being the clock edge at n x 20 ns
+//   +out=FILE  written: "pin edge level" per output change, edge n being the clock edge at n x 20 ns, and every
+//              pin's level after reset as edge 0
 //   +edges=N   the last edge to run
 // The design is reset over RESET_EDGES edges before edge 1; the waveform's times are shifted by as much. A change is
 // driven with a non-blocking assignment, so an edge at the same instant samples the level before it, as the
@@ -54,7 +55,11 @@ module stream_tb;
     reg [6:0] was;
     wire [6:0] now = {busy, laser, step_y, dir_y, step_x, dir_x, tx};
     always @(negedge clk) begin
-        if (edge_n == 0) was = now;
+        if (edge_n == 0) begin
+            was = now;
+            $fdisplay(out_fd, "tx 0 %0d\ndir_x 0 %0d\nstep_x 0 %0d\ndir_y 0 %0d\nstep_y 0 %0d\nlaser 0 %0d\nbusy 0 %0d",
+                      now[0], now[1], now[2], now[3], now[4], now[5], now[6]);
+        end
         if (edge_n >= 1) begin
             if (now[0] != was[0]) $fdisplay(out_fd, "tx %0d %0d", edge_n, now[0]);
             if (now[1] != was[1]) $fdisplay(out_fd, "dir_x %0d %0d", edge_n, now[1]);

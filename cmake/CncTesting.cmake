@@ -6,7 +6,8 @@
 # only stops a hung test (every simulation is bounded by scenario.max_sim_s anyway): `ctest -j8 --repeat
 # until-fail:20` on a 2-core machine with other work beside it ran a 7 s test for over 100 s, and
 # 120 s timed it out.
-set(CNC_TEST_ENV "SC_COPYRIGHT_MESSAGE=DISABLE;SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1")
+# The RTL plug-ins the tests build (fpga.model = "rtl") go to the build folder, shared by the tests, never to ~/.cache.
+set(CNC_TEST_ENV "SC_COPYRIGHT_MESSAGE=DISABLE;SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1;CNCSIM_RTL_CACHE=${CMAKE_BINARY_DIR}/rtl-cache")
 
 function(cnc_add_gtest NAME)
   cmake_parse_arguments(T "SYSTEMC" "LABEL;TIMEOUT;COST" "SOURCES;LIBS" ${ARGN})

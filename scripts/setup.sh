@@ -12,7 +12,7 @@ PACKAGES=(
   gnuplot-nox libxml2-utils python3-pil
   clang libclang-rt-14-dev llvm
   gcc-avr binutils-avr avr-libc simavr libsimavr-dev libelf-dev
-  iverilog yosys nextpnr-ice40
+  iverilog yosys nextpnr-ice40 verilator
 )
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi

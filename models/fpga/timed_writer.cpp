@@ -13,7 +13,7 @@ TimedWriter::TimedWriter(const sc_core::sc_module_name& name) : sc_module(name) 
 
 void TimedWriter::at(TimePs t_ps, std::function<void()> write) {
     const TimePs now = now_ps();
-    if (t_ps <= now) throw std::logic_error(std::string(name()) + ": register write not in the future");
+    if (t_ps < now) throw std::logic_error(std::string(name()) + ": register write in the past");
     m_pending.emplace(t_ps, std::move(write));
     m_wake.notify(ps(m_pending.begin()->first - now));  // an earlier pending notification is kept
 }

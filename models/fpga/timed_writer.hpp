@@ -16,7 +16,8 @@ class TimedWriter : public sc_core::sc_module {
 public:
     explicit TimedWriter(const sc_core::sc_module_name& name);
 
-    // Runs `write` at t_ps (> now); writes due at the same time run in the order they were scheduled.
+    // Runs `write` at t_ps (>= now: a write due now runs in the next delta); writes due at the same time run in the
+    // order they were scheduled.
     void at(TimePs t_ps, std::function<void()> write);
     [[nodiscard]] std::uint64_t activations() const { return m_activations; }
 

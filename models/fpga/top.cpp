@@ -6,19 +6,7 @@
 namespace cnc::fpga {
 
 Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
-    : sc_module(name),
-      rx("rx"),
-      tx("tx"),
-      dir_x("dir_x"),
-      step_x("step_x"),
-      dir_y("dir_y"),
-      step_y("step_y"),
-      laser("laser"),
-      busy("busy"),
-      pkt_valid("pkt_valid"),
-      cfg_valid("cfg_valid"),
-      rx_valid("rx_valid"),
-      tx_start("tx_start"),
+    : Board(name),
       m_cfg((validate(cfg), cfg)),
       m_clock(clock_grid(cfg)),
       m_numerator_x("numerator_x", cfg.numerator_default),

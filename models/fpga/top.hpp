@@ -1,8 +1,6 @@
-// top (seed 000 §5.2.6, Π.1): uart_rx -> packet_decoder -> step_gen + laser_ctrl, uart_tx sending the 0xAA ACK
-// when busy falls (only if uart_tx is idle then), wired as top.v. init_packet_wired = false keeps top.v's
-// unconnected numerator path (seed 000 §5.2.6 says it must be driven). LEDR/HEX are not modelled. Besides the
-// board pins, five internal nets are exported for tracing; every output must be bound (tx to a signal that starts
-// high: the line idles high).
+// top (seed 000 §5.2.6, Π.1) as event-driven blocks: uart_rx -> packet_decoder -> step_gen + laser_ctrl, uart_tx
+// sending the 0xAA ACK when busy falls (only if uart_tx is idle then), wired as top.v. init_packet_wired = false
+// keeps top.v's unconnected numerator path (seed 000 §5.2.6 says it must be driven). LEDR/HEX are not modelled.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -10,6 +8,7 @@
 #include <vector>
 
 #include "common/record_log.hpp"
+#include "fpga/board.hpp"
 #include "fpga/core/fpga_config.hpp"
 #include "fpga/core/fpga_records.hpp"
 #include "fpga/laser_ctrl.hpp"
@@ -21,37 +20,21 @@
 
 namespace cnc::fpga {
 
-class Top : public sc_core::sc_module {
+class Top final : public Board {
 public:
-    sc_core::sc_in<bool> rx;       // GPIO_0[0], from CP2102 TXD
-    sc_core::sc_out<bool> tx;      // GPIO_0[1], to CP2102 RXD
-    sc_core::sc_out<bool> dir_x;   // GPIO_0[2]
-    sc_core::sc_out<bool> step_x;  // GPIO_0[3]
-    sc_core::sc_out<bool> dir_y;   // GPIO_0[4]
-    sc_core::sc_out<bool> step_y;  // GPIO_0[5]
-    sc_core::sc_out<bool> laser;   // GPIO_0[6]
-    sc_core::sc_out<bool> busy;    // internal nets exported for tracing (one-clock pulses except busy)
-    sc_core::sc_out<bool> pkt_valid;
-    sc_core::sc_out<bool> cfg_valid;
-    sc_core::sc_out<bool> rx_valid;
-    sc_core::sc_out<bool> tx_start;
-
     Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg);
 
     // One record per pkt_valid, in order, with the ACK outcome of accepted moves (the ones not dropped yet).
     [[nodiscard]] std::vector<PacketRecord> packets() const;
-    // The same one at a time, so that a run can read the new ones during the simulation without copying them all:
-    // every pkt_valid step_gen has seen, the dropped ones included, and record i (not dropped yet).
-    [[nodiscard]] std::size_t packet_count() const { return step_gen_inst.moves().size(); }
-    [[nodiscard]] PacketRecord packet(std::size_t i) const;
-    // Every reader has read the records before index `end`: the decoder's, step_gen's and their ACKs go.
-    void drop_packets_before(std::size_t end);
-    [[nodiscard]] const std::vector<InitRecord>& inits() const { return m_inits; }
-    [[nodiscard]] FpgaStats stats() const;
+    [[nodiscard]] std::size_t packet_count() const override { return step_gen_inst.moves().size(); }
+    [[nodiscard]] PacketRecord packet(std::size_t i) const override;
+    // The decoder's, step_gen's and their ACKs' records go.
+    void drop_packets_before(std::size_t end) override;
+    [[nodiscard]] const std::vector<InitRecord>& inits() const override { return m_inits; }
+    [[nodiscard]] FpgaStats stats() const override;
     [[nodiscard]] std::uint8_t pkt_count() const { return m_pkt_count; }  // top.v's 8-bit completed-move count
     [[nodiscard]] const FpgaConfig& config() const { return m_cfg; }
-    // The edges of CLOCK_50 as this board's oscillator makes them.
-    [[nodiscard]] const ClockGrid& clock() const { return m_clock; }
+    [[nodiscard]] const ClockGrid& clock() const override { return m_clock; }
     // Debug: process activations of all blocks (the model must wake per edge, never per clock).
     [[nodiscard]] std::uint64_t activations() const;
     void add_traces(sc_core::sc_trace_file* tf) const;

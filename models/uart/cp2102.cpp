@@ -87,6 +87,7 @@ void Cp2102::tx_thread() {
         // so that rounding to the picosecond never accumulates. The first start bit goes out at the instant
         // the byte reaches the FIFO (the chip's internal latency, a few 48 MHz core cycles, is not modelled).
         const TimePs t_burst = now_ps();
+        m_tx_sending = true;
         for (std::int64_t j = 0; !m_tx_fifo.empty(); ++j) {
             const UsbOutByte b = m_tx_fifo.front();
             m_tx_fifo.pop_front();
@@ -98,12 +99,22 @@ void Cp2102::tx_thread() {
                 m_tx_log.push_back({b.byte, b.t_write_ps, b.t_usb_ps, t_start, t_end});
             }
             for (const Edge& e : frame_edges(b.byte, t_start, m_clk, m_cfg.format)) {
+                m_txd_next_ps = e.t_ps;
                 wait_until(e.t_ps);
                 txd.write(e.level);
             }
+            m_txd_next_ps = t_end;  // the next byte's start bit, if one comes in time
             wait_until(t_end);
         }
+        m_tx_sending = false;
     }
+}
+
+TimePs Cp2102::txd_quiet_until() const {
+    const TimePs now = now_ps();
+    if (m_tx_sending) return std::max(now, m_txd_next_ps);
+    if (!m_tx_fifo.empty()) return now;  // arrived this instant: the start bit goes out now
+    return next_frame_start(now, m_cfg.usb_frame_ps);
 }
 
 void Cp2102::on_rxd() {

@@ -5,6 +5,7 @@
 module top #(
     parameter CLK_HZ            = 50000000,
     parameter BAUD              = 115200,
+    parameter FULL_BIT          = CLK_HZ / BAUD,  // clocks per UART bit (HALF_BIT = FULL_BIT / 2)
     parameter PULSE_HIGH        = 100,
     parameter DIR_SETTLE        = 200,
     parameter FEED_ZERO_PERIOD  = 62500,
@@ -31,7 +32,6 @@ module top #(
     output wire laser,
     output wire busy
 );
-    localparam FULL_BIT = CLK_HZ / BAUD;
     wire rst = ~rst_n;
 
     wire [7:0]  rx_data;

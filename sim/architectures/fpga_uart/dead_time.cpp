@@ -53,7 +53,7 @@ PieceSteps piece_steps(const metrics::MoveMetrics& piece) {
     return {piece.t_first_edge_ps, piece.t_last_edge_ps};
 }
 
-void DeadTimeFold::fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const RecordLog<host::SentPacket>& sent,
+void DeadTimeFold::fold(TimePs now_ps, bool ended, const fpga::Board& fpga, const RecordLog<host::SentPacket>& sent,
                         const uart::Cp2102& cp2102) {
     const auto& first_bytes = cp2102.tx_log();  // [k] motion packet k's first byte
     const auto& rx = cp2102.rx_log();

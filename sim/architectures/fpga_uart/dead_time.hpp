@@ -11,7 +11,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "common/record_log.hpp"
-#include "fpga/top.hpp"
+#include "fpga/board.hpp"
 #include "host/sender.hpp"
 #include "metrics/metrics.hpp"
 #include "run/arch_run.hpp"
@@ -61,7 +61,7 @@ public:
     // Folds the gaps final at `now_ps`; `ended`: the run is over, fold every gap there is. `cp2102`: its TX log
     // thinned to each motion packet's first byte (Cp2102::thin_tx_log(host::kInitPacketBytes,
     // host::kMotionPacketBytes)).
-    void fold(TimePs now_ps, bool ended, const fpga::Top& fpga, const RecordLog<host::SentPacket>& sent,
+    void fold(TimePs now_ps, bool ended, const fpga::Board& fpga, const RecordLog<host::SentPacket>& sent,
               const uart::Cp2102& cp2102);
     // What the gaps still to fold read, from which on the records must be kept: the FPGA's packets, the sender's
     // and the CP2102's (thinned) TX log from packet next_packet(), its RX log from byte next_rx_byte().

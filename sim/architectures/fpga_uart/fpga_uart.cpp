@@ -28,9 +28,9 @@ public:
     [[nodiscard]] JobUse job_use() const override { return {true, true, LaserSwitching::ByMotionKind, true}; }
 
     [[nodiscard]] std::shared_ptr<const ArchSettings> read_settings(KeyReader& r, const Scenario&,
-                                                                    const std::filesystem::path&) const override {
+                                                                    const std::filesystem::path& base) const override {
         auto s = std::make_shared<FpgaUartSettings>();
-        read_fpga_uart_settings(r, *s);
+        read_fpga_uart_settings(r, base, *s);
         return s;
     }
 

@@ -18,6 +18,7 @@
 #include "common/bad_input.hpp"
 #include "common/record_log.hpp"
 #include "fpga/core/step_schedule.hpp"
+#include "fpga/rtl_top.hpp"
 #include "fpga/top.hpp"
 #include "host/core/packet_codec.hpp"
 #include "host/sender.hpp"
@@ -106,7 +107,7 @@ public:
     // Hands `f` each piece not handed yet whose packet's busy fell before until_ps (none: every accepted packet's,
     // once the run has ended).
     template <typename F>
-    void time_ended(const fpga::Top& top, std::optional<TimePs> until_ps, SentPackets& sent, CommandedMoves& moves,
+    void time_ended(const fpga::Board& top, std::optional<TimePs> until_ps, SentPackets& sent, CommandedMoves& moves,
                     F f) {
         const ClockGrid& clock = top.clock();
         for (; m_record < top.packet_count() && sent.unexecuted(); ++m_record) {
@@ -191,7 +192,7 @@ public:
     }
 
     // Reads the packets step_gen has seen since the last call.
-    void read(const fpga::Top& top, const RecordLog<int>& lines) {
+    void read(const fpga::Board& top, const RecordLog<int>& lines) {
         for (; m_next < top.packet_count(); ++m_next) {
             const fpga::PacketRecord r = top.packet(m_next);
             if (r.period_overflow) m_packets.push_back({"period_overflow", segment_place(lines, m_next), m_overflow});
@@ -204,7 +205,7 @@ public:
     // The first packet not read yet.
     [[nodiscard]] std::size_t next_packet() const { return m_next; }
     // Every packet read: their warnings, then the init packets' and the FPGA's counters'.
-    void finish(const fpga::Top& top, std::vector<Warning>& warnings) const;
+    void finish(const fpga::Board& top, std::vector<Warning>& warnings) const;
 
 private:
     const FpgaUartSettings& m_settings;
@@ -213,7 +214,7 @@ private:
     std::size_t m_next = 0;
 };
 
-void FpgaWarnings::finish(const fpga::Top& top, std::vector<Warning>& warnings) const {
+void FpgaWarnings::finish(const fpga::Board& top, std::vector<Warning>& warnings) const {
     const FpgaUartSettings& f = m_settings;
     warnings.insert(warnings.end(), m_packets.begin(), m_packets.end());
     for (const fpga::InitRecord& i : top.inits()) {
@@ -242,7 +243,7 @@ void FpgaWarnings::finish(const fpga::Top& top, std::vector<Warning>& warnings) 
 // The models' per-packet records that every reader has read go: the metrics' pieces, the dead-time split and the
 // warnings read them once. The detailed report lists every packet step_gen saw and the sender sent: kept.
 void hand_over_read(const ExecutedPieces& executed, const DeadTimeFold& dead_fold, const FpgaWarnings& warnings,
-                    bool detail, fpga::Top& fpga, host::Sender& sender, uart::Cp2102& cp2102, SentPackets& packets) {
+                    bool detail, fpga::Board& fpga, host::Sender& sender, uart::Cp2102& cp2102, SentPackets& packets) {
     cp2102.drop_tx_log_before(dead_fold.next_packet());
     cp2102.drop_rx_log_before(dead_fold.next_rx_byte());
     packets.drop_lines_before(warnings.next_packet());
@@ -333,6 +334,16 @@ void check_fpga_rate(const Scenario& s, const FpgaUartSettings& f) {
                               fpga_bd, f.fpga.clk_hz / 1e6, f.fpga.uart_full_bit_cycles)});
 }
 
+// The FPGA as the scenario asks: the event-driven blocks, or the Verilog in the loop running ahead to the time
+// before which the CP2102 cannot change rx.
+std::unique_ptr<fpga::Board> make_fpga(const FpgaUartSettings& f, std::uint64_t seed, const uart::Cp2102& cp2102) {
+    const fpga::FpgaConfig cfg = on_oscillator(f.fpga, f.clock, seed);
+    if (!f.rtl.rtl) return std::make_unique<fpga::Top>("fpga", cfg);
+    auto rtl = std::make_unique<fpga::RtlTop>("fpga", cfg, f.rtl.design);
+    rtl->rx_quiet_until([&cp2102] { return cp2102.txd_quiet_until(); });
+    return rtl;
+}
+
 // The seed 000 system between the job and the machine's pins: the CAM (GCODE2STEPS) on the host, or the steps file
 // it wrote, send_steps.py through the CP2102, the FPGA.
 class FpgaUartController final : public Controller {
@@ -347,7 +358,7 @@ public:
           m_cp2102("cp2102", m_f.serial.link),
           m_packets(s, job, m_numerators),
           m_sender("host", m_f.serial.sender, m_cp2102, host::encode_init(m_numerators.x, m_numerators.y), m_packets),
-          m_fpga("fpga", on_oscillator(m_f.fpga, m_f.clock, s.seed)),
+          m_fpga(make_fpga(m_f, s.seed, m_cp2102)),
           m_moves(s.machine, s.interpreter.start_mm),
           // Every gap only for the detailed report and the plots (which keep the whole run anyway).
           m_dead_fold(s.detail || s.keep_run_input),
@@ -355,25 +366,25 @@ public:
         m_cp2102.txd(m_wires.uart_rx);
         m_cp2102.rxd(m_wires.uart_tx);
         m_cp2102.thin_tx_log(host::kInitPacketBytes, host::kMotionPacketBytes);  // what the dead-time split reads
-        m_fpga.rx(m_wires.uart_rx);
-        m_fpga.tx(m_wires.uart_tx);
-        m_fpga.dir_x(pins.dir_x);
-        m_fpga.step_x(pins.step_x);
-        m_fpga.dir_y(pins.dir_y);
-        m_fpga.step_y(pins.step_y);
-        m_fpga.laser(pins.laser);
-        m_fpga.busy(m_wires.busy);
-        m_fpga.pkt_valid(m_wires.pkt_valid);
-        m_fpga.cfg_valid(m_wires.cfg_valid);
-        m_fpga.rx_valid(m_wires.rx_valid);
-        m_fpga.tx_start(m_wires.ack);
+        m_fpga->rx(m_wires.uart_rx);
+        m_fpga->tx(m_wires.uart_tx);
+        m_fpga->dir_x(pins.dir_x);
+        m_fpga->step_x(pins.step_x);
+        m_fpga->dir_y(pins.dir_y);
+        m_fpga->step_y(pins.step_y);
+        m_fpga->laser(pins.laser);
+        m_fpga->busy(m_wires.busy);
+        m_fpga->pkt_valid(m_wires.pkt_valid);
+        m_fpga->cfg_valid(m_wires.cfg_valid);
+        m_fpga->rx_valid(m_wires.rx_valid);
+        m_fpga->tx_start(m_wires.ack);
     }
 
     // The FPGA times everything it drives and drives no EN pin; the CP2102 (uart_rx) starts its frames when USB
     // delivers the bytes.
-    [[nodiscard]] MachinePinClocks pin_clocks() const override { return {m_fpga.clock().grid_hz(), std::nullopt}; }
+    [[nodiscard]] MachinePinClocks pin_clocks() const override { return {m_fpga->clock().grid_hz(), std::nullopt}; }
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
-        const std::optional<std::int64_t> fpga = m_fpga.clock().grid_hz();
+        const std::optional<std::int64_t> fpga = m_fpga->clock().grid_hz();
         const Wires& w = m_wires;
         return {{&w.uart_rx, "link", {}},     {&w.uart_tx, "link", fpga},   {&w.busy, "fpga", fpga},
                 {&w.pkt_valid, "fpga", fpga}, {&w.cfg_valid, "fpga", fpga}, {&w.rx_valid, "fpga", fpga},
@@ -401,24 +412,24 @@ public:
     }
     void slice_ended(TimePs now_ps, MetricsFeed* feed) override {
         if (feed == nullptr) return;
-        m_executed.time_ended(m_fpga, now_ps, m_packets, m_moves,
+        m_executed.time_ended(*m_fpga, now_ps, m_packets, m_moves,
                               [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
         feed->fold(now_ps);
-        m_dead_fold.fold(now_ps, false, m_fpga, m_sender.packets(), m_cp2102);
-        m_warnings.read(m_fpga, m_packets.lines());
-        hand_over_read(m_executed, m_dead_fold, m_warnings, m_s.detail, m_fpga, m_sender, m_cp2102, m_packets);
+        m_dead_fold.fold(now_ps, false, *m_fpga, m_sender.packets(), m_cp2102);
+        m_warnings.read(*m_fpga, m_packets.lines());
+        hand_over_read(m_executed, m_dead_fold, m_warnings, m_s.detail, *m_fpga, m_sender, m_cp2102, m_packets);
     }
 
     [[nodiscard]] TimePs job_end_ps(TimePs stop_ps) const override {
         return m_sender.finished() ? m_sender.t_end_ps() : stop_ps;
     }
     void finish_feed(MetricsFeed& feed) override {
-        m_executed.time_ended(m_fpga, std::nullopt, m_packets, m_moves,
+        m_executed.time_ended(*m_fpga, std::nullopt, m_packets, m_moves,
                               [&](metrics::MoveSpec m) { feed.add_piece(std::move(m)); });
     }
     void finish_input(metrics::RunInput& in, bool streamed) override {
         if (streamed) return;
-        m_executed.time_ended(m_fpga, std::nullopt, m_packets, m_moves,
+        m_executed.time_ended(*m_fpga, std::nullopt, m_packets, m_moves,
                               [&](metrics::MoveSpec m) { in.moves.push_back(std::move(m)); });
     }
     void measured(const metrics::RunMetrics& m) override {
@@ -440,7 +451,7 @@ private:
     uart::Cp2102 m_cp2102;
     SentPackets m_packets;
     host::Sender m_sender;
-    fpga::Top m_fpga;
+    std::unique_ptr<fpga::Board> m_fpga;
     CommandedMoves m_moves;
     DeadTimeFold m_dead_fold;
     ExecutedPieces m_executed;
@@ -451,16 +462,16 @@ private:
 void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) {
     const Scenario& s = m_s;
     const metrics::RunInput& in = run.input;
-    m_dead_fold.fold(in.t_job_end_ps, true, m_fpga, m_sender.packets(), m_cp2102);
+    m_dead_fold.fold(in.t_job_end_ps, true, *m_fpga, m_sender.packets(), m_cp2102);
     const DeadTimeBreakdown dead = m_dead_fold.finish(in.t_job_start_ps, in.t_job_end_ps, m_cp2102);
     if (s.keep_run_input) run.gap_causes = gap_causes(dead);
 
-    m_warnings.read(m_fpga, m_packets.lines());
-    m_warnings.finish(m_fpga, run.warnings);
-    const fpga::FpgaStats st = m_fpga.stats();
+    m_warnings.read(*m_fpga, m_packets.lines());
+    m_warnings.finish(*m_fpga, run.warnings);
+    const fpga::FpgaStats st = m_fpga->stats();
     const uart::Cp2102Baud& baud = m_cp2102.baud();
-    run.clock = oscillator_json(m_f.clock, m_fpga.clock());
-    run.clock_text = oscillator_text(m_f.clock, m_fpga.clock());
+    run.clock = oscillator_json(m_f.clock, m_fpga->clock());
+    run.clock_text = oscillator_text(m_f.clock, m_fpga->clock());
     nlohmann::json msgs = nlohmann::json::array();
     for (const host::SenderMessage& m : m_sender.messages()) {
         msgs.push_back({{"t_s", ps_to_s(m.t_ps)}, {"text", m.text}});
@@ -493,7 +504,7 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
         nlohmann::json& sent = run.details["sender"]["packets"] = nlohmann::json::array();
         for (const host::SentPacket& p : m_sender.packets()) sent.push_back(sent_json(p));
         nlohmann::json& received = run.details["fpga"]["packets"] = nlohmann::json::array();
-        for (std::size_t k = 0; k < m_fpga.packet_count(); ++k) received.push_back(packet_json(m_fpga.packet(k)));
+        for (std::size_t k = 0; k < m_fpga->packet_count(); ++k) received.push_back(packet_json(m_fpga->packet(k)));
     }
 
     std::ostringstream text;

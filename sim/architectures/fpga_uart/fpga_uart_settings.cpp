@@ -82,11 +82,12 @@ constexpr OscillatorPart kDe1SocClock50{
     50.0,   "the DE1-SoC manual names no part: the common +-50 ppm grade of 50 MHz CMOS crystal oscillators",
     3.0,    "such an oscillator's period jitter is a few ps rms; 3 ps of phase jitter"};
 
-void read_fpga_uart_settings(KeyReader& r, FpgaUartSettings& s) {
+void read_fpga_uart_settings(KeyReader& r, const std::filesystem::path& base, FpgaUartSettings& s) {
     read_serial_host_settings(r, s.serial);
     read_host(r, s);
     read_fpga(r, s.fpga);
     read_oscillator_settings(r, kDe1SocClock50, s.fpga.clk_hz, s.clock);
+    read_rtl_settings(r, base, s.rtl);
 }
 
 }  // namespace cnc::sim

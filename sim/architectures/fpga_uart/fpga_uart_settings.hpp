@@ -4,6 +4,7 @@
 #pragma once
 #include "architectures/architecture.hpp"
 #include "architectures/oscillator/oscillator_settings.hpp"
+#include "architectures/rtl/rtl_settings.hpp"
 #include "architectures/serial_host/serial_host_settings.hpp"
 #include "fpga/core/fpga_config.hpp"
 #include "host/core/cam.hpp"
@@ -18,10 +19,11 @@ struct FpgaUartSettings final : ArchSettings {
     bool allow_feed_zero = false;        // a steps file's FeedRate 0 sent as the appendix RTL would run it
     fpga::FpgaConfig fpga;
     OscillatorSettings clock;  // CLOCK_50's oscillator
+    RtlSettings rtl;           // the FPGA as event-driven blocks or as Verilog in the loop
 };
 
 // Reads and validates the keys (registering their documentation): BadInput naming the key for a value the FPGA's
-// registers cannot hold.
-void read_fpga_uart_settings(KeyReader& r, FpgaUartSettings& s);
+// registers cannot hold. Verilog paths are resolved against the scenario's folder `base`.
+void read_fpga_uart_settings(KeyReader& r, const std::filesystem::path& base, FpgaUartSettings& s);
 
 }  // namespace cnc::sim

@@ -1,0 +1,79 @@
+#include "fpga/core/observed_records.hpp"
+
+#include "fpga/core/step_schedule.hpp"
+
+namespace cnc::fpga {
+
+namespace {
+
+// uart_rx.v's and step_gen.v's state codes.
+constexpr std::uint8_t kUartRxIdle = 0, kUartRxStop = 3;
+constexpr std::uint8_t kIdle = 0, kDirWait = 2, kRun = 3;
+
+}  // namespace
+
+void ObservedRecords::settle_ack(std::int64_t n, const FpgaNets& now) {
+    if (m_ack_edge < 0 || n < m_ack_edge) return;
+    // top.v: tx_start rises at the edge after busy fell, unless uart_tx was busy (the ACK is dropped).
+    if (n == m_ack_edge && now.tx_start && !m_prev.tx_start) {
+        ++m_stats.acks_sent;
+        if (m_ack_packet >= m_packets.first() && m_ack_packet < m_packets.size()) {
+            m_packets[m_ack_packet].record.t_ack_start_ps = m_clock.at(n);
+        }
+    } else {
+        ++m_stats.acks_dropped;
+    }
+    m_ack_edge = -1;
+}
+
+PacketRecord* ObservedRecords::running() {
+    if (m_running < m_packets.first() || m_running >= m_packets.size()) return nullptr;
+    return &m_packets[m_running].record;
+}
+
+void ObservedRecords::edge(std::int64_t n, const FpgaNets& now) {
+    const TimePs t = m_clock.at(n);
+    settle_ack(n, now);
+    if (now.rx_valid && !m_prev.rx_valid) ++m_stats.bytes_received;
+    if (m_prev.uart_rx_state == kUartRxStop && now.uart_rx_state == kUartRxIdle && !now.rx_valid) {
+        ++m_stats.framing_errors;  // a low stop bit: the byte is dropped
+    }
+    if (m_prev.timeout_active && !now.timeout_active && !now.pkt_valid && !now.cfg_valid) ++m_stats.watchdog_resets;
+    if (now.cfg_valid && !m_prev.cfg_valid) {
+        m_inits.push_back(
+            {t, now.numerator_x, now.numerator_y, m_cfg.init_packet_wired && now.step_gen_state == kIdle});
+    }
+    if (now.pkt_valid && !m_prev.pkt_valid) {
+        PacketRecord r;
+        r.t_pkt_valid_ps = t;
+        r.motion = now.motion;
+        r.steps_x = now.steps_x;
+        r.steps_y = now.steps_y;
+        r.feed = now.feed_rate;
+        r.accepted = now.step_gen_state == kIdle;  // what step_gen sees at the next edge
+        if (r.accepted) {
+            r.period_overflow = compute_periods(abs_steps(r.steps_x), abs_steps(r.steps_y), r.feed, now.num_x,
+                                                now.num_y, m_cfg)
+                                    .overflow;
+            m_running = m_packets.size();
+        }
+        m_packets.push_back({r, !r.accepted});
+    }
+    if (m_prev.step_gen_state == kDirWait && now.step_gen_state != kDirWait) {
+        if (PacketRecord* r = running()) {
+            r->period_x_cycles = now.period_x;
+            r->period_y_cycles = now.period_y;
+            if (now.step_gen_state == kRun) r->t_run_start_ps = m_clock.at(n + 1);  // its first RUN cycle
+            m_packets[m_running].final = true;
+        }
+    }
+    if (m_prev.busy && !now.busy) {
+        if (PacketRecord* r = running()) r->t_busy_fall_ps = t;
+        m_ack_edge = n + 1;
+        m_ack_packet = m_running;
+    }
+    while (m_final < m_packets.size() && m_packets[m_final].final) ++m_final;
+    m_prev = now;
+}
+
+}  // namespace cnc::fpga

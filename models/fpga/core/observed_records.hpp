@@ -1,0 +1,74 @@
+// The FPGA's records (fpga_records.hpp) read off a clocked model of top.v instead of logged by the event-driven
+// blocks: after each clock edge that changed one of the nets below, those nets' values. The rules are top.v's:
+// step_gen takes a packet whose pkt_valid it sees in IDLE; its periods are in place when DIR_WAIT ends; busy falls
+// at DONE; uart_tx starts the ACK one edge after busy falls unless it is still sending.
+#pragma once
+#include <cstddef>
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "common/clock_grid.hpp"
+#include "common/record_log.hpp"
+#include "fpga/core/fpga_config.hpp"
+#include "fpga/core/fpga_records.hpp"
+
+namespace cnc::fpga {
+
+// Values after one clock edge (top.v's nets; the state codes are uart_rx.v's and step_gen.v's).
+struct FpgaNets {
+    bool busy = false;
+    bool rx_valid = false;
+    bool pkt_valid = false;
+    bool cfg_valid = false;
+    bool tx_start = false;
+    bool timeout_active = false;  // packet_decoder: a packet is under way and its watchdog counts
+    std::uint8_t uart_rx_state = 0;
+    std::uint8_t step_gen_state = 0;
+    std::uint8_t motion = 0;
+    std::int32_t steps_x = 0;
+    std::int32_t steps_y = 0;
+    std::uint16_t feed_rate = 0;
+    std::uint32_t numerator_x = 0;  // the decoder's outputs
+    std::uint32_t numerator_y = 0;
+    std::uint32_t num_x = 0;  // step_gen's latched numerators
+    std::uint32_t num_y = 0;
+    std::uint32_t period_x = 0;
+    std::uint32_t period_y = 0;
+};
+
+class ObservedRecords {
+public:
+    ObservedRecords(const FpgaConfig& cfg, const ClockGrid& clock) : m_cfg(cfg), m_clock(clock) {}
+
+    // The nets after edge n (n > the last edge given; the edges in between changed none of them).
+    void edge(std::int64_t n, const FpgaNets& now);
+
+    // Records whose acceptance and periods are final, in pkt_valid order (what a reader may act on).
+    [[nodiscard]] std::size_t packet_count() const { return m_final; }
+    [[nodiscard]] const PacketRecord& packet(std::size_t i) const { return m_packets[i].record; }
+    void drop_packets_before(std::size_t end) { m_packets.drop_before(std::min(end, m_final)); }
+    [[nodiscard]] const std::vector<InitRecord>& inits() const { return m_inits; }
+    [[nodiscard]] const FpgaStats& stats() const { return m_stats; }
+
+private:
+    void settle_ack(std::int64_t n, const FpgaNets& now);
+    [[nodiscard]] PacketRecord* running();
+
+    struct Logged {
+        PacketRecord record;
+        bool final = false;  // acceptance and periods known
+    };
+    const FpgaConfig m_cfg;
+    const ClockGrid m_clock;
+    FpgaNets m_prev;  // reset values
+    RecordLog<Logged> m_packets;
+    std::size_t m_final = 0;
+    std::size_t m_running = 0;      // the accepted packet step_gen runs (valid while busy)
+    std::int64_t m_ack_edge = -1;   // the edge that starts the ACK of the busy fall before it, or -1
+    std::size_t m_ack_packet = 0;
+    std::vector<InitRecord> m_inits;
+    FpgaStats m_stats;
+};
+
+}  // namespace cnc::fpga

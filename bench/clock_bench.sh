@@ -10,17 +10,7 @@ BUILD=${1:-build}
 REPS=${2:-5}
 CNCSIM=$BUILD/sim/cncsim
 
-median() {
-    printf '%s\n' "$@" | sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'
-}
-
-wall_ns() {  # scenario [--set ...]
-    local t0 t1
-    t0=$(date +%s%N)
-    "$CNCSIM" run "$@" --progress off > /dev/null
-    t1=$(date +%s%N)
-    echo $(( t1 - t0 ))
-}
+. bench/timing.sh
 
 echo "| scenario | ideal clock [s] | default clock [s] | cost |"
 echo "|---|---|---|---|"

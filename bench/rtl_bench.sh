@@ -13,17 +13,7 @@ CACHE=$(mktemp -d)
 trap 'rm -rf "$CACHE"' EXIT
 export CNCSIM_RTL_CACHE=$CACHE
 
-median() {
-    printf '%s\n' "$@" | sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'
-}
-
-wall_ns() {  # scenario [--set ...]
-    local t0 t1
-    t0=$(date +%s%N)
-    "$CNCSIM" run "$@" --progress off > /dev/null
-    t1=$(date +%s%N)
-    echo $(( t1 - t0 ))
-}
+. bench/timing.sh
 
 SIX=scenarios/fpga-uart/six_segment.toml
 SHORT=scenarios/fpga-uart/worked_example.toml

@@ -6,21 +6,11 @@
 #include <vector>
 
 #include "common/bad_input.hpp"
+#include "counter_design.hpp"
 #include "rtl/verilated_ports.hpp"
 
 namespace cnc::rtl {
 namespace {
-
-PluginSpec counter_spec(const std::string& file) {
-    PluginSpec spec;
-    spec.top_module = "counter";
-    spec.sources = {file};
-    spec.clock = "clk";
-    spec.inputs = {{"enable", 1}};
-    spec.outputs = {{"count", 8}, {"at_limit", 1}};
-    spec.where = "test.toml: fpga.rtl_top";
-    return spec;
-}
 
 TEST(VerilatedPorts, ReadsVerilatorsDeclarations) {
     const std::string header = "    VL_IN8(&clk,0,0);\n    VL_IN16(&feed,15,0);\n    VL_OUT(&steps,31,0);\n"

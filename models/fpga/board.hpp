@@ -34,6 +34,8 @@ public:
     virtual void drop_packets_before(std::size_t end) = 0;
     [[nodiscard]] virtual const std::vector<InitRecord>& inits() const = 0;
     [[nodiscard]] virtual FpgaStats stats() const = 0;
+    // False when the records are read off the pins alone (a design without top.v's nets: rtl_top.hpp).
+    [[nodiscard]] virtual bool records_from_nets() const { return true; }
     // The edges of CLOCK_50 as this board's oscillator makes them.
     [[nodiscard]] virtual const ClockGrid& clock() const = 0;
 

@@ -40,7 +40,8 @@ RtlTop::RtlTop(const sc_core::sc_module_name& name, const FpgaConfig& cfg, const
       m_spec(rtl_plugin_spec(cfg, design)),
       m_plugin(rtl::build_plugin(m_spec)),
       m_model(rtl::load_model(m_plugin)),
-      m_records(cfg, m_clock),
+      m_records(cfg, m_clock, std::all_of(m_plugin.observed_present.begin(), m_plugin.observed_present.end(),
+                                          [](bool present) { return present; })),
       m_writer("writer") {
     int next = static_cast<int>(m_spec.outputs.size());
     for (const bool present : m_plugin.observed_present) m_observed_index.push_back(present ? next++ : -1);
@@ -80,6 +81,7 @@ void RtlTop::on_edge(std::int64_t n) {
     }
     FpgaNets v;
     v.busy = m_values[kRtlOutBusy] != 0;
+    v.tx = m_values[kRtlOutTx] != 0;
     v.rx_valid = observed(kRxValid) != 0;
     v.pkt_valid = observed(kPktValid) != 0;
     v.cfg_valid = observed(kCfgValid) != 0;

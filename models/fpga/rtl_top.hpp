@@ -1,7 +1,7 @@
 // Seed 000's FPGA as Verilog (ours in rtl/, or the user's) verilated and clocked in the loop. One SystemC thread
 // runs the model in C++ batches: every clock edge up to the time before which rx cannot change (what the CP2102
 // has promised: rx_quiet_until), each output change written to its pin at its exact edge. The records come from
-// the design's own nets (ObservedRecords); a design without them keeps its pins and empty records.
+// the design's own nets (ObservedRecords), or from its busy and tx pins when it lacks them.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -33,6 +33,7 @@ public:
     void drop_packets_before(std::size_t end) override { m_records.drop_packets_before(end); }
     [[nodiscard]] const std::vector<InitRecord>& inits() const override { return m_records.inits(); }
     [[nodiscard]] FpgaStats stats() const override { return m_records.stats(); }
+    [[nodiscard]] bool records_from_nets() const override { return m_records.from_nets(); }
     [[nodiscard]] const ClockGrid& clock() const override { return m_clock; }
     // Clock edges the model has run, and how the plug-in was obtained.
     [[nodiscard]] std::int64_t cycles() const { return m_next_edge; }

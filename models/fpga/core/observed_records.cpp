@@ -1,5 +1,7 @@
 #include "fpga/core/observed_records.hpp"
 
+#include <algorithm>
+
 #include "fpga/core/step_schedule.hpp"
 
 namespace cnc::fpga {
@@ -32,6 +34,38 @@ PacketRecord* ObservedRecords::running() {
 }
 
 void ObservedRecords::edge(std::int64_t n, const FpgaNets& now) {
+    if (m_from_nets) {
+        from_inner_nets(n, now);
+    } else {
+        from_pins(n, now);
+    }
+    while (m_final < m_packets.size() && m_packets[m_final].final) ++m_final;
+    m_prev = now;
+}
+
+void ObservedRecords::from_pins(std::int64_t n, const FpgaNets& now) {
+    if (now.busy && !m_prev.busy) {
+        PacketRecord r;
+        r.t_pkt_valid_ps = m_clock.at(std::max<std::int64_t>(n - 1, 0));
+        r.accepted = true;
+        m_running = m_packets.size();
+        m_packets.push_back({r, true});
+    }
+    if (m_prev.busy && !now.busy) {
+        if (PacketRecord* r = running()) r->t_busy_fall_ps = m_clock.at(n);
+        m_ack_packet = m_running;
+        m_ack_awaited = true;
+    }
+    if (m_prev.tx && !now.tx && m_ack_awaited) {
+        ++m_stats.acks_sent;
+        if (m_ack_packet >= m_packets.first() && m_ack_packet < m_packets.size()) {
+            m_packets[m_ack_packet].record.t_ack_start_ps = m_clock.at(n);
+        }
+        m_ack_awaited = false;
+    }
+}
+
+void ObservedRecords::from_inner_nets(std::int64_t n, const FpgaNets& now) {
     const TimePs t = m_clock.at(n);
     settle_ack(n, now);
     if (now.rx_valid && !m_prev.rx_valid) ++m_stats.bytes_received;
@@ -72,8 +106,6 @@ void ObservedRecords::edge(std::int64_t n, const FpgaNets& now) {
         m_ack_edge = n + 1;
         m_ack_packet = m_running;
     }
-    while (m_final < m_packets.size() && m_packets[m_final].final) ++m_final;
-    m_prev = now;
 }
 
 }  // namespace cnc::fpga

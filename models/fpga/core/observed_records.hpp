@@ -18,6 +18,7 @@ namespace cnc::fpga {
 // Values after one clock edge (top.v's nets; the state codes are uart_rx.v's and step_gen.v's).
 struct FpgaNets {
     bool busy = false;
+    bool tx = true;  // the UART line idles high
     bool rx_valid = false;
     bool pkt_valid = false;
     bool cfg_valid = false;
@@ -39,10 +40,15 @@ struct FpgaNets {
 
 class ObservedRecords {
 public:
-    ObservedRecords(const FpgaConfig& cfg, const ClockGrid& clock) : m_cfg(cfg), m_clock(clock) {}
+    // `from_nets` false: a design without top.v's inner nets (a user's top). Its records are read off its pins
+    // alone: each busy pulse one accepted packet, its pkt_valid the edge before busy rose (top.v's SETUP), its ACK
+    // the first start bit on tx after busy fell; fields, periods and the counters other than the ACKs stay 0.
+    ObservedRecords(const FpgaConfig& cfg, const ClockGrid& clock, bool from_nets)
+        : m_cfg(cfg), m_clock(clock), m_from_nets(from_nets) {}
 
     // The nets after edge n (n > the last edge given; the edges in between changed none of them).
     void edge(std::int64_t n, const FpgaNets& now);
+    [[nodiscard]] bool from_nets() const { return m_from_nets; }
 
     // Records whose acceptance and periods are final, in pkt_valid order (what a reader may act on).
     [[nodiscard]] std::size_t packet_count() const { return m_final; }
@@ -52,6 +58,8 @@ public:
     [[nodiscard]] const FpgaStats& stats() const { return m_stats; }
 
 private:
+    void from_inner_nets(std::int64_t n, const FpgaNets& now);
+    void from_pins(std::int64_t n, const FpgaNets& now);
     void settle_ack(std::int64_t n, const FpgaNets& now);
     [[nodiscard]] PacketRecord* running();
 
@@ -61,12 +69,14 @@ private:
     };
     const FpgaConfig m_cfg;
     const ClockGrid m_clock;
+    const bool m_from_nets;
     FpgaNets m_prev;  // reset values
     RecordLog<Logged> m_packets;
     std::size_t m_final = 0;
     std::size_t m_running = 0;      // the accepted packet step_gen runs (valid while busy)
     std::int64_t m_ack_edge = -1;   // the edge that starts the ACK of the busy fall before it, or -1
     std::size_t m_ack_packet = 0;
+    bool m_ack_awaited = false;  // read off the pins: busy fell, its ACK's start bit not seen yet
     std::vector<InitRecord> m_inits;
     FpgaStats m_stats;
 };

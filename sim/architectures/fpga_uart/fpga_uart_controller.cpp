@@ -226,6 +226,11 @@ void FpgaWarnings::finish(const fpga::Board& top, std::vector<Warning>& warnings
                                     ") did not reach step_gen" + why});
         }
     }
+    if (!top.records_from_nets()) {
+        warnings.push_back({"fpga_records_from_pins", "",
+                            "the FPGA design lacks our top's nets (pkt_valid, step_gen_inst.state, ...): each busy "
+                            "pulse is taken for a packet, the FPGA's byte, framing and watchdog counters are not known"});
+    }
     const fpga::FpgaStats st = top.stats();
     if (st.framing_errors > 0) {
         warnings.push_back(

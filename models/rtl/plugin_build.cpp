@@ -52,7 +52,9 @@ std::string cache_key(const PluginSpec& spec) {
     f.add(std::to_string(kAbiVersion));
     f.add(CNC_VERILATOR_BIN);
     f.add(CNC_RTL_CXX);
-    f.add(read_text(fs::path(CNC_MODELS_DIR) / "rtl" / "plugin_shim.cpp"));
+    // What this cncsim writes around the design (a change to the shim's generator is another plug-in).
+    f.add(shim_source(spec, kPrefix, std::vector<bool>(spec.observed.size(), true)));
+    f.add(read_text(fs::path(CNC_MODELS_DIR) / "rtl" / "rtl_model.hpp"));
     f.add(spec.top_module);
     for (const std::string& src : spec.sources) {
         if (!fs::is_regular_file(src)) throw BadInput(spec.where, "cannot read Verilog source " + src);

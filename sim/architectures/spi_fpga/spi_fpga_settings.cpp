@@ -130,12 +130,14 @@ constexpr OscillatorPart kFpgaBoardClock{
     50.0,       "the common +-50 ppm grade of 50 MHz CMOS crystal oscillators",
     3.0,        "such an oscillator's period jitter is a few ps rms; 3 ps of phase jitter"};
 
-void read_spi_fpga_settings(KeyReader& r, SpiFpgaSettings& s, const host::MachineModel& machine) {
+void read_spi_fpga_settings(KeyReader& r, const std::filesystem::path& base, SpiFpgaSettings& s,
+                            const host::MachineModel& machine) {
     read_planner_settings(r, machine, s.planner);
     read_servo(r, s.servo);
     read_link(r, s.link);
     read_fpga(r, s.fpga);
     read_oscillator_settings(r, kFpgaBoardClock, s.fpga.clk_hz, s.clock);
+    read_rtl_settings(r, base, "fpga_spi", s.rtl);
     checked(r, kLinkKeys, [&] { spi::validate(s.link); });
     checked(r, kFpgaKeys, [&] { fpga::validate(s.fpga); });
     checked(r, kLinkKeys, [&] { fpga::check_link(s.link, s.fpga); });

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "rtl/plugin_load.hpp"
 
@@ -12,9 +13,10 @@ namespace {
 // A batch's length when the inputs are quiet for long: the model reports settled() only at the end of a batch,
 // so a design at rest is found within this many edges and the rest are skipped.
 constexpr std::uint64_t kMaxBatchCycles = 1U << 20U;
-// The farthest the model runs ahead of the simulation time: a promise of "never" still ends in a time ClockGrid
-// can count edges to.
-constexpr TimePs kMaxAheadPs = kPsPerSec;
+// The farthest the model runs ahead of the simulation time: a promise of "never" (the host is done) still ends in
+// a time ClockGrid can count edges to, and a design that never settles (a free-running counter) is not clocked far
+// past the end of the run.
+constexpr TimePs kMaxAheadPs = kPsPerMs;
 
 }  // namespace
 
@@ -30,6 +32,7 @@ RtlLoop::RtlLoop(const sc_core::sc_module_name& name, const ClockGrid& clock, co
     for (const bool present : plugin.observed_present) m_observed_index.push_back(present ? next++ : -1);
     m_values.assign(static_cast<std::size_t>(next), 0);
     m_before = m_values;
+    m_read = m_values;
     m_quiet_until = [] { return now_ps(); };
     SC_HAS_PROCESS(RtlLoop);
     SC_THREAD(run_thread);
@@ -41,10 +44,10 @@ std::uint64_t RtlLoop::watched(const std::vector<std::uint64_t>& values, std::si
 }
 
 void RtlLoop::edge(std::int64_t n) {
-    std::vector<std::uint64_t> now(m_values.size());
-    for (std::size_t i = 0; i < now.size(); ++i) now[i] = m_model->value(static_cast<int>(i));
-    if (n > 0 && now == m_values) return;
-    m_before = std::exchange(m_values, std::move(now));
+    for (std::size_t i = 0; i < m_read.size(); ++i) m_read[i] = m_model->value(static_cast<int>(i));
+    if (n > 0 && m_read == m_values) return;
+    m_before.swap(m_values);
+    m_values.swap(m_read);
     const TimePs t = m_clock.at(n);
     for (const Output& out : m_wiring.outputs) {
         const int i = out.port >= 0 ? out.port : m_observed_index[static_cast<std::size_t>(out.net)];

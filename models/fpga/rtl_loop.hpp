@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 #include <systemc>
+#include <utility>
 #include <vector>
 
 #include "common/clock_grid.hpp"
@@ -71,6 +72,7 @@ private:
     std::vector<int> m_observed_index;  // per spec.observed: its watched index, -1 if the design lacks it
     std::vector<std::uint64_t> m_values;  // the watched values after the last edge handed over
     std::vector<std::uint64_t> m_before;  // and after the one before it
+    std::vector<std::uint64_t> m_read;    // scratch: the values after the edge just run
     std::vector<bool> m_levels;           // per wiring input: the level the model samples
     std::function<TimePs()> m_quiet_until;
     std::int64_t m_next_edge = 0;

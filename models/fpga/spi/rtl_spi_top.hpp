@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <systemc>
+#include <utility>
 #include <vector>
 
 #include "fpga/rtl_loop.hpp"

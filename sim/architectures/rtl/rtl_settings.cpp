@@ -19,8 +19,9 @@ std::string existing_file(KeyReader& r, const fs::path& base, const std::string&
 
 void read_rtl_settings(KeyReader& r, const fs::path& base, const std::string& prefix, RtlSettings& s) {
     s.rtl = r.get_choice("fpga.model", "event", {"event", "rtl"},
-                         "the FPGA as event-driven SystemC blocks, or its Verilog verilated and clocked in the loop "
-                         "(needs Verilator; the first run of a design builds it, about 15 s)") == "rtl";
+                         "the FPGA (of both FPGA architectures: one key) as event-driven SystemC blocks, or its "
+                         "Verilog verilated and clocked in the loop (needs Verilator; the first run of a design "
+                         "builds it, about 15 s)") == "rtl";
     const std::string top_key = prefix + ".rtl_top";
     const std::string sources_key = prefix + ".rtl_sources";
     const std::string parameters_key = prefix + ".rtl_parameters";

@@ -69,7 +69,7 @@ private:
     std::unique_ptr<rtl::RtlModel> m_model;
     const Wiring m_wiring;
     const EdgeHandler m_on_edge;
-    std::vector<int> m_observed_index;  // per spec.observed: its watched index, -1 if the design lacks it
+    std::vector<int> m_observed_index;    // per spec.observed: its watched index, -1 if the design lacks it
     std::vector<std::uint64_t> m_values;  // the watched values after the last edge handed over
     std::vector<std::uint64_t> m_before;  // and after the one before it
     std::vector<std::uint64_t> m_read;    // scratch: the values after the edge just run

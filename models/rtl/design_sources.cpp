@@ -8,8 +8,7 @@
 namespace cnc::rtl {
 
 void set_design(PluginSpec& spec, const Design& design, const std::string& own_top, const std::string& own_dir,
-                const std::vector<std::string>& own_files,
-                std::vector<std::pair<std::string, std::string>> from_keys) {
+                const std::vector<std::string>& own_files, std::vector<std::pair<std::string, std::string>> from_keys) {
     spec.where = design.where;
     spec.parameters = std::move(from_keys);
     if (design.top_file.empty()) {
@@ -22,12 +21,11 @@ void set_design(PluginSpec& spec, const Design& design, const std::string& own_t
         std::ifstream in(design.top_file);
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         const std::vector<std::string> declared = declared_parameters(text);
-        spec.parameters.erase(std::remove_if(spec.parameters.begin(), spec.parameters.end(),
-                                             [&](const auto& p) {
-                                                 return std::find(declared.begin(), declared.end(), p.first) ==
-                                                        declared.end();
-                                             }),
-                              spec.parameters.end());
+        spec.parameters.erase(
+            std::remove_if(
+                spec.parameters.begin(), spec.parameters.end(),
+                [&](const auto& p) { return std::find(declared.begin(), declared.end(), p.first) == declared.end(); }),
+            spec.parameters.end());
     }
     spec.parameters.insert(spec.parameters.end(), design.parameters.begin(), design.parameters.end());
 }

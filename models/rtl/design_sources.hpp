@@ -14,7 +14,6 @@ namespace cnc::rtl {
 // come first, those of them a user's top does not declare left out (Verilator's -G refuses them), then the
 // design's own overrides.
 void set_design(PluginSpec& spec, const Design& design, const std::string& own_top, const std::string& own_dir,
-                const std::vector<std::string>& own_files,
-                std::vector<std::pair<std::string, std::string>> from_keys);
+                const std::vector<std::string>& own_files, std::vector<std::pair<std::string, std::string>> from_keys);
 
 }  // namespace cnc::rtl

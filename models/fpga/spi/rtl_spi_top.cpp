@@ -5,18 +5,9 @@
 
 namespace cnc::fpga {
 
-namespace {
-
-const SpiFpgaConfig& validated(const SpiFpgaConfig& cfg) {
-    validate(cfg);
-    return cfg;
-}
-
-}  // namespace
-
 RtlSpiTop::RtlSpiTop(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg, const rtl::Design& design)
     : SpiBoard(name),
-      m_cfg(validated(cfg)),
+      m_cfg((validate(cfg), cfg)),
       m_clock(clock_grid(cfg)),
       m_spec(spi_rtl_plugin_spec(cfg, design)),
       m_plugin(rtl::build_plugin(m_spec)),

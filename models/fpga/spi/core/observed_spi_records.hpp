@@ -25,14 +25,16 @@ struct SpiNets {
     bool fifo_full = false;
     std::uint32_t fifo_level = 0;
     std::array<bool, 2> rd{};
-    std::array<spi::AxisRate, 2> read_port{};        // the word each axis's FIFO read port shows
-    std::array<std::uint32_t, 2> period_cycles{};    // each generator's governing period
+    std::array<spi::AxisRate, 2> read_port{};      // the word each axis's FIFO read port shows
+    std::array<std::uint32_t, 2> period_cycles{};  // each generator's governing period
     std::array<std::int32_t, 2> counts{};
 };
 
 class ObservedSpiRecords {
 public:
-    explicit ObservedSpiRecords(const ClockGrid& clock) : m_clock(clock) { m_snapshots.emplace_back(-1, SpiFpgaStats{}); }
+    explicit ObservedSpiRecords(const ClockGrid& clock) : m_clock(clock) {
+        m_snapshots.emplace_back(-1, SpiFpgaStats{});
+    }
 
     // Edge n (> the last edge given; the edges in between changed none of the nets): `before` as after the edge
     // given last, `now` after edge n. `sim_now_ps`: the simulation time, up to which no reader will ask for less.
@@ -48,7 +50,7 @@ private:
     SpiFpgaStats m_stats;  // after the last edge given
     // The counts from the last edge at or before the simulation time on, one entry per edge that changed them.
     std::deque<std::pair<TimePs, SpiFpgaStats>> m_snapshots;
-    std::deque<std::uint64_t> m_fifo_seq;      // per frame in the FIFO, oldest first: its sequence number
+    std::deque<std::uint64_t> m_fifo_seq;       // per frame in the FIFO, oldest first: its sequence number
     std::array<std::size_t, 2> m_read_ahead{};  // per axis: the FIFO frames it has read
     std::array<std::deque<AppliedRate>, 2> m_applied;
 };

@@ -35,7 +35,11 @@ rtl::PluginSpec spi_rtl_plugin_spec(const SpiFpgaConfig& cfg, const rtl::Design&
                      {"spi_pulse_gen", "pulse_gen_x.period", "period"},
                      {"spi_pulse_gen", "pulse_gen_y.period", "period"},
                      {top, "count_x", "count_x"},
-                     {top, "count_y", "count_y"}};
+                     {top, "count_y", "count_y"},
+                     {"spi_cmd_fifo", "cmd_fifo.rix", "rix"},
+                     {"spi_cmd_fifo", "cmd_fifo.riy", "riy"},
+                     {"spi_cmd_fifo", "cmd_fifo.avail_x", "avail_x"},
+                     {"spi_cmd_fifo", "cmd_fifo.avail_y", "avail_y"}};
     return spec;
 }
 

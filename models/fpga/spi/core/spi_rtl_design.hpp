@@ -31,7 +31,12 @@ enum SpiRtlNet : std::size_t {
     kSpiNetPeriodY,
     kSpiNetCountX,  // top: the step counters' registers
     kSpiNetCountY,
-    kSpiNetCount
+    // cmd_fifo's read indices and per-axis counts, read by no record: every read changes one of them, so that the
+    // model stops at each read edge (two stop words in a row leave the read port, rd and the period as they were).
+    kSpiNetReadIndexX,
+    kSpiNetReadIndexY,
+    kSpiNetAvailX,
+    kSpiNetAvailY
 };
 
 // The plug-in to build: the design's sources, its top module (ours: spi_fpga_top), the parameters from `cfg`

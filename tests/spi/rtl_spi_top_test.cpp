@@ -100,6 +100,33 @@ TEST(RtlSpiTop, FramesCountedAndTheirWordsAppliedAsTheEventModelRecordsThem) {
     EXPECT_EQ(stop[0].rate.period_cycles, 0U);
 }
 
+TEST(RtlSpiTop, StopWordsReadAtConsecutiveEdgesAreEachRecorded) {
+    // A 100000-clock period holds X's next read until edge 101374; by then two stop frames wait, identical at the
+    // read port: the first is read there, the second at the next edge, when X has stopped. Y (200000 clocks) has read
+    // neither, so the FIFO's level stays as it is too.
+    RtlBench bench("bench", [](RtlBench& b) {
+        std::vector<std::uint8_t> reply;
+        for (const TimePs t : {10 * kUs, 40 * kUs, 70 * kUs}) {
+            b.master.no_transfer_before(t);
+            sc_core::wait(sc_core::sc_time::from_value(t) - sc_core::sc_time_stamp());
+            const bool first = t == 10 * kUs;
+            b.master.transfer(rates({first ? 100'000U : 0U, true}, {first ? 200'000U : 0U, true}), reply);
+        }
+        b.master.no_transfer_before(2100 * kUs);
+    });
+    bench.fpga.inputs_quiet_until([&bench] { return bench.master.pins_quiet_until(); });
+    sc_core::sc_start(sc_core::sc_time::from_value(2100 * kUs));
+
+    const std::vector<fpga::AppliedRate> x = bench.fpga.take_applied(0);
+    ASSERT_EQ(x.size(), 3U);
+    EXPECT_EQ(x[1].edge, 101'374);
+    EXPECT_EQ(x[2].edge, 101'375);
+    EXPECT_EQ(x[1].seq, 1U);
+    EXPECT_EQ(x[2].seq, 2U);
+    EXPECT_EQ(bench.fpga.stats().counts[0], 1);  // the rise due at 101374 is cancelled by the stop
+    EXPECT_EQ(bench.fpga.stats().words_applied[1], 1U);
+}
+
 TEST(RtlSpiTop, InputChangeBeforeThePromiseIsALogicError) {
     RtlBench bench("bench", [](RtlBench& b) {
         sc_core::wait(sc_core::sc_time::from_value(kUs));

@@ -1,22 +1,20 @@
-// Seed 000's FPGA as Verilog (ours in rtl/, or the user's) verilated and clocked in the loop. One SystemC thread
-// runs the model in C++ batches: every clock edge up to the time before which rx cannot change (what the CP2102
-// has promised: rx_quiet_until), each output change written to its pin at its exact edge. The records come from
-// the design's own nets (ObservedRecords), or from its busy and tx pins when it lacks them.
+// Seed 000's FPGA as Verilog (ours in rtl/, or the user's) verilated and clocked in the loop (rtl_loop.hpp): its
+// batches run up to the time before which rx cannot change (what the CP2102 has promised: rx_quiet_until). The
+// records come from the design's own nets (ObservedRecords), or from its busy and tx pins when it lacks them.
 #pragma once
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <memory>
 #include <systemc>
+#include <utility>
 #include <vector>
 
 #include "fpga/board.hpp"
 #include "fpga/core/fpga_config.hpp"
 #include "fpga/core/observed_records.hpp"
 #include "fpga/core/rtl_design.hpp"
-#include "fpga/timed_writer.hpp"
+#include "fpga/rtl_loop.hpp"
 #include "rtl/plugin_build.hpp"
-#include "rtl/rtl_model.hpp"
 
 namespace cnc::fpga {
 
@@ -26,7 +24,7 @@ public:
     RtlTop(const sc_core::sc_module_name& name, const FpgaConfig& cfg, const rtl::Design& design);
 
     // The earliest time rx may change, asked at the current time (>= now). Until given: now (one edge a batch).
-    void rx_quiet_until(std::function<TimePs()> quiet_until_ps) { m_quiet_until = std::move(quiet_until_ps); }
+    void rx_quiet_until(std::function<TimePs()> quiet_until_ps) { m_loop.inputs_quiet_until(std::move(quiet_until_ps)); }
 
     [[nodiscard]] std::size_t packet_count() const override { return m_records.packet_count(); }
     [[nodiscard]] PacketRecord packet(std::size_t i) const override { return m_records.packet(i); }
@@ -36,29 +34,18 @@ public:
     [[nodiscard]] bool records_from_nets() const override { return m_records.from_nets(); }
     [[nodiscard]] const ClockGrid& clock() const override { return m_clock; }
     // Clock edges the model has run, and how the plug-in was obtained.
-    [[nodiscard]] std::int64_t cycles() const { return m_next_edge; }
+    [[nodiscard]] std::int64_t cycles() const { return m_loop.cycles(); }
     [[nodiscard]] const rtl::BuiltPlugin& plugin() const { return m_plugin; }
 
 private:
-    void run_thread();
-    void run_through(TimePs t_ps);  // every edge at or before t_ps, with the inputs as set
     void on_edge(std::int64_t n);
-    void drive(sc_core::sc_out<bool>& pin, bool level, TimePs t_ps);
-    [[nodiscard]] std::uint64_t observed(std::size_t net) const;
 
     const FpgaConfig m_cfg;
     const ClockGrid m_clock;
     const rtl::PluginSpec m_spec;
     const rtl::BuiltPlugin m_plugin;
-    std::unique_ptr<rtl::RtlModel> m_model;
-    std::vector<int> m_observed_index;  // per spec.observed: its watched index, -1 if the design lacks it
-    std::vector<std::uint64_t> m_values;  // the watched values after the last edge run
-    std::function<TimePs()> m_quiet_until;
-    std::int64_t m_next_edge = 0;
-    TimePs m_promised_ps = 0;  // rx does not change before this time
-    bool m_rx_level = true;   // the level the model samples
     ObservedRecords m_records;
-    TimedWriter m_writer;
+    RtlLoop m_loop;
 };
 
 }  // namespace cnc::fpga

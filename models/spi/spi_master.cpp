@@ -1,6 +1,7 @@
 #include "spi/spi_master.hpp"
 #include "common/sc_time.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -26,8 +27,15 @@ void SpiMaster::end_of_elaboration() {
         throw std::logic_error(std::string(name()) + ": trace_wires = false needs the target port bound");
 }
 
+TimePs SpiMaster::pins_quiet_until() const {
+    const TimePs now = now_ps();
+    if (m_busy) return std::max(now, m_next_pin_change_ps);
+    return std::max({now, m_idle_from_ps, m_no_transfer_before_ps});
+}
+
 void SpiMaster::wait_until(TimePs t_ps) {
     const TimePs now = now_ps();
+    m_next_pin_change_ps = t_ps;
     if (t_ps > now) {
         sc_core::wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t_ps - now)));
         ++m_activations;

@@ -43,6 +43,12 @@ public:
     [[nodiscard]] std::uint64_t transfer_count() const { return m_transfer_count; }
     [[nodiscard]] TimePs ss_low_total_ps() const { return m_ss_low_total_ps; }  // link busy time
     [[nodiscard]] const SpiConfig& config() const { return m_cfg; }
+
+    // The caller starts no transfer before t_ps (a host thread that sleeps until then says so before it sleeps).
+    void no_transfer_before(TimePs t_ps) { m_no_transfer_before_ps = t_ps; }
+    // The earliest time SS, SCLK or MOSI may change, asked at the current time (>= now): the next edge of the
+    // transfer under way, else the earliest start of the next one. A clocked model of the slave may run ahead to it.
+    [[nodiscard]] TimePs pins_quiet_until() const;
     [[nodiscard]] std::uint64_t activations() const { return m_activations; }
     void add_traces(sc_core::sc_trace_file* tf) const;
 
@@ -53,7 +59,9 @@ private:
 
     const SpiConfig m_cfg;
     TimePs m_idle_from_ps = 0;  // earliest next SS fall
+    TimePs m_no_transfer_before_ps = 0;
     bool m_busy = false;
+    TimePs m_next_pin_change_ps = 0;  // while busy
     bool m_keep_transfer_log = true;
     std::vector<Transfer> m_transfers;
     std::uint64_t m_transfer_count = 0;

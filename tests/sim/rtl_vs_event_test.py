@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
-"""The FPGA's Verilog in the loop against its event-driven model: usage CNCSIM SCENARIO [--rtl-set KEY=VALUE]...
-[--only PATH]... [--expect-difference].
+"""The FPGA's Verilog in the loop against its event-driven model: usage CNCSIM SCENARIO [--set KEY=VALUE]...
+[--rtl-set KEY=VALUE]... [--only PATH]... [--expect-difference].
 
-Runs the scenario twice, fpga.model = "event" and "rtl" (the --rtl-set keys on the second run only), each with the
+Runs the scenario twice, fpga.model = "event" and "rtl" (the --set keys on both runs, e.g. the architecture of a
+compare scenario or spi.trace_wires = true, which the RTL of spi-fpga forces; the --rtl-set keys on the second run
+only), each with the
 detailed JSON report and a VCD, and compares: the same exit status, the same report (every figure, every packet
 record), and the same value changes in the VCD at the same times (STEP, DIR, nENBL, laser, the link's lines, busy,
 the FPGA's strobes, the carriage positions). Within one time the order of the changes is free: the two models
@@ -99,10 +101,11 @@ def main():
     expect_difference = "--expect-difference" in args
     args = [a for a in args if a != "--expect-difference"]
     cncsim, scenario = args[0], args[1]
-    rtl_sets = ["fpga.model=rtl"] + [args[i + 1] for i in range(2, len(args) - 1) if args[i] == "--rtl-set"]
+    both_sets = [args[i + 1] for i in range(2, len(args) - 1) if args[i] == "--set"]
+    rtl_sets = both_sets + ["fpga.model=rtl"] + [args[i + 1] for i in range(2, len(args) - 1) if args[i] == "--rtl-set"]
     only = [args[i + 1] for i in range(2, len(args) - 1) if args[i] == "--only"]
     with tempfile.TemporaryDirectory() as folder:
-        code_e, report_e, vcd_e = run(cncsim, scenario, folder, "event", [])
+        code_e, report_e, vcd_e = run(cncsim, scenario, folder, "event", both_sets)
         code_r, report_r, vcd_r = run(cncsim, scenario, folder, "rtl", rtl_sets)
     if only:
         report_e, report_r = ({p: part(r, p) for p in only} for r in (report_e, report_r))
@@ -120,8 +123,9 @@ def main():
         print("\n".join(differences[:20]))
         sys.exit("FAIL: %d differences between the event-driven and the RTL run of %s" % (len(differences), scenario))
     packets = len(report_e.get("fpga-uart", {}).get("fpga", {}).get("packets", [])) if not only else 0
-    print("PASS: %s: the same report and the same %d value changes in %d instants (%d packets), exit %d" %
-          (os.path.basename(scenario), edges, len(vcd_e), packets, code_e))
+    frames = report_e.get("spi-fpga", {}).get("fpga", {}).get("frames", 0) if not only else 0
+    print("PASS: %s: the same report and the same %d value changes in %d instants (%d packets, %d frames), exit %d" %
+          (os.path.basename(scenario), edges, len(vcd_e), packets, frames, code_e))
 
 
 if __name__ == "__main__":

@@ -1,48 +1,25 @@
 #include "fpga/core/rtl_design.hpp"
 
-#include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <string>
+
+#include "rtl/design_sources.hpp"
 
 namespace cnc::fpga {
 
 rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design) {
     rtl::PluginSpec spec;
-    spec.where = design.where;
-    if (design.top_file.empty()) {
-        const std::filesystem::path dir = CNC_FPGA_RTL_DIR;
-        spec.top_module = "top";
-        for (const char* f : {"top.v", "uart_rx.v", "packet_decoder.v", "step_gen.v", "period_divider.v",
-                              "laser_ctrl.v", "uart_tx.v"}) {
-            spec.sources.push_back((dir / f).string());
-        }
-    } else {
-        spec.top_module = std::filesystem::path(design.top_file).stem().string();
-        spec.sources.push_back(design.top_file);
-        spec.sources.insert(spec.sources.end(), design.sources.begin(), design.sources.end());
-    }
-    spec.parameters = {{"CLK_HZ", std::to_string(cfg.clk_hz)},
-                       {"FULL_BIT", std::to_string(cfg.uart_full_bit_cycles)},
-                       {"PULSE_HIGH", std::to_string(cfg.pulse_high_cycles)},
-                       {"DIR_SETTLE", std::to_string(cfg.dir_settle_cycles)},
-                       {"FEED_ZERO_PERIOD", std::to_string(cfg.feed_zero_period_cycles)},
-                       {"TIMEOUT_CYCLES", std::to_string(cfg.watchdog_cycles)},
-                       {"NUMERATOR_DEFAULT", std::to_string(cfg.numerator_default)},
-                       {"EXACT_PERIOD", cfg.period_arithmetic == PeriodArithmetic::Exact ? "1" : "0"},
-                       {"INIT_WIRED", cfg.init_packet_wired ? "1" : "0"}};
-    if (!design.top_file.empty()) {  // a user's top gets those of them it declares
-        std::ifstream in(design.top_file);
-        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        const std::vector<std::string> declared = rtl::declared_parameters(text);
-        spec.parameters.erase(std::remove_if(spec.parameters.begin(), spec.parameters.end(),
-                                             [&](const auto& p) {
-                                                 return std::find(declared.begin(), declared.end(), p.first) ==
-                                                        declared.end();
-                                             }),
-                              spec.parameters.end());
-    }
-    spec.parameters.insert(spec.parameters.end(), design.parameters.begin(), design.parameters.end());
+    rtl::set_design(spec, design, "top", CNC_FPGA_RTL_DIR,
+                    {"top.v", "uart_rx.v", "packet_decoder.v", "step_gen.v", "period_divider.v", "laser_ctrl.v",
+                     "uart_tx.v"},
+                    {{"CLK_HZ", std::to_string(cfg.clk_hz)},
+                     {"FULL_BIT", std::to_string(cfg.uart_full_bit_cycles)},
+                     {"PULSE_HIGH", std::to_string(cfg.pulse_high_cycles)},
+                     {"DIR_SETTLE", std::to_string(cfg.dir_settle_cycles)},
+                     {"FEED_ZERO_PERIOD", std::to_string(cfg.feed_zero_period_cycles)},
+                     {"TIMEOUT_CYCLES", std::to_string(cfg.watchdog_cycles)},
+                     {"NUMERATOR_DEFAULT", std::to_string(cfg.numerator_default)},
+                     {"EXACT_PERIOD", cfg.period_arithmetic == PeriodArithmetic::Exact ? "1" : "0"},
+                     {"INIT_WIRED", cfg.init_packet_wired ? "1" : "0"}});
     spec.clock = "clk";
     spec.inputs = {{"rst_n", 1}, {"rx", 1}};
     spec.outputs = {{"tx", 1},     {"dir_x", 1},    {"step_x", 1}, {"n_enbl_x", 1}, {"dir_y", 1},

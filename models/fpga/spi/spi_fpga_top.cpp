@@ -10,16 +10,7 @@ const SpiFpgaConfig& validated(const SpiFpgaConfig& cfg) {
 }  // namespace
 
 SpiFpgaTop::SpiFpgaTop(const sc_core::sc_module_name& name, const SpiFpgaConfig& cfg)
-    : sc_module(name),
-      sclk("sclk"),
-      mosi("mosi"),
-      ss("ss"),
-      miso("miso"),
-      step_x("step_x"),
-      dir_x("dir_x"),
-      step_y("step_y"),
-      dir_y("dir_y"),
-      laser("laser"),
+    : SpiBoard(name),
       spi_target("spi_target"),
       m_cfg(validated(cfg)),
       slave("spi_slave", m_cfg, kAxes),
@@ -71,6 +62,20 @@ std::uint64_t SpiFpgaTop::applied_count(std::size_t axis) const {
 
 std::int32_t SpiFpgaTop::count(std::size_t axis) const {
     return (axis == 0 ? step_counter_x : step_counter_y).count();
+}
+
+SpiFpgaStats SpiFpgaTop::stats() const {
+    SpiFpgaStats st;
+    st.frames = slave.frame_count();
+    st.frames_accepted = slave.accepted_count();
+    st.fifo_drops = fifo.core().dropped();
+    st.fifo_max_level = fifo.core().max_level();
+    st.stretched_words = pulse_gen_x.stretched() + pulse_gen_y.stretched();
+    for (std::size_t a = 0; a < kAxes; ++a) {
+        st.words_applied[a] = applied_count(a);
+        st.counts[a] = count(a);
+    }
+    return st;
 }
 
 std::uint64_t SpiFpgaTop::activations() const {

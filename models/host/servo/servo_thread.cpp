@@ -1,5 +1,6 @@
 #include "host/servo/servo_thread.hpp"
 
+#include <limits>
 #include <utility>
 
 namespace cnc::host::servo {
@@ -22,6 +23,7 @@ void ServoThread::run() {
         const TimePs latency = m_latency.next();
         const TimePs wake = n * m_cfg.period_ps + latency;
         const auto now = static_cast<TimePs>(sc_core::sc_time_stamp().value());
+        m_master.no_transfer_before(wake);  // a clocked model of the FPGA may run ahead to it
         if (wake > now) sc_core::wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(wake - now)));
         ++m_activations;
         const Wakeup wakeup{static_cast<TimePs>(sc_core::sc_time_stamp().value()), latency};
@@ -30,6 +32,7 @@ void ServoThread::run() {
         m_summary.add(rec, wakeup);
         if (rec.mode == PeriodMode::Done) {
             m_t_done_ps = wakeup.t_ps;
+            m_master.no_transfer_before(std::numeric_limits<TimePs>::max());
             return;
         }
         spi::Command command{{}, rec.laser_on};

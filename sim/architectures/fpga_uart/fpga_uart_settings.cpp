@@ -87,7 +87,7 @@ void read_fpga_uart_settings(KeyReader& r, const std::filesystem::path& base, Fp
     read_host(r, s);
     read_fpga(r, s.fpga);
     read_oscillator_settings(r, kDe1SocClock50, s.fpga.clk_hz, s.clock);
-    read_rtl_settings(r, base, s.rtl);
+    read_rtl_settings(r, base, "fpga", s.rtl);
 }
 
 }  // namespace cnc::sim

@@ -5,7 +5,7 @@
 
 namespace cnc::sim {
 
-std::vector<std::vector<metrics::RateSegment>> RateSegments::take(fpga::SpiFpgaTop& fpga,
+std::vector<std::vector<metrics::RateSegment>> RateSegments::take(fpga::SpiBoard& fpga,
                                                                   const host::servo::ServoCore& servo, bool ended) {
     std::vector<std::vector<metrics::RateSegment>> out(host::servo::kAxes);
     for (std::size_t a = 0; a < host::servo::kAxes; ++a) {

@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "fpga/spi/spi_fpga_top.hpp"
+#include "fpga/spi/spi_board.hpp"
 #include "host/servo/core/servo_core.hpp"
 #include "metrics/run_input.hpp"
 
@@ -19,7 +19,7 @@ namespace cnc::sim {
 // before first_needed_period() are kept.
 class RateSegments {
 public:
-    [[nodiscard]] std::vector<std::vector<metrics::RateSegment>> take(fpga::SpiFpgaTop& fpga,
+    [[nodiscard]] std::vector<std::vector<metrics::RateSegment>> take(fpga::SpiBoard& fpga,
                                                                       const host::servo::ServoCore& servo, bool ended);
     // The first servo period whose record a word not taken yet may read (each axis applies its words in frame
     // order, one frame per period).

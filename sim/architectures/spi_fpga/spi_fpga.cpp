@@ -23,9 +23,9 @@ public:
     [[nodiscard]] JobUse job_use() const override { return {true, false, LaserSwitching::FollowsJob, true}; }
 
     [[nodiscard]] std::shared_ptr<const ArchSettings> read_settings(KeyReader& r, const Scenario& common,
-                                                                    const std::filesystem::path&) const override {
+                                                                    const std::filesystem::path& base) const override {
         auto s = std::make_shared<SpiFpgaSettings>();
-        read_spi_fpga_settings(r, *s, common.machine);
+        read_spi_fpga_settings(r, base, *s, common.machine);
         return s;
     }
 

@@ -10,6 +10,7 @@
 #include "architectures/spi_fpga/spi_fpga_job.hpp"
 #include "architectures/spi_fpga/spi_fpga_report.hpp"
 #include "architectures/spi_fpga/spi_fpga_settings.hpp"
+#include "fpga/spi/rtl_spi_top.hpp"
 #include "fpga/spi/spi_fpga_top.hpp"
 #include "host/servo/servo_thread.hpp"
 #include "run/controller.hpp"
@@ -41,6 +42,23 @@ host::servo::ServoConfig servo_config(const Scenario& s, const SpiFpgaSettings& 
     return c;
 }
 
+// The FPGA as the scenario asks for it (fpga.model), its clock on the board's oscillator (the host's rate words stay
+// nominal). The event model keeps no per-frame logs (the report counts the frames) and serves the master's
+// transaction path when the wires are not driven; the Verilog needs the wires and runs ahead to the time the
+// master promises them quiet.
+std::unique_ptr<fpga::SpiBoard> make_fpga(const SpiFpgaSettings& f, std::uint64_t seed, spi::SpiMaster& master) {
+    const fpga::SpiFpgaConfig cfg = on_oscillator(f.fpga, f.clock, seed);
+    if (f.rtl.rtl) {
+        auto rtl = std::make_unique<fpga::RtlSpiTop>("fpga", cfg, f.rtl.design);
+        rtl->inputs_quiet_until([&master] { return master.pins_quiet_until(); });
+        return rtl;
+    }
+    auto event = std::make_unique<fpga::SpiFpgaTop>("fpga", cfg);
+    event->keep_frame_logs(false);
+    if (!master.config().trace_wires) master.target(event->spi_target);
+    return event;
+}
+
 // The seed 004 system between the job and the machine's pins: the planner and the servo thread on the host, the SPI
 // master, the FPGA.
 class SpiFpgaController final : public Controller {
@@ -54,7 +72,7 @@ public:
           m_trajectory(m_plan, &m_plan->trajectory()),
           m_link(spi_link(s, m_f)),
           m_master("spi_master", m_link),
-          m_fpga("fpga", on_oscillator(m_f.fpga, m_f.clock, s.seed)),  // the host's rate words stay nominal
+          m_fpga(make_fpga(m_f, s.seed, m_master)),
           m_host("host", servo_config(s, m_f), *m_plan, std::move(ahead.servo), m_master),
           m_planned(*m_plan, step_grid(s)),
           m_rate_feed(s.detail) {
@@ -63,23 +81,21 @@ public:
         m_master.mosi(m_wires.mosi);
         m_master.ss(m_wires.ss);
         m_master.miso(m_wires.miso);
-        m_fpga.keep_frame_logs(false);  // the report counts the frames
-        m_fpga.sclk(m_wires.sclk);
-        m_fpga.mosi(m_wires.mosi);
-        m_fpga.ss(m_wires.ss);
-        m_fpga.miso(m_wires.miso);
-        m_fpga.step_x(pins.step_x);
-        m_fpga.dir_x(pins.dir_x);
-        m_fpga.step_y(pins.step_y);
-        m_fpga.dir_y(pins.dir_y);
-        m_fpga.laser(pins.laser);  // the FPGA's laser_latch (the frame's laser bit)
-        m_master.target(m_fpga.spi_target);
+        m_fpga->sclk(m_wires.sclk);
+        m_fpga->mosi(m_wires.mosi);
+        m_fpga->ss(m_wires.ss);
+        m_fpga->miso(m_wires.miso);
+        m_fpga->step_x(pins.step_x);
+        m_fpga->dir_x(pins.dir_x);
+        m_fpga->step_y(pins.step_y);
+        m_fpga->dir_y(pins.dir_y);
+        m_fpga->laser(pins.laser);  // the FPGA's laser_latch (the frame's laser bit)
         m_host.keep_wakeups(s.detail);  // the report's summary is folded period by period; --detail lists every one
     }
 
     // The FPGA times its step, dir and laser outputs and drives no EN pin.
     [[nodiscard]] MachinePinClocks pin_clocks() const override {
-        return {fpga::clock_grid(m_fpga.config()).grid_hz(), std::nullopt};
+        return {fpga::clock_grid(m_fpga->config()).grid_hz(), std::nullopt};
     }
     // The host's servo thread times the SPI master (sclk, mosi, ss); the FPGA answers on miso at SS edges as well as
     // on its clock. The SPI wires toggle only when they are driven bit by bit, which costs simulation time: they
@@ -126,17 +142,17 @@ public:
         const host::servo::ServoCore& core = m_host.core();
         in.moves = m_planned.take(core.clock(), true);
         in.commanded = commanded_trajectory(m_trajectory, core.clock(), origin(), m_f.servo.period_ps);
-        in.rate_segments = m_segments.take(m_fpga, core, true);
+        in.rate_segments = m_segments.take(*m_fpga, core, true);
     }
     void take_lines(EdgeRecorder& rec, std::map<std::string, EdgeLog>& lines) override {
         if (!m_link.trace_wires) return;
         for (const char* pin : {"sclk", "mosi", "miso", "ss"}) lines[pin] = rec.take(pin);
     }
     void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override {
-        SpiFpgaReport report = spi_fpga_report(m_host, m_master, m_fpga, run.input.t_job_end_ps, m_s.detail);
+        SpiFpgaReport report = spi_fpga_report(m_host, m_master, *m_fpga, run.input.t_job_end_ps, m_s.detail);
         run.details = std::move(report.details);
         run.details_text = std::move(report.text);
-        const ClockGrid clock = fpga::clock_grid(m_fpga.config());
+        const ClockGrid clock = fpga::clock_grid(m_fpga->config());
         run.clock = oscillator_json(m_f.clock, clock);
         run.clock_text = oscillator_text(m_f.clock, clock);
         run.warnings = std::move(report.warnings);
@@ -153,9 +169,11 @@ private:
     static StepGrid step_grid(const Scenario& s) {
         return {s.interpreter.start_mm, {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}};
     }
+    // The Verilog has only the wires (no transaction path): it drives them, as spi.trace_wires does.
     static spi::SpiConfig spi_link(const Scenario& s, const SpiFpgaSettings& f) {
         spi::SpiConfig link = f.link;
-        link.trace_wires = link.trace_wires || trace_names_any(s, "link", {"sclk", "mosi", "miso", "ss"});
+        link.trace_wires =
+            link.trace_wires || f.rtl.rtl || trace_names_any(s, "link", {"sclk", "mosi", "miso", "ss"});
         return link;
     }
 
@@ -164,7 +182,7 @@ private:
     void hand_over(MetricsFeed& feed, bool ended) {
         const host::servo::ServoCore& core = m_host.core();
         for (metrics::MoveSpec& m : m_planned.take(core.clock(), ended)) feed.add_piece(std::move(m));
-        const std::vector<std::vector<metrics::RateSegment>> closed = m_segments.take(m_fpga, core, ended);
+        const std::vector<std::vector<metrics::RateSegment>> closed = m_segments.take(*m_fpga, core, ended);
         m_rate_feed.hand_over(feed, closed);
         commanded_known(*feed.pending().commanded, core.clock());
         if (!m_s.detail) m_host.drop_log_before(m_segments.first_needed_period());  // --detail lists every period
@@ -179,7 +197,7 @@ private:
     const spi::SpiConfig m_link;
     Wires m_wires;
     spi::SpiMaster m_master;
-    fpga::SpiFpgaTop m_fpga;
+    std::unique_ptr<fpga::SpiBoard> m_fpga;
     host::servo::ServoThread m_host;
     PlannedMoves m_planned;
     RateSegments m_segments;

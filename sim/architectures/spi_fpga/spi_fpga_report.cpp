@@ -114,7 +114,7 @@ std::string staircase_text(const host::servo::ServoSummary& summary) {
 }  // namespace
 
 SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::SpiMaster& master,
-                              const fpga::SpiFpgaTop& fpga, TimePs t_job_end_ps, bool detail) {
+                              const fpga::SpiBoard& fpga, TimePs t_job_end_ps, bool detail) {
     const host::servo::ServoCore& core = host.core();
     const host::servo::ServoConfig& cfg = core.config();
     const host::servo::ServoStats& st = core.stats();
@@ -127,9 +127,10 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
     const double latency_min_us = ps_to_us(sum.latency_min_ps());
     const double latency_mean_us = sum.latency_mean_ps() / static_cast<double>(kPsPerUs);
     const double latency_max_us = ps_to_us(sum.latency_max_ps());
-    const std::uint64_t rejected = fpga.slave.frame_count() - fpga.slave.accepted_count();
-    const std::uint64_t drops = fpga.fifo.core().dropped();
-    const std::uint64_t stretched = fpga.pulse_gen_x.stretched() + fpga.pulse_gen_y.stretched();
+    const fpga::SpiFpgaStats fst = fpga.stats();
+    const std::uint64_t rejected = fst.frames - fst.frames_accepted;
+    const std::uint64_t drops = fst.fifo_drops;
+    const std::uint64_t stretched = fst.stretched_words;
     const double job_s = ps_to_s(t_job_end_ps);
     const double busy_pct = t_job_end_ps > 0 ? 100.0 * ps_to_s(master.ss_low_total_ps()) / job_s : 0.0;
     const double share_pct = 100.0 * static_cast<double>(transfer) / static_cast<double>(cfg.period_ps);
@@ -171,14 +172,14 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
                     {{"clock_hz", fcfg.clk_hz},
                      {"rate_apply", fcfg.rate_apply == fpga::RateApply::AtNextPulse ? "at-next-pulse" : "immediately"},
                      {"fifo_depth", fcfg.fifo_depth},
-                     {"frames", fpga.slave.frame_count()},
+                     {"frames", fst.frames},
                      {"frames_rejected", rejected},
-                     {"fifo_max_level", fpga.fifo.core().max_level()},
+                     {"fifo_max_level", fst.fifo_max_level},
                      {"fifo_drops", drops},
                      {"replies_with_drop_flag", st.replies_dropped_flag},
                      {"stretched_words", stretched},
-                     {"words_applied", {fpga.applied_count(0), fpga.applied_count(1)}},
-                     {"final_counts", {fpga.count(0), fpga.count(1)}}}}};
+                     {"words_applied", fst.words_applied},
+                     {"final_counts", fst.counts}}}};
     if (detail) {  // one entry per servo period, or per rest point
         const std::vector<PeriodRecord>& log = core.log();
         out.details["servo"]["holds"] = holds_json(log, host.wakeups());
@@ -203,7 +204,7 @@ SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::S
          << fmt::format(
                 FMT_STRING("  FPGA: rate_apply {}, FIFO depth {}: max level {}, {} frames dropped, {} rejected, "
                            "{} stretched words\n"),
-                out.details["fpga"]["rate_apply"].get<std::string>(), fcfg.fifo_depth, fpga.fifo.core().max_level(),
+                out.details["fpga"]["rate_apply"].get<std::string>(), fcfg.fifo_depth, fst.fifo_max_level,
                 drops, rejected, stretched)
          << staircase_text(sum);
     out.text = text.str();

@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/warning.hpp"
-#include "fpga/spi/spi_fpga_top.hpp"
+#include "fpga/spi/spi_board.hpp"
 #include "host/servo/servo_thread.hpp"
 #include "spi/spi_master.hpp"
 
@@ -24,6 +24,6 @@ struct SpiFpgaReport {
 };
 
 SpiFpgaReport spi_fpga_report(const host::servo::ServoThread& host, const spi::SpiMaster& master,
-                              const fpga::SpiFpgaTop& fpga, TimePs t_job_end_ps, bool detail);
+                              const fpga::SpiBoard& fpga, TimePs t_job_end_ps, bool detail);
 
 }  // namespace cnc::sim

@@ -130,12 +130,20 @@ constexpr OscillatorPart kFpgaBoardClock{
     50.0,       "the common +-50 ppm grade of 50 MHz CMOS crystal oscillators",
     3.0,        "such an oscillator's period jitter is a few ps rms; 3 ps of phase jitter"};
 
-void read_spi_fpga_settings(KeyReader& r, SpiFpgaSettings& s, const host::MachineModel& machine) {
+void read_spi_fpga_settings(KeyReader& r, const std::filesystem::path& base, SpiFpgaSettings& s,
+                            const host::MachineModel& machine) {
     read_planner_settings(r, machine, s.planner);
     read_servo(r, s.servo);
     read_link(r, s.link);
     read_fpga(r, s.fpga);
     read_oscillator_settings(r, kFpgaBoardClock, s.fpga.clk_hz, s.clock);
+    read_rtl_settings(r, base, "fpga_spi", s.rtl);
+    // Our Verilog counts the FIFO's frames in 8-bit registers.
+    constexpr std::uint32_t kRtlMaxFifoDepth = 255;
+    if (s.rtl.rtl && s.rtl.design.top_file.empty() && s.fpga.fifo_depth > kRtlMaxFifoDepth) {
+        r.fail("fpga_spi.fifo_depth", "spi_fpga_top.v holds at most " + std::to_string(kRtlMaxFifoDepth) +
+                                          " frames (fpga.model = \"rtl\")");
+    }
     checked(r, kLinkKeys, [&] { spi::validate(s.link); });
     checked(r, kFpgaKeys, [&] { fpga::validate(s.fpga); });
     checked(r, kLinkKeys, [&] { fpga::check_link(s.link, s.fpga); });

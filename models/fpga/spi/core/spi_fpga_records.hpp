@@ -1,6 +1,7 @@
 // What the spi-fpga FPGA logs for reports: frames seen by the SPI slave, rate words applied per axis, and the
-// frames applied as a whole (with their laser bit).
+// frames applied as a whole (with their laser bit), and the counts the report reads.
 #pragma once
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -34,6 +35,17 @@ struct AppliedFrame {
     TimePs t_ps = 0;
     std::uint64_t seq = 0;
     bool laser_on = false;
+};
+
+// The FPGA's counts so far (report: "fpga").
+struct SpiFpgaStats {
+    std::uint64_t frames = 0;           // SS falls the slave has seen
+    std::uint64_t frames_accepted = 0;  // whole frames with the rates command, dropped ones included
+    std::uint64_t fifo_drops = 0;       // accepted frames the full FIFO dropped
+    std::uint32_t fifo_max_level = 0;   // the most frames the FIFO has held
+    std::uint64_t stretched_words = 0;  // both axes' words raised to the shortest period
+    std::array<std::uint64_t, 2> words_applied{};  // per axis
+    std::array<std::int32_t, 2> counts{};          // the step counters' registers
 };
 
 }  // namespace cnc::fpga

@@ -14,9 +14,11 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
       numerator_x("numerator_x"),
       numerator_y("numerator_y"),
       cfg_valid("cfg_valid"),
+      crc_error("crc_error"),
+      repeat("repeat"),
       m_cfg(cfg),
       m_clock(clock_grid(cfg)),
-      m_core(cfg.numerator_default),
+      m_core(cfg.numerator_default, cfg.packet_crc),
       m_writer("writer") {
     SC_HAS_PROCESS(PacketDecoder);
     numerator_x.initialize(cfg.numerator_default);  // seed 000 §5.2.3 (Π.4) reset value
@@ -56,6 +58,12 @@ void PacketDecoder::on_rx_valid() {
             cfg_valid.write(true);
         });
         m_writer.at(m_clock.at(edge + 1), [this] { cfg_valid.write(false); });
+    } else if (done == PacketDecoderCore::Completed::BadCrc) {
+        ++m_crc_errors;
+        strobe(crc_error, edge);
+    } else if (done == PacketDecoderCore::Completed::Repeat) {
+        ++m_repeats;
+        strobe(repeat, edge);
     }
     // timeout_cnt restarts at this byte: with no byte on edges edge+1 .. edge+TIMEOUT_CYCLES, the edge
     // edge+TIMEOUT_CYCLES sees timeout_cnt == TIMEOUT_CYCLES-1 and clears the partial packet.
@@ -63,6 +71,11 @@ void PacketDecoder::on_rx_valid() {
     if (m_core.timeout_active()) {
         m_watchdog.notify(ps(m_clock.at(edge + std::int64_t{m_cfg.watchdog_cycles}) - now_ps()));
     }
+}
+
+void PacketDecoder::strobe(sc_core::sc_out<bool>& port, std::int64_t edge) {
+    m_writer.at(m_clock.at(edge), [&port] { port.write(true); });
+    m_writer.at(m_clock.at(edge + 1), [&port] { port.write(false); });
 }
 
 void PacketDecoder::on_watchdog() {

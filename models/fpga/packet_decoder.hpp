@@ -24,6 +24,9 @@ public:
     sc_core::sc_out<std::uint32_t> numerator_x;
     sc_core::sc_out<std::uint32_t> numerator_y;
     sc_core::sc_out<bool> cfg_valid;
+    // With the packet check: one-clock strobes at a packet's last byte, as pkt_valid.
+    sc_core::sc_out<bool> crc_error;
+    sc_core::sc_out<bool> repeat;
 
     PacketDecoder(const sc_core::sc_module_name& name, const FpgaConfig& cfg);
 
@@ -36,11 +39,15 @@ public:
     // The packets before index `end` have been read: they go.
     void drop_motions_before(std::size_t end) { m_motions.drop_before(end); }
     [[nodiscard]] std::uint64_t watchdog_resets() const { return m_watchdog_resets; }
+    [[nodiscard]] std::uint64_t crc_errors() const { return m_crc_errors; }
+    [[nodiscard]] std::uint64_t repeats() const { return m_repeats; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations + m_writer.activations(); }
 
 private:
     void on_rx_valid();
     void on_watchdog();
+    // A one-clock strobe on `port` at edge `edge`.
+    void strobe(sc_core::sc_out<bool>& port, std::int64_t edge);
 
     const FpgaConfig m_cfg;
     const ClockGrid m_clock;
@@ -49,6 +56,8 @@ private:
     TimedWriter m_writer;
     RecordLog<MotionOut> m_motions;
     std::uint64_t m_watchdog_resets = 0;
+    std::uint64_t m_crc_errors = 0;
+    std::uint64_t m_repeats = 0;
     std::uint64_t m_activations = 0;
 };
 

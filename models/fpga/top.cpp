@@ -33,6 +33,8 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     pkt_dec_inst.numerator_x(m_numerator_x);
     pkt_dec_inst.numerator_y(m_numerator_y);
     pkt_dec_inst.cfg_valid(cfg_valid);
+    pkt_dec_inst.crc_error(m_crc_error);
+    pkt_dec_inst.repeat(m_repeat);
 
     step_gen_inst.steps_x(m_steps_x);
     step_gen_inst.steps_y(m_steps_y);
@@ -58,7 +60,7 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     laser_ctrl_inst.busy(busy);
     laser_ctrl_inst.laser(laser);
 
-    uart_tx_inst.tx_data(m_ack_byte);
+    uart_tx_inst.tx_data(m_tx_data);
     uart_tx_inst.tx_start(tx_start);
     uart_tx_inst.tx_busy(m_tx_busy);
     uart_tx_inst.tx(tx);
@@ -69,6 +71,50 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     SC_METHOD(on_cfg_valid);
     sensitive << cfg_valid;
     dont_initialize();
+    SC_METHOD(on_crc_error);
+    sensitive << m_crc_error;
+    dont_initialize();
+    SC_METHOD(on_repeat);
+    sensitive << m_repeat;
+    dont_initialize();
+}
+
+namespace {
+constexpr std::uint8_t kAck = 0xAA;  // seed 000 §4.11
+constexpr std::uint8_t kNak =
+    0x55;  // our packet check's: the ACK's bits inverted, so no single bit error turns one into the other
+}  // namespace
+
+void Top::start_tx(std::int64_t edge, std::uint8_t byte) {
+    if (edge == m_tx_edge) {
+        if (byte == kAck) m_tx_byte = kAck;
+        return;
+    }
+    m_tx_edge = edge;
+    m_tx_byte = byte;
+    m_writer.at(m_clock.at(edge), [this] {
+        if (m_tx_byte == kNak) ++m_naks_sent;
+        m_tx_data.write(m_tx_byte);
+        tx_start.write(true);
+    });
+    m_writer.at(m_clock.at(edge + 1), [this] { tx_start.write(false); });
+}
+
+// A packet whose CRC failed: edge k+1 sees the strobe of edge k and answers NAK if uart_tx is free.
+void Top::on_crc_error() {
+    ++m_activations;
+    if (!m_crc_error.read()) return;
+    if (m_tx_busy.read()) return;
+    start_tx(m_clock.last_at_or_before(now_ps()) + 1, kNak);
+}
+
+// A move sent again (the host lost its ACK): ACKed at once if it has run and nothing runs now; a move still running
+// is ACKed when busy falls.
+void Top::on_repeat() {
+    ++m_activations;
+    if (!m_repeat.read()) return;
+    if (busy.read() || m_tx_busy.read()) return;
+    start_tx(m_clock.last_at_or_before(now_ps()) + 1, kAck);
 }
 
 void Top::on_busy() {
@@ -85,8 +131,7 @@ void Top::on_busy() {
     }
     ++m_acks_sent;
     m_acks.push_back({m_clock.at(f), t_start});
-    m_writer.at(t_start, [this] { tx_start.write(true); });
-    m_writer.at(m_clock.at(f + 2), [this] { tx_start.write(false); });
+    start_tx(f + 1, kAck);
 }
 
 void Top::on_cfg_valid() {
@@ -149,6 +194,9 @@ FpgaStats Top::stats() const {
     s.watchdog_resets = pkt_dec_inst.watchdog_resets();
     s.acks_sent = m_acks_sent;
     s.acks_dropped = m_acks_dropped;
+    s.crc_errors = pkt_dec_inst.crc_errors();
+    s.naks_sent = m_naks_sent;
+    s.repeats = pkt_dec_inst.repeats();
     return s;
 }
 

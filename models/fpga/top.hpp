@@ -42,6 +42,10 @@ public:
 private:
     void on_busy();
     void on_cfg_valid();
+    void on_crc_error();
+    void on_repeat();
+    // tx_start for one clock at edge `edge` with tx_data = byte; an ACK wins over a NAK asked for the same edge.
+    void start_tx(std::int64_t edge, std::uint8_t byte);
 
     const FpgaConfig m_cfg;
     const ClockGrid m_clock;
@@ -53,7 +57,9 @@ private:
     sc_core::sc_signal<std::uint32_t> m_numerator_x;
     sc_core::sc_signal<std::uint32_t> m_numerator_y;
     sc_core::sc_signal<bool> m_tx_busy{"tx_busy", false};
-    sc_core::sc_signal<std::uint8_t> m_ack_byte{"ack_byte", 0xAA};  // top.v: .tx_data(8'hAA), seed 000 §4.11
+    sc_core::sc_signal<std::uint8_t> m_tx_data{"tx_data", 0xAA};  // top.v: .tx_data(8'hAA), seed 000 §4.11
+    sc_core::sc_signal<bool> m_crc_error{"crc_error", false};
+    sc_core::sc_signal<bool> m_repeat{"repeat", false};
     // top.v leaves step_gen's cfg_valid/numerator inputs unconnected; synthesis ties them low.
     sc_core::sc_signal<bool> m_cfg_valid_unconnected{"cfg_valid_unconnected", false};
     sc_core::sc_signal<std::uint32_t> m_numerator_unconnected{"numerator_unconnected", 0};
@@ -77,6 +83,9 @@ private:
     std::uint8_t m_pkt_count = 0;
     std::uint64_t m_acks_sent = 0;
     std::uint64_t m_acks_dropped = 0;
+    std::uint64_t m_naks_sent = 0;
+    std::int64_t m_tx_edge = -1;  // the edge of the last tx_start asked for, and its byte
+    std::uint8_t m_tx_byte = 0;
     std::uint64_t m_activations = 0;
 };
 

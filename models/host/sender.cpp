@@ -43,23 +43,78 @@ void Sender::say(const std::string& text) {
     m_messages.push_back({now_ps(), text});
 }
 
+void Sender::stall_if_due() {
+    const TimePs now = now_ps();
+    if (now < m_cfg.stall_from_ps || now >= m_cfg.stall_to_ps) return;
+    m_stalled_ps += m_cfg.stall_to_ps - now;
+    wait_ps(m_cfg.stall_to_ps - now);
+}
+
 void Sender::write(const std::uint8_t* data, std::size_t n) {
+    stall_if_due();
     wait_ps(m_cfg.write_latency_ps);
     m_port.usb_write(data, n);
 }
 
-bool Sender::wait_for_ack(int segment, TimePs deadline) {
+Sender::Reply Sender::wait_for_reply(int segment, TimePs deadline) {
     for (;;) {
+        stall_if_due();
         while (m_port.in_waiting() > 0) {
             const std::uint8_t b = *m_port.read_byte();
-            if (b == kAckByte) return true;
+            if (b == kAckByte) return Reply::Ack;
+            if (m_cfg.check.crc && b == kNakByte) return Reply::Nak;
             char text[64];
             std::snprintf(text, sizeof text, "[WARN] seg %d: unexpected byte 0x%02X", segment, b);
             say(text);
         }
         const TimePs now = now_ps();
-        if (now >= deadline) return false;
+        if (now >= deadline) return Reply::None;
         sc_core::wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(deadline - now)), m_port.data_event());
+    }
+}
+
+void Sender::send_init() {
+    const std::vector<std::uint8_t> bytes = m_cfg.check.crc ? with_crc(m_init.data(), m_init.size())
+                                                            : std::vector<std::uint8_t>(m_init.begin(), m_init.end());
+    for (int send = 0;; ++send) {
+        write(bytes.data(), bytes.size());
+        if (!m_cfg.check.crc) {
+            wait_ps(m_cfg.init_gap_ps);
+            return;
+        }
+        const TimePs gap_end = now_ps() + m_cfg.init_gap_ps;
+        const Reply reply = wait_for_reply(0, gap_end);
+        if (reply != Reply::Nak || send == m_cfg.check.retries) {
+            wait_ps(gap_end - now_ps());
+            return;
+        }
+        ++m_naks;
+        ++m_resends;
+        say("[WARN] init packet: NAK, sent again");
+        wait_ps(m_cfg.check.retry_delay_ps);
+    }
+}
+
+bool Sender::send_motion(const OutgoingPacket& packet, SentPacket& sent) {
+    std::vector<std::uint8_t> bytes(packet.bytes.begin(), packet.bytes.end());
+    if (m_cfg.check.crc) {
+        if (m_sequence) bytes[0] = static_cast<std::uint8_t>(bytes[0] | kSequenceBit);
+        m_sequence = !m_sequence;
+        bytes = with_crc(bytes.data(), bytes.size());
+    }
+    for (;;) {
+        write(bytes.data(), bytes.size());
+        const Reply reply = wait_for_reply(sent.segment, now_ps() + m_cfg.ack_timeout_ps);
+        if (reply == Reply::Ack) return true;
+        if (!m_cfg.check.crc || sent.resends == m_cfg.check.retries) return false;
+        // A NAK, or no reply: the packet or its ACK was hit on the way. Sent again, unchanged: a move that ran and
+        // lost its ACK is ACKed again by the FPGA without running twice (its sequence bit).
+        if (reply == Reply::Nak) ++m_naks;
+        ++sent.resends;
+        ++m_resends;
+        say(fmt::format(FMT_STRING("[WARN] seg {}: {}, sent again"), sent.segment,
+                        reply == Reply::Nak ? "NAK" : "no ACK within the timeout"));
+        wait_ps(m_cfg.check.retry_delay_ps);
     }
 }
 
@@ -67,8 +122,7 @@ void Sender::run() {
     wait_ps(m_cfg.settle_ps);
     m_port.reset_input_buffer();
     m_t_init_write = now_ps();
-    write(m_init.data(), m_init.size());
-    wait_ps(m_cfg.init_gap_ps);
+    send_init();
     m_port.reset_input_buffer();
 
     int segment = 0;
@@ -77,10 +131,8 @@ void Sender::run() {
         const TimePs job_wait_ps = s_to_ps(packet->wait_before_s);
         wait_ps(job_wait_ps);
         wait_ps(m_cfg.packet_processing_ps);
-        SentPacket sent{segment, now_ps(), job_wait_ps, -1, false};
-        write(packet->bytes.data(), packet->bytes.size());
-        const TimePs deadline = now_ps() + m_cfg.ack_timeout_ps;
-        if (wait_for_ack(segment, deadline)) {
+        SentPacket sent{segment, now_ps(), job_wait_ps, -1, false, 0};
+        if (send_motion(*packet, sent)) {
             sent.t_ack_ps = now_ps();
             m_sent.push_back(sent);
             continue;

@@ -43,6 +43,7 @@ struct SentPacket {
     TimePs wait_before_ps = 0;  // the job's host wait slept before it (dwell, pause, Z move)
     TimePs t_ack_ps = -1;       // the ACK was read (-1: never)
     bool timed_out = false;
+    int resends = 0;  // with the packet check: sent again after a NAK or a timeout
 };
 
 struct SenderMessage {
@@ -68,15 +69,30 @@ public:
     // The ACK timeout that made the script stop (empty unless aborted()): the move, its line and duration.
     [[nodiscard]] const std::string& abort_reason() const { return m_abort_reason; }
     [[nodiscard]] int errors() const { return m_errors; }
+    // With the packet check: packets sent again, NAKs read, and timeouts answered by a resend.
+    [[nodiscard]] int resends() const { return m_resends; }
+    [[nodiscard]] int naks() const { return m_naks; }
+    // How long the host stall (SenderConfig::stall_*) held the script up: from its first wish to act in the stall
+    // to the stall's end.
+    [[nodiscard]] TimePs stalled_ps() const { return m_stalled_ps; }
     [[nodiscard]] TimePs t_init_write_ps() const { return m_t_init_write; }
     [[nodiscard]] TimePs t_end_ps() const { return m_t_end; }
 
 private:
     void run();
     void write(const std::uint8_t* data, std::size_t n);
-    // Waits for 0xAA until `deadline`; true if it came. Other bytes are reported and skipped (the script's loop).
-    bool wait_for_ack(int segment, TimePs deadline);
+    enum class Reply { Ack, Nak, None };
+    // Waits for 0xAA (or, with the packet check, a NAK) until `deadline`. Other bytes are reported and skipped (the
+    // script's loop).
+    Reply wait_for_reply(int segment, TimePs deadline);
+    // The init packet; with the packet check sent again while the FPGA answers NAK within the init gap.
+    void send_init();
+    // Writes a motion packet (framed with the packet check) until its ACK, a NAK or a timeout past the retries.
+    // Returns whether the ACK came.
+    bool send_motion(const OutgoingPacket& packet, SentPacket& sent);
     void say(const std::string& text);
+    // Inside the stall: waits for its end.
+    void stall_if_due();
 
     const SenderConfig m_cfg;
     uart::Cp2102& m_port;
@@ -87,6 +103,10 @@ private:
     TimePs m_t_init_write = -1;
     TimePs m_t_end = -1;
     int m_errors = 0;
+    int m_resends = 0;
+    int m_naks = 0;
+    TimePs m_stalled_ps = 0;
+    bool m_sequence = false;  // the packet check's alternating bit of the next new move
     bool m_finished = false;
     bool m_aborted = false;
     std::string m_abort_reason;

@@ -36,6 +36,12 @@ struct JobUse {
                                // then keeps none)
 };
 
+// The links of an architecture that the scenario's [faults] can disturb (scenario/fault_settings.hpp).
+struct FaultLinks {
+    bool uart = false;  // a UART link: faults.uart_*
+    bool host = false;  // a host program that can stall: faults.host_stall_*
+};
+
 class Architecture {
 public:
     virtual ~Architecture() = default;
@@ -60,6 +66,7 @@ public:
     virtual void check_move(const std::string& /*where*/, const host::ProgrammedMove& /*move*/,
                             const Scenario& /*s*/) const {}
 
+    [[nodiscard]] virtual FaultLinks fault_links() const { return {}; }
     // Its colour in every plot ("#rrggbb"), the same in every run and comparison.
     [[nodiscard]] virtual std::string plot_colour() const = 0;
 };

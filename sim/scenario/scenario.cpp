@@ -154,6 +154,18 @@ void check_start(const KeyReader& r, geom::Vec2 start_mm, const host::MachineMod
 }
 
 // Which pins the VCD holds, and when: a window of a long job keeps the file to the part of interest.
+// A fault on a link the architecture does not have would change nothing: refused, so that a study never reads
+// a clean run as a faulty one.
+void check_fault_links(const KeyReader& r, const FaultSettings& f, const Architecture& a) {
+    if (f.uart.any() && !a.fault_links().uart) {
+        r.fail(f.uart.ber > 0.0 ? "faults.uart_ber" : "faults.uart_frame_loss_rate",
+               "the " + a.name() + " architecture has no UART link the faults can act on");
+    }
+    if (f.host_stall.any() && !a.fault_links().host) {
+        r.fail("faults.host_stall_s", "the " + a.name() + " architecture has no host program model that can stall");
+    }
+}
+
 void read_trace_window(KeyReader& r, Scenario& s) {
     s.trace_signals = r.get_string_list(
         "trace.signals",
@@ -267,9 +279,13 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                                   ? host::FeedUnit::MmPerMinute
                                   : host::FeedUnit::MmPerSecond;
 
+    read_fault_settings(r, s.seed, s.faults);
     for (const Architecture* a : architectures()) {
         std::shared_ptr<const ArchSettings> settings = a->read_settings(r, s, base);
-        if (a->name() == s.architecture) s.arch_settings = std::move(settings);
+        if (a->name() == s.architecture) {
+            s.arch_settings = std::move(settings);
+            check_fault_links(r, s.faults, *a);
+        }
     }
 
     s.vcd_path = r.get_string("trace.vcd", "",

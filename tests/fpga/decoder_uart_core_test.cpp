@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "common/crc16.hpp"
 #include "fpga/core/line_history.hpp"
 #include "fpga/core/packet_decoder_core.hpp"
 #include "fpga/core/uart_timing.hpp"
@@ -55,6 +56,62 @@ TEST(PacketDecoderCore, TimeoutClearsAPartialPacketAndKeepsOutputs) {
     EXPECT_FALSE(d.timeout_active());
     EXPECT_EQ(d.motion().steps_y, 6);  // fields keep their last values
     EXPECT_EQ(feed_bytes(d, test::motion_packet(0, 1, 1, 1)).back(), Completed::Motion);
+}
+
+// The packet check: a packet followed by its CRC-16/CCITT-FALSE, computed here over the bytes as sent (the catalogue
+// law is common/crc16.hpp's own test), bit 7 of the motion byte the alternating sequence bit.
+std::vector<std::uint8_t> checked(std::vector<std::uint8_t> bytes, bool sequence = false) {
+    if (sequence) bytes[0] = static_cast<std::uint8_t>(bytes[0] | PacketDecoderCore::kSequenceBit);
+    const std::uint16_t crc = crc16(bytes.data(), bytes.size());
+    bytes.push_back(static_cast<std::uint8_t>(crc >> 8U));
+    bytes.push_back(static_cast<std::uint8_t>(crc & 0xFFU));
+    return bytes;
+}
+
+TEST(PacketDecoderCore, CheckedPacketsCompleteAfterTheirCrc) {
+    PacketDecoderCore d(18'750'000, true);
+    const auto init = feed_bytes(d, checked(test::init_packet(9'375'000, 1'000)));
+    ASSERT_EQ(init.size(), 11U);
+    EXPECT_EQ(std::count(init.begin(), init.end(), Completed::None), 10);
+    EXPECT_EQ(init.back(), Completed::Init);
+    EXPECT_EQ(d.init().num_y, 1'000U);
+    const auto motion = feed_bytes(d, checked(test::motion_packet(3, -7, 123'456, 65'535), true));
+    ASSERT_EQ(motion.size(), 13U);
+    EXPECT_EQ(motion.back(), Completed::Motion);
+    EXPECT_EQ(d.motion().motion, 3);  // the sequence bit is not part of the motion code
+    EXPECT_EQ(d.motion().steps_x, -7);
+    EXPECT_EQ(d.motion().feed, 65'535);
+    EXPECT_EQ(d.byte_count(), 0);
+    EXPECT_FALSE(d.timeout_active());
+}
+
+TEST(PacketDecoderCore, EverySingleBitErrorInACheckedPacketIsABadCrcAndNoMove) {
+    const std::vector<std::uint8_t> good = checked(test::motion_packet(1, 320, 160, 1200));
+    for (std::size_t byte = 0; byte < good.size(); ++byte) {
+        for (int bit = 0; bit < 8; ++bit) {
+            PacketDecoderCore d(18'750'000, true);
+            std::vector<std::uint8_t> hit = good;
+            hit[byte] ^= static_cast<std::uint8_t>(1U << bit);
+            EXPECT_EQ(feed_bytes(d, hit).back(), Completed::BadCrc) << byte << ":" << bit;
+            EXPECT_EQ(d.motion().steps_x, 0);  // the fields keep their reset values
+        }
+    }
+}
+
+TEST(PacketDecoderCore, AMoveSentAgainWithItsSequenceBitIsARepeat) {
+    PacketDecoderCore d(18'750'000, true);
+    EXPECT_EQ(feed_bytes(d, checked(test::motion_packet(1, 10, 0, 800), false)).back(), Completed::Motion);
+    EXPECT_EQ(feed_bytes(d, checked(test::motion_packet(1, 10, 0, 800), false)).back(), Completed::Repeat);
+    EXPECT_EQ(feed_bytes(d, checked(test::motion_packet(1, 20, 0, 800), true)).back(), Completed::Motion);
+    EXPECT_EQ(d.motion().steps_x, 20);
+    EXPECT_EQ(feed_bytes(d, checked(test::motion_packet(1, 20, 0, 800), true)).back(), Completed::Repeat);
+    EXPECT_EQ(feed_bytes(d, checked(test::motion_packet(1, 30, 0, 800), false)).back(), Completed::Motion);
+    // A bad CRC passes nothing on: the next packet with the other bit is still new.
+    PacketDecoderCore e(18'750'000, true);
+    std::vector<std::uint8_t> hit = checked(test::motion_packet(1, 10, 0, 800), false);
+    hit[4] ^= 0x01;
+    EXPECT_EQ(feed_bytes(e, hit).back(), Completed::BadCrc);
+    EXPECT_EQ(feed_bytes(e, checked(test::motion_packet(1, 10, 0, 800), false)).back(), Completed::Motion);
 }
 
 TEST(PacketDecoderCore, WithoutTheWatchdogALeftoverByteShiftsTheNextPacket) {

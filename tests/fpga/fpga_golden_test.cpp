@@ -3,6 +3,7 @@
 // packet wiring, and the process-activation budget (the model wakes per edge, never per clock).
 #include <gtest/gtest.h>
 
+#include "common/crc16.hpp"
 #include "fpga_test_support.hpp"
 
 namespace cnc::fpga::test {
@@ -95,6 +96,50 @@ void check_worked_example(UartWave w) {
     EXPECT_EQ(s.bytes_received, 20U);
     EXPECT_EQ(s.acks_sent, 1U);
     EXPECT_EQ(bench.top.pkt_count(), 1);
+}
+
+// The packet check (protocol.crc = "crc16"): the worked packet with its CRC-16/CCITT-FALSE (computed here), first
+// with one bit inverted: NAK 0x55 at once, as an ACK leaves uart_tx (tx_start the edge after the decoder's strobe, the
+// start bit two edges later), and no move; then as sent: the move and its ACK 0xAA at busy's fall as in the seed; then
+// again with the same sequence bit (its ACK lost on the way): ACKed at once, not run twice.
+TEST(FpgaGolden, CheckedPacketsAreNakedRunAndAckedOnce) {
+    std::vector<std::uint8_t> good = kWorkedMotion;
+    const std::uint16_t crc = crc16(good.data(), good.size());
+    good.push_back(static_cast<std::uint8_t>(crc >> 8U));
+    good.push_back(static_cast<std::uint8_t>(crc & 0xFFU));
+    std::vector<std::uint8_t> bad = good;
+    bad[3] ^= 0x04;
+    UartWave w = sync_sender();
+    w.bytes(20 * kUs, bad);
+    const std::int64_t k_bad = pkt_valid_edge_for_last_start_bit(w.frame_starts().back());
+    w.bytes(3 * kMs, good);
+    const std::int64_t k = pkt_valid_edge_for_last_start_bit(w.frame_starts().back());
+    const std::int64_t busy_fall = k + 203 + kRunCycles;
+    w.bytes((busy_fall + 50'000) * kCyclePs, good);
+    const std::int64_t k_again = pkt_valid_edge_for_last_start_bit(w.frame_starts().back());
+    FpgaConfig cfg;
+    cfg.packet_crc = true;
+    FpgaBench bench("bench", cfg, w.changes());
+    bench.run_to_edge(k_again + 10'000);
+    const auto logs = bench.logs();
+
+    EXPECT_EQ(edges_in_cycles(logs.at("pkt_valid").rising()), std::vector<std::int64_t>{k});
+    EXPECT_EQ(edges_in_cycles(logs.at("busy").rising()), std::vector<std::int64_t>{k + 1});
+    EXPECT_EQ(edges_in_cycles(logs.at("tx_start").rising()),
+              (std::vector<std::int64_t>{k_bad + 1, busy_fall + 1, k_again + 1}));
+    const std::vector<TimePs> tx_falls = logs.at("tx").falling();
+    ASSERT_GE(tx_falls.size(), 3U);
+    EXPECT_EQ(tx_falls[0] / kCyclePs, k_bad + 3);
+    EXPECT_EQ(decode_frame(logs.at("tx"), tx_falls[0], 434 * kCyclePs), 0x55);
+    const std::vector<TimePs> starts = {tx_falls[0], (busy_fall + 3) * kCyclePs, (k_again + 3) * kCyclePs};
+    EXPECT_EQ(decode_frame(logs.at("tx"), starts[1], 434 * kCyclePs), 0xAA);
+    EXPECT_EQ(decode_frame(logs.at("tx"), starts[2], 434 * kCyclePs), 0xAA);
+    EXPECT_EQ(edges_in_cycles(logs.at("step_x").rising()), pulse_train(k + 203, 15'625, 320));  // one run only
+    const FpgaStats st = bench.top.stats();
+    EXPECT_EQ(st.crc_errors, 1U);
+    EXPECT_EQ(st.naks_sent, 1U);
+    EXPECT_EQ(st.repeats, 1U);
+    EXPECT_EQ(st.acks_sent, 1U);  // at busy's fall; the repeat's ACK is counted as a repeat
 }
 
 TEST(FpgaGolden, WorkedExampleFrom50MHzSender) {

@@ -23,6 +23,7 @@ struct FpgaConfig {
     std::uint32_t feed_zero_period_cycles = 62'500;  // step_gen.v: both periods when feed_rate == 0 (unexplained)
     bool init_packet_wired = true;                   // false = appendix top.v: cfg_valid/numerators unconnected
     PeriodArithmetic period_arithmetic = PeriodArithmetic::Exact;  // Exact = the text, Wrap32 = the appendix
+    bool packet_crc = false;  // our option on seed 000 §7.2's CRC: packets checked, NAK, repeats (decoder core)
     ClockDeviation clock;  // the board oscillator's offset and jitter (all zero: an ideal CLOCK_50)
 };
 

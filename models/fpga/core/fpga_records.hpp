@@ -35,6 +35,9 @@ struct FpgaStats {
     std::uint64_t watchdog_resets = 0;  // packet_decoder 100 ms timeouts that cleared a partial packet
     std::uint64_t acks_sent = 0;        // tx_start pulses
     std::uint64_t acks_dropped = 0;     // busy fell while uart_tx was busy: no ACK (seed 000 §4.13), none pending
+    std::uint64_t crc_errors = 0;       // with the packet check: packets whose CRC failed
+    std::uint64_t naks_sent = 0;        // their NAKs sent (uart_tx was idle)
+    std::uint64_t repeats = 0;          // good packets sent again (their ACK lost): not run twice
 };
 
 }  // namespace cnc::fpga

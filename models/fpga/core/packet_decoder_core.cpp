@@ -1,15 +1,30 @@
 #include "fpga/core/packet_decoder_core.hpp"
 
+#include "common/crc16.hpp"
+
 namespace cnc::fpga {
 
 namespace {
 std::uint32_t be32(std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t d) {
     return (std::uint32_t{a} << 24) | (std::uint32_t{b} << 16) | (std::uint32_t{c} << 8) | std::uint32_t{d};
 }
+
+MotionFields motion_fields(const std::array<std::uint8_t, 12>& b, std::uint8_t feed_low) {
+    return {static_cast<std::uint8_t>(b[0] & 0x3U), static_cast<std::int32_t>(be32(b[1], b[2], b[3], b[4])),
+            static_cast<std::int32_t>(be32(b[5], b[6], b[7], b[8])),
+            static_cast<std::uint16_t>((b[9] << 8) | feed_low)};
+}
 }  // namespace
+
+void PacketDecoderCore::restart() {
+    m_byte_count = 0;
+    m_timeout_active = false;
+    m_is_cfg = false;
+}
 
 PacketDecoderCore::Completed PacketDecoderCore::on_byte(std::uint8_t byte) {
     if (m_byte_count < static_cast<int>(m_bank.size())) m_bank[static_cast<std::size_t>(m_byte_count)] = byte;
+    if (m_crc) return complete_checked(m_byte_count == 0 ? byte == kCfgMarker : m_is_cfg, byte);
     // is_cfg_pkt is updated on byte 0 but the completion tests below read its old value (non-blocking).
     const bool was_cfg = m_is_cfg;
     if (m_byte_count == 0) {
@@ -20,16 +35,11 @@ PacketDecoderCore::Completed PacketDecoderCore::on_byte(std::uint8_t byte) {
     if (was_cfg && m_byte_count == kInitBytes - 1) {
         m_init.num_x = be32(b[1], b[2], b[3], b[4]);
         m_init.num_y = be32(b[5], b[6], b[7], byte);
-        m_byte_count = 0;
-        m_timeout_active = false;
-        m_is_cfg = false;
+        restart();
         return Completed::Init;
     }
     if (!was_cfg && m_byte_count == kMotionBytes - 1) {
-        m_motion.motion = static_cast<std::uint8_t>(b[0] & 0x3U);
-        m_motion.steps_x = static_cast<std::int32_t>(be32(b[1], b[2], b[3], b[4]));
-        m_motion.steps_y = static_cast<std::int32_t>(be32(b[5], b[6], b[7], b[8]));
-        m_motion.feed = static_cast<std::uint16_t>((b[9] << 8) | byte);
+        m_motion = motion_fields(b, byte);
         m_byte_count = 0;
         m_timeout_active = false;  // the RTL leaves is_cfg_pkt as it was (0) here
         return Completed::Motion;
@@ -38,10 +48,39 @@ PacketDecoderCore::Completed PacketDecoderCore::on_byte(std::uint8_t byte) {
     return Completed::None;
 }
 
+// With the packet check the type is known from byte 0 on (no seed quirk to keep), and the CRC register runs over
+// every byte: after the packet's own CRC it is zero for a packet received as sent.
+PacketDecoderCore::Completed PacketDecoderCore::complete_checked(bool is_cfg, std::uint8_t byte) {
+    if (m_byte_count == 0) {
+        m_timeout_active = true;
+        m_is_cfg = is_cfg;
+        m_crc_reg = kCrc16Preset;
+    }
+    m_crc_reg = crc16_update(m_crc_reg, byte);
+    const int length = (is_cfg ? kInitBytes : kMotionBytes) + kCrcBytes;
+    if (m_byte_count < length - 1) {
+        ++m_byte_count;
+        return Completed::None;
+    }
+    const bool good = m_crc_reg == 0;
+    restart();
+    if (!good) return Completed::BadCrc;
+    const auto& b = m_bank;
+    if (is_cfg) {
+        m_init.num_x = be32(b[1], b[2], b[3], b[4]);
+        m_init.num_y = be32(b[5], b[6], b[7], b[8]);
+        return Completed::Init;
+    }
+    const bool sequence = (b[0] & kSequenceBit) != 0;
+    if (m_sequence_seen && sequence == m_last_sequence) return Completed::Repeat;
+    m_sequence_seen = true;
+    m_last_sequence = sequence;
+    m_motion = motion_fields(b, b[10]);
+    return Completed::Motion;
+}
+
 void PacketDecoderCore::on_timeout() {
-    m_byte_count = 0;
-    m_timeout_active = false;
-    m_is_cfg = false;
+    restart();
 }
 
 }  // namespace cnc::fpga

@@ -1,6 +1,13 @@
 // packet_decoder (Π.4) byte state machine without timing: the byte counter is the state, the first byte picks
 // the packet type (0xFF -> 9-byte init, else 11-byte motion), fields are big-endian. The module adds the clock
 // edges and the 100 ms watchdog.
+//
+// With the packet check (protocol.crc = "crc16", our option on seed 000 §7.2's proposal of a CRC field) every packet
+// carries its CRC-16/CCITT-FALSE after it, high byte first (11-byte init, 13-byte motion), and bit 7 of a motion
+// packet's first byte alternates from one new move to the next (an alternating-bit protocol): a packet whose CRC
+// does not leave the register at zero completes as BadCrc (the FPGA answers NAK), a good motion packet whose
+// sequence bit equals the last one passed on completes as Repeat (the host sent it again because it lost the ACK:
+// the move is not run twice).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -21,12 +28,15 @@ struct InitFields {
 
 class PacketDecoderCore {
 public:
-    enum class Completed { None, Motion, Init };
+    enum class Completed { None, Motion, Init, BadCrc, Repeat };
     static constexpr std::uint8_t kCfgMarker = 0xFF;  // seed 000 §4.6 (Π.4 CFG_MARKER)
     static constexpr int kInitBytes = 9;              // seed 000 §4.6
     static constexpr int kMotionBytes = 11;
+    static constexpr int kCrcBytes = 2;                 // with the packet check
+    static constexpr std::uint8_t kSequenceBit = 0x80;  // b0[7] of a motion packet, with the packet check
 
-    explicit PacketDecoderCore(std::uint32_t numerator_default) : m_init{numerator_default, numerator_default} {}
+    explicit PacketDecoderCore(std::uint32_t numerator_default, bool packet_crc = false)
+        : m_crc(packet_crc), m_init{numerator_default, numerator_default} {}
 
     // The rx_valid branch of the always block.
     Completed on_byte(std::uint8_t byte);
@@ -39,10 +49,17 @@ public:
     [[nodiscard]] const InitFields& init() const { return m_init; }
 
 private:
+    Completed complete_checked(bool was_cfg, std::uint8_t byte);
+    void restart();
+
+    bool m_crc;
     int m_byte_count = 0;
     bool m_timeout_active = false;
     bool m_is_cfg = false;
-    std::array<std::uint8_t, 10> m_bank{};  // b0..b9 (the 11th motion / 9th init byte is used live)
+    std::array<std::uint8_t, 12> m_bank{};  // b0..b11 (the packet's last byte is used live)
+    std::uint16_t m_crc_reg = 0;            // over the packet's bytes so far (with the packet check)
+    bool m_sequence_seen = false;           // a motion packet has been passed on since reset
+    bool m_last_sequence = false;
     MotionFields m_motion;
     InitFields m_init;
 };

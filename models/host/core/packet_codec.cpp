@@ -4,6 +4,7 @@
 #include <string>
 
 #include "common/bad_input.hpp"
+#include "common/crc16.hpp"
 
 namespace cnc::host {
 
@@ -79,6 +80,14 @@ MotionPacket to_packet(const MotionSegment& s) {
     check_range(s.feed, 0, 65535, where, "feed", "0..65535 mm/min");  // seed 000 §4.8: uint16
     return MotionPacket{static_cast<std::uint8_t>(motion), static_cast<std::int32_t>(s.steps_x),
                         static_cast<std::int32_t>(s.steps_y), static_cast<std::uint16_t>(s.feed)};
+}
+
+std::vector<std::uint8_t> with_crc(const std::uint8_t* bytes, std::size_t n) {
+    std::vector<std::uint8_t> out(bytes, bytes + n);
+    const std::uint16_t crc = crc16(bytes, n);
+    out.push_back(static_cast<std::uint8_t>(crc >> 8U));
+    out.push_back(static_cast<std::uint8_t>(crc & 0xFFU));
+    return out;
 }
 
 }  // namespace cnc::host

@@ -4,13 +4,21 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "host/core/cam.hpp"
 
 namespace cnc::host {
 
-inline constexpr std::uint8_t kInitMarker = 0xFF;      // seed 000 §4.5: first byte 0xFF = init packet
-inline constexpr std::uint8_t kAckByte = 0xAA;         // seed 000 §4.11: sent when a move completes
+inline constexpr std::uint8_t kInitMarker = 0xFF;  // seed 000 §4.5: first byte 0xFF = init packet
+inline constexpr std::uint8_t kAckByte = 0xAA;     // seed 000 §4.11: sent when a move completes
+// With the packet check (protocol.crc = "crc16", our option on seed 000 §7.2): the FPGA's answer to a packet whose
+// CRC failed, the ACK's bits inverted so that no single bit error turns one into the other; bit 7 of a motion
+// packet's first byte alternates between new moves; every packet is followed by its CRC-16/CCITT-FALSE, high byte
+// first (common/crc16.hpp).
+inline constexpr std::uint8_t kNakByte = 0x55;
+inline constexpr std::uint8_t kSequenceBit = 0x80;
+inline constexpr std::size_t kCrcBytes = 2;
 inline constexpr std::size_t kInitPacketBytes = 9;     // seed 000 T3.6
 inline constexpr std::size_t kMotionPacketBytes = 11;  // seed 000 T3.6
 
@@ -37,6 +45,9 @@ MotionBytes encode_motion(const MotionPacket& packet);
 InitPacket decode_init(const InitBytes& bytes);
 // std::invalid_argument if byte 0 is 0xFF (that starts an init packet).
 MotionPacket decode_motion(const MotionBytes& bytes);
+
+// `bytes` followed by their CRC-16/CCITT-FALSE, high byte first.
+[[nodiscard]] std::vector<std::uint8_t> with_crc(const std::uint8_t* bytes, std::size_t n);
 
 // Range-checked conversion of a CAM / steps-file segment: cnc::BadInput("segment N", ...) if the motion is not
 // 0..3, a step count is outside int32 or the feed outside 0..65535.

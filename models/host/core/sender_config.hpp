@@ -5,6 +5,15 @@
 
 namespace cnc::host {
 
+// Our option on seed 000 §7.2's proposal of a CRC (protocol.crc = "crc16", frames in packet_codec.hpp): each packet
+// checked, a NAK or a lost ACK answered by sending it again.
+struct PacketCheckConfig {
+    bool crc = false;
+    int retries = 3;                         // sends of a packet after its first, before the seed's timeout rule
+    TimePs retry_delay_ps = 150 * kPsPerMs;  // before a resend: past the FPGA's 100 ms watchdog (seed 000 §5.2.3),
+                                             // so that a partial packet left by a lost byte is gone
+};
+
 struct SenderConfig {
     TimePs settle_ps = 300 * kPsPerMs;             // send_steps.py: time.sleep(0.3) after opening the port
     TimePs init_gap_ps = 50 * kPsPerMs;            // time.sleep(0.05) after the init packet (it is not ACKed)
@@ -12,6 +21,11 @@ struct SenderConfig {
     TimePs packet_processing_ps = 200 * kPsPerUs;  // CPython loop, struct.pack, progress print: typical 0.1-0.5 ms
     TimePs write_latency_ps = 100 * kPsPerUs;      // write() through the VCP driver to the USB request
     bool continue_on_timeout = false;  // the script asks "Continue anyway? [y/N]"; with no terminal: N, abort
+    PacketCheckConfig check;
+    // A fault: the host program does nothing from stall_from_ps to stall_to_ps (another process, a swap storm, a
+    // USB reset): it neither writes nor reads the port. Empty when stall_to_ps <= stall_from_ps.
+    TimePs stall_from_ps = 0;
+    TimePs stall_to_ps = 0;
 };
 
 }  // namespace cnc::host

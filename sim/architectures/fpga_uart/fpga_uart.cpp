@@ -53,6 +53,7 @@ public:
         }
     }
 
+    [[nodiscard]] FaultLinks fault_links() const override { return {true, true}; }
     [[nodiscard]] std::string plot_colour() const override { return "#0072b2"; }
 };
 

@@ -14,9 +14,11 @@
 #include "architectures/fpga_uart/fpga_uart.hpp"
 #include "architectures/fpga_uart/fpga_uart_settings.hpp"
 #include "architectures/fpga_uart/job_segments.hpp"
+#include "architectures/fpga_uart/packet_faults.hpp"
 #include "architectures/serial_host/link_checks.hpp"
 #include "common/bad_input.hpp"
 #include "common/record_log.hpp"
+#include "common/sc_time.hpp"
 #include "fpga/core/step_schedule.hpp"
 #include "fpga/rtl_top.hpp"
 #include "fpga/top.hpp"
@@ -26,6 +28,7 @@
 #include "run/machine_run.hpp"
 #include "run/moves.hpp"
 #include "uart/cp2102.hpp"
+#include "uart/faulty_line.hpp"
 
 namespace cnc::sim::fpga_uart {
 
@@ -42,6 +45,8 @@ struct Wires {
     sc_core::sc_signal<bool> busy{"busy", false};
     sc_core::sc_signal<bool> pkt_valid{"pkt_valid", false}, cfg_valid{"cfg_valid", false};
     sc_core::sc_signal<bool> rx_valid{"rx_valid", false}, ack{"ack", false};
+    // With faults on the link: the pins as driven, before the faulty wires (uart/faulty_line.hpp).
+    sc_core::sc_signal<bool> cp2102_txd{"cp2102_txd", true}, fpga_tx{"fpga_tx", true};
 };
 
 // The NUMERATORs the host sends in its init packet.
@@ -66,15 +71,17 @@ host::OutgoingPacket packet_of(const MadeSegment& made, Numerators n, const Fpga
 // step_gen has run it (the metrics' commanded move); its G-code line until the FPGA's warnings have read it.
 class SentPackets : public host::PacketSource {
 public:
-    SentPackets(const Scenario& s, const Job& job, Numerators n)
-        : m_settings(s.settings<FpgaUartSettings>()), m_segments(s, job), m_numerators(n) {}
+    // `keep_fields`: every packet's fields and line stay for the fault tally.
+    SentPackets(const Scenario& s, const Job& job, Numerators n, bool keep_fields)
+        : m_settings(s.settings<FpgaUartSettings>()), m_segments(s, job), m_numerators(n), m_keep_fields(keep_fields) {}
 
     std::optional<host::OutgoingPacket> next() override {
         std::optional<MadeSegment> made = m_segments.next();
         if (!made) return std::nullopt;
         host::OutgoingPacket packet = packet_of(*made, m_numerators, m_settings);
         m_lines.push_back(made->seg.line);
-        m_unexecuted.push_back(std::move(*made));
+        if (m_keep_fields) m_sent.push_back({0, made->seg.line, sent_fields(packet)});
+        m_unexecuted.push_back({std::move(*made), now_ps()});
         return packet;
     }
     double wait_after_last_s() override { return m_segments.wait_after_last_s(); }
@@ -84,24 +91,46 @@ public:
     }
 
     [[nodiscard]] bool unexecuted() const { return !m_unexecuted.empty(); }
+    // When the sender took the oldest packet not run yet (unexecuted()); it writes it after that.
+    [[nodiscard]] TimePs oldest_taken_ps() const { return m_unexecuted.front().t_taken_ps; }
+    // Whether a packet taken after the oldest was taken at or before `t_ps`: then the oldest is no longer in flight.
+    [[nodiscard]] bool newer_taken_by(TimePs t_ps) const {
+        return m_unexecuted.size() > 1 && m_unexecuted[1].t_taken_ps <= t_ps;
+    }
     [[nodiscard]] MadeSegment executed() {  // unexecuted()
-        MadeSegment made = std::move(m_unexecuted.front());
+        MadeSegment made = std::move(m_unexecuted.front().made);
         m_unexecuted.pop_front();
         return made;
     }
     [[nodiscard]] const RecordLog<int>& lines() const { return m_lines; }  // per packet sent
     void drop_lines_before(std::size_t end) { m_lines.drop_before(end); }
+    // With keep_fields: every packet made, in order (their write times are the sender's).
+    [[nodiscard]] const std::vector<HostPacket>& sent() const { return m_sent; }
 
 private:
+    static fpga::MotionFields sent_fields(const host::OutgoingPacket& packet) {
+        const host::MotionPacket p = host::decode_motion(packet.bytes);
+        return {p.motion, p.steps_x, p.steps_y, p.feed};
+    }
+
     const FpgaUartSettings& m_settings;
     JobSegments m_segments;
     Numerators m_numerators;
-    std::deque<MadeSegment> m_unexecuted;
+    const bool m_keep_fields;
+    std::vector<HostPacket> m_sent;
+    struct Unexecuted {
+        MadeSegment made;
+        TimePs t_taken_ps;
+    };
+    std::deque<Unexecuted> m_unexecuted;
     RecordLog<int> m_lines;
 };
 
 // The executed pieces, one per packet step_gen accepted (a packet ignored because busy carries none), in order:
-// busy rises one clock after pkt_valid (SETUP) and falls at DONE.
+// busy rises one clock after pkt_valid (SETUP) and falls at DONE. Each record belongs to the packet the sender was
+// sending when it arrived (stop-and-wait: the last it took before pkt_valid), so that a packet lost on the link is
+// a piece of its own that ran no steps, and a record of a packet already run (a misframed or repeated one) makes
+// none: the pieces after them keep their own commanded moves.
 class ExecutedPieces {
 public:
     // Hands `f` each piece not handed yet whose packet's busy fell before until_ps (none: every accepted packet's,
@@ -114,8 +143,10 @@ public:
             const fpga::PacketRecord r = top.packet(m_record);
             if (!r.accepted) continue;
             if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
-            const MadeSegment made = sent.executed();
             const TimePs t_begin_ps = clock.at(clock.first_after(r.t_pkt_valid_ps));
+            while (sent.newer_taken_by(r.t_pkt_valid_ps)) hand_lost(sent.executed(), t_begin_ps, moves, f);
+            if (sent.oldest_taken_ps() > r.t_pkt_valid_ps) continue;  // its packet has run already
+            const MadeSegment made = sent.executed();
             hand_unstepped(made.unstepped_before, t_begin_ps, moves, f);
             metrics::MoveSpec m = moves.next(made.seg, made.programmed ? &*made.programmed : nullptr);
             m.t_begin_ps = t_begin_ps;
@@ -123,13 +154,24 @@ public:
             m_last_end_ps = m.t_end_ps;
             f(std::move(m));
         }
-        if (!until_ps) hand_unstepped(sent.take_unstepped_after_last(), std::nullopt, moves, f);
+        if (until_ps) return;
+        while (sent.unexecuted()) hand_lost(sent.executed(), std::nullopt, moves, f);
+        hand_unstepped(sent.take_unstepped_after_last(), std::nullopt, moves, f);
     }
 
     // The first packet record not read yet.
     [[nodiscard]] std::size_t next_record() const { return m_record; }
 
 private:
+    // A packet that never ran: its commanded move with no time of its own, so that it owns no STEP edge.
+    template <typename F>
+    void hand_lost(const MadeSegment& made, std::optional<TimePs> next_begin_ps, CommandedMoves& moves, F& f) const {
+        hand_unstepped(made.unstepped_before, next_begin_ps, moves, f);
+        metrics::MoveSpec m = moves.next(made.seg, made.programmed ? &*made.programmed : nullptr);
+        place_unstepped(m, next_begin_ps, m_last_end_ps);
+        f(std::move(m));
+    }
+
     template <typename F>
     void hand_unstepped(const std::vector<UnsteppedMove>& unstepped, std::optional<TimePs> next_begin_ps,
                         CommandedMoves& moves, F& f) const {
@@ -227,9 +269,10 @@ void FpgaWarnings::finish(const fpga::Board& top, std::vector<Warning>& warnings
         }
     }
     if (!top.records_from_nets()) {
-        warnings.push_back({"fpga_records_from_pins", "",
-                            "the FPGA design lacks our top's nets (pkt_valid, step_gen_inst.state, ...): each busy "
-                            "pulse is taken for a packet, the FPGA's byte, framing and watchdog counters are not known"});
+        warnings.push_back(
+            {"fpga_records_from_pins", "",
+             "the FPGA design lacks our top's nets (pkt_valid, step_gen_inst.state, ...): each busy "
+             "pulse is taken for a packet, the FPGA's byte, framing and watchdog counters are not known"});
     }
     const fpga::FpgaStats st = top.stats();
     if (st.framing_errors > 0) {
@@ -245,14 +288,20 @@ void FpgaWarnings::finish(const fpga::Board& top, std::vector<Warning>& warnings
     }
 }
 
+constexpr const char* kDeadTimeNotSplit =
+    "dead time not split into its causes: the link has faults, and a lost or repeated packet breaks the reading of "
+    "one gap per packet";
+
 // The models' per-packet records that every reader has read go: the metrics' pieces, the dead-time split and the
-// warnings read them once. The detailed report lists every packet step_gen saw and the sender sent: kept.
+// warnings read them once. The detailed report lists every packet step_gen saw and the sender sent, and the fault
+// tally pairs them at the end: kept.
 void hand_over_read(const ExecutedPieces& executed, const DeadTimeFold& dead_fold, const FpgaWarnings& warnings,
-                    bool detail, fpga::Board& fpga, host::Sender& sender, uart::Cp2102& cp2102, SentPackets& packets) {
+                    bool keep_packets, fpga::Board& fpga, host::Sender& sender, uart::Cp2102& cp2102,
+                    SentPackets& packets) {
     cp2102.drop_tx_log_before(dead_fold.next_packet());
     cp2102.drop_rx_log_before(dead_fold.next_rx_byte());
     packets.drop_lines_before(warnings.next_packet());
-    if (detail) return;
+    if (keep_packets) return;
     fpga.drop_packets_before(std::min({executed.next_record(), dead_fold.next_packet(), warnings.next_packet()}));
     sender.drop_packets_before(dead_fold.next_packet());
 }
@@ -339,6 +388,16 @@ void check_fpga_rate(const Scenario& s, const FpgaUartSettings& f) {
                               fpga_bd, f.fpga.clk_hz / 1e6, f.fpga.uart_full_bit_cycles)});
 }
 
+// The script as the scenario sets it, with the host stall of its faults.
+host::SenderConfig sender_config(const Scenario& s, const FpgaUartSettings& f) {
+    host::SenderConfig c = f.serial.sender;
+    if (s.faults.host_stall.any()) {
+        c.stall_from_ps = s_to_ps(s.faults.host_stall.at_s);
+        c.stall_to_ps = c.stall_from_ps + s_to_ps(s.faults.host_stall.length_s);
+    }
+    return c;
+}
+
 // The FPGA as the scenario asks: the event-driven blocks, or the Verilog in the loop running ahead to the time
 // before which the CP2102 cannot change rx.
 std::unique_ptr<fpga::Board> make_fpga(const FpgaUartSettings& f, std::uint64_t seed, const uart::Cp2102& cp2102) {
@@ -361,18 +420,25 @@ public:
           m_numerators(n),
           m_packet_count(packet_count),
           m_cp2102("cp2102", m_f.serial.link),
-          m_packets(s, job, m_numerators),
-          m_sender("host", m_f.serial.sender, m_cp2102, host::encode_init(m_numerators.x, m_numerators.y), m_packets),
+          m_packets(s, job, m_numerators, s.faults.any()),
+          m_sender("host", sender_config(s, m_f), m_cp2102, host::encode_init(m_numerators.x, m_numerators.y),
+                   m_packets),
           m_fpga(make_fpga(m_f, s.seed, m_cp2102)),
           m_moves(s.machine, s.interpreter.start_mm),
           // Every gap only for the detailed report and the plots (which keep the whole run anyway).
           m_dead_fold(s.detail || s.keep_run_input),
           m_warnings(m_f) {
-        m_cp2102.txd(m_wires.uart_rx);
-        m_cp2102.rxd(m_wires.uart_tx);
-        m_cp2102.thin_tx_log(host::kInitPacketBytes, host::kMotionPacketBytes);  // what the dead-time split reads
+        const std::size_t check_bytes = m_f.serial.sender.check.crc ? host::kCrcBytes : 0;
+        m_cp2102.thin_tx_log(host::kInitPacketBytes + check_bytes,  // what the dead-time split reads
+                             host::kMotionPacketBytes + check_bytes);
         m_fpga->rx(m_wires.uart_rx);
-        m_fpga->tx(m_wires.uart_tx);
+        m_cp2102.rxd(m_wires.uart_tx);
+        if (s.faults.uart.any()) {
+            wire_faulty_lines();
+        } else {
+            m_cp2102.txd(m_wires.uart_rx);
+            m_fpga->tx(m_wires.uart_tx);
+        }
         m_fpga->dir_x(pins.dir_x);
         m_fpga->step_x(pins.step_x);
         m_fpga->dir_y(pins.dir_y);
@@ -420,9 +486,10 @@ public:
         m_executed.time_ended(*m_fpga, now_ps, m_packets, m_moves,
                               [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
         feed->fold(now_ps);
-        m_dead_fold.fold(now_ps, false, *m_fpga, m_sender.packets(), m_cp2102);
+        if (split_dead_time()) m_dead_fold.fold(now_ps, false, *m_fpga, m_sender.packets(), m_cp2102);
         m_warnings.read(*m_fpga, m_packets.lines());
-        hand_over_read(m_executed, m_dead_fold, m_warnings, m_s.detail, *m_fpga, m_sender, m_cp2102, m_packets);
+        hand_over_read(m_executed, m_dead_fold, m_warnings, m_s.detail || m_s.faults.any(), *m_fpga, m_sender, m_cp2102,
+                       m_packets);
     }
 
     [[nodiscard]] TimePs job_end_ps(TimePs stop_ps) const override {
@@ -447,6 +514,24 @@ public:
     void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override;
 
 private:
+    // Each wire through its faults, drawn apart (line 0 to the FPGA, 1 from it) and timed by its sender's bit clock.
+    void wire_faulty_lines() {
+        const uart::LineFaultRates& rates = m_s.faults.uart;
+        m_to_fpga_line = std::make_unique<uart::FaultyLine>("to_fpga_line", rates, 0, m_cp2102.baud().bit_clock());
+        m_from_fpga_line = std::make_unique<uart::FaultyLine>(
+            "from_fpga_line", rates, 1, uart::BitClock{m_f.fpga.uart_full_bit_cycles, m_f.fpga.clk_hz});
+        m_cp2102.txd(m_wires.cp2102_txd);
+        m_to_fpga_line->in(m_wires.cp2102_txd);
+        m_to_fpga_line->out(m_wires.uart_rx);
+        m_fpga->tx(m_wires.fpga_tx);
+        m_from_fpga_line->in(m_wires.fpga_tx);
+        m_from_fpga_line->out(m_wires.uart_tx);
+    }
+    void report_faults(ArchRun& run, std::ostringstream& text) const;
+    // The split reads gap k between packets k and k+1 as each packet runs once: not so on a link with faults (a host
+    // stall keeps it so: its time shows as the host's).
+    [[nodiscard]] bool split_dead_time() const { return !m_s.faults.uart.any(); }
+
     const Scenario& m_s;
     const FpgaUartSettings& m_f;
     const Job& m_job;
@@ -461,13 +546,15 @@ private:
     DeadTimeFold m_dead_fold;
     ExecutedPieces m_executed;
     FpgaWarnings m_warnings;
+    std::unique_ptr<uart::FaultyLine> m_to_fpga_line;
+    std::unique_ptr<uart::FaultyLine> m_from_fpga_line;
     bool m_whole_logs = false;
 };
 
 void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) {
     const Scenario& s = m_s;
     const metrics::RunInput& in = run.input;
-    m_dead_fold.fold(in.t_job_end_ps, true, *m_fpga, m_sender.packets(), m_cp2102);
+    if (split_dead_time()) m_dead_fold.fold(in.t_job_end_ps, true, *m_fpga, m_sender.packets(), m_cp2102);
     const DeadTimeBreakdown dead = m_dead_fold.finish(in.t_job_start_ps, in.t_job_end_ps, m_cp2102);
     if (s.keep_run_input) run.gap_causes = gap_causes(dead);
 
@@ -504,7 +591,7 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
                      {"watchdog_resets", st.watchdog_resets},
                      {"acks_sent", st.acks_sent},
                      {"acks_dropped", st.acks_dropped}}},
-                   {"dead_time", to_json(dead, s.detail)}};
+                   {"dead_time", split_dead_time() ? to_json(dead, s.detail) : nlohmann::json(kDeadTimeNotSplit)}};
     if (s.detail) {  // one record per packet: they grow with the job
         nlohmann::json& sent = run.details["sender"]["packets"] = nlohmann::json::array();
         for (const host::SentPacket& p : m_sender.packets()) sent.push_back(sent_json(p));
@@ -518,14 +605,19 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
                         baud.error_pct, m_f.fpga.uart_full_bit_cycles)
          << "  packets sent " << m_sender.packets().size() << ", ACK timeouts " << m_sender.errors() << ", FPGA ACKs "
          << st.acks_sent << " (dropped " << st.acks_dropped << ")\n"
-         << summary_text(dead);
+         << (split_dead_time() ? summary_text(dead) : std::string("  ") + kDeadTimeNotSplit + "\n");
     for (const host::SenderMessage& m : m_sender.messages()) {
         text << fmt::format(FMT_STRING("  host at {:.6f} s: {}\n"), ps_to_s(m.t_ps), m.text);
     }
+    if (m_s.faults.any()) report_faults(run, text);
     run.details_text = text.str();
 
-    if (const std::optional<std::string> framing =
-            framing_failure(static_cast<std::int64_t>(st.framing_errors), "FPGA", m_cp2102.stats().framing_errors)) {
+    // Framing errors are what faults on the line make: reported above, not a failed run.
+    const std::optional<std::string> framing =
+        m_s.faults.uart.any()
+            ? std::nullopt
+            : framing_failure(static_cast<std::int64_t>(st.framing_errors), "FPGA", m_cp2102.stats().framing_errors);
+    if (framing) {
         run.ok = false;
         run.failure = *framing;
     } else if (m_sender.aborted()) {
@@ -536,6 +628,99 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
         run.ok = false;
         run.failure = "the job did not finish: " + time_limit_text(budget, end);
     }
+}
+
+nlohmann::json line_json(const uart::FaultyLineStats& l) {
+    return {{"frames", l.frames},
+            {"frames_hit", l.frames_hit},
+            {"frames_lost", l.frames_lost},
+            {"bits_inverted", l.bits_inverted}};
+}
+
+nlohmann::json fields_json(const fpga::MotionFields& f) {
+    return {{"motion", f.motion}, {"steps", {f.steps_x, f.steps_y}}, {"feed", f.feed}};
+}
+
+// Every packet sent against what step_gen ran (packet_faults.hpp), what detected the faults, and the steps they
+// left at the job's end.
+void FpgaUartController::report_faults(ArchRun& run, std::ostringstream& text) const {
+    std::vector<HostPacket> sent = m_packets.sent();
+    const auto& log = m_sender.packets();
+    sent.resize(std::min(sent.size(), log.size()));  // an aborted script sent fewer than it made
+    for (std::size_t k = 0; k < sent.size(); ++k) sent[k].t_write_ps = log[k].t_write_ps;
+    std::vector<FpgaPacket> received;
+    for (std::size_t k = 0; k < m_fpga->packet_count(); ++k) {
+        const fpga::PacketRecord r = m_fpga->packet(k);
+        received.push_back({r.t_pkt_valid_ps, r.accepted, {r.motion, r.steps_x, r.steps_y, r.feed}});
+    }
+    const PacketFaults f = packet_faults(sent, received);
+    const fpga::FpgaStats st = m_fpga->stats();
+    const uart::FaultyLineStats to = m_to_fpga_line ? m_to_fpga_line->stats() : uart::FaultyLineStats{};
+    const uart::FaultyLineStats from = m_from_fpga_line ? m_from_fpga_line->stats() : uart::FaultyLineStats{};
+    const HostStall& stall = m_s.faults.host_stall;
+    nlohmann::json silent = nlohmann::json::array();
+    for (const SilentCorruption& c : f.silent) {
+        silent.push_back({{"segment", c.segment},
+                          {"line", c.gcode_line},
+                          {"sent", fields_json(c.sent)},
+                          {"executed", fields_json(c.executed)},
+                          {"error_steps", c.error_steps}});
+    }
+    run.details["faults"] = {
+        {"seed", m_s.faults.uart.seed},
+        {"uart_ber", m_s.faults.uart.ber},
+        {"uart_frame_loss_rate", m_s.faults.uart.frame_loss_rate},
+        {"to_fpga", line_json(to)},
+        {"from_fpga", line_json(from)},
+        {"host_stall",
+         {{"at_s", stall.at_s}, {"length_s", stall.length_s}, {"host_held_up_s", ps_to_s(m_sender.stalled_ps())}}},
+        {"packets",
+         {{"sent", f.sent},
+          {"executed_as_sent", f.executed_as_sent},
+          {"silently_executed_wrong", f.executed_wrong},
+          {"lost", f.lost},
+          {"extra", f.extra},
+          {"ignored_while_busy", f.ignored}}},
+        {"detected",
+         {{"fpga_framing_errors", st.framing_errors},
+          {"watchdog_resets", st.watchdog_resets},
+          {"crc_errors", st.crc_errors},
+          {"host_ack_timeouts", m_sender.errors()},
+          {"host_framing_errors", m_cp2102.stats().framing_errors}}},
+        {"retransmitted", m_sender.resends()},
+        {"naks", {{"sent", st.naks_sent}, {"read", m_sender.naks()}}},
+        {"repeats_acked", st.repeats},
+        {"job_end_error_steps", f.job_end_error_steps},
+        {"silent", silent}};
+    text << fmt::format(FMT_STRING("faults (seed {}): UART BER {:g}, frames lost {:g}\n"), m_s.faults.uart.seed,
+                        m_s.faults.uart.ber, m_s.faults.uart.frame_loss_rate)
+         << fmt::format(FMT_STRING("  to the FPGA: {} of {} frames hit ({} lost, {} bits inverted); from it: {} of {} "
+                                   "({} lost, {} bits)\n"),
+                        to.frames_hit, to.frames, to.frames_lost, to.bits_inverted, from.frames_hit, from.frames,
+                        from.frames_lost, from.bits_inverted)
+         << fmt::format(
+                FMT_STRING("  packets: {} sent, {} run as sent, {} run wrong without a check noticing, {} lost, "
+                           "{} extra\n"),
+                f.sent, f.executed_as_sent, f.executed_wrong, f.lost, f.extra)
+         << fmt::format(FMT_STRING("  detected: {} framing errors, {} watchdog resets and {} bad CRCs at the FPGA, {} "
+                                   "ACK timeouts at the host; sent again: {}\n"),
+                        st.framing_errors, st.watchdog_resets, st.crc_errors, m_sender.errors(), m_sender.resends())
+         << fmt::format(FMT_STRING("  steps off at the job's end: X {:+d}, Y {:+d}\n"), f.job_end_error_steps[0],
+                        f.job_end_error_steps[1]);
+    if (stall.any()) {
+        text << fmt::format(FMT_STRING("  host stall of {:.3f} s at {:.3f} s: held the script up {:.3f} s\n"),
+                            stall.length_s, stall.at_s, ps_to_s(m_sender.stalled_ps()));
+    }
+    constexpr std::size_t kListed = 20;  // the report's faults.silent has them all
+    for (std::size_t k = 0; k < std::min(f.silent.size(), kListed); ++k) {
+        const SilentCorruption& c = f.silent[k];
+        text << fmt::format(FMT_STRING("  segment {}{}: sent {} {} {} F{}, ran {} {} {} F{}: X {:+d}, Y {:+d} steps\n"),
+                            c.segment, c.gcode_line > 0 ? " (line " + std::to_string(c.gcode_line) + ")" : "",
+                            c.sent.motion, c.sent.steps_x, c.sent.steps_y, c.sent.feed, c.executed.motion,
+                            c.executed.steps_x, c.executed.steps_y, c.executed.feed, c.error_steps[0],
+                            c.error_steps[1]);
+    }
+    if (f.silent.size() > kListed) text << "  ... and " << f.silent.size() - kListed << " more\n";
 }
 
 }  // namespace

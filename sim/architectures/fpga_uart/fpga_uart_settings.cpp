@@ -74,6 +74,28 @@ void read_fpga(KeyReader& r, fpga::FpgaConfig& cfg) {
     check_fpga(r, cfg);
 }
 
+// Our option on seed 000 §7.2's "checksum or CRC field in packets": the frames are in host/core/packet_codec.hpp.
+void read_packet_check(KeyReader& r, FpgaUartSettings& s) {
+    host::PacketCheckConfig& c = s.serial.sender.check;
+    c.crc = r.get_choice("protocol.crc", "none", {"none", "crc16"},
+                         "packet check (seed 000 sec. 7.2 proposes one): none, the seed's packets; crc16, each packet "
+                         "followed by its CRC-16/CCITT-FALSE and a motion packet's first byte carrying an alternating "
+                         "sequence bit, the FPGA answering a bad CRC with NAK 0x55 and a repeated move with its ACK, "
+                         "the host sending a packet again after a NAK or a timeout") == "crc16";
+    c.retries = static_cast<int>(r.get_int("protocol.retries", c.retries, 0, 1000,
+                                           "with protocol.crc: sends of a packet after its first before the ACK "
+                                           "timeout counts as the seed's (host.on_timeout)"));
+    c.retry_delay_ps = s_to_ps(1e-3 * r.get_float("protocol.retry_delay_ms", ps_to_s(c.retry_delay_ps) * 1e3, 0.0, 1e5,
+                                                  "with protocol.crc: wait before a packet is sent again, ms (above "
+                                                  "fpga.watchdog_ms, so that the FPGA has dropped a partial packet)"));
+    s.fpga.packet_crc = c.crc;
+    if (c.crc && s.rtl.rtl) {
+        r.fail("protocol.crc",
+               "\"crc16\" is built in the event-driven FPGA only: with fpga.model = \"rtl\" use "
+               "\"none\"");
+    }
+}
+
 }  // namespace
 
 // seed 000 §5.1.1: the DE1-SoC's CLOCK_50.
@@ -88,6 +110,7 @@ void read_fpga_uart_settings(KeyReader& r, const std::filesystem::path& base, Fp
     read_fpga(r, s.fpga);
     read_oscillator_settings(r, kDe1SocClock50, s.fpga.clk_hz, s.clock);
     read_rtl_settings(r, base, "fpga", s.rtl);
+    read_packet_check(r, s);
 }
 
 }  // namespace cnc::sim

@@ -1,0 +1,28 @@
+// Scenario keys of the faults put on a run's links ([faults]): seeded, reproducible disturbances that an
+// architecture applies to the links it has (Architecture::fault_links); a fault asked of a link the chosen
+// architecture lacks is refused.
+#pragma once
+#include "scenario/key_reader.hpp"
+#include "uart/core/line_faults.hpp"
+
+namespace cnc::sim {
+
+// The host program held up once: from at_s for length_s of simulated time it neither writes nor reads its port.
+struct HostStall {
+    double at_s = 0.0;
+    double length_s = 0.0;  // 0: none
+
+    [[nodiscard]] bool any() const { return length_s > 0.0; }
+};
+
+struct FaultSettings {
+    uart::LineFaultRates uart;  // on both wires of a UART link
+    HostStall host_stall;
+
+    [[nodiscard]] bool any() const { return uart.any() || host_stall.any(); }
+};
+
+// `scenario_seed` is the default of faults.seed.
+void read_fault_settings(KeyReader& r, std::uint64_t scenario_seed, FaultSettings& s);
+
+}  // namespace cnc::sim

@@ -1,0 +1,85 @@
+// A CP2102 sends bytes through a FaultyLine to its own receiver: what arrives is what the draw says, bit by bit.
+// The receiver is the CP2102's line decoder (samples at mid-bit), not the fault model, so a window of inversion
+// placed off its bit would show as another byte.
+#define SC_INCLUDE_DYNAMIC_PROCESSES
+#include <gtest/gtest.h>
+
+#include <systemc>
+#include <vector>
+
+#include "uart/cp2102.hpp"
+#include "uart/faulty_line.hpp"
+
+using cnc::TimePs;
+using namespace cnc::uart;
+
+namespace {
+
+constexpr int kFrameBits = 10;  // 8N1
+constexpr std::uint32_t kStartBit = 1U;
+constexpr std::uint32_t kStopBit = 1U << 9U;
+
+sc_core::sc_time at(TimePs t) {
+    return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t));
+}
+
+}  // namespace
+
+TEST(FaultyLine, EachFrameArrivesAsItsDrawSays) {
+    const LineFaultRates rates{0.02, 0.02, 5};
+    sc_core::sc_signal<bool> sent("sent", true), seen("seen", true);
+    Cp2102 cp("cp", Cp2102Config{});
+    FaultyLine line("line", rates, 3, cp.baud().bit_clock());
+    cp.txd(sent);
+    line.in(sent);
+    line.out(seen);
+    cp.rxd(seen);
+    constexpr int kBytes = 2000;
+    // One byte per USB frame: idle between frames, so a misframed byte cannot run into the next.
+    sc_core::sc_spawn([&] {
+        for (int k = 0; k < kBytes; ++k) {
+            const auto b = static_cast<std::uint8_t>(k * 37 + 11);
+            cp.usb_write(&b, 1);
+            sc_core::wait(at(cnc::kPsPerMs));
+        }
+    });
+    sc_core::sc_start(at((kBytes + 5) * cnc::kPsPerMs));
+
+    const LineFaultDraw draw(rates, 3);
+    ASSERT_EQ(cp.tx_log().size(), static_cast<std::size_t>(kBytes));
+    EXPECT_EQ(line.stats().frames, static_cast<std::uint64_t>(kBytes));
+    std::size_t r = cp.rx_log().first();
+    int clean = 0, changed = 0, framing = 0, lost = 0;
+    for (int k = 0; k < kBytes; ++k) {
+        const auto& tx = cp.tx_log()[static_cast<std::size_t>(k)];
+        const FrameFault f = draw.frame(static_cast<std::uint64_t>(k), kFrameBits);
+        // The receiver's frames that start within this byte's millisecond.
+        std::vector<Cp2102::RxByte> got;
+        for (; r < cp.rx_log().size() && cp.rx_log()[r].t_start_bit_ps < tx.t_start_bit_ps + cnc::kPsPerMs; ++r) {
+            got.push_back(cp.rx_log()[r]);
+        }
+        if (f.lost) {
+            EXPECT_TRUE(got.empty()) << "frame " << k;
+            ++lost;
+            continue;
+        }
+        if ((f.inverted_bits & kStartBit) != 0) continue;  // no start edge there: the receiver starts later, or not
+        ASSERT_EQ(got.size(), 1U) << "frame " << k;
+        EXPECT_EQ(got[0].t_start_bit_ps, tx.t_start_bit_ps) << "frame " << k;
+        if ((f.inverted_bits & kStopBit) != 0) {
+            EXPECT_TRUE(got[0].framing_error) << "frame " << k;
+            ++framing;
+            continue;
+        }
+        EXPECT_FALSE(got[0].framing_error) << "frame " << k;
+        const auto data_mask = static_cast<std::uint8_t>((f.inverted_bits >> 1U) & 0xFFU);
+        EXPECT_EQ(got[0].byte, static_cast<std::uint8_t>(tx.byte ^ data_mask)) << "frame " << k;
+        (data_mask != 0 ? changed : clean)++;
+    }
+    // Every kind of fate came up (about 2 % lost, 2 % of frames with a stop bit hit, 16 % with a data bit).
+    EXPECT_GT(lost, 10);
+    EXPECT_GT(framing, 10);
+    EXPECT_GT(changed, 100);
+    EXPECT_GT(clean, 1000);
+    EXPECT_EQ(line.stats().frames_lost, static_cast<std::uint64_t>(lost));
+}

@@ -66,15 +66,20 @@ void fpga_uart_cam(const Program& program, const MachineModel& machine) {
     }
 }
 
+// Every avr.variant: the rounded words and Timer1's 16-bit word take other paths through the planner.
 void atmega_pc_program(const Program& program, const MachineModel& machine) {
-    cad2g::Plan plan;
-    try {
-        plan = cad2g::plan_program(program, machine, cad2g::PcOptions{});
-    } catch (const cnc::BadInput&) {
-        return;
+    for (const cad2g::Variant variant : {cad2g::Variant::Seed, cad2g::Variant::Rounded, cad2g::Variant::Timer1Y}) {
+        cad2g::PcOptions opt;
+        opt.variant = variant;
+        cad2g::Plan plan;
+        try {
+            plan = cad2g::plan_program(program, machine, opt);
+        } catch (const cnc::BadInput&) {
+            return;
+        }
+        (void)cad2g::transfers(plan);
+        (void)cad2g::motion_segments(plan, machine);
     }
-    (void)cad2g::transfers(plan);
-    (void)cad2g::motion_segments(plan, machine);
 }
 
 bool same_sample(const planner::Sample& a, const planner::Sample& b) {

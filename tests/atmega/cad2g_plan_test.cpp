@@ -40,7 +40,7 @@ bool contains(const std::string& s, const std::string& part) {
 TEST(Cad2gSpeed, ThesisExampleN1024) {
     const cad2g::Ocr o = cad2g::ocr_for_speed(10.45, kMmPerStep);
     EXPECT_NEAR(o.exact, 3.6725, 1e-4);  // the thesis prints 3.67
-    EXPECT_EQ(o.truncated, 3);
+    EXPECT_EQ(o.integer, 3);
     EXPECT_EQ(o.value, 3);
     EXPECT_FALSE(o.too_fast || o.too_slow);
     EXPECT_EQ(cad2g::step_period_cycles(3), 8192);  // 2 x 1024 x 4: 512 us
@@ -54,7 +54,7 @@ TEST(Cad2gSpeed, ThesisExampleN1024) {
 TEST(Cad2gSpeed, ThesisExampleN1NeedsThirteenBits) {
     const cad2g::Ocr o = cad2g::ocr_for_speed(10.45, kMmPerStep, {16e6, 1});
     EXPECT_NEAR(o.exact, 4783.69, 0.01);
-    EXPECT_EQ(o.truncated, 4783);
+    EXPECT_EQ(o.integer, 4783);
     EXPECT_TRUE(o.too_slow);
     EXPECT_EQ(o.value, 255);
 }

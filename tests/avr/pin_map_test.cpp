@@ -25,6 +25,16 @@ TEST(AvrPinMap, DefaultIsSeed003) {
     EXPECT_EQ(m.pins.size(), 7U);
 }
 
+// Seed 003 §5.6's board (avr.variant = "timer1-y"): STEP_Y on OC1A (PB1), the head on OC2A's pin (PB3); entries
+// override it as they override the seed's.
+TEST(AvrPinMap, TimerOneYMovesStepYAndTheHead) {
+    const PinMap m = timer1_y_pin_map();
+    EXPECT_EQ(m.to_string(), "step_x=PD6,dir_x=PB0,en_x=PB2,step_y=PB1,dir_y=PB5,en_y=PB4,head=PB3");
+    validate(m, "t");
+    EXPECT_EQ(parse_pin_map("head=PC0", "w", timer1_y_pin_map()).to_string(),
+              "step_x=PD6,dir_x=PB0,en_x=PB2,step_y=PB1,dir_y=PB5,en_y=PB4,head=PC0");
+}
+
 TEST(AvrPinMap, ParsesPinNames) {
     EXPECT_EQ(parse_pin("PD6", ""), (Pin{'D', 6}));
     EXPECT_EQ(parse_pin(" pb3 ", ""), (Pin{'B', 3}));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <set>
+#include <utility>
 
 #include "common/bad_input.hpp"
 
@@ -64,8 +65,19 @@ PinMap default_pin_map() {
     return m;
 }
 
-PinMap parse_pin_map(std::string_view text, const std::string& where) {
+PinMap timer1_y_pin_map() {
     PinMap m = default_pin_map();
+    m.pins["step_y"] = {'B', 1};
+    m.pins["head"] = {'B', 3};
+    return m;
+}
+
+PinMap parse_pin_map(std::string_view text, const std::string& where) {
+    return parse_pin_map(text, where, default_pin_map());
+}
+
+PinMap parse_pin_map(std::string_view text, const std::string& where, PinMap defaults) {
+    PinMap m = std::move(defaults);
     std::set<std::string> named;
     std::string_view rest = text;
     while (!trim(rest).empty()) {

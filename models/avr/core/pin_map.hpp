@@ -39,11 +39,17 @@ struct PinMap {
 // EN_Y PB4 (active low), head PB1 (OC1A, the servo / "HEADER" bit).
 [[nodiscard]] PinMap default_pin_map();
 
+// Seed 003 §5.6's proposed board (avr.variant = "timer1-y"): STEP_Y on PB1 (OC1A, Timer1), the head on PB3
+// (OC2A's pin, Timer2's), the rest as default_pin_map().
+[[nodiscard]] PinMap timer1_y_pin_map();
+
 // Checks a map built in code: all seven signals, each on an existing pin, no pin twice. Throws BadInput.
 void validate(const PinMap& map, const std::string& where);
 
 // Overrides the default map with "signal=pin" entries separated by commas. Unknown signals, bad pins, a signal
 // named twice or two signals on one pin throw BadInput(where, ...).
 [[nodiscard]] PinMap parse_pin_map(std::string_view text, const std::string& where);
+// The same over another default map (timer1_y_pin_map()).
+[[nodiscard]] PinMap parse_pin_map(std::string_view text, const std::string& where, PinMap defaults);
 
 }  // namespace cnc::avr

@@ -44,13 +44,16 @@ struct Wires {
 
 std::string firmware_path(const AtmegaSettings& a) {
     if (!a.firmware.empty()) return a.firmware;
+    if (a.pc.variant == cad2g::Variant::Timer1Y) return CNC_LASER_ENGRAVER_TIMER1_Y_ELF;
     return a.g01_timer2_prescaler == 256 ? CNC_LASER_ENGRAVER_T2CS110_ELF : CNC_LASER_ENGRAVER_ELF;
 }
 
 avr::AvrCoreConfig avr_config(const Scenario& s, const AtmegaSettings& a) {
     avr::AvrCoreConfig cfg;
     cfg.firmware_elf = firmware_path(a);
-    cfg.pins = avr::parse_pin_map(a.pins, s.file + ": avr.pins");
+    cfg.pins =
+        avr::parse_pin_map(a.pins, s.file + ": avr.pins",
+                           a.pc.variant == cad2g::Variant::Timer1Y ? avr::timer1_y_pin_map() : avr::default_pin_map());
     cfg.where = s.file + ": avr.firmware";
     cfg.quantum_cycles = a.quantum_cycles;
     cfg.clock = clock_deviation(a.clock, s.seed);
@@ -89,7 +92,8 @@ std::vector<std::size_t> transfer_moves(const cad2g::Plan& plan, const std::vect
 
 // This architecture's side of the job estimate. An axis steps at most at OCR = 0, f / 2N (48.8 mm/s at 160 steps/mm):
 // a faster feed runs at that rate. (The truncated OCR otherwise only makes moves faster: OCR + 1 <= f / (2 N
-// v/s).) CAD2G settles, then writes every byte after the confirm of the one before: per byte the write latency,
+// v/s); a rounded one, avr.variant, at most 4/3 slower, at an exact OCR of 0.5, within the limit's factor of 2.)
+// CAD2G settles, then writes every byte after the confirm of the one before: per byte the write latency,
 // a USB frame out, the byte and its confirm on the line, a frame in and the driver latency; per transfer the
 // PC's work. The chords of an arc overlap the previous chord's motion, so this counts them twice: an upper bound.
 ArchPace pace(const Scenario& s, const AtmegaSettings& a, const uart::Cp2102Config& link,
@@ -98,8 +102,9 @@ ArchPace pace(const Scenario& s, const AtmegaSettings& a, const uart::Cp2102Conf
     // The PC program also holds every speed to the machine's velocity limits.
     p.max_speed_x_mm_per_s = std::min(cad2g::speed_mm_per_s(0, s.machine.x.mm_per_step(), a.pc.timer),
                                       s.machine.x.limits.max_velocity_mm_per_s);
-    p.max_speed_y_mm_per_s = std::min(cad2g::speed_mm_per_s(0, s.machine.y.mm_per_step(), a.pc.timer),
-                                      s.machine.y.limits.max_velocity_mm_per_s);
+    p.max_speed_y_mm_per_s =
+        std::min(cad2g::speed_mm_per_s(0, s.machine.y.mm_per_step(), cad2g::y_timer(a.pc.variant, a.pc.timer)),
+                 s.machine.y.limits.max_velocity_mm_per_s);
     p.startup_s = ps_to_s(a.serial.sender.settle_ps);
     const double byte_s = ps_to_s(host::byte_round_trip_ps(a.serial.sender, link));
     for (const cad2g::Transfer& t : transfers) {
@@ -122,7 +127,7 @@ host::ConfirmTimeouts confirm_timeouts(const AtmegaSettings& a, const uart::Cp21
                                        const std::vector<cad2g::Transfer>& transfers) {
     host::ConfirmTimeouts t;
     t.round_trip_ps = host::byte_round_trip_ps(a.serial.sender, link);
-    for (const double busy_s : cad2g::motion_before_next_confirm_s(plan, transfers, a.pc.timer)) {
+    for (const double busy_s : cad2g::motion_before_next_confirm_s(plan, transfers)) {
         t.motion_after_ps.push_back(s_to_ps(busy_s));
     }
     return t;
@@ -169,7 +174,7 @@ public:
         m_mcu.step_y(pins.step_y);
         m_mcu.dir_y(pins.dir_y);
         m_mcu.en_y(pins.n_enbl_y);
-        m_mcu.head(pins.laser);  // PB1, the HEADER bit of the start byte
+        m_mcu.head(pins.laser);  // the HEADER bit of the start byte: PB1 (timer1-y: PB3)
         m_mcu.txd(m_wires.uart_tx);
         m_mcu.rxd(m_wires.uart_rx);
     }
@@ -260,7 +265,8 @@ private:
             metrics::MoveSpec m = m_commanded[m_handed];
             if (is_unstepped(m)) {
                 if (m_window == windows.size() && !final) return;
-                place_unstepped(m, m_window < windows.size() ? std::optional(windows[m_window].t_begin_ps) : std::nullopt,
+                place_unstepped(m,
+                                m_window < windows.size() ? std::optional(windows[m_window].t_begin_ps) : std::nullopt,
                                 m_last_end_ps);
                 f(std::move(m));
                 continue;
@@ -288,9 +294,9 @@ private:
     const std::vector<metrics::MoveSpec> m_commanded;
     std::optional<AtmegaPins> m_pins;  // once the recorder watches the pins
     ChordGapFold m_chord_gaps;
-    std::size_t m_handed = 0;    // commanded moves handed to the metrics
-    std::size_t m_window = 0;    // motion windows handed to the metrics
-    TimePs m_last_end_ps = 0;    // the end of the last window handed
+    std::size_t m_handed = 0;  // commanded moves handed to the metrics
+    std::size_t m_window = 0;  // motion windows handed to the metrics
+    TimePs m_last_end_ps = 0;  // the end of the last window handed
     TimePs m_stop_ps = 0;
     bool m_whole_logs = false;
 };

@@ -36,7 +36,6 @@ std::string id_name(cad2g::CommandId id) {
 }
 
 nlohmann::json motion_json(const AtmegaFacts& f, cad2g::CommandId id, const cad2g::Motion& m, const MotionWindow* w) {
-    const cad2g::TimerClock clk;
     nlohmann::json j = {{"line", m.line},
                         {"steps", {m.steps_x, m.steps_y}},
                         {"count_x", m.count_x},
@@ -45,11 +44,12 @@ nlohmann::json motion_json(const AtmegaFacts& f, cad2g::CommandId id, const cad2
                         {"portb", hex(m.portb)},
                         {"speed_asked_mm_per_s", {m.speed_x_mm_per_s, m.speed_y_mm_per_s}},
                         {"speed_of_words_mm_per_s",
-                         {cad2g::speed_mm_per_s(m.ocr_x.value, f.machine.x.mm_per_step(), clk),
-                          cad2g::speed_mm_per_s(m.ocr_y.value, f.machine.y.mm_per_step(), clk)}},
+                         {cad2g::speed_mm_per_s(m.ocr_x.value, f.machine.x.mm_per_step(), f.plan.timer_x),
+                          cad2g::speed_mm_per_s(m.ocr_y.value, f.machine.y.mm_per_step(), f.plan.timer_y)}},
                         {"x_timebase", m.x_timebase},
                         {"wrapped", m.wrapped}};
     if (id == cad2g::CommandId::G00) j["count_y"] = m.count_y;
+    if (m.y_counted) j["y_counted"] = true;  // timer1-y only: the seed's reports stay as they were
     if (m.chord >= 0) j["chord"] = m.chord;
     if (w != nullptr) {
         j["t_begin_s"] = ps_to_s(w->t_begin_ps);
@@ -70,8 +70,9 @@ nlohmann::json commands_json(const AtmegaFacts& f) {
             const auto w = window_of.find({c, m});
             motions.push_back(motion_json(f, cmd.id, cmd.motions[m], w == window_of.end() ? nullptr : w->second));
         }
-        commands.push_back(
-            {{"id", id_name(cmd.id)}, {"bytes", cad2g::command_bytes(cmd).size()}, {"motions", motions}});
+        commands.push_back({{"id", id_name(cmd.id)},
+                            {"bytes", cad2g::command_bytes(cmd, f.plan.variant).size()},
+                            {"motions", motions}});
     }
     return commands;
 }
@@ -129,6 +130,8 @@ nlohmann::json details_json(const AtmegaFacts& f, bool detail) {
          {{"late", gaps.late},
           {"wait_max_ms", static_cast<double>(gaps.wait_max_ps) / static_cast<double>(kPsPerMs)},
           {"y_steps_waiting", gaps.y_steps_waiting}}}};
+    // The seed's reports stay as they were; a variant names itself.
+    if (f.plan.variant != cad2g::Variant::Seed) j["variant"] = cad2g::variant_name(f.plan.variant);
     if (detail) j["commands"] = commands_json(f);  // one record per command and chord: they grow with the job
     return j;
 }
@@ -144,8 +147,11 @@ std::string details_text(const AtmegaFacts& f) {
         n.second += c.motions.size();
     }
     std::ostringstream t;
-    t << "atmega link and host\n"
-      << fmt::format(FMT_STRING("  line {:.2f} Bd ({:+.3f} % vs requested), MCU USART {:.1f} Bd: {:+.3f} % against "
+    t << "atmega link and host\n";
+    if (f.plan.variant != cad2g::Variant::Seed) {
+        t << "  avr.variant " << cad2g::variant_name(f.plan.variant) << " (seed 003 §5.6)\n";
+    }
+    t << fmt::format(FMT_STRING("  line {:.2f} Bd ({:+.3f} % vs requested), MCU USART {:.1f} Bd: {:+.3f} % against "
                                 "the line\n"),
                      baud.actual_bd, baud.error_pct, f.mcu_baud, (f.mcu_baud / baud.actual_bd - 1.0) * 100.0)
       << "  PC wrote " << f.pc.writes().size() << " bytes, one per confirm"

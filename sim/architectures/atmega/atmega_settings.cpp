@@ -8,15 +8,32 @@ constexpr OscillatorPart kUnoResonator{
     5000.0, "Murata CERALOCK catalogue: initial tolerance +-0.5 %",
     10.0,   "no resonator data sheet gives it: our estimate, a few times a crystal oscillator's"};
 
+namespace {
+
+host::cad2g::Variant read_variant(KeyReader& r) {
+    using host::cad2g::Variant;
+    const std::string v = r.get_choice(
+        "avr.variant", "seed", {"seed", "rounded", "timer1-y"},
+        "atmega: seed 003 §5.6's proposals: seed (OCRs truncated), rounded (OCR0A rounded, v_y = (dy/dx) v_x of it, "
+        "OCR2A rounded: the PC program only), timer1-y (rounded, Y on Timer1 at N = 1 with a 16-bit OCR1A on PB1, "
+        "the head on PB3: its own firmware build, protocol and default avr.pins)");
+    return v == "seed" ? Variant::Seed : v == "rounded" ? Variant::Rounded : Variant::Timer1Y;
+}
+
+}  // namespace
+
 void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem::path& base) {
     read_serial_host_settings(r, s.serial);
     const std::string fw = r.get_string(
         "avr.firmware", "",
-        "atmega: ATmega328P firmware ELF, relative to the scenario; empty: the seed 003 firmware of this build");
+        "atmega: ATmega328P firmware ELF, relative to the scenario; empty: the seed 003 firmware of this build for "
+        "avr.variant");
     s.firmware = fw.empty() ? std::string() : (base / fw).lexically_normal().string();
+    s.pc.variant = read_variant(r);
     s.pins = r.get_string("avr.pins", "",
                           "atmega: pins of the machine signals, \"step_x=PD6, dir_x=PB0, en_x=PB2, step_y=PB3, "
-                          "dir_y=PB5, en_y=PB4, head=PB1\" (seed 003 §5.2.5); entries left out keep these");
+                          "dir_y=PB5, en_y=PB4, head=PB1\" (seed 003 §5.2.5; avr.variant = \"timer1-y\": step_y=PB1, "
+                          "head=PB3); entries left out keep these");
     s.quantum_cycles = static_cast<std::uint32_t>(
         r.get_int("avr.quantum_cycles", s.quantum_cycles, 1, 1'000'000,
                   "atmega: AVR cycles run ahead of SystemC time between replays of its pin changes (speed only: "
@@ -27,6 +44,11 @@ void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem
                   "(App. A3's TCCR2B = 0b110 as listed: Y runs 4x fast)"));
     if (s.g01_timer2_prescaler != 1024 && s.g01_timer2_prescaler != 256) {
         r.fail("atmega.g01_timer2_prescaler", std::to_string(s.g01_timer2_prescaler) + " is not 1024 or 256");
+    }
+    if (s.g01_timer2_prescaler == 256 && s.pc.variant == host::cad2g::Variant::Timer1Y) {
+        r.fail("atmega.g01_timer2_prescaler",
+               "256 picks the seed firmware's G01 on Timer2; avr.variant = \"timer1-y\" "
+               "runs Y on Timer1");
     }
     s.pc.arc_step_deg = r.get_float("atmega.arc_step_deg", s.pc.arc_step_deg, 0.01, 90.0,
                                     "atmega: largest angle of an arc chord, degrees (seed 003 §5.4.3 stepangle, "

@@ -16,13 +16,15 @@ namespace cnc::sim {
 
 struct AtmegaSettings final : ArchSettings {
     SerialHostSettings serial;
-    std::string firmware;  // avr.firmware resolved against the scenario's folder; empty: the built seed 003 ELF
-    std::string pins;      // avr.pins, "signal=pin, ..."; empty: seed 003's pin map
+    // avr.firmware resolved against the scenario's folder; empty: the built seed 003 ELF of avr.variant (pc.variant).
+    // A firmware named with a variant runs with that variant's protocol and pin map.
+    std::string firmware;
+    std::string pins;  // avr.pins, "signal=pin, ..."; empty: the pin map of avr.variant (seed 003's, or timer1-y's)
     // avr.quantum_cycles. 1600 (100 us), not AvrCoreConfig's 160: the outputs are exact at any value and the only
     // input, RXD, is decoded exactly, so a longer quantum costs nothing here; it runs the square job 25 % faster.
     std::uint32_t quantum_cycles = 1600;
     int g01_timer2_prescaler = 1024;  // which built seed 003 ELF: 1024, or 256 (App. A3's CS = 110 as listed)
-    host::cad2g::PcOptions pc;
+    host::cad2g::PcOptions pc;        // with avr.variant
     // link.baud set by the scenario: otherwise the PC program asks for 57600 (seed 003 §5.3.2 CBR_57600), not the
     // Cp2102Config default of seed 000.
     bool link_baud_set = false;

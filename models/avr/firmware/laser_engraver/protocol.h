@@ -13,6 +13,13 @@
  *   G03  03 | chord... | terminator               terminator: a chord whose PORTB has both EN bits high
  *   M30  3B                                       head off, sleep
  * 16-bit counts go low byte first (STEPL before STEPH; the AVR is little-endian).
+ *
+ * The timer1-y build (LASER_ENGRAVER_TIMER1_Y, seed 003 §5.6 "move Y to Timer1"): Y's speed word is OCR1A, 16 bits,
+ * sent low byte first like the counts, so each speed field for Y is one byte longer:
+ *   G00  00 | XL XH | YL YH | OCR0A | OCR1AL OCR1AH | PORTB      9 bytes: X at v_max on Timer0, Y on Timer1
+ *   G01  01 | XL XH | OCR0A | OCR1AL OCR1AH | PORTB              7 bytes
+ *   chord   DXL OCR0A OCR1AL OCR1AH PORTB; terminator 00 FF FF FF PORTB
+ * and STEP_Y moves to OC1A (PB1), the head to OC2A's pin (PB3): the two swap bits in the start byte.
  */
 #pragma once
 
@@ -36,4 +43,11 @@ enum {
     LASER_ENGRAVER_PB_EN_Y = 4,
     LASER_ENGRAVER_PB_DIR_Y = 5,
     LASER_ENGRAVER_PORTB_INPUTS = 0xC0 /* PB7, PB6 written '1' as in the seed's port table */
+};
+
+/* The timer1-y build's start byte: PB1 is OC1A (STEP_Y on Timer1, data sheet §14.3.1 "OC1A/PCINT1 - Port B,
+ * Bit 1"), PB3 is OC2A's pin, where seed 003 §5.6 moves the head. */
+enum {
+    LASER_ENGRAVER_T1Y_PB_STEP_Y = 1,
+    LASER_ENGRAVER_T1Y_PB_HEADER = 3
 };

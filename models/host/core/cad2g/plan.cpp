@@ -74,7 +74,15 @@ struct Clamps {
 class Planner {
 public:
     Planner(const Program& program, const MachineModel& machine, const PcOptions& opt)
-        : m_program(program), m_machine(machine), m_opt(opt) {}
+        : m_program(program),
+          m_machine(machine),
+          m_opt(opt),
+          m_timer_y(y_timer(opt.variant, opt.timer)),
+          m_rounding(rounding(opt.variant)) {
+        m_plan.variant = opt.variant;
+        m_plan.timer_x = opt.timer;
+        m_plan.timer_y = m_timer_y;
+    }
 
     Plan run() {
         if (!m_program.moves.empty()) m_cur = grid(m_program.moves.front().path.start, m_program.moves.front());
@@ -111,7 +119,7 @@ private:
     }
 
     // G01 and chords (eqs. 4.74-4.77): v_x = |dx| / dz v0, v_y = |dy| / dz v0, only X counted.
-    [[nodiscard]] Motion feed_motion(std::int64_t sx, std::int64_t sy, const ProgrammedMove& move) const {
+    [[nodiscard]] Motion feed_motion(std::int64_t sx, std::int64_t sy, const ProgrammedMove& move, bool chord) const {
         Motion m;
         m.steps_x = sx;
         m.steps_y = sy;
@@ -122,20 +130,45 @@ private:
         const double v0 = feed_within_axis_limits(dx_mm, dy_mm, move.feed_mm_per_min, m_machine) / 60.0;
         m.speed_x_mm_per_s = std::fabs(dx_mm) / dz_mm * v0;
         m.speed_y_mm_per_s = std::fabs(dy_mm) / dz_mm * v0;
-        m.ocr_y = ocr_for_speed(m.speed_y_mm_per_s, m_machine.y.mm_per_step(), m_opt.timer);
         if (sx == 0) {
-            m.x_timebase = true;  // seed 003 §5.4.2 note 1: stepx = stepy and v_x = v_y, X disabled
-            m.ocr_x = m.ocr_y;
+            zero_dx_words(m, chord);
             m.count_x = count(sy, m.wrapped);
         } else {
-            m.ocr_x = ocr_for_speed(m.speed_x_mm_per_s, m_machine.x.mm_per_step(), m_opt.timer);
+            m.ocr_x = ocr_for_speed(m.speed_x_mm_per_s, m_machine.x.mm_per_step(), m_opt.timer, m_rounding);
+            if (m_opt.variant != Variant::Seed) {
+                // Seed 003 §5.6 improvement 2: Y follows the speed X's rounded word gives, so the ratio holds.
+                const double v_x = speed_mm_per_s(m.ocr_x.value, m_machine.x.mm_per_step(), m_opt.timer);
+                m.speed_y_mm_per_s = std::fabs(dy_mm) / std::fabs(dx_mm) * v_x;
+            }
+            m.ocr_y = ocr_for_speed(m.speed_y_mm_per_s, m_machine.y.mm_per_step(), m_timer_y, m_rounding);
             m.count_x = count(sx, m.wrapped);
         }
-        m.portb = start_byte(sx, sx != 0, sy, sy != 0, true);
+        m.portb = start_byte(sx, sx != 0, sy, sy != 0, true, m_opt.variant);
         return m;
     }
 
-    // G00 (eq. 4.73): both axes at v_max with one OCR (for X's microstep), both counted.
+    // dx = 0: the seed's workaround (§5.4.2 note 1), stepx = stepy and v_x = v_y, X disabled and its timer the
+    // timebase; in timer1-y a G01 counts Y's own timer instead, and a chord keeps the timebase with Y in step.
+    void zero_dx_words(Motion& m, bool chord) const {
+        const double s_y = m_machine.y.mm_per_step();
+        if (m_opt.variant != Variant::Timer1Y) {
+            m.x_timebase = true;
+            m.ocr_y = ocr_for_speed(m.speed_y_mm_per_s, s_y, m_timer_y, m_rounding);
+            m.ocr_x = m.ocr_y;
+            return;
+        }
+        m.ocr_x = ocr_for_speed(m.speed_y_mm_per_s, s_y, m_opt.timer, m_rounding);
+        if (!chord) {
+            m.y_counted = true;
+            m.ocr_y = ocr_for_speed(m.speed_y_mm_per_s, s_y, m_timer_y, m_rounding);
+            return;
+        }
+        m.x_timebase = true;
+        // One Timer0 period in Timer1 ticks: 2 N0 (OCR0A + 1) = 2 N1 (OCR1A + 1).
+        m.ocr_y = ocr_for_speed(speed_mm_per_s(m.ocr_x.value, s_y, m_opt.timer), s_y, m_timer_y, m_rounding);
+    }
+
+    // G00 (eq. 4.73): both axes at v_max with one OCR (for X's microstep), both counted; timer1-y sends Y's own word.
     [[nodiscard]] Motion rapid_motion(std::int64_t sx, std::int64_t sy, const ProgrammedMove& move) const {
         Motion m;
         m.steps_x = sx;
@@ -145,10 +178,15 @@ private:
         m.speed_x_mm_per_s = m.speed_y_mm_per_s =
             std::min({move.feed_mm_per_min / 60.0, m_machine.x.limits.max_velocity_mm_per_s,
                       m_machine.y.limits.max_velocity_mm_per_s});
-        m.ocr_x = m.ocr_y = ocr_for_speed(m.speed_x_mm_per_s, m_machine.x.mm_per_step(), m_opt.timer);
+        m.ocr_x = m.ocr_y = ocr_for_speed(m.speed_x_mm_per_s, m_machine.x.mm_per_step(), m_opt.timer, m_rounding);
+        if (m_opt.variant == Variant::Timer1Y) {
+            // Seed 003 §5.6 improvement 2 with the seed's equal speeds: Y at the speed X's rounded word gives.
+            m.speed_y_mm_per_s = speed_mm_per_s(m.ocr_x.value, m_machine.x.mm_per_step(), m_opt.timer);
+            m.ocr_y = ocr_for_speed(m.speed_y_mm_per_s, m_machine.y.mm_per_step(), m_timer_y, m_rounding);
+        }
         m.count_x = count(sx, m.wrapped);
         m.count_y = count(sy, m.wrapped);
-        m.portb = start_byte(sx, sx != 0, sy, sy != 0, false);
+        m.portb = start_byte(sx, sx != 0, sy, sy != 0, false, m_opt.variant);
         return m;
     }
 
@@ -156,7 +194,7 @@ private:
         const std::int64_t sx = to.x - m_cur.x;
         const std::int64_t sy = to.y - m_cur.y;
         if (sx == 0 && sy == 0) return;  // the next chord carries the remainder
-        Motion m = c.id == CommandId::G00 ? rapid_motion(sx, sy, move) : feed_motion(sx, sy, move);
+        Motion m = c.id == CommandId::G00 ? rapid_motion(sx, sy, move) : feed_motion(sx, sy, move, chord >= 0);
         m.move = move_index;
         m.line = move.line;
         m.kind = move.kind;
@@ -257,26 +295,33 @@ private:
             }
         }
         const auto report = [&](const Clamps& k, const char* kind, const char* reg, const char* axis,
-                                double mm_per_step) {
+                                double mm_per_step, TimerClock clk) {
             if (k.fast + k.slow == 0) return;
-            const double fastest = speed_mm_per_s(0, mm_per_step, m_opt.timer);
-            const double slowest = speed_mm_per_s(255, mm_per_step, m_opt.timer);
-            m_plan.warnings.push_back({kind, source_line(move),
-                                       std::string(g_name(command_id(move.kind))) + ": " + reg + " outside 0..255 in " +
-                                           std::to_string(k.fast + k.slow) + " of " + std::to_string(motions) +
-                                           (move.path.is_arc ? " chords (" : " commands (") + std::to_string(k.slow) +
-                                           " held to 255, " + std::to_string(k.fast) + " to 0): " + axis +
-                                           fmt::format(FMT_STRING(" asked {:.4g}..{:.4g} mm/s, the 8-bit range is "
-                                                                  "{:.4g}..{:.4g} mm/s"),
-                                                       k.min_asked, k.max_asked, slowest, fastest)});
+            const double fastest = speed_mm_per_s(0, mm_per_step, clk);
+            const double slowest = speed_mm_per_s(clk.ocr_max, mm_per_step, clk);
+            const std::string range = fmt::format(FMT_STRING("0..{}"), clk.ocr_max);
+            m_plan.warnings.push_back(
+                {kind, source_line(move),
+                 std::string(g_name(command_id(move.kind))) + ": " + reg + " outside " + range + " in " +
+                     std::to_string(k.fast + k.slow) + " of " + std::to_string(motions) +
+                     (move.path.is_arc ? " chords (" : " commands (") + std::to_string(k.slow) + " held to " +
+                     std::to_string(clk.ocr_max) + ", " + std::to_string(k.fast) + " to 0): " + axis +
+                     fmt::format(FMT_STRING(" asked {:.4g}..{:.4g} mm/s, the {}-bit range is {:.4g}..{:.4g} mm/s"),
+                                 k.min_asked, k.max_asked, clk.ocr_max > 0xFF ? 16 : 8, slowest, fastest)});
         };
-        report(x, "ocr0a_range", "OCR0A", "X", m_machine.x.mm_per_step());
-        report(y, "ocr2a_range", "OCR2A", "Y", m_machine.y.mm_per_step());
+        report(x, "ocr0a_range", "OCR0A", "X", m_machine.x.mm_per_step(), m_opt.timer);
+        if (m_opt.variant == Variant::Timer1Y) {
+            report(y, "ocr1a_range", "OCR1A", "Y", m_machine.y.mm_per_step(), m_timer_y);
+        } else {
+            report(y, "ocr2a_range", "OCR2A", "Y", m_machine.y.mm_per_step(), m_timer_y);
+        }
     }
 
     const Program& m_program;
     const MachineModel& m_machine;
     const PcOptions& m_opt;
+    const TimerClock m_timer_y;
+    const OcrRounding m_rounding;
     Plan m_plan;
     GridPos m_cur;
 };
@@ -306,11 +351,12 @@ std::vector<Transfer> transfers(const Plan& plan) {
         for (std::size_t k = 0; k < c.motions.size(); ++k) {
             Transfer t{i, static_cast<int>(k), {}};
             if (k == 0) t.bytes.push_back(id);
-            const std::vector<std::uint8_t> b = motion_bytes(c.id, c.motions[k]);
+            const std::vector<std::uint8_t> b = motion_bytes(c.id, c.motions[k], plan.variant);
             t.bytes.insert(t.bytes.end(), b.begin(), b.end());
             out.push_back(std::move(t));
         }
-        if (c.id == CommandId::G02 || c.id == CommandId::G03) out.push_back({i, -1, arc_terminator(true)});
+        if (c.id == CommandId::G02 || c.id == CommandId::G03)
+            out.push_back({i, -1, arc_terminator(true, plan.variant)});
     }
     return out;
 }

@@ -17,6 +17,13 @@
 // - A count above 16 bits (409.6 mm at 160 steps/mm) is split into commands that fit (LongMoves::Split, with a
 //   warning) or sent modulo 65536 as the seed's registers would take it (LongMoves::Wrap, with a warning).
 // - An OCR outside 0..255 is held to the range, with a warning naming the line and the speed.
+// - avr.variant (variant.hpp): "rounded" rounds OCR0A, asks Y for (dy/dx) times the speed the rounded OCR0A gives,
+//   and rounds OCR2A (seed 003 §5.6, interpolation 1-3; G00 rounds its one OCR). "timer1-y" does the same with
+//   Y's word as OCR1A at N = 1 (16 bits, §5.6 hardware 2); its G00 sends Y its own word for the speed X's
+//   rounded OCR0A gives (the seed's one OCR runs both axes at one speed), and a G01
+//   with dx = 0 is counted on Y's own timer (the seed's X timebase would hold Y to X's 8-bit rate). An arc chord
+//   with dx = 0 keeps the X timebase, Y in step with it: OCR1A + 1 = 1024 (OCR0A + 1), so that the chord ends are
+//   still found on the pins (sim/architectures/atmega/motion_windows.hpp).
 #pragma once
 #include <string>
 #include <vector>
@@ -33,14 +40,18 @@ namespace cnc::host::cad2g {
 enum class LongMoves { Split, Wrap };
 
 struct PcOptions {
-    TimerClock timer;           // what the PC computes the OCR words with (seed: 16 MHz, N = 1024)
-    double arc_step_deg = 2.0;  // seed §5.4.3 "stepangle" (value not given): atmega.arc_step_deg
+    TimerClock timer;  // what the PC computes X's OCR0A with (seed: 16 MHz, N = 1024), and Y's but in timer1-y
+    Variant variant = Variant::Seed;  // avr.variant
+    double arc_step_deg = 2.0;        // seed §5.4.3 "stepangle" (value not given): atmega.arc_step_deg
     LongMoves long_moves = LongMoves::Split;
 };
 
 struct Plan {
     std::vector<Command> commands;  // the program's moves, then M30
-    std::vector<Warning> warnings;  // kinds long_move, ocr0a_range, ocr2a_range; where: the G-code line
+    std::vector<Warning> warnings;  // kinds long_move, ocr0a_range, ocr2a_range (ocr1a_range); where: the G-code line
+    Variant variant = Variant::Seed;
+    TimerClock timer_x;  // Timer0's clock, as the PC computed with it
+    TimerClock timer_y;  // Y's: Timer2's, or Timer1's in timer1-y
 };
 
 // Throws cnc::BadInput for an invalid machine or option.

@@ -95,6 +95,19 @@ TEST(AvrUsartUnit, TransmitterTimingAndFlags) {
     EXPECT_EQ(f.u.tx_log()[1].end_cycle, 5812);
 }
 
+// §20.11.5: writing UBRR0L restarts the baud rate prescaler at once, also while a byte waits in the transmit buffer
+// for the idle shift register: UDR0 written at 150 would load at the tick 100 + 272; UBRR0L written again (the same
+// 16) at 300 moves the next tick, and the start bit, to 300 + 16 x (16 + 1) = 572.
+TEST(AvrUsartUnit, UbrrlWriteRestartsTheBitClockOfAWaitingByte) {
+    Fixture f;
+    f.setup_58823(100);
+    f.u.write_udr(150, 0x00);
+    f.u.write_ubrrl(300, 16);
+    f.u.advance_to(20'000);
+    ASSERT_FALSE(f.rec.txd.empty());
+    EXPECT_EQ(f.rec.txd.front(), (std::pair<Cycle, bool>{300 + 16 * (16 + 1), false}));
+}
+
 // Without the logs (a long job's run), the line, the flags and the counts are those of a unit that keeps them:
 // TransmitterTimingAndFlags' bytes, and one received byte.
 TEST(AvrUsartUnit, WithoutTheLogsTheLineAndTheCountsAreTheSame) {

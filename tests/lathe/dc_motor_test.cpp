@@ -111,4 +111,33 @@ TEST(DcMotor, CoastLetsTheCurrentDieAndTheShaftRunDown) {
     EXPECT_NEAR(m.state().omega_rad_per_s, w1 * std::exp(-0.02 / tau), 1e-6 * w1);
 }
 
+// The electrical constants derive_motor() takes from the thesis, each seen in the motor's behaviour (seed 002
+// §3.2.1, §3.2.2, §2.3): 4 A of stall current at 22 V (R = 5.5 ohm), 0.8 A drawn at full speed without load, and
+// L = 1 mH of the first-order model, the current rising from rest at 22 V as V/R (1 - e^(-R t / L)) while the
+// shaft has not yet turned.
+TEST(DcMotor, StallNoLoadCurrentAndInductanceAreTheSeeds) {
+    const DcMotorParams p = derive_motor();
+    EXPECT_NEAR(22.0 / p.r_ohm, 4.0, 1e-12);
+    DcMotor start(p);
+    start.advance(5e-6, BridgeMode::Drive, 22.0, 0.0);
+    EXPECT_NEAR(start.state().current_a, 4.0 * (1.0 - std::exp(-5.5 * 5e-6 / 1e-3)), 1e-5);
+    DcMotor run(p);
+    run.advance(0.2, BridgeMode::Drive, 22.0, 0.0);  // 15 time constants: steady
+    EXPECT_NEAR(run.state().current_a, 0.8, 1e-5);
+}
+
+// Coasting from full speed: the current flows on through the flyback diodes into the supply, so the terminals see
+// -(24 V + 2 x 1 V) (seed 002 §2.3 supply; 1N4007 datasheet forward drop near 1 A). Over 5 us the shaft keeps its
+// speed, whose back-EMF is what the 22 V drove against, 22 V - R x 0.8 A: L di/dt = -26 V - R i - 17.6 V.
+TEST(DcMotor, CoastingCurrentDecaysAgainstTheSupplyAndTwoDiodes) {
+    const DcMotorParams p = derive_motor();
+    DcMotor m(p);
+    m.advance(0.2, BridgeMode::Drive, 22.0, 0.0);
+    m.advance(5e-6, BridgeMode::Coast, 0.0, 0.0);
+    const double r_ohm = 5.5;
+    const double back_emf_v = 22.0 - r_ohm * 0.8;
+    const double i_inf_a = (-(24.0 + 2.0 * 1.0) - back_emf_v) / r_ohm;
+    EXPECT_NEAR(m.state().current_a, i_inf_a + (0.8 - i_inf_a) * std::exp(-r_ohm * 5e-6 / 1e-3), 1e-4);
+}
+
 }  // namespace

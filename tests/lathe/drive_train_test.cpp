@@ -14,6 +14,15 @@ TEST(DriveTrain, OneMotorPulseIs4Point07Um) {
     EXPECT_NEAR(3.175 / 780.0 * 1000.0, 4.0705, 1e-4);
 }
 
+// A reduction belt (belt_ratio gearbox-output turns per leadscrew turn) divides the travel as the gearbox does:
+// with 2:1, one motor pulse is half of 3.175 mm / 780.
+TEST(DriveTrain, BeltReductionDividesTheTravel) {
+    cnc::lathe::DriveTrainParams p;
+    p.belt_ratio = 2.0;
+    cnc::lathe::DriveTrain d(p);
+    EXPECT_NEAR(d.follow(kTwoPi / 30.0), 3.175 / 780.0 / 2.0, 1e-12);
+}
+
 // With 0.1 mm of play: a reversal moves the gearbox through the play before the carriage follows (§4.2.1).
 TEST(DriveTrain, BacklashHoldsTheCarriageOnReversal) {
     cnc::lathe::DriveTrainParams p;

@@ -127,4 +127,43 @@ TEST(Hd44780, TwoLinesAtDdram40) {
     EXPECT_EQ(lcd.changes(), n + 1);
 }
 
+// Datasheet "Display Data RAM": in 2-line mode line 1 is DDRAM 0x00..0x27 and line 2 is 0x40..0x67; the address
+// counter runs on from 0x27 to 0x40 and from 0x67 back to 0x00, and the other way when it decrements. Shifted
+// right by one, the display shows the 40th character of each line (0x27, 0x67) in column 0.
+TEST(Hd44780, TwoLineAddressWrapsAtTheLineEnds) {
+    Hd44780 lcd;
+    pulse(lcd, false, false, 0x2);
+    byte4(lcd, false, 0x28);  // 4-bit, 2 lines
+    byte4(lcd, false, 0x0C);
+    byte4(lcd, false, 0x06);         // increment
+    byte4(lcd, false, 0x80 | 0x67);  // the last character of line 2
+    text4(lcd, "ab");                // 'b' lands at 0x00
+    EXPECT_EQ(lcd.lines()[0], pad("b"));
+    byte4(lcd, false, 0x04);         // decrement
+    byte4(lcd, false, 0x80 | 0x40);  // the first character of line 2
+    text4(lcd, "cd");                // 'd' lands at 0x27
+    byte4(lcd, false, 0x80 | 0x00);
+    text4(lcd, "ef");  // 'f' lands at 0x67
+    EXPECT_EQ(lcd.lines()[0], pad("e"));
+    EXPECT_EQ(lcd.lines()[1], pad("c"));
+    byte4(lcd, false, 0x1C);  // shift the display right
+    EXPECT_EQ(lcd.lines()[0], pad("de"));
+    EXPECT_EQ(lcd.lines()[1], pad("fc"));
+}
+
+// Datasheet "Display Data RAM": in 1-line mode the DDRAM is 0x00..0x4F, one line of 80 characters; the address
+// counter runs on from 0x4F to 0x00, and from 0x00 back to 0x4F when it decrements.
+TEST(Hd44780, OneLineAddressWrapsAt4F) {
+    Hd44780 lcd;
+    table12_init(lcd);  // 4-bit, 1 line, increment
+    byte4(lcd, false, 0x80 | 0x4F);
+    text4(lcd, "ab");  // 'b' lands at 0x00
+    EXPECT_EQ(lcd.lines()[0], pad("b"));
+    byte4(lcd, false, 0x04);  // decrement
+    byte4(lcd, false, 0x80 | 0x01);
+    text4(lcd, "cde");        // 'c' at 0x01, 'd' at 0x00, 'e' at 0x4F
+    byte4(lcd, false, 0x1C);  // shift the display right: column 0 shows 0x4F
+    EXPECT_EQ(lcd.lines()[0], pad("edc"));
+}
+
 }  // namespace

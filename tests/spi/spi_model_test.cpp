@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <systemc>
 
+#include "common/bad_input.hpp"
 #include "spi_bench.hpp"
 
 namespace cnc::spi::test {
@@ -148,6 +149,52 @@ TEST(SpiFpgaModel, TransferTimeAtThreeMegahertzAndBackToBackTransfers) {
     EXPECT_EQ(sample_at_rises(b.log("sclk"), b.log("mosi"), 37 * kUs, 63 * kUs), frame);
     EXPECT_EQ(sample_at_rises(b.log("sclk"), b.log("miso"), 37 * kUs, 63 * kUs), b.replies()[1]);
     EXPECT_TRUE(b.fpga.frames()[1].accepted);
+}
+
+// The oversampling slave's rule, SCLK below clk/6 (fpga::check_link): MISO changes up to 3 FPGA clocks after a
+// falling SCLK edge (FPGA README: the 2-stage synchroniser, then the register that drives MISO), and the master
+// reads it at the next rising edge. The SCLK edges lie at whole ps, n x 1e12 / 2f rounded down, so no half period is
+// shorter than floor(1e12 / 2f). The integer rate just below 50 MHz / 6, 8 333 333 Hz, has edges exactly 60 ns
+// apart: with SS on the 20 ns grid every falling edge is on a clock edge, the worst case, MISO changes exactly at the
+// rising edge and the master reads the bit before. Above 60 ns (the fastest rate with every half period at least
+// 60 001 ps, which check_link allows) it reads the reply.
+Bytes reply_read_at(std::uint32_t sclk_hz, Bytes& loaded) {
+    SpiConfig cfg = link(true);
+    cfg.sclk_hz = sclk_hz;
+    SpiBench b("b", cfg, fpga_cfg(RateApply::AtNextPulse), {{10 * kUs, rates({5000, true}, {7919, false})}});
+    run_until(1 * kMs);
+    loaded = b.fpga.frames().at(0).reply;
+    return b.replies().at(0);
+}
+
+constexpr TimePs kThreeClocksPs = 3 * 20'000;  // 50 MHz
+constexpr std::uint32_t kSixthHz = 50'000'000 / 6;
+constexpr auto kFastestHz = static_cast<std::uint32_t>(kPsPerSec / (2 * (kThreeClocksPs + 1)));
+
+TimePs half_period_ps(std::uint32_t sclk_hz) {
+    SpiConfig cfg;
+    cfg.sclk_hz = sclk_hz;
+    return sclk_half_period_ps(cfg);
+}
+
+TEST(SpiFpgaModel, MisoIsReadRightAboveThreeClocksOfHalfPeriod) {
+    EXPECT_EQ(half_period_ps(kFastestHz), kThreeClocksPs + 1);
+    Bytes loaded;
+    EXPECT_EQ(reply_read_at(kFastestHz, loaded), loaded);
+}
+
+TEST(SpiFpgaModel, MisoIsReadABitLateJustBelowASixthOfTheClock) {
+    EXPECT_EQ(half_period_ps(kSixthHz), kThreeClocksPs);
+    SpiConfig cfg;
+    cfg.sclk_hz = kSixthHz;
+    EXPECT_THROW(fpga::check_link(cfg, SpiFpgaConfig{}), cnc::BadInput);
+    Bytes loaded;
+    const Bytes read = reply_read_at(kSixthHz, loaded);
+    ASSERT_EQ(read.size(), loaded.size());
+    EXPECT_EQ(loaded[0], 0x80);  // the reply's status byte
+    // Bit k is read as bit k - 1 of the reply, bit 0 (driven since SS fell) twice.
+    const auto bit = [](const Bytes& v, std::size_t i) { return (v[i / 8] >> (7 - i % 8)) & 1; };
+    for (std::size_t k = 1; k < 8 * loaded.size(); ++k) EXPECT_EQ(bit(read, k), bit(loaded, k - 1)) << "bit " << k;
 }
 
 TEST(SpiFpgaModel, WiresAndTransactionsGiveTheSameFpgaBehaviour) {

@@ -113,7 +113,7 @@ public:
 
     [[nodiscard]] JobEstimate estimate() const override { return m_estimate; }
     void feed_started(MetricsFeed& feed) override {
-        feed.pending().commanded = commanded_trajectory_live(m_trajectory, m_clock, m_grid.origin_mm, kScanStepPs);
+        feed.pending().commanded = commanded_as_planned(m_trajectory, m_clock, m_grid.origin_mm, kScanStepPs);
     }
     void slice_ended(TimePs now_ps, MetricsFeed* feed) override {
         m_clock.add(now_ps, ps_to_s(now_ps));
@@ -141,7 +141,7 @@ public:
             return;
         }
         in.moves = m_planned.take(m_clock, true);
-        in.commanded = commanded_trajectory(m_trajectory, m_clock, m_grid.origin_mm, kScanStepPs);
+        in.commanded = commanded_as_planned(m_trajectory, m_clock, m_grid.origin_mm, kScanStepPs);
         in.rate_segments = m_edges.take_rate_segments(std::numeric_limits<TimePs>::max());
     }
     void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override {

@@ -119,4 +119,11 @@ void commanded_known(metrics::CommandedTrajectory& c, const host::servo::Traject
     c.t_end_ps = clock.t_end_ps();
 }
 
+metrics::CommandedTrajectory commanded_as_planned(std::shared_ptr<const host::planner::Trajectory> traj,
+                                                  const host::servo::TrajectoryClock& clock, geom::Vec2 origin_mm,
+                                                  TimePs scan_step_ps) {
+    const ClockAt as_planned = [](TimePs t) { return host::servo::TrajectoryClock::Reading{ps_to_s(t), 1.0}; };
+    return commanded_on(std::move(traj), as_planned, clock, origin_mm, scan_step_ps);
+}
+
 }  // namespace cnc::sim

@@ -68,5 +68,13 @@ metrics::CommandedTrajectory commanded_trajectory_live(std::shared_ptr<const hos
                                                        const host::servo::TrajectoryClock& clock, geom::Vec2 origin_mm,
                                                        TimePs scan_step_ps);
 void commanded_known(metrics::CommandedTrajectory& c, const host::servo::TrajectoryClock& clock);
+// The same for a controller that runs the plan as planned (tau = t, d tau/dt = 1): the planner's state at t itself,
+// known up to the clock's last knot (commanded_known as the run goes), the clock copied or read by nobody. Read
+// through the clock instead, tau(t) would be interpolated between its knots, which lie where the run's slices ended:
+// their length follows the wall time (simulate.cpp), and an interpolation between other knots rounds tau
+// differently in its last bit, which moves a half-step crossing by a picosecond.
+metrics::CommandedTrajectory commanded_as_planned(std::shared_ptr<const host::planner::Trajectory> traj,
+                                                  const host::servo::TrajectoryClock& clock, geom::Vec2 origin_mm,
+                                                  TimePs scan_step_ps);
 
 }  // namespace cnc::sim

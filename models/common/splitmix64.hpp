@@ -12,4 +12,10 @@ inline std::uint64_t splitmix64(std::uint64_t x) {
     return x ^ (x >> 31U);
 }
 
+// Draw number `n` of the stream `key`, uniform in [0, 1) with 53 random bits: a function of (key, n) alone.
+inline double unit_draw(std::uint64_t key, std::uint64_t n) {
+    constexpr double kTwoPowMinus53 = 1.0 / 9007199254740992.0;
+    return static_cast<double>(splitmix64(key ^ splitmix64(n)) >> 11U) * kTwoPowMinus53;
+}
+
 }  // namespace cnc

@@ -1,11 +1,10 @@
 #include "mechanics/drv8825.hpp"
 #include "common/sc_time.hpp"
+#include "common/splitmix64.hpp"
 
 #include <string>
 
 namespace cnc::mech {
-
-namespace {}  // namespace
 
 Drv8825::Drv8825(const sc_core::sc_module_name& name, const Drv8825Config& cfg, StepperMotor& motor)
     : sc_core::sc_module(name),
@@ -17,7 +16,8 @@ Drv8825::Drv8825(const sc_core::sc_module_name& name, const Drv8825Config& cfg, 
       m2("m2"),
       m_cfg(cfg),
       m_motor(motor),
-      m_checker(cfg.limits) {
+      m_checker(cfg.limits),
+      m_fault_key(splitmix64(splitmix64(cfg.fault_seed) ^ cfg.fault_line)) {
     SC_HAS_PROCESS(Drv8825);
     SC_METHOD(on_step);
     sensitive << step.value_changed();
@@ -90,6 +90,11 @@ void Drv8825::on_step() {
     }
     const int microsteps = microsteps_for({m0.read(), m1.read(), m2.read()});
     const int direction = dir_level == m_cfg.dir_high_is_positive ? 1 : -1;
+    if (m_cfg.step_loss_rate > 0.0 && unit_draw(m_fault_key, m_rises++) < m_cfg.step_loss_rate) {
+        ++m_stats.lost_to_fault;
+        m_stats.lost_net_steps += direction;
+        return;
+    }
     m_pulse_moved = true;
     m_pulse_rise_ps = t;
     m_position_before_pulse = m_position;

@@ -23,6 +23,8 @@ struct Drv8825Stats {
     std::int64_t steps = 0;             // steps that moved the indexer (net of strict-mode retractions)
     std::int64_t ignored_disabled = 0;  // STEP rises while nENBL was high
     std::int64_t ignored_short = 0;     // strict mode: pulses ignored or retracted for tWL / tWH
+    std::int64_t lost_to_fault = 0;     // rises lost on the input (Drv8825Config::step_loss_rate)
+    std::int64_t lost_net_steps = 0;    // the same, signed by the direction each would have stepped
 };
 
 class Drv8825 : public sc_core::sc_module {
@@ -71,6 +73,8 @@ private:
     bool m_pulse_moved = false;  // the current STEP pulse moved the indexer (strict mode may retract it)
     TimePs m_pulse_rise_ps = 0;
     std::int64_t m_position_before_pulse = 0;
+    std::uint64_t m_fault_key = 0;
+    std::uint64_t m_rises = 0;  // rising edges that would step: the fault draw's index
 };
 
 }  // namespace cnc::mech

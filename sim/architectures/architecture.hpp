@@ -40,6 +40,7 @@ struct JobUse {
 struct FaultLinks {
     bool uart = false;  // a UART link: faults.uart_*
     bool host = false;  // a host program that can stall: faults.host_stall_*
+    bool step_input = false;  // DRV8825s on the machine's pins: faults.step_loss_rate
 };
 
 class Architecture {

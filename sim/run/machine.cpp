@@ -51,6 +51,14 @@ ModeStraps::ModeStraps(int microsteps, const std::string& axis)
       m1(("mode1_" + axis).c_str(), mech::mode_pins_for(microsteps).m1),
       m2(("mode2_" + axis).c_str(), mech::mode_pins_for(microsteps).m2) {}
 
+namespace {
+// Each driver's STEP-input faults drawn apart from the other's.
+mech::Drv8825Config on_line(mech::Drv8825Config c, std::uint64_t line) {
+    c.fault_line = line;
+    return c;
+}
+}  // namespace
+
 Machine::Machine(const sc_core::sc_module_name& name, const host::MachineModel& model,
                  const mech::Drv8825Config& driver, geom::Vec2 origin_mm, const MechanicsSettings& mechanics,
                  bool positions_traced)
@@ -69,8 +77,8 @@ Machine::Machine(const sc_core::sc_module_name& name, const host::MachineModel& 
       m_axis_y(model.y, mechanics, mechanics.y),
       m_worker_motor_x(m_worker_thread ? std::make_unique<mech::WorkerMotor>(m_carriage, 0) : nullptr),
       m_worker_motor_y(m_worker_thread ? std::make_unique<mech::WorkerMotor>(m_carriage, 1) : nullptr),
-      m_drv_x("drv8825_x", driver, m_worker_thread ? *m_worker_motor_x : *m_axis_x.motor),
-      m_drv_y("drv8825_y", driver, m_worker_thread ? *m_worker_motor_y : *m_axis_y.motor),
+      m_drv_x("drv8825_x", on_line(driver, 0), m_worker_thread ? *m_worker_motor_x : *m_axis_x.motor),
+      m_drv_y("drv8825_y", on_line(driver, 1), m_worker_thread ? *m_worker_motor_y : *m_axis_y.motor),
       m_carriage("carriage",
                  mech::CarriageConfig{
                      {&m_drv_x.step_event(), &m_axis_x.drive(), m_axis_x.motor.get(), &m_drv_x.enable_event()},

@@ -8,6 +8,7 @@
 #include "probes/vcd_trace.hpp"
 #include "run/carriage_feed.hpp"
 #include "run/mechanics_report.hpp"
+#include "run/step_fault_report.hpp"
 #include "run/simulate.hpp"
 
 namespace cnc::sim {
@@ -57,6 +58,8 @@ ArchRun run_on_machine(const Scenario& s, const Job& job, const MakeController& 
     const std::unique_ptr<Controller> ctl = make(s, job, pins);
     mech::Drv8825Config driver = s.driver;
     driver.dir_high_is_positive = ctl->dir_high_is_positive();
+    driver.step_loss_rate = s.faults.step_loss_rate;
+    driver.fault_seed = s.faults.uart.seed;
     Machine machine("machine", s.machine, driver, s.interpreter.start_mm, s.mechanics, !s.vcd_path.empty());
     machine.bind(pins);
     EdgeRecorder rec("probes");
@@ -111,6 +114,7 @@ ArchRun run_on_machine(const Scenario& s, const Job& job, const MakeController& 
     ctl->take_lines(rec, run.lines);
     ctl->report(run, budget, end);
     add_mechanics_report(machine, feed, run);
+    if (s.faults.step_loss_rate > 0.0) add_step_fault_report(machine, s, run);
     return run;
 }
 

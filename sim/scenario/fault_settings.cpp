@@ -20,6 +20,9 @@ void read_fault_settings(KeyReader& r, std::uint64_t scenario_seed, FaultSetting
     s.host_stall.length_s = r.get_float("faults.host_stall_s", 0.0, 0.0, 1e6,
                                         "length of a host stall: the host program neither writes nor reads its port "
                                         "(another process, a USB reset), s; 0: none");
+    s.step_loss_rate = r.get_float("faults.step_loss_rate", 0.0, 0.0, 1.0,
+                                   "fraction of the STEP pulses lost on each DRV8825's input (a noisy or loose wire): "
+                                   "each rising edge that would step is dropped with this probability; 0: none");
 }
 
 }  // namespace cnc::sim

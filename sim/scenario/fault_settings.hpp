@@ -16,10 +16,11 @@ struct HostStall {
 };
 
 struct FaultSettings {
-    uart::LineFaultRates uart;  // on both wires of a UART link
+    uart::LineFaultRates uart;  // on both wires of a UART link; its seed is every fault's
     HostStall host_stall;
+    double step_loss_rate = 0.0;  // on each DRV8825's STEP input (mech::Drv8825Config::step_loss_rate)
 
-    [[nodiscard]] bool any() const { return uart.any() || host_stall.any(); }
+    [[nodiscard]] bool any() const { return uart.any() || host_stall.any() || step_loss_rate > 0.0; }
 };
 
 // `scenario_seed` is the default of faults.seed.

@@ -164,6 +164,9 @@ void check_fault_links(const KeyReader& r, const FaultSettings& f, const Archite
     if (f.host_stall.any() && !a.fault_links().host) {
         r.fail("faults.host_stall_s", "the " + a.name() + " architecture has no host program model that can stall");
     }
+    if (f.step_loss_rate > 0.0 && !a.fault_links().step_input) {
+        r.fail("faults.step_loss_rate", "the " + a.name() + " architecture drives no DRV8825");
+    }
 }
 
 void read_trace_window(KeyReader& r, Scenario& s) {

@@ -14,6 +14,11 @@ struct Drv8825Config {
     // This is the pessimistic reading of the data sheet minimums; real chips often accept shorter pulses.
     bool strict = false;
     bool dir_high_is_positive = true;  // seed 000 §2.3: the DIR-to-direction mapping depends on the wiring
+    // A fault on the STEP input (a noisy or loose wire, faults.step_loss_rate): each rising edge that would step is
+    // lost with this probability, drawn per edge from the seed and the driver's line (common/splitmix64.hpp).
+    double step_loss_rate = 0.0;
+    std::uint64_t fault_seed = 1;
+    std::uint64_t fault_line = 0;
 };
 
 }  // namespace cnc::mech

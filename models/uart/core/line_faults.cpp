@@ -9,15 +9,13 @@ namespace cnc::uart {
 namespace {
 constexpr int kMaxFrameBits = 32;                            // one inversion mask; a UART frame has at most 12 bits
 constexpr std::uint64_t kLossDraw = kMaxFrameBits;           // the frame-loss draw follows the bits' draws
-constexpr double kTwoPowMinus53 = 1.0 / 9007199254740992.0;  // 53 random bits -> [0, 1)
 }  // namespace
 
 LineFaultDraw::LineFaultDraw(const LineFaultRates& rates, std::uint64_t line)
     : m_rates(rates), m_key(splitmix64(splitmix64(rates.seed) ^ line)) {}
 
 double LineFaultDraw::unit(std::uint64_t frame, std::uint64_t draw) const {
-    const std::uint64_t x = splitmix64(m_key ^ splitmix64(frame * (kMaxFrameBits + 1) + draw));
-    return static_cast<double>(x >> 11U) * kTwoPowMinus53;
+    return unit_draw(m_key, frame * (kMaxFrameBits + 1) + draw);
 }
 
 FrameFault LineFaultDraw::frame(std::uint64_t frame, int bits) const {

@@ -20,6 +20,12 @@ public:
         return s;
     }
 
+    // The DRV8825s on the machine's pins (its link's faults are not modelled yet).
+    [[nodiscard]] FaultLinks fault_links() const override {
+        FaultLinks links;
+        links.step_input = true;
+        return links;
+    }
     [[nodiscard]] std::string plot_colour() const override { return "#d55e00"; }
 };
 

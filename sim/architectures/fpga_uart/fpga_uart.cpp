@@ -53,7 +53,8 @@ public:
         }
     }
 
-    [[nodiscard]] FaultLinks fault_links() const override { return {true, true}; }
+    // Both UART wires, the send_steps.py host, the DRV8825s.
+    [[nodiscard]] FaultLinks fault_links() const override { return {true, true, true}; }
     [[nodiscard]] std::string plot_colour() const override { return "#0072b2"; }
 };
 

@@ -22,6 +22,12 @@ public:
         return s;
     }
 
+    // The DRV8825s on the machine's pins: it has no link.
+    [[nodiscard]] FaultLinks fault_links() const override {
+        FaultLinks links;
+        links.step_input = true;
+        return links;
+    }
     [[nodiscard]] std::string plot_colour() const override { return "#000000"; }
 };
 

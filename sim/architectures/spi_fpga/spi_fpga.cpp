@@ -51,6 +51,12 @@ public:
         }
     }
 
+    // The DRV8825s on the machine's pins (its link's faults are not modelled yet).
+    [[nodiscard]] FaultLinks fault_links() const override {
+        FaultLinks links;
+        links.step_input = true;
+        return links;
+    }
     [[nodiscard]] std::string plot_colour() const override { return "#009e73"; }
 };
 

@@ -90,7 +90,7 @@ Curves curves(const std::vector<PlotRun>& runs, const fs::path& out_dir, const s
         if (y.rows == 0) continue;
         c.y = merge(c.y, y);
         c.clauses.push_back(quoted(file_of(r, file)) + " using " + using_style + " lc rgb " +
-                            quoted(arch_colour(r.architecture)) + " title " + quoted(r.architecture + suffix));
+                            quoted(r.colour) + " title " + quoted(r.label + suffix));
     }
     return c;
 }

@@ -185,7 +185,7 @@ std::vector<cnc::sim::CompareColumn> compare_columns(const std::vector<std::stri
                                                      const cnc::sim::Scenario& scenario) {
     std::vector<cnc::sim::CompareColumn> columns;
     if (variants.empty()) {
-        for (const std::string& a : list) columns.push_back({a});
+        for (const std::string& a : list) columns.push_back({a, 0, nullptr, 0.0, "", {}});
         return columns;
     }
     const std::vector<std::string> archs = arch_given ? list : std::vector<std::string>{scenario.architecture};

@@ -245,7 +245,10 @@ Comparison run_compare(const std::string& self_exe, const std::vector<std::strin
         with_baseline && baseline != nullptr && std::none_of(asked.begin(), asked.end(), [&](const CompareColumn& c) {
             return c.architecture == baseline->name() && c.variant.empty();
         });
-    if (hidden_baseline) columns.push_back({baseline->name()});
+    if (hidden_baseline) {
+        columns.emplace_back();
+        columns.back().architecture = baseline->name();
+    }
     std::string dir_template = (fs::temp_directory_path() / "cncsim-compare-XXXXXX").string();
     if (mkdtemp(dir_template.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder");
     const fs::path temp_dir = dir_template;

@@ -15,8 +15,8 @@ struct CompareColumn {
     int exit_code = 0;      // of the child `cncsim run`: 0 ok, 1 run failed, 2 bad input
     nlohmann::json report;  // its JSON report (null when it wrote none)
     double wall_s = 0.0;    // the child's wall time
-    std::string variant;    // the variant's name (--variant, compare.variants); empty: the scenario as it is
-    std::vector<std::string> variant_sets;  // its key=value, applied after the command's own --set
+    std::string variant{};  // the variant's name (--variant, compare.variants); empty: the scenario as it is
+    std::vector<std::string> variant_sets{};  // its key=value, applied after the command's own --set
 
     // Its name in headers, notes and plot titles: "fpga-uart", "fpga-uart: crc16".
     [[nodiscard]] std::string label() const;

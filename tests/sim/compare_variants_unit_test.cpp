@@ -51,7 +51,7 @@ TEST(CompareVariants, JsonCarriesTheVariantAndItsSets) {
     EXPECT_EQ(j[1]["variant_sets"], (nlohmann::json{"protocol.crc=\"crc16\"", "faults.uart_ber=1e-5"}));
     EXPECT_EQ(j[0]["best"], nlohmann::json{"metrics/job/job_time_s"});
     // Without variants a column is its architecture as before.
-    const nlohmann::json plain = cnc::sim::compare_json({{{"atmega"}}, {}});
+    const nlohmann::json plain = cnc::sim::compare_json({{{"atmega", 0, nullptr, 0.0, "", {}}}, {}});
     EXPECT_TRUE(plain[0]["variant"].is_null());
     EXPECT_EQ(plain[0]["label"], "atmega");
 }
@@ -76,7 +76,9 @@ TEST(CompareVariants, ColoursAreDistinctAndReadable) {
     }
     // On the page and in the plots: per architecture, so that an architecture alone keeps its own.
     const std::vector<cnc::sim::CompareColumn> cols = {
-        {"fpga-uart", 0, nullptr, 0.0, "a"}, {"atmega", 0, nullptr, 0.0, "a"}, {"fpga-uart", 0, nullptr, 0.0, "b"}};
+        {"fpga-uart", 0, nullptr, 0.0, "a", {}},
+        {"atmega", 0, nullptr, 0.0, "a", {}},
+        {"fpga-uart", 0, nullptr, 0.0, "b", {}}};
     const std::vector<std::string> colours = cnc::sim::column_colours(cols);
     EXPECT_EQ(colours[1], "#d55e00");
     EXPECT_EQ(colours[0], cnc::sim::variant_colour("#0072b2", 0, 2));

@@ -427,7 +427,10 @@ std::string compare_table(const Comparison& comparison, TableFormat format_kind)
         rows = {head};
     }
     std::vector<TableRow> table = table_rows(comparison);
-    if (std::optional<TableRow> sets = sets_row(comparison)) table.insert(table.begin() + 1, *sets);
+    // A row in a CSV file, which is read by program; under the table for a reader, where a variant's sets would
+    // widen its column past the screen.
+    const std::optional<TableRow> sets = sets_row(comparison);
+    if (sets && format_kind == TableFormat::Csv) table.insert(table.begin() + 1, *sets);
     for (const TableRow& tr : table) {
         std::vector<std::string> r = {tr.label};
         std::vector<std::string> best_names;
@@ -470,6 +473,14 @@ std::string compare_table(const Comparison& comparison, TableFormat format_kind)
         }
     }
     if (!md) os << "* best of the row (smallest magnitude)\n";
+    if (sets) {
+        for (std::size_t i = 0; i < columns.size(); ++i) {
+            const std::string what =
+                sets->cells[i] == "-" ? "the scenario as it is" : "--set " + join(columns[i].variant_sets, " --set ");
+            os << (md ? "- " : "") << (md ? "**" + columns[i].label() + "**" : columns[i].label()) << ": "
+               << (md ? md_cell(what) : what) << '\n';
+        }
+    }
     os << not_compared_note() << '\n';
     for (const std::string& n : zero_notes(comparison)) os << n << '\n';
     return os.str();

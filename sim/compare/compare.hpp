@@ -60,7 +60,8 @@ std::string not_compared_note();
 // Per column, the figures that are 0 by construction and why, each line led by the column's label.
 std::vector<std::string> zero_notes(const Comparison& comparison);
 std::string status(const CompareColumn& c);
-// With variants, a row of each column's sets ("-": the scenario as it is), shown under the status; else none.
+// With variants, a row of each column's sets ("-": the scenario as it is): the CSV's second row; the other
+// formats list them under the table, the page above it. Else none.
 std::optional<TableRow> sets_row(const Comparison& comparison);
 
 // The comparison table: one row per metric, one column per architecture or variant; best values marked (text: a

@@ -36,8 +36,8 @@ void check_compare_columns(const CompareInput& input, const std::vector<CompareC
         with_variant.insert(with_variant.end(), c.variant_sets.begin(), c.variant_sets.end());
         // A variant is the user's own design: the first that cannot run is named, whatever the others do.
         if (const std::optional<std::string> why = why_not_runnable(input, c.architecture, with_variant))
-            throw BadInput(variants_from + " " + c.variant, "compare " + input.name + ": " + c.label() +
-                                                                " cannot run it: " + *why);
+            throw BadInput(variants_from + " " + c.variant,
+                           "compare " + input.name + ": " + c.label() + " cannot run it: " + *why);
     }
     std::string runnable;              // "a,b": for --arch
     std::string refused;               // "ARCH cannot run it: why; ..."

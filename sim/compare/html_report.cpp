@@ -49,9 +49,7 @@ void table_html(std::ostream& os, const Comparison& comparison) {
            << escape(comparison.columns[k].label()) << "</th>";
     }
     os << "</tr>\n";
-    std::vector<TableRow> rows = table_rows(comparison);
-    if (std::optional<TableRow> sets = sets_row(comparison)) rows.insert(rows.begin() + 1, *sets);
-    for (const TableRow& r : rows) {
+    for (const TableRow& r : table_rows(comparison)) {
         os << "<tr><td>" << escape(r.label) << "</td>";
         for (std::size_t i = 0; i < r.cells.size(); ++i) {
             os << "<td class=\"n" << (r.best[i] ? " best" : "") << "\">" << escape(r.cells[i]) << "</td>";
@@ -68,8 +66,8 @@ void warnings_html(std::ostream& os, const std::vector<CompareColumn>& columns) 
     const std::vector<std::string> colours = column_colours(columns);
     for (std::size_t k = 0; k < columns.size(); ++k) {
         const CompareColumn& c = columns[k];
-        os << "<h3 class=\"arch\" style=\"border-bottom-color:" << colours[k] << "\">" << escape(c.label())
-           << ": " << escape(status(c)) << "</h3>\n";
+        os << "<h3 class=\"arch\" style=\"border-bottom-color:" << colours[k] << "\">" << escape(c.label()) << ": "
+           << escape(status(c)) << "</h3>\n";
         if (!c.report.is_null() && c.report.contains("failure")) {
             os << "<p><b>The run failed:</b> " << escape(c.report["failure"].get<std::string>()) << "</p>\n";
         } else if (c.exit_code != 0) {
@@ -136,8 +134,8 @@ std::string html_report(const Comparison& comparison, const std::vector<Plot>& p
        << "<p>Scenario <code>" << escape(job.scenario_file) << "</code>";
     for (const std::string& o : job.overrides) os << ", <code>--set " << escape(o) << "</code>";
     columns_html(os, columns);
-    os << "<pre>" << escape(job.scenario_text) << "</pre>\n<p>Job <code>" << escape(job.job_file) << "</code>, " << job.job_lines
-       << " lines:</p>\n<pre>" << escape(job.job_text) << "</pre>\n<h2>Comparison</h2>\n";
+    os << "<pre>" << escape(job.scenario_text) << "</pre>\n<p>Job <code>" << escape(job.job_file) << "</code>, "
+       << job.job_lines << " lines:</p>\n<pre>" << escape(job.job_text) << "</pre>\n<h2>Comparison</h2>\n";
     table_html(os, comparison);
     os << "<p>The same table: <a href=\"table.md\">table.md</a>, <a href=\"table.csv\">table.csv</a>, "
           "<a href=\"table.json\">table.json</a>. Each column's report and trace:";

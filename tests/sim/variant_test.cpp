@@ -41,9 +41,9 @@ TEST(Variant, CommasInsideQuotesAndBracketsStayInTheValue) {
         "w: trace.signals = [\"x.step\", 'y.step'], scenario.name = \"a, b\", k = {a = 1, b = [2, 3]}, "
         "s = \"say \\\"hi, there\\\"\", t='c:\\d,e'",
         "--variant");
-    EXPECT_EQ(v.sets, (std::vector<std::string>{"trace.signals=[\"x.step\", 'y.step']", "scenario.name=\"a, b\"",
-                                                "k={a = 1, b = [2, 3]}", "s=\"say \\\"hi, there\\\"\"",
-                                                "t='c:\\d,e'"}));
+    EXPECT_EQ(v.sets,
+              (std::vector<std::string>{"trace.signals=[\"x.step\", 'y.step']", "scenario.name=\"a, b\"",
+                                        "k={a = 1, b = [2, 3]}", "s=\"say \\\"hi, there\\\"\"", "t='c:\\d,e'"}));
     // The first colon ends the name; later ones belong to a value.
     EXPECT_EQ(parse_variant("p: scenario.job = \"c:/jobs/a.nc\"", "--variant").sets.front(),
               "scenario.job=\"c:/jobs/a.nc\"");
@@ -51,8 +51,7 @@ TEST(Variant, CommasInsideQuotesAndBracketsStayInTheValue) {
 
 TEST(Variant, NameCharacters) {
     EXPECT_EQ(parse_variant("ber1e-5_crc+nak.v2: a=1", "--variant").name, "ber1e-5_crc+nak.v2");
-    EXPECT_NE(refusal("two words: a=1").find("the name \"two words\" holds a character other than"),
-              std::string::npos);
+    EXPECT_NE(refusal("two words: a=1").find("the name \"two words\" holds a character other than"), std::string::npos);
     EXPECT_NE(refusal("a/b: a=1").find("the name"), std::string::npos);
     EXPECT_NE(refusal(".hidden: a=1").find("the name"), std::string::npos);
     EXPECT_NE(refusal(": a=1").find("no name before the ':'"), std::string::npos);

@@ -18,9 +18,9 @@ struct CompareColumn {
     std::string variant{};  // the variant's name (--variant, compare.variants); empty: the scenario as it is
     std::vector<std::string> variant_sets{};  // its key=value, applied after the command's own --set
 
-    // Its name in headers, notes and plot titles: "fpga-uart", "fpga-uart: crc16".
+    // Its name in headers, notes and plot titles: "ARCH", or "ARCH: VARIANT".
     [[nodiscard]] std::string label() const;
-    // Its files' name in compare --out (REPORT.json, VCD, data/...): "fpga-uart", "fpga-uart.crc16".
+    // Its files' name in compare --out (report, VCD, data/...): "ARCH", or "ARCH.VARIANT".
     [[nodiscard]] std::string file_stem() const;
 };
 

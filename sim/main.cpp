@@ -178,8 +178,34 @@ std::string read_text(const std::string& path) {
     return text.str();
 }
 
-int cmd_compare(const Input& input, const std::string& archs, const std::vector<std::string>& sets,
+// The columns: each architecture of `list`, or with variants each variant on each architecture of `list` when
+// --arch was given, else on the scenario's own.
+std::vector<cnc::sim::CompareColumn> compare_columns(const std::vector<std::string>& list, bool arch_given,
+                                                     const std::vector<cnc::sim::Variant>& variants,
+                                                     const cnc::sim::Scenario& scenario) {
+    std::vector<cnc::sim::CompareColumn> columns;
+    if (variants.empty()) {
+        for (const std::string& a : list) columns.push_back({a, 0, nullptr, 0.0, "", {}});
+        return columns;
+    }
+    const std::vector<std::string> archs = arch_given ? list : std::vector<std::string>{scenario.architecture};
+    for (const std::string& a : archs) {
+        if (!cnc::sim::find_architecture(a, scenario.file + ": scenario.architecture").job_use().runs_job) {
+            throw cnc::BadInput("--variant", "compares the variants of an architecture that runs a job (" +
+                                                 job_architectures() + "); " + a + " does not");
+        }
+        for (const cnc::sim::Variant& v : variants) columns.push_back({a, 0, nullptr, 0.0, v.name, v.sets});
+    }
+    return columns;
+}
+
+int cmd_compare(const Input& input, const std::string& archs, bool arch_given,
+                const std::vector<std::string>& variant_texts, const std::vector<std::string>& sets,
                 const std::string& format_name, const std::string& report, const std::string& out_dir) {
+    // Bad syntax is said before anything is read or run.
+    std::vector<cnc::sim::Variant> variants;
+    for (const std::string& text : variant_texts) variants.push_back(cnc::sim::parse_variant(text, "--variant"));
+    cnc::sim::check_variant_names(variants, "--variant");
     std::vector<std::string> list;
     std::stringstream ss(archs);
     for (std::string a; std::getline(ss, a, ',');) {
@@ -191,11 +217,18 @@ int cmd_compare(const Input& input, const std::string& archs, const std::vector<
     }
     // Bad input is reported once, here, not once per child.
     const cnc::sim::Scenario scenario = load_input(input, sets);
+    // The command's --variant replace the scenario's, as its --set replace its keys.
+    std::string variants_from = "--variant";
+    if (variants.empty() && !scenario.compare_variants.empty()) {
+        variants = scenario.compare_variants;
+        variants_from = input.file + ": compare.variants";
+    }
+    const std::vector<cnc::sim::CompareColumn> columns = compare_columns(list, arch_given, variants, scenario);
     const cnc::sim::CompareInput compare_input{
         input.file, [&input](const std::vector<std::string>& overrides) { return load_input(input, overrides); }};
-    cnc::sim::check_compare_columns(compare_input, list, sets);
+    cnc::sim::check_compare_columns(compare_input, columns, sets, variants_from);
     if (!report.empty()) cnc::sim::check_output_path(report, "--report");
-    const bool with_baseline = cnc::sim::baseline_runs(compare_input, list, sets, std::cerr);
+    const bool with_baseline = cnc::sim::baseline_runs(compare_input, columns, sets, std::cerr);
     if (!out_dir.empty()) {
         cnc::sim::check_output_dir(out_dir, "--out");
         std::filesystem::create_directories(out_dir);
@@ -204,7 +237,7 @@ int cmd_compare(const Input& input, const std::string& archs, const std::vector<
     std::vector<std::string> child_input = {input.file};
     if (!input.machine.empty()) child_input.insert(child_input.end(), {"--machine", input.machine});
     const cnc::sim::Comparison comparison =
-        cnc::sim::run_compare(self, child_input, list, sets, out_dir, with_baseline);
+        cnc::sim::run_compare(self, child_input, columns, sets, out_dir, with_baseline);
     const cnc::sim::TableFormat format = format_name == "markdown" ? cnc::sim::TableFormat::Markdown
                                          : format_name == "csv"    ? cnc::sim::TableFormat::Csv
                                          : format_name == "json"   ? cnc::sim::TableFormat::Json
@@ -307,20 +340,32 @@ int dispatch(int argc, char* argv[]) {
 
     std::string archs = job_architectures(",", true);
     std::string table_format = "text";
-    CLI::App* compare =
-        app.add_subcommand("compare", "the same job and machine on several architectures, side by side");
+    std::vector<std::string> variant_texts;
+    CLI::App* compare = app.add_subcommand(
+        "compare", "the same job and machine on several architectures, or variants of one design, side by side");
     compare->add_option("file", input.file, input_help + "; its architecture is overridden")->required();
     compare->add_option("--machine", input.machine, machine_help);
     const cnc::sim::Architecture* baseline = cnc::sim::baseline_architecture();
     compare
         ->add_option("--arch", archs,
-                     "architectures, comma-separated" +
+                     "architectures, comma-separated; with --variant, each variant runs on each of them (default "
+                     "then: the scenario's architecture)" +
                          (baseline != nullptr ? "; " + baseline->name() +
                                                     ", the baseline of the rows measured over it, runs with every "
                                                     "comparison and is a column when named here"
                                               : std::string()))
         ->capture_default_str();
+    CLI::Option* arch_option = compare->get_option("--arch");
     compare->add_option("--set", sets, "override a scenario key: key=value (repeatable)");
+    // One variant per occurrence: its own commas are the variant's.
+    compare
+        ->add_option("--variant", variant_texts,
+                     std::string("a column of its own: the scenario with these keys set after every --set, written ") +
+                         cnc::sim::kVariantSyntax +
+                         " (repeatable; instead of the scenario's compare.variants); on the scenario's architecture, "
+                         "or on each of --arch")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     compare->add_option("--format", table_format, "table format")
         ->check(CLI::IsMember({"text", "markdown", "csv", "json"}))
         ->capture_default_str();
@@ -357,7 +402,10 @@ int dispatch(int argc, char* argv[]) {
     }
     try {
         if (run->parsed()) return cmd_run(input, sets, vcd, report, detail, progress, plots, plot_data, samples);
-        if (compare->parsed()) return cmd_compare(input, archs, sets, table_format, report, out_dir);
+        if (compare->parsed()) {
+            return cmd_compare(input, archs, arch_option->count() > 0, variant_texts, sets, table_format, report,
+                               out_dir);
+        }
         if (curve->parsed()) {
             return cnc::sim::cmd_motor_curve(scenario, curve_machine, sets, curve_axis, curve_csv, std::cout);
         }

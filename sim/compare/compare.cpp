@@ -181,29 +181,53 @@ std::string join(const std::vector<std::string>& parts, const char* sep) {
     return out;
 }
 
+// A variant's sets hold quotes ("crc16") and may hold a '|': quoted as each format reads them.
+std::string csv_quoted(const std::string& s) {
+    std::string out = "\"";
+    for (const char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + '"';
+}
+
+std::string md_cell(const std::string& s) {
+    std::string out;
+    for (const char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
+    return out;
+}
+
 std::vector<std::string> child_args(const std::string& self_exe, const std::vector<std::string>& input,
-                                    const std::string& arch, const std::vector<std::string>& sets,
+                                    const CompareColumn& c, const std::vector<std::string>& sets,
                                     const fs::path& report, const std::string& out_dir) {
     // Progress as whole lines (a line per 10 % of the child's estimate), named by architecture.
     std::vector<std::string> args = {self_exe, "run"};
     args.insert(args.end(), input.begin(), input.end());
-    args.insert(args.end(), {"--progress", "log", "--set", "scenario.architecture=" + arch});
-    for (const std::string& s : sets) {
-        args.push_back("--set");
-        args.push_back(s);
+    args.insert(args.end(), {"--progress", "log", "--set", "scenario.architecture=" + c.architecture});
+    // The variant's after the command's own: a key both set takes the variant's value.
+    for (const std::vector<std::string>* list : {&sets, &c.variant_sets}) {
+        for (const std::string& s : *list) {
+            args.push_back("--set");
+            args.push_back(s);
+        }
     }
     args.push_back("--report");
     args.push_back(report.string());
     if (!out_dir.empty()) {
         args.push_back("--vcd");
-        args.push_back((fs::path(out_dir) / (arch + ".vcd")).string());
+        args.push_back((fs::path(out_dir) / (c.file_stem() + ".vcd")).string());
         args.push_back("--plot-data");
-        args.push_back((fs::path(out_dir) / "data" / arch).string());
+        args.push_back((fs::path(out_dir) / "data" / c.file_stem()).string());
     }
     return args;
 }
 
 }  // namespace
+
+std::string CompareColumn::label() const {
+    return variant.empty() ? architecture : architecture + ": " + variant;
+}
+
+std::string CompareColumn::file_stem() const {
+    return variant.empty() ? architecture : architecture + "." + variant;
+}
 
 std::string status(const CompareColumn& c) {
     if (c.exit_code == 0) return "ok";
@@ -211,33 +235,37 @@ std::string status(const CompareColumn& c) {
 }
 
 Comparison run_compare(const std::string& self_exe, const std::vector<std::string>& input,
-                       const std::vector<std::string>& asked, const std::vector<std::string>& sets,
+                       const std::vector<CompareColumn>& asked, const std::vector<std::string>& sets,
                        const std::string& out_dir, bool with_baseline) {
-    // The baseline runs too when it is not asked for; its report alone, in the temporary folder.
-    std::vector<std::string> architectures = asked;
+    // The baseline runs too when it is not asked for as the scenario has it; its report alone, in the temporary
+    // folder.
+    std::vector<CompareColumn> columns = asked;
     const Architecture* baseline = baseline_architecture();
     const bool hidden_baseline =
-        with_baseline && baseline != nullptr && std::find(asked.begin(), asked.end(), baseline->name()) == asked.end();
-    if (hidden_baseline) architectures.push_back(baseline->name());
+        with_baseline && baseline != nullptr && std::none_of(asked.begin(), asked.end(), [&](const CompareColumn& c) {
+            return c.architecture == baseline->name() && c.variant.empty();
+        });
+    if (hidden_baseline) {
+        columns.emplace_back();
+        columns.back().architecture = baseline->name();
+    }
     std::string dir_template = (fs::temp_directory_path() / "cncsim-compare-XXXXXX").string();
     if (mkdtemp(dir_template.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder");
     const fs::path temp_dir = dir_template;
     const auto with_outputs = [&](std::size_t k) { return !out_dir.empty() && k < asked.size(); };
     const auto report_dir = [&](std::size_t k) { return with_outputs(k) ? fs::path(out_dir) : temp_dir; };
-    std::vector<CompareColumn> columns(architectures.size());
     std::map<pid_t, std::size_t> running;
-    std::vector<std::chrono::steady_clock::time_point> started(architectures.size());
+    std::vector<std::chrono::steady_clock::time_point> started(columns.size());
     const std::size_t cores = std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
     std::size_t next = 0;
     std::size_t done = 0;
-    while (done < architectures.size()) {
-        while (next < architectures.size() && running.size() < cores) {
-            const std::string& arch = architectures[next];
-            columns[next].architecture = arch;
-            std::cerr << "cncsim compare: " << arch << (next < asked.size() ? "" : " (baseline)") << " running"
+    while (done < columns.size()) {
+        while (next < columns.size() && running.size() < cores) {
+            const CompareColumn& c = columns[next];
+            std::cerr << "cncsim compare: " << c.label() << (next < asked.size() ? "" : " (baseline)") << " running"
                       << std::endl;
             started[next] = std::chrono::steady_clock::now();
-            running[spawn_child(child_args(self_exe, input, arch, sets, report_dir(next) / (arch + ".json"),
+            running[spawn_child(child_args(self_exe, input, c, sets, report_dir(next) / (c.file_stem() + ".json"),
                                            with_outputs(next) ? out_dir : ""))] = next;
             ++next;
         }
@@ -251,7 +279,7 @@ Comparison run_compare(const std::string& self_exe, const std::vector<std::strin
         ++done;
         c.exit_code = exit_code;
         c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started[k]).count();
-        std::ifstream in(report_dir(k) / (c.architecture + ".json"));
+        std::ifstream in(report_dir(k) / (c.file_stem() + ".json"));
         if (in) c.report = nlohmann::json::parse(in, nullptr, false);
         if (c.report.is_discarded()) c.report = nullptr;
         std::string ratio;
@@ -259,9 +287,9 @@ Comparison run_compare(const std::string& self_exe, const std::vector<std::strin
             const double sim_s = c.report["metrics"]["job"]["job_time_s"].get<double>();
             ratio = fmt::format(FMT_STRING(" ({:.3f} s simulated, {:.1f}x real time)"), sim_s, sim_s / c.wall_s);
         }
-        std::cerr << "cncsim compare: " << c.architecture << " " << status(c)
+        std::cerr << "cncsim compare: " << c.label() << " " << status(c)
                   << fmt::format(FMT_STRING(" after {:.1f} s"), c.wall_s) << ratio << " [" << done << '/'
-                  << architectures.size() << " done]" << std::endl;
+                  << columns.size() << " done]" << std::endl;
     }
     fs::remove_all(temp_dir);
     Comparison out;
@@ -277,7 +305,7 @@ const CompareColumn* Comparison::baseline_column() const {
     if (baseline) return &*baseline;
     const Architecture* b = baseline_architecture();
     for (const CompareColumn& c : columns) {
-        if (b != nullptr && c.architecture == b->name()) return &c;
+        if (b != nullptr && c.architecture == b->name() && c.variant.empty()) return &c;
     }
     return nullptr;
 }
@@ -296,7 +324,7 @@ std::vector<std::string> zero_notes(const Comparison& comparison) {
     std::vector<std::string> notes;
     for (const CompareColumn& c : comparison.columns) {
         if (c.report.is_null() || c.exit_code != 0) continue;
-        for (const std::string& n : metrics::zero_by_construction(c.report)) notes.push_back(c.architecture + ": " + n);
+        for (const std::string& n : metrics::zero_by_construction(c.report)) notes.push_back(c.label() + ": " + n);
     }
     return notes;
 }
@@ -321,6 +349,15 @@ std::vector<TableRow> table_rows(const Comparison& comparison) {
         rows.push_back(o);
     }
     return rows;
+}
+
+std::optional<TableRow> sets_row(const Comparison& comparison) {
+    const std::vector<CompareColumn>& columns = comparison.columns;
+    const auto variant = [](const CompareColumn& c) { return !c.variant.empty(); };
+    if (std::none_of(columns.begin(), columns.end(), variant)) return std::nullopt;
+    TableRow r{"variant sets", {}, std::vector<bool>(columns.size(), false), false};
+    for (const CompareColumn& c : columns) r.cells.push_back(c.variant_sets.empty() ? "-" : join(c.variant_sets, ", "));
+    return r;
 }
 
 nlohmann::json compare_json(const Comparison& comparison) {
@@ -352,6 +389,9 @@ nlohmann::json compare_json(const Comparison& comparison) {
         }
         nlohmann::json column = {
             {"architecture", c.architecture},
+            {"label", c.label()},
+            {"variant", c.variant.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.variant)},
+            {"variant_sets", c.variant_sets},
             {"status", status(c)},
             {"exit_code", c.exit_code},
             {"machine", c.report.is_null()
@@ -378,7 +418,7 @@ std::string compare_table(const Comparison& comparison, TableFormat format_kind)
     if (format_kind == TableFormat::Json) return compare_json(comparison).dump(2) + "\n";
     const std::vector<CompareColumn>& columns = comparison.columns;
     std::vector<std::string> head = {"metric"};
-    for (const CompareColumn& c : columns) head.push_back(c.architecture);
+    for (const CompareColumn& c : columns) head.push_back(c.label());
     std::vector<std::vector<std::string>> rows = {head};
     const bool md = format_kind == TableFormat::Markdown;
     std::ostringstream os;
@@ -386,15 +426,20 @@ std::string compare_table(const Comparison& comparison, TableFormat format_kind)
         head.push_back("best");
         rows = {head};
     }
-    for (const TableRow& tr : table_rows(comparison)) {
+    std::vector<TableRow> table = table_rows(comparison);
+    // A row in a CSV file, which is read by program; under the table for a reader, where a variant's sets would
+    // widen its column past the screen.
+    const std::optional<TableRow> sets = sets_row(comparison);
+    if (sets && format_kind == TableFormat::Csv) table.insert(table.begin() + 1, *sets);
+    for (const TableRow& tr : table) {
         std::vector<std::string> r = {tr.label};
         std::vector<std::string> best_names;
         for (std::size_t i = 0; i < tr.cells.size(); ++i) {
-            if (tr.best[i]) best_names.push_back(columns[i].architecture);
+            if (tr.best[i]) best_names.push_back(columns[i].label());
             if (format_kind == TableFormat::Csv) {
                 r.push_back(tr.cells[i]);
             } else if (md) {
-                r.push_back(tr.best[i] ? "**" + tr.cells[i] + "**" : tr.cells[i]);
+                r.push_back(tr.best[i] ? "**" + tr.cells[i] + "**" : md_cell(tr.cells[i]));
             } else {
                 r.push_back(tr.cells[i] + (tr.best[i] ? "*" : " "));
             }
@@ -404,7 +449,7 @@ std::string compare_table(const Comparison& comparison, TableFormat format_kind)
     }
     if (format_kind == TableFormat::Csv) {
         for (const auto& r : rows) {
-            for (std::size_t i = 0; i < r.size(); ++i) os << (i ? "," : "") << '"' << r[i] << '"';
+            for (std::size_t i = 0; i < r.size(); ++i) os << (i ? "," : "") << csv_quoted(r[i]);
             os << '\n';
         }
         return os.str();
@@ -428,6 +473,14 @@ std::string compare_table(const Comparison& comparison, TableFormat format_kind)
         }
     }
     if (!md) os << "* best of the row (smallest magnitude)\n";
+    if (sets) {
+        for (std::size_t i = 0; i < columns.size(); ++i) {
+            const std::string what =
+                sets->cells[i] == "-" ? "the scenario as it is" : "--set " + join(columns[i].variant_sets, " --set ");
+            os << (md ? "- " : "") << (md ? "**" + columns[i].label() + "**" : columns[i].label()) << ": "
+               << (md ? md_cell(what) : what) << '\n';
+        }
+    }
     os << not_compared_note() << '\n';
     for (const std::string& n : zero_notes(comparison)) os << n << '\n';
     return os.str();

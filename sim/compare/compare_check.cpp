@@ -24,8 +24,21 @@ std::optional<std::string> why_not_runnable(const CompareInput& input, const std
     return std::nullopt;
 }
 
-void check_compare_columns(const CompareInput& input, const std::vector<std::string>& architectures,
-                           const std::vector<std::string>& sets) {
+void check_compare_columns(const CompareInput& input, const std::vector<CompareColumn>& columns,
+                           const std::vector<std::string>& sets, const std::string& variants_from) {
+    std::vector<std::string> architectures;
+    for (const CompareColumn& c : columns) {
+        if (c.variant.empty()) {
+            architectures.push_back(c.architecture);
+            continue;
+        }
+        std::vector<std::string> with_variant = sets;
+        with_variant.insert(with_variant.end(), c.variant_sets.begin(), c.variant_sets.end());
+        // A variant is the user's own design: the first that cannot run is named, whatever the others do.
+        if (const std::optional<std::string> why = why_not_runnable(input, c.architecture, with_variant))
+            throw BadInput(variants_from + " " + c.variant,
+                           "compare " + input.name + ": " + c.label() + " cannot run it: " + *why);
+    }
     std::string runnable;              // "a,b": for --arch
     std::string refused;               // "ARCH cannot run it: why; ..."
     std::vector<std::string> reasons;  // each different reason once
@@ -47,11 +60,14 @@ void check_compare_columns(const CompareInput& input, const std::vector<std::str
     throw BadInput("--arch", what + "; compare those that can with --arch " + runnable);
 }
 
-bool baseline_runs(const CompareInput& input, const std::vector<std::string>& architectures,
+bool baseline_runs(const CompareInput& input, const std::vector<CompareColumn>& columns,
                    const std::vector<std::string>& sets, std::ostream& log) {
     const Architecture* baseline = baseline_architecture();
     if (baseline == nullptr) return false;
-    if (std::find(architectures.begin(), architectures.end(), baseline->name()) != architectures.end()) return true;
+    const auto is_baseline = [&](const CompareColumn& c) {
+        return c.architecture == baseline->name() && c.variant.empty();
+    };
+    if (std::any_of(columns.begin(), columns.end(), is_baseline)) return true;
     const std::optional<std::string> why = why_not_runnable(input, baseline->name(), sets);
     if (why) log << "cncsim compare: no rows over " << baseline->name() << ", which cannot run it: " << *why << '\n';
     return !why;

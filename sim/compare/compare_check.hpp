@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "compare/compare.hpp"
+
 namespace cnc::sim {
 
 struct Scenario;
@@ -24,14 +26,16 @@ struct CompareInput {
 [[nodiscard]] std::optional<std::string> why_not_runnable(const CompareInput& input, const std::string& architecture,
                                                           const std::vector<std::string>& sets);
 
-// Throws cnc::BadInput when any of `architectures` cannot run the scenario: the message once when they all give the
-// same one, else each architecture with its own, and which of them could run it (for --arch).
-void check_compare_columns(const CompareInput& input, const std::vector<std::string>& architectures,
-                           const std::vector<std::string>& sets);
+// Throws cnc::BadInput when any column cannot run the scenario. Columns of architectures: the message once when they
+// all give the same one, else each architecture with its own, and which of them could run it (for --arch). A
+// variant's column: the first that cannot, named as `variants_from` gave it (--variant, or the scenario's
+// compare.variants) with the reason (an unknown key lists the allowed ones).
+void check_compare_columns(const CompareInput& input, const std::vector<CompareColumn>& columns,
+                           const std::vector<std::string>& sets, const std::string& variants_from = "--variant");
 
-// Whether compare runs the baseline (Architecture::baseline) beside `architectures`, when it is not one of them:
+// Whether compare runs the baseline (Architecture::baseline) beside `columns`, when none is it without a variant:
 // not when it cannot run the scenario, which is then compared without the rows over it (said on `log`).
-[[nodiscard]] bool baseline_runs(const CompareInput& input, const std::vector<std::string>& architectures,
+[[nodiscard]] bool baseline_runs(const CompareInput& input, const std::vector<CompareColumn>& columns,
                                  const std::vector<std::string>& sets, std::ostream& log);
 
 }  // namespace cnc::sim

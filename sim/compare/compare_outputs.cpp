@@ -37,9 +37,13 @@ void write_compare_outputs(const Comparison& comparison, const std::string& scen
     write_file(dir / "table.json", compare_table(comparison, TableFormat::Json));
 
     const auto start = std::chrono::steady_clock::now();
-    std::vector<std::string> archs;
-    for (const CompareColumn& c : comparison.columns) archs.push_back(c.architecture);
-    const std::vector<Plot> plots = render_plots(load_plot_runs(dir, archs), dir);
+    std::vector<PlotSource> sources;
+    const std::vector<std::string> colours = column_colours(comparison.columns);
+    for (std::size_t k = 0; k < comparison.columns.size(); ++k) {
+        const CompareColumn& c = comparison.columns[k];
+        sources.push_back({c.file_stem(), c.label(), colours[k]});
+    }
+    const std::vector<Plot> plots = render_plots(load_plot_runs(dir, sources), dir);
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
     std::cerr << "cncsim compare: " << plots.size()
               << fmt::format(FMT_STRING(" plots rendered in {:.2f} s"), wall.count()) << std::endl;

@@ -1,6 +1,9 @@
 #include "compare/html_report.hpp"
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -40,9 +43,10 @@ constexpr const char* kStyle =
 
 void table_html(std::ostream& os, const Comparison& comparison) {
     os << "<table>\n<tr><th>metric</th>";
-    for (const CompareColumn& c : comparison.columns) {
-        os << "<th class=\"arch\" style=\"border-bottom-color:" << arch_colour(c.architecture) << "\">"
-           << escape(c.architecture) << "</th>";
+    const std::vector<std::string> colours = column_colours(comparison.columns);
+    for (std::size_t k = 0; k < comparison.columns.size(); ++k) {
+        os << "<th class=\"arch\" style=\"border-bottom-color:" << colours[k] << "\">"
+           << escape(comparison.columns[k].label()) << "</th>";
     }
     os << "</tr>\n";
     for (const TableRow& r : table_rows(comparison)) {
@@ -59,9 +63,11 @@ void table_html(std::ostream& os, const Comparison& comparison) {
 }
 
 void warnings_html(std::ostream& os, const std::vector<CompareColumn>& columns) {
-    for (const CompareColumn& c : columns) {
-        os << "<h3 class=\"arch\" style=\"border-bottom-color:" << arch_colour(c.architecture) << "\">"
-           << escape(c.architecture) << ": " << escape(status(c)) << "</h3>\n";
+    const std::vector<std::string> colours = column_colours(columns);
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        const CompareColumn& c = columns[k];
+        os << "<h3 class=\"arch\" style=\"border-bottom-color:" << colours[k] << "\">" << escape(c.label()) << ": "
+           << escape(status(c)) << "</h3>\n";
         if (!c.report.is_null() && c.report.contains("failure")) {
             os << "<p><b>The run failed:</b> " << escape(c.report["failure"].get<std::string>()) << "</p>\n";
         } else if (c.exit_code != 0) {
@@ -90,7 +96,33 @@ void warnings_html(std::ostream& os, const std::vector<CompareColumn>& columns) 
     }
 }
 
+// Which columns run with the scenario's own architecture and keys, and which with a variant's.
+void columns_html(std::ostream& os, const std::vector<CompareColumn>& columns) {
+    if (std::all_of(columns.begin(), columns.end(), [](const CompareColumn& c) { return c.variant.empty(); })) {
+        os << "; every architecture runs it with only <code>scenario.architecture</code> changed.</p>\n";
+        return;
+    }
+    os << "; each column runs it on its architecture with its variant's keys set after those:</p>\n<ul>\n";
+    for (const CompareColumn& c : columns) {
+        os << "<li><b>" << escape(c.label()) << "</b>:";
+        for (const std::string& s : c.variant_sets) os << " <code>--set " << escape(s) << "</code>";
+        os << (c.variant_sets.empty() ? " the scenario as it is" : "") << "</li>\n";
+    }
+    os << "</ul>\n";
+}
+
 }  // namespace
+
+std::vector<std::string> column_colours(const std::vector<CompareColumn>& columns) {
+    std::map<std::string, std::size_t> per_arch;
+    for (const CompareColumn& c : columns) ++per_arch[c.architecture];
+    std::map<std::string, std::size_t> seen;
+    std::vector<std::string> out;
+    for (const CompareColumn& c : columns) {
+        out.push_back(variant_colour(arch_colour(c.architecture), seen[c.architecture]++, per_arch[c.architecture]));
+    }
+    return out;
+}
 
 std::string html_report(const Comparison& comparison, const std::vector<Plot>& plots, const HtmlJob& job) {
     const std::vector<CompareColumn>& columns = comparison.columns;
@@ -101,18 +133,17 @@ std::string html_report(const Comparison& comparison, const std::vector<Plot>& p
        << "</h1>\n<h2>Machine and job</h2>\n"
        << "<p>Scenario <code>" << escape(job.scenario_file) << "</code>";
     for (const std::string& o : job.overrides) os << ", <code>--set " << escape(o) << "</code>";
-    os << "; every architecture runs it with only <code>scenario.architecture</code> changed.</p>\n<pre>"
-       << escape(job.scenario_text) << "</pre>\n<p>Job <code>" << escape(job.job_file) << "</code>, " << job.job_lines
-       << " lines:</p>\n<pre>" << escape(job.job_text) << "</pre>\n<h2>Comparison</h2>\n";
+    columns_html(os, columns);
+    os << "<pre>" << escape(job.scenario_text) << "</pre>\n<p>Job <code>" << escape(job.job_file) << "</code>, "
+       << job.job_lines << " lines:</p>\n<pre>" << escape(job.job_text) << "</pre>\n<h2>Comparison</h2>\n";
     table_html(os, comparison);
     os << "<p>The same table: <a href=\"table.md\">table.md</a>, <a href=\"table.csv\">table.csv</a>, "
-          "<a href=\"table.json\">table.json</a>. Each architecture's report and trace:";
+          "<a href=\"table.json\">table.json</a>. Each column's report and trace:";
     for (const CompareColumn& c : columns) {
-        if (!c.report.is_null()) {
-            os << " <a href=\"" << escape(c.architecture) << ".json\">" << escape(c.architecture) << ".json</a>";
-        }
+        const std::string stem = escape(c.file_stem());
+        if (!c.report.is_null()) os << " <a href=\"" << stem << ".json\">" << stem << ".json</a>";
         if (c.exit_code != 2) {  // bad input: refused before a trace was opened
-            os << " <a href=\"" << escape(c.architecture) << ".vcd\">" << escape(c.architecture) << ".vcd</a>";
+            os << " <a href=\"" << stem << ".vcd\">" << stem << ".vcd</a>";
         }
     }
     os << "</p>\n<h2>Plots</h2>\n";

@@ -18,6 +18,10 @@ struct HtmlJob {
     std::size_t job_lines = 0;
 };
 
+// Each column's colour in the plots and on the page: its architecture's, or for several variants of one
+// architecture a colour of its own around it (variant_colour).
+std::vector<std::string> column_colours(const std::vector<CompareColumn>& columns);
+
 std::string html_report(const Comparison& comparison, const std::vector<Plot>& plots, const HtmlJob& job);
 
 }  // namespace cnc::sim

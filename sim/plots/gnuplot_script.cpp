@@ -89,8 +89,8 @@ Curves curves(const std::vector<PlotRun>& runs, const fs::path& out_dir, const s
         const ColumnRange y = column_range(out_dir / file_of(r, file), ycol);
         if (y.rows == 0) continue;
         c.y = merge(c.y, y);
-        c.clauses.push_back(quoted(file_of(r, file)) + " using " + using_style + " lc rgb " +
-                            quoted(arch_colour(r.architecture)) + " title " + quoted(r.architecture + suffix));
+        c.clauses.push_back(quoted(file_of(r, file)) + " using " + using_style + " lc rgb " + quoted(r.colour) +
+                            " title " + quoted(r.label + suffix));
     }
     return c;
 }

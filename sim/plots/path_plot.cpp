@@ -98,7 +98,7 @@ std::vector<std::string> zoom_title(std::size_t number, const PlotRun& r, const 
     const nlohmann::json& w = r.meta["worst_contour"];
     const bool rapid = w.value("rapid", false);
     std::vector<std::string> title = {
-        fmt::format(FMT_STRING("{}: {}, worst {} point"), number, r.architecture, rapid ? "rapid" : "cutting"),
+        fmt::format(FMT_STRING("{}: {}, worst {} point"), number, r.label, rapid ? "rapid" : "cutting"),
         "contour error " + figure_um(w) + fmt::format(FMT_STRING(", line {}"), w.value("line", 0))};
     // Larger than the worst cut: on a rapid.
     const nlohmann::json& all = r.meta.value("contour_max", nlohmann::json());
@@ -144,7 +144,7 @@ std::vector<Zoom> zooms(const std::vector<PlotRun>& runs, const fs::path& out_di
         std::vector<std::string> away;
         for (std::size_t k = 0; k < runs.size(); ++k) {
             if (std::isfinite(distance_mm[k]) && distance_mm[k] > z.half_mm) {
-                away.push_back(fmt::format(FMT_STRING("{} ({:.3g} mm)"), runs[k].architecture, distance_mm[k]));
+                away.push_back(fmt::format(FMT_STRING("{} ({:.3g} mm)"), runs[k].label, distance_mm[k]));
             }
         }
         z.title = zoom_title(out.size() + 1, r, away);
@@ -170,9 +170,9 @@ PanelCurves clauses(const std::vector<PlotRun>& runs, const fs::path& out_dir, c
         const std::string file = gp::quoted(gp::file_of(r, tool_file));
         const std::string style = fmt::format(FMT_STRING(" with lines lw {:g} dt {} lc rgb "), kRunWidth,
                                               kRunStyles[k % std::size(kRunStyles)].dash) +
-                                  gp::quoted(arch_colour(r.architecture));
+                                  gp::quoted(r.colour);
         out.push_back(file + fmt::format(FMT_STRING(" using {}:{}"), x_col, x_col + 1) + style + " title " +
-                      gp::quoted(r.architecture));
+                      gp::quoted(r.label));
         on_top.push_back(file +
                          fmt::format(FMT_STRING(" using {0}:(on_top(${0}, ${1}) == {2} ? ${1} : NaN)"), x_col,
                                      x_col + 1, on_top.size()) +

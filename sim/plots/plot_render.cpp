@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -106,9 +107,8 @@ std::optional<Script> velocity_plot(const std::vector<PlotRun>& runs, const fs::
          << "\nset grid\nset key outside right top vertical box\n";
     for (const PlotRun* r : drawn) {
         const std::string file = quoted(file_of(*r, "velocity.dat"));
-        body << "set title " << quoted(r->architecture) << "\n"
-             << plot_line({file + " using 1:3 with lines lw 1 lc rgb " + quoted(arch_colour(r->architecture)) +
-                               " title 'carriage'",
+        body << "set title " << quoted(r->label) << "\n"
+             << plot_line({file + " using 1:3 with lines lw 1 lc rgb " + quoted(r->colour) + " title 'carriage'",
                            file + " using 1:2 with lines lw 1.5 dt 2 lc rgb " + quoted(gp::kProgramColour) +
                                " title 'commanded'"});
     }
@@ -131,8 +131,8 @@ std::optional<Script> dead_time_plot(const std::vector<PlotRun>& runs, const fs:
     for (const PlotRun& r : runs) {
         const std::string file = file_of(r, "dead_time.dat");
         const ColumnRange total = column_range(out_dir / file, 4);
-        body << "set title " << quoted(r.architecture + fmt::format(FMT_STRING(": {} gaps"), total.rows))
-             << "\nset xlabel " << quoted(s.plot.xlabel) << "\nset ylabel " << quoted(s.plot.ylabel)
+        body << "set title " << quoted(r.label + fmt::format(FMT_STRING(": {} gaps"), total.rows)) << "\nset xlabel "
+             << quoted(s.plot.xlabel) << "\nset ylabel " << quoted(s.plot.ylabel)
              << "\nset grid ytics\nset key outside right top\nset style fill solid 0.9 "
              << (total.rows > kMaxBorderedBars ? "noborder" : "border -1") << "\nset boxwidth 0.8\nset yrange [0:*]\n";
         if (total.rows == 0) {
@@ -161,8 +161,8 @@ std::optional<Script> dead_time_plot(const std::vector<PlotRun>& runs, const fs:
                               quoted(kInsideColour) + " title 'inside moves'");
         }
         if (causes.empty() && between) {
-            clauses.push_back(quoted(file) + " using 1:($3 == 0 ? $4 : NaN) with boxes lc rgb " +
-                              quoted(arch_colour(r.architecture)) + " title 'between moves'");
+            clauses.push_back(quoted(file) + " using 1:($3 == 0 ? $4 : NaN) with boxes lc rgb " + quoted(r.colour) +
+                              " title 'between moves'");
         }
         if (!causes.empty() && between && inside) {
             clauses.push_back(quoted(file) +
@@ -217,8 +217,7 @@ std::vector<Script> series_plots(const std::vector<PlotRun>& runs, const fs::pat
             for (const nlohmann::json& m : e.value("marks", nlohmann::json::array()))
                 marks[quantity][m["value"].get<double>()] = m["label"].get<std::string>();
             clauses[quantity].push_back(quoted(file) + " using 1:2 with steps lw 1.5 dt " + std::to_string(dash) +
-                                        " lc rgb " + quoted(arch_colour(r.architecture)) + " title " +
-                                        quoted(r.architecture + ", axis " + axis));
+                                        " lc rgb " + quoted(r.colour) + " title " + quoted(r.label + ", axis " + axis));
         }
     }
     std::vector<Script> out;
@@ -287,13 +286,82 @@ std::string arch_colour(const std::string& architecture) {
     return find_architecture(architecture, "plot of " + architecture).plot_colour();
 }
 
-std::vector<PlotRun> load_plot_runs(const fs::path& out_dir, const std::vector<std::string>& architectures) {
+namespace {
+
+struct Hsl {
+    double h_deg, s, l;
+};
+
+Hsl to_hsl(const std::string& hex) {
+    double c[3];
+    for (int i = 0; i < 3; ++i) c[i] = std::stoi(hex.substr(1 + 2 * i, 2), nullptr, 16) / 255.0;
+    const double hi = std::max({c[0], c[1], c[2]});
+    const double lo = std::min({c[0], c[1], c[2]});
+    const double l = (hi + lo) / 2.0;
+    if (hi == lo) return {0.0, 0.0, l};
+    const double d = hi - lo;
+    const double s = l > 0.5 ? d / (2.0 - hi - lo) : d / (hi + lo);
+    double h = hi == c[0]   ? (c[1] - c[2]) / d + (c[1] < c[2] ? 6.0 : 0.0)
+               : hi == c[1] ? (c[2] - c[0]) / d + 2.0
+                            : (c[0] - c[1]) / d + 4.0;
+    return {h * 60.0, s, l};
+}
+
+std::string to_hex(Hsl x) {
+    const double h = std::fmod(std::fmod(x.h_deg, 360.0) + 360.0, 360.0) / 360.0;
+    const double q = x.l < 0.5 ? x.l * (1.0 + x.s) : x.l + x.s - x.l * x.s;
+    const double p = 2.0 * x.l - q;
+    const auto channel = [&](double t) {
+        t = t < 0.0 ? t + 1.0 : t > 1.0 ? t - 1.0 : t;
+        const double v = t < 1.0 / 6.0   ? p + (q - p) * 6.0 * t
+                         : t < 0.5       ? q
+                         : t < 2.0 / 3.0 ? p + (q - p) * (2.0 / 3.0 - t) * 6.0
+                                         : p;
+        return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+    };
+    return fmt::format(FMT_STRING("#{:02x}{:02x}{:02x}"), channel(h + 1.0 / 3.0), channel(h), channel(h - 1.0 / 3.0));
+}
+
+// Hue apart per variant, and the widest spread: within it the variants stay near their architecture's colour.
+constexpr double kVariantHueStepDeg = 36.0;
+constexpr double kVariantHueSpanDeg = 160.0;
+// Two lightnesses alternating between neighbours, each lowered where the hue is bright (yellow, cyan) until the
+// colour's luma (Rec. 601: 0.299 R + 0.587 G + 0.114 B) is at most its cap, so that a 1 px line shows on white.
+constexpr double kVariantDarkL = 0.34;
+constexpr double kVariantLightL = 0.52;
+constexpr double kDarkLumaCap = 0.36;
+constexpr double kLightLumaCap = 0.52;
+constexpr double kLightnessStep = 0.01;
+constexpr double kMinVariantSaturation = 0.7;
+// A colour without hue (the ideal's black): greys from this dark to this light.
+constexpr double kGreyDarkL = 0.0;
+constexpr double kGreyLightL = 0.5;
+
+}  // namespace
+
+std::string variant_colour(const std::string& base, std::size_t k, std::size_t n) {
+    if (n <= 1) return base;
+    const double at = static_cast<double>(k) / static_cast<double>(n - 1);  // 0 .. 1
+    const Hsl b = to_hsl(base);
+    if (b.s < 0.05) return to_hex({0.0, 0.0, kGreyDarkL + (kGreyLightL - kGreyDarkL) * at});
+    const double span = std::min(kVariantHueStepDeg * static_cast<double>(n - 1), kVariantHueSpanDeg);
+    const bool dark = k % 2 == 0;
+    Hsl c{b.h_deg + (at - 0.5) * span, std::max(b.s, kMinVariantSaturation), dark ? kVariantDarkL : kVariantLightL};
+    const auto luma = [](const std::string& hex) {
+        const auto ch = [&](int i) { return std::stoi(hex.substr(1 + 2 * i, 2), nullptr, 16) / 255.0; };
+        return 0.299 * ch(0) + 0.587 * ch(1) + 0.114 * ch(2);
+    };
+    while (luma(to_hex(c)) > (dark ? kDarkLumaCap : kLightLumaCap)) c.l -= kLightnessStep;
+    return to_hex(c);
+}
+
+std::vector<PlotRun> load_plot_runs(const fs::path& out_dir, const std::vector<PlotSource>& sources) {
     std::vector<PlotRun> runs;
-    for (const std::string& a : architectures) {
-        const std::string data_dir = "data/" + a;
+    for (const PlotSource& s : sources) {
+        const std::string data_dir = "data/" + s.file_stem;
         std::ifstream in(out_dir / data_dir / "meta.json");
         if (!in) continue;  // a run refused before simulating wrote no data
-        runs.push_back({a, data_dir, nlohmann::json::parse(in)});
+        runs.push_back({s.label, s.colour, data_dir, nlohmann::json::parse(in)});
     }
     return runs;
 }

@@ -10,9 +10,17 @@
 namespace cnc::sim {
 
 struct PlotRun {
-    std::string architecture;
-    std::string data_dir;  // relative to the output folder: where write_plot_data wrote (data/<architecture>)
+    std::string label;     // in titles and keys: the architecture, or "architecture: variant"
+    std::string colour;    // its curves' and bars' colour (#rrggbb)
+    std::string data_dir;  // relative to the output folder: where write_plot_data wrote (data/<file stem>)
     nlohmann::json meta;   // its meta.json
+};
+
+// A run to plot: its folder data/<file_stem> under the output folder, and how it is shown.
+struct PlotSource {
+    std::string file_stem;
+    std::string label;
+    std::string colour;
 };
 
 struct Plot {
@@ -22,10 +30,13 @@ struct Plot {
 
 // An architecture's colour in every plot and on the HTML page (Architecture::plot_colour).
 std::string arch_colour(const std::string& architecture);
+// The colour of the k-th of n variants of an architecture whose colour is `base` (#rrggbb): `base` itself for one;
+// for more, hues spread around base's (greys from dark to light for a colour without hue) at two alternating
+// lightnesses dark enough for a thin line on white, so that neighbours differ in both.
+std::string variant_colour(const std::string& base, std::size_t k, std::size_t n);
 
-// Reads data_dir/meta.json of each architecture under `out_dir`.
-std::vector<PlotRun> load_plot_runs(const std::filesystem::path& out_dir,
-                                    const std::vector<std::string>& architectures);
+// Reads data/<file_stem>/meta.json of each source under `out_dir` (a run refused before simulating has none).
+std::vector<PlotRun> load_plot_runs(const std::filesystem::path& out_dir, const std::vector<PlotSource>& sources);
 
 // Writes the scripts, runs gnuplot in out_dir and returns the plots it drew (a plot with no data in any run is left
 // out; the load angle and lost steps plots exist only when a run reports them). Also writes plots.json, the list

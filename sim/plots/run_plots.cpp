@@ -13,7 +13,7 @@ void write_run_plots(const RunOutcome& out, const Scenario& s, const std::string
     if (plots_dir.empty()) return;
     const std::filesystem::path dir(plots_dir);
     write_plot_data(s.architecture, out.arch, out.metrics, dir / "data" / s.architecture);
-    render_plots(load_plot_runs(dir, {s.architecture}), dir);
+    render_plots(load_plot_runs(dir, {{s.architecture, s.architecture, arch_colour(s.architecture)}}), dir);
 }
 
 }  // namespace cnc::sim

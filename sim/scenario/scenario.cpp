@@ -169,6 +169,18 @@ void check_fault_links(const KeyReader& r, const FaultSettings& f, const Archite
     }
 }
 
+// A study in one file: the variants are checked when the scenario is read, so that a bad one is named with its
+// line by `run` too, not only by the compare that would use it.
+void read_compare_variants(KeyReader& r, Scenario& s) {
+    const std::vector<std::string> texts = r.get_string_list(
+        "compare.variants",
+        std::string("the variants `cncsim compare` runs this scenario as when no --variant is given, a column each "
+                    "(docs/compare.md, Variants), each ") +
+            kVariantSyntax + "; []: none, the architectures are compared");
+    for (const std::string& t : texts) s.compare_variants.push_back(parse_variant(t, r.where("compare.variants")));
+    check_variant_names(s.compare_variants, r.where("compare.variants"));
+}
+
 void read_trace_window(KeyReader& r, Scenario& s) {
     s.trace_signals = r.get_string_list(
         "trace.signals",
@@ -304,6 +316,7 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
         "nearest tick");
     if (timescale != "auto") s.vcd_timescale_fs = *metrics::parse_vcd_timescale_fs(timescale);
     read_trace_window(r, s);
+    read_compare_variants(r, s);
     s.report_path = r.get_string("trace.report", "", "JSON report to write; empty: none");
     s.detail = r.get_bool("trace.detail", false,
                           "the JSON report also holds the logs that grow with steps, servo periods and packets "

@@ -18,6 +18,7 @@
 #include "scenario/fault_settings.hpp"
 #include "scenario/key_reader.hpp"
 #include "scenario/mechanics_settings.hpp"
+#include "scenario/variant.hpp"
 
 namespace cnc::sim {
 
@@ -48,6 +49,9 @@ struct Scenario {
     std::optional<TimePs> trace_to_ps;             // trace.to_s; none: the end of the run
     std::string report_path;                       // empty: no JSON file
     bool detail = false;  // the report also holds the logs that grow with steps, periods and packets
+    // compare.variants: the columns `cncsim compare` makes of this scenario when no --variant is given (a run
+    // reads them only to check them).
+    std::vector<Variant> compare_variants;
     ProgressStyle progress = ProgressStyle::Off;  // set by the CLI from stderr, not a scenario key
     // Set by the CLI for --plots, --plot-data and --samples, which read every edge and tool sample after the run:
     // the logs are then kept whole instead of being dropped as the metrics stream (docs/streaming.md).

@@ -1,5 +1,6 @@
 #include "uart/faulty_line.hpp"
 
+#include <algorithm>
 #include <bitset>
 
 #include "common/sc_time.hpp"
@@ -46,6 +47,10 @@ bool FaultyLine::carry_frame() {
     const TimePs t_next_frame = t0 + m_clock.mid_bit(m_bits - 1);
     int bit = 0;
     for (;;) {
+        // Woken at a bit boundary, the line waits one delta: an edge of the sender due at the same instant is then
+        // in `in`, and `out` changes once, not through a glitch of zero width (which a receiver running ahead of
+        // the simulation time, models/fpga/rtl_loop.hpp, would see after it was promised no change).
+        if (!in.event()) sc_core::wait(sc_core::SC_ZERO_TIME);
         const TimePs now = now_ps();
         if (now >= t_next_frame && in.negedge()) return true;
         if (now >= t_end) break;
@@ -54,10 +59,17 @@ bool FaultyLine::carry_frame() {
         out.write(f.lost || (in.read() != inverted));
         // A frame left whole needs no wake but the sender's edges.
         const TimePs wake = f.hit() ? t0 + m_clock.bit_edge(bit + 1) : t_end;
+        m_wake_ps = f.hit() ? wake : -1;
         sc_core::wait(ps_time(wake - now), in.value_changed_event());
     }
+    m_wake_ps = -1;
     out.write(in.read());
     return false;
+}
+
+TimePs FaultyLine::out_quiet_until(TimePs in_quiet_until_ps) const {
+    if (m_wake_ps < 0) return in_quiet_until_ps;
+    return std::min(in_quiet_until_ps, std::max(now_ps(), m_wake_ps));
 }
 
 }  // namespace cnc::uart

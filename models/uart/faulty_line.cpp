@@ -47,11 +47,9 @@ bool FaultyLine::carry_frame() {
     const TimePs t_next_frame = t0 + m_clock.mid_bit(m_bits - 1);
     int bit = 0;
     for (;;) {
-        // Woken at a bit boundary, the line waits one delta: an edge of the sender due at the same instant is then
-        // in `in`, and `out` changes once, not through a glitch of zero width (which a receiver running ahead of
-        // the simulation time, models/fpga/rtl_loop.hpp, would see after it was promised no change).
-        if (!in.event()) sc_core::wait(sc_core::SC_ZERO_TIME);
         const TimePs now = now_ps();
+        // Woken at a bit boundary: what `out` is written now is seen a delta later (out_quiet_until).
+        if (!in.event()) m_boundary_ps = now;
         if (now >= t_next_frame && in.negedge()) return true;
         if (now >= t_end) break;
         while (t0 + m_clock.bit_edge(bit + 1) <= now) ++bit;
@@ -68,8 +66,10 @@ bool FaultyLine::carry_frame() {
 }
 
 TimePs FaultyLine::out_quiet_until(TimePs in_quiet_until_ps) const {
+    const TimePs now = now_ps();
+    if (now == m_boundary_ps) return now;  // a level written at this boundary may not be seen yet
     if (m_wake_ps < 0) return in_quiet_until_ps;
-    return std::min(in_quiet_until_ps, std::max(now_ps(), m_wake_ps));
+    return std::min(in_quiet_until_ps, std::max(now, m_wake_ps));
 }
 
 }  // namespace cnc::uart

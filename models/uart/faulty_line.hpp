@@ -45,7 +45,8 @@ private:
     BitClock m_clock;
     int m_bits;
     FaultyLineStats m_stats;
-    TimePs m_wake_ps = -1;  // the bit boundary the thread waits for within a frame that is hit, else -1
+    TimePs m_wake_ps = -1;      // the bit boundary the thread waits for within a frame that is hit, else -1
+    TimePs m_boundary_ps = -1;  // the last bit boundary the thread woke at
 };
 
 }  // namespace cnc::uart

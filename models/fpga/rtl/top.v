@@ -88,7 +88,7 @@ module top #(
             busy_prev <= busy;
             if ((ack || nak) && !tx_busy) begin
                 tx_start <= 1'b1;
-                tx_nak <= !ack;
+                tx_nak <= nak && !ack;  // written so, not !ack, for synthesis to see it stay 0 without the check
             end
         end
     end

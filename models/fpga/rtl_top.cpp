@@ -24,7 +24,10 @@ enum Net : int {
     kNumX,
     kNumY,
     kPeriodX,
-    kPeriodY
+    kPeriodY,
+    kCrcError,  // these three with the packet check only
+    kPktRepeat,
+    kTxNak
 };
 
 }  // namespace
@@ -75,6 +78,11 @@ void RtlTop::on_edge(std::int64_t n) {
     v.num_y = static_cast<std::uint32_t>(net(kNumY));
     v.period_x = static_cast<std::uint32_t>(net(kPeriodX));
     v.period_y = static_cast<std::uint32_t>(net(kPeriodY));
+    if (m_cfg.packet_crc) {
+        v.crc_error = net(kCrcError) != 0;
+        v.pkt_repeat = net(kPktRepeat) != 0;
+        v.tx_nak = net(kTxNak) != 0;
+    }
     m_records.edge(n, v);
 }
 

@@ -102,6 +102,7 @@ void Cp2102::tx_thread() {
                 m_txd_next_ps = e.t_ps;
                 wait_until(e.t_ps);
                 txd.write(e.level);
+                m_txd_written_ps = e.t_ps;
             }
             m_txd_next_ps = t_end;  // the next byte's start bit, if one comes in time
             wait_until(t_end);
@@ -112,6 +113,7 @@ void Cp2102::tx_thread() {
 
 TimePs Cp2102::txd_quiet_until() const {
     const TimePs now = now_ps();
+    if (now == m_txd_written_ps) return now;
     if (m_tx_sending) return std::max(now, m_txd_next_ps);
     if (!m_tx_fifo.empty()) return now;  // arrived this instant: the start bit goes out now
     return next_frame_start(now, m_cfg.usb_frame_ps);

@@ -73,7 +73,7 @@ public:
     [[nodiscard]] const sc_core::sc_event& data_event() const { return m_data_ev; }
     // The earliest time TXD may change, asked at the current time (>= now): the next edge of the frames being sent,
     // else the next USB frame start (host bytes reach the chip only there). A clocked model of the target may run
-    // ahead to it.
+    // ahead to it. At the instant of an edge it is now: the edge written is seen on TXD a delta later.
     [[nodiscard]] TimePs txd_quiet_until() const;
 
     // Keeps in tx_log() only the bytes sent at indices first, first + stride, ... (counted over every byte sent,
@@ -119,7 +119,8 @@ private:
     std::deque<UsbOutByte> m_usb_out;  // written by the host, not yet at the chip
     std::deque<UsbOutByte> m_tx_fifo;
     bool m_tx_sending = false;
-    TimePs m_txd_next_ps = 0;  // while sending: the next TXD edge (or the end of the last stop bit)
+    TimePs m_txd_next_ps = 0;      // while sending: the next TXD edge (or the end of the last stop bit)
+    TimePs m_txd_written_ps = -1;  // the last TXD edge written
     sc_core::sc_event m_usb_out_ev;
     sc_core::sc_event m_tx_fifo_ev;
 

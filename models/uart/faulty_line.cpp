@@ -1,5 +1,6 @@
 #include "uart/faulty_line.hpp"
 
+#include <algorithm>
 #include <bitset>
 
 #include "common/sc_time.hpp"
@@ -47,6 +48,8 @@ bool FaultyLine::carry_frame() {
     int bit = 0;
     for (;;) {
         const TimePs now = now_ps();
+        // Woken at a bit boundary: what `out` is written now is seen a delta later (out_quiet_until).
+        if (!in.event()) m_boundary_ps = now;
         if (now >= t_next_frame && in.negedge()) return true;
         if (now >= t_end) break;
         while (t0 + m_clock.bit_edge(bit + 1) <= now) ++bit;
@@ -54,10 +57,19 @@ bool FaultyLine::carry_frame() {
         out.write(f.lost || (in.read() != inverted));
         // A frame left whole needs no wake but the sender's edges.
         const TimePs wake = f.hit() ? t0 + m_clock.bit_edge(bit + 1) : t_end;
+        m_wake_ps = f.hit() ? wake : -1;
         sc_core::wait(ps_time(wake - now), in.value_changed_event());
     }
+    m_wake_ps = -1;
     out.write(in.read());
     return false;
+}
+
+TimePs FaultyLine::out_quiet_until(TimePs in_quiet_until_ps) const {
+    const TimePs now = now_ps();
+    if (now == m_boundary_ps) return now;  // a level written at this boundary may not be seen yet
+    if (m_wake_ps < 0) return in_quiet_until_ps;
+    return std::min(in_quiet_until_ps, std::max(now, m_wake_ps));
 }
 
 }  // namespace cnc::uart

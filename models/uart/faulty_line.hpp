@@ -30,6 +30,10 @@ public:
                FrameFormat format = kFormat8N1);
 
     [[nodiscard]] const FaultyLineStats& stats() const { return m_stats; }
+    // The earliest time `out` may change, asked at the current time, given the earliest time `in` may (what its
+    // sender promises, >= now): `out` follows `in` but for a frame that is hit, where it changes at bit boundaries
+    // too. For a receiver that runs ahead of the simulation time (models/fpga/rtl_loop.hpp).
+    [[nodiscard]] TimePs out_quiet_until(TimePs in_quiet_until_ps) const;
 
 private:
     void run();
@@ -41,6 +45,8 @@ private:
     BitClock m_clock;
     int m_bits;
     FaultyLineStats m_stats;
+    TimePs m_wake_ps = -1;      // the bit boundary the thread waits for within a frame that is hit, else -1
+    TimePs m_boundary_ps = -1;  // the last bit boundary the thread woke at
 };
 
 }  // namespace cnc::uart

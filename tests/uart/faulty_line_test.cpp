@@ -4,9 +4,11 @@
 #define SC_INCLUDE_DYNAMIC_PROCESSES
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <systemc>
 #include <vector>
 
+#include "common/sc_time.hpp"
 #include "uart/cp2102.hpp"
 #include "uart/faulty_line.hpp"
 
@@ -82,4 +84,49 @@ TEST(FaultyLine, EachFrameArrivesAsItsDrawSays) {
     EXPECT_GT(changed, 100);
     EXPECT_GT(clean, 1000);
     EXPECT_EQ(line.stats().frames_lost, static_cast<std::uint64_t>(lost));
+}
+
+// A receiver that runs ahead of the simulation time (the Verilog in the loop, models/fpga/rtl_loop.hpp) asks the
+// line until when its output stays as it is, then runs to the first 20 ns clock edge after that time unless the
+// output changes first. Every change must come at or after the time promised: an inverted bit changes the output
+// where the sender's pin does not, and a sender's edge at a bit boundary may change it twice in one instant (the
+// CP2102 starts a frame right after the last one's stop bit a delta late). Back-to-back frames (four bytes a USB
+// frame) at a high bit error rate hit every bit position.
+TEST(FaultyLine, PromisesEveryChangeOfItsOutput) {
+    const LineFaultRates rates{0.05, 0.02, 7};
+    sc_core::sc_signal<bool> sent("sent", true), seen("seen", true);
+    Cp2102 cp("cp", Cp2102Config{});
+    FaultyLine line("line", rates, 0, cp.baud().bit_clock());
+    cp.txd(sent);
+    line.in(sent);
+    line.out(seen);
+    cp.rxd(seen);
+    constexpr int kUsbFrames = 300;
+    constexpr TimePs kClockPs = 20'000;
+    sc_core::sc_spawn([&] {
+        for (int k = 0; k < kUsbFrames; ++k) {
+            const std::uint8_t b[4] = {static_cast<std::uint8_t>(k), 0x55, 0xAA, 0x0F};
+            cp.usb_write(b, 4);
+            sc_core::wait(at(cnc::kPsPerMs));
+        }
+    });
+    int changes = 0, early = 0;
+    sc_core::sc_spawn([&] {
+        TimePs promised = 0;
+        for (;;) {
+            const TimePs now = cnc::now_ps();
+            if (seen.event()) {
+                ++changes;
+                if (now < promised) ++early;
+            }
+            promised = std::max(now, line.out_quiet_until(cp.txd_quiet_until()));
+            const TimePs next_edge = (promised / kClockPs + 1) * kClockPs;
+            sc_core::wait(at(next_edge - now), seen.value_changed_event());
+        }
+    });
+    sc_core::sc_start(at((kUsbFrames + 5) * cnc::kPsPerMs));
+
+    EXPECT_GT(line.stats().frames_hit, 100U);
+    EXPECT_GT(changes, 1000);
+    EXPECT_EQ(early, 0);
 }

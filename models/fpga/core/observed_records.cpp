@@ -16,8 +16,9 @@ constexpr std::uint8_t kIdle = 0, kDirWait = 2, kRun = 3;
 
 void ObservedRecords::settle_ack(std::int64_t n, const FpgaNets& now) {
     if (m_ack_edge < 0 || n < m_ack_edge) return;
-    // top.v: tx_start rises at the edge after busy fell, unless uart_tx was busy (the ACK is dropped).
-    if (n == m_ack_edge && now.tx_start && !m_prev.tx_start) {
+    // top.v: tx_start is high at the edge after busy fell, unless uart_tx was busy (the ACK is dropped). It may have
+    // been high at the edge before too, for a NAK (with the packet check): tx_nak changes then, so that edge is seen.
+    if (n == m_ack_edge && now.tx_start) {
         ++m_stats.acks_sent;
         if (m_ack_packet >= m_packets.first() && m_ack_packet < m_packets.size()) {
             m_packets[m_ack_packet].record.t_ack_start_ps = m_clock.at(n);
@@ -72,7 +73,14 @@ void ObservedRecords::from_inner_nets(std::int64_t n, const FpgaNets& now) {
     if (m_prev.uart_rx_state == kUartRxStop && now.uart_rx_state == kUartRxIdle && !now.rx_valid) {
         ++m_stats.framing_errors;  // a low stop bit: the byte is dropped
     }
-    if (m_prev.timeout_active && !now.timeout_active && !now.pkt_valid && !now.cfg_valid) ++m_stats.watchdog_resets;
+    // A packet that ends clears timeout_active too, with one of the decoder's strobes.
+    if (m_prev.timeout_active && !now.timeout_active && !now.pkt_valid && !now.cfg_valid && !now.crc_error &&
+        !now.pkt_repeat) {
+        ++m_stats.watchdog_resets;
+    }
+    if (now.crc_error && !m_prev.crc_error) ++m_stats.crc_errors;
+    if (now.pkt_repeat && !m_prev.pkt_repeat) ++m_stats.repeats;
+    if (now.tx_start && now.tx_nak && !(m_prev.tx_start && m_prev.tx_nak)) ++m_stats.naks_sent;
     if (now.cfg_valid && !m_prev.cfg_valid) {
         m_inits.push_back(
             {t, now.numerator_x, now.numerator_y, m_cfg.init_packet_wired && now.step_gen_state == kIdle});

@@ -1,7 +1,8 @@
 // The FPGA's records (fpga_records.hpp) read off a clocked model of top.v instead of logged by the event-driven
 // blocks: after each clock edge that changed one of the nets below, those nets' values. The rules are top.v's:
 // step_gen takes a packet whose pkt_valid it sees in IDLE; its periods are in place when DIR_WAIT ends; busy falls
-// at DONE; uart_tx starts the ACK one edge after busy falls unless it is still sending.
+// at DONE; uart_tx starts the ACK one edge after busy falls unless it is still sending. With the packet check the
+// decoder's crc_error and pkt_repeat strobes and the NAKs tx_start sends are counted too.
 #pragma once
 #include <cstddef>
 #include <algorithm>
@@ -24,6 +25,9 @@ struct FpgaNets {
     bool cfg_valid = false;
     bool tx_start = false;
     bool timeout_active = false;  // packet_decoder: a packet is under way and its watchdog counts
+    bool crc_error = false;       // with the packet check: packet_decoder's strobes and the byte tx_start sends
+    bool pkt_repeat = false;
+    bool tx_nak = false;
     std::uint8_t uart_rx_state = 0;
     std::uint8_t step_gen_state = 0;
     std::uint8_t motion = 0;

@@ -8,18 +8,19 @@ namespace cnc::fpga {
 
 rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design) {
     rtl::PluginSpec spec;
-    rtl::set_design(spec, design, "top", CNC_FPGA_RTL_DIR,
-                    {"top.v", "uart_rx.v", "packet_decoder.v", "step_gen.v", "period_divider.v", "laser_ctrl.v",
-                     "uart_tx.v"},
-                    {{"CLK_HZ", std::to_string(cfg.clk_hz)},
-                     {"FULL_BIT", std::to_string(cfg.uart_full_bit_cycles)},
-                     {"PULSE_HIGH", std::to_string(cfg.pulse_high_cycles)},
-                     {"DIR_SETTLE", std::to_string(cfg.dir_settle_cycles)},
-                     {"FEED_ZERO_PERIOD", std::to_string(cfg.feed_zero_period_cycles)},
-                     {"TIMEOUT_CYCLES", std::to_string(cfg.watchdog_cycles)},
-                     {"NUMERATOR_DEFAULT", std::to_string(cfg.numerator_default)},
-                     {"EXACT_PERIOD", cfg.period_arithmetic == PeriodArithmetic::Exact ? "1" : "0"},
-                     {"INIT_WIRED", cfg.init_packet_wired ? "1" : "0"}});
+    rtl::set_design(
+        spec, design, "top", CNC_FPGA_RTL_DIR,
+        {"top.v", "uart_rx.v", "packet_decoder.v", "step_gen.v", "period_divider.v", "laser_ctrl.v", "uart_tx.v"},
+        {{"CLK_HZ", std::to_string(cfg.clk_hz)},
+         {"FULL_BIT", std::to_string(cfg.uart_full_bit_cycles)},
+         {"PULSE_HIGH", std::to_string(cfg.pulse_high_cycles)},
+         {"DIR_SETTLE", std::to_string(cfg.dir_settle_cycles)},
+         {"FEED_ZERO_PERIOD", std::to_string(cfg.feed_zero_period_cycles)},
+         {"TIMEOUT_CYCLES", std::to_string(cfg.watchdog_cycles)},
+         {"NUMERATOR_DEFAULT", std::to_string(cfg.numerator_default)},
+         {"EXACT_PERIOD", cfg.period_arithmetic == PeriodArithmetic::Exact ? "1" : "0"},
+         {"INIT_WIRED", cfg.init_packet_wired ? "1" : "0"},
+         {"PACKET_CRC", cfg.packet_crc ? "1" : "0"}});
     spec.clock = "clk";
     spec.inputs = {{"rst_n", 1}, {"rx", 1}};
     spec.outputs = {{"tx", 1},     {"dir_x", 1},    {"step_x", 1}, {"n_enbl_x", 1}, {"dir_y", 1},
@@ -42,6 +43,13 @@ rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design
                      {"step_gen", "step_gen_inst.num_y", "num_y"},
                      {"step_gen", "step_gen_inst.period_x", "period_x"},
                      {"step_gen", "step_gen_inst.period_y", "period_y"}};
+    // Only a run with the packet check needs its nets: without it, a user's top written for the seed's packets
+    // keeps its records read off its nets.
+    if (cfg.packet_crc) {
+        spec.observed.push_back({top, "crc_error", "crc_error"});
+        spec.observed.push_back({top, "pkt_repeat", "pkt_repeat"});
+        spec.observed.push_back({top, "tx_nak", "tx_nak"});
+    }
     return spec;
 }
 

@@ -2,6 +2,12 @@
 // sends the ACK byte 0xAA unless it is still sending the last one (that ACK is dropped: there is no pending flag).
 // rst_n is the board's KEY[0], active low, applied synchronously. The DRV8825s' nENBL are held low (enabled): the
 // seed's FPGA drives no enable pin. The board's LEDs and seven-segment displays are left out.
+//
+// PACKET_CRC = 1 adds our packet check (packet_decoder.v): the edge after a crc_error strobe starts the NAK 0x55 if
+// uart_tx is free; the edge after a pkt_repeat strobe starts an ACK if uart_tx is free and no move runs (a repeat
+// of the move still running is ACKed when busy falls). An ACK and a NAK asked for at the same edge send the ACK, as
+// the event model does (models/fpga/top.cpp): uart_tx sends one byte, and a packet left without its NAK is sent again
+// after the host's ACK timeout.
 module top #(
     parameter CLK_HZ            = 50000000,
     parameter BAUD              = 115200,
@@ -17,7 +23,9 @@ module top #(
     parameter INIT_WIRED        = 1,
     // 0: step_gen's periods in one clock (the seed); 1: one bit per clock during DIR_WAIT (period_divider.v), for
     // FPGAs without room for the single-cycle division: the pins are the same.
-    parameter DIVIDER           = 0
+    parameter DIVIDER           = 0,
+    // 1: the packet check above (protocol.crc = "crc16"); 0: the seed's packets and ACK alone.
+    parameter PACKET_CRC        = 0
 ) (
     input  wire clk,
     input  wire rst_n,
@@ -39,17 +47,19 @@ module top #(
     wire [1:0]  motion;
     wire [31:0] steps_x, steps_y, numerator_x, numerator_y;
     wire [15:0] feed_rate;
-    wire        pkt_valid, cfg_valid;
+    wire        pkt_valid, cfg_valid, crc_error, pkt_repeat;
     wire        tx_busy;
     reg         tx_start, busy_prev;
+    reg         tx_nak;  // the byte tx_start sends: NAK 0x55, else ACK 0xAA (held between starts)
 
     uart_rx #(.FULL_BIT(FULL_BIT), .HALF_BIT(FULL_BIT / 2)) uart_rx_inst (
         .clk(clk), .rst(rst), .rx(rx), .rx_data(rx_data), .rx_valid(rx_valid));
 
-    packet_decoder #(.TIMEOUT_CYCLES(TIMEOUT_CYCLES), .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT)) pkt_dec_inst (
+    packet_decoder #(.TIMEOUT_CYCLES(TIMEOUT_CYCLES), .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT),
+                     .PACKET_CRC(PACKET_CRC)) pkt_dec_inst (
         .clk(clk), .rst(rst), .rx_data(rx_data), .rx_valid(rx_valid), .motion(motion), .steps_x(steps_x),
         .steps_y(steps_y), .feed_rate(feed_rate), .pkt_valid(pkt_valid), .numerator_x(numerator_x),
-        .numerator_y(numerator_y), .cfg_valid(cfg_valid));
+        .numerator_y(numerator_y), .cfg_valid(cfg_valid), .crc_error(crc_error), .pkt_repeat(pkt_repeat));
 
     step_gen #(.PULSE_HIGH(PULSE_HIGH), .DIR_SETTLE(DIR_SETTLE), .FEED_ZERO_PERIOD(FEED_ZERO_PERIOD),
                .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT), .EXACT_PERIOD(EXACT_PERIOD), .DIVIDER(DIVIDER)) step_gen_inst (
@@ -62,16 +72,24 @@ module top #(
         .clk(clk), .rst(rst), .motion(motion), .pkt_valid(pkt_valid), .busy(busy), .laser(laser));
 
     uart_tx #(.FULL_BIT(FULL_BIT)) uart_tx_inst (
-        .clk(clk), .rst(rst), .tx_data(8'hAA), .tx_start(tx_start), .tx_busy(tx_busy), .tx(tx));
+        .clk(clk), .rst(rst), .tx_data(tx_nak ? 8'h55 : 8'hAA), .tx_start(tx_start), .tx_busy(tx_busy), .tx(tx));
+
+    // busy fell at the last edge, or (with the check) a move that has run came again; a packet failed its CRC.
+    wire ack = (busy_prev && !busy) || (PACKET_CRC != 0 && pkt_repeat && !busy);
+    wire nak = PACKET_CRC != 0 && crc_error;
 
     always @(posedge clk) begin
         if (rst) begin
             tx_start <= 1'b0;
             busy_prev <= 1'b0;
+            tx_nak <= 1'b0;
         end else begin
             tx_start <= 1'b0;
             busy_prev <= busy;
-            if (busy_prev && !busy && !tx_busy) tx_start <= 1'b1;
+            if ((ack || nak) && !tx_busy) begin
+                tx_start <= 1'b1;
+                tx_nak <= nak && !ack;  // written so, not !ack, for synthesis to see it stay 0 without the check
+            end
         end
     end
 

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -399,12 +400,13 @@ host::SenderConfig sender_config(const Scenario& s, const FpgaUartSettings& f) {
 }
 
 // The FPGA as the scenario asks: the event-driven blocks, or the Verilog in the loop running ahead to the time
-// before which the CP2102 cannot change rx.
-std::unique_ptr<fpga::Board> make_fpga(const FpgaUartSettings& f, std::uint64_t seed, const uart::Cp2102& cp2102) {
+// before which rx cannot change (`rx_quiet_until`).
+std::unique_ptr<fpga::Board> make_fpga(const FpgaUartSettings& f, std::uint64_t seed,
+                                       std::function<TimePs()> rx_quiet_until) {
     const fpga::FpgaConfig cfg = on_oscillator(f.fpga, f.clock, seed);
     if (!f.rtl.rtl) return std::make_unique<fpga::Top>("fpga", cfg);
     auto rtl = std::make_unique<fpga::RtlTop>("fpga", cfg, f.rtl.design);
-    rtl->rx_quiet_until([&cp2102] { return cp2102.txd_quiet_until(); });
+    rtl->rx_quiet_until(std::move(rx_quiet_until));
     return rtl;
 }
 
@@ -423,7 +425,7 @@ public:
           m_packets(s, job, m_numerators, s.faults.any()),
           m_sender("host", sender_config(s, m_f), m_cp2102, host::encode_init(m_numerators.x, m_numerators.y),
                    m_packets),
-          m_fpga(make_fpga(m_f, s.seed, m_cp2102)),
+          m_fpga(make_fpga(m_f, s.seed, [this] { return rx_quiet_until(); })),
           m_moves(s.machine, s.interpreter.start_mm),
           // Every gap only for the detailed report and the plots (which keep the whole run anyway).
           m_dead_fold(s.detail || s.keep_run_input),
@@ -526,6 +528,12 @@ private:
         m_fpga->tx(m_wires.fpga_tx);
         m_from_fpga_line->in(m_wires.fpga_tx);
         m_from_fpga_line->out(m_wires.uart_tx);
+    }
+    // The CP2102's promise for its TXD, through the faulty wire if there is one (an inverted bit changes rx where
+    // TXD does not).
+    [[nodiscard]] TimePs rx_quiet_until() const {
+        const TimePs txd = m_cp2102.txd_quiet_until();
+        return m_to_fpga_line ? m_to_fpga_line->out_quiet_until(txd) : txd;
     }
     void report_faults(ArchRun& run, std::ostringstream& text) const;
     // The split reads gap k between packets k and k+1 as each packet runs once: not so on a link with faults (a host

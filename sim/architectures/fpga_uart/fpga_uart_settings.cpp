@@ -89,11 +89,6 @@ void read_packet_check(KeyReader& r, FpgaUartSettings& s) {
                                                   "with protocol.crc: wait before a packet is sent again, ms (above "
                                                   "fpga.watchdog_ms, so that the FPGA has dropped a partial packet)"));
     s.fpga.packet_crc = c.crc;
-    if (c.crc && s.rtl.rtl) {
-        r.fail("protocol.crc",
-               "\"crc16\" is built in the event-driven FPGA only: with fpga.model = \"rtl\" use "
-               "\"none\"");
-    }
 }
 
 }  // namespace

@@ -17,20 +17,13 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from cncsim_report import run_report  # noqa: E402
+from cncsim_report import args_and_workdir, check, run_report  # noqa: E402
 
 STEPS_PER_MM = 160.0  # the scenarios' machine: 1.8 deg, 1/32, GT2 20T
 
 
-def check(cond, what):
-    if not cond:
-        print("FAIL:", what)
-        sys.exit(1)
-
-
 def main():
-    cncsim, source, work = sys.argv[1:4]
-    os.makedirs(work, exist_ok=True)
+    cncsim, source, work = args_and_workdir()
     scenarios = os.path.join(source, "scenarios", "improvements")
     seed_sc = os.path.join(scenarios, "link_ber_seed.toml")
     crc_sc = os.path.join(scenarios, "link_ber_crc.toml")

@@ -12,20 +12,13 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from cncsim_report import run_report  # noqa: E402
+from cncsim_report import args_and_workdir, check, run_report  # noqa: E402
 
 RATE = 0.01
 
 
-def check(cond, what):
-    if not cond:
-        print("FAIL:", what)
-        sys.exit(1)
-
-
 def main():
-    cncsim, source, work = sys.argv[1:4]
-    os.makedirs(work, exist_ok=True)
+    cncsim, source, work = args_and_workdir()
     square = os.path.join(source, "scenarios", "fpga-uart", "square_20mm.toml")
     for arch in ("fpga-uart", "spi-fpga"):
         sets = ["scenario.architecture=" + arch, "mechanics.model=ideal"]

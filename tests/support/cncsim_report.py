@@ -1,7 +1,8 @@
-"""Runs `cncsim run` with a JSON report, for the Python tests that read a run's figures."""
+"""Runs `cncsim run` with a JSON report, and the checks, for the Python tests that read a run's figures."""
 import json
 import os
 import subprocess
+import sys
 
 
 def run_report(cncsim, scenario, tmp, tag, sets=(), extra=()):
@@ -14,3 +15,17 @@ def run_report(cncsim, scenario, tmp, tag, sets=(), extra=()):
     out = subprocess.run(cmd + list(extra), check=True, capture_output=True, text=True).stdout
     with open(report) as f:
         return json.load(f), out
+
+
+def check(cond, what):
+    """Ends the test with FAIL: WHAT unless COND."""
+    if not cond:
+        print("FAIL:", what)
+        sys.exit(1)
+
+
+def args_and_workdir():
+    """(cncsim, source dir, work dir) of a test called as TEST CNCSIM SOURCE_DIR WORKDIR; the work dir made."""
+    cncsim, source, work = sys.argv[1:4]
+    os.makedirs(work, exist_ok=True)
+    return cncsim, source, work

@@ -25,17 +25,27 @@ sc_core::sc_time at(TimePs t) {
     return sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(t));
 }
 
+// A CP2102 whose TXD reaches its own RXD through a faulty wire.
+struct Loopback {
+    Loopback(const LineFaultRates& rates, std::uint64_t line_id) : line("line", rates, line_id, cp.baud().bit_clock()) {
+        cp.txd(sent);
+        line.in(sent);
+        line.out(seen);
+        cp.rxd(seen);
+    }
+    sc_core::sc_signal<bool> sent{"sent", true};
+    sc_core::sc_signal<bool> seen{"seen", true};
+    Cp2102 cp{"cp", Cp2102Config{}};
+    FaultyLine line;
+};
+
 }  // namespace
 
 TEST(FaultyLine, EachFrameArrivesAsItsDrawSays) {
     const LineFaultRates rates{0.02, 0.02, 5};
-    sc_core::sc_signal<bool> sent("sent", true), seen("seen", true);
-    Cp2102 cp("cp", Cp2102Config{});
-    FaultyLine line("line", rates, 3, cp.baud().bit_clock());
-    cp.txd(sent);
-    line.in(sent);
-    line.out(seen);
-    cp.rxd(seen);
+    Loopback loop(rates, 3);
+    Cp2102& cp = loop.cp;
+    const FaultyLine& line = loop.line;
     constexpr int kBytes = 2000;
     // One byte per USB frame: idle between frames, so a misframed byte cannot run into the next.
     sc_core::sc_spawn([&] {
@@ -94,13 +104,10 @@ TEST(FaultyLine, EachFrameArrivesAsItsDrawSays) {
 // frame) at a high bit error rate hit every bit position.
 TEST(FaultyLine, PromisesEveryChangeOfItsOutput) {
     const LineFaultRates rates{0.05, 0.02, 7};
-    sc_core::sc_signal<bool> sent("sent", true), seen("seen", true);
-    Cp2102 cp("cp", Cp2102Config{});
-    FaultyLine line("line", rates, 0, cp.baud().bit_clock());
-    cp.txd(sent);
-    line.in(sent);
-    line.out(seen);
-    cp.rxd(seen);
+    Loopback loop(rates, 0);
+    Cp2102& cp = loop.cp;
+    FaultyLine& line = loop.line;
+    sc_core::sc_signal<bool>& seen = loop.seen;
     constexpr int kUsbFrames = 300;
     constexpr TimePs kClockPs = 20'000;
     sc_core::sc_spawn([&] {

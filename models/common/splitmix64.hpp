@@ -12,6 +12,11 @@ inline std::uint64_t splitmix64(std::uint64_t x) {
     return x ^ (x >> 31U);
 }
 
+// The key of stream `stream` of a seed: the streams of one seed (each line of a link, each driver) draw apart.
+inline std::uint64_t stream_key(std::uint64_t seed, std::uint64_t stream) {
+    return splitmix64(splitmix64(seed) ^ stream);
+}
+
 // Draw number `n` of the stream `key`, uniform in [0, 1) with 53 random bits: a function of (key, n) alone.
 inline double unit_draw(std::uint64_t key, std::uint64_t n) {
     constexpr double kTwoPowMinus53 = 1.0 / 9007199254740992.0;

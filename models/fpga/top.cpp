@@ -81,8 +81,8 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
 
 namespace {
 constexpr std::uint8_t kAck = 0xAA;  // seed 000 §4.11
-constexpr std::uint8_t kNak =
-    0x55;  // our packet check's: the ACK's bits inverted, so no single bit error turns one into the other
+// Our packet check's NAK: the ACK's bits inverted, so that no single bit error turns one into the other.
+constexpr std::uint8_t kNak = 0x55;
 }  // namespace
 
 void Top::start_tx(std::int64_t edge, std::uint8_t byte) {

@@ -17,7 +17,7 @@ Drv8825::Drv8825(const sc_core::sc_module_name& name, const Drv8825Config& cfg, 
       m_cfg(cfg),
       m_motor(motor),
       m_checker(cfg.limits),
-      m_fault_key(splitmix64(splitmix64(cfg.fault_seed) ^ cfg.fault_line)) {
+      m_fault_key(stream_key(cfg.fault_seed, cfg.fault_line)) {
     SC_HAS_PROCESS(Drv8825);
     SC_METHOD(on_step);
     sensitive << step.value_changed();

@@ -7,12 +7,12 @@
 
 namespace cnc::uart {
 
-FaultyLine::FaultyLine(const sc_core::sc_module_name& name, const LineFaultRates& rates, std::uint64_t line,
-                       BitClock sender, FrameFormat format)
+FaultyLine::FaultyLine(const sc_core::sc_module_name& name, const LineFaultRates& rates, std::uint64_t seed,
+                       std::uint64_t line, BitClock sender, FrameFormat format)
     : sc_module(name),
       in("in"),
       out("out"),
-      m_draw(rates, line),
+      m_draw(rates, seed, line),
       m_clock(sender),
       m_bits((validate(format), format.bits_per_frame())) {
     SC_HAS_PROCESS(FaultyLine);

@@ -25,9 +25,9 @@ public:
     sc_core::sc_in<bool> in;    // the sender's pin
     sc_core::sc_out<bool> out;  // what the receiver's pin sees; idles high
 
-    // `sender`: the bit clock of the frames on `in`; `line`: tells this line's draws from the other lines'.
-    FaultyLine(const sc_core::sc_module_name& name, const LineFaultRates& rates, std::uint64_t line, BitClock sender,
-               FrameFormat format = kFormat8N1);
+    // `sender`: the bit clock of the frames on `in`; `line`: tells this line's draws from the other lines' of `seed`.
+    FaultyLine(const sc_core::sc_module_name& name, const LineFaultRates& rates, std::uint64_t seed, std::uint64_t line,
+               BitClock sender, FrameFormat format = kFormat8N1);
 
     [[nodiscard]] const FaultyLineStats& stats() const { return m_stats; }
     // The earliest time `out` may change, asked at the current time, given the earliest time `in` may (what its

@@ -8,8 +8,8 @@
 #include "probes/vcd_trace.hpp"
 #include "run/carriage_feed.hpp"
 #include "run/mechanics_report.hpp"
-#include "run/step_fault_report.hpp"
 #include "run/simulate.hpp"
+#include "run/step_fault_report.hpp"
 
 namespace cnc::sim {
 
@@ -59,7 +59,7 @@ ArchRun run_on_machine(const Scenario& s, const Job& job, const MakeController& 
     mech::Drv8825Config driver = s.driver;
     driver.dir_high_is_positive = ctl->dir_high_is_positive();
     driver.step_loss_rate = s.faults.step_loss_rate;
-    driver.fault_seed = s.faults.uart.seed;
+    driver.fault_seed = s.faults.seed;
     Machine machine("machine", s.machine, driver, s.interpreter.start_mm, s.mechanics, !s.vcd_path.empty());
     machine.bind(pins);
     EdgeRecorder rec("probes");

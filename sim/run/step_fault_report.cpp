@@ -11,7 +11,7 @@ void add_step_fault_report(const Machine& machine, const Scenario& s, ArchRun& r
     const double off_x_mm = static_cast<double>(-x.lost_net_steps) / s.machine.x.steps_per_mm();
     const double off_y_mm = static_cast<double>(-y.lost_net_steps) / s.machine.y.steps_per_mm();
     run.details["step_faults"] = {{"step_loss_rate", s.faults.step_loss_rate},
-                                  {"seed", s.faults.uart.seed},
+                                  {"seed", s.faults.seed},
                                   {"lost", {x.lost_to_fault, y.lost_to_fault}},
                                   {"lost_net_steps", {x.lost_net_steps, y.lost_net_steps}},
                                   {"tool_off_mm", {off_x_mm, off_y_mm}}};

@@ -8,7 +8,7 @@ void read_fault_settings(KeyReader& r, std::uint64_t scenario_seed, FaultSetting
     const std::uint64_t seed = static_cast<std::uint64_t>(
         r.get_int("faults.seed", static_cast<std::int64_t>(scenario_seed), 0, std::numeric_limits<std::int64_t>::max(),
                   "seed of every fault draw (default: scenario.seed); the same seed gives the same faults"));
-    s.uart.seed = seed;
+    s.seed = seed;
     s.uart.ber = r.get_float("faults.uart_ber", 0.0, 0.0, 0.5,
                              "bit error rate on each wire of a UART link: every bit of a frame (start and stop bits "
                              "too) inverted with this probability, independently; 0: none");

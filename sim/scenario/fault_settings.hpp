@@ -16,7 +16,8 @@ struct HostStall {
 };
 
 struct FaultSettings {
-    uart::LineFaultRates uart;  // on both wires of a UART link; its seed is every fault's
+    std::uint64_t seed = 1;     // of every fault's draws (faults.seed)
+    uart::LineFaultRates uart;  // on both wires of a UART link
     HostStall host_stall;
     double step_loss_rate = 0.0;  // on each DRV8825's STEP input (mech::Drv8825Config::step_loss_rate)
 

@@ -14,7 +14,7 @@ cnc::fpga::MotionFields move(std::int32_t x, std::int32_t y) {
 }  // namespace
 
 TEST(PacketFaults, EachRecordIsLaidAgainstThePacketInFlight) {
-    // Four packets written at 0, 10, 20, 30 ms; the second never arrives (a lost byte), the third arrives with a bit
+    // Four packets taken at 0, 10, 20, 30 ms; the second never arrives (a lost byte), the third arrives with a bit
     // of steps_x inverted (bit 10: +1024), the fourth arrives twice (a repeat), and one record precedes every packet.
     const std::vector<HostPacket> sent = {
         {0, 1, move(100, 0)}, {10, 2, move(0, 50)}, {20, 3, move(-30, 30)}, {30, 4, move(5, 5)}};

@@ -27,7 +27,8 @@ sc_core::sc_time at(TimePs t) {
 
 // A CP2102 whose TXD reaches its own RXD through a faulty wire.
 struct Loopback {
-    Loopback(const LineFaultRates& rates, std::uint64_t line_id) : line("line", rates, line_id, cp.baud().bit_clock()) {
+    Loopback(const LineFaultRates& rates, std::uint64_t seed, std::uint64_t line_id)
+        : line("line", rates, seed, line_id, cp.baud().bit_clock()) {
         cp.txd(sent);
         line.in(sent);
         line.out(seen);
@@ -42,8 +43,8 @@ struct Loopback {
 }  // namespace
 
 TEST(FaultyLine, EachFrameArrivesAsItsDrawSays) {
-    const LineFaultRates rates{0.02, 0.02, 5};
-    Loopback loop(rates, 3);
+    const LineFaultRates rates{0.02, 0.02};
+    Loopback loop(rates, 5, 3);
     Cp2102& cp = loop.cp;
     const FaultyLine& line = loop.line;
     constexpr int kBytes = 2000;
@@ -57,7 +58,7 @@ TEST(FaultyLine, EachFrameArrivesAsItsDrawSays) {
     });
     sc_core::sc_start(at((kBytes + 5) * cnc::kPsPerMs));
 
-    const LineFaultDraw draw(rates, 3);
+    const LineFaultDraw draw(rates, 5, 3);
     ASSERT_EQ(cp.tx_log().size(), static_cast<std::size_t>(kBytes));
     EXPECT_EQ(line.stats().frames, static_cast<std::uint64_t>(kBytes));
     std::size_t r = cp.rx_log().first();
@@ -103,8 +104,8 @@ TEST(FaultyLine, EachFrameArrivesAsItsDrawSays) {
 // CP2102 starts a frame right after the last one's stop bit a delta late). Back-to-back frames (four bytes a USB
 // frame) at a high bit error rate hit every bit position.
 TEST(FaultyLine, PromisesEveryChangeOfItsOutput) {
-    const LineFaultRates rates{0.05, 0.02, 7};
-    Loopback loop(rates, 0);
+    const LineFaultRates rates{0.05, 0.02};
+    Loopback loop(rates, 7, 0);
     Cp2102& cp = loop.cp;
     FaultyLine& line = loop.line;
     sc_core::sc_signal<bool>& seen = loop.seen;

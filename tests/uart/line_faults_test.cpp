@@ -36,13 +36,13 @@ void expect_binomial(double observed, double n, double p) {
 }  // namespace
 
 TEST(LineFaults, NoRateNoFault) {
-    const LineFaultDraw draw(LineFaultRates{}, 0);
+    const LineFaultDraw draw(LineFaultRates{}, 1, 0);
     for (std::uint64_t k = 0; k < 10'000; ++k) EXPECT_FALSE(draw.frame(k, 10).hit());
 }
 
 TEST(LineFaults, BitsAreInvertedAtTheBitErrorRate) {
     for (const double ber : {1e-4, 1e-3, 0.01, 0.3}) {
-        const LineFaultDraw draw(LineFaultRates{ber, 0.0, 7}, 0);
+        const LineFaultDraw draw(LineFaultRates{ber, 0.0}, 7, 0);
         const int frames = 200'000;
         const Counts c = count(draw, frames);
         expect_binomial(c.inverted_bits, frames * 10.0, ber);
@@ -51,14 +51,14 @@ TEST(LineFaults, BitsAreInvertedAtTheBitErrorRate) {
 }
 
 TEST(LineFaults, FramesAreLostAtTheirRate) {
-    const LineFaultDraw draw(LineFaultRates{0.0, 0.02, 7}, 1);
+    const LineFaultDraw draw(LineFaultRates{0.0, 0.02}, 7, 1);
     const int frames = 100'000;
     expect_binomial(count(draw, frames).lost_frames, frames, 0.02);
 }
 
 // Each bit position is drawn alike: the start bit (0) and the stop bit (9) as often as a data bit.
 TEST(LineFaults, EveryBitOfTheFrameCanBeHit) {
-    const LineFaultDraw draw(LineFaultRates{0.05, 0.0, 3}, 0);
+    const LineFaultDraw draw(LineFaultRates{0.05, 0.0}, 3, 0);
     const int frames = 100'000;
     std::array<double, 10> per_bit{};
     for (int k = 0; k < frames; ++k) {
@@ -69,9 +69,9 @@ TEST(LineFaults, EveryBitOfTheFrameCanBeHit) {
 }
 
 TEST(LineFaults, TheSameSeedGivesTheSameFaultsAndLinesDrawApart) {
-    const LineFaultRates rates{0.05, 0.05, 11};
-    const LineFaultDraw a(rates, 0), again(rates, 0), other_line(rates, 1);
-    const LineFaultDraw other_seed(LineFaultRates{0.05, 0.05, 12}, 0);
+    const LineFaultRates rates{0.05, 0.05};
+    const LineFaultDraw a(rates, 11, 0), again(rates, 11, 0), other_line(rates, 11, 1);
+    const LineFaultDraw other_seed(rates, 12, 0);
     int same_line_differs = 0, other_line_differs = 0, other_seed_differs = 0;
     for (std::uint64_t k = 0; k < 1000; ++k) {
         const FrameFault f = a.frame(k, 10);

@@ -7,12 +7,12 @@
 namespace cnc::uart {
 
 namespace {
-constexpr int kMaxFrameBits = 32;                            // one inversion mask; a UART frame has at most 12 bits
-constexpr std::uint64_t kLossDraw = kMaxFrameBits;           // the frame-loss draw follows the bits' draws
+constexpr int kMaxFrameBits = 32;                   // one inversion mask; a UART frame has at most 12 bits
+constexpr std::uint64_t kLossDraw = kMaxFrameBits;  // the frame-loss draw follows the bits' draws
 }  // namespace
 
-LineFaultDraw::LineFaultDraw(const LineFaultRates& rates, std::uint64_t line)
-    : m_rates(rates), m_key(splitmix64(splitmix64(rates.seed) ^ line)) {}
+LineFaultDraw::LineFaultDraw(const LineFaultRates& rates, std::uint64_t seed, std::uint64_t line)
+    : m_rates(rates), m_key(stream_key(seed, line)) {}
 
 double LineFaultDraw::unit(std::uint64_t frame, std::uint64_t draw) const {
     return unit_draw(m_key, frame * (kMaxFrameBits + 1) + draw);

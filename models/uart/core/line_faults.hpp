@@ -11,7 +11,6 @@ namespace cnc::uart {
 struct LineFaultRates {
     double ber = 0.0;              // bit error rate, 0 .. 0.5
     double frame_loss_rate = 0.0;  // fraction of frames lost whole, 0 .. 1
-    std::uint64_t seed = 1;
 
     [[nodiscard]] bool any() const { return ber > 0.0 || frame_loss_rate > 0.0; }
 };
@@ -26,7 +25,7 @@ struct FrameFault {
 class LineFaultDraw {
 public:
     // `line` tells apart the lines that share a seed (each direction of a link).
-    LineFaultDraw(const LineFaultRates& rates, std::uint64_t line);
+    LineFaultDraw(const LineFaultRates& rates, std::uint64_t seed, std::uint64_t line);
 
     // The fate of the line's frame number `frame` (0, 1, ...) of `bits` bits (at most 32).
     [[nodiscard]] FrameFault frame(std::uint64_t frame, int bits) const;

@@ -81,8 +81,9 @@ public:
         if (!made) return std::nullopt;
         host::OutgoingPacket packet = packet_of(*made, m_numerators, m_settings);
         m_lines.push_back(made->seg.line);
-        if (m_keep_fields) m_sent.push_back({0, made->seg.line, sent_fields(packet)});
-        m_unexecuted.push_back({std::move(*made), now_ps()});
+        const TimePs t_taken_ps = now_ps();
+        if (m_keep_fields) m_sent.push_back({t_taken_ps, made->seg.line, sent_fields(packet)});
+        m_unexecuted.push_back({std::move(*made), t_taken_ps});
         return packet;
     }
     double wait_after_last_s() override { return m_segments.wait_after_last_s(); }
@@ -105,7 +106,7 @@ public:
     }
     [[nodiscard]] const RecordLog<int>& lines() const { return m_lines; }  // per packet sent
     void drop_lines_before(std::size_t end) { m_lines.drop_before(end); }
-    // With keep_fields: every packet made, in order (their write times are the sender's).
+    // With keep_fields: every packet the sender took, in order.
     [[nodiscard]] const std::vector<HostPacket>& sent() const { return m_sent; }
 
 private:
@@ -519,9 +520,11 @@ private:
     // Each wire through its faults, drawn apart (line 0 to the FPGA, 1 from it) and timed by its sender's bit clock.
     void wire_faulty_lines() {
         const uart::LineFaultRates& rates = m_s.faults.uart;
-        m_to_fpga_line = std::make_unique<uart::FaultyLine>("to_fpga_line", rates, 0, m_cp2102.baud().bit_clock());
+        const std::uint64_t seed = m_s.faults.seed;
+        m_to_fpga_line =
+            std::make_unique<uart::FaultyLine>("to_fpga_line", rates, seed, 0, m_cp2102.baud().bit_clock());
         m_from_fpga_line = std::make_unique<uart::FaultyLine>(
-            "from_fpga_line", rates, 1, uart::BitClock{m_f.fpga.uart_full_bit_cycles, m_f.fpga.clk_hz});
+            "from_fpga_line", rates, seed, 1, uart::BitClock{m_f.fpga.uart_full_bit_cycles, m_f.fpga.clk_hz});
         m_cp2102.txd(m_wires.cp2102_txd);
         m_to_fpga_line->in(m_wires.cp2102_txd);
         m_to_fpga_line->out(m_wires.uart_rx);
@@ -652,16 +655,12 @@ nlohmann::json fields_json(const fpga::MotionFields& f) {
 // Every packet sent against what step_gen ran (packet_faults.hpp), what detected the faults, and the steps they
 // left at the job's end.
 void FpgaUartController::report_faults(ArchRun& run, std::ostringstream& text) const {
-    std::vector<HostPacket> sent = m_packets.sent();
-    const auto& log = m_sender.packets();
-    sent.resize(std::min(sent.size(), log.size()));  // an aborted script sent fewer than it made
-    for (std::size_t k = 0; k < sent.size(); ++k) sent[k].t_write_ps = log[k].t_write_ps;
     std::vector<FpgaPacket> received;
     for (std::size_t k = 0; k < m_fpga->packet_count(); ++k) {
         const fpga::PacketRecord r = m_fpga->packet(k);
         received.push_back({r.t_pkt_valid_ps, r.accepted, {r.motion, r.steps_x, r.steps_y, r.feed}});
     }
-    const PacketFaults f = packet_faults(sent, received);
+    const PacketFaults f = packet_faults(m_packets.sent(), received);
     const fpga::FpgaStats st = m_fpga->stats();
     const uart::FaultyLineStats to = m_to_fpga_line ? m_to_fpga_line->stats() : uart::FaultyLineStats{};
     const uart::FaultyLineStats from = m_from_fpga_line ? m_from_fpga_line->stats() : uart::FaultyLineStats{};
@@ -675,7 +674,7 @@ void FpgaUartController::report_faults(ArchRun& run, std::ostringstream& text) c
                           {"error_steps", c.error_steps}});
     }
     run.details["faults"] = {
-        {"seed", m_s.faults.uart.seed},
+        {"seed", m_s.faults.seed},
         {"uart_ber", m_s.faults.uart.ber},
         {"uart_frame_loss_rate", m_s.faults.uart.frame_loss_rate},
         {"to_fpga", line_json(to)},
@@ -700,7 +699,7 @@ void FpgaUartController::report_faults(ArchRun& run, std::ostringstream& text) c
         {"repeats_acked", st.repeats},
         {"job_end_error_steps", f.job_end_error_steps},
         {"silent", silent}};
-    text << fmt::format(FMT_STRING("faults (seed {}): UART BER {:g}, frames lost {:g}\n"), m_s.faults.uart.seed,
+    text << fmt::format(FMT_STRING("faults (seed {}): UART BER {:g}, frames lost {:g}\n"), m_s.faults.seed,
                         m_s.faults.uart.ber, m_s.faults.uart.frame_loss_rate)
          << fmt::format(FMT_STRING("  to the FPGA: {} of {} frames hit ({} lost, {} bits inverted); from it: {} of {} "
                                    "({} lost, {} bits)\n"),

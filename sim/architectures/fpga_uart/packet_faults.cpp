@@ -32,7 +32,7 @@ PacketFaults packet_faults(const std::vector<HostPacket>& sent, const std::vecto
         f.job_end_error_steps[0] += r.fields.steps_x;
         f.job_end_error_steps[1] += r.fields.steps_y;
         const auto after = std::upper_bound(sent.begin(), sent.end(), r.t_pkt_valid_ps,
-                                            [](TimePs t, const HostPacket& p) { return t < p.t_write_ps; });
+                                            [](TimePs t, const HostPacket& p) { return t < p.t_taken_ps; });
         if (after == sent.begin()) {  // bytes before the first packet: nothing was being sent
             ++f.extra;
             continue;

@@ -1,5 +1,5 @@
 // What the faults on the link did to the job's packets: each packet step_gen saw is laid against the one the host
-// was sending when it arrived (stop-and-wait keeps one packet in flight: the last written before its pkt_valid),
+// was sending when it arrived (stop-and-wait keeps one packet in flight: the last taken before its pkt_valid),
 // so a byte lost or a packet misframed never shifts the pairing of the packets after it. A packet the FPGA ran
 // with other fields than the host sent is a silent corruption (the seed's packets carry no check); a packet no
 // record ran at all is lost; a second run of a packet, or a record before any packet, is extra. The steps each
@@ -15,7 +15,7 @@
 namespace cnc::sim::fpga_uart {
 
 struct HostPacket {
-    TimePs t_write_ps = 0;  // the script's write
+    TimePs t_taken_ps = 0;  // the script took it to send (it writes it after, and takes the next after its reply)
     int gcode_line = 0;     // 0: unknown
     fpga::MotionFields fields;
 };

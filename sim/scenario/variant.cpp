@@ -5,6 +5,7 @@
 #include <set>
 
 #include "common/bad_input.hpp"
+#include "host/core/text_number.hpp"
 
 namespace cnc::sim {
 
@@ -15,9 +16,7 @@ const char* const kVariantSyntax =
 namespace {
 
 std::string trimmed(const std::string& s) {
-    const auto first = s.find_first_not_of(" \t");
-    if (first == std::string::npos) return "";
-    return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+    return std::string(host::trim(s));
 }
 
 bool name_char(char c) {

@@ -7,7 +7,7 @@ namespace cnc::host::cad2g {
 
 namespace {
 
-// exact >= 0, finite and below 2^63.
+// exact finite and within +-2^63 (the cast truncates toward zero).
 std::int64_t to_integer(double exact, OcrRounding rounding) {
     return static_cast<std::int64_t>(rounding == OcrRounding::Nearest ? std::floor(exact + 0.5) : exact);
 }
@@ -23,8 +23,7 @@ Ocr ocr_for_speed(double speed_mm_per_s, double mm_per_step, TimerClock clk, Ocr
     const double lowest = rounding == OcrRounding::Nearest ? -0.5 : 0.0;
     if (o.exact < lowest) {
         o.too_fast = true;
-        o.integer = rounding == OcrRounding::Nearest ? static_cast<std::int64_t>(std::floor(o.exact + 0.5))
-                                                     : static_cast<std::int64_t>(std::trunc(o.exact));
+        o.integer = to_integer(o.exact, rounding);
         o.value = 0;
         return o;
     }

@@ -7,6 +7,7 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
       rx_data("rx_data"),
       rx_valid("rx_valid"),
       motion("motion"),
+      seq("seq"),
       steps_x("steps_x"),
       steps_y("steps_y"),
       feed_rate("feed_rate"),
@@ -18,7 +19,7 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
       repeat("repeat"),
       m_cfg(cfg),
       m_clock(clock_grid(cfg)),
-      m_core(cfg.numerator_default, cfg.packet_crc),
+      m_core(cfg.numerator_default, cfg.packet_crc, cfg.queue_depth == 0),
       m_writer("writer") {
     SC_HAS_PROCESS(PacketDecoder);
     numerator_x.initialize(cfg.numerator_default);  // seed 000 §5.2.3 (Π.4) reset value
@@ -44,6 +45,7 @@ void PacketDecoder::on_rx_valid() {
         m_motions.push_back({t, f});
         m_writer.at(t, [this, f] {
             motion.write(f.motion);
+            seq.write(f.seq);
             steps_x.write(f.steps_x);
             steps_y.write(f.steps_y);
             feed_rate.write(f.feed);

@@ -17,6 +17,7 @@ public:
     sc_core::sc_in<std::uint8_t> rx_data;
     sc_core::sc_in<bool> rx_valid;
     sc_core::sc_out<std::uint8_t> motion;
+    sc_core::sc_out<std::uint8_t> seq;  // b0[6:2], read by the packet queue
     sc_core::sc_out<std::int32_t> steps_x;
     sc_core::sc_out<std::int32_t> steps_y;
     sc_core::sc_out<std::uint16_t> feed_rate;

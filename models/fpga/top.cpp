@@ -29,17 +29,24 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     pkt_dec_inst.steps_x(m_steps_x);
     pkt_dec_inst.steps_y(m_steps_y);
     pkt_dec_inst.feed_rate(m_feed_rate);
-    pkt_dec_inst.pkt_valid(pkt_valid);
+    pkt_dec_inst.seq(m_seq);
     pkt_dec_inst.numerator_x(m_numerator_x);
     pkt_dec_inst.numerator_y(m_numerator_y);
     pkt_dec_inst.cfg_valid(cfg_valid);
     pkt_dec_inst.crc_error(m_crc_error);
     pkt_dec_inst.repeat(m_repeat);
 
-    step_gen_inst.steps_x(m_steps_x);
-    step_gen_inst.steps_y(m_steps_y);
-    step_gen_inst.feed_rate(m_feed_rate);
-    step_gen_inst.pkt_valid(pkt_valid);
+    if (cfg.queue_depth > 0) {
+        wire_queue(cfg);
+    } else {
+        pkt_dec_inst.pkt_valid(pkt_valid);
+        step_gen_inst.steps_x(m_steps_x);
+        step_gen_inst.steps_y(m_steps_y);
+        step_gen_inst.feed_rate(m_feed_rate);
+        step_gen_inst.pkt_valid(pkt_valid);
+        laser_ctrl_inst.motion(m_motion);
+        laser_ctrl_inst.pkt_valid(pkt_valid);
+    }
     if (cfg.init_packet_wired) {  // §5.2.6: "must also be driven" to step_gen
         step_gen_inst.numerator_x(m_numerator_x);
         step_gen_inst.numerator_y(m_numerator_y);
@@ -55,8 +62,6 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     step_gen_inst.step_y(step_y);
     step_gen_inst.busy(busy);
 
-    laser_ctrl_inst.motion(m_motion);
-    laser_ctrl_inst.pkt_valid(pkt_valid);
     laser_ctrl_inst.busy(busy);
     laser_ctrl_inst.laser(laser);
 
@@ -77,6 +82,40 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     SC_METHOD(on_repeat);
     sensitive << m_repeat;
     dont_initialize();
+    if (cfg.queue_depth > 0) {
+        SC_METHOD(on_status_req);
+        sensitive << m_status_req;
+        dont_initialize();
+        SC_METHOD(on_tx_busy);
+        sensitive << m_tx_busy;
+        dont_initialize();
+    }
+}
+
+void Top::wire_queue(const FpgaConfig& cfg) {
+    packet_queue_inst = std::make_unique<PacketQueue>("packet_queue_inst", cfg);
+    PacketQueue& q = *packet_queue_inst;
+    pkt_dec_inst.pkt_valid(m_decoder_pkt_valid);
+    q.motion(m_motion);
+    q.seq(m_seq);
+    q.steps_x(m_steps_x);
+    q.steps_y(m_steps_y);
+    q.feed_rate(m_feed_rate);
+    q.pkt_valid(m_decoder_pkt_valid);
+    q.crc_error(m_crc_error);
+    q.busy(busy);
+    q.q_motion(m_q_motion);
+    q.q_steps_x(m_q_steps_x);
+    q.q_steps_y(m_q_steps_y);
+    q.q_feed_rate(m_q_feed_rate);
+    q.q_pkt_valid(pkt_valid);
+    q.status_req(m_status_req);
+    step_gen_inst.steps_x(m_q_steps_x);
+    step_gen_inst.steps_y(m_q_steps_y);
+    step_gen_inst.feed_rate(m_q_feed_rate);
+    step_gen_inst.pkt_valid(pkt_valid);
+    laser_ctrl_inst.motion(m_q_motion);
+    laser_ctrl_inst.pkt_valid(pkt_valid);
 }
 
 namespace {
@@ -103,7 +142,7 @@ void Top::start_tx(std::int64_t edge, std::uint8_t byte) {
 // A packet whose CRC failed: edge k+1 sees the strobe of edge k and answers NAK if uart_tx is free.
 void Top::on_crc_error() {
     ++m_activations;
-    if (!m_crc_error.read()) return;
+    if (!m_crc_error.read() || packet_queue_inst) return;  // the queue answers with its status
     if (m_tx_busy.read()) return;
     start_tx(m_clock.last_at_or_before(now_ps()) + 1, kNak);
 }
@@ -124,6 +163,7 @@ void Top::on_busy() {
     const std::int64_t f = m_clock.last_at_or_before(now_ps());
     const TimePs t_start = m_clock.at(f + 1);
     ++m_pkt_count;
+    if (packet_queue_inst) return;  // the queue's status says the move ended
     if (m_tx_busy.read()) {  // no pending flag: the ACK is lost (seed 000 §4.13)
         ++m_acks_dropped;
         m_acks.push_back({m_clock.at(f), -1});
@@ -134,12 +174,46 @@ void Top::on_busy() {
     start_tx(f + 1, kAck);
 }
 
+void Top::on_status_req() {
+    ++m_activations;
+    if (!m_status_req.read()) return;
+    m_status_due = true;
+    if (m_status_tx == StatusTx::Idle && !m_tx_busy.read()) start_status(m_clock.last_at_or_before(now_ps()) + 1);
+}
+
+void Top::start_status(std::int64_t edge) {
+    const auto bytes = queue_protocol::encode(packet_queue_inst->take_status());
+    m_status_due = false;
+    m_status_tx = StatusTx::Byte0;
+    m_status_byte1 = bytes[1];
+    ++m_statuses_sent;
+    start_tx(edge, bytes[0]);
+}
+
+// uart_tx's busy fell at edge g: IDLE at g+1 takes the next byte.
+void Top::on_tx_busy() {
+    ++m_activations;
+    if (m_tx_busy.read()) return;
+    const std::int64_t next = m_clock.last_at_or_before(now_ps()) + 1;
+    if (m_status_tx == StatusTx::Byte0) {
+        m_status_tx = StatusTx::Byte1;
+        start_tx(next, m_status_byte1);
+        return;
+    }
+    m_status_tx = StatusTx::Idle;
+    if (m_status_due) start_status(next);
+}
+
 void Top::on_cfg_valid() {
     ++m_activations;
     if (!cfg_valid.read()) return;
     const std::int64_t k = m_clock.last_at_or_before(now_ps());
     m_inits.push_back({m_clock.at(k), m_numerator_x.read(), m_numerator_y.read(),
                        m_cfg.init_packet_wired && step_gen_inst.idle_at_edge(k + 1)});
+}
+
+const RecordLog<PacketDecoder::MotionOut>& Top::handed_over() const {
+    return packet_queue_inst ? packet_queue_inst->issued() : pkt_dec_inst.motions();
 }
 
 std::vector<PacketRecord> Top::packets() const {
@@ -158,14 +232,19 @@ void Top::drop_packets_before(std::size_t end) {
     const auto kept = std::partition_point(
         m_acks.begin(), m_acks.end(), [&](const AckAfterBusy& a) { return a.t_busy_fall_ps <= last_busy_fall_ps; });
     m_acks.drop_before(m_acks.first() + static_cast<std::size_t>(std::distance(m_acks.begin(), kept)));
-    pkt_dec_inst.drop_motions_before(end);
+    if (packet_queue_inst) {
+        packet_queue_inst->drop_issued_before(end);
+        pkt_dec_inst.drop_motions_before(pkt_dec_inst.motions().size());
+    } else {
+        pkt_dec_inst.drop_motions_before(end);
+    }
     step_gen_inst.drop_moves_before(end);
 }
 
 PacketRecord Top::packet(std::size_t i) const {
     // The decoder logs a packet when it schedules pkt_valid, step_gen when pkt_valid is high: a run stopped in
     // between has one decoder entry more, which is left out until step_gen has seen it.
-    const auto& m = pkt_dec_inst.motions()[i];
+    const auto& m = handed_over()[i];
     const auto& s = step_gen_inst.moves()[i];
     PacketRecord r;
     r.t_pkt_valid_ps = m.t_pkt_valid_ps;
@@ -197,12 +276,20 @@ FpgaStats Top::stats() const {
     s.crc_errors = pkt_dec_inst.crc_errors();
     s.naks_sent = m_naks_sent;
     s.repeats = pkt_dec_inst.repeats();
+    if (packet_queue_inst) {
+        const PacketQueueCore& q = packet_queue_inst->core();
+        s.queued = q.queued();
+        s.answered_again = q.answered_again();
+        s.refused = q.refused();
+        s.statuses_sent = m_statuses_sent;
+    }
     return s;
 }
 
 std::uint64_t Top::activations() const {
     return m_activations + m_writer.activations() + uart_rx_inst.activations() + pkt_dec_inst.activations() +
-           step_gen_inst.activations() + laser_ctrl_inst.activations() + uart_tx_inst.activations();
+           step_gen_inst.activations() + laser_ctrl_inst.activations() + uart_tx_inst.activations() +
+           (packet_queue_inst ? packet_queue_inst->activations() : 0);
 }
 
 void Top::add_traces(sc_core::sc_trace_file* tf) const {

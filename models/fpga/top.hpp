@@ -1,14 +1,18 @@
 // top (seed 000 §5.2.6, Π.1) as event-driven blocks: uart_rx -> packet_decoder -> step_gen + laser_ctrl, uart_tx
 // sending the 0xAA ACK when busy falls (only if uart_tx is idle then), wired as top.v. init_packet_wired = false
 // keeps top.v's unconnected numerator path (seed 000 §5.2.6 says it must be driven). LEDR/HEX are not modelled.
+// With the packet queue (fpga.queue_depth) packet_queue sits between the decoder and step_gen/laser_ctrl, and uart_tx
+// sends its 2-byte statuses instead of the ACK.
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <systemc>
 #include <vector>
 
 #include "common/record_log.hpp"
 #include "fpga/board.hpp"
+#include "fpga/packet_queue.hpp"
 #include "fpga/core/fpga_config.hpp"
 #include "fpga/core/fpga_records.hpp"
 #include "fpga/laser_ctrl.hpp"
@@ -44,6 +48,14 @@ private:
     void on_cfg_valid();
     void on_crc_error();
     void on_repeat();
+    // The queue's status: its two bytes back to back, the values read when the first starts; a request while one is
+    // on the wire sends a fresh one after it.
+    void on_status_req();
+    void on_tx_busy();
+    void start_status(std::int64_t edge);
+    void wire_queue(const FpgaConfig& cfg);
+    // The records' source: the decoder's packets, or with the queue the moves it handed step_gen.
+    [[nodiscard]] const RecordLog<PacketDecoder::MotionOut>& handed_over() const;
     // tx_start for one clock at edge `edge` with tx_data = byte; an ACK wins over a NAK asked for the same edge.
     void start_tx(std::int64_t edge, std::uint8_t byte);
 
@@ -60,6 +72,14 @@ private:
     sc_core::sc_signal<std::uint8_t> m_tx_data{"tx_data", 0xAA};  // top.v: .tx_data(8'hAA), seed 000 §4.11
     sc_core::sc_signal<bool> m_crc_error{"crc_error", false};
     sc_core::sc_signal<bool> m_repeat{"repeat", false};
+    sc_core::sc_signal<std::uint8_t> m_seq{"seq", 0};
+    // With the queue: the decoder's strobe (the board's pkt_valid is then step_gen's) and the queue's outputs.
+    sc_core::sc_signal<bool> m_decoder_pkt_valid{"decoder_pkt_valid", false};
+    sc_core::sc_signal<std::uint8_t> m_q_motion{"q_motion", 0};
+    sc_core::sc_signal<std::int32_t> m_q_steps_x{"q_steps_x", 0};
+    sc_core::sc_signal<std::int32_t> m_q_steps_y{"q_steps_y", 0};
+    sc_core::sc_signal<std::uint16_t> m_q_feed_rate{"q_feed_rate", 0};
+    sc_core::sc_signal<bool> m_status_req{"status_req", false};
     // top.v leaves step_gen's cfg_valid/numerator inputs unconnected; synthesis ties them low.
     sc_core::sc_signal<bool> m_cfg_valid_unconnected{"cfg_valid_unconnected", false};
     sc_core::sc_signal<std::uint32_t> m_numerator_unconnected{"numerator_unconnected", 0};
@@ -70,6 +90,7 @@ public:  // instance names as in top.v
     StepGen step_gen_inst;
     LaserCtrl laser_ctrl_inst;
     UartTx uart_tx_inst;
+    std::unique_ptr<PacketQueue> packet_queue_inst;  // with fpga.queue_depth only
 
 private:
     TimedWriter m_writer;
@@ -86,6 +107,11 @@ private:
     std::uint64_t m_naks_sent = 0;
     std::int64_t m_tx_edge = -1;  // the edge of the last tx_start asked for, and its byte
     std::uint8_t m_tx_byte = 0;
+    enum class StatusTx { Idle, Byte0, Byte1 };
+    StatusTx m_status_tx = StatusTx::Idle;
+    bool m_status_due = false;
+    std::uint8_t m_status_byte1 = 0;
+    std::uint64_t m_statuses_sent = 0;
     std::uint64_t m_activations = 0;
 };
 

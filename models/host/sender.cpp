@@ -124,6 +124,10 @@ void Sender::run() {
     m_t_init_write = now_ps();
     send_init();
     m_port.reset_input_buffer();
+    if (m_cfg.queue_depth > 0) {
+        run_queued();
+        return;
+    }
 
     int segment = 0;
     while (const std::optional<OutgoingPacket> packet = m_motion.next()) {

@@ -12,6 +12,7 @@
 
 #include <systemc>
 
+#include "common/queue_protocol.hpp"
 #include "common/record_log.hpp"
 #include "common/units.hpp"
 #include "host/core/sender_config.hpp"
@@ -72,6 +73,11 @@ public:
     // With the packet check: packets sent again, NAKs read, and timeouts answered by a resend.
     [[nodiscard]] int resends() const { return m_resends; }
     [[nodiscard]] int naks() const { return m_naks; }
+    // With the packet queue: status bytes that fit no status, statuses naming packets not in flight (both: hit on
+    // the wire), and packets sent again only to have the status repeated.
+    [[nodiscard]] int stray_bytes() const { return m_stray_bytes; }
+    [[nodiscard]] int bad_statuses() const { return m_bad_statuses; }
+    [[nodiscard]] int polls() const { return m_polls; }
     // How long the host stall (SenderConfig::stall_*) held the script up: from its first wish to act in the stall
     // to the stall's end.
     [[nodiscard]] TimePs stalled_ps() const { return m_stalled_ps; }
@@ -80,6 +86,13 @@ public:
 
 private:
     void run();
+    // With the FPGA's packet queue (sender_queue.cpp).
+    void run_queued();
+    struct QueueLink {
+        int depth = 0;
+        queue_protocol::Status status;
+        [[nodiscard]] bool idle(std::size_t in_flight) const;
+    };
     void write(const std::uint8_t* data, std::size_t n);
     enum class Reply { Ack, Nak, None };
     // Waits for 0xAA (or, with the packet check, a NAK) until `deadline`. Other bytes are reported and skipped (the
@@ -105,6 +118,9 @@ private:
     int m_errors = 0;
     int m_resends = 0;
     int m_naks = 0;
+    int m_stray_bytes = 0;
+    int m_bad_statuses = 0;
+    int m_polls = 0;
     TimePs m_stalled_ps = 0;
     bool m_sequence = false;  // the packet check's alternating bit of the next new move
     bool m_finished = false;

@@ -3,6 +3,8 @@
 // packet wiring, and the process-activation budget (the model wakes per edge, never per clock).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "common/crc16.hpp"
 #include "fpga_test_support.hpp"
 
@@ -140,6 +142,69 @@ TEST(FpgaGolden, CheckedPacketsAreNakedRunAndAckedOnce) {
     EXPECT_EQ(st.naks_sent, 1U);
     EXPECT_EQ(st.repeats, 1U);
     EXPECT_EQ(st.acks_sent, 1U);  // at busy's fall; the repeat's ACK is counted as a repeat
+}
+
+// The packet queue (fpga.queue_depth = 4, with the packet check): the worked packet numbered 0 and again numbered 1
+// (bits 6:2 of its first byte), back to back on the wire. Packet 0 is taken the edge after the decoder completes it
+// and goes to step_gen there; packet 1 arrives while move 0 runs, waits in the queue and goes to step_gen at the edge
+// move 0's busy falls, so that step_gen, IDLE at the next edge, starts it at once: its first STEP 203 clocks after
+// busy's fall, one period plus 203 clocks after move 0's last. Each answer is the 2-byte status of
+// common/queue_protocol.hpp, its bytes written out here from the frame: 11 running free, 10 refused next. Then packet 1
+// sent again is answered (not run again), and packet 3 (2 is next) is refused.
+TEST(FpgaGolden, QueuedPacketsRunBackToBackAndEachIsAnsweredWithTheStatus) {
+    const auto numbered = [](std::uint8_t seq) {
+        std::vector<std::uint8_t> p = kWorkedMotion;
+        p[0] = static_cast<std::uint8_t>(p[0] | (seq << 2U));
+        const std::uint16_t crc = crc16(p.data(), p.size());
+        p.push_back(static_cast<std::uint8_t>(crc >> 8U));
+        p.push_back(static_cast<std::uint8_t>(crc & 0xFFU));
+        return p;
+    };
+    UartWave w = sync_sender();
+    const TimePs p0_end = w.bytes(20 * kUs, numbered(0));
+    const std::int64_t k0 = pkt_valid_edge_for_last_start_bit(w.frame_starts().back());
+    w.bytes(p0_end, numbered(1));
+    const std::int64_t fall0 = k0 + 1 + 203 + kRunCycles;
+    const std::int64_t fall1 = fall0 + 203 + kRunCycles;
+    w.bytes((fall1 + 50'000) * kCyclePs, numbered(1));
+    w.bytes((fall1 + 200'000) * kCyclePs, numbered(3));
+    const std::int64_t k_last = pkt_valid_edge_for_last_start_bit(w.frame_starts().back());
+    FpgaConfig cfg;
+    cfg.packet_crc = true;
+    cfg.queue_depth = 4;
+    FpgaBench bench("bench", cfg, w.changes());
+    bench.run_to_edge(k_last + 20'000);
+    const auto logs = bench.logs();
+
+    EXPECT_EQ(edges_in_cycles(logs.at("pkt_valid").rising()), (std::vector<std::int64_t>{k0 + 1, fall0}));
+    EXPECT_EQ(edges_in_cycles(logs.at("busy").falling()), (std::vector<std::int64_t>{fall0, fall1}));
+    std::vector<std::int64_t> steps = pulse_train(k0 + 1 + 203, 15'625, 320);
+    const std::vector<std::int64_t> second = pulse_train(fall0 + 203, 15'625, 320);
+    steps.insert(steps.end(), second.begin(), second.end());
+    EXPECT_EQ(edges_in_cycles(logs.at("step_x").rising()), steps);
+    EXPECT_EQ(second.front() - (fall0 - 15'625), 15'625 + 203);
+
+    std::vector<int> bytes;
+    const EdgeLog& tx = logs.at("tx");
+    for (TimePs t_start = 0;;) {
+        const std::vector<TimePs> falls = tx.falling();
+        const auto next = std::find_if(falls.begin(), falls.end(), [&](TimePs t) { return t >= t_start; });
+        if (next == falls.end()) break;
+        bytes.push_back(decode_frame(tx, *next, 434 * kCyclePs));
+        t_start = *next + 10 * 434 * kCyclePs;
+    }
+    EXPECT_EQ(bytes, (std::vector<int>{0xE4, 0x81,    // packet 0 queued and running: 4 free, 1 next
+                                       0xE3, 0x82,    // packet 1 queued behind it: 3 free, 2 next
+                                       0xE4, 0x82,    // move 0 ended, move 1 running: 4 free
+                                       0xC4, 0x82,    // move 1 ended: nothing running
+                                       0xC4, 0x82,    // packet 1 again: answered, not queued
+                                       0xC4, 0xA2}));  // packet 3: refused, 2 next
+    const FpgaStats st = bench.top.stats();
+    EXPECT_EQ(st.queued, 2U);
+    EXPECT_EQ(st.answered_again, 1U);
+    EXPECT_EQ(st.refused, 1U);
+    EXPECT_EQ(st.statuses_sent, 6U);
+    EXPECT_EQ(st.acks_sent, 0U);
 }
 
 TEST(FpgaGolden, WorkedExampleFrom50MHzSender) {

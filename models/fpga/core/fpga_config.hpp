@@ -24,6 +24,9 @@ struct FpgaConfig {
     bool init_packet_wired = true;                   // false = appendix top.v: cfg_valid/numerators unconnected
     PeriodArithmetic period_arithmetic = PeriodArithmetic::Exact;  // Exact = the text, Wrap32 = the appendix
     bool packet_crc = false;  // our option on seed 000 §7.2's CRC: packets checked, NAK, repeats (decoder core)
+    // Our option on seed 000 §7.2's command queue and FIFO packet buffer: packets queued ahead of step_gen
+    // (cmd_fifo.hpp); 0: none, the seed's stop-and-wait.
+    int queue_depth = 0;
     ClockDeviation clock;  // the board oscillator's offset and jitter (all zero: an ideal CLOCK_50)
 };
 

@@ -38,6 +38,10 @@ struct FpgaStats {
     std::uint64_t crc_errors = 0;       // with the packet check: packets whose CRC failed
     std::uint64_t naks_sent = 0;        // their NAKs sent (uart_tx was idle)
     std::uint64_t repeats = 0;          // good packets sent again (their ACK lost): not run twice
+    std::uint64_t queued = 0;           // with the packet queue: packets queued, each once
+    std::uint64_t answered_again = 0;   // packets queued already, sent again (their status lost): not queued twice
+    std::uint64_t refused = 0;          // packets out of order or with no slot: not queued
+    std::uint64_t statuses_sent = 0;
 };
 
 }  // namespace cnc::fpga

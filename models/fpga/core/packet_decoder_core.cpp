@@ -1,6 +1,7 @@
 #include "fpga/core/packet_decoder_core.hpp"
 
 #include "common/crc16.hpp"
+#include "common/queue_protocol.hpp"
 
 namespace cnc::fpga {
 
@@ -12,7 +13,8 @@ std::uint32_t be32(std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t 
 MotionFields motion_fields(const std::array<std::uint8_t, 12>& b, std::uint8_t feed_low) {
     return {static_cast<std::uint8_t>(b[0] & 0x3U), static_cast<std::int32_t>(be32(b[1], b[2], b[3], b[4])),
             static_cast<std::int32_t>(be32(b[5], b[6], b[7], b[8])),
-            static_cast<std::uint16_t>((b[9] << 8) | feed_low)};
+            static_cast<std::uint16_t>((b[9] << 8) | feed_low),
+            static_cast<std::uint8_t>(queue_protocol::seq_of(b[0]))};
 }
 }  // namespace
 
@@ -72,7 +74,7 @@ PacketDecoderCore::Completed PacketDecoderCore::complete_checked(bool is_cfg, st
         return Completed::Init;
     }
     const bool sequence = (b[0] & kSequenceBit) != 0;
-    if (m_sequence_seen && sequence == m_last_sequence) return Completed::Repeat;
+    if (m_alternating && m_sequence_seen && sequence == m_last_sequence) return Completed::Repeat;
     m_sequence_seen = true;
     m_last_sequence = sequence;
     m_motion = motion_fields(b, b[10]);

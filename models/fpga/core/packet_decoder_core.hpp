@@ -7,7 +7,8 @@
 // packet's first byte alternates from one new move to the next (an alternating-bit protocol): a packet whose CRC
 // does not leave the register at zero completes as BadCrc (the FPGA answers NAK), a good motion packet whose
 // sequence bit equals the last one passed on completes as Repeat (the host sent it again because it lost the ACK:
-// the move is not run twice).
+// the move is not run twice). With the packet queue (fpga.queue_depth) the queue's packet numbers do that instead:
+// no alternating bit.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -19,6 +20,7 @@ struct MotionFields {
     std::int32_t steps_x = 0;
     std::int32_t steps_y = 0;
     std::uint16_t feed = 0;
+    std::uint8_t seq = 0;  // b0[6:2]: the packet's number with the packet queue (common/queue_protocol.hpp)
 };
 
 struct InitFields {
@@ -35,8 +37,8 @@ public:
     static constexpr int kCrcBytes = 2;                 // with the packet check
     static constexpr std::uint8_t kSequenceBit = 0x80;  // b0[7] of a motion packet, with the packet check
 
-    explicit PacketDecoderCore(std::uint32_t numerator_default, bool packet_crc = false)
-        : m_crc(packet_crc), m_init{numerator_default, numerator_default} {}
+    explicit PacketDecoderCore(std::uint32_t numerator_default, bool packet_crc = false, bool alternating_bit = true)
+        : m_crc(packet_crc), m_alternating(packet_crc && alternating_bit), m_init{numerator_default, numerator_default} {}
 
     // The rx_valid branch of the always block.
     Completed on_byte(std::uint8_t byte);
@@ -53,6 +55,7 @@ private:
     void restart();
 
     bool m_crc;
+    bool m_alternating;
     int m_byte_count = 0;
     bool m_timeout_active = false;
     bool m_is_cfg = false;

@@ -22,6 +22,9 @@ struct SenderConfig {
     TimePs write_latency_ps = 100 * kPsPerUs;      // write() through the VCP driver to the USB request
     bool continue_on_timeout = false;  // the script asks "Continue anyway? [y/N]"; with no terminal: N, abort
     PacketCheckConfig check;
+    // With the FPGA's packet queue (fpga.queue_depth, common/queue_protocol.hpp): packets kept in flight at most;
+    // 0, the seed's stop-and-wait.
+    int queue_depth = 0;
     // A fault: the host program does nothing from stall_from_ps to stall_to_ps (another process, a swap storm, a
     // USB reset): it neither writes nor reads the port. Empty when stall_to_ps <= stall_from_ps.
     TimePs stall_from_ps = 0;

@@ -132,9 +132,12 @@ private:
 // busy rises one clock after pkt_valid (SETUP) and falls at DONE. Each record belongs to the packet the sender was
 // sending when it arrived (stop-and-wait: the last it took before pkt_valid), so that a packet lost on the link is
 // a piece of its own that ran no steps, and a record of a packet already run (a misframed or repeated one) makes
-// none: the pieces after them keep their own commanded moves.
+// none: the pieces after them keep their own commanded moves. With the packet queue the host sends ahead and the
+// queue takes each packet once, in order: record k is packet k.
 class ExecutedPieces {
 public:
+    explicit ExecutedPieces(bool queued) : m_queued(queued) {}
+
     // Hands `f` each piece not handed yet whose packet's busy fell before until_ps (none: every accepted packet's,
     // once the run has ended).
     template <typename F>
@@ -146,8 +149,8 @@ public:
             if (!r.accepted) continue;
             if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
             const TimePs t_begin_ps = clock.at(clock.first_after(r.t_pkt_valid_ps));
-            while (sent.newer_taken_by(r.t_pkt_valid_ps)) hand_lost(sent.executed(), t_begin_ps, moves, f);
-            if (sent.oldest_taken_ps() > r.t_pkt_valid_ps) continue;  // its packet has run already
+            while (!m_queued && sent.newer_taken_by(r.t_pkt_valid_ps)) hand_lost(sent.executed(), t_begin_ps, moves, f);
+            if (!m_queued && sent.oldest_taken_ps() > r.t_pkt_valid_ps) continue;  // its packet has run already
             const MadeSegment made = sent.executed();
             hand_unstepped(made.unstepped_before, t_begin_ps, moves, f);
             metrics::MoveSpec m = moves.next(made.seg, made.programmed ? &*made.programmed : nullptr);
@@ -184,6 +187,7 @@ private:
         }
     }
 
+    const bool m_queued;
     std::size_t m_record = 0;
     TimePs m_last_end_ps = 0;  // the last piece's
 };
@@ -293,6 +297,9 @@ void FpgaWarnings::finish(const fpga::Board& top, std::vector<Warning>& warnings
 constexpr const char* kDeadTimeNotSplit =
     "dead time not split into its causes: the link has faults, and a lost or repeated packet breaks the reading of "
     "one gap per packet";
+constexpr const char* kQueuedNotSplit =
+    "dead time not split into its causes: the packet queue sends ahead, so a gap is no turn of the stop-and-wait loop "
+    "(the metrics' job dead time measures the gaps)";
 
 // The models' per-packet records that every reader has read go: the metrics' pieces, the dead-time split and the
 // warnings read them once. The detailed report lists every packet step_gen saw and the sender sent, and the fault
@@ -393,6 +400,7 @@ void check_fpga_rate(const Scenario& s, const FpgaUartSettings& f) {
 // The script as the scenario sets it, with the host stall of its faults.
 host::SenderConfig sender_config(const Scenario& s, const FpgaUartSettings& f) {
     host::SenderConfig c = f.serial.sender;
+    c.queue_depth = f.fpga.queue_depth;
     if (s.faults.host_stall.any()) {
         c.stall_from_ps = s_to_ps(s.faults.host_stall.at_s);
         c.stall_to_ps = c.stall_from_ps + s_to_ps(s.faults.host_stall.length_s);
@@ -430,6 +438,7 @@ public:
           m_moves(s.machine, s.interpreter.start_mm),
           // Every gap only for the detailed report and the plots (which keep the whole run anyway).
           m_dead_fold(s.detail || s.keep_run_input),
+          m_executed(m_f.fpga.queue_depth > 0),
           m_warnings(m_f) {
         const std::size_t check_bytes = m_f.serial.sender.check.crc ? host::kCrcBytes : 0;
         m_cp2102.thin_tx_log(host::kInitPacketBytes + check_bytes,  // what the dead-time split reads
@@ -541,7 +550,10 @@ private:
     void report_faults(ArchRun& run, std::ostringstream& text) const;
     // The split reads gap k between packets k and k+1 as each packet runs once: not so on a link with faults (a host
     // stall keeps it so: its time shows as the host's).
-    [[nodiscard]] bool split_dead_time() const { return !m_s.faults.uart.any(); }
+    [[nodiscard]] bool split_dead_time() const { return !m_s.faults.uart.any() && m_f.fpga.queue_depth == 0; }
+    [[nodiscard]] const char* why_not_split() const {
+        return m_f.fpga.queue_depth > 0 ? kQueuedNotSplit : kDeadTimeNotSplit;
+    }
 
     const Scenario& m_s;
     const FpgaUartSettings& m_f;
@@ -602,7 +614,18 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
                      {"watchdog_resets", st.watchdog_resets},
                      {"acks_sent", st.acks_sent},
                      {"acks_dropped", st.acks_dropped}}},
-                   {"dead_time", split_dead_time() ? to_json(dead, s.detail) : nlohmann::json(kDeadTimeNotSplit)}};
+                   {"dead_time", split_dead_time() ? to_json(dead, s.detail) : nlohmann::json(why_not_split())}};
+    if (m_f.fpga.queue_depth > 0) {
+        run.details["queue"] = {{"depth", m_f.fpga.queue_depth},
+                                {"queued", st.queued},
+                                {"answered_again", st.answered_again},
+                                {"refused", st.refused},
+                                {"statuses_sent", st.statuses_sent},
+                                {"host_sent_again", m_sender.resends()},
+                                {"host_polls", m_sender.polls()},
+                                {"host_stray_bytes", m_sender.stray_bytes()},
+                                {"host_bad_statuses", m_sender.bad_statuses()}};
+    }
     if (s.detail) {  // one record per packet: they grow with the job
         nlohmann::json& sent = run.details["sender"]["packets"] = nlohmann::json::array();
         for (const host::SentPacket& p : m_sender.packets()) sent.push_back(sent_json(p));
@@ -616,7 +639,13 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
                         baud.error_pct, m_f.fpga.uart_full_bit_cycles)
          << "  packets sent " << m_sender.packets().size() << ", ACK timeouts " << m_sender.errors() << ", FPGA ACKs "
          << st.acks_sent << " (dropped " << st.acks_dropped << ")\n"
-         << (split_dead_time() ? summary_text(dead) : std::string("  ") + kDeadTimeNotSplit + "\n");
+         << (split_dead_time() ? summary_text(dead) : std::string("  ") + why_not_split() + "\n");
+    if (m_f.fpga.queue_depth > 0) {
+        text << fmt::format(FMT_STRING("  packet queue of {}: {} queued, {} answered again, {} refused, {} statuses; "
+                                       "host sent {} again, polled {} times\n"),
+                            m_f.fpga.queue_depth, st.queued, st.answered_again, st.refused, st.statuses_sent,
+                            m_sender.resends(), m_sender.polls());
+    }
     for (const host::SenderMessage& m : m_sender.messages()) {
         text << fmt::format(FMT_STRING("  host at {:.6f} s: {}\n"), ps_to_s(m.t_ps), m.text);
     }
@@ -660,7 +689,7 @@ void FpgaUartController::report_faults(ArchRun& run, std::ostringstream& text) c
         const fpga::PacketRecord r = m_fpga->packet(k);
         received.push_back({r.t_pkt_valid_ps, r.accepted, {r.motion, r.steps_x, r.steps_y, r.feed}});
     }
-    const PacketFaults f = packet_faults(m_packets.sent(), received);
+    const PacketFaults f = packet_faults(m_packets.sent(), received, m_f.fpga.queue_depth > 0);
     const fpga::FpgaStats st = m_fpga->stats();
     const uart::FaultyLineStats to = m_to_fpga_line ? m_to_fpga_line->stats() : uart::FaultyLineStats{};
     const uart::FaultyLineStats from = m_from_fpga_line ? m_from_fpga_line->stats() : uart::FaultyLineStats{};

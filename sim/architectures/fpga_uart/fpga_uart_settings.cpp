@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "common/bad_input.hpp"
+#include "common/queue_protocol.hpp"
 
 namespace cnc::sim {
 
@@ -91,6 +92,25 @@ void read_packet_check(KeyReader& r, FpgaUartSettings& s) {
     s.fpga.packet_crc = c.crc;
 }
 
+// Our option on seed 000 §7.2's command queue and FIFO packet buffer: the frame in common/queue_protocol.hpp.
+void read_queue(KeyReader& r, FpgaUartSettings& s) {
+    s.fpga.queue_depth = static_cast<int>(
+        r.get_int("fpga.queue_depth", 0, 0, queue_protocol::kMaxDepth,
+                  "packets the FPGA queues ahead of step_gen (seed 000 sec. 7.2 proposes a command queue): 0, the "
+                  "seed's stop-and-wait on an ACK at each move's end; 1 .. 16, numbered packets acknowledged on "
+                  "receipt with the free slots, the host keeping that many in flight and sending again from the "
+                  "number the FPGA expects after a refusal or a silence; needs protocol.crc = \"crc16\""));
+    if (s.fpga.queue_depth == 0) return;
+    if (!s.fpga.packet_crc) {
+        r.fail("fpga.queue_depth",
+               "the packet queue needs protocol.crc = \"crc16\": a byte lost while the host sends ahead misframes "
+               "every packet behind it, and only a check finds the packet boundaries again");
+    }
+    if (s.rtl.rtl) {
+        r.fail("fpga.queue_depth", "the packet queue is in the event model only: fpga.model = \"event\"");
+    }
+}
+
 }  // namespace
 
 // seed 000 §5.1.1: the DE1-SoC's CLOCK_50.
@@ -106,6 +126,7 @@ void read_fpga_uart_settings(KeyReader& r, const std::filesystem::path& base, Fp
     read_oscillator_settings(r, kDe1SocClock50, s.fpga.clk_hz, s.clock);
     read_rtl_settings(r, base, "fpga", s.rtl);
     read_packet_check(r, s);
+    read_queue(r, s);
 }
 
 }  // namespace cnc::sim

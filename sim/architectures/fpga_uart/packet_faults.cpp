@@ -1,6 +1,8 @@
 #include "architectures/fpga_uart/packet_faults.hpp"
 
 #include <algorithm>
+#include <iterator>
+#include <optional>
 
 namespace cnc::sim::fpga_uart {
 
@@ -13,10 +15,25 @@ bool same(const fpga::MotionFields& a, const fpga::MotionFields& b) {
            a.feed == b.feed;
 }
 
+// Stop-and-wait: the packet the host was sending when the record arrived, the last it took before.
+std::optional<std::size_t> in_flight_when(const std::vector<HostPacket>& sent, const FpgaPacket& r) {
+    const auto after = std::upper_bound(sent.begin(), sent.end(), r.t_pkt_valid_ps,
+                                        [](TimePs t, const HostPacket& p) { return t < p.t_taken_ps; });
+    if (after == sent.begin()) return std::nullopt;
+    return static_cast<std::size_t>(std::distance(sent.begin(), after) - 1);
+}
+
+std::optional<std::size_t> in_turn(const std::vector<HostPacket>& sent, std::size_t run) {
+    if (run >= sent.size()) return std::nullopt;
+    return run;
+}
+
 }  // namespace
 
-PacketFaults packet_faults(const std::vector<HostPacket>& sent, const std::vector<FpgaPacket>& received) {
+PacketFaults packet_faults(const std::vector<HostPacket>& sent, const std::vector<FpgaPacket>& received,
+                           bool in_order) {
     PacketFaults f;
+    std::size_t run = 0;
     f.sent = static_cast<std::int64_t>(sent.size());
     std::vector<int> runs_as_sent(sent.size(), 0);
     std::vector<bool> run_wrong(sent.size(), false);
@@ -31,13 +48,12 @@ PacketFaults packet_faults(const std::vector<HostPacket>& sent, const std::vecto
         }
         f.job_end_error_steps[0] += r.fields.steps_x;
         f.job_end_error_steps[1] += r.fields.steps_y;
-        const auto after = std::upper_bound(sent.begin(), sent.end(), r.t_pkt_valid_ps,
-                                            [](TimePs t, const HostPacket& p) { return t < p.t_taken_ps; });
-        if (after == sent.begin()) {  // bytes before the first packet: nothing was being sent
+        const std::optional<std::size_t> paired = in_order ? in_turn(sent, run++) : in_flight_when(sent, r);
+        if (!paired) {  // bytes before the first packet, or more runs than packets
             ++f.extra;
             continue;
         }
-        const auto k = static_cast<std::size_t>(std::distance(sent.begin(), after) - 1);
+        const std::size_t k = *paired;
         const HostPacket& p = sent[k];
         if (same(r.fields, p.fields)) {
             if (runs_as_sent[k]++ > 0) ++f.extra;

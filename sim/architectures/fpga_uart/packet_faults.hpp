@@ -1,5 +1,6 @@
 // What the faults on the link did to the job's packets: each packet step_gen saw is laid against the one the host
-// was sending when it arrived (stop-and-wait keeps one packet in flight: the last taken before its pkt_valid),
+// was sending when it arrived (stop-and-wait keeps one packet in flight: the last taken before its pkt_valid; with
+// the packet queue, which takes them in order, by their order),
 // so a byte lost or a packet misframed never shifts the pairing of the packets after it. A packet the FPGA ran
 // with other fields than the host sent is a silent corruption (the seed's packets carry no check); a packet no
 // record ran at all is lost; a second run of a packet, or a record before any packet, is extra. The steps each
@@ -47,7 +48,9 @@ struct PacketFaults {
     StepPair job_end_error_steps{};  // every executed record's steps less every sent packet's
 };
 
-// `sent` and `received` in time order.
-[[nodiscard]] PacketFaults packet_faults(const std::vector<HostPacket>& sent, const std::vector<FpgaPacket>& received);
+// `sent` and `received` in time order. `in_order`: the packet queue takes each packet once and in order (record k
+// of those step_gen ran is packet k), instead of the pairing by time.
+[[nodiscard]] PacketFaults packet_faults(const std::vector<HostPacket>& sent, const std::vector<FpgaPacket>& received,
+                                         bool in_order = false);
 
 }  // namespace cnc::sim::fpga_uart

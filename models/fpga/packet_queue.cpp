@@ -1,0 +1,94 @@
+#include "fpga/packet_queue.hpp"
+
+namespace cnc::fpga {
+
+PacketQueue::PacketQueue(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
+    : sc_module(name),
+      motion("motion"),
+      seq("seq"),
+      steps_x("steps_x"),
+      steps_y("steps_y"),
+      feed_rate("feed_rate"),
+      pkt_valid("pkt_valid"),
+      crc_error("crc_error"),
+      busy("busy"),
+      q_motion("q_motion"),
+      q_steps_x("q_steps_x"),
+      q_steps_y("q_steps_y"),
+      q_feed_rate("q_feed_rate"),
+      q_pkt_valid("q_pkt_valid"),
+      status_req("status_req"),
+      m_clock(clock_grid(cfg)),
+      m_core(cfg.queue_depth),
+      m_writer("writer") {
+    SC_HAS_PROCESS(PacketQueue);
+    SC_METHOD(on_pkt_valid);
+    sensitive << pkt_valid;
+    dont_initialize();
+    SC_METHOD(on_crc_error);
+    sensitive << crc_error;
+    dont_initialize();
+    SC_METHOD(on_busy);
+    sensitive << busy;
+    dont_initialize();
+}
+
+queue_protocol::Status PacketQueue::take_status() {
+    const queue_protocol::Status s = m_core.status(m_refused);
+    m_refused = false;
+    return s;
+}
+
+void PacketQueue::request_status(std::int64_t edge, bool refused) {
+    m_refused = m_refused || refused;
+    if (edge == m_status_edge) return;
+    m_status_edge = edge;
+    m_writer.at(m_clock.at(edge), [this] { status_req.write(true); });
+    m_writer.at(m_clock.at(edge + 1), [this] { status_req.write(false); });
+}
+
+void PacketQueue::hand_over(std::int64_t edge) {
+    MotionFields f;
+    if (!m_core.pop(f)) return;
+    m_handed = true;
+    const TimePs t = m_clock.at(edge);
+    m_issued.push_back({t, f});
+    m_writer.at(t, [this, f] {
+        q_motion.write(f.motion);
+        q_steps_x.write(f.steps_x);
+        q_steps_y.write(f.steps_y);
+        q_feed_rate.write(f.feed);
+        q_pkt_valid.write(true);
+    });
+    m_writer.at(m_clock.at(edge + 1), [this] { q_pkt_valid.write(false); });
+}
+
+// The decoder's pkt_valid high at edge k: the packet is taken at k+1 and, step_gen being free, handed over there.
+void PacketQueue::on_pkt_valid() {
+    ++m_activations;
+    if (!pkt_valid.read()) return;
+    const std::int64_t edge = m_clock.last_at_or_before(now_ps()) + 1;
+    const MotionFields f{motion.read(), steps_x.read(), steps_y.read(), feed_rate.read(), seq.read()};
+    const PacketQueueCore::Taken taken = m_core.on_packet(f);
+    if (taken == PacketQueueCore::Taken::Queued && !m_handed) hand_over(edge);
+    request_status(edge, taken == PacketQueueCore::Taken::Refused);
+}
+
+void PacketQueue::on_crc_error() {
+    ++m_activations;
+    if (!crc_error.read()) return;
+    request_status(m_clock.last_at_or_before(now_ps()) + 1, true);
+}
+
+// busy fell at edge f: step_gen is IDLE at f+1, where it sees a pkt_valid of edge f.
+void PacketQueue::on_busy() {
+    ++m_activations;
+    if (busy.read()) return;
+    const std::int64_t f = m_clock.last_at_or_before(now_ps());
+    m_handed = false;
+    m_core.on_move_done();
+    hand_over(f);
+    request_status(f, false);
+}
+
+}  // namespace cnc::fpga

@@ -7,12 +7,13 @@ LaserCtrl::LaserCtrl(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       motion("motion"),
       pkt_valid("pkt_valid"),
       busy("busy"),
+      inhibit("inhibit"),
       laser("laser"),
       m_clock(clock_grid(cfg)),
       m_writer("writer") {
     SC_HAS_PROCESS(LaserCtrl);
     SC_METHOD(on_inputs);
-    sensitive << pkt_valid << busy << m_engrave;
+    sensitive << pkt_valid << busy << inhibit << m_engrave;
     dont_initialize();
 }
 
@@ -30,8 +31,8 @@ void LaserCtrl::on_inputs() {
         const bool engrave = motion.read() != 0;  // G1/G2/G3 engrave, G0 does not
         m_writer.at(next_edge_ps, [this, engrave] { m_engrave.write(engrave); });
     }
-    if (busy.event() || m_engrave.event()) {
-        const bool on = m_engrave.read() && busy.read();
+    if (busy.event() || inhibit.event() || m_engrave.event()) {
+        const bool on = m_engrave.read() && busy.read() && !inhibit.read();
         m_writer.at(next_edge_ps, [this, on] { laser.write(on); });
     }
 }

@@ -1,5 +1,6 @@
 // laser_ctrl (seed 000 §5.2.5, Π.6 "fixed version"): engrave latched from motion on every pkt_valid (even one
-// step_gen ignores because it is busy), laser <= engrave & busy one clock later.
+// step_gen ignores because it is busy), laser <= engrave & busy one clock later; with our interlock input
+// (fpga.interlock) laser <= engrave & busy & !inhibit.
 #pragma once
 #include <cstdint>
 #include <systemc>
@@ -14,6 +15,7 @@ public:
     sc_core::sc_in<std::uint8_t> motion;
     sc_core::sc_in<bool> pkt_valid;
     sc_core::sc_in<bool> busy;
+    sc_core::sc_in<bool> inhibit;  // the synchronised lid input (tied low without the interlock)
     sc_core::sc_out<bool> laser;
 
     LaserCtrl(const sc_core::sc_module_name& name, const FpgaConfig& cfg);

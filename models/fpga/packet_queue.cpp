@@ -40,6 +40,7 @@ queue_protocol::Status PacketQueue::take_status() {
 }
 
 void PacketQueue::request_status(std::int64_t edge, bool refused) {
+    if (m_halted) return;
     m_refused = m_refused || refused;
     if (edge == m_status_edge) return;
     m_status_edge = edge;
@@ -49,7 +50,7 @@ void PacketQueue::request_status(std::int64_t edge, bool refused) {
 
 void PacketQueue::hand_over(std::int64_t edge) {
     MotionFields f;
-    if (!m_core.pop(f)) return;
+    if (m_halted || !m_core.pop(f)) return;
     m_handed = true;
     const TimePs t = m_clock.at(edge);
     m_issued.push_back({t, f});

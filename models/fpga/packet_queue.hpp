@@ -46,6 +46,8 @@ public:
     [[nodiscard]] const RecordLog<PacketDecoder::MotionOut>& issued() const { return m_issued; }
     void drop_issued_before(std::size_t end) { m_issued.drop_before(end); }
     [[nodiscard]] const PacketQueueCore& core() const { return m_core; }
+    // The e-stop: nothing more is handed to step_gen or answered.
+    void halt() { m_halted = true; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations + m_writer.activations(); }
 
 private:
@@ -62,6 +64,7 @@ private:
     RecordLog<PacketDecoder::MotionOut> m_issued;
     bool m_handed = false;   // a move handed to step_gen whose busy has not fallen yet
     bool m_refused = false;  // a refusal not told the host yet
+    bool m_halted = false;
     std::int64_t m_status_edge = -1;
     std::uint64_t m_activations = 0;
 };

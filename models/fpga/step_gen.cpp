@@ -1,5 +1,7 @@
 #include "fpga/step_gen.hpp"
 
+#include <algorithm>
+
 namespace cnc::fpga {
 
 StepGen::StepGen(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
@@ -79,12 +81,42 @@ void StepGen::fetch_next_edge() {
 }
 
 void StepGen::notify_next_edge() {
-    if (m_next) m_edge_due.notify(ps(m_clock.at(m_move_edge + m_next->cycle) - now_ps()));
+    std::optional<std::int64_t> due;
+    if (m_next) due = m_move_edge + m_next->cycle;
+    if (m_halt_edge && !m_halted) due = due ? std::min(*due, *m_halt_edge) : *m_halt_edge;
+    if (due) m_edge_due.notify(ps(m_clock.at(*due) - now_ps()));
+}
+
+void StepGen::halt_at(std::int64_t edge) {
+    m_halt_edge = edge;
+    m_idle_from = std::numeric_limits<std::int64_t>::max();
+    m_edge_due.cancel();
+    notify_next_edge();
+}
+
+void StepGen::halt(std::int64_t edge) {
+    m_halted = true;
+    m_next.reset();
+    m_schedule.reset();
+    if (step_x.read()) step_x.write(false);
+    if (step_y.read()) step_y.write(false);
+    if (busy.read()) busy.write(false);
+    if (m_moves.size() == 0 || m_moves.size() == m_moves.first()) return;
+    Move& last = m_moves[m_moves.size() - 1];
+    const TimePs t = m_clock.at(edge);
+    if (!last.accepted || last.t_busy_fall_ps <= t) return;
+    last.t_busy_fall_ps = t;
+    if (last.t_run_start_ps > t) last.t_run_start_ps = -1;
 }
 
 void StepGen::emit_edges() {
     ++m_activations;
     const std::int64_t edge = m_clock.last_at_or_before(now_ps());
+    if (m_halted) return;
+    if (m_halt_edge && edge >= *m_halt_edge) {
+        halt(edge);
+        return;
+    }
     while (m_next && m_move_edge + m_next->cycle == edge) {
         const bool level = m_next->level;
         switch (m_next->pin) {

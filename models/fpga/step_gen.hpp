@@ -4,6 +4,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <systemc>
 
@@ -43,6 +44,8 @@ public:
     void drop_moves_before(std::size_t end) { m_moves.drop_before(end); }
     // True if the FSM is IDLE at clock edge `edge` (so it would accept pkt_valid / cfg_valid there).
     [[nodiscard]] bool idle_at_edge(std::int64_t edge) const { return edge >= m_idle_from; }
+    // The e-stop (top.hpp): at edge `edge` STEP and busy go low and the FSM stops for good, the move it ran cut there.
+    void halt_at(std::int64_t edge);
     [[nodiscard]] std::uint64_t activations() const { return m_activations; }
 
 private:
@@ -51,6 +54,7 @@ private:
     void emit_edges();
     void fetch_next_edge();
     void notify_next_edge();
+    void halt(std::int64_t edge);
 
     const FpgaConfig m_cfg;
     const ClockGrid m_clock;
@@ -62,6 +66,8 @@ private:
     std::int64_t m_move_edge = 0;  // pkt_valid edge k of the running move
     std::optional<StepSchedule> m_schedule;
     std::optional<PinEdge> m_next;
+    std::optional<std::int64_t> m_halt_edge;
+    bool m_halted = false;
     sc_core::sc_event m_edge_due;
     RecordLog<Move> m_moves;
     std::uint64_t m_activations = 0;

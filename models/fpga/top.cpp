@@ -1,5 +1,7 @@
 #include "fpga/top.hpp"
 
+#include "common/link_bytes.hpp"
+
 #include <algorithm>
 #include <iterator>
 
@@ -63,6 +65,7 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     step_gen_inst.busy(busy);
 
     laser_ctrl_inst.busy(busy);
+    laser_ctrl_inst.inhibit(m_laser_inhibit);
     laser_ctrl_inst.laser(laser);
 
     uart_tx_inst.tx_data(m_tx_data);
@@ -86,10 +89,47 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
         SC_METHOD(on_status_req);
         sensitive << m_status_req;
         dont_initialize();
+    }
+    if (cfg.queue_depth > 0 || cfg.estop_input) {
         SC_METHOD(on_tx_busy);
         sensitive << m_tx_busy;
         dont_initialize();
     }
+    if (cfg.estop_input) {
+        SC_METHOD(on_estop);
+        sensitive << estop;
+        dont_initialize();
+    } else {
+        estop(m_tied_low);
+    }
+    if (cfg.interlock_input) {
+        SC_METHOD(on_lid);
+        sensitive << lid_open;
+        dont_initialize();
+    } else {
+        lid_open(m_tied_low);
+    }
+}
+
+// The press sampled by the synchroniser's first stage at edge e1 is seen at e1+1, where step_gen halts.
+void Top::on_estop() {
+    ++m_activations;
+    if (!estop.read() || m_halted) return;
+    const std::int64_t halt = m_clock.first_after(now_ps()) + 1;
+    m_halted = true;
+    m_halted_at_ps = m_clock.at(halt);
+    step_gen_inst.halt_at(halt);
+    if (packet_queue_inst) packet_queue_inst->halt();
+    m_halt_byte_due = true;
+    if (m_status_tx == StatusTx::Idle && !m_tx_busy.read()) send_next_byte(halt + 1);
+}
+
+// The lid's level, synchronised as the e-stop's, reaches laser_ctrl's register at the edge after it is sampled.
+void Top::on_lid() {
+    ++m_activations;
+    const bool open = lid_open.read();
+    const std::int64_t seen = m_clock.first_after(now_ps()) + 1;
+    m_writer.at(m_clock.at(seen), [this, open] { m_laser_inhibit.write(open); });
 }
 
 void Top::wire_queue(const FpgaConfig& cfg) {
@@ -118,21 +158,15 @@ void Top::wire_queue(const FpgaConfig& cfg) {
     laser_ctrl_inst.pkt_valid(pkt_valid);
 }
 
-namespace {
-constexpr std::uint8_t kAck = 0xAA;  // seed 000 §4.11
-// Our packet check's NAK: the ACK's bits inverted, so that no single bit error turns one into the other.
-constexpr std::uint8_t kNak = 0x55;
-}  // namespace
-
 void Top::start_tx(std::int64_t edge, std::uint8_t byte) {
-    if (edge == m_tx_edge) {
-        if (byte == kAck) m_tx_byte = kAck;
+    if (edge == m_tx_edge) {  // the halt byte wins over an ACK, an ACK over a NAK
+        if (byte == kHaltByte || (byte == kAckByte && m_tx_byte != kHaltByte)) m_tx_byte = byte;
         return;
     }
     m_tx_edge = edge;
     m_tx_byte = byte;
     m_writer.at(m_clock.at(edge), [this] {
-        if (m_tx_byte == kNak) ++m_naks_sent;
+        if (m_tx_byte == kNakByte) ++m_naks_sent;
         m_tx_data.write(m_tx_byte);
         tx_start.write(true);
     });
@@ -142,23 +176,23 @@ void Top::start_tx(std::int64_t edge, std::uint8_t byte) {
 // A packet whose CRC failed: edge k+1 sees the strobe of edge k and answers NAK if uart_tx is free.
 void Top::on_crc_error() {
     ++m_activations;
-    if (!m_crc_error.read() || packet_queue_inst) return;  // the queue answers with its status
+    if (!m_crc_error.read() || packet_queue_inst || m_halted) return;  // the queue answers with its status
     if (m_tx_busy.read()) return;
-    start_tx(m_clock.last_at_or_before(now_ps()) + 1, kNak);
+    start_tx(m_clock.last_at_or_before(now_ps()) + 1, kNakByte);
 }
 
 // A move sent again (the host lost its ACK): ACKed at once if it has run and nothing runs now; a move still running
 // is ACKed when busy falls.
 void Top::on_repeat() {
     ++m_activations;
-    if (!m_repeat.read()) return;
+    if (!m_repeat.read() || m_halted) return;
     if (busy.read() || m_tx_busy.read()) return;
-    start_tx(m_clock.last_at_or_before(now_ps()) + 1, kAck);
+    start_tx(m_clock.last_at_or_before(now_ps()) + 1, kAckByte);
 }
 
 void Top::on_busy() {
     ++m_activations;
-    if (busy.read()) return;
+    if (busy.read() || m_halted) return;
     // busy fell at edge f: edge f+1 sees busy_prev && !busy and samples tx_busy as it was after edge f.
     const std::int64_t f = m_clock.last_at_or_before(now_ps());
     const TimePs t_start = m_clock.at(f + 1);
@@ -171,14 +205,16 @@ void Top::on_busy() {
     }
     ++m_acks_sent;
     m_acks.push_back({m_clock.at(f), t_start});
-    start_tx(f + 1, kAck);
+    start_tx(f + 1, kAckByte);
 }
 
 void Top::on_status_req() {
     ++m_activations;
     if (!m_status_req.read()) return;
     m_status_due = true;
-    if (m_status_tx == StatusTx::Idle && !m_tx_busy.read()) start_status(m_clock.last_at_or_before(now_ps()) + 1);
+    if (m_status_tx == StatusTx::Idle && !m_tx_busy.read() && !m_halted) {
+        start_status(m_clock.last_at_or_before(now_ps()) + 1);
+    }
 }
 
 void Top::start_status(std::int64_t edge) {
@@ -194,14 +230,22 @@ void Top::start_status(std::int64_t edge) {
 void Top::on_tx_busy() {
     ++m_activations;
     if (m_tx_busy.read()) return;
-    const std::int64_t next = m_clock.last_at_or_before(now_ps()) + 1;
+    send_next_byte(m_clock.last_at_or_before(now_ps()) + 1);
+}
+
+void Top::send_next_byte(std::int64_t edge) {
     if (m_status_tx == StatusTx::Byte0) {
         m_status_tx = StatusTx::Byte1;
-        start_tx(next, m_status_byte1);
+        start_tx(edge, m_status_byte1);
         return;
     }
     m_status_tx = StatusTx::Idle;
-    if (m_status_due) start_status(next);
+    if (m_halt_byte_due) {
+        m_halt_byte_due = false;
+        start_tx(edge, kHaltByte);
+        return;
+    }
+    if (m_status_due && !m_halted) start_status(edge);
 }
 
 void Top::on_cfg_valid() {
@@ -276,6 +320,7 @@ FpgaStats Top::stats() const {
     s.crc_errors = pkt_dec_inst.crc_errors();
     s.naks_sent = m_naks_sent;
     s.repeats = pkt_dec_inst.repeats();
+    s.halted_at_ps = m_halted_at_ps;
     if (packet_queue_inst) {
         const PacketQueueCore& q = packet_queue_inst->core();
         s.queued = q.queued();
@@ -302,6 +347,7 @@ void Top::add_traces(sc_core::sc_trace_file* tf) const {
     sc_core::sc_trace(tf, m_numerator_y, m_numerator_y.name());
     sc_core::sc_trace(tf, m_tx_busy, m_tx_busy.name());
     laser_ctrl_inst.add_traces(tf);
+    if (m_cfg.interlock_input) sc_core::sc_trace(tf, m_laser_inhibit, m_laser_inhibit.name());
 }
 
 }  // namespace cnc::fpga

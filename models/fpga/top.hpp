@@ -2,7 +2,10 @@
 // sending the 0xAA ACK when busy falls (only if uart_tx is idle then), wired as top.v. init_packet_wired = false
 // keeps top.v's unconnected numerator path (seed 000 §5.2.6 says it must be driven). LEDR/HEX are not modelled.
 // With the packet queue (fpga.queue_depth) packet_queue sits between the decoder and step_gen/laser_ctrl, and uart_tx
-// sends its 2-byte statuses instead of the ACK.
+// sends its 2-byte statuses instead of the ACK. With the e-stop input (fpga.estop) a press, through a 2-FF
+// synchroniser, halts step_gen at the edge after it is sampled (STEP and busy low, no move after: the laser follows
+// busy one clock later, three clocks after the input at most) and uart_tx sends the halt byte; latched until reset.
+// With the interlock (fpga.interlock) the synchronised lid input holds laser_ctrl's output off while the lid is open.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -26,6 +29,10 @@ namespace cnc::fpga {
 
 class Top final : public Board {
 public:
+    // Our safety inputs (fpga.estop, fpga.interlock), active high; tied low inside unless the option gives them.
+    sc_core::sc_in<bool> estop{"estop"};
+    sc_core::sc_in<bool> lid_open{"lid_open"};
+
     Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg);
 
     // One record per pkt_valid, in order, with the ACK outcome of accepted moves (the ones not dropped yet).
@@ -54,6 +61,10 @@ private:
     void on_tx_busy();
     void start_status(std::int64_t edge);
     void wire_queue(const FpgaConfig& cfg);
+    void on_estop();
+    void on_lid();
+    // The next byte for uart_tx once it is free: a status's second byte, the halt byte, a status asked for.
+    void send_next_byte(std::int64_t edge);
     // The records' source: the decoder's packets, or with the queue the moves it handed step_gen.
     [[nodiscard]] const RecordLog<PacketDecoder::MotionOut>& handed_over() const;
     // tx_start for one clock at edge `edge` with tx_data = byte; an ACK wins over a NAK asked for the same edge.
@@ -80,6 +91,8 @@ private:
     sc_core::sc_signal<std::int32_t> m_q_steps_y{"q_steps_y", 0};
     sc_core::sc_signal<std::uint16_t> m_q_feed_rate{"q_feed_rate", 0};
     sc_core::sc_signal<bool> m_status_req{"status_req", false};
+    sc_core::sc_signal<bool> m_tied_low{"tied_low", false};
+    sc_core::sc_signal<bool> m_laser_inhibit{"laser_inhibit", false};
     // top.v leaves step_gen's cfg_valid/numerator inputs unconnected; synthesis ties them low.
     sc_core::sc_signal<bool> m_cfg_valid_unconnected{"cfg_valid_unconnected", false};
     sc_core::sc_signal<std::uint32_t> m_numerator_unconnected{"numerator_unconnected", 0};
@@ -112,6 +125,9 @@ private:
     bool m_status_due = false;
     std::uint8_t m_status_byte1 = 0;
     std::uint64_t m_statuses_sent = 0;
+    bool m_halted = false;
+    bool m_halt_byte_due = false;
+    TimePs m_halted_at_ps = -1;
     std::uint64_t m_activations = 0;
 };
 

@@ -43,6 +43,13 @@ void Sender::say(const std::string& text) {
     m_messages.push_back({now_ps(), text});
 }
 
+void Sender::on_halt(int segment) {
+    m_halted = true;
+    m_aborted = true;
+    m_abort_reason = "seg " + std::to_string(segment) + ": the FPGA halted on its e-stop input";
+    say("[ERROR] " + m_abort_reason + " (0x4B): aborted");
+}
+
 void Sender::stall_if_due() {
     const TimePs now = now_ps();
     if (now < m_cfg.stall_from_ps || now >= m_cfg.stall_to_ps) return;
@@ -62,6 +69,7 @@ Sender::Reply Sender::wait_for_reply(int segment, TimePs deadline) {
         while (m_port.in_waiting() > 0) {
             const std::uint8_t b = *m_port.read_byte();
             if (b == kAckByte) return Reply::Ack;
+            if (b == kHaltByte) return Reply::Halt;
             if (m_cfg.check.crc && b == kNakByte) return Reply::Nak;
             char text[64];
             std::snprintf(text, sizeof text, "[WARN] seg %d: unexpected byte 0x%02X", segment, b);
@@ -106,6 +114,10 @@ bool Sender::send_motion(const OutgoingPacket& packet, SentPacket& sent) {
         write(bytes.data(), bytes.size());
         const Reply reply = wait_for_reply(sent.segment, now_ps() + m_cfg.ack_timeout_ps);
         if (reply == Reply::Ack) return true;
+        if (reply == Reply::Halt) {
+            on_halt(sent.segment);
+            return false;
+        }
         if (!m_cfg.check.crc || sent.resends == m_cfg.check.retries) return false;
         // A NAK, or no reply: the packet or its ACK was hit on the way. Sent again, unchanged: a move that ran and
         // lost its ACK is ACKed again by the FPGA without running twice (its sequence bit).
@@ -140,6 +152,10 @@ void Sender::run() {
             sent.t_ack_ps = now_ps();
             m_sent.push_back(sent);
             continue;
+        }
+        if (m_halted) {
+            m_sent.push_back(sent);
+            break;
         }
         sent.timed_out = true;
         m_sent.push_back(sent);

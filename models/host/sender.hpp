@@ -67,6 +67,8 @@ public:
     [[nodiscard]] const std::vector<SenderMessage>& messages() const { return m_messages; }
     [[nodiscard]] bool finished() const { return m_finished; }
     [[nodiscard]] bool aborted() const { return m_aborted; }
+    // The FPGA sent its halt byte (its e-stop input, fpga.estop): the script stopped there.
+    [[nodiscard]] bool halted() const { return m_halted; }
     // The ACK timeout that made the script stop (empty unless aborted()): the move, its line and duration.
     [[nodiscard]] const std::string& abort_reason() const { return m_abort_reason; }
     [[nodiscard]] int errors() const { return m_errors; }
@@ -94,7 +96,7 @@ private:
         [[nodiscard]] bool idle(std::size_t in_flight) const;
     };
     void write(const std::uint8_t* data, std::size_t n);
-    enum class Reply { Ack, Nak, None };
+    enum class Reply { Ack, Nak, Halt, None };
     // Waits for 0xAA (or, with the packet check, a NAK) until `deadline`. Other bytes are reported and skipped (the
     // script's loop).
     Reply wait_for_reply(int segment, TimePs deadline);
@@ -106,6 +108,8 @@ private:
     void say(const std::string& text);
     // Inside the stall: waits for its end.
     void stall_if_due();
+    // The halt byte read: the script stops.
+    void on_halt(int segment);
 
     const SenderConfig m_cfg;
     uart::Cp2102& m_port;
@@ -125,6 +129,7 @@ private:
     bool m_sequence = false;  // the packet check's alternating bit of the next new move
     bool m_finished = false;
     bool m_aborted = false;
+    bool m_halted = false;
     std::string m_abort_reason;
 };
 

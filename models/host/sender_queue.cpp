@@ -58,8 +58,13 @@ void Sender::run_queued() {
     for (;;) {
         stall_if_due();
         while (m_port.in_waiting() > 0) {
+            const std::uint8_t byte = *m_port.read_byte();
+            if (byte == kHaltByte) {
+                on_halt(window.empty() ? segment : window.front().sent.segment);
+                break;
+            }
             bool stray = false;
-            const std::optional<qp::Status> s = reader.feed(*m_port.read_byte(), stray);
+            const std::optional<qp::Status> s = reader.feed(byte, stray);
             if (stray) ++m_stray_bytes;
             if (!s) continue;
             const int front_seq = (next_seq - static_cast<int>(window.size()) + qp::kSeqModulo) % qp::kSeqModulo;
@@ -78,6 +83,7 @@ void Sender::run_queued() {
             heard_ps = now_ps();
             if (s->refused && !window.empty()) go_back();
         }
+        if (m_halted) break;
         if (resend_at_ps >= 0 && now_ps() >= resend_at_ps) {
             resend_at_ps = -1;
             if (!window.empty() && window.front().sent.resends == m_cfg.check.retries) {

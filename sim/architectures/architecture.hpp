@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "host/core/gcode.hpp"
 
@@ -13,6 +14,7 @@ namespace cnc::sim {
 
 class KeyReader;
 struct Scenario;
+struct ScenarioEvent;
 
 // The settings an architecture reads from its own scenario keys; the scenario keeps the chosen one's
 // (Scenario::settings).
@@ -68,6 +70,10 @@ public:
                             const Scenario& /*s*/) const {}
 
     [[nodiscard]] virtual FaultLinks fault_links() const { return {}; }
+    // Refuses (KeyReader::fail on the event's key) an event on an input the architecture, as `settings` make it,
+    // does not have; by default it has none.
+    virtual void check_events(const KeyReader& r, const std::vector<ScenarioEvent>& events,
+                              const ArchSettings& settings) const;
     // Its colour in every plot ("#rrggbb"), the same in every run and comparison.
     [[nodiscard]] virtual std::string plot_colour() const = 0;
 };

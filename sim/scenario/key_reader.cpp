@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <functional>
+#include <optional>
+#include <string>
+#include <utility>
 #include <sstream>
 
 #include "common/bad_input.hpp"
@@ -43,6 +46,24 @@ std::string type_name(const toml::node& n) {
     }
 }
 
+// "events[2]" -> ("events", 2); a part without an index -> (part, none).
+std::pair<std::string, std::optional<std::size_t>> indexed_part(const std::string& part) {
+    const auto open = part.find('[');
+    if (open == std::string::npos || part.back() != ']') return {part, std::nullopt};
+    return {part.substr(0, open), std::stoul(part.substr(open + 1, part.size() - open - 2))};
+}
+
+// The key as the documentation lists it: an array of tables' index left out ("events[2].at_s" -> "events[].at_s").
+std::string listed_key(const std::string& key) {
+    std::string out;
+    for (std::size_t i = 0; i < key.size(); ++i) {
+        out += key[i];
+        if (key[i] != '[') continue;
+        while (i + 1 < key.size() && key[i + 1] != ']') ++i;
+    }
+    return out;
+}
+
 }  // namespace
 
 KeyReader::KeyReader(const toml::table& root, std::string file, std::vector<std::string> overridden)
@@ -60,8 +81,13 @@ const toml::node* KeyReader::find(const std::string& key) const {
     for (const std::string& part : split_key(key)) {
         const toml::table* t = node->as_table();
         if (t == nullptr) return nullptr;
-        node = t->get(part);
+        const auto [name, index] = indexed_part(part);
+        node = t->get(name);
         if (node == nullptr) return nullptr;
+        if (!index) continue;
+        const toml::array* a = node->as_array();
+        if (a == nullptr || *index >= a->size()) return nullptr;
+        node = a->get(*index);
     }
     return node;
 }
@@ -88,6 +114,7 @@ void KeyReader::fail(const std::string& key, const std::string& what) const {
 }
 
 void KeyReader::record(KeyDoc doc) {
+    doc.key = listed_key(doc.key);
     const auto same = [&](const KeyDoc& d) { return d.key == doc.key; };
     if (std::none_of(m_docs.begin(), m_docs.end(), same)) m_docs.push_back(std::move(doc));
 }
@@ -169,23 +196,40 @@ std::string KeyReader::get_choice(const std::string& key, const std::string& def
     return v;
 }
 
+std::size_t KeyReader::get_table_count(const std::string& key, const std::string& doc) {
+    record({key + "[]", "array of tables", "none", "", doc});
+    const toml::node* n = find(key);
+    if (n == nullptr) return 0;
+    const toml::array* a = n->as_array();
+    if (a == nullptr || !a->is_array_of_tables()) fail(key, "expected tables ([[" + key + "]]), got " + type_name(*n));
+    return a->size();
+}
+
 void KeyReader::reject_unknown_keys() const {
     std::function<void(const toml::table&, const std::string&)> walk = [&](const toml::table& t,
                                                                            const std::string& prefix) {
         for (const auto& [k, node] : t) {
             const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
-            const auto known = [&](const KeyDoc& d) { return d.key == key; };
-            const auto inside = [&](const KeyDoc& d) { return d.key.rfind(key + ".", 0) == 0; };
+            const std::string listed = listed_key(key);
+            const auto known = [&](const KeyDoc& d) { return d.key == listed; };
+            const auto inside = [&](const KeyDoc& d) { return d.key.rfind(listed + ".", 0) == 0; };
+            const auto tables = [&](const KeyDoc& d) { return d.key == listed + "[]"; };
             if (std::any_of(m_docs.begin(), m_docs.end(), known)) continue;
             if (node.is_table() && std::any_of(m_docs.begin(), m_docs.end(), inside)) {
                 walk(*node.as_table(), key);
                 continue;
             }
+            if (node.is_array_of_tables() && std::any_of(m_docs.begin(), m_docs.end(), tables)) {
+                const toml::array& a = *node.as_array();
+                for (std::size_t i = 0; i < a.size(); ++i) walk(*a.get(i)->as_table(), key + "[" + std::to_string(i) + "]");
+                continue;
+            }
             std::vector<std::string> siblings;
             const std::string parent = prefix.empty() ? "" : prefix + ".";
+            const std::string listed_parent = listed_key(parent);
             for (const KeyDoc& d : m_docs) {
-                if (d.key.rfind(parent, 0) != 0) continue;
-                const std::string rest = d.key.substr(parent.size());
+                if (d.key.rfind(listed_parent, 0) != 0) continue;
+                const std::string rest = d.key.substr(listed_parent.size());
                 const std::string child = rest.substr(0, rest.find('.'));
                 if (std::find(siblings.begin(), siblings.end(), child) == siblings.end()) siblings.push_back(child);
             }

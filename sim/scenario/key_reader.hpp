@@ -36,6 +36,9 @@ public:
     std::string get_string(const std::string& key, const std::string& def, const std::string& doc);
     // An array of strings (empty by default).
     std::vector<std::string> get_string_list(const std::string& key, const std::string& doc);
+    // The number of tables in the array of tables `key` ([[key]] in TOML; 0 without one). Their keys are read as
+    // "key[i].field" and listed as "key[].field".
+    std::size_t get_table_count(const std::string& key, const std::string& doc);
     // A string from a fixed set of choices.
     std::string get_choice(const std::string& key, const std::string& def, const std::vector<std::string>& choices,
                            const std::string& doc);

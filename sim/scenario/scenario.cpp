@@ -295,11 +295,13 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                                   : host::FeedUnit::MmPerSecond;
 
     read_fault_settings(r, s.seed, s.faults);
+    read_events(r, s.events);
     for (const Architecture* a : architectures()) {
         std::shared_ptr<const ArchSettings> settings = a->read_settings(r, s, base);
         if (a->name() == s.architecture) {
             s.arch_settings = std::move(settings);
             check_fault_links(r, s.faults, *a);
+            a->check_events(r, s.events, *s.arch_settings);
         }
     }
 

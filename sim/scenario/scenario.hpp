@@ -15,6 +15,7 @@
 #include "host/core/machine.hpp"
 #include "mechanics/core/drv8825_config.hpp"
 #include "run/progress.hpp"
+#include "scenario/event_settings.hpp"
 #include "scenario/fault_settings.hpp"
 #include "scenario/key_reader.hpp"
 #include "scenario/mechanics_settings.hpp"
@@ -39,6 +40,7 @@ struct Scenario {
     mech::Drv8825Config driver;
     MechanicsSettings mechanics;
     FaultSettings faults;
+    std::vector<ScenarioEvent> events;  // [[events]], in time order
     // The chosen architecture's own keys, read by its Architecture::read_settings.
     std::shared_ptr<const ArchSettings> arch_settings;
 

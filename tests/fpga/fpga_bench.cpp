@@ -20,8 +20,14 @@ void PinMonitor::record() {
     log.add(static_cast<TimePs>(sc_core::sc_time_stamp().value()), pin.read());
 }
 
-FpgaBench::FpgaBench(const sc_core::sc_module_name& name, const FpgaConfig& cfg, std::vector<Edge> rx_changes)
-    : sc_module(name), top("top", cfg), m_rx_changes(std::move(rx_changes)), m_clock(clock_grid(cfg)) {
+FpgaBench::FpgaBench(const sc_core::sc_module_name& name, const FpgaConfig& cfg, std::vector<Edge> rx_changes,
+                     std::vector<Edge> estop_changes, std::vector<Edge> lid_changes)
+    : sc_module(name),
+      top("top", cfg),
+      m_rx_changes(std::move(rx_changes)),
+      m_estop_changes(std::move(estop_changes)),
+      m_lid_changes(std::move(lid_changes)),
+      m_clock(clock_grid(cfg)) {
     SC_HAS_PROCESS(FpgaBench);
     top.rx(m_rx);
     for (const std::string& pin : fpga_pins()) {
@@ -34,15 +40,33 @@ FpgaBench::FpgaBench(const sc_core::sc_module_name& name, const FpgaConfig& cfg,
                                       &top.step_y,    &top.laser,    &top.busy,    &top.pkt_valid,
                                       &top.cfg_valid, &top.rx_valid, &top.tx_start};
     for (std::size_t i = 0; i < m_pins.size(); ++i) (*ports[i])(*m_pins[i]);
+    if (cfg.estop_input) top.estop(m_estop);
+    if (cfg.interlock_input) top.lid_open(m_lid_open);
     SC_THREAD(drive_rx);
+    SC_THREAD(drive_estop);
+    SC_THREAD(drive_lid);
 }
 
-void FpgaBench::drive_rx() {
-    for (const Edge& e : m_rx_changes) {
+namespace {
+void drive(sc_core::sc_signal<bool>& line, const std::vector<Edge>& changes) {
+    for (const Edge& e : changes) {
         const auto now = static_cast<TimePs>(sc_core::sc_time_stamp().value());
-        if (e.t_ps > now) wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(e.t_ps - now)));
-        m_rx.write(e.level);
+        if (e.t_ps > now) sc_core::wait(sc_core::sc_time::from_value(static_cast<sc_dt::uint64>(e.t_ps - now)));
+        line.write(e.level);
     }
+}
+}  // namespace
+
+void FpgaBench::drive_rx() {
+    drive(m_rx, m_rx_changes);
+}
+
+void FpgaBench::drive_estop() {
+    drive(m_estop, m_estop_changes);
+}
+
+void FpgaBench::drive_lid() {
+    drive(m_lid_open, m_lid_changes);
 }
 
 std::map<std::string, EdgeLog> FpgaBench::logs() const {

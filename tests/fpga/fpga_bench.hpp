@@ -23,7 +23,9 @@ private:
 
 class FpgaBench : public sc_core::sc_module {
 public:
-    FpgaBench(const sc_core::sc_module_name& name, const FpgaConfig& cfg, std::vector<Edge> rx_changes);
+    // `estop_changes`, `lid_changes`: the safety inputs' levels (with cfg's estop_input, interlock_input).
+    FpgaBench(const sc_core::sc_module_name& name, const FpgaConfig& cfg, std::vector<Edge> rx_changes,
+              std::vector<Edge> estop_changes = {}, std::vector<Edge> lid_changes = {});
 
     [[nodiscard]] std::map<std::string, EdgeLog> logs() const;
     // Runs the simulation up to (not including) edge `edge` + half a period.
@@ -33,8 +35,14 @@ public:
 
 private:
     void drive_rx();
+    void drive_estop();
+    void drive_lid();
 
     std::vector<Edge> m_rx_changes;
+    std::vector<Edge> m_estop_changes;
+    std::vector<Edge> m_lid_changes;
+    sc_core::sc_signal<bool> m_estop{"estop", false};
+    sc_core::sc_signal<bool> m_lid_open{"lid_open", false};
     ClockGrid m_clock;
     sc_core::sc_signal<bool> m_rx{"rx", true};
     std::vector<std::unique_ptr<sc_core::sc_signal<bool>>> m_pins;

@@ -207,6 +207,72 @@ TEST(FpgaGolden, QueuedPacketsRunBackToBackAndEachIsAnsweredWithTheStatus) {
     EXPECT_EQ(st.acks_sent, 0U);
 }
 
+// The e-stop input (fpga.estop): pressed 3 ps after edge n in the middle of the worked move, sampled by the
+// synchroniser's first stage at n+1 and seen at n+2, where step_gen halts: busy falls there and the STEP lines stay
+// low from then on, laser_ctrl drops the laser one clock later (n+3: within three clock periods of the press), and
+// uart_tx sends the halt byte 0x4B from the next edge, as the ACK would go. No ACK, and a packet sent after the
+// press does not run.
+TEST(FpgaGolden, TheEstopHaltsStepGenAndTheLaserWithinThreeClocks) {
+    UartWave w = sync_sender();
+    w.bytes(20 * kUs, kWorkedMotion);
+    const std::int64_t k = pkt_valid_edge_for_last_start_bit(w.frame_starts().back());
+    const std::int64_t n = k + 203 + 100 * 15'625 + 7'777;
+    const TimePs t_press = n * kCyclePs + 3;
+    w.bytes((n + 100'000) * kCyclePs, kWorkedMotion);
+    FpgaConfig cfg;
+    cfg.estop_input = true;
+    FpgaBench bench("bench", cfg, w.changes(), {{t_press, true}});
+    bench.run_to_edge(n + 400'000);
+    const auto logs = bench.logs();
+
+    const std::int64_t halt = n + 2;
+    EXPECT_EQ(edges_in_cycles(logs.at("busy").falling()), std::vector<std::int64_t>{halt});
+    ASSERT_EQ(logs.at("laser").falling().size(), 1U);
+    EXPECT_EQ(logs.at("laser").falling()[0], (halt + 1) * kCyclePs);
+    EXPECT_LE(logs.at("laser").falling()[0] - t_press, 3 * kCyclePs);
+    EXPECT_EQ(edges_in_cycles(logs.at("step_x").rising()), pulse_train(k + 203, 15'625, 101));
+    EXPECT_EQ(edges_in_cycles(logs.at("step_y").rising()), pulse_train(k + 203, 31'250, 51));
+    for (const char* pin : {"step_x", "step_y"}) {
+        EXPECT_LT(logs.at(pin).edges.back().t_ps, halt * kCyclePs) << pin;
+        EXPECT_FALSE(logs.at(pin).edges.back().level) << pin;
+    }
+    EXPECT_EQ(edges_in_cycles(logs.at("tx_start").rising()), std::vector<std::int64_t>{halt + 1});
+    const std::vector<TimePs> tx_falls = logs.at("tx").falling();
+    ASSERT_FALSE(tx_falls.empty());
+    EXPECT_EQ(tx_falls[0] / kCyclePs, halt + 3);
+    EXPECT_EQ(decode_frame(logs.at("tx"), tx_falls[0], 434 * kCyclePs), 0x4B);
+    const FpgaStats st = bench.top.stats();
+    EXPECT_EQ(st.halted_at_ps, halt * kCyclePs);
+    EXPECT_EQ(st.acks_sent, 0U);
+    const auto packets = bench.top.packets();
+    ASSERT_EQ(packets.size(), 2U);
+    EXPECT_EQ(packets[0].t_busy_fall_ps, halt * kCyclePs);
+    EXPECT_FALSE(packets[1].accepted);
+}
+
+// The interlock (fpga.interlock): the lid opened and closed during the worked move, each change sampled at the next
+// edge and seen one later, where laser_ctrl's register takes it: the laser is off from that edge + 1 (three clock
+// periods after the input at most) and on again the same way; the STEPs, busy and the ACK are the seed's.
+TEST(FpgaGolden, AnOpenLidHoldsTheLaserOffAndTheMoveGoesOn) {
+    UartWave w = sync_sender();
+    w.bytes(20 * kUs, kWorkedMotion);
+    const std::int64_t k = pkt_valid_edge_for_last_start_bit(w.frame_starts().back());
+    const std::int64_t open = k + 1'000'000;
+    const std::int64_t close = k + 3'000'000;
+    FpgaConfig cfg;
+    cfg.interlock_input = true;
+    FpgaBench bench("bench", cfg, w.changes(), {}, {{open * kCyclePs + 5, true}, {close * kCyclePs + 5, false}});
+    bench.run_to_edge(k + kRunCycles + 10'000);
+    const auto logs = bench.logs();
+
+    EXPECT_EQ(edges_in_cycles(logs.at("laser").rising()), (std::vector<std::int64_t>{k + 2, close + 3}));
+    EXPECT_EQ(edges_in_cycles(logs.at("laser").falling()),
+              (std::vector<std::int64_t>{open + 3, k + 204 + kRunCycles}));
+    EXPECT_EQ(edges_in_cycles(logs.at("step_x").rising()), pulse_train(k + 203, 15'625, 320));
+    EXPECT_EQ(edges_in_cycles(logs.at("busy").falling()), std::vector<std::int64_t>{k + 203 + kRunCycles});
+    EXPECT_EQ(bench.top.stats().acks_sent, 1U);
+}
+
 TEST(FpgaGolden, WorkedExampleFrom50MHzSender) {
     UartWave w = sync_sender();
     // Frames start on edges: the last one at 2 ms + 10 frames = cycle 143,400, so pkt_valid is at 147,527.

@@ -27,6 +27,10 @@ struct FpgaConfig {
     // Our option on seed 000 §7.2's command queue and FIFO packet buffer: packets queued ahead of step_gen
     // (cmd_fifo.hpp); 0: none, the seed's stop-and-wait.
     int queue_depth = 0;
+    // Our option on seed 000 §7.2's e-stop and interlock inputs (top.hpp): the e-stop halts step_gen and the laser
+    // for good, the lid held open keeps the laser off.
+    bool estop_input = false;
+    bool interlock_input = false;
     ClockDeviation clock;  // the board oscillator's offset and jitter (all zero: an ideal CLOCK_50)
 };
 

@@ -42,6 +42,7 @@ struct FpgaStats {
     std::uint64_t answered_again = 0;   // packets queued already, sent again (their status lost): not queued twice
     std::uint64_t refused = 0;          // packets out of order or with no slot: not queued
     std::uint64_t statuses_sent = 0;
+    TimePs halted_at_ps = -1;  // with the e-stop input: the edge step_gen halted at (-1: never)
 };
 
 }  // namespace cnc::fpga

@@ -6,17 +6,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/link_bytes.hpp"
 #include "host/core/cam.hpp"
 
 namespace cnc::host {
 
 inline constexpr std::uint8_t kInitMarker = 0xFF;  // seed 000 §4.5: first byte 0xFF = init packet
-inline constexpr std::uint8_t kAckByte = 0xAA;     // seed 000 §4.11: sent when a move completes
-// With the packet check (protocol.crc = "crc16", our option on seed 000 §7.2): the FPGA's answer to a packet whose
-// CRC failed, the ACK's bits inverted so that no single bit error turns one into the other; bit 7 of a motion
-// packet's first byte alternates between new moves; every packet is followed by its CRC-16/CCITT-FALSE, high byte
-// first (common/crc16.hpp).
-inline constexpr std::uint8_t kNakByte = 0x55;
+// With the packet check (protocol.crc = "crc16", our option on seed 000 §7.2; the FPGA's NAK is in
+// common/link_bytes.hpp): bit 7 of a motion packet's first byte alternates between new moves; every packet is
+// followed by its CRC-16/CCITT-FALSE, high byte first (common/crc16.hpp).
 inline constexpr std::uint8_t kSequenceBit = 0x80;
 inline constexpr std::size_t kCrcBytes = 2;
 inline constexpr std::size_t kInitPacketBytes = 9;     // seed 000 T3.6

@@ -55,6 +55,19 @@ public:
 
     // Both UART wires, the send_steps.py host, the DRV8825s.
     [[nodiscard]] FaultLinks fault_links() const override { return {true, true, true}; }
+    // The e-stop and the lid's interlock are inputs of our FPGA when fpga.estop and fpga.interlock give it them.
+    void check_events(const KeyReader& r, const std::vector<ScenarioEvent>& events,
+                      const ArchSettings& settings) const override {
+        const fpga::FpgaConfig& f = dynamic_cast<const FpgaUartSettings&>(settings).fpga;
+        for (const ScenarioEvent& e : events) {
+            if (e.input == SafetyInput::Estop && !f.estop_input) {
+                r.fail(e.key, "the FPGA has no e-stop input: fpga.estop = true gives it one");
+            }
+            if (e.input == SafetyInput::Lid && !f.interlock_input) {
+                r.fail(e.key, "the FPGA has no interlock input: fpga.interlock = true gives it one");
+            }
+        }
+    }
     [[nodiscard]] std::string plot_colour() const override { return "#0072b2"; }
 };
 

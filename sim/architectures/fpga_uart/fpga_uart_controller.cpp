@@ -26,6 +26,7 @@
 #include "host/core/packet_codec.hpp"
 #include "host/sender.hpp"
 #include "run/controller.hpp"
+#include "run/event_pins.hpp"
 #include "run/machine_run.hpp"
 #include "run/moves.hpp"
 #include "uart/cp2102.hpp"
@@ -48,6 +49,8 @@ struct Wires {
     sc_core::sc_signal<bool> rx_valid{"rx_valid", false}, ack{"ack", false};
     // With faults on the link: the pins as driven, before the faulty wires (uart/faulty_line.hpp).
     sc_core::sc_signal<bool> cp2102_txd{"cp2102_txd", true}, fpga_tx{"fpga_tx", true};
+    // With the FPGA's safety inputs (fpga.estop, fpga.interlock): driven by the scenario's [[events]].
+    sc_core::sc_signal<bool> estop{"estop", false}, lid_open{"lid_open", false};
 };
 
 // The NUMERATORs the host sends in its init packet.
@@ -245,8 +248,11 @@ public:
             const fpga::PacketRecord r = top.packet(m_next);
             if (r.period_overflow) m_packets.push_back({"period_overflow", segment_place(lines, m_next), m_overflow});
             if (!r.accepted) {
-                m_packets.push_back(
-                    {"packet_lost", segment_place(lines, m_next), "arrived while step_gen was busy: lost"});
+                const TimePs halted_ps = top.stats().halted_at_ps;
+                const bool after_halt = halted_ps >= 0 && r.t_pkt_valid_ps >= halted_ps;
+                m_packets.push_back({"packet_lost", segment_place(lines, m_next),
+                                     after_halt ? "arrived after the e-stop halted step_gen: not run"
+                                                : "arrived while step_gen was busy: lost"});
             }
         }
     }
@@ -411,9 +417,14 @@ host::SenderConfig sender_config(const Scenario& s, const FpgaUartSettings& f) {
 // The FPGA as the scenario asks: the event-driven blocks, or the Verilog in the loop running ahead to the time
 // before which rx cannot change (`rx_quiet_until`).
 std::unique_ptr<fpga::Board> make_fpga(const FpgaUartSettings& f, std::uint64_t seed,
-                                       std::function<TimePs()> rx_quiet_until) {
+                                       std::function<TimePs()> rx_quiet_until, Wires& wires) {
     const fpga::FpgaConfig cfg = on_oscillator(f.fpga, f.clock, seed);
-    if (!f.rtl.rtl) return std::make_unique<fpga::Top>("fpga", cfg);
+    if (!f.rtl.rtl) {
+        auto top = std::make_unique<fpga::Top>("fpga", cfg);
+        if (cfg.estop_input) top->estop(wires.estop);
+        if (cfg.interlock_input) top->lid_open(wires.lid_open);
+        return top;
+    }
     auto rtl = std::make_unique<fpga::RtlTop>("fpga", cfg, f.rtl.design);
     rtl->rx_quiet_until(std::move(rx_quiet_until));
     return rtl;
@@ -434,7 +445,8 @@ public:
           m_packets(s, job, m_numerators, s.faults.any()),
           m_sender("host", sender_config(s, m_f), m_cp2102, host::encode_init(m_numerators.x, m_numerators.y),
                    m_packets),
-          m_fpga(make_fpga(m_f, s.seed, [this] { return rx_quiet_until(); })),
+          m_fpga(make_fpga(m_f, s.seed, [this] { return rx_quiet_until(); }, m_wires)),
+          m_event_pins("event_pins", s.events, m_wires.estop, m_wires.lid_open),
           m_moves(s.machine, s.interpreter.start_mm),
           // Every gap only for the detailed report and the plots (which keep the whole run anyway).
           m_dead_fold(s.detail || s.keep_run_input),
@@ -469,9 +481,13 @@ public:
     [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
         const std::optional<std::int64_t> fpga = m_fpga->clock().grid_hz();
         const Wires& w = m_wires;
-        return {{&w.uart_rx, "link", {}},     {&w.uart_tx, "link", fpga},   {&w.busy, "fpga", fpga},
-                {&w.pkt_valid, "fpga", fpga}, {&w.cfg_valid, "fpga", fpga}, {&w.rx_valid, "fpga", fpga},
-                {&w.ack, "fpga", fpga}};
+        std::vector<TracedPin> pins = {{&w.uart_rx, "link", {}},     {&w.uart_tx, "link", fpga},
+                                       {&w.busy, "fpga", fpga},      {&w.pkt_valid, "fpga", fpga},
+                                       {&w.cfg_valid, "fpga", fpga}, {&w.rx_valid, "fpga", fpga},
+                                       {&w.ack, "fpga", fpga}};
+        if (m_f.fpga.estop_input) pins.push_back({&w.estop, "fpga", {}});
+        if (m_f.fpga.interlock_input) pins.push_back({&w.lid_open, "fpga", {}});
+        return pins;
     }
     // The link's lines and busy go into ArchRun::lines only when the whole logs are kept (--plots, --samples,
     // tests): a long job's UART lines are its largest log after the STEPs, and no metric reads them.
@@ -565,6 +581,7 @@ private:
     SentPackets m_packets;
     host::Sender m_sender;
     std::unique_ptr<fpga::Board> m_fpga;
+    EventPins m_event_pins;
     CommandedMoves m_moves;
     DeadTimeFold m_dead_fold;
     ExecutedPieces m_executed;
@@ -615,6 +632,10 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
                      {"acks_sent", st.acks_sent},
                      {"acks_dropped", st.acks_dropped}}},
                    {"dead_time", split_dead_time() ? to_json(dead, s.detail) : nlohmann::json(why_not_split())}};
+    if (m_f.fpga.estop_input) {
+        run.details["fpga"]["halted_at_s"] =
+            st.halted_at_ps < 0 ? nlohmann::json(nullptr) : nlohmann::json(ps_to_s(st.halted_at_ps));
+    }
     if (m_f.fpga.queue_depth > 0) {
         run.details["queue"] = {{"depth", m_f.fpga.queue_depth},
                                 {"queued", st.queued},
@@ -660,6 +681,10 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
     if (framing) {
         run.ok = false;
         run.failure = *framing;
+    } else if (m_sender.halted()) {
+        run.ok = false;
+        run.failure = fmt::format(FMT_STRING("the e-stop halted the FPGA at {:.6f} s ({}); send_steps.py stops here"),
+                                  ps_to_s(st.halted_at_ps), m_sender.abort_reason());
     } else if (m_sender.aborted()) {
         run.ok = false;
         run.failure =

@@ -111,6 +111,24 @@ void read_queue(KeyReader& r, FpgaUartSettings& s) {
     }
 }
 
+// Our option on seed 000 §7.2's "e-stop and interlock inputs"; the scenario's [[events]] drive them.
+void read_safety_inputs(KeyReader& r, FpgaUartSettings& s) {
+    s.fpga.estop_input = r.get_bool(
+        "fpga.estop", false,
+        "an e-stop input on the FPGA (seed 000 sec. 7.2 proposes one), pressed by an [[events]] estop-pressed: two "
+        "clocks through its synchroniser it halts step_gen (STEP and busy low, no packet run after) and the laser "
+        "follows busy a clock later, and uart_tx sends the host 0x4B, which aborts the script; latched until reset");
+    s.fpga.interlock_input = r.get_bool(
+        "fpga.interlock", false,
+        "an interlock input on the FPGA for the laser's lid (seed 000 sec. 7.2), driven by [[events]] lid-opened and "
+        "lid-closed: while the lid is open the laser is held off (three clocks after the input at most), the motion "
+        "goes on");
+    if ((s.fpga.estop_input || s.fpga.interlock_input) && s.rtl.rtl) {
+        r.fail(s.fpga.estop_input ? "fpga.estop" : "fpga.interlock",
+               "the e-stop and interlock inputs are in the event model only: fpga.model = \"event\"");
+    }
+}
+
 }  // namespace
 
 // seed 000 §5.1.1: the DE1-SoC's CLOCK_50.
@@ -127,6 +145,7 @@ void read_fpga_uart_settings(KeyReader& r, const std::filesystem::path& base, Fp
     read_rtl_settings(r, base, "fpga", s.rtl);
     read_packet_check(r, s);
     read_queue(r, s);
+    read_safety_inputs(r, s);
 }
 
 }  // namespace cnc::sim

@@ -52,6 +52,10 @@ void MetricsStream::measure(TimePs now_ps, bool final) {
         for (const AxisMetrics& am : m_axes) m_in.commanded->count_before_steps.push_back(am.net_steps);
     }
     for (const std::vector<RateSegment>& segments : m_in.rate_segments) m_rate_segmented |= !segments.empty();
+    // Nor while a STEP before the earliest cut lies in an axis's last known rate segment: its run cannot be whole
+    // yet (cut_allowed), and the batch code over a window that only grows would run again each slice (under load the
+    // slices shrink, and a run whose work per slice grows with the window crawls).
+    if (!final && step_in_open_segment(earliest_cut_ps())) return;
     const RunMetrics r = compute_metrics(m_in);
     const std::size_t first_group = m_has_prev ? 1 : 0;
     std::vector<std::size_t> group_piece{0};  // [group] its first piece in m_in.moves
@@ -202,6 +206,27 @@ void MetricsStream::drop_rate_segments(const RunMetrics& r, TimePs cut_ps) {
         }
         segments.erase(segments.begin(), keep);
     }
+}
+
+TimePs MetricsStream::earliest_cut_ps() const {
+    for (std::size_t p = (m_has_prev ? 1 : 0) + 1; p < m_in.moves.size(); ++p) {
+        if (!same_programmed_move(m_in.moves[p - 1], m_in.moves[p])) return m_in.moves[p].t_begin_ps;
+    }
+    return kEndOfTime;
+}
+
+bool MetricsStream::step_in_open_segment(TimePs before_ps) const {
+    for (std::size_t a = 0; a < m_in.rate_segments.size() && a < m_in.axes.size(); ++a) {
+        const std::vector<RateSegment>& segments = m_in.rate_segments[a];
+        if (segments.empty()) continue;
+        const std::vector<Edge>& edges = m_in.axes[a].step.edges;
+        auto e = std::lower_bound(edges.begin(), edges.end(), segments.back().t_ps,
+                                  [](const Edge& edge, TimePs t) { return edge.t_ps < t; });
+        for (; e != edges.end() && e->t_ps < before_ps; ++e) {
+            if (e->level) return true;
+        }
+    }
+    return false;
 }
 
 bool MetricsStream::two_moves_pending() const {

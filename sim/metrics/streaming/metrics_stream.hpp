@@ -46,6 +46,10 @@ public:
 private:
     void measure(TimePs now_ps, bool final);
     [[nodiscard]] bool two_moves_pending() const;
+    // The begin of the second programmed move past the kept neighbour: no window ends before it.
+    [[nodiscard]] TimePs earliest_cut_ps() const;
+    // Whether an axis has a STEP rise before before_ps in its last known rate segment (one with no next yet).
+    [[nodiscard]] bool step_in_open_segment(TimePs before_ps) const;
     // Whether the window may end at cut_ps: the commanded trajectory known around it, no rate segment across it.
     [[nodiscard]] bool cut_allowed(const RunMetrics& r, TimePs cut_ps, TimePs now_ps) const;
     // The first window's edges before the first piece that no commanded step crossing matches.

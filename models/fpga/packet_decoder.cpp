@@ -2,6 +2,18 @@
 
 namespace cnc::fpga {
 
+void MotionOutputs::put(TimedWriter& writer, const ClockGrid& clock, std::int64_t edge, const MotionFields& f) const {
+    // The ports, not this (a temporary), are what the writes reach when they are due.
+    writer.at(clock.at(edge), [&m = motion, &x = steps_x, &y = steps_y, &feed = feed_rate, &valid = pkt_valid, f] {
+        m.write(f.motion);
+        x.write(f.steps_x);
+        y.write(f.steps_y);
+        feed.write(f.feed);
+        valid.write(true);
+    });
+    writer.at(clock.at(edge + 1), [&valid = pkt_valid] { valid.write(false); });
+}
+
 PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     : sc_module(name),
       rx_data("rx_data"),
@@ -43,15 +55,8 @@ void PacketDecoder::on_rx_valid() {
     if (done == PacketDecoderCore::Completed::Motion) {
         const MotionFields f = m_core.motion();
         m_motions.push_back({t, f});
-        m_writer.at(t, [this, f] {
-            motion.write(f.motion);
-            seq.write(f.seq);
-            steps_x.write(f.steps_x);
-            steps_y.write(f.steps_y);
-            feed_rate.write(f.feed);
-            pkt_valid.write(true);
-        });
-        m_writer.at(m_clock.at(edge + 1), [this] { pkt_valid.write(false); });
+        m_writer.at(t, [this, f] { seq.write(f.seq); });
+        MotionOutputs{motion, steps_x, steps_y, feed_rate, pkt_valid}.put(m_writer, m_clock, edge, f);
     } else if (done == PacketDecoderCore::Completed::Init) {
         const InitFields f = m_core.init();
         m_writer.at(t, [this, f] {

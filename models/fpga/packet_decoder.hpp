@@ -12,6 +12,19 @@
 
 namespace cnc::fpga {
 
+// The ports a motion packet's fields are registered on, with a one-clock pkt_valid: packet_decoder's own, and the
+// packet queue's to step_gen (packet_queue.hpp).
+struct MotionOutputs {
+    sc_core::sc_out<std::uint8_t>& motion;
+    sc_core::sc_out<std::int32_t>& steps_x;
+    sc_core::sc_out<std::int32_t>& steps_y;
+    sc_core::sc_out<std::uint16_t>& feed_rate;
+    sc_core::sc_out<bool>& pkt_valid;
+
+    // `f` on the ports at edge `edge`, pkt_valid high for that clock.
+    void put(TimedWriter& writer, const ClockGrid& clock, std::int64_t edge, const MotionFields& f) const;
+};
+
 class PacketDecoder : public sc_core::sc_module {
 public:
     sc_core::sc_in<std::uint8_t> rx_data;

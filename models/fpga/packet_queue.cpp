@@ -54,14 +54,7 @@ void PacketQueue::hand_over(std::int64_t edge) {
     m_handed = true;
     const TimePs t = m_clock.at(edge);
     m_issued.push_back({t, f});
-    m_writer.at(t, [this, f] {
-        q_motion.write(f.motion);
-        q_steps_x.write(f.steps_x);
-        q_steps_y.write(f.steps_y);
-        q_feed_rate.write(f.feed);
-        q_pkt_valid.write(true);
-    });
-    m_writer.at(m_clock.at(edge + 1), [this] { q_pkt_valid.write(false); });
+    MotionOutputs{q_motion, q_steps_x, q_steps_y, q_feed_rate, q_pkt_valid}.put(m_writer, m_clock, edge, f);
 }
 
 // The decoder's pkt_valid high at edge k: the packet is taken at k+1 and, step_gen being free, handed over there.

@@ -197,7 +197,7 @@ std::string KeyReader::get_choice(const std::string& key, const std::string& def
 }
 
 std::size_t KeyReader::get_table_count(const std::string& key, const std::string& doc) {
-    record({key + "[]", "array of tables", "none", "", doc});
+    record({key + "[]", kArrayOfTables, "none", "", doc});
     const toml::node* n = find(key);
     if (n == nullptr) return 0;
     const toml::array* a = n->as_array();

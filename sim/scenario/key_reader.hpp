@@ -11,6 +11,8 @@
 
 namespace cnc::sim {
 
+inline constexpr const char* kArrayOfTables = "array of tables";  // KeyDoc::type of an array of tables itself
+
 struct KeyDoc {
     std::string key;   // dotted path: link.baud
     std::string type;  // integer | float | string | boolean | array of strings

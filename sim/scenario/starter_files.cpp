@@ -51,21 +51,33 @@ std::string parent_table(const std::string& key) {
 std::string toml_text(const char* head, const std::vector<KeyDoc>& keys,
                       const std::map<std::string, std::string>& set) {
     std::vector<std::string> tables;
+    std::map<std::string, std::string> table_docs;  // an array of tables' own meaning ("events[]": ...)
     for (const KeyDoc& d : keys) {
+        if (d.type == kArrayOfTables) {
+            table_docs[d.key] = d.doc;
+            continue;
+        }
         if (std::find(tables.begin(), tables.end(), parent_table(d.key)) == tables.end()) {
             tables.push_back(parent_table(d.key));
         }
     }
     std::string out = wrap_text(head, kCommentWidth, "# ");
     for (const std::string& table : tables) {
-        out += "\n[" + table + "]\n";
+        // An array of tables has none by default: its header and keys are an example, commented out.
+        const bool array = table.size() > 2 && table.compare(table.size() - 2, 2, "[]") == 0;
+        if (array) {
+            out += "\n" + wrap_text(table_docs[table], kCommentWidth, "# ") + "# [[" +
+                   table.substr(0, table.size() - 2) + "]]\n";
+        } else {
+            out += "\n[" + table + "]\n";
+        }
         for (const KeyDoc& d : keys) {
-            if (parent_table(d.key) != table) continue;
+            if (d.type == kArrayOfTables || parent_table(d.key) != table) continue;
             const std::string name = d.key.substr(table.size() + 1);
             out += wrap_text(d.doc + (d.allowed.empty() ? "" : " (allowed: " + d.allowed + ")"), kCommentWidth, "# ");
             const auto value = set.find(d.key);
-            out += value != set.end() ? name + " = " + value->second + "\n\n"
-                                      : "# " + name + " = " + d.default_text + "\n\n";
+            out += value != set.end() && !array ? name + " = " + value->second + "\n\n"
+                                                : "# " + name + " = " + d.default_text + "\n\n";
         }
     }
     return out;

@@ -176,10 +176,14 @@ TEST(Init, TheFilesHoldEveryKeyWithItsMeaning) {
         EXPECT_NO_THROW((void)toml::parse(f.text)) << f.name;
     }
     for (const cnc::sim::KeyDoc& d : keys) {
+        if (d.type == cnc::sim::kArrayOfTables) continue;  // its tables' keys are checked
         const std::string& text = cnc::sim::is_machine_key(d.key) ? files[1].text : files[0].text;
         const std::string table = d.key.substr(0, d.key.rfind('.'));
         const std::string name = d.key.substr(table.size() + 1);
-        const std::size_t at = text.find("\n[" + table + "]\n");
+        // An array of tables ("events[]") is an example, its header commented out as its keys.
+        const bool array = table.size() > 2 && table.compare(table.size() - 2, 2, "[]") == 0;
+        const std::size_t at =
+            text.find(array ? "# [[" + table.substr(0, table.size() - 2) + "]]\n" : "\n[" + table + "]\n");
         ASSERT_NE(at, std::string::npos) << d.key;
         const std::string section = text.substr(at, text.find("\n[", at + 1) - at);
         EXPECT_TRUE(contains(section, "\n" + name + " = ") ||

@@ -51,7 +51,6 @@ void PacketQueue::request_status(std::int64_t edge, bool refused) {
 void PacketQueue::hand_over(std::int64_t edge) {
     MotionFields f;
     if (m_halted || !m_core.pop(f)) return;
-    m_handed = true;
     const TimePs t = m_clock.at(edge);
     m_issued.push_back({t, f});
     MotionOutputs{q_motion, q_steps_x, q_steps_y, q_feed_rate, q_pkt_valid}.put(m_writer, m_clock, edge, f);
@@ -64,7 +63,7 @@ void PacketQueue::on_pkt_valid() {
     const std::int64_t edge = m_clock.last_at_or_before(now_ps()) + 1;
     const MotionFields f{motion.read(), steps_x.read(), steps_y.read(), feed_rate.read(), seq.read()};
     const PacketQueueCore::Taken taken = m_core.on_packet(f);
-    if (taken == PacketQueueCore::Taken::Queued && !m_handed) hand_over(edge);
+    if (taken == PacketQueueCore::Taken::Queued && !m_core.running()) hand_over(edge);
     request_status(edge, taken == PacketQueueCore::Taken::Refused);
 }
 
@@ -79,7 +78,6 @@ void PacketQueue::on_busy() {
     ++m_activations;
     if (busy.read()) return;
     const std::int64_t f = m_clock.last_at_or_before(now_ps());
-    m_handed = false;
     m_core.on_move_done();
     hand_over(f);
     request_status(f, false);

@@ -62,7 +62,6 @@ private:
     PacketQueueCore m_core;
     TimedWriter m_writer;
     RecordLog<PacketDecoder::MotionOut> m_issued;
-    bool m_handed = false;   // a move handed to step_gen whose busy has not fallen yet
     bool m_refused = false;  // a refusal not told the host yet
     bool m_halted = false;
     std::int64_t m_status_edge = -1;

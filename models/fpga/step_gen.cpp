@@ -101,7 +101,7 @@ void StepGen::halt(std::int64_t edge) {
     if (step_x.read()) step_x.write(false);
     if (step_y.read()) step_y.write(false);
     if (busy.read()) busy.write(false);
-    if (m_moves.size() == 0 || m_moves.size() == m_moves.first()) return;
+    if (m_moves.size() == m_moves.first()) return;  // no move kept
     Move& last = m_moves[m_moves.size() - 1];
     const TimePs t = m_clock.at(edge);
     if (!last.accepted || last.t_busy_fall_ps <= t) return;

@@ -111,11 +111,16 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     }
 }
 
-// The press sampled by the synchroniser's first stage at edge e1 is seen at e1+1, where step_gen halts.
+// An input changed now is sampled by its synchroniser's first stage at the next edge and seen one edge later.
+std::int64_t Top::synchronised_edge() const {
+    return m_clock.first_after(now_ps()) + 1;
+}
+
+// step_gen halts at the edge the press is seen.
 void Top::on_estop() {
     ++m_activations;
     if (!estop.read() || m_halted) return;
-    const std::int64_t halt = m_clock.first_after(now_ps()) + 1;
+    const std::int64_t halt = synchronised_edge();
     m_halted = true;
     m_halted_at_ps = m_clock.at(halt);
     step_gen_inst.halt_at(halt);
@@ -124,12 +129,11 @@ void Top::on_estop() {
     if (m_status_tx == StatusTx::Idle && !m_tx_busy.read()) send_next_byte(halt + 1);
 }
 
-// The lid's level, synchronised as the e-stop's, reaches laser_ctrl's register at the edge after it is sampled.
+// The lid's level reaches laser_ctrl's register at the edge it is seen.
 void Top::on_lid() {
     ++m_activations;
     const bool open = lid_open.read();
-    const std::int64_t seen = m_clock.first_after(now_ps()) + 1;
-    m_writer.at(m_clock.at(seen), [this, open] { m_laser_inhibit.write(open); });
+    m_writer.at(m_clock.at(synchronised_edge()), [this, open] { m_laser_inhibit.write(open); });
 }
 
 void Top::wire_queue(const FpgaConfig& cfg) {

@@ -63,6 +63,8 @@ private:
     void wire_queue(const FpgaConfig& cfg);
     void on_estop();
     void on_lid();
+    // The edge at which a safety input that changes now is seen through its 2-FF synchroniser.
+    [[nodiscard]] std::int64_t synchronised_edge() const;
     // The next byte for uart_tx once it is free: a status's second byte, the halt byte, a status asked for.
     void send_next_byte(std::int64_t edge);
     // The records' source: the decoder's packets, or with the queue the moves it handed step_gen.

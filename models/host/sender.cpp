@@ -47,7 +47,7 @@ void Sender::on_halt(int segment) {
     m_halted = true;
     m_aborted = true;
     m_abort_reason = "seg " + std::to_string(segment) + ": the FPGA halted on its e-stop input";
-    say("[ERROR] " + m_abort_reason + " (0x4B): aborted");
+    say(fmt::format(FMT_STRING("[ERROR] {} (0x{:02X}): aborted"), m_abort_reason, kHaltByte));
 }
 
 void Sender::stall_if_due() {

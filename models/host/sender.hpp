@@ -12,7 +12,6 @@
 
 #include <systemc>
 
-#include "common/queue_protocol.hpp"
 #include "common/record_log.hpp"
 #include "common/units.hpp"
 #include "host/core/sender_config.hpp"
@@ -90,11 +89,6 @@ private:
     void run();
     // With the FPGA's packet queue (sender_queue.cpp).
     void run_queued();
-    struct QueueLink {
-        int depth = 0;
-        queue_protocol::Status status;
-        [[nodiscard]] bool idle(std::size_t in_flight) const;
-    };
     void write(const std::uint8_t* data, std::size_t n);
     enum class Reply { Ack, Nak, Halt, None };
     // Waits for 0xAA (or, with the packet check, a NAK) until `deadline`. Other bytes are reported and skipped (the

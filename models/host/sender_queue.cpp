@@ -30,12 +30,18 @@ std::vector<std::uint8_t> numbered_packet(const OutgoingPacket& packet, int seq)
     return with_crc(bytes.data(), bytes.size());
 }
 
-}  // namespace
+// What the host knows of the FPGA's queue: its depth and the last status read.
+struct QueueLink {
+    int depth = 0;
+    qp::Status status;
 
-// The moves sent have all run: every packet queued and the status since says nothing queued or running.
-bool Sender::QueueLink::idle(std::size_t in_flight) const {
-    return in_flight == 0 && status.free == depth && !status.running;
-}
+    // The moves sent have all run: every packet queued and the status since says nothing queued or running.
+    [[nodiscard]] bool idle(std::size_t in_flight) const {
+        return in_flight == 0 && status.free == depth && !status.running;
+    }
+};
+
+}  // namespace
 
 void Sender::run_queued() {
     QueueLink link;

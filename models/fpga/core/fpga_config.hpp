@@ -25,7 +25,7 @@ struct FpgaConfig {
     PeriodArithmetic period_arithmetic = PeriodArithmetic::Exact;  // Exact = the text, Wrap32 = the appendix
     bool packet_crc = false;  // our option on seed 000 §7.2's CRC: packets checked, NAK, repeats (decoder core)
     // Our option on seed 000 §7.2's command queue and FIFO packet buffer: packets queued ahead of step_gen
-    // (cmd_fifo.hpp); 0: none, the seed's stop-and-wait.
+    // (packet_queue.hpp); 0: none, the seed's stop-and-wait.
     int queue_depth = 0;
     // Our option on seed 000 §7.2's e-stop and interlock inputs (top.hpp): the e-stop halts step_gen and the laser
     // for good, the lid held open keeps the laser off.

@@ -29,7 +29,8 @@ public:
     // The status as of now; `refused`: it answers a packet that was not queued.
     [[nodiscard]] queue_protocol::Status status(bool refused) const;
     [[nodiscard]] bool empty() const { return m_fifo.empty(); }
-    [[nodiscard]] int depth() const { return m_depth; }
+    // A move handed to step_gen has not ended yet.
+    [[nodiscard]] bool running() const { return m_running; }
     [[nodiscard]] std::uint64_t queued() const { return m_queued; }
     [[nodiscard]] std::uint64_t answered_again() const { return m_again; }
     [[nodiscard]] std::uint64_t refused() const { return m_refused_count; }

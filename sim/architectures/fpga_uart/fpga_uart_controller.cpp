@@ -152,8 +152,10 @@ public:
             if (!r.accepted) continue;
             if (until_ps && (r.t_busy_fall_ps < 0 || r.t_busy_fall_ps >= *until_ps)) return;
             const TimePs t_begin_ps = clock.at(clock.first_after(r.t_pkt_valid_ps));
-            while (!m_queued && sent.newer_taken_by(r.t_pkt_valid_ps)) hand_lost(sent.executed(), t_begin_ps, moves, f);
-            if (!m_queued && sent.oldest_taken_ps() > r.t_pkt_valid_ps) continue;  // its packet has run already
+            if (!m_queued) {
+                while (sent.newer_taken_by(r.t_pkt_valid_ps)) hand_lost(sent.executed(), t_begin_ps, moves, f);
+                if (sent.oldest_taken_ps() > r.t_pkt_valid_ps) continue;  // its packet has run already
+            }
             const MadeSegment made = sent.executed();
             hand_unstepped(made.unstepped_before, t_begin_ps, moves, f);
             metrics::MoveSpec m = moves.next(made.seg, made.programmed ? &*made.programmed : nullptr);
@@ -244,11 +246,11 @@ public:
 
     // Reads the packets step_gen has seen since the last call.
     void read(const fpga::Board& top, const RecordLog<int>& lines) {
+        const TimePs halted_ps = top.stats().halted_at_ps;
         for (; m_next < top.packet_count(); ++m_next) {
             const fpga::PacketRecord r = top.packet(m_next);
             if (r.period_overflow) m_packets.push_back({"period_overflow", segment_place(lines, m_next), m_overflow});
             if (!r.accepted) {
-                const TimePs halted_ps = top.stats().halted_at_ps;
                 const bool after_halt = halted_ps >= 0 && r.t_pkt_valid_ps >= halted_ps;
                 m_packets.push_back({"packet_lost", segment_place(lines, m_next),
                                      after_halt ? "arrived after the e-stop halted step_gen: not run"

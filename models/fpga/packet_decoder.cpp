@@ -26,16 +26,22 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
       pkt_valid("pkt_valid"),
       numerator_x("numerator_x"),
       numerator_y("numerator_y"),
+      ramp_accel("ramp_accel"),
+      ramp_start("ramp_start"),
       cfg_valid("cfg_valid"),
       crc_error("crc_error"),
       repeat("repeat"),
       m_cfg(cfg),
       m_clock(clock_grid(cfg)),
-      m_core(cfg.numerator_default, cfg.packet_crc, cfg.queue_depth == 0),
+      m_core(cfg.numerator_default, cfg.packet_crc, cfg.queue_depth == 0,
+             cfg.ramp == StepRamp::None ? std::nullopt
+                                        : std::optional<RampDefaults>({cfg.ramp_accel_default, cfg.ramp_start_default})),
       m_writer("writer") {
     SC_HAS_PROCESS(PacketDecoder);
     numerator_x.initialize(cfg.numerator_default);  // seed 000 §5.2.3 (Π.4) reset value
     numerator_y.initialize(cfg.numerator_default);
+    ramp_accel.initialize(cfg.ramp_accel_default);
+    ramp_start.initialize(cfg.ramp_start_default);
     SC_METHOD(on_rx_valid);
     sensitive << rx_valid;
     dont_initialize();
@@ -62,6 +68,10 @@ void PacketDecoder::on_rx_valid() {
         m_writer.at(t, [this, f] {
             numerator_x.write(f.num_x);
             numerator_y.write(f.num_y);
+            if (m_cfg.ramp != StepRamp::None) {
+                ramp_accel.write(f.ramp_accel);
+                ramp_start.write(f.ramp_start);
+            }
             cfg_valid.write(true);
         });
         m_writer.at(m_clock.at(edge + 1), [this] { cfg_valid.write(false); });

@@ -12,6 +12,8 @@ StepGen::StepGen(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       pkt_valid("pkt_valid"),
       numerator_x("numerator_x"),
       numerator_y("numerator_y"),
+      ramp_accel("ramp_accel"),
+      ramp_start("ramp_start"),
       cfg_valid("cfg_valid"),
       dir_x("dir_x"),
       step_x("step_x"),
@@ -21,7 +23,9 @@ StepGen::StepGen(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       m_cfg(cfg),
       m_clock(clock_grid(cfg)),
       m_num_x(cfg.numerator_default),  // seed 000 §5.2.4 NUMERATOR_DEFAULT
-      m_num_y(cfg.numerator_default) {
+      m_num_y(cfg.numerator_default),
+      m_ramp_accel(cfg.ramp_accel_default),
+      m_ramp_start(cfg.ramp_start_default) {
     SC_HAS_PROCESS(StepGen);
     SC_METHOD(on_pkt_valid);
     sensitive << pkt_valid;
@@ -41,6 +45,8 @@ void StepGen::on_cfg_valid() {
     if (idle_at_edge(m_clock.first_after(now_ps()))) {
         m_num_x = numerator_x.read();
         m_num_y = numerator_y.read();
+        m_ramp_accel = ramp_accel.read();
+        m_ramp_start = ramp_start.read();
     }
 }
 
@@ -56,7 +62,7 @@ void StepGen::on_pkt_valid() {
     }
     // The decoder's fields only change with pkt_valid, so the values SETUP (k+2) and DIR_WAIT (k+3) read are
     // the ones present now; num_x/num_y cannot change outside IDLE.
-    const MoveInputs in{steps_x.read(), steps_y.read(), feed_rate.read(), m_num_x, m_num_y};
+    const MoveInputs in{steps_x.read(), steps_y.read(), feed_rate.read(), m_num_x, m_num_y, m_ramp_accel, m_ramp_start};
     m_schedule.emplace(in, m_dir_x, m_dir_y, m_cfg);
     m_move_edge = k;
     m_dir_x = m_schedule->dir_x();

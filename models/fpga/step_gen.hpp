@@ -1,6 +1,6 @@
 // step_gen (seed 000 §5.2.4, Π.5): IDLE/SETUP/DIR_WAIT/RUN/DONE STEP/DIR generator. On an accepted pkt_valid
 // it builds the move's edge schedule (core/step_schedule.hpp) and wakes once per edge time; pkt_valid while not
-// IDLE is logged as lost; cfg_valid latches the numerators only in IDLE.
+// IDLE is logged as lost; cfg_valid latches the numerators (and the ramp's registers) only in IDLE.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +23,8 @@ public:
     sc_core::sc_in<bool> pkt_valid;
     sc_core::sc_in<std::uint32_t> numerator_x;
     sc_core::sc_in<std::uint32_t> numerator_y;
+    sc_core::sc_in<std::uint32_t> ramp_accel;  // with fpga.ramp: the init packet's ramp registers (step_ramp.hpp)
+    sc_core::sc_in<std::uint32_t> ramp_start;
     sc_core::sc_in<bool> cfg_valid;
     sc_core::sc_out<bool> dir_x;
     sc_core::sc_out<bool> step_x;
@@ -60,6 +62,8 @@ private:
     const ClockGrid m_clock;
     std::uint32_t m_num_x;
     std::uint32_t m_num_y;
+    std::uint32_t m_ramp_accel;
+    std::uint32_t m_ramp_start;
     bool m_dir_x = false;  // reset values
     bool m_dir_y = false;
     std::int64_t m_idle_from = 0;

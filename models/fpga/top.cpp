@@ -13,6 +13,8 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       m_clock(clock_grid(cfg)),
       m_numerator_x("numerator_x", cfg.numerator_default),
       m_numerator_y("numerator_y", cfg.numerator_default),
+      m_ramp_accel("ramp_accel", cfg.ramp_accel_default),
+      m_ramp_start("ramp_start", cfg.ramp_start_default),
       uart_rx_inst("uart_rx_inst", cfg),
       pkt_dec_inst("pkt_dec_inst", cfg),
       step_gen_inst("step_gen_inst", cfg),
@@ -34,6 +36,8 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     pkt_dec_inst.seq(m_seq);
     pkt_dec_inst.numerator_x(m_numerator_x);
     pkt_dec_inst.numerator_y(m_numerator_y);
+    pkt_dec_inst.ramp_accel(m_ramp_accel);
+    pkt_dec_inst.ramp_start(m_ramp_start);
     pkt_dec_inst.cfg_valid(cfg_valid);
     pkt_dec_inst.crc_error(m_crc_error);
     pkt_dec_inst.repeat(m_repeat);
@@ -52,10 +56,14 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     if (cfg.init_packet_wired) {  // §5.2.6: "must also be driven" to step_gen
         step_gen_inst.numerator_x(m_numerator_x);
         step_gen_inst.numerator_y(m_numerator_y);
+        step_gen_inst.ramp_accel(m_ramp_accel);
+        step_gen_inst.ramp_start(m_ramp_start);
         step_gen_inst.cfg_valid(cfg_valid);
     } else {
         step_gen_inst.numerator_x(m_numerator_unconnected);
         step_gen_inst.numerator_y(m_numerator_unconnected);
+        step_gen_inst.ramp_accel(m_numerator_unconnected);
+        step_gen_inst.ramp_start(m_numerator_unconnected);
         step_gen_inst.cfg_valid(m_cfg_valid_unconnected);
     }
     step_gen_inst.dir_x(dir_x);
@@ -349,6 +357,10 @@ void Top::add_traces(sc_core::sc_trace_file* tf) const {
     sc_core::sc_trace(tf, m_feed_rate, m_feed_rate.name());
     sc_core::sc_trace(tf, m_numerator_x, m_numerator_x.name());
     sc_core::sc_trace(tf, m_numerator_y, m_numerator_y.name());
+    if (m_cfg.ramp != StepRamp::None) {
+        sc_core::sc_trace(tf, m_ramp_accel, m_ramp_accel.name());
+        sc_core::sc_trace(tf, m_ramp_start, m_ramp_start.name());
+    }
     sc_core::sc_trace(tf, m_tx_busy, m_tx_busy.name());
     laser_ctrl_inst.add_traces(tf);
     if (m_cfg.interlock_input) sc_core::sc_trace(tf, m_laser_inhibit, m_laser_inhibit.name());

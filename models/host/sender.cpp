@@ -10,8 +10,8 @@
 namespace cnc::host {
 
 Sender::Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
-               std::array<std::uint8_t, 9> init_packet, PacketSource& motion_packets)
-    : sc_module(name), m_cfg(cfg), m_port(port), m_init(init_packet), m_motion(motion_packets) {
+               std::vector<std::uint8_t> init_packet, PacketSource& motion_packets)
+    : sc_module(name), m_cfg(cfg), m_port(port), m_init(std::move(init_packet)), m_motion(motion_packets) {
     SC_HAS_PROCESS(Sender);
     SC_THREAD(run);
 }
@@ -83,7 +83,7 @@ Sender::Reply Sender::wait_for_reply(int segment, TimePs deadline) {
 
 void Sender::send_init() {
     const std::vector<std::uint8_t> bytes = m_cfg.check.crc ? with_crc(m_init.data(), m_init.size())
-                                                            : std::vector<std::uint8_t>(m_init.begin(), m_init.end());
+                                                            : m_init;
     for (int send = 0;; ++send) {
         write(bytes.data(), bytes.size());
         if (!m_cfg.check.crc) {

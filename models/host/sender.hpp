@@ -57,7 +57,7 @@ public:
     // job's host waits (G4 dwells, M0 pauses, Z moves) are slept before the packet they come with (after the
     // previous ACK: the host sleeps once the machine has finished), and after the last ACK.
     Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
-           std::array<std::uint8_t, 9> init_packet, PacketSource& motion_packets);
+           std::vector<std::uint8_t> init_packet, PacketSource& motion_packets);
 
     // Every packet sent, numbered over the whole run (size() counts the dropped ones too).
     [[nodiscard]] const RecordLog<SentPacket>& packets() const { return m_sent; }
@@ -107,7 +107,7 @@ private:
 
     const SenderConfig m_cfg;
     uart::Cp2102& m_port;
-    const std::array<std::uint8_t, 9> m_init;
+    const std::vector<std::uint8_t> m_init;  // the init packet, without its CRC
     PacketSource& m_motion;
     RecordLog<SentPacket> m_sent;
     std::vector<SenderMessage> m_messages;

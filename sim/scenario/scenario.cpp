@@ -97,8 +97,8 @@ void read_axis_limits(KeyReader& r, const std::string& axis, host::AxisLimits& l
                  "an axis that may not move cannot follow any move");
     lim.max_accel_mm_per_s2 = positive(
         r, p + "max_accel_mm_per_s2", lim.max_accel_mm_per_s2, 1e7,
-        "axis acceleration limit, mm/s^2, > 0 (LinuxCNC MAX_ACCELERATION): the trajectory planner's (a controller "
-        "without ramps steps at full rate from the first step)",
+        "axis acceleration limit, mm/s^2, > 0 (LinuxCNC MAX_ACCELERATION): the trajectory planner's and the FPGA "
+        "ramp's (fpga.ramp); a controller without ramps steps at full rate from the first step",
         "an axis that cannot accelerate never leaves rest");
     lim.max_jerk_mm_per_s3 = positive(r, p + "max_jerk_mm_per_s3", lim.max_jerk_mm_per_s3, 1e10,
                                       "axis jerk limit, mm/s^3, > 0 (planner.profile = jerk-limited only)",

@@ -9,13 +9,14 @@ Edges to moves: the STEP rising edges (while the driver's active-low nENBL is lo
 except on atmega, seed 003 sec. 5.2.5: DIR 0 = +) are walked in time order and the net step counts give the tool's
 position on the step grid (origin 0,0, steps/mm from the report's scenario section).
 
-- fpga-uart, atmega (no planner): a move owns the edges from the end of the move before it until its position
+- fpga-uart without its ramp, atmega (no planner): a move owns the edges from the end of the move before it until its position
   reaches the move's programmed end on the grid. Feed = programmed path length (an arc by its arc length) / (from
   its first edge to the latest over the axes of last edge + that edge's interval to the one before it, cut at the
   next move's first edge). The report rounds feed error to 1e-4 %: it must agree within 1.5e-4 %. A move whose
   position never lands on its end (an atmega axis that is not counted), or that has an axis with a single edge
   (its period is not in the trace), is not compared.
-- spi-fpga (planner: ramps and blended corners): the middle half of a move, the edges after the move before's
+- spi-fpga (planner: ramps and blended corners) and fpga-uart with its ramp (fpga.ramp: a planner in step_gen,
+  ramps at every move): the middle half of a move, the edges after the move before's
   middle whose position lies within 0.05 mm of the move's path at 25 % to 75 % of its length (an arc: by angle
   from its start). Feed = path length between the first and last of those positions (projected onto the path) /
   the time between them. Where the move runs at constant feed (the two halves of the middle within 0.5 % of each
@@ -250,7 +251,8 @@ def compare_feeds(scenario, arch, report, vcd, require_all):
     moves = programmed_moves(os.path.join(os.path.dirname(scenario), job), feed_per_s)
     changes, scale_ps = read_vcd(vcd)
     events = step_events(changes, scale_ps, arch)
-    planner = arch == "spi-fpga"
+    planner = arch == "spi-fpga" or (arch == "fpga-uart" and
+                                      re.search(r'^ramp\s*=\s*"trapezoidal"', toml, re.M) is not None)
     edges = planner_feeds(events, moves, spm) if planner else strict_feeds(events, moves, spm)
     cols = r["metrics"]["moves"]
     feed_of = {move[0]: move[6] for move in moves}

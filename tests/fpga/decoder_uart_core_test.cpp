@@ -68,6 +68,30 @@ std::vector<std::uint8_t> checked(std::vector<std::uint8_t> bytes, bool sequence
     return bytes;
 }
 
+// With the ramp (fpga.ramp) the init packet carries the ramp's acceleration and start registers after the
+// numerators, big-endian: 17 bytes, and the registers keep their reset values until one arrives.
+TEST(PacketDecoderCore, WithTheRampTheInitPacketCarriesItsRegisters) {
+    PacketDecoderCore d(18'750'000, false, true, RampDefaults{18'014, 68'719});
+    EXPECT_EQ(d.init().ramp_accel, 18'014U);
+    EXPECT_EQ(d.init().ramp_start, 68'719U);
+    const std::vector<std::uint8_t> init = {0xFF, 0x01, 0x1E, 0x1A, 0x30, 0x00, 0x8F, 0x0D, 0x18,
+                                            0x00, 0x00, 0x46, 0x5E, 0x00, 0x01, 0x0C, 0x8F};
+    const auto done = feed_bytes(d, init);
+    EXPECT_EQ(std::count(done.begin(), done.end(), Completed::None), 16);  // not done at the seed's 9th byte
+    EXPECT_EQ(done.back(), Completed::Init);
+    EXPECT_EQ(d.init().num_x, 18'750'000U);
+    EXPECT_EQ(d.init().num_y, 9'375'000U);
+    EXPECT_EQ(d.init().ramp_accel, 0x465EU);
+    EXPECT_EQ(d.init().ramp_start, 0x10C8FU);
+    EXPECT_EQ(feed_bytes(d, test::motion_packet(1, 320, -160, 1200)).back(), Completed::Motion);
+
+    PacketDecoderCore with_check(18'750'000, true, true, RampDefaults{});
+    const auto checked_done = feed_bytes(with_check, checked(init));
+    EXPECT_EQ(std::count(checked_done.begin(), checked_done.end(), Completed::None), 18);
+    EXPECT_EQ(checked_done.back(), Completed::Init);
+    EXPECT_EQ(with_check.init().ramp_start, 0x10C8FU);
+}
+
 TEST(PacketDecoderCore, CheckedPacketsCompleteAfterTheirCrc) {
     PacketDecoderCore d(18'750'000, true);
     const auto init = feed_bytes(d, checked(test::init_packet(9'375'000, 1'000)));

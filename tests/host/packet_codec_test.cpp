@@ -44,6 +44,13 @@ TEST(HostPacketCodec, InitRoundTrip) {
     EXPECT_EQ(p.num_y, 1u);
 }
 
+TEST(HostPacketCodec, TheRampsInitPacketAppendsItsRegistersToTheSeeds) {
+    const RampInitBytes b = encode_ramp_init(18'750'000, 1, 0x465E, 0x10C8F);
+    const RampInitBytes expected{0xFF, 0x01, 0x1E, 0x1A, 0x30, 0x00, 0x00, 0x00, 0x01,
+                                 0x00, 0x00, 0x46, 0x5E, 0x00, 0x01, 0x0C, 0x8F};
+    EXPECT_EQ(b, expected);
+}
+
 TEST(HostPacketCodec, MarkerConfusionIsRejected) {
     EXPECT_THROW(encode_motion(0xFF, 0, 0, 0), std::invalid_argument);
     EXPECT_THROW(decode_init(InitBytes{0x01}), std::invalid_argument);

@@ -12,6 +12,9 @@ namespace cnc::fpga {
 // evaluates the product at 32 bits and wraps.
 enum class PeriodArithmetic { Exact, Wrap32 };
 
+// Our option on seed 000 §7.2's trapezoidal ramps on the FPGA (core/step_ramp.hpp): none is the seed's step_gen.
+enum class StepRamp { None, Trapezoidal };
+
 struct FpgaConfig {
     std::uint32_t clk_hz = 50'000'000;               // seed 000 §5.1.1: DE1-SoC CLOCK_50
     std::uint32_t uart_full_bit_cycles = 434;        // seed 000 §5.2.1 FULL_BIT; uart_tx CLK_FREQ/BAUD_RATE (§5.2.2)
@@ -23,6 +26,11 @@ struct FpgaConfig {
     std::uint32_t feed_zero_period_cycles = 62'500;  // step_gen.v: both periods when feed_rate == 0 (unexplained)
     bool init_packet_wired = true;                   // false = appendix top.v: cfg_valid/numerators unconnected
     PeriodArithmetic period_arithmetic = PeriodArithmetic::Exact;  // Exact = the text, Wrap32 = the appendix
+    StepRamp ramp = StepRamp::None;
+    // The ramp's registers until an init packet sets them: 1000 mm/s^2 and a 5 mm/s start at 160 steps/mm
+    // (NUMERATOR_DEFAULT's machine), in step_ramp.hpp's fixed point at 50 MHz.
+    std::uint32_t ramp_accel_default = 18'014;  // 160,000 steps/s^2 x 2^48 / (50 MHz)^2
+    std::uint32_t ramp_start_default = 68'719;  // 800 steps/s x 2^32 / 50 MHz
     bool packet_crc = false;  // our option on seed 000 §7.2's CRC: packets checked, NAK, repeats (decoder core)
     // Our option on seed 000 §7.2's command queue and FIFO packet buffer: packets queued ahead of step_gen
     // (packet_queue.hpp); 0: none, the seed's stop-and-wait.

@@ -10,13 +10,23 @@ std::uint32_t be32(std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t 
     return (std::uint32_t{a} << 24) | (std::uint32_t{b} << 16) | (std::uint32_t{c} << 8) | std::uint32_t{d};
 }
 
-MotionFields motion_fields(const std::array<std::uint8_t, 12>& b, std::uint8_t feed_low) {
+template <std::size_t N>
+MotionFields motion_fields(const std::array<std::uint8_t, N>& b, std::uint8_t feed_low) {
     return {static_cast<std::uint8_t>(b[0] & 0x3U), static_cast<std::int32_t>(be32(b[1], b[2], b[3], b[4])),
             static_cast<std::int32_t>(be32(b[5], b[6], b[7], b[8])),
             static_cast<std::uint16_t>((b[9] << 8) | feed_low),
             static_cast<std::uint8_t>(queue_protocol::seq_of(b[0]))};
 }
 }  // namespace
+
+void PacketDecoderCore::latch_init() {
+    const auto& b = m_bank;
+    m_init.num_x = be32(b[1], b[2], b[3], b[4]);
+    m_init.num_y = be32(b[5], b[6], b[7], b[8]);
+    if (!m_ramp) return;
+    m_init.ramp_accel = be32(b[9], b[10], b[11], b[12]);
+    m_init.ramp_start = be32(b[13], b[14], b[15], b[16]);
+}
 
 void PacketDecoderCore::restart() {
     m_byte_count = 0;
@@ -33,20 +43,18 @@ PacketDecoderCore::Completed PacketDecoderCore::on_byte(std::uint8_t byte) {
         m_timeout_active = true;
         m_is_cfg = byte == kCfgMarker;
     }
-    const auto& b = m_bank;
-    if (was_cfg && m_byte_count == kInitBytes - 1) {
-        m_init.num_x = be32(b[1], b[2], b[3], b[4]);
-        m_init.num_y = be32(b[5], b[6], b[7], byte);
+    if (was_cfg && m_byte_count == init_bytes() - 1) {
+        latch_init();
         restart();
         return Completed::Init;
     }
     if (!was_cfg && m_byte_count == kMotionBytes - 1) {
-        m_motion = motion_fields(b, byte);
+        m_motion = motion_fields(m_bank, byte);
         m_byte_count = 0;
         m_timeout_active = false;  // the RTL leaves is_cfg_pkt as it was (0) here
         return Completed::Motion;
     }
-    m_byte_count = (m_byte_count + 1) & 0xF;  // byte_count[3:0]
+    m_byte_count = (m_byte_count + 1) & (m_ramp ? 0x1F : 0xF);  // byte_count[3:0], a bit more for the ramp's init
     return Completed::None;
 }
 
@@ -59,7 +67,7 @@ PacketDecoderCore::Completed PacketDecoderCore::complete_checked(bool is_cfg, st
         m_crc_reg = kCrc16Preset;
     }
     m_crc_reg = crc16_update(m_crc_reg, byte);
-    const int length = (is_cfg ? kInitBytes : kMotionBytes) + kCrcBytes;
+    const int length = (is_cfg ? init_bytes() : kMotionBytes) + kCrcBytes;
     if (m_byte_count < length - 1) {
         ++m_byte_count;
         return Completed::None;
@@ -69,8 +77,7 @@ PacketDecoderCore::Completed PacketDecoderCore::complete_checked(bool is_cfg, st
     if (!good) return Completed::BadCrc;
     const auto& b = m_bank;
     if (is_cfg) {
-        m_init.num_x = be32(b[1], b[2], b[3], b[4]);
-        m_init.num_y = be32(b[5], b[6], b[7], b[8]);
+        latch_init();
         return Completed::Init;
     }
     const bool sequence = (b[0] & kSequenceBit) != 0;

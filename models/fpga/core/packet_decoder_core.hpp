@@ -12,6 +12,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 
 namespace cnc::fpga {
 
@@ -26,6 +27,15 @@ struct MotionFields {
 struct InitFields {
     std::uint32_t num_x = 0;
     std::uint32_t num_y = 0;
+    std::uint32_t ramp_accel = 0;  // with the ramp (fpga.ramp): its registers, after the numerators
+    std::uint32_t ramp_start = 0;
+};
+
+// With the ramp the init packet carries its registers (fpga/core/step_ramp.hpp) after the numerators; these are
+// their reset values.
+struct RampDefaults {
+    std::uint32_t accel = 0;
+    std::uint32_t start = 0;
 };
 
 class PacketDecoderCore {
@@ -33,12 +43,17 @@ public:
     enum class Completed { None, Motion, Init, BadCrc, Repeat };
     static constexpr std::uint8_t kCfgMarker = 0xFF;  // seed 000 §4.6 (Π.4 CFG_MARKER)
     static constexpr int kInitBytes = 9;              // seed 000 §4.6
+    static constexpr int kRampInitBytes = 17;         // and the ramp's two 32-bit registers
     static constexpr int kMotionBytes = 11;
     static constexpr int kCrcBytes = 2;                 // with the packet check
     static constexpr std::uint8_t kSequenceBit = 0x80;  // b0[7] of a motion packet, with the packet check
 
-    explicit PacketDecoderCore(std::uint32_t numerator_default, bool packet_crc = false, bool alternating_bit = true)
-        : m_crc(packet_crc), m_alternating(packet_crc && alternating_bit), m_init{numerator_default, numerator_default} {}
+    explicit PacketDecoderCore(std::uint32_t numerator_default, bool packet_crc = false, bool alternating_bit = true,
+                               std::optional<RampDefaults> ramp = std::nullopt)
+        : m_crc(packet_crc),
+          m_alternating(packet_crc && alternating_bit),
+          m_ramp(ramp.has_value()),
+          m_init{numerator_default, numerator_default, ramp ? ramp->accel : 0, ramp ? ramp->start : 0} {}
 
     // The rx_valid branch of the always block.
     Completed on_byte(std::uint8_t byte);
@@ -53,13 +68,16 @@ public:
 private:
     Completed complete_checked(bool was_cfg, std::uint8_t byte);
     void restart();
+    void latch_init();
+    [[nodiscard]] int init_bytes() const { return m_ramp ? kRampInitBytes : kInitBytes; }
 
     bool m_crc;
     bool m_alternating;
+    bool m_ramp;
     int m_byte_count = 0;
     bool m_timeout_active = false;
     bool m_is_cfg = false;
-    std::array<std::uint8_t, 12> m_bank{};  // b0..b11 (the packet's last byte is used live)
+    std::array<std::uint8_t, kRampInitBytes + kCrcBytes> m_bank{};  // the packet's bytes so far
     std::uint16_t m_crc_reg = 0;            // over the packet's bytes so far (with the packet check)
     bool m_sequence_seen = false;           // a motion packet has been passed on since reset
     bool m_last_sequence = false;

@@ -71,6 +71,25 @@ void AxisPulses::pop() {
     if (!m_separate || m_pulse >= m_steps) m_done = true;
 }
 
+RampPulses::RampPulses(const RampInputs& in, bool x_dominant, std::uint32_t pulse_high_cycles)
+    : m_run(in), m_x_dominant(x_dominant), m_high(pulse_high_cycles) {}
+
+bool RampPulses::next(PinEdge& out) {
+    if (m_pending_next == m_pending_size) {
+        RampRun::Step step;
+        if (!m_run || !m_run->next(step)) return false;
+        const bool x = m_x_dominant || step.sub;
+        const bool y = !m_x_dominant || step.sub;
+        m_pending_size = m_pending_next = 0;
+        if (x) m_pending[m_pending_size++] = {step.clock, StepPin::StepX, true};
+        if (y) m_pending[m_pending_size++] = {step.clock, StepPin::StepY, true};
+        if (x) m_pending[m_pending_size++] = {step.clock + m_high, StepPin::StepX, false};
+        if (y) m_pending[m_pending_size++] = {step.clock + m_high, StepPin::StepY, false};
+    }
+    out = m_pending[m_pending_next++];
+    return true;
+}
+
 StepSchedule::StepSchedule(const MoveInputs& in, bool dir_x_before, bool dir_y_before, const FpgaConfig& cfg)
     : m_dir_x(dir_level(in.steps_x)),
       m_dir_y(dir_level(in.steps_y)),
@@ -85,6 +104,10 @@ StepSchedule::StepSchedule(const MoveInputs& in, bool dir_x_before, bool dir_y_b
     if (m_dir_y != dir_y_before) m_prologue[m_prologue_size++] = {kDirEdge, StepPin::DirY, m_dir_y};
 
     if (!m_has_run) return;
+    if (cfg.ramp == StepRamp::Trapezoidal) {
+        start_ramp(in, abs_x, abs_y, cfg);
+        return;
+    }
     // RUN exits on the first edge where each axis is on its last cycle or has nothing (left) to do.
     auto last_edge = [](std::uint32_t steps, std::uint32_t period) -> std::int64_t {
         return steps == 0 || period == 0 ? 0 : std::int64_t{steps} * period - 1;
@@ -95,10 +118,40 @@ StepSchedule::StepSchedule(const MoveInputs& in, bool dir_x_before, bool dir_y_b
     m_y = AxisPulses(abs_y, m_periods.y_cycles, cfg.pulse_high_cycles, exit_edge);
 }
 
+// The ramp runs the move once here for its length (RUN ends with the last step's fall), and once for its edges.
+RampInputs ramp_inputs(const MoveInputs& in, const FpgaConfig& cfg) {
+    const std::uint32_t abs_x = abs_steps(in.steps_x);
+    const std::uint32_t abs_y = abs_steps(in.steps_y);
+    const StepPeriods periods = compute_periods(abs_x, abs_y, in.feed, in.num_x, in.num_y, cfg);
+    const bool x_dominant = abs_x >= abs_y;
+    const std::uint32_t period = x_dominant ? periods.x_cycles : periods.y_cycles;
+    return {x_dominant ? abs_x : abs_y, x_dominant ? abs_y : abs_x,
+            velocity_of_period(period, 2 * std::uint64_t{cfg.pulse_high_cycles}), in.ramp_start, in.ramp_accel};
+}
+
+void StepSchedule::start_ramp(const MoveInputs& in, std::uint32_t abs_x, std::uint32_t abs_y, const FpgaConfig& cfg) {
+    const bool x_dominant = abs_x >= abs_y;
+    const RampInputs ramp = ramp_inputs(in, cfg);
+    RampRun run(ramp);
+    RampRun::Step step;
+    std::int64_t last_rise = 0;
+    while (run.next(step)) last_rise = step.clock;
+    m_run_cycles = last_rise + cfg.pulse_high_cycles + 1;
+    m_ramp.emplace(ramp, x_dominant, cfg.pulse_high_cycles);
+}
+
 bool StepSchedule::next(PinEdge& out) {
     if (m_prologue_next < m_prologue_size) {
         out = m_prologue[m_prologue_next++];
         return true;
+    }
+    if (m_ramp) {
+        PinEdge e;
+        if (m_ramp->next(e)) {
+            out = {m_run_start + e.cycle, e.pin, e.level};
+            return true;
+        }
+        m_ramp.reset();
     }
     CycleEdge ex;
     CycleEdge ey;

@@ -14,11 +14,16 @@
 // Per stepping axis (rem > 0, period P > 0), RUN edge j = m*P raises STEP and j = m*P+PULSE_HIGH lowers it;
 // if P <= PULSE_HIGH, cnt never reaches PULSE_HIGH and STEP stays high until the axis runs out of steps
 // (one long pulse). The exit edge N-1 forces both STEPs low, overriding a rise on that edge.
+// With the trapezoidal ramp (fpga.ramp) RUN steps on the clocks core/step_ramp.hpp gives, at the packet's period at
+// most (never faster than 2 PULSE_HIGH a step); each STEP falls PULSE_HIGH clocks after it rose, the last fall is
+// the exit edge N-1 and busy falls at N.
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "fpga/core/fpga_config.hpp"
+#include "fpga/core/step_ramp.hpp"
 #include "fpga/core/uart_timing.hpp"
 
 namespace cnc::fpga {
@@ -57,7 +62,12 @@ struct MoveInputs {
     std::uint16_t feed = 0;
     std::uint32_t num_x = 0;  // step_gen's latched numerators
     std::uint32_t num_y = 0;
+    std::uint32_t ramp_accel = 0;  // with a ramp: its latched registers (step_ramp.hpp)
+    std::uint32_t ramp_start = 0;
 };
+
+// With the ramp: its inputs for a move (the dominant axis is X on a tie).
+[[nodiscard]] RampInputs ramp_inputs(const MoveInputs& in, const FpgaConfig& cfg);
 
 // How long step_gen stays in RUN for one packet: N clocks (above), dominant steps x NUMERATOR / feed for a
 // coordinated move. What a host can expect a move to take, e.g. to size its ACK timeout.
@@ -83,6 +93,24 @@ private:
     bool m_done = true;
 };
 
+// STEP register changes of both axes during a ramped RUN: a step's rises on its clock (X first), its falls
+// PULSE_HIGH clocks later, before the next step's rises.
+class RampPulses {
+public:
+    RampPulses() = default;
+    RampPulses(const RampInputs& in, bool x_dominant, std::uint32_t pulse_high_cycles);
+    // The next edge (cycle relative to the first RUN edge); false after the last fall.
+    bool next(PinEdge& out);
+
+private:
+    std::optional<RampRun> m_run;
+    bool m_x_dominant = true;
+    std::int64_t m_high = 0;
+    std::array<PinEdge, 4> m_pending{};
+    std::size_t m_pending_size = 0;
+    std::size_t m_pending_next = 0;
+};
+
 class StepSchedule {
 public:
     static constexpr std::int64_t kBusyRise = 1;
@@ -105,6 +133,8 @@ public:
     bool next(PinEdge& out);
 
 private:
+    void start_ramp(const MoveInputs& in, std::uint32_t abs_x, std::uint32_t abs_y, const FpgaConfig& cfg);
+
     StepPeriods m_periods;
     bool m_dir_x;
     bool m_dir_y;
@@ -116,6 +146,7 @@ private:
     std::size_t m_prologue_next = 0;
     AxisPulses m_x;
     AxisPulses m_y;
+    std::optional<RampPulses> m_ramp;
     bool m_busy_fall_sent = false;
 };
 

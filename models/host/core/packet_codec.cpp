@@ -1,5 +1,6 @@
 #include "host/core/packet_codec.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -42,6 +43,15 @@ InitBytes encode_init(std::uint32_t num_x, std::uint32_t num_y) {
     b[0] = kInitMarker;
     put_be32(&b[1], num_x);
     put_be32(&b[5], num_y);
+    return b;
+}
+
+RampInitBytes encode_ramp_init(std::uint32_t num_x, std::uint32_t num_y, std::uint32_t accel, std::uint32_t start) {
+    RampInitBytes b{};
+    const InitBytes seed = encode_init(num_x, num_y);
+    std::copy(seed.begin(), seed.end(), b.begin());
+    put_be32(&b[kInitPacketBytes], accel);
+    put_be32(&b[kInitPacketBytes + 4], start);
     return b;
 }
 

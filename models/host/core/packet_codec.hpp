@@ -20,7 +20,12 @@ inline constexpr std::size_t kCrcBytes = 2;
 inline constexpr std::size_t kInitPacketBytes = 9;     // seed 000 T3.6
 inline constexpr std::size_t kMotionPacketBytes = 11;  // seed 000 T3.6
 
+// With the FPGA's trapezoidal ramp (fpga.ramp, our option on seed 000 §7.2) the init packet carries the ramp's
+// acceleration and start registers after the numerators (fpga/core/step_ramp.hpp has their fixed point).
+inline constexpr std::size_t kRampInitPacketBytes = 17;
+
 using InitBytes = std::array<std::uint8_t, kInitPacketBytes>;
+using RampInitBytes = std::array<std::uint8_t, kRampInitPacketBytes>;
 using MotionBytes = std::array<std::uint8_t, kMotionPacketBytes>;
 
 struct InitPacket {
@@ -36,6 +41,7 @@ struct MotionPacket {
 };
 
 InitBytes encode_init(std::uint32_t num_x, std::uint32_t num_y);
+RampInitBytes encode_ramp_init(std::uint32_t num_x, std::uint32_t num_y, std::uint32_t accel, std::uint32_t start);
 // std::invalid_argument for motion 0xFF: the decoder would take the packet for an init packet.
 MotionBytes encode_motion(std::uint8_t motion, std::int32_t steps_x, std::int32_t steps_y, std::uint16_t feed);
 MotionBytes encode_motion(const MotionPacket& packet);

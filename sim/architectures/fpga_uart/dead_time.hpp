@@ -59,8 +59,7 @@ public:
     // The run's executed pieces in order, as measured (one per packet).
     void add_piece(const PieceSteps& piece) { m_pieces.push_back(piece); }
     // Folds the gaps final at `now_ps`; `ended`: the run is over, fold every gap there is. `cp2102`: its TX log
-    // thinned to each motion packet's first byte (Cp2102::thin_tx_log(host::kInitPacketBytes,
-    // host::kMotionPacketBytes)).
+    // thinned to each motion packet's first byte (Cp2102::thin_tx_log with the init and motion packets' lengths).
     void fold(TimePs now_ps, bool ended, const fpga::Board& fpga, const RecordLog<host::SentPacket>& sent,
               const uart::Cp2102& cp2102);
     // What the gaps still to fold read, from which on the records must be kept: the FPGA's packets, the sender's

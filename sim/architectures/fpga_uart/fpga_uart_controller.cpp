@@ -14,8 +14,10 @@
 #include "architectures/fpga_uart/dead_time.hpp"
 #include "architectures/fpga_uart/fpga_uart.hpp"
 #include "architectures/fpga_uart/fpga_uart_settings.hpp"
+#include "architectures/fpga_uart/init_registers.hpp"
 #include "architectures/fpga_uart/job_segments.hpp"
 #include "architectures/fpga_uart/packet_faults.hpp"
+#include "architectures/fpga_uart/ramp_commanded.hpp"
 #include "architectures/serial_host/link_checks.hpp"
 #include "common/bad_input.hpp"
 #include "common/record_log.hpp"
@@ -28,6 +30,7 @@
 #include "run/controller.hpp"
 #include "run/event_pins.hpp"
 #include "run/machine_run.hpp"
+#include "run/metrics_feed.hpp"
 #include "run/moves.hpp"
 #include "uart/cp2102.hpp"
 #include "uart/faulty_line.hpp"
@@ -35,9 +38,6 @@
 namespace cnc::sim::fpga_uart {
 
 namespace {
-
-// send_steps.py hard-codes NUMERATOR_X = NUMERATOR_Y = 18_750_000 (seed 000 App. A.2).
-constexpr std::uint32_t kSeedScriptNumerator = 18'750'000;
 
 // The link's wires and the FPGA's internal strobes (the machine's pins are the run's: run/machine.hpp); the VCD
 // and the analyze scripts rely on the names (docs/architectures.md "Pins").
@@ -53,21 +53,10 @@ struct Wires {
     sc_core::sc_signal<bool> estop{"estop", false}, lid_open{"lid_open", false};
 };
 
-// The NUMERATORs the host sends in its init packet.
-struct Numerators {
-    std::uint32_t x, y;
-};
-
-Numerators numerators(const Scenario& s, const FpgaUartSettings& f) {
-    if (!f.numerator_from_machine) return {kSeedScriptNumerator, kSeedScriptNumerator};
-    return {host::numerator(s.machine.x.steps_per_mm(), f.fpga.clk_hz),
-            host::numerator(s.machine.y.steps_per_mm(), f.fpga.clk_hz)};
-}
-
-host::OutgoingPacket packet_of(const MadeSegment& made, Numerators n, const FpgaUartSettings& f) {
+host::OutgoingPacket packet_of(const MadeSegment& made, InitRegisters n, const FpgaUartSettings& f) {
     const host::MotionPacket packet = host::to_packet(made.seg);
-    // The host expects step_gen to use the numerators it sends (whether the init packet arrives or not).
-    const fpga::MoveInputs move{packet.steps_x, packet.steps_y, packet.feed, n.x, n.y};
+    // The host expects step_gen to use the registers it sends (whether the init packet arrives or not).
+    const fpga::MoveInputs move = move_inputs(packet.steps_x, packet.steps_y, packet.feed, n);
     return {host::encode_motion(packet), made.seg.line, fpga::run_duration_ps(move, f.fpga), made.wait_before_s};
 }
 
@@ -76,13 +65,13 @@ host::OutgoingPacket packet_of(const MadeSegment& made, Numerators n, const Fpga
 class SentPackets : public host::PacketSource {
 public:
     // `keep_fields`: every packet's fields and line stay for the fault tally.
-    SentPackets(const Scenario& s, const Job& job, Numerators n, bool keep_fields)
-        : m_settings(s.settings<FpgaUartSettings>()), m_segments(s, job), m_numerators(n), m_keep_fields(keep_fields) {}
+    SentPackets(const Scenario& s, const Job& job, InitRegisters n, bool keep_fields)
+        : m_settings(s.settings<FpgaUartSettings>()), m_segments(s, job), m_init_registers(n), m_keep_fields(keep_fields) {}
 
     std::optional<host::OutgoingPacket> next() override {
         std::optional<MadeSegment> made = m_segments.next();
         if (!made) return std::nullopt;
-        host::OutgoingPacket packet = packet_of(*made, m_numerators, m_settings);
+        host::OutgoingPacket packet = packet_of(*made, m_init_registers, m_settings);
         m_lines.push_back(made->seg.line);
         const TimePs t_taken_ps = now_ps();
         if (m_keep_fields) m_sent.push_back({t_taken_ps, made->seg.line, sent_fields(packet)});
@@ -120,7 +109,7 @@ private:
 
     const FpgaUartSettings& m_settings;
     JobSegments m_segments;
-    Numerators m_numerators;
+    InitRegisters m_init_registers;
     const bool m_keep_fields;
     std::vector<HostPacket> m_sent;
     struct Unexecuted {
@@ -212,7 +201,7 @@ void check_steps_feeds(const Scenario& s, const Job& job, const FpgaUartSettings
 
 // Before anything is simulated: every segment made and encoded once (the CAM's and the packet codec's BadInput),
 // counted for the job's pace.
-std::size_t count_packets(const Scenario& s, const Job& job, Numerators n) {
+std::size_t count_packets(const Scenario& s, const Job& job, InitRegisters n) {
     const FpgaUartSettings& f = s.settings<FpgaUartSettings>();
     JobSegments segments(s, job);
     std::size_t count = 0;
@@ -313,13 +302,14 @@ constexpr const char* kQueuedNotSplit =
 // warnings read them once. The detailed report lists every packet step_gen saw and the sender sent, and the fault
 // tally pairs them at the end: kept.
 void hand_over_read(const ExecutedPieces& executed, const DeadTimeFold& dead_fold, const FpgaWarnings& warnings,
-                    bool keep_packets, fpga::Board& fpga, host::Sender& sender, uart::Cp2102& cp2102,
-                    SentPackets& packets) {
+                    const RampCommanded* ramp, bool keep_packets, fpga::Board& fpga, host::Sender& sender,
+                    uart::Cp2102& cp2102, SentPackets& packets) {
     cp2102.drop_tx_log_before(dead_fold.next_packet());
     cp2102.drop_rx_log_before(dead_fold.next_rx_byte());
     packets.drop_lines_before(warnings.next_packet());
     if (keep_packets) return;
-    fpga.drop_packets_before(std::min({executed.next_record(), dead_fold.next_packet(), warnings.next_packet()}));
+    fpga.drop_packets_before(std::min({executed.next_record(), dead_fold.next_packet(), warnings.next_packet(),
+                                       ramp != nullptr ? ramp->next_record() : executed.next_record()}));
     sender.drop_packets_before(dead_fold.next_packet());
 }
 
@@ -337,12 +327,18 @@ ArchPace pace(const Scenario& s, const FpgaUartSettings& f, std::size_t packets)
                                   2 * f.serial.link.usb_frame_ps + f.serial.link.usb_latency_ps) +
                           kTripBytes * kBitsPerByte / static_cast<double>(f.serial.link.requested_baud);
     p.link_s = static_cast<double>(packets) * trip_s;
+    if (f.fpga.ramp != fpga::StepRamp::None) {
+        // Each move starts and ends at the start speed: up and down at the slower axis' acceleration add
+        // (v - v0)^2 / (a v) to length / v.
+        const double accel = std::min(s.machine.x.limits.max_accel_mm_per_s2, s.machine.y.limits.max_accel_mm_per_s2);
+        p.ramp_s = [accel, v0 = f.ramp_start_mm_per_s](double v) { return v > v0 ? (v - v0) * (v - v0) / (accel * v) : 0.0; };
+    }
     return p;
 }
 
 // A steps file has no programmed moves: its packets, as the straight lines they are, at the speed step_gen
 // runs them (so also a FeedRate 0 row of host.allow_feed_zero).
-host::Program packet_moves(const std::vector<host::MotionSegment>& rows, Numerators n, const Scenario& s,
+host::Program packet_moves(const std::vector<host::MotionSegment>& rows, InitRegisters n, const Scenario& s,
                            const FpgaUartSettings& f) {
     host::Program program;
     program.filename = s.job_path;
@@ -367,7 +363,7 @@ host::Program packet_moves(const std::vector<host::MotionSegment>& rows, Numerat
 }
 
 // The job's estimate: a G-code job's moves read from the file once more (the summary has none).
-JobEstimate estimate(const Scenario& s, const FpgaUartSettings& f, const Job& job, Numerators n, const ArchPace& pace) {
+JobEstimate estimate(const Scenario& s, const FpgaUartSettings& f, const Job& job, InitRegisters n, const ArchPace& pace) {
     if (!job.program) return estimate_job(packet_moves(job.steps_file, n, s, f), pace);
     host::GcodeStream moves(s.job_path, s.interpreter, false);
     EstimateSum sum(job.program->wait_s_between(0, job.program->move_count + 1), pace);
@@ -437,15 +433,15 @@ std::unique_ptr<fpga::Board> make_fpga(const FpgaUartSettings& f, std::uint64_t 
 class FpgaUartController final : public Controller {
 public:
     // `n` and `packet_count`: checked_packets().
-    FpgaUartController(const Scenario& s, const Job& job, MachinePins& pins, Numerators n, std::size_t packet_count)
+    FpgaUartController(const Scenario& s, const Job& job, MachinePins& pins, InitRegisters n, std::size_t packet_count)
         : m_s(s),
           m_f(s.settings<FpgaUartSettings>()),
           m_job(job),
-          m_numerators(n),
+          m_init_registers(n),
           m_packet_count(packet_count),
           m_cp2102("cp2102", m_f.serial.link),
-          m_packets(s, job, m_numerators, s.faults.any()),
-          m_sender("host", sender_config(s, m_f), m_cp2102, host::encode_init(m_numerators.x, m_numerators.y),
+          m_packets(s, job, m_init_registers, s.faults.any()),
+          m_sender("host", sender_config(s, m_f), m_cp2102, init_packet(m_init_registers, m_f),
                    m_packets),
           m_fpga(make_fpga(m_f, s.seed, [this] { return rx_quiet_until(); }, m_wires)),
           m_event_pins("event_pins", s.events, m_wires.estop, m_wires.lid_open),
@@ -453,9 +449,15 @@ public:
           // Every gap only for the detailed report and the plots (which keep the whole run anyway).
           m_dead_fold(s.detail || s.keep_run_input),
           m_executed(m_f.fpga.queue_depth > 0),
-          m_warnings(m_f) {
+          m_warnings(m_f),
+          m_rate_feed(s.detail) {
+        if (m_f.fpga.ramp != fpga::StepRamp::None) {
+            m_ramp = std::make_unique<RampCommanded>(m_f.fpga, m_init_registers, s.interpreter.start_mm,
+                                                     std::array<double, 2>{s.machine.x.steps_per_mm(),
+                                                                           s.machine.y.steps_per_mm()});
+        }
         const std::size_t check_bytes = m_f.serial.sender.check.crc ? host::kCrcBytes : 0;
-        m_cp2102.thin_tx_log(host::kInitPacketBytes + check_bytes,  // what the dead-time split reads
+        m_cp2102.thin_tx_log(init_packet(m_init_registers, m_f).size() + check_bytes,  // what the dead-time split reads
                              host::kMotionPacketBytes + check_bytes);
         m_fpga->rx(m_wires.uart_rx);
         m_cp2102.rxd(m_wires.uart_tx);
@@ -502,7 +504,7 @@ public:
     }
 
     [[nodiscard]] JobEstimate estimate() const override {
-        return fpga_uart::estimate(m_s, m_f, m_job, m_numerators, pace(m_s, m_f, m_packet_count));
+        return fpga_uart::estimate(m_s, m_f, m_job, m_init_registers, pace(m_s, m_f, m_packet_count));
     }
     // The dead-time split reads each piece's first and last STEP: handed to it as the stream measures the pieces,
     // and it folds each gap once final.
@@ -511,15 +513,19 @@ public:
             if (p.index != 0) m_dead_fold.add_piece(piece_steps(p));  // one per packet: not a move too short to step
         };
     }
+    void feed_started(MetricsFeed& feed) override {
+        if (m_ramp) feed.pending().commanded = m_ramp->trajectory(0);
+    }
     void slice_ended(TimePs now_ps, MetricsFeed* feed) override {
         if (feed == nullptr) return;
         m_executed.time_ended(*m_fpga, now_ps, m_packets, m_moves,
                               [&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); });
+        hand_over_ramp(*feed, now_ps);
         feed->fold(now_ps);
         if (split_dead_time()) m_dead_fold.fold(now_ps, false, *m_fpga, m_sender.packets(), m_cp2102);
         m_warnings.read(*m_fpga, m_packets.lines());
-        hand_over_read(m_executed, m_dead_fold, m_warnings, m_s.detail || m_s.faults.any(), *m_fpga, m_sender, m_cp2102,
-                       m_packets);
+        hand_over_read(m_executed, m_dead_fold, m_warnings, m_ramp.get(), m_s.detail || m_s.faults.any(), *m_fpga,
+                       m_sender, m_cp2102, m_packets);
     }
 
     [[nodiscard]] TimePs job_end_ps(TimePs stop_ps) const override {
@@ -528,11 +534,19 @@ public:
     void finish_feed(MetricsFeed& feed) override {
         m_executed.time_ended(*m_fpga, std::nullopt, m_packets, m_moves,
                               [&](metrics::MoveSpec m) { feed.add_piece(std::move(m)); });
+        hand_over_ramp(feed, kEndOfRun);
     }
     void finish_input(metrics::RunInput& in, bool streamed) override {
-        if (streamed) return;
+        if (streamed) {
+            if (m_ramp) in.rate_segments = m_rate_feed.take_kept();
+            return;
+        }
         m_executed.time_ended(*m_fpga, std::nullopt, m_packets, m_moves,
                               [&](metrics::MoveSpec m) { in.moves.push_back(std::move(m)); });
+        if (!m_ramp) return;
+        m_ramp->read(*m_fpga, kEndOfRun);
+        in.commanded = m_ramp->trajectory(kEndOfRun);
+        in.rate_segments = m_ramp->take_segments();
     }
     void measured(const metrics::RunMetrics& m) override {
         for (const metrics::MoveMetrics& p : m.pieces) m_dead_fold.add_piece(piece_steps(p));
@@ -544,6 +558,17 @@ public:
     void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override;
 
 private:
+    static constexpr TimePs kEndOfRun = std::numeric_limits<TimePs>::max();
+
+    // With the ramp: the moves step_gen has begun by now_ps, as the commanded trajectory (known to now_ps) and
+    // their steps' rate segments.
+    void hand_over_ramp(MetricsFeed& feed, TimePs now_ps) {
+        if (!m_ramp) return;
+        m_ramp->read(*m_fpga, now_ps);
+        m_rate_feed.hand_over(feed, m_ramp->take_segments());
+        feed.pending().commanded->t_end_ps = now_ps;
+    }
+
     // Each wire through its faults, drawn apart (line 0 to the FPGA, 1 from it) and timed by its sender's bit clock.
     void wire_faulty_lines() {
         const uart::LineFaultRates& rates = m_s.faults.uart;
@@ -576,7 +601,7 @@ private:
     const Scenario& m_s;
     const FpgaUartSettings& m_f;
     const Job& m_job;
-    Numerators m_numerators;
+    InitRegisters m_init_registers;
     std::size_t m_packet_count;
     Wires m_wires;
     uart::Cp2102 m_cp2102;
@@ -590,6 +615,8 @@ private:
     FpgaWarnings m_warnings;
     std::unique_ptr<uart::FaultyLine> m_to_fpga_line;
     std::unique_ptr<uart::FaultyLine> m_from_fpga_line;
+    RateSegmentFeed m_rate_feed;
+    std::unique_ptr<RampCommanded> m_ramp;  // with the ramp
     bool m_whole_logs = false;
 };
 
@@ -792,7 +819,7 @@ ArchRun Entry::run(const Scenario& s, const Job& job) {
     return run_on_machine(s, job, [](const Scenario& sc, const Job& j, MachinePins& pins) {
         const FpgaUartSettings& f = sc.settings<FpgaUartSettings>();
         check_steps_feeds(sc, j, f);
-        const Numerators n = numerators(sc, f);
+        const InitRegisters n = init_registers(sc, f);
         const std::size_t packet_count = count_packets(sc, j, n);
         check_fpga_rate(sc, f);
         return std::make_unique<FpgaUartController>(sc, j, pins, n, packet_count);

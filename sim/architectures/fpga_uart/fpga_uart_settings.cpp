@@ -111,6 +111,26 @@ void read_queue(KeyReader& r, FpgaUartSettings& s) {
     }
 }
 
+// Our option on seed 000 §7.2's trapezoidal ramps on the FPGA: step_gen's law in fpga/core/step_ramp.hpp.
+void read_ramp(KeyReader& r, FpgaUartSettings& s) {
+    s.fpga.ramp = r.get_choice("fpga.ramp", "none", {"none", "trapezoidal"},
+                               "step_gen's speed profile (seed 000 sec. 7.2 proposes ramps on the FPGA): none, the "
+                               "seed's, every step of a move at the packet's rate; trapezoidal, each move starts at "
+                               "fpga.ramp_start_mm_per_s, speeds up at the slower axis' "
+                               "machine.<axis>.max_accel_mm_per_s2 to the packet's rate and slows down to the start "
+                               "speed at its end, the host sending both in a 17-byte init packet") == "trapezoidal"
+                        ? fpga::StepRamp::Trapezoidal
+                        : fpga::StepRamp::None;
+    s.ramp_start_mm_per_s = r.get_float("fpga.ramp_start_mm_per_s", s.ramp_start_mm_per_s, 0.001, 1000.0,
+                                        "with fpga.ramp: the speed a move starts and ends at, mm/s (a stepper starts "
+                                        "without losing steps below its pull-in speed: cncsim motor-curve)");
+    if (s.fpga.ramp == fpga::StepRamp::None) return;
+    if (s.rtl.rtl) r.fail("fpga.ramp", "the ramp is in the event model only: fpga.model = \"event\"");
+    if (!s.fpga.init_packet_wired) {
+        r.fail("fpga.ramp", "the ramp's registers come in the init packet: it needs fpga.init_packet_wired = true");
+    }
+}
+
 // Our option on seed 000 §7.2's "e-stop and interlock inputs"; the scenario's [[events]] drive them.
 void read_safety_inputs(KeyReader& r, FpgaUartSettings& s) {
     s.fpga.estop_input = r.get_bool(
@@ -145,6 +165,7 @@ void read_fpga_uart_settings(KeyReader& r, const std::filesystem::path& base, Fp
     read_rtl_settings(r, base, "fpga", s.rtl);
     read_packet_check(r, s);
     read_queue(r, s);
+    read_ramp(r, s);
     read_safety_inputs(r, s);
 }
 

@@ -1,0 +1,132 @@
+#include "fpga/core/step_ramp.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace cnc::fpga {
+
+namespace {
+
+__extension__ typedef __int128 Wide;  // the accumulation of a stretch: up to 2^33 clocks squared times 2^32
+
+constexpr std::int64_t kUnbounded = std::numeric_limits<std::int64_t>::max();
+
+// The phase accumulator after clocks 0..n of a stretch whose velocity is v + slope i at clock i, before its wrap.
+Wide accumulated(std::uint64_t phase, std::uint64_t v, std::int64_t slope, std::int64_t n) {
+    const Wide k = n;
+    return Wide{phase} + (k + 1) * Wide{v} + Wide{slope} * (k * (k + 1) / 2);
+}
+
+// The first clock n in 0..last whose accumulation carries, or -1. The velocity stays above 0, so the accumulation
+// grows with n.
+std::int64_t first_carry(std::uint64_t phase, std::uint64_t v, std::int64_t slope, std::int64_t last) {
+    if (accumulated(phase, v, slope, last) < Wide{kPhaseOne}) return -1;
+    std::int64_t lo = 0;
+    std::int64_t hi = last;
+    while (lo < hi) {
+        const std::int64_t mid = lo + (hi - lo) / 2;
+        if (accumulated(phase, v, slope, mid) >= Wide{kPhaseOne}) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    return lo;
+}
+
+// The clock by which a velocity of at least v carries.
+std::int64_t carry_bound(std::uint64_t phase, std::uint64_t v) {
+    const std::uint64_t left = kPhaseOne - phase;
+    return static_cast<std::int64_t>((left + v - 1) / v) - 1;
+}
+
+}  // namespace
+
+std::uint64_t velocity_of_period(std::uint64_t period_cycles, std::uint64_t min_period_cycles) {
+    return kPhaseOne / std::max({period_cycles, min_period_cycles, std::uint64_t{1}});
+}
+
+RampRun::RampRun(const RampInputs& in)
+    : m_in(in),
+      // A start register of 0 still steps, at the slowest velocity the register holds.
+      m_start(std::max<std::uint64_t>(std::min(std::uint64_t{in.start_reg} << kStartShift, in.cruise), 1)),
+      m_phase(kPhaseOne - m_start),
+      m_velocity(m_start),
+      m_error(in.abs_dom / 2) {}
+
+std::uint64_t RampRun::decelerated(std::uint64_t v) const {
+    return v >= m_start + m_in.accel_reg ? v - m_in.accel_reg : m_start;
+}
+
+void RampRun::update_after_step(std::uint64_t v, bool clamp_clock) {
+    switch (m_state) {
+        case Phase::Accel:
+            if (2 * std::uint64_t{m_done} > m_in.abs_dom) {
+                m_state = Phase::Decel;
+                m_velocity = decelerated(v);
+            } else if (clamp_clock) {
+                m_state = Phase::Cruise;
+                m_ramp_steps = m_done;
+                m_velocity = m_in.cruise;
+            } else {
+                m_velocity = v + m_in.accel_reg;
+            }
+            return;
+        case Phase::Cruise:
+            if (m_in.abs_dom - m_done < m_ramp_steps) {
+                m_state = Phase::Decel;
+                m_velocity = decelerated(v);
+            }
+            return;
+        case Phase::Decel:
+            m_velocity = decelerated(v);
+            return;
+    }
+}
+
+bool RampRun::next(Step& out) {
+    if (m_done >= m_in.abs_dom) return false;
+    for (;;) {
+        // The stretch from m_clock on where the velocity changes by `slope` a clock: `length` clocks (then the
+        // acceleration reaches the cruise or the deceleration its floor) or unbounded.
+        std::int64_t slope = 0;
+        std::int64_t length = kUnbounded;
+        const std::int64_t accel = m_in.accel_reg;
+        if (m_state == Phase::Accel && (accel > 0 || m_velocity == m_in.cruise)) {
+            const std::uint64_t need = m_in.cruise - m_velocity;
+            slope = accel;
+            length = need == 0 ? 1 : static_cast<std::int64_t>((need + m_in.accel_reg - 1) / m_in.accel_reg);
+        } else if (m_state == Phase::Decel && accel > 0 && m_velocity > m_start) {
+            slope = -accel;
+            length = static_cast<std::int64_t>((m_velocity - m_start + m_in.accel_reg - 1) / m_in.accel_reg);
+        }
+        std::int64_t last = length - 1;
+        if (slope >= 0) last = std::min(last, carry_bound(m_phase, m_velocity));
+        const std::int64_t n = first_carry(m_phase, m_velocity, slope, last);
+        if (n < 0) {  // the stretch ends without a step
+            m_phase = static_cast<std::uint64_t>(accumulated(m_phase, m_velocity, slope, length - 1));
+            m_clock += length;
+            if (m_state == Phase::Accel) {
+                m_state = Phase::Cruise;
+                m_ramp_steps = m_done;
+                m_velocity = m_in.cruise;
+            } else {
+                m_velocity = m_start;
+            }
+            continue;
+        }
+        const auto v = static_cast<std::uint64_t>(static_cast<std::int64_t>(m_velocity) + slope * n);
+        m_phase = static_cast<std::uint64_t>(accumulated(m_phase, m_velocity, slope, n) - Wide{kPhaseOne});
+        out.clock = m_clock + n;
+        ++m_done;
+        m_error += m_in.abs_sub;
+        out.sub = m_error >= m_in.abs_dom;
+        if (out.sub) m_error -= m_in.abs_dom;
+        out.cruising = m_state == Phase::Cruise;
+        update_after_step(v, m_state == Phase::Accel && n == length - 1);
+        m_clock = out.clock + 1;
+        return true;
+    }
+}
+
+}  // namespace cnc::fpga

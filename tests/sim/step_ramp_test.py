@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+"""The FPGA's trapezoidal ramp on fpga-uart (fpga.ramp): usage CNCSIM SOURCE_DIR WORKDIR.
+
+The study of scenarios/improvements (the six-segment shape at 80 mm/s, F4800, rapids too, with the dynamic mechanics
+of seed 000's machine, its X carriage 3.8 kg):
+- the seed's step_gen, stepping every move at full rate from its first step, loses full steps on X;
+- with the ramp no axis loses a step, no STEP comes faster than the DRV8825's 250 kHz, and the tool ends on the
+  programmed point;
+- the ramp's cost is what constant acceleration predicts, computed here from the job file: each move's dominant axis
+  (the packet's feed is the dominant axis' feed, seed 000 §3.4.5) goes from 5 mm/s to its speed v and back at
+  1000 mm/s^2, which adds (v - 5)^2 / (1000 v) to the move; the motion time grows by that sum, within a step at the
+  start speed per move.
+"""
+import math
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from cncsim_report import args_and_workdir, check, run_report  # noqa: E402
+
+FEED_MM_PER_S = 80.0      # the job's F4800 and the scenario's rapid feed
+ACCEL_MM_PER_S2 = 1000.0  # machine.<axis>.max_accel_mm_per_s2's default
+START_MM_PER_S = 5.0      # fpga.ramp_start_mm_per_s's default
+STEPS_PER_MM = 160        # the default machine: 1.8 deg, 1/32, GT2 20T
+FULL_STEPS_PER_MM = 5     # its 200 full steps per 40 mm turn
+
+
+def predicted_cost_s(job):
+    """Sum over the job's G0/G1 moves of the two ramps' extra time on the dominant axis."""
+    at = {"X": 0.0, "Y": 0.0}
+    cost = 0.0
+    moves = 0
+    with open(job) as f:
+        for line in f:
+            code = line.split("(")[0]
+            if not re.match(r"\s*G[01]\b", code):
+                continue
+            to = dict(at)
+            for axis, value in re.findall(r"([XY])(-?[0-9.]+)", code):
+                to[axis] = float(value)
+            dx, dy = abs(to["X"] - at["X"]), abs(to["Y"] - at["Y"])
+            at = to
+            if dx == 0 and dy == 0:
+                continue
+            v = FEED_MM_PER_S * max(dx, dy) / math.hypot(dx, dy)
+            cost += (v - START_MM_PER_S) ** 2 / (ACCEL_MM_PER_S2 * v)
+            moves += 1
+    return cost, moves
+
+
+def lost(report):
+    mech = report["fpga-uart"]["mechanics"]
+    return mech["x"]["lost_full_steps"], mech["y"]["lost_full_steps"]
+
+
+def main():
+    cncsim, source, work = args_and_workdir()
+    study = os.path.join(source, "scenarios", "improvements", "ramp_80mm_s.toml")
+    ramp, _ = run_report(cncsim, study, work, "ramp")
+    seed, _ = run_report(cncsim, study, work, "seed", sets=['fpga.ramp="none"'])
+
+    seed_x, _ = lost(seed)
+    check(seed_x > 0, "the seed's step_gen lost no step on X at 80 mm/s")
+    check(lost(ramp) == (0, 0), "with the ramp X and Y lost %d and %d full steps" % lost(ramp))
+    for axis in ramp["metrics"]["axes"]:
+        rate = axis["driver_timing"]["rate"]
+        check(rate["violations"] == 0, "%s: %d STEP periods under the DRV8825's 4 us" % (axis["axis"],
+                                                                                            rate["violations"]))
+    # Measured against its own trapezoid (the commanded motion of a run with the ramp), each cruise keeps the
+    # packet's rate to the register's rounding, where uniform motion at F would make the ramps a rate error.
+    for axis in ramp["metrics"]["axes"]:
+        check(abs(axis["rate_error_worst_pct"]) < 0.1,
+              "%s: rate error %.4f %% in the cruise" % (axis["axis"], axis["rate_error_worst_pct"]))
+    executed = ramp["metrics"]["moves"]
+    for axis in ("x", "y"):
+        check(executed["steps_emitted"][axis] == executed["steps_commanded"][axis],
+              "with the ramp %s stepped %s for %s commanded" % (axis, executed["steps_emitted"][axis],
+                                                               executed["steps_commanded"][axis]))
+    # The carriage rests where friction stops it, microns from its last step: a full step lost is 200 um.
+    end_um = ramp["metrics"]["path"]["job_end_um"]
+    check(end_um < 1000.0 / FULL_STEPS_PER_MM / 2,
+          "with the ramp the tool ends %.1f um off the programmed point" % end_um)
+
+    cost, moves = predicted_cost_s(os.path.join(source, "scenarios", "jobs", "six_segment_f4800.nc"))
+    measured = ramp["metrics"]["job"]["motion_time_s"] - seed["metrics"]["job"]["motion_time_s"]
+    start_step_s = 1.0 / (START_MM_PER_S * STEPS_PER_MM)
+    check(abs(measured - cost) < moves * start_step_s,
+          "the ramps cost %.4f s of motion, constant acceleration predicts %.4f s" % (measured, cost))
+    print("80 mm/s six-segment: the seed loses %d full steps on X, the ramp none; the ramps cost %.3f s of motion "
+          "(predicted %.3f s for %d moves), job %.3f s against %.3f s; tool %.2f um off the end point"
+          % (seed_x, measured, cost, moves, ramp["metrics"]["job"]["job_time_s"], seed["metrics"]["job"]["job_time_s"],
+             end_um))
+
+
+if __name__ == "__main__":
+    main()

@@ -34,8 +34,9 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
       m_cfg(cfg),
       m_clock(clock_grid(cfg)),
       m_core(cfg.numerator_default, cfg.packet_crc, cfg.queue_depth == 0,
-             cfg.ramp == StepRamp::None ? std::nullopt
-                                        : std::optional<RampDefaults>({cfg.ramp_accel_default, cfg.ramp_start_default})),
+             cfg.ramp == StepRamp::None
+                 ? std::nullopt
+                 : std::optional<RampDefaults>({cfg.ramp_accel_default, cfg.ramp_start_default})),
       m_writer("writer") {
     SC_HAS_PROCESS(PacketDecoder);
     numerator_x.initialize(cfg.numerator_default);  // seed 000 §5.2.3 (Π.4) reset value

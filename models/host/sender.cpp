@@ -82,8 +82,7 @@ Sender::Reply Sender::wait_for_reply(int segment, TimePs deadline) {
 }
 
 void Sender::send_init() {
-    const std::vector<std::uint8_t> bytes = m_cfg.check.crc ? with_crc(m_init.data(), m_init.size())
-                                                            : m_init;
+    const std::vector<std::uint8_t> bytes = m_cfg.check.crc ? with_crc(m_init.data(), m_init.size()) : m_init;
     for (int send = 0;; ++send) {
         write(bytes.data(), bytes.size());
         if (!m_cfg.check.crc) {

@@ -101,8 +101,8 @@ TEST(RampRun, StepsOnTheClocksTheRegistersGiveClockByClock) {
         {12, 5, velocity(400), start_reg(4000), accel},     // turns round before the cruise
         {1, 0, velocity(400), start_reg(4000), accel},
         {2, 1, velocity(400), start_reg(4000), accel},
-        {50, 3, velocity(400), start_reg(4000), 0},         // no acceleration: all at the start speed
-        {50, 20, velocity(900), start_reg(400), accel},     // starts above the cruise: all at the cruise
+        {50, 3, velocity(400), start_reg(4000), 0},      // no acceleration: all at the start speed
+        {50, 20, velocity(900), start_reg(400), accel},  // starts above the cruise: all at the cruise
         {300, 299, velocity(250), start_reg(2500), accel * 7},
     };
     for (const RampInputs& in : cases) {

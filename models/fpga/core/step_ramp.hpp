@@ -27,11 +27,11 @@ inline constexpr std::uint64_t kPhaseOne = std::uint64_t{1} << kPhaseBits;  // o
 inline constexpr int kStartShift = kPhaseBits - 32;                         // the start register's place
 
 struct RampInputs {
-    std::uint32_t abs_dom = 0;      // steps of the axis with more (X on a tie)
-    std::uint32_t abs_sub = 0;      // steps of the other
-    std::uint64_t cruise = 0;       // velocity at the packet's feed, 2^-48 steps per clock
-    std::uint32_t start_reg = 0;    // the init packet's start speed, 2^-32 steps per clock
-    std::uint32_t accel_reg = 0;    // the init packet's acceleration, 2^-48 steps per clock^2
+    std::uint32_t abs_dom = 0;    // steps of the axis with more (X on a tie)
+    std::uint32_t abs_sub = 0;    // steps of the other
+    std::uint64_t cruise = 0;     // velocity at the packet's feed, 2^-48 steps per clock
+    std::uint32_t start_reg = 0;  // the init packet's start speed, 2^-32 steps per clock
+    std::uint32_t accel_reg = 0;  // the init packet's acceleration, 2^-48 steps per clock^2
 };
 
 // The velocity of a dominant-axis period: one step every `period_cycles` clocks, held to one step every

@@ -118,7 +118,6 @@ StepSchedule::StepSchedule(const MoveInputs& in, bool dir_x_before, bool dir_y_b
     m_y = AxisPulses(abs_y, m_periods.y_cycles, cfg.pulse_high_cycles, exit_edge);
 }
 
-// The ramp runs the move once here for its length (RUN ends with the last step's fall), and once for its edges.
 RampInputs ramp_inputs(const MoveInputs& in, const FpgaConfig& cfg) {
     const std::uint32_t abs_x = abs_steps(in.steps_x);
     const std::uint32_t abs_y = abs_steps(in.steps_y);
@@ -129,6 +128,7 @@ RampInputs ramp_inputs(const MoveInputs& in, const FpgaConfig& cfg) {
             velocity_of_period(period, 2 * std::uint64_t{cfg.pulse_high_cycles}), in.ramp_start, in.ramp_accel};
 }
 
+// The ramp runs the move once here for its length (RUN ends with the last step's fall), and once for its edges.
 void StepSchedule::start_ramp(const MoveInputs& in, std::uint32_t abs_x, std::uint32_t abs_y, const FpgaConfig& cfg) {
     const bool x_dominant = abs_x >= abs_y;
     const RampInputs ramp = ramp_inputs(in, cfg);

@@ -66,7 +66,10 @@ class SentPackets : public host::PacketSource {
 public:
     // `keep_fields`: every packet's fields and line stay for the fault tally.
     SentPackets(const Scenario& s, const Job& job, InitRegisters n, bool keep_fields)
-        : m_settings(s.settings<FpgaUartSettings>()), m_segments(s, job), m_init_registers(n), m_keep_fields(keep_fields) {}
+        : m_settings(s.settings<FpgaUartSettings>()),
+          m_segments(s, job),
+          m_init_registers(n),
+          m_keep_fields(keep_fields) {}
 
     std::optional<host::OutgoingPacket> next() override {
         std::optional<MadeSegment> made = m_segments.next();
@@ -331,7 +334,9 @@ ArchPace pace(const Scenario& s, const FpgaUartSettings& f, std::size_t packets)
         // Each move starts and ends at the start speed: up and down at the slower axis' acceleration add
         // (v - v0)^2 / (a v) to length / v.
         const double accel = std::min(s.machine.x.limits.max_accel_mm_per_s2, s.machine.y.limits.max_accel_mm_per_s2);
-        p.ramp_s = [accel, v0 = f.ramp_start_mm_per_s](double v) { return v > v0 ? (v - v0) * (v - v0) / (accel * v) : 0.0; };
+        p.ramp_s = [accel, v0 = f.ramp_start_mm_per_s](double v) {
+            return v > v0 ? (v - v0) * (v - v0) / (accel * v) : 0.0;
+        };
     }
     return p;
 }
@@ -363,7 +368,8 @@ host::Program packet_moves(const std::vector<host::MotionSegment>& rows, InitReg
 }
 
 // The job's estimate: a G-code job's moves read from the file once more (the summary has none).
-JobEstimate estimate(const Scenario& s, const FpgaUartSettings& f, const Job& job, InitRegisters n, const ArchPace& pace) {
+JobEstimate estimate(const Scenario& s, const FpgaUartSettings& f, const Job& job, InitRegisters n,
+                     const ArchPace& pace) {
     if (!job.program) return estimate_job(packet_moves(job.steps_file, n, s, f), pace);
     host::GcodeStream moves(s.job_path, s.interpreter, false);
     EstimateSum sum(job.program->wait_s_between(0, job.program->move_count + 1), pace);
@@ -441,8 +447,7 @@ public:
           m_packet_count(packet_count),
           m_cp2102("cp2102", m_f.serial.link),
           m_packets(s, job, m_init_registers, s.faults.any()),
-          m_sender("host", sender_config(s, m_f), m_cp2102, init_packet(m_init_registers, m_f),
-                   m_packets),
+          m_sender("host", sender_config(s, m_f), m_cp2102, init_packet(m_init_registers, m_f), m_packets),
           m_fpga(make_fpga(m_f, s.seed, [this] { return rx_quiet_until(); }, m_wires)),
           m_event_pins("event_pins", s.events, m_wires.estop, m_wires.lid_open),
           m_moves(s.machine, s.interpreter.start_mm),
@@ -452,9 +457,9 @@ public:
           m_warnings(m_f),
           m_rate_feed(s.detail) {
         if (m_f.fpga.ramp != fpga::StepRamp::None) {
-            m_ramp = std::make_unique<RampCommanded>(m_f.fpga, m_init_registers, s.interpreter.start_mm,
-                                                     std::array<double, 2>{s.machine.x.steps_per_mm(),
-                                                                           s.machine.y.steps_per_mm()});
+            m_ramp = std::make_unique<RampCommanded>(
+                m_f.fpga, m_init_registers, s.interpreter.start_mm,
+                std::array<double, 2>{s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()});
         }
         const std::size_t check_bytes = m_f.serial.sender.check.crc ? host::kCrcBytes : 0;
         m_cp2102.thin_tx_log(init_packet(m_init_registers, m_f).size() + check_bytes,  // what the dead-time split reads

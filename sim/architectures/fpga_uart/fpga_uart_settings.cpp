@@ -119,8 +119,8 @@ void read_ramp(KeyReader& r, FpgaUartSettings& s) {
                                "fpga.ramp_start_mm_per_s, speeds up at the slower axis' "
                                "machine.<axis>.max_accel_mm_per_s2 to the packet's rate and slows down to the start "
                                "speed at its end, the host sending both in a 17-byte init packet") == "trapezoidal"
-                        ? fpga::StepRamp::Trapezoidal
-                        : fpga::StepRamp::None;
+                      ? fpga::StepRamp::Trapezoidal
+                      : fpga::StepRamp::None;
     s.ramp_start_mm_per_s = r.get_float("fpga.ramp_start_mm_per_s", s.ramp_start_mm_per_s, 0.001, 1000.0,
                                         "with fpga.ramp: the speed a move starts and ends at, mm/s (a stepper starts "
                                         "without losing steps below its pull-in speed: cncsim motor-curve)");

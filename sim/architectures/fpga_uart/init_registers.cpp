@@ -40,9 +40,9 @@ void ramp_registers(const Scenario& s, const FpgaUartSettings& f, InitRegisters&
     const double accel_steps_per_s2 = x_slower ? m.x.limits.max_accel_mm_per_s2 * m.x.steps_per_mm()
                                                : m.y.limits.max_accel_mm_per_s2 * m.y.steps_per_mm();
     const double clk_hz = f.fpga.clk_hz;
-    r.ramp_accel = to_register(accel_steps_per_s2 * std::ldexp(1.0, fpga::kPhaseBits) / (clk_hz * clk_hz), s,
-                               x_slower ? "machine.x.max_accel_mm_per_s2" : "machine.y.max_accel_mm_per_s2",
-                               "acceleration");
+    r.ramp_accel =
+        to_register(accel_steps_per_s2 * std::ldexp(1.0, fpga::kPhaseBits) / (clk_hz * clk_hz), s,
+                    x_slower ? "machine.x.max_accel_mm_per_s2" : "machine.y.max_accel_mm_per_s2", "acceleration");
     const double start_steps_per_s = f.ramp_start_mm_per_s * std::min(m.x.steps_per_mm(), m.y.steps_per_mm());
     r.ramp_start = to_register(start_steps_per_s * std::ldexp(1.0, fpga::kPhaseBits - fpga::kStartShift) / clk_hz, s,
                                "fpga.ramp_start_mm_per_s", "start speed");

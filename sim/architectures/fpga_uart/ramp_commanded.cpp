@@ -21,8 +21,8 @@ RampProfile::RampProfile(double steps, double start_steps_per_s, double accel_st
     : m_steps(steps), m_start(std::min(start_steps_per_s, cruise_steps_per_s)), m_accel(accel_steps_per_s2) {
     // Between the first step (at 1/2) and the last (at N - 1/2) the two ramps and the cruise cover N - 1 steps.
     const double between = std::max(steps - 1.0, 0.0);
-    const double full_ramp = m_accel > 0.0 ? (cruise_steps_per_s * cruise_steps_per_s - m_start * m_start) / (2 * m_accel)
-                                           : 0.0;
+    const double full_ramp =
+        m_accel > 0.0 ? (cruise_steps_per_s * cruise_steps_per_s - m_start * m_start) / (2 * m_accel) : 0.0;
     if (m_accel <= 0.0) {
         m_peak = m_start;
         m_ramp_steps = 0.0;
@@ -126,8 +126,8 @@ void RampCommanded::add(const fpga::PacketRecord& r, const ClockGrid& clock) {
 }
 
 metrics::CommandedState RampCommanded::Moves::at(TimePs t_ps) const {
-    const auto after = std::upper_bound(moves.begin(), moves.end(), t_ps,
-                                        [](TimePs t, const Move& m) { return t < m.t0_ps; });
+    const auto after =
+        std::upper_bound(moves.begin(), moves.end(), t_ps, [](TimePs t, const Move& m) { return t < m.t0_ps; });
     if (after == moves.begin()) return {origin_mm, {}};
     // The last move begun by t_ps ends where its travel takes it; each begun move still under way by then (they
     // overlap only in their last half step) has the rest of its travel still to go.

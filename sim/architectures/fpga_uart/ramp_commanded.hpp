@@ -35,11 +35,11 @@ public:
 
 private:
     double m_steps;
-    double m_start;        // steps/s
-    double m_accel;        // steps/s^2
-    double m_peak;         // steps/s
-    double m_ramp_s;       // each ramp's time
-    double m_ramp_steps;   // each ramp's distance
+    double m_start;       // steps/s
+    double m_accel;       // steps/s^2
+    double m_peak;        // steps/s
+    double m_ramp_s;      // each ramp's time
+    double m_ramp_steps;  // each ramp's distance
     double m_cruise_s;
 };
 

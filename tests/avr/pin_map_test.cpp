@@ -72,3 +72,13 @@ TEST(AvrPinMap, RejectsUnknownSignalsAndClashes) {
     EXPECT_NE(error_of("step_x=PD5,step_x=PD4").find("mapped twice"), std::string::npos);
     EXPECT_NE(error_of("step_x=PB1").find("'head' and 'step_x' are both on PB1"), std::string::npos);
 }
+
+// grbl's board: one stepper-disable pin for both drivers (cpu_map.h STEPPERS_DISABLE_BIT 0), so the two enables may
+// share a pin; any other pair still may not.
+TEST(AvrPinMap, GrblsMapSharesOneEnablePin) {
+    const PinMap m = grbl_pin_map();
+    EXPECT_EQ(m.to_string(), "step_x=PD2,dir_x=PD5,en_x=PB0,step_y=PD3,dir_y=PD6,en_y=PB0,head=PB3");
+    EXPECT_NO_THROW(validate(m, "grbl"));
+    EXPECT_NO_THROW((void)parse_pin_map("en_x=PC0,en_y=PC0", "s.toml: avr.pins"));
+    EXPECT_NE(error_of("en_x=PB0,dir_y=PB0").find("'dir_y' and 'en_x' are both on PB0"), std::string::npos);
+}

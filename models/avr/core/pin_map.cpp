@@ -72,6 +72,13 @@ PinMap timer1_y_pin_map() {
     return m;
 }
 
+PinMap grbl_pin_map() {
+    PinMap m;
+    m.pins = {{"step_x", {'D', 2}}, {"dir_x", {'D', 5}}, {"en_x", {'B', 0}}, {"step_y", {'D', 3}},
+              {"dir_y", {'D', 6}},  {"en_y", {'B', 0}},  {"head", {'B', 3}}};
+    return m;
+}
+
 PinMap parse_pin_map(std::string_view text, const std::string& where) {
     return parse_pin_map(text, where, default_pin_map());
 }
@@ -104,7 +111,7 @@ void validate(const PinMap& map, const std::string& where) {
     for (const auto& [signal, pin] : map.pins) (void)parse_pin(pin.name(), where);
     for (const auto& [a, pa] : map.pins)
         for (const auto& [b, pb] : map.pins)
-            if (a < b && pa == pb)
+            if (a < b && pa == pb && !(a == "en_x" && b == "en_y"))
                 throw BadInput(where, "signals '" + a + "' and '" + b + "' are both on " + pa.name());
 }
 

@@ -43,11 +43,16 @@ struct PinMap {
 // (OC2A's pin, Timer2's), the rest as default_pin_map().
 [[nodiscard]] PinMap timer1_y_pin_map();
 
-// Checks a map built in code: all seven signals, each on an existing pin, no pin twice. Throws BadInput.
+// grbl 1.1 on the ATmega328P (its cpu_map.h, the Arduino Uno pin-out): STEP X/Y PD2/PD3, DIR X/Y PD5/PD6, one
+// stepper-disable pin PB0 for both drivers, the laser on the spindle PWM pin OC2A = PB3.
+[[nodiscard]] PinMap grbl_pin_map();
+
+// Checks a map built in code: all seven signals, each on an existing pin, no pin twice but for en_x and en_y (one
+// enable line to both drivers' nENBL, as grbl wires them). Throws BadInput.
 void validate(const PinMap& map, const std::string& where);
 
 // Overrides the default map with "signal=pin" entries separated by commas. Unknown signals, bad pins, a signal
-// named twice or two signals on one pin throw BadInput(where, ...).
+// named twice or two signals on one pin (but en_x and en_y) throw BadInput(where, ...).
 [[nodiscard]] PinMap parse_pin_map(std::string_view text, const std::string& where);
 // The same over another default map (timer1_y_pin_map()).
 [[nodiscard]] PinMap parse_pin_map(std::string_view text, const std::string& where, PinMap defaults);

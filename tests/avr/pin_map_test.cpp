@@ -80,5 +80,5 @@ TEST(AvrPinMap, GrblsMapSharesOneEnablePin) {
     EXPECT_EQ(m.to_string(), "step_x=PD2,dir_x=PD5,en_x=PB0,step_y=PD3,dir_y=PD6,en_y=PB0,head=PB3");
     EXPECT_NO_THROW(validate(m, "grbl"));
     EXPECT_NO_THROW((void)parse_pin_map("en_x=PC0,en_y=PC0", "s.toml: avr.pins"));
-    EXPECT_NE(error_of("en_x=PB0,dir_y=PB0").find("'dir_y' and 'en_x' are both on PB0"), std::string::npos);
+    EXPECT_NE(error_of("en_x=PC1,dir_y=PC1").find("'dir_y' and 'en_x' are both on PC1"), std::string::npos);
 }

@@ -1,10 +1,12 @@
-# add_avr_firmware(NAME MCU <mcu> F_CPU <hz> SOURCES <c files> [DEFINES <NAME=value>...] [DEPENDS <headers>...])
+# add_avr_firmware(NAME MCU <mcu> F_CPU <hz> SOURCES <c files> [DEFINES <NAME=value>...] [DEPENDS <headers>...] [HEX])
 # Cross-compiles an AVR firmware with avr-gcc into ${CMAKE_CURRENT_BINARY_DIR}/NAME.elf, built
 # by the target NAME. The ELF path is the target property AVR_ELF: use $<TARGET_PROPERTY:NAME,AVR_ELF> (tests do
 # so in a compile definition). The firmware gets F_CPU and CNC_MCU_NAME (the MCU name as a string) defined, for
 # simavr's .mmcu section: AVR_MCU(F_CPU, CNC_MCU_NAME); the simavr-avr link flags place that section outside
-# the flash image.
+# the flash image. HEX also writes NAME.hex, the flash as Intel HEX (avr-objcopy -O ihex, what grbl's Makefile and
+# the Arduino IDE produce): its path is the target property AVR_HEX.
 find_program(AVR_GCC avr-gcc)
+find_program(AVR_OBJCOPY avr-objcopy)
 if(NOT AVR_GCC)
   message(FATAL_ERROR "avr-gcc not found: apt-get install gcc-avr avr-libc binutils-avr")
 endif()
@@ -18,7 +20,7 @@ else()  # the same flags as /usr/share/pkgconfig/simavr-avr.pc (simavr 1.6)
 endif()
 
 function(add_avr_firmware NAME)
-  cmake_parse_arguments(FW "" "MCU;F_CPU" "SOURCES;DEFINES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(FW "HEX" "MCU;F_CPU" "SOURCES;DEFINES;DEPENDS" ${ARGN})
   if(NOT FW_MCU OR NOT FW_F_CPU OR NOT FW_SOURCES)
     message(FATAL_ERROR "add_avr_firmware(${NAME}): MCU, F_CPU and SOURCES are required")
   endif()
@@ -38,6 +40,17 @@ function(add_avr_firmware NAME)
     COMMAND ${AVR_GCC} -mmcu=${FW_MCU} -DF_CPU=${FW_F_CPU}UL "-DCNC_MCU_NAME=\"${FW_MCU}\""
             -Os -g -Wall -Wextra -std=gnu11 ${CNC_AVR_FW_CFLAGS} ${FW_DEFINES} ${srcs} -o ${elf} ${CNC_AVR_FW_LDFLAGS}
     DEPENDS ${srcs} ${deps} VERBATIM COMMENT "avr-gcc ${NAME}.elf (${FW_MCU})")
-  add_custom_target(${NAME} ALL DEPENDS ${elf})
+  set(outputs ${elf})
+  if(FW_HEX)
+    set(hex ${CMAKE_CURRENT_BINARY_DIR}/${NAME}.hex)
+    add_custom_command(OUTPUT ${hex}
+      COMMAND ${AVR_OBJCOPY} -O ihex -j .text -j .data ${elf} ${hex}
+      DEPENDS ${elf} VERBATIM COMMENT "avr-objcopy ${NAME}.hex")
+    list(APPEND outputs ${hex})
+  endif()
+  add_custom_target(${NAME} ALL DEPENDS ${outputs})
   set_target_properties(${NAME} PROPERTIES AVR_ELF ${elf})
+  if(FW_HEX)
+    set_target_properties(${NAME} PROPERTIES AVR_HEX ${hex})
+  endif()
 endfunction()

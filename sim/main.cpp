@@ -162,11 +162,13 @@ int cmd_analyze(const std::string& vcd_path, const std::vector<cnc::metrics::Axi
 }
 
 // The architectures `compare` can put side by side: those that run the scenario's job (`shown`: and that it shows
-// unless asked, all but the baseline).
+// unless asked: not the baseline, nor one that runs the user's own firmware).
 std::string job_architectures(const std::string& separator = ", ", bool shown = false) {
     std::string text;
     for (const cnc::sim::Architecture* a : cnc::sim::architectures()) {
-        if (a->job_use().runs_job && !(shown && a->baseline())) text += (text.empty() ? "" : separator) + a->name();
+        if (a->job_use().runs_job && !(shown && (a->baseline() || !a->compared_by_default()))) {
+            text += (text.empty() ? "" : separator) + a->name();
+        }
     }
     return text;
 }

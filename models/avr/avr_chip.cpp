@@ -9,6 +9,7 @@
 
 #include "avr/atmega328p_regs.hpp"
 #include "avr/core/elf_check.hpp"
+#include "avr/core/intel_hex.hpp"
 #include "common/bad_input.hpp"
 
 #include <avr_eeprom.h>
@@ -85,13 +86,21 @@ AvrChip::AvrChip(const AvrCoreConfig& cfg)
     if (cfg.f_cpu_hz == 0) throw BadInput(cfg.where, "the AVR clock frequency must be above 0 Hz");
     validate(cfg.pins, cfg.where);
     for (std::size_t i = 0; i < kPinSignals.size(); ++i) m_line_pins[i] = cfg.pins.at(kPinSignals[i]);
-    (void)check_avr_elf(cfg.firmware_elf, cfg.mcu, cfg.f_cpu_hz, cfg.where);
 
     avr_global_logger_set(quiet_logger);
     elf_firmware_t fw;
     std::memset(&fw, 0, sizeof fw);
-    if (elf_read_firmware(cfg.firmware_elf.c_str(), &fw) != 0)
-        throw BadInput(cfg.where, "libsimavr could not load the firmware ELF '" + cfg.firmware_elf + "'");
+    if (is_intel_hex(cfg.firmware_elf)) {
+        // A HEX image says nothing of its MCU or clock: they are the configuration's.
+        std::vector<std::uint8_t> image = load_intel_hex(cfg.firmware_elf, m_map.flash_bytes, cfg.where);
+        fw.flash = static_cast<std::uint8_t*>(std::malloc(image.size()));
+        std::memcpy(fw.flash, image.data(), image.size());
+        fw.flashsize = static_cast<std::uint32_t>(image.size());
+    } else {
+        (void)check_avr_elf(cfg.firmware_elf, cfg.mcu, cfg.f_cpu_hz, cfg.where);
+        if (elf_read_firmware(cfg.firmware_elf.c_str(), &fw) != 0)
+            throw BadInput(cfg.where, "libsimavr could not load the firmware ELF '" + cfg.firmware_elf + "'");
+    }
     m_avr = avr_make_mcu_by_name(cfg.mcu.c_str());
     if (m_avr == nullptr) throw BadInput(cfg.where, "libsimavr has no MCU '" + cfg.mcu + "'");
     avr_init(m_avr);

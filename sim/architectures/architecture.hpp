@@ -55,6 +55,9 @@ public:
     // The reference the others are measured against: `compare` runs it with every comparison (for the rows that
     // measure the others over it) and shows it as a column only when asked for.
     [[nodiscard]] virtual bool baseline() const { return false; }
+    // `compare` shows it unless --arch says otherwise; false for one that runs what the user gives it (a firmware),
+    // which is a column only when --arch names it.
+    [[nodiscard]] virtual bool compared_by_default() const { return true; }
 
     // Reads its own keys (registering their documentation), given the scenario's common keys read before; `base`
     // resolves relative paths. Every architecture's reader runs for every scenario, so that `cncsim keys` lists

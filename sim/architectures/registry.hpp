@@ -4,6 +4,7 @@
 #pragma once
 #include "architectures/atmega/atmega.hpp"
 #include "architectures/fpga_uart/fpga_uart.hpp"
+#include "architectures/grbl/grbl.hpp"
 #include "architectures/ideal/ideal.hpp"
 #include "architectures/lathe_sync/lathe_sync.hpp"
 #include "architectures/spi_fpga/spi_fpga.hpp"
@@ -13,6 +14,7 @@ namespace cnc::sim {
 template <typename... Entries>
 struct EntryList {};
 
-using Registry = EntryList<fpga_uart::Entry, atmega::Entry, spi_fpga::Entry, lathe_sync::Entry, ideal::Entry>;
+using Registry =
+    EntryList<fpga_uart::Entry, atmega::Entry, spi_fpga::Entry, lathe_sync::Entry, grbl::Entry, ideal::Entry>;
 
 }  // namespace cnc::sim

@@ -1,12 +1,10 @@
 // Our grbl-protocol test firmware on the ATmega328P model, streamed to by the grbl sender through the CP2102: the
-// square's steps on grbl's pins, the receive-buffer window read off the MCU's own USART log (not the sender's
-// count), send-response's one line at a time, and an unsupported line answered with its error.
+// receive-buffer window read off the MCU's own USART log (not the sender's count), send-response's one line at a
+// time, and an unsupported line answered with its error. (The square's steps: tests/grbl, through the architecture.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,8 +20,8 @@ namespace {
 using host::grbl::Protocol;
 using host::grbl::SendLine;
 
-// The machine of the other architectures' square: 1.8 deg, 1/32, GT2 20T: 160 steps/mm; 50 mm/s; laser mode.
-std::vector<SendLine> square_machine_settings() {
+// The settings of a machine at 160 steps/mm (1.8 deg, 1/32, GT2 20T), 50 mm/s, in laser mode.
+std::vector<SendLine> machine_160_steps_per_mm() {
     std::vector<SendLine> out;
     for (const char* s : {"$32=1", "$100=160.000", "$101=160.000", "$110=3000.000", "$111=3000.000"}) {
         out.push_back({s, "test"});
@@ -31,19 +29,12 @@ std::vector<SendLine> square_machine_settings() {
     return out;
 }
 
-std::string file_text(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 struct GrblBench {
     GrblBench(std::vector<SendLine> job, Protocol protocol, bool strict, TimePs status_interval_ps)
         : bench(grbl_config()),
           cp("cp", uart::Cp2102Config{}),
           sender("sender", sender_config(status_interval_ps), cp,
-                 host::grbl::Stream({protocol, 128, strict}, square_machine_settings(), std::move(job))) {
+                 host::grbl::Stream({protocol, 128, strict}, machine_160_steps_per_mm(), std::move(job))) {
         cp.txd(bench.rxd);
         cp.rxd(*bench.signals[kTxdLine]);
     }
@@ -116,21 +107,6 @@ std::vector<SendLine> zigzag_job(int lines) {
                        "zigzag.nc:" + std::to_string(i + 3)});
     }
     return out;
-}
-
-TEST(GrblProtocol, TheSquareStepsAsOnTheOtherArchitectures) {
-    GrblBench g(host::grbl::lines_to_send(file_text(CNC_SQUARE_JOB), "square_20mm.nc"), Protocol::CharacterCounting,
-                true, 200 * kPsPerMs);
-    g.run(30 * kPsPerSec);
-    ASSERT_FALSE(g.sender.failure()) << *g.sender.failure();
-    ASSERT_TRUE(g.sender.finished());
-    EXPECT_EQ(g.sender.stream().banner(), "Grbl 1.1 cncsim-test ['$' for help]");
-    EXPECT_EQ(g.sender.stream().last_status().rfind("<Idle|MPos:0.000,0.000,0.000", 0), 0U)
-        << g.sender.stream().last_status();
-    // 10 + 20 + 20 + 10 mm on each axis at 160 steps/mm.
-    EXPECT_EQ(g.driver_steps("step_x"), 9600U);
-    EXPECT_EQ(g.driver_steps("step_y"), 9600U);
-    EXPECT_LE(g.max_unanswered_bytes(), 127U);
 }
 
 TEST(GrblProtocol, CharacterCountingKeepsTheReceiveBufferFullButNeverOver) {

@@ -37,6 +37,8 @@ TEST(GrblLines, StripsCommentsBlanksAndCaseAsStreamPyDoes) {
 TEST(GrblStream, NothingIsSentBeforeTheStartUpMessage) {
     Stream s({}, {}, job_of({"G0X1"}));
     EXPECT_FALSE(s.next_write());
+    s.received("error:7");  // grbl 1.1 on a blank EEPROM, before its start-up message
+    EXPECT_EQ(s.phase(), Phase::Banner);
     s.received("");
     s.received("Grbl 1.1h ['$' for help]");
     EXPECT_EQ(s.next_write(), std::optional<std::string>("G0X1\n"));
@@ -95,6 +97,8 @@ TEST(GrblStream, ASettingGrblRefusesFailsNamingIt) {
     s.received("error:3");
     EXPECT_EQ(s.phase(), Phase::Failed);
     EXPECT_EQ(s.failure(), "grbl answered error:3 to the setting $999=1 (scenario.toml:7: grbl.settings)");
+    ASSERT_TRUE(s.refused_setting());
+    EXPECT_EQ(s.refused_setting()->line.text, "$999=1");
 }
 
 TEST(GrblStream, AnErrorNamesItsLineStrictStopsLenientGoesOn) {
@@ -132,14 +136,17 @@ TEST(GrblSettings, TheMachineGivesStepsRatesAndAccelerations) {
     m.y.microsteps = 32;
     m.x.limits.max_velocity_mm_per_s = 50.0;
     m.y.limits.max_accel_mm_per_s2 = 800.0;
-    const std::vector<SendLine> lines = machine_settings(m, true, {"$0=5", "$110=2000"}, "s.toml: grbl.settings");
+    const std::vector<SendLine> lines =
+        machine_settings(m, true, {"$0=5", "$110=2000"}, "s.toml: grbl.settings", "s.toml");
     std::vector<std::string> texts;
     for (const SendLine& l : lines) texts.push_back(l.text);
     const std::vector<std::string> expected{"$0=5",      "$32=1",         "$100=160.000",  "$101=160.000",
                                             "$110=2000", "$111=6000.000", "$120=1000.000", "$121=800.000"};
     EXPECT_EQ(texts, expected);
-    EXPECT_THROW((void)machine_settings(m, false, {"$x=1"}, "s.toml: grbl.settings"), BadInput);
-    EXPECT_THROW((void)machine_settings(m, false, {"$10"}, "s.toml: grbl.settings"), BadInput);
+    EXPECT_EQ(lines[2].where, "s.toml: machine.x steps per mm");
+    EXPECT_EQ(lines[0].where, "s.toml: grbl.settings");
+    EXPECT_THROW((void)machine_settings(m, false, {"$x=1"}, "s.toml: grbl.settings", "s.toml"), BadInput);
+    EXPECT_THROW((void)machine_settings(m, false, {"$10"}, "s.toml: grbl.settings", "s.toml"), BadInput);
 }
 
 }  // namespace

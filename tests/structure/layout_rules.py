@@ -7,7 +7,7 @@
 3. No source file under sim/ outside the registry (sim/architectures/registry.hpp) and the architectures' own folders
    (sim/architectures/<name>/) spells an architecture's name: shared code asks the Architecture interface instead.
    The names come from `cncsim keys` (the allowed values of scenario.architecture); a name that is also a plain word
-   (a carriage model is "ideal" too) counts only as a quoted string.
+   (a carriage model is "ideal" too, grbl a firmware) counts only as a quoted string.
 
 Usage: layout_rules.py CNCSIM SOURCE_DIR LINK_CLOSURE_FILE
 """
@@ -21,8 +21,8 @@ SYSTEMC = ("systemc", "systemc.h", "tlm", "tlm.h")
 # Where quoted includes resolve: the source roots the build's include paths name.
 ROOTS = ("sim", "models")
 # Names that are plain words too, counted only as quoted strings; with the files where the quoted word is another key's
-# value (mechanics.model = "ideal" is a carriage model).
-WORD_NAMES = {"ideal": {os.path.join("sim", "scenario", "mechanics_settings.cpp")}}
+# value (mechanics.model = "ideal" is a carriage model). grbl is a firmware before it is an architecture.
+WORD_NAMES = {"ideal": {os.path.join("sim", "scenario", "mechanics_settings.cpp")}, "grbl": set()}
 
 
 def resolve(source, path, including_dir):

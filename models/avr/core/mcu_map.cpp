@@ -16,6 +16,7 @@ McuMap make_328p() {
     McuMap m;
     m.mcu = Mcu::Atmega328p;
     m.name = "atmega328p";
+    m.flash_bytes = 32 * 1024;  // datasheet §1: 32 KB in-system programmable flash
     m.ports = {{'B', 0x23}, {'C', 0x26}, {'D', 0x29}};
     // OC0A PD6, OC0B PD5, OC1A PB1, OC1B PB2, OC2A PB3, OC2B PD3.
     m.compare_outputs = {{'D', 6, 0, Channel::A}, {'D', 5, 0, Channel::B}, {'B', 1, 1, Channel::A},
@@ -41,6 +42,7 @@ McuMap make_16() {
     McuMap m;
     m.mcu = Mcu::Atmega16;
     m.name = "atmega16";
+    m.flash_bytes = 16 * 1024;  // ATmega16 datasheet, features: 16 KB in-system programmable flash
     m.ports = {{'A', 0x39}, {'B', 0x36}, {'C', 0x33}, {'D', 0x30}};
     // OC0 PB3, OC1A PD5, OC1B PD4, OC2 PD7 (one compare unit on Timer0 and Timer2: channel A here).
     m.compare_outputs = {

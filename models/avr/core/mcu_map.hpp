@@ -46,6 +46,7 @@ struct TimerRegs {
 struct McuMap {
     Mcu mcu = Mcu::Atmega328p;
     const char* name = "";  // as avr-gcc's -mmcu and simavr's core name
+    std::size_t flash_bytes = 0;
     std::vector<PortAddr> ports;
     std::vector<CompareOutputPin> compare_outputs;
     // Vector number of each timer flag (0: the timer has no such flag).

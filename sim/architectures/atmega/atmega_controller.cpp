@@ -13,8 +13,8 @@
 #include "architectures/atmega/atmega_report.hpp"
 #include "architectures/atmega/atmega_settings.hpp"
 #include "architectures/atmega/chord_gaps.hpp"
-#include "architectures/atmega/firmware_usart.hpp"
 #include "architectures/atmega/link_bytes.hpp"
+#include "architectures/avr_board/avr_board.hpp"
 #include "architectures/serial_host/link_checks.hpp"
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
@@ -23,6 +23,7 @@
 #include "run/controller.hpp"
 #include "run/machine_run.hpp"
 #include "run/moves.hpp"
+#include "run/windowed_moves.hpp"
 #include "uart/core/line_receiver.hpp"
 #include "uart/cp2102.hpp"
 
@@ -43,21 +44,14 @@ struct Wires {
 };
 
 std::string firmware_path(const AtmegaSettings& a) {
-    if (!a.firmware.empty()) return a.firmware;
+    if (!a.board.firmware.empty()) return a.board.firmware;
     if (a.pc.variant == cad2g::Variant::Timer1Y) return CNC_LASER_ENGRAVER_TIMER1_Y_ELF;
     return a.g01_timer2_prescaler == 256 ? CNC_LASER_ENGRAVER_T2CS110_ELF : CNC_LASER_ENGRAVER_ELF;
 }
 
 avr::AvrCoreConfig avr_config(const Scenario& s, const AtmegaSettings& a) {
-    avr::AvrCoreConfig cfg;
-    cfg.firmware_elf = firmware_path(a);
-    cfg.pins =
-        avr::parse_pin_map(a.pins, s.file + ": avr.pins",
-                           a.pc.variant == cad2g::Variant::Timer1Y ? avr::timer1_y_pin_map() : avr::default_pin_map());
-    cfg.where = s.file + ": avr.firmware";
-    cfg.quantum_cycles = a.quantum_cycles;
-    cfg.clock = clock_deviation(a.clock, s.seed);
-    return cfg;
+    return board_config(s, a.board, firmware_path(a),
+                        a.pc.variant == cad2g::Variant::Timer1Y ? avr::timer1_y_pin_map() : avr::default_pin_map());
 }
 
 uart::Cp2102Config link_config(const AtmegaSettings& a) {
@@ -113,16 +107,6 @@ ArchPace pace(const Scenario& s, const AtmegaSettings& a, const uart::Cp2102Conf
     return p;
 }
 
-// The firmware's USART against the CP2102's rate, before anything is simulated (serial_host/link_checks.hpp).
-void check_firmware_rate(const Scenario& s, const AtmegaSettings& a, const uart::Cp2102Config& link,
-                         const avr::AvrCoreConfig& avr_cfg) {
-    const std::optional<FirmwareUsart> usart = probe_firmware_usart(avr_cfg);
-    if (!usart) return;
-    const std::string firmware = a.firmware.empty() ? "the seed 003 firmware" : "the firmware " + avr_cfg.firmware_elf;
-    check_line_rates(s.file + ": link.baud, avr.firmware", cp2102_end(link),
-                     {usart->baud, firmware + "'s USART0 at " + usart->text(avr_cfg.f_cpu_hz)});
-}
-
 host::ConfirmTimeouts confirm_timeouts(const AtmegaSettings& a, const uart::Cp2102Config& link, const cad2g::Plan& plan,
                                        const std::vector<cad2g::Transfer>& transfers) {
     host::ConfirmTimeouts t;
@@ -161,8 +145,8 @@ public:
           m_cp2102("cp2102", m_link),
           m_pc("host", m_a.serial.sender, m_cp2102, m_transfers, confirm_timeouts(m_a, m_link, m_plan, m_transfers)),
           m_mcu("atmega328p", m_avr_cfg),
-          m_commanded(commanded_moves(&*job.program, cad2g::motion_segments(m_plan, s.machine), s.machine,
-                                      s.interpreter.start_mm)),
+          m_moves(commanded_moves(&*job.program, cad2g::motion_segments(m_plan, s.machine), s.machine,
+                                  s.interpreter.start_mm)),
           m_chord_gaps(m_pc.transfers()) {
         m_cp2102.txd(m_wires.uart_rx);
         m_cp2102.rxd(m_wires.uart_tx);
@@ -218,7 +202,8 @@ public:
         m_pins->read_before(now_ps);
         m_chord_gaps.add_windows(m_pins->windows(), false);
         hand_ended_moves(*feed);
-        if (!m_s.detail) m_pins->drop_windows_before(std::min(m_window, m_chord_gaps.next_window()));  // --detail
+        if (!m_s.detail)
+            m_pins->drop_windows_before(std::min(m_moves.next_window(), m_chord_gaps.next_window()));  // --detail
         feed->fold(now_ps);
     }
 
@@ -255,26 +240,11 @@ private:
         read_link_bytes(m_pc, m_cp2102, uart::decision_offset_ps(m_mcu.chip().rx_clock(), m_mcu.chip().rx_format()),
                         [&](std::size_t transfer, TimePs t_ps) { m_chord_gaps.add_byte(transfer, t_ps); });
     }
-    // Hands `f` the commanded moves whose motion windows have ended, each with its window, in order; a move too
-    // short for a microstep has none: it waits for the next window's begin, or once the run has ended (`final`)
-    // takes the instant after the last.
     template <typename F>
     void hand_ended_moves(F f, bool final) {
-        const auto& windows = m_pins->windows();
-        for (; m_handed < m_commanded.size(); ++m_handed) {
-            metrics::MoveSpec m = m_commanded[m_handed];
-            if (is_unstepped(m)) {
-                if (m_window == windows.size() && !final) return;
-                place_unstepped(m,
-                                m_window < windows.size() ? std::optional(windows[m_window].t_begin_ps) : std::nullopt,
-                                m_last_end_ps);
-                f(std::move(m));
-                continue;
-            }
-            if (m_window == windows.size()) return;
-            m_last_end_ps = windows[m_window].t_end_ps;
-            f(executed_move(m_s, std::move(m), windows[m_window++]));
-        }
+        m_moves.hand(
+            m_pins->windows(), [this](metrics::MoveSpec m, const MotionWindow& w) { return executed_move(m_s, m, w); },
+            f, final);
     }
     void hand_ended_moves(MetricsFeed& feed) {
         hand_ended_moves([&](metrics::MoveSpec m) { feed.add_piece(std::move(m)); }, false);
@@ -291,12 +261,9 @@ private:
     uart::Cp2102 m_cp2102;
     host::PcProgram m_pc;
     avr::AvrCore m_mcu;
-    const std::vector<metrics::MoveSpec> m_commanded;
+    WindowedMoves m_moves;
     std::optional<AtmegaPins> m_pins;  // once the recorder watches the pins
     ChordGapFold m_chord_gaps;
-    std::size_t m_handed = 0;  // commanded moves handed to the metrics
-    std::size_t m_window = 0;  // motion windows handed to the metrics
-    TimePs m_last_end_ps = 0;  // the end of the last window handed
     TimePs m_stop_ps = 0;
     bool m_whole_logs = false;
 };
@@ -315,8 +282,8 @@ void AtmegaController::report(ArchRun& run, const RunBudget& budget, const Simul
     for (Warning& w : link_warnings(facts)) run.warnings.push_back(std::move(w));
     run.details = details_json(facts, m_s.detail);
     run.details_text = details_text(facts);
-    run.clock = oscillator_json(m_a.clock, m_mcu.chip().clock());
-    run.clock_text = oscillator_text(m_a.clock, m_mcu.chip().clock());
+    run.clock = oscillator_json(m_a.board.clock, m_mcu.chip().clock());
+    run.clock_text = oscillator_text(m_a.board.clock, m_mcu.chip().clock());
 
     if (const std::optional<std::string> why = link_failure(m_mcu, m_cp2102, m_pc)) {
         run.ok = false;
@@ -340,7 +307,9 @@ ArchRun Entry::run(const Scenario& s, const Job& job) {
         cad2g::Plan plan = cad2g::plan_program(*j.program, sc.machine, a.pc);
         avr::AvrCoreConfig avr_cfg = avr_config(sc, a);
         const uart::Cp2102Config link = link_config(a);
-        check_firmware_rate(sc, a, link, avr_cfg);
+        check_firmware_rate(
+            sc, link, avr_cfg,
+            a.board.firmware.empty() ? "the seed 003 firmware" : "the firmware " + avr_cfg.firmware_elf);
         return std::make_unique<AtmegaController>(sc, j, pins, std::move(plan), std::move(avr_cfg), link);
     });
 }

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "architectures/avr_board/board_link_report.hpp"
+
 namespace cnc::sim {
 
 namespace {
@@ -80,16 +82,7 @@ nlohmann::json commands_json(const AtmegaFacts& f) {
 }  // namespace
 
 std::vector<Warning> link_warnings(const AtmegaFacts& f) {
-    std::vector<Warning> w;
-    const avr::AvrCoreStats st = f.mcu.stats();
-    if (st.usart.rx_framing_errors > 0) {
-        w.push_back(
-            {"mcu_framing_errors", "", std::to_string(st.usart.rx_framing_errors) + " UART framing errors at the MCU"});
-    }
-    if (f.cp2102.stats().framing_errors > 0) {
-        w.push_back({"cp2102_framing_errors", "",
-                     std::to_string(f.cp2102.stats().framing_errors) + " UART framing errors at the CP2102"});
-    }
+    std::vector<Warning> w = board_link_warnings(f.cp2102, f.mcu);
     const ChordGaps& gaps = f.gaps;
     if (gaps.late > 0) {
         w.push_back({"late_chords", "",
@@ -102,22 +95,11 @@ std::vector<Warning> link_warnings(const AtmegaFacts& f) {
 }
 
 nlohmann::json details_json(const AtmegaFacts& f, bool detail) {
-    const uart::Cp2102Baud& baud = f.cp2102.baud();
     const avr::AvrCoreStats st = f.mcu.stats();
     const ChordGaps& gaps = f.gaps;
     nlohmann::json j = {
         {"firmware", f.firmware},
-        {"link",
-         {{"requested_baud", baud.requested},
-          {"line_baud", baud.actual_bd},
-          {"line_baud_error_pct", baud.error_pct},
-          {"mcu_baud", f.mcu_baud},
-          {"mcu_vs_line_pct", (f.mcu_baud / baud.actual_bd - 1.0) * 100.0},
-          {"bytes_to_mcu", f.cp2102.tx_log().size()},
-          {"bytes_from_mcu", f.cp2102.rx_log().size()},
-          {"framing_errors_at_mcu", st.usart.rx_framing_errors},
-          {"framing_errors_at_host", f.cp2102.stats().framing_errors},
-          {"frames_lost_at_mcu", st.usart.rx_lost_disabled + st.usart.rx_overruns}}},
+        {"link", board_link_json(f.cp2102, f.mcu, f.mcu_baud)},
         {"pc",
          {{"transfers", f.pc.transfers().size()},
           {"bytes_written", f.pc.writes().size()},
@@ -137,7 +119,6 @@ nlohmann::json details_json(const AtmegaFacts& f, bool detail) {
 }
 
 std::string details_text(const AtmegaFacts& f) {
-    const uart::Cp2102Baud& baud = f.cp2102.baud();
     const avr::AvrCoreStats st = f.mcu.stats();
     const ChordGaps& gaps = f.gaps;
     std::map<std::string, std::pair<int, std::size_t>> per_id;  // commands, motions
@@ -151,10 +132,7 @@ std::string details_text(const AtmegaFacts& f) {
     if (f.plan.variant != cad2g::Variant::Seed) {
         t << "  avr.variant " << cad2g::variant_name(f.plan.variant) << " (seed 003 §5.6)\n";
     }
-    t << fmt::format(FMT_STRING("  line {:.2f} Bd ({:+.3f} % vs requested), MCU USART {:.1f} Bd: {:+.3f} % against "
-                                "the line\n"),
-                     baud.actual_bd, baud.error_pct, f.mcu_baud, (f.mcu_baud / baud.actual_bd - 1.0) * 100.0)
-      << "  PC wrote " << f.pc.writes().size() << " bytes, one per confirm"
+    t << board_link_text(f.cp2102, f.mcu_baud) << "  PC wrote " << f.pc.writes().size() << " bytes, one per confirm"
       << (f.pc.failure() ? fmt::format(FMT_STRING(" (stopped at {:.3f} s: {})"), ps_to_s(f.pc.failure()->t_ps),
                                        f.pc.failure()->reason)
                          : std::string())

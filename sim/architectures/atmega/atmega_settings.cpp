@@ -2,12 +2,6 @@
 
 namespace cnc::sim {
 
-// seed 003 §5.2.4 runs the ATmega328P on an Arduino board at 16 MHz: the Uno clocks it from a ceramic resonator.
-constexpr OscillatorPart kUnoResonator{
-    "avr",  "16 MHz ceramic resonator of the Arduino Uno (Murata CSTCE16M0V53-R0)",
-    5000.0, "Murata CERALOCK catalogue: initial tolerance +-0.5 %",
-    10.0,   "no resonator data sheet gives it: our estimate, a few times a crystal oscillator's"};
-
 namespace {
 
 host::cad2g::Variant read_variant(KeyReader& r) {
@@ -24,20 +18,8 @@ host::cad2g::Variant read_variant(KeyReader& r) {
 
 void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem::path& base) {
     read_serial_host_settings(r, s.serial);
-    const std::string fw = r.get_string(
-        "avr.firmware", "",
-        "atmega: ATmega328P firmware ELF, relative to the scenario; empty: the seed 003 firmware of this build for "
-        "avr.variant");
-    s.firmware = fw.empty() ? std::string() : (base / fw).lexically_normal().string();
+    read_avr_board_settings(r, s.board, base);
     s.pc.variant = read_variant(r);
-    s.pins = r.get_string("avr.pins", "",
-                          "atmega: pins of the machine signals, \"step_x=PD6, dir_x=PB0, en_x=PB2, step_y=PB3, "
-                          "dir_y=PB5, en_y=PB4, head=PB1\" (seed 003 §5.2.5; avr.variant = \"timer1-y\": step_y=PB1, "
-                          "head=PB3); entries left out keep these");
-    s.quantum_cycles = static_cast<std::uint32_t>(
-        r.get_int("avr.quantum_cycles", s.quantum_cycles, 1, 1'000'000,
-                  "atmega: AVR cycles run ahead of SystemC time between replays of its pin changes (speed only: "
-                  "outputs keep their exact cycle)"));
     s.g01_timer2_prescaler = static_cast<int>(
         r.get_int("atmega.g01_timer2_prescaler", s.g01_timer2_prescaler, 256, 1024,
                   "atmega: Timer2 prescaler of the built firmware's G01: 1024 (what the PC computes with), or 256 "
@@ -59,7 +41,6 @@ void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem
                           ? host::cad2g::LongMoves::Split
                           : host::cad2g::LongMoves::Wrap;
     s.link_baud_set = r.has("link.baud");
-    read_oscillator_settings(r, kUnoResonator, 16'000'000, s.clock);  // seed 003 §5.2.4
 }
 
 }  // namespace cnc::sim

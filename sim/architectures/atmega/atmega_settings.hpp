@@ -7,7 +7,7 @@
 #include <string>
 
 #include "architectures/architecture.hpp"
-#include "architectures/oscillator/oscillator_settings.hpp"
+#include "architectures/avr_board/avr_board_settings.hpp"
 #include "architectures/serial_host/serial_host_settings.hpp"
 #include "host/core/cad2g/plan.hpp"
 #include "scenario/key_reader.hpp"
@@ -16,19 +16,15 @@ namespace cnc::sim {
 
 struct AtmegaSettings final : ArchSettings {
     SerialHostSettings serial;
-    // avr.firmware resolved against the scenario's folder; empty: the built seed 003 ELF of avr.variant (pc.variant).
-    // A firmware named with a variant runs with that variant's protocol and pin map.
-    std::string firmware;
-    std::string pins;  // avr.pins, "signal=pin, ..."; empty: the pin map of avr.variant (seed 003's, or timer1-y's)
-    // avr.quantum_cycles. 1600 (100 us), not AvrCoreConfig's 160: the outputs are exact at any value and the only
-    // input, RXD, is decoded exactly, so a longer quantum costs nothing here; it runs the square job 25 % faster.
-    std::uint32_t quantum_cycles = 1600;
+    // board.firmware empty: the built seed 003 ELF of avr.variant (pc.variant); a firmware named with a variant runs
+    // with that variant's protocol and pin map. board.pins empty: the pin map of avr.variant (seed 003's, or
+    // timer1-y's).
+    AvrBoardSettings board;
     int g01_timer2_prescaler = 1024;  // which built seed 003 ELF: 1024, or 256 (App. A3's CS = 110 as listed)
     host::cad2g::PcOptions pc;        // with avr.variant
     // link.baud set by the scenario: otherwise the PC program asks for 57600 (seed 003 §5.3.2 CBR_57600), not the
     // Cp2102Config default of seed 000.
     bool link_baud_set = false;
-    OscillatorSettings clock;  // the Arduino's resonator
 };
 
 void read_atmega_settings(KeyReader& r, AtmegaSettings& settings, const std::filesystem::path& base);

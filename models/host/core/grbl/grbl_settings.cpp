@@ -35,18 +35,19 @@ std::pair<int, std::string> parse_override(const std::string& text, const std::s
 }  // namespace
 
 std::vector<SendLine> machine_settings(const MachineModel& machine, bool laser_mode,
-                                       const std::vector<std::string>& overrides, const std::string& where) {
+                                       const std::vector<std::string>& overrides, const std::string& where,
+                                       const std::string& file) {
     std::map<int, std::pair<std::string, std::string>> by_number;  // N -> value text, what it comes from
     const AxisMachine* axes[2] = {&machine.x, &machine.y};
     const char* names[2] = {"machine.x", "machine.y"};
     for (int a = 0; a < 2; ++a) {
-        by_number[100 + a] = {value_text(axes[a]->steps_per_mm()), std::string(names[a]) + " steps per mm"};
+        const std::string axis = file + ": " + names[a];
+        by_number[100 + a] = {value_text(axes[a]->steps_per_mm()), axis + " steps per mm"};
         by_number[110 + a] = {value_text(axes[a]->limits.max_velocity_mm_per_s * 60.0),
-                              std::string(names[a]) + ".max_velocity_mm_per_s x 60"};
-        by_number[120 + a] = {value_text(axes[a]->limits.max_accel_mm_per_s2),
-                              std::string(names[a]) + ".max_accel_mm_per_s2"};
+                              axis + ".max_velocity_mm_per_s x 60"};
+        by_number[120 + a] = {value_text(axes[a]->limits.max_accel_mm_per_s2), axis + ".max_accel_mm_per_s2"};
     }
-    by_number[32] = {laser_mode ? "1" : "0", "the job's laser words"};
+    by_number[32] = {laser_mode ? "1" : "0", file + ": the job's laser words"};
     for (const std::string& text : overrides) {
         auto [n, value] = parse_override(text, where);
         by_number[n] = {value, where};

@@ -10,9 +10,11 @@
 
 namespace cnc::host::grbl {
 
-// `overrides`: "$N=value" texts as the scenario gives them (validated: BadInput at `where` naming the text).
+// `overrides`: "$N=value" texts as the scenario gives them (validated: BadInput at `where` naming the text). Each
+// line's `where` says what it comes from: `where` for an override, "`file`: machine.x.max_velocity_mm_per_s x 60"
+// for a derived one.
 [[nodiscard]] std::vector<SendLine> machine_settings(const MachineModel& machine, bool laser_mode,
                                                      const std::vector<std::string>& overrides,
-                                                     const std::string& where);
+                                                     const std::string& where, const std::string& file);
 
 }  // namespace cnc::host::grbl

@@ -1,5 +1,6 @@
 #include "host/core/grbl/grbl_stream.hpp"
 
+#include <algorithm>
 #include <utility>
 
 namespace cnc::host::grbl {
@@ -31,6 +32,9 @@ void Stream::received(const std::string& line) {
         m_phase = m_settings.empty() ? Phase::Job : Phase::Settings;
         return;
     }
+    // Before its start-up message grbl may report on itself (error:7, its settings read from a blank EEPROM and
+    // restored to its defaults): no line of ours is in flight yet.
+    if (m_phase == Phase::Banner) return;
     if (starts_with(line, "<")) {
         m_last_status = line;
         if (m_phase == Phase::Draining && starts_with(line, "<Idle")) m_phase = Phase::Done;
@@ -59,6 +63,7 @@ void Stream::answered(const std::string& answer) {
     if (answer != "ok") {
         m_errors.push_back({*f.line, answer});
         if (f.setting) {
+            m_refused_setting = m_errors.back();
             fail("grbl answered " + answer + " to the setting " + f.line->text + " (" + f.line->where + ")");
             return;
         }
@@ -96,6 +101,7 @@ std::optional<std::string> Stream::next_write() {
     const std::size_t bytes = line->text.size() + 1;
     m_in_flight.push_back({line, bytes, setting});
     m_in_flight_bytes += bytes;
+    m_most_in_flight_bytes = std::max(m_most_in_flight_bytes, m_in_flight_bytes);
     return line->text + "\n";
 }
 

@@ -46,9 +46,13 @@ public:
     [[nodiscard]] bool draining() const { return m_phase == Phase::Draining; }
 
     [[nodiscard]] Phase phase() const { return m_phase; }
+    [[nodiscard]] const std::vector<SendLine>& job() const { return m_job; }
     [[nodiscard]] const std::string& failure() const { return m_failure; }
     [[nodiscard]] const std::vector<LineError>& errors() const { return m_errors; }
+    // The setting grbl refused, when that stopped the stream.
+    [[nodiscard]] const std::optional<LineError>& refused_setting() const { return m_refused_setting; }
     [[nodiscard]] std::size_t in_flight_bytes() const { return m_in_flight_bytes; }
+    [[nodiscard]] std::size_t most_in_flight_bytes() const { return m_most_in_flight_bytes; }
     [[nodiscard]] std::size_t job_lines_sent() const { return m_next_job; }
     [[nodiscard]] std::size_t job_lines_answered() const { return m_answered_job; }
     [[nodiscard]] const std::string& banner() const { return m_banner; }
@@ -72,7 +76,9 @@ private:
     };
     std::deque<InFlight> m_in_flight;
     std::size_t m_in_flight_bytes = 0;
+    std::size_t m_most_in_flight_bytes = 0;
     std::vector<LineError> m_errors;
+    std::optional<LineError> m_refused_setting;
     std::string m_failure;
     std::string m_banner;
     std::string m_last_status;

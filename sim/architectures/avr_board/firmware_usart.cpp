@@ -1,4 +1,4 @@
-#include "architectures/atmega/firmware_usart.hpp"
+#include "architectures/avr_board/firmware_usart.hpp"
 
 #include <fmt/format.h>
 

@@ -1,0 +1,30 @@
+#include "architectures/avr_board/avr_board.hpp"
+
+#include <optional>
+#include <utility>
+
+#include "architectures/avr_board/firmware_usart.hpp"
+#include "architectures/serial_host/link_checks.hpp"
+
+namespace cnc::sim {
+
+avr::AvrCoreConfig board_config(const Scenario& s, const AvrBoardSettings& board, std::string firmware,
+                                avr::PinMap pins) {
+    avr::AvrCoreConfig cfg;
+    cfg.firmware_elf = std::move(firmware);
+    cfg.pins = avr::parse_pin_map(board.pins, s.file + ": avr.pins", std::move(pins));
+    cfg.where = s.file + ": avr.firmware";
+    cfg.quantum_cycles = board.quantum_cycles;
+    cfg.clock = clock_deviation(board.clock, s.seed);
+    return cfg;
+}
+
+void check_firmware_rate(const Scenario& s, const uart::Cp2102Config& link, const avr::AvrCoreConfig& cfg,
+                         const std::string& firmware_name) {
+    const std::optional<FirmwareUsart> usart = probe_firmware_usart(cfg);
+    if (!usart) return;
+    check_line_rates(s.file + ": link.baud, avr.firmware", cp2102_end(link),
+                     {usart->baud, firmware_name + "'s USART0 at " + usart->text(cfg.f_cpu_hz)});
+}
+
+}  // namespace cnc::sim

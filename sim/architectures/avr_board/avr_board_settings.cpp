@@ -1,0 +1,36 @@
+#include "architectures/avr_board/avr_board_settings.hpp"
+
+namespace cnc::sim {
+
+namespace {
+
+// seed 003 §5.2.4 runs the ATmega328P on an Arduino board at 16 MHz, as grbl 1.1 runs: the Uno clocks it from a
+// ceramic resonator.
+constexpr OscillatorPart kUnoResonator{
+    "avr",  "16 MHz ceramic resonator of the Arduino Uno (Murata CSTCE16M0V53-R0)",
+    5000.0, "Murata CERALOCK catalogue: initial tolerance +-0.5 %",
+    10.0,   "no resonator data sheet gives it: our estimate, a few times a crystal oscillator's"};
+
+}  // namespace
+
+void read_avr_board_settings(KeyReader& r, AvrBoardSettings& s, const std::filesystem::path& base) {
+    const std::string fw = r.get_string(
+        "avr.firmware", "",
+        "the ATmega328P's firmware, an ELF or Intel HEX file, relative to the scenario; empty: seed 003's firmware of "
+        "this build "
+        "for avr.variant on seed 003's board, and on grbl's an error that says how to build grbl");
+    s.firmware = fw.empty() ? std::string() : (base / fw).lexically_normal().string();
+    s.pins = r.get_string("avr.pins", "",
+                          "pins of the machine signals on the ATmega328P, \"signal=pin, ...\" (signals step_x dir_x "
+                          "en_x step_y dir_y en_y head; en_x and en_y may share a pin); entries left out keep the "
+                          "board's map: seed 003 §5.2.5 (step_x=PD6, dir_x=PB0, en_x=PB2, step_y=PB3, dir_y=PB5, "
+                          "en_y=PB4, head=PB1; avr.variant = \"timer1-y\": step_y=PB1, head=PB3), or grbl 1.1's "
+                          "cpu_map.h (step_x=PD2, dir_x=PD5, step_y=PD3, dir_y=PD6, en_x=en_y=PB0, head=PB3)");
+    s.quantum_cycles = static_cast<std::uint32_t>(
+        r.get_int("avr.quantum_cycles", s.quantum_cycles, 1, 1'000'000,
+                  "AVR cycles run ahead of SystemC time between replays of its pin changes (speed only: outputs "
+                  "keep their exact cycle)"));
+    read_oscillator_settings(r, kUnoResonator, 16'000'000, s.clock);
+}
+
+}  // namespace cnc::sim

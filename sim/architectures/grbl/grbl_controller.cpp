@@ -1,0 +1,290 @@
+#include "architectures/grbl/grbl.hpp"
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "architectures/avr_board/avr_board.hpp"
+#include "architectures/avr_board/driven_pins.hpp"
+#include "architectures/grbl/grbl_report.hpp"
+#include "architectures/grbl/grbl_settings.hpp"
+#include "architectures/grbl/step_windows.hpp"
+#include "architectures/serial_host/link_checks.hpp"
+#include "avr/avr_core.hpp"
+#include "common/bad_input.hpp"
+#include "host/core/cam.hpp"
+#include "host/core/grbl/grbl_lines.hpp"
+#include "host/core/grbl/grbl_settings.hpp"
+#include "host/grbl_sender.hpp"
+#include "run/controller.hpp"
+#include "run/machine_run.hpp"
+#include "run/moves.hpp"
+#include "run/windowed_moves.hpp"
+#include "uart/cp2102.hpp"
+
+namespace cnc::sim::grbl {
+
+namespace {
+
+// The sender's end and a failure are checked this often.
+constexpr TimePs kStopCheckPs = 10 * kPsPerMs;
+
+// The link's wires (the machine's pins are the run's: run/machine.hpp); names as the atmega architecture's.
+struct Wires {
+    sc_core::sc_signal<bool> uart_rx{"uart_rx", true};  // CP2102 TXD -> PD0 RXD; idles high
+    sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // PD1 TXD -> CP2102 RXD
+};
+
+// The job file's lines as the sender streams them.
+std::vector<host::grbl::SendLine> job_lines(const Scenario& s) {
+    std::ifstream in(s.job_path, std::ios::binary);
+    if (!in) throw BadInput(s.job_key, "cannot read the job " + s.job_path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return host::grbl::lines_to_send(text.str(), s.job_path);
+}
+
+// grbl's laser mode ($32 = 1) for a job that switches a laser: M3/M4 with a power on a cutting move.
+bool laser_job(const host::Program& program) {
+    for (const host::ProgrammedMove& m : program.moves) {
+        if (m.laser_intended()) return true;
+    }
+    return false;
+}
+
+host::grbl::Stream make_stream(const Scenario& s, const GrblSettings& g, const Job& job) {
+    return host::grbl::Stream(
+        {g.protocol, g.rx_buffer_bytes, s.interpreter.policy == host::GcodePolicy::Strict},
+        host::grbl::machine_settings(s.machine, laser_job(*job.program), g.settings, g.settings_where, s.file),
+        job_lines(s));
+}
+
+host::GrblSenderConfig sender_config(const GrblSettings& g) {
+    host::GrblSenderConfig c;
+    c.processing_ps = g.serial.sender.packet_processing_ps;
+    c.write_latency_ps = g.serial.sender.write_latency_ps;
+    c.status_interval_ps = g.status_interval_ps;
+    return c;
+}
+
+// Each stepped move's end point on the step grid, counted from the start.
+std::vector<std::array<std::int64_t, 2>> move_ends(const std::vector<host::MotionSegment>& segments) {
+    std::vector<std::array<std::int64_t, 2>> ends;
+    std::array<std::int64_t, 2> at{};
+    for (const host::MotionSegment& seg : segments) {
+        at[0] += seg.steps_x;
+        at[1] += seg.steps_y;
+        ends.push_back(at);
+    }
+    return ends;
+}
+
+// The metrics' move of a block that ran, its window from the pins. grbl runs a G0 at the fastest speed every axis
+// allows ($110/$111: the machine's limits), not at the job's rapid feed.
+metrics::MoveSpec executed_move(const Scenario& s, metrics::MoveSpec m, const StepWindow& window) {
+    m.t_begin_ps = window.t_begin_ps;
+    m.t_end_ps = window.t_end_ps;
+    if (m.rapid) {
+        const double dx_mm = static_cast<double>(m.steps[0]) * s.machine.x.mm_per_step();
+        const double dy_mm = static_cast<double>(m.steps[1]) * s.machine.y.mm_per_step();
+        const double length_mm = std::hypot(dx_mm, dy_mm);
+        m.feed_mm_per_min = host::feed_within_axis_limits(dx_mm, dy_mm, std::numeric_limits<double>::max(), s.machine);
+        const double v_mm_per_s = m.feed_mm_per_min / 60.0;
+        m.rate_steps_per_s = {std::abs(dx_mm) / length_mm * v_mm_per_s * s.machine.x.steps_per_mm(),
+                              std::abs(dy_mm) / length_mm * v_mm_per_s * s.machine.y.steps_per_mm()};
+    }
+    return m;
+}
+
+// This architecture's side of the job estimate: each axis at its limit; every line's bytes on the wire and the
+// sender's work, as if nothing overlapped them.
+ArchPace pace(const Scenario& s, const GrblSettings& g, const uart::Cp2102Config& link,
+              const std::vector<host::grbl::SendLine>& lines) {
+    ArchPace p;
+    p.max_speed_x_mm_per_s = s.machine.x.limits.max_velocity_mm_per_s;
+    p.max_speed_y_mm_per_s = s.machine.y.limits.max_velocity_mm_per_s;
+    const double byte_s = static_cast<double>(link.format.bits_per_frame()) / link.requested_baud;
+    for (const host::grbl::SendLine& l : lines) {
+        p.link_s += ps_to_s(g.serial.sender.packet_processing_ps + g.serial.sender.write_latency_ps) +
+                    static_cast<double>(l.text.size() + 1) * byte_s;
+    }
+    return p;
+}
+
+// Why the run stops before the job's end, once it is clear: frames garbled at either end, or the sender's failure.
+std::optional<std::string> link_failure(const avr::AvrCore& mcu, const uart::Cp2102& cp2102,
+                                        const host::GrblSender& sender) {
+    if (auto framing = framing_failure(mcu.stats().usart.rx_framing_errors, "MCU", cp2102.stats().framing_errors)) {
+        return framing;
+    }
+    if (sender.failure()) return *sender.failure() + " (avr.firmware " + mcu.config().firmware_elf + ")";
+    return std::nullopt;
+}
+
+// The grbl system between the job and the machine's pins: the G-code sender through the CP2102, the ATmega328P
+// running the user's firmware, which drives STEP, DIR, the shared enable and the laser.
+class GrblController final : public Controller {
+public:
+    GrblController(const Scenario& s, const Job& job, MachinePins& pins, avr::AvrCoreConfig avr_cfg,
+                   std::vector<host::MotionSegment> segments)
+        : m_s(s),
+          m_g(s.settings<GrblSettings>()),
+          m_job(job),
+          m_avr_cfg(std::move(avr_cfg)),
+          m_ends(move_ends(segments)),
+          m_cp2102("cp2102", m_g.serial.link),
+          m_sender("host", sender_config(m_g), m_cp2102, make_stream(s, m_g, job)),
+          m_mcu("atmega328p", m_avr_cfg),
+          m_moves(commanded_moves(&*job.program, segments, s.machine, s.interpreter.start_mm)) {
+        m_cp2102.txd(m_wires.uart_rx);
+        m_cp2102.rxd(m_wires.uart_tx);
+        m_mcu.step_x(pins.step_x);
+        m_mcu.dir_x(pins.dir_x);
+        m_mcu.en_x(pins.n_enbl_x);
+        m_mcu.step_y(pins.step_y);
+        m_mcu.dir_y(pins.dir_y);
+        m_mcu.en_y(pins.n_enbl_y);
+        m_mcu.head(pins.laser);
+        m_mcu.txd(m_wires.uart_tx);
+        m_mcu.rxd(m_wires.uart_rx);
+    }
+
+    // The AVR times every pin it drives; the CP2102 (uart_rx) starts its frames when USB delivers the bytes.
+    [[nodiscard]] MachinePinClocks pin_clocks() const override {
+        const std::optional<std::int64_t> hz = m_mcu.chip().clock().grid_hz();
+        return {hz, hz};
+    }
+    [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
+        return {{&m_wires.uart_rx, "link", std::nullopt}, {&m_wires.uart_tx, "link", m_mcu.chip().clock().grid_hz()}};
+    }
+    // grbl 1.1: a DIR bit set moves its axis the negative way ($3 = 0).
+    [[nodiscard]] bool dir_high_is_positive() const override { return false; }
+    // grbl holds its stepper-disable pin high until the first block and after an idle delay ($1).
+    [[nodiscard]] bool drives_enable() const override { return true; }
+    void record(EdgeRecorder& rec, bool whole_logs) override {
+        m_whole_logs = whole_logs;
+        m_pins.emplace(rec, whole_logs);
+        m_windows.emplace(m_ends, dir_high_is_positive());
+        if (!whole_logs) return;
+        for (const sc_core::sc_signal<bool>* sig : {&m_wires.uart_rx, &m_wires.uart_tx}) {
+            rec.watch(*sig, sig->basename());
+        }
+    }
+
+    [[nodiscard]] JobEstimate estimate() const override {
+        return estimate_job(*m_job.program, pace(m_s, m_g, m_g.serial.link, m_sender.stream().job()));
+    }
+    [[nodiscard]] TimePs stop_check_ps() const override { return kStopCheckPs; }
+    [[nodiscard]] bool stopped() override {
+        return m_sender.finished() || link_failure(m_mcu, m_cp2102, m_sender).has_value();
+    }
+    void feed_started(MetricsFeed& feed) override {
+        feed.take_edges_with([this](const std::string& pin, TimePs t_ps) { return m_pins->hand_over(pin, t_ps); });
+    }
+    void slice_ended(TimePs now_ps, MetricsFeed* feed) override {
+        if (feed == nullptr) return;
+        read_before(now_ps);
+        hand_ended_moves([&](metrics::MoveSpec m) { feed->add_piece(std::move(m)); }, false);
+        if (!m_s.detail) m_windows->drop_windows_before(m_moves.next_window());
+        feed->fold(now_ps);
+    }
+    void simulation_ended(TimePs stop_ps) override {
+        read_before(std::numeric_limits<TimePs>::max());
+        m_windows->finish(stop_ps);
+    }
+    [[nodiscard]] TimePs job_end_ps(TimePs stop_ps) const override {
+        return m_sender.finished() ? m_sender.t_end_ps() : stop_ps;
+    }
+    void finish_feed(MetricsFeed& feed) override {
+        hand_ended_moves([&](metrics::MoveSpec m) { feed.add_piece(std::move(m)); }, true);
+    }
+    void finish_input(metrics::RunInput& in, bool streamed) override {
+        if (streamed) return;
+        hand_ended_moves([&](metrics::MoveSpec m) { in.moves.push_back(std::move(m)); }, true);
+    }
+    [[nodiscard]] EdgeLog take_edges(EdgeRecorder&, const std::string& pin) override { return m_pins->hand_over(pin); }
+    void take_lines(EdgeRecorder& rec, std::map<std::string, EdgeLog>& lines) override {
+        if (!m_whole_logs) return;
+        for (const char* pin : {"uart_rx", "uart_tx"}) lines[pin] = rec.take(pin);
+        for (const char* pin : {"n_enbl_x", "n_enbl_y"}) lines[pin] = m_pins->take_raw(pin);
+        lines["step_x_pin"] = m_pins->take_raw("step_x");
+        lines["step_y_pin"] = m_pins->take_raw("step_y");
+    }
+    void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override;
+
+private:
+    void read_before(TimePs t_ps) {
+        const PinSlice p = m_pins->read_before(t_ps);
+        m_windows->add(p.step_x, p.dir_x, p.step_y, p.dir_y);
+    }
+    template <typename F>
+    void hand_ended_moves(F f, bool final) {
+        m_moves.hand(
+            m_windows->windows(), [this](metrics::MoveSpec m, const StepWindow& w) { return executed_move(m_s, m, w); },
+            f, final);
+    }
+
+    const Scenario& m_s;
+    const GrblSettings& m_g;
+    const Job& m_job;
+    const avr::AvrCoreConfig m_avr_cfg;
+    const std::vector<std::array<std::int64_t, 2>> m_ends;
+    Wires m_wires;
+    uart::Cp2102 m_cp2102;
+    host::GrblSender m_sender;
+    avr::AvrCore m_mcu;
+    WindowedMoves m_moves;
+    std::optional<DrivenPins> m_pins;         // once the recorder watches the pins
+    std::optional<StepWindowFold> m_windows;  // with them
+    bool m_whole_logs = false;
+};
+
+void GrblController::report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) {
+    // A setting the firmware refuses is the scenario's (or the machine's) to mend: bad input, no result.
+    if (const std::optional<host::grbl::LineError>& refused = m_sender.stream().refused_setting()) {
+        throw BadInput(refused->line.where, "the firmware " + m_avr_cfg.firmware_elf + " answered " + refused->answer +
+                                                " to the grbl setting " + refused->line.text);
+    }
+    const GrblFacts facts{
+        m_sender,
+        m_cp2102,
+        m_mcu,
+        m_avr_cfg.firmware_elf,
+        m_g.protocol == host::grbl::Protocol::CharacterCounting ? "character-counting" : "send-response",
+        m_mcu.chip().rx_clock().baud()};
+    run.warnings = grbl_warnings(facts);
+    run.details = grbl_details_json(facts);
+    run.details_text = grbl_details_text(facts);
+    run.clock = oscillator_json(m_g.board.clock, m_mcu.chip().clock());
+    run.clock_text = oscillator_text(m_g.board.clock, m_mcu.chip().clock());
+    if (const std::optional<std::string> why = link_failure(m_mcu, m_cp2102, m_sender)) {
+        run.ok = false;
+        run.failure = *why + fmt::format(FMT_STRING(" (run stopped at {:.3f} s of simulated time)"), ps_to_s(end.t_ps));
+    } else if (!m_sender.finished()) {
+        run.ok = false;
+        run.failure = "the job did not finish: " + time_limit_text(budget, end);
+    }
+}
+
+}  // namespace
+
+ArchRun Entry::run(const Scenario& s, const Job& job) {
+    return run_on_machine(s, job, [](const Scenario& sc, const Job& j, MachinePins& pins) {
+        const GrblSettings& g = sc.settings<GrblSettings>();
+        avr::AvrCoreConfig avr_cfg = board_config(sc, g.board, g.board.firmware, avr::grbl_pin_map());
+        check_firmware_rate(sc, g.serial.link, avr_cfg, "the firmware " + avr_cfg.firmware_elf);
+        std::vector<host::MotionSegment> segments = host::cam(*j.program, sc.machine, host::CamOptions{});
+        return std::make_unique<GrblController>(sc, j, pins, std::move(avr_cfg), std::move(segments));
+    });
+}
+
+}  // namespace cnc::sim::grbl

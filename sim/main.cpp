@@ -18,6 +18,7 @@
 #include <systemc>
 
 #include "architectures/catalog.hpp"
+#include "cam_cmd.hpp"
 #include "common/bad_input.hpp"
 #include "compare/compare.hpp"
 #include "compare/compare_check.hpp"
@@ -294,7 +295,8 @@ int dispatch(int argc, char* argv[]) {
     bool detail = false;
 
     const std::string input_help =
-        "scenario (TOML), or a job (G-code: .nc, .ngc, .gcode, .tap, .txt, ...; a steps file) to run on --machine "
+        "scenario (TOML), or a job (G-code: .nc, .ngc, .gcode, .tap, .txt, ...; a steps file; a DXF drawing) to run "
+        "on --machine "
         "or the default machine (docs/usage.md says how the two are told apart)";
     const std::string machine_help =
         "with a job: the machine file (TOML: its [machine], [driver], [motor], [mechanics] tables; `cncsim init` "
@@ -387,6 +389,24 @@ int dispatch(int argc, char* argv[]) {
     curve->add_option("--axis", curve_axis, "axis")->check(CLI::IsMember({"x", "y"}))->capture_default_str();
     curve->add_option("--csv", curve_csv, "also write the table as CSV to this file");
 
+    cnc::sim::CamCommand cam_cmd;
+    CLI::App* cam =
+        app.add_subcommand("cam", "a DXF drawing to G-code: the seeds' path orderings and ours (docs/cam.md)");
+    cam->add_option("drawing", cam_cmd.drawing, "DXF drawing (ASCII): LINE, ARC, CIRCLE, LWPOLYLINE, POLYLINE")
+        ->required();
+    cam->add_option("--order", cam_cmd.order,
+                    "selection, seed000, seed003 or optimized (sets cam.order; default "
+                    "seed000)");
+    cam->add_option("--out", cam_cmd.out, "write the G-code to this file");
+    cam->add_flag("--compare-orders", cam_cmd.compare_orders, "every ordering side by side");
+    cam->add_option("--arch", cam_cmd.arch,
+                    "with --compare-orders: run each ordering's G-code on this architecture and show its job time");
+    cam->add_option("--machine", cam_cmd.machine,
+                    "machine file (TOML): its axes' travel bounds the drawing, its start position the first rapid");
+    cam->add_flag("--skip-unread", cam_cmd.skip_unread,
+                  "leave out entity types the CAM does not read, listing them (sets cam.skip_unread)");
+    cam->add_option("--set", cam_cmd.sets, "override a scenario key: key=value (repeatable; cam.* keys: docs/cam.md)");
+
     CLI::App* keys = app.add_subcommand(
         "keys", "print the scenario keys (type, default, range, meaning): Markdown, or lines to fit a terminal");
     keys->add_option("prefix", keys_prefix, "only the keys that start with it (machine.x, link, ...)");
@@ -413,6 +433,9 @@ int dispatch(int argc, char* argv[]) {
             return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, commanded, report);
         }
         if (init->parsed()) return cnc::sim::cmd_init(init_dir, std::cout);
+        if (cam->parsed()) {
+            return cnc::sim::cmd_cam(cam_cmd, std::filesystem::read_symlink("/proc/self/exe").string(), std::cout);
+        }
         return cmd_keys(keys_prefix);
     } catch (const cnc::BadInput& e) {
         std::cerr << "cncsim: " << e.what() << '\n';

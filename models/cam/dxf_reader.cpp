@@ -198,7 +198,7 @@ Drawing read_dxf(const std::string& path, const DxfOptions& options) {
         throw BadInput(path + ":" + std::to_string(first_unread_line),
                        "entities the CAM does not read: " + unread_text(unread) +
                            "; it reads LINE, ARC, CIRCLE, LWPOLYLINE and POLYLINE (explode or convert the others, or "
-                           "leave them out with --skip-unread)");
+                           "leave them out: cam.skip_unread = true, or cncsim cam --skip-unread)");
     }
     Adaptor adaptor(scan, mm);
     DL_Dxf dxf;

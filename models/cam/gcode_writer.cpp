@@ -30,7 +30,8 @@ std::string write_gcode(const std::vector<Entity>& entities, const std::vector<R
         for (const Step& step : route) {
             const Entity& e = entities.at(static_cast<std::size_t>(step.entity));
             const geom::Segment s = step_path(entities, step);
-            const double feed = e.cut() ? options.cut_feed_mm_per_min : options.engrave_feed_mm_per_min;
+            const double per_min = e.cut() ? options.cut_feed_mm_per_min : options.engrave_feed_mm_per_min;
+            const double feed = options.feed_in_mm_per_s ? per_min / 60.0 : per_min;
             const std::string f = " F" + fmt::format(FMT_STRING("{:g}"), feed) + "\n";
             if (!s.is_arc) {
                 out += "G1 " + xy(s.end) + f;

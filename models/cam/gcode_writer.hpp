@@ -17,6 +17,9 @@ struct GcodeOptions {
     // The S word with M3 (seed 000 §2.2's sample: M3 S255). Architectures that switch the laser by motion kind
     // ignore it; those that follow the job's M3/S need it above 0.
     double laser_power = 255.0;
+    // The unit the F words are written in: mm/min (G94), or mm/s for a machine that reads F so (seed 003 §5.1.3:
+    // "F100 = 100 mm/sec"; the scenario's host.feed_unit). The feeds above stay in mm/min.
+    bool feed_in_mm_per_s = false;
 };
 
 std::string write_gcode(const std::vector<Entity>& entities, const std::vector<Route>& routes,

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <utility>
 
 #include <dl_creationadapter.h>
 #include <dl_dxf.h>
@@ -19,6 +20,8 @@ constexpr int kByBlock = 0;
 constexpr int kByLayer = 256;
 constexpr int kDefaultColour = 7;   // white/black: what AutoCAD draws BYBLOCK outside a block in
 constexpr int kClosedPolyline = 1;  // group 70 bit 0 of LWPOLYLINE and POLYLINE
+// An extrusion direction this close to +-Z (unit vector components) is a flat entity: DXF writes it to 1e-15.
+constexpr double kFlatTolerance = 1e-9;
 
 const std::set<std::string>& read_types() {
     static const std::set<std::string> types = {"LINE", "ARC", "CIRCLE", "LWPOLYLINE", "POLYLINE"};
@@ -29,7 +32,7 @@ const std::set<std::string>& read_types() {
 // which gives its number and line; entities inside block definitions are drawn only through an INSERT.
 class Adaptor : public DL_CreationAdapter {
 public:
-    Adaptor(const DxfScan& scan, double mm_per_unit) : m_mm(mm_per_unit) {
+    Adaptor(std::string file, const DxfScan& scan, double mm_per_unit) : m_file(std::move(file)), m_mm(mm_per_unit) {
         for (std::size_t i = 0; i < scan.entities.size(); ++i) {
             if (read_types().count(scan.entities[i].type) != 0) {
                 m_sources.push_back(static_cast<int>(i));
@@ -46,31 +49,33 @@ public:
     void endBlock() override { m_in_block = false; }
 
     void addLine(const DL_LineData& d) override {
-        if (!start("LINE")) return;
+        if (!start("LINE", false)) return;
         add(geom::Segment::line(point(d.x1, d.y1), point(d.x2, d.y2)));
     }
     void addArc(const DL_ArcData& d) override {
-        if (!start("ARC")) return;
-        const geom::Vec2 c = point(d.cx, d.cy);
+        if (!start("ARC", true)) return;
+        const geom::Vec2 c = ocs_point(d.cx, d.cy);
         const double r = d.radius * m_mm;
-        const geom::Vec2 from = c + geom::Vec2{std::cos(d.angle1 * kDegToRad), std::sin(d.angle1 * kDegToRad)} * r;
-        const geom::Vec2 to = c + geom::Vec2{std::cos(d.angle2 * kDegToRad), std::sin(d.angle2 * kDegToRad)} * r;
-        add(geom::Segment::arc(from, to, c, true));  // DXF arcs run counter-clockwise from angle 50 to angle 51
+        const geom::Vec2 from = c + ocs_direction(d.angle1) * r;
+        const geom::Vec2 to = c + ocs_direction(d.angle2) * r;
+        // Counter-clockwise from angle 50 to angle 51 about the extrusion direction: clockwise seen from +Z when
+        // it is -Z.
+        add(geom::Segment::arc(from, to, c, !m_mirrored));
     }
     void addCircle(const DL_CircleData& d) override {
-        if (!start("CIRCLE")) return;
-        const geom::Vec2 c = point(d.cx, d.cy);
+        if (!start("CIRCLE", true)) return;
+        const geom::Vec2 c = ocs_point(d.cx, d.cy);
         const geom::Vec2 from = c + geom::Vec2{d.radius * m_mm, 0.0};
         add(geom::Segment::arc(from, from, c, true));
     }
     void addPolyline(const DL_PolylineData& d) override {
-        if (!start("POLYLINE")) return;
+        if (!start("POLYLINE", true)) return;
         m_polyline = true;
         m_closed = (d.flags & kClosedPolyline) != 0;
         m_vertices.clear();
     }
     void addVertex(const DL_VertexData& d) override {
-        if (m_polyline) m_vertices.push_back({point(d.x, d.y), d.bulge});
+        if (m_polyline) m_vertices.push_back({ocs_point(d.x, d.y), m_mirrored ? -d.bulge : d.bulge});
     }
     void endSequence() override { flush(); }
 
@@ -103,9 +108,17 @@ private:
     };
 
     geom::Vec2 point(double x, double y) const { return {x * m_mm, y * m_mm}; }
+    // ARC, CIRCLE and polyline coordinates are in the entity's object coordinate system (DXF reference, "Object
+    // Coordinate Systems"): with the extrusion direction -Z (a mirrored entity) its x axis is the world's -x.
+    geom::Vec2 ocs_point(double x, double y) const { return point(m_mirrored ? -x : x, y); }
+    geom::Vec2 ocs_direction(double angle_deg) const {
+        const double a = angle_deg * kDegToRad;
+        return {m_mirrored ? -std::cos(a) : std::cos(a), std::sin(a)};
+    }
 
-    // A new entity of the ENTITIES section: false inside a block definition.
-    bool start(const char* type) {
+    // A new entity of the ENTITIES section: false inside a block definition. `ocs`: its coordinates are in its
+    // object coordinate system (a LINE's are in the world's).
+    bool start(const char* type, bool ocs) {
         flush();
         if (m_in_block) return false;
         const bool scanned = m_read < static_cast<int>(m_sources.size());
@@ -121,6 +134,13 @@ private:
             m_colour = it == m_layer_colour.end() ? kDefaultColour : it->second;
         }
         if (m_colour == kByBlock) m_colour = kDefaultColour;
+        const double* n = getExtrusion()->getDirection();
+        if (ocs && (std::fabs(n[0]) > kFlatTolerance || std::fabs(n[1]) > kFlatTolerance)) {
+            throw BadInput(m_file + ":" + std::to_string(m_line),
+                           m_type + " is not in the XY plane (extrusion direction " + std::to_string(n[0]) + ", " +
+                               std::to_string(n[1]) + ", " + std::to_string(n[2]) + "): the CAM cuts 2D drawings");
+        }
+        m_mirrored = ocs && n[2] < 0.0;
         return true;
     }
 
@@ -129,7 +149,9 @@ private:
         if (s.length_mm() > 0.0) m_entities.push_back({s, m_type, m_source, m_line, m_layer, m_colour});
     }
 
+    std::string m_file;
     double m_mm;
+    bool m_mirrored = false;              // the entity's extrusion direction is -Z
     std::vector<int> m_sources, m_lines;  // the number, line and type of each entity of a type the CAM reads
     std::vector<std::string> m_types;
     std::map<std::string, int> m_layer_colour;
@@ -200,7 +222,7 @@ Drawing read_dxf(const std::string& path, const DxfOptions& options) {
                            "; it reads LINE, ARC, CIRCLE, LWPOLYLINE and POLYLINE (explode or convert the others, or "
                            "leave them out: cam.skip_unread = true, or cncsim cam --skip-unread)");
     }
-    Adaptor adaptor(scan, mm);
+    Adaptor adaptor(path, scan, mm);
     DL_Dxf dxf;
     if (!dxf.in(path, &adaptor)) throw BadInput(path, "cannot open the drawing");
     Drawing d = adaptor.take(path);

@@ -57,12 +57,45 @@ TEST(CamDxf, PolylineBulgesGiveTheArcsOfTheBulgeFormula) {
     EXPECT_NE(g.find("G2 X20.000 Y0.000 I5.000 J0.000 F800\n"), std::string::npos) << g;
 }
 
+TEST(CamDxf, OldStylePolylinesReadAsLightweightOnes) {
+    const std::string path = test::test_path("polyline.dxf");
+    test::DxfText()
+        .polyline({{0, 0, 0.5}, {10, 0, -1}, {20, 0, 0}, {20, 10, 0.25}}, true)
+        .line(0, 0, -5, 0)
+        .write(path);
+    const Drawing d = read_dxf(path, {});
+    ASSERT_EQ(d.entities.size(), 5u);
+    EXPECT_EQ(d.entities_read, 2);
+    expect_arc(d.entities[0], bulge_arc({0, 0}, {10, 0}, 0.5));
+    expect_arc(d.entities[1], bulge_arc({10, 0}, {20, 0}, -1));
+    expect_arc(d.entities[3], bulge_arc({20, 10}, {0, 0}, 0.25));
+    EXPECT_EQ(d.entities[0].type, "POLYLINE");
+    EXPECT_EQ(d.entities[4].type, "LINE");
+    EXPECT_EQ(d.entities[4].source, 1);
+}
+
 TEST(CamDxf, InsunitsScaleTheDrawingToMillimetres) {
     const std::string path = test::test_path("inches.dxf");
     test::DxfText().insunits(1).line(0, 0, 2, 1).write(path);
     const Drawing d = read_dxf(path, {});
     EXPECT_DOUBLE_EQ(d.entities[0].path.end.x_mm, 50.8);
     EXPECT_DOUBLE_EQ(d.entities[0].path.end.y_mm, 25.4);
+}
+
+// An arc whose extrusion direction is -Z is drawn in a mirrored coordinate system (world x = -x): the quarter arc
+// from 0 to 90 degrees about (10,0) is, seen from +Z, the clockwise one from (-15,0) to (-10,5) about (-10,0).
+TEST(CamDxf, MirroredArcsTurnClockwise) {
+    const std::string path = test::test_path("mirrored.dxf");
+    test::DxfText().arc(10, 0, 5, 0, 90, 256, -1.0).write(path);
+    const Drawing d = read_dxf(path, {});
+    ASSERT_EQ(d.entities.size(), 1u);
+    const geom::Segment& s = d.entities[0].path;
+    EXPECT_NEAR(s.center.x_mm, -10.0, 1e-12);
+    EXPECT_NEAR(s.start.x_mm, -15.0, 1e-12);
+    EXPECT_NEAR(s.start.y_mm, 0.0, 1e-12);
+    EXPECT_NEAR(s.end.x_mm, -10.0, 1e-12);
+    EXPECT_NEAR(s.end.y_mm, 5.0, 1e-12);
+    EXPECT_NEAR(s.sweep_rad, -M_PI / 2.0, 1e-12);
 }
 
 TEST(CamDxf, RedEntitiesAndRedLayersGetTheCutFeed) {

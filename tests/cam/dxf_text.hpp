@@ -26,11 +26,14 @@ public:
                                   y1, x2, y2);
         return *this;
     }
-    DxfText& arc(double cx, double cy, double r, double a1_deg, double a2_deg, int colour = 256) {
+    // extrusion_z -1: the arc's object coordinate system is mirrored (DXF groups 210, 220, 230).
+    DxfText& arc(double cx, double cy, double r, double a1_deg, double a2_deg, int colour = 256,
+                 double extrusion_z = 1.0) {
         m_entities +=
             "0\nARC\n" + common(colour, "0") +
             fmt::format(FMT_STRING("10\n{:.17g}\n20\n{:.17g}\n30\n0\n40\n{:.17g}\n50\n{:.17g}\n51\n{:.17g}\n"), cx, cy,
-                        r, a1_deg, a2_deg);
+                        r, a1_deg, a2_deg) +
+            fmt::format(FMT_STRING("210\n0\n220\n0\n230\n{:g}\n"), extrusion_z);
         return *this;
     }
     DxfText& circle(double cx, double cy, double r) {
@@ -45,6 +48,16 @@ public:
         for (const auto& v : vertices) {
             m_entities += fmt::format(FMT_STRING("10\n{:.17g}\n20\n{:.17g}\n42\n{:.17g}\n"), v[0], v[1], v[2]);
         }
+        return *this;
+    }
+    // The same as an old-style POLYLINE: a VERTEX entity per vertex, then SEQEND.
+    DxfText& polyline(const std::vector<std::vector<double>>& vertices, bool closed) {
+        m_entities += "0\nPOLYLINE\n" + common(256, "0") + fmt::format(FMT_STRING("66\n1\n70\n{}\n"), closed ? 1 : 0);
+        for (const auto& v : vertices) {
+            m_entities += "0\nVERTEX\n" + common(256, "0") +
+                          fmt::format(FMT_STRING("10\n{:.17g}\n20\n{:.17g}\n42\n{:.17g}\n"), v[0], v[1], v[2]);
+        }
+        m_entities += "0\nSEQEND\n" + common(256, "0");
         return *this;
     }
     // Any other entity, by its type name only (for the types the CAM does not read).

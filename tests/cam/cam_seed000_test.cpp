@@ -9,6 +9,7 @@
 #include "cam/ordering.hpp"
 #include "cam/route_stats.hpp"
 #include "dxf_text.hpp"
+#include "host/core/gcode.hpp"
 #include "support/test_path.hpp"
 
 namespace cnc::cam {
@@ -104,6 +105,29 @@ TEST(CamSeed000, WorkedExampleGcodeHasTwoRapidsAndNineteenCuts) {
     EXPECT_NE(g.find("G2 X275.000 Y200.000 I-25.000 J0.000 F800\n"), std::string::npos) << g;
     EXPECT_EQ(g.rfind("G21\nG90\nG17\nG94\n", 0), 0u);
     EXPECT_EQ(g.substr(g.size() - 4), "M30\n");
+}
+
+// The shipped job scenarios/compare/jobs/sample_drawing.nc is the same route written by hand from seed 000 §3.3 (with a
+// return to the origin at its end): the interpreter reads the same moves from both.
+TEST(CamSeed000, WorkedExampleMovesAreTheHandWrittenJobs) {
+    const Drawing d = read_dxf(example_dxf(), {});
+    std::istringstream ours(write_gcode(d.entities, order_routes(d.entities, Order::Seed000, {}), {}));
+    const host::InterpreterOptions opt;
+    const host::Program a = host::interpret(ours, "cam", opt);
+    const host::Program b =
+        host::interpret_file(std::string(CNC_SOURCE_DIR) + "/scenarios/compare/jobs/sample_drawing.nc", opt);
+    ASSERT_EQ(a.moves.size() + 1, b.moves.size());
+    for (std::size_t k = 0; k < a.moves.size(); ++k) {
+        const host::ProgrammedMove& x = a.moves[k];
+        const host::ProgrammedMove& y = b.moves[k];
+        EXPECT_EQ(x.kind, y.kind) << "move " << k;
+        EXPECT_NEAR(geom::distance(x.path.start, y.path.start), 0.0, 1e-9) << "move " << k;
+        EXPECT_NEAR(geom::distance(x.path.end, y.path.end), 0.0, 1e-9) << "move " << k;
+        if (x.path.is_arc) {
+            EXPECT_NEAR(geom::distance(x.path.center, y.path.center), 0.0, 1e-9) << "move " << k;
+            EXPECT_NEAR(x.path.sweep_rad, y.path.sweep_rad, 1e-9) << "move " << k;
+        }
+    }
 }
 
 // "On User Selection": the drawing's order, a rapid wherever an entity does not start where the last ended.

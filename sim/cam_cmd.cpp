@@ -88,9 +88,8 @@ std::optional<double> job_time(const std::string& self, const CamCommand& c, con
 
 int cmd_cam(const CamCommand& c, const std::string& self, std::ostream& out) {
     std::vector<std::string> sets = c.sets;
-    // The command runs the CAM itself: the scenario it loads for the machine and the [cam] keys takes the drawing
-    // as it is. --order and --skip-unread go first, so that a --set of their keys still wins.
-    sets.insert(sets.begin(), "scenario.job_format=gcode");
+    // The scenario gives the machine and the cam.* keys; --order and --skip-unread go first, so that a --set of
+    // their keys still wins.
     if (c.skip_unread) sets.insert(sets.begin(), "cam.skip_unread=true");
     if (!c.order.empty()) {
         (void)cam::parse_order(c.order);

@@ -35,6 +35,7 @@
 #include "output/samples_csv.hpp"
 #include "plots/run_plots.hpp"
 #include "run/run.hpp"
+#include "scenario/drawing_job.hpp"
 #include "scenario/key_listing.hpp"
 #include "scenario/scenario.hpp"
 
@@ -56,7 +57,7 @@ struct Input {
     [[nodiscard]] bool job() const { return cnc::sim::input_kind(file) == cnc::sim::InputKind::Job; }
 };
 
-cnc::sim::Scenario load_input(const Input& in, const std::vector<std::string>& sets) {
+cnc::sim::Scenario load_scenario_or_job(const Input& in, const std::vector<std::string>& sets) {
     if (!in.arch.empty()) (void)cnc::sim::find_architecture(in.arch, "--arch " + in.arch);
     if (in.job()) return cnc::sim::load_job_run({in.file, in.machine, in.arch}, sets);
     if (!in.machine.empty()) {
@@ -67,6 +68,13 @@ cnc::sim::Scenario load_input(const Input& in, const std::vector<std::string>& s
     std::vector<std::string> with_arch = sets;  // --arch first: a --set of the key still wins
     if (!in.arch.empty()) with_arch.insert(with_arch.begin(), "scenario.architecture=" + in.arch);
     return cnc::sim::load_scenario(in.file, with_arch);
+}
+
+// The scenario with its job ready to read: a DXF job's G-code written (drawing_job.hpp).
+cnc::sim::Scenario load_input(const Input& in, const std::vector<std::string>& sets) {
+    cnc::sim::Scenario s = load_scenario_or_job(in, sets);
+    cnc::sim::write_drawing_job(s);
+    return s;
 }
 
 int cmd_run(const Input& input, const std::vector<std::string>& sets, const std::string& vcd, const std::string& report,

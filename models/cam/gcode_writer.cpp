@@ -25,7 +25,7 @@ std::string write_gcode(const std::vector<Entity>& entities, const std::vector<R
                         const GcodeOptions& options) {
     std::string out = "G21\nG90\nG17\nG94\n";
     for (const Route& route : routes) {
-        out += "G0 " + xy(step_path(entities, route.front()).start) + "\n";
+        out += "G0 " + xy(step_start(entities, route.front())) + "\n";
         out += "M3 S" + fmt::format(FMT_STRING("{:g}"), options.laser_power) + "\n";
         for (const Step& step : route) {
             const Entity& e = entities.at(static_cast<std::size_t>(step.entity));

@@ -20,8 +20,8 @@ public:
     Tour(const std::vector<Entity>& entities, double tol, geom::Vec2 start)
         : m_entities(entities), m_tol(tol), m_start(start) {}
 
-    geom::Vec2 entry(const Route& r) const { return step_path(m_entities, r.front()).start; }
-    geom::Vec2 exit(const Route& r) const { return step_path(m_entities, r.back()).end; }
+    geom::Vec2 entry(const Route& r) const { return step_start(m_entities, r.front()); }
+    geom::Vec2 exit(const Route& r) const { return step_end(m_entities, r.back()); }
     bool closed(const Route& r) const { return geom::distance(entry(r), exit(r)) <= m_tol; }
 
     static void turn(Route& r) {
@@ -42,7 +42,7 @@ public:
                 const Route& r = chains[c];
                 if (closed(r)) {
                     for (std::size_t v = 0; v < r.size(); ++v) {
-                        const double d = geom::distance(at, step_path(m_entities, r[v]).start);
+                        const double d = geom::distance(at, step_start(m_entities, r[v]));
                         if (d < best) std::tie(best, best_chain, best_vertex, best_turned) = std::tuple(d, c, v, false);
                     }
                 } else {
@@ -113,7 +113,7 @@ private:
             double best = cost(entry(r));
             std::size_t best_vertex = 0;
             for (std::size_t v = 1; v < r.size(); ++v) {
-                const double c = cost(step_path(m_entities, r[v]).start);
+                const double c = cost(step_start(m_entities, r[v]));
                 if (c < best - kGainMm) {
                     best = c;
                     best_vertex = v;

@@ -73,11 +73,11 @@ private:
         // worked example start its main contour at (250,100).
         for (bool grew = true; grew;) {
             grew = false;
-            if (const auto next = connect(step_path(m_entities, chain.back()).end, false)) {
+            if (const auto next = connect(step_end(m_entities, chain.back()), false)) {
                 chain.push_back(*next);
                 grew = true;
             }
-            if (const auto prev = connect(step_path(m_entities, chain.front()).start, true)) {
+            if (const auto prev = connect(step_start(m_entities, chain.front()), true)) {
                 chain.push_front(*prev);
                 grew = true;
             }

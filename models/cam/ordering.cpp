@@ -12,7 +12,7 @@ template <typename Same>
 std::vector<Route> split_routes(const std::vector<Entity>& entities, const std::vector<Step>& sequence, Same same) {
     std::vector<Route> routes;
     for (const Step& s : sequence) {
-        if (routes.empty() || !same(step_path(entities, routes.back().back()).end, step_path(entities, s).start)) {
+        if (routes.empty() || !same(step_end(entities, routes.back().back()), step_start(entities, s))) {
             routes.emplace_back();
         }
         routes.back().push_back(s);
@@ -44,12 +44,22 @@ geom::Segment step_path(const std::vector<Entity>& entities, Step step) {
     return step.reversed ? reversed(s) : s;
 }
 
+geom::Vec2 step_start(const std::vector<Entity>& entities, Step step) {
+    const geom::Segment& s = entities.at(static_cast<std::size_t>(step.entity)).path;
+    return step.reversed ? s.end : s.start;
+}
+
+geom::Vec2 step_end(const std::vector<Entity>& entities, Step step) {
+    const geom::Segment& s = entities.at(static_cast<std::size_t>(step.entity)).path;
+    return step.reversed ? s.start : s.end;
+}
+
 double rapid_length_mm(const std::vector<Entity>& entities, const std::vector<Route>& routes, geom::Vec2 start_mm) {
     double total = 0.0;
     geom::Vec2 at = start_mm;
     for (const Route& r : routes) {
-        total += geom::distance(at, step_path(entities, r.front()).start);
-        at = step_path(entities, r.back()).end;
+        total += geom::distance(at, step_start(entities, r.front()));
+        at = step_end(entities, r.back());
     }
     return total;
 }

@@ -45,8 +45,10 @@ std::vector<Route> seed000_routes(const std::vector<Entity>& entities, double jo
 std::vector<Step> seed003_sequence(const std::vector<Entity>& entities, const std::optional<double>& tolerance_mm);
 std::vector<Route> optimized_routes(const std::vector<Entity>& entities, double join_tolerance_mm, geom::Vec2 start_mm);
 
-// The path of one step, in the direction it is cut.
+// The path of one step, in the direction it is cut, and where it starts and ends.
 geom::Segment step_path(const std::vector<Entity>& entities, Step step);
+geom::Vec2 step_start(const std::vector<Entity>& entities, Step step);
+geom::Vec2 step_end(const std::vector<Entity>& entities, Step step);
 // The rapid length of routes: from `start_mm` to the first route's start, and from each route's end to the next's.
 double rapid_length_mm(const std::vector<Entity>& entities, const std::vector<Route>& routes, geom::Vec2 start_mm);
 

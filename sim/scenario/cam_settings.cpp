@@ -1,46 +1,10 @@
 #include "scenario/cam_settings.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
-
-#include "common/bad_input.hpp"
 
 namespace cnc::sim {
-
-namespace {
-
-namespace fs = std::filesystem;
-
-// The temporary G-code files of DXF jobs, removed when cncsim ends (every architecture reads the job from its file).
-class TemporaryFiles {
-public:
-    ~TemporaryFiles() {
-        for (const std::string& p : m_paths) {
-            std::error_code ec;
-            fs::remove(p, ec);
-        }
-    }
-    std::string make(const std::string& stem) {
-        const fs::path p = fs::temp_directory_path() / ("cncsim-" + std::to_string(getpid()) + "-" +
-                                                        std::to_string(m_paths.size()) + "-" + stem + ".nc");
-        m_paths.push_back(p.string());
-        return p.string();
-    }
-
-private:
-    std::vector<std::string> m_paths;
-};
-
-TemporaryFiles& temporary_files() {
-    static TemporaryFiles files;
-    return files;
-}
-
-}  // namespace
 
 void read_cam_settings(KeyReader& r, CamSettings& s) {
     cam::CamOptions& o = s.options;
@@ -71,25 +35,13 @@ void read_cam_settings(KeyReader& r, CamSettings& s) {
     s.gcode_path = r.get_string("cam.gcode", "",
                                 "where a DXF job's G-code is written (relative to the working folder); empty: a "
                                 "temporary file, removed when cncsim ends");
+    s.gcode_where = r.where("cam.gcode");
 }
 
 bool is_drawing(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
+    std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     return ext == ".dxf";
-}
-
-std::string drawing_to_gcode(const std::string& drawing_path, const CamSettings& s, const host::MachineModel& machine,
-                             const KeyReader& r) {
-    const cam::Drawing drawing = cam::load_drawing(drawing_path, s.options, machine);
-    const cam::CamOutput out = cam::cam_output(drawing, s.options.order, s.options);
-    const std::string path =
-        s.gcode_path.empty() ? temporary_files().make(fs::path(drawing_path).stem().string()) : s.gcode_path;
-    std::ofstream file(path);
-    file << out.gcode;
-    file.close();
-    if (!file) r.fail("cam.gcode", "cannot write the drawing's G-code to " + path);
-    return path;
 }
 
 }  // namespace cnc::sim

@@ -429,13 +429,6 @@ Scenario load_document(toml::table root, const std::string& file, const fs::path
     KeyReader reader(root, file, overridden);
     Scenario s = read(reader, file, base);
     reader.reject_unknown_keys();
-    if (!s.drawing_path.empty()) {
-        std::error_code ec;
-        if (!fs::is_regular_file(s.drawing_path, ec)) {
-            reader.fail("scenario.job", "the drawing " + s.drawing_path + " is not a file");
-        }
-        s.job_path = drawing_to_gcode(s.drawing_path, s.cam, s.machine, reader);
-    }
     if (job == JobNeed::Required && s.job_path.empty() && find_architecture(s.architecture, file).job_use().runs_job) {
         reader.fail("scenario.job", "missing: the job file to run is required");
     }

@@ -33,7 +33,8 @@ struct Scenario {
     std::string job_path;      // resolved against the scenario's folder
     std::string job_key;       // where scenario.job was set ("s.toml:3: scenario.job", "--set scenario.job")
     JobFormat job_format = JobFormat::GCode;
-    // A DXF job (scenario.job_format, docs/cam.md): the drawing, whose G-code job_path then names.
+    // A DXF job (scenario.job_format, docs/cam.md): the drawing; job_path names it until write_drawing_job
+    // (drawing_job.hpp) names its G-code instead.
     std::string drawing_path;
     CamSettings cam;
     std::uint64_t seed = 1;

@@ -109,8 +109,9 @@ int cmd_cam(const CamCommand& c, const std::string& self, std::ostream& out) {
     std::vector<Ordered> rows;
     for (std::size_t i = 0; i < cam::order_names().size(); ++i) {
         const auto order = static_cast<cam::Order>(i);
-        if (c.compare_orders || order == options.order)
+        if (c.compare_orders || order == options.order) {
             rows.push_back({order, cam::cam_output(drawing, order, options), {}});
+        }
     }
     if (!c.out.empty()) {
         for (const Ordered& o : rows) {

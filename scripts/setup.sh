@@ -7,7 +7,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libsystemc-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev
-  libeigen3-dev libboost-dev libfmt-dev
+  libeigen3-dev libboost-dev libfmt-dev libdxflib-dev
   python3 sigrok-cli
   gnuplot-nox libxml2-utils python3-pil
   clang libclang-rt-14-dev llvm

@@ -18,6 +18,7 @@
 #include <systemc>
 
 #include "architectures/catalog.hpp"
+#include "cam_cmd.hpp"
 #include "common/bad_input.hpp"
 #include "compare/compare.hpp"
 #include "compare/compare_check.hpp"
@@ -34,6 +35,7 @@
 #include "output/samples_csv.hpp"
 #include "plots/run_plots.hpp"
 #include "run/run.hpp"
+#include "scenario/drawing_job.hpp"
 #include "scenario/key_listing.hpp"
 #include "scenario/scenario.hpp"
 
@@ -55,7 +57,7 @@ struct Input {
     [[nodiscard]] bool job() const { return cnc::sim::input_kind(file) == cnc::sim::InputKind::Job; }
 };
 
-cnc::sim::Scenario load_input(const Input& in, const std::vector<std::string>& sets) {
+cnc::sim::Scenario load_scenario_or_job(const Input& in, const std::vector<std::string>& sets) {
     if (!in.arch.empty()) (void)cnc::sim::find_architecture(in.arch, "--arch " + in.arch);
     if (in.job()) return cnc::sim::load_job_run({in.file, in.machine, in.arch}, sets);
     if (!in.machine.empty()) {
@@ -66,6 +68,13 @@ cnc::sim::Scenario load_input(const Input& in, const std::vector<std::string>& s
     std::vector<std::string> with_arch = sets;  // --arch first: a --set of the key still wins
     if (!in.arch.empty()) with_arch.insert(with_arch.begin(), "scenario.architecture=" + in.arch);
     return cnc::sim::load_scenario(in.file, with_arch);
+}
+
+// The scenario with its job ready to read: a DXF job's G-code written (drawing_job.hpp).
+cnc::sim::Scenario load_input(const Input& in, const std::vector<std::string>& sets) {
+    cnc::sim::Scenario s = load_scenario_or_job(in, sets);
+    cnc::sim::write_drawing_job(s);
+    return s;
 }
 
 int cmd_run(const Input& input, const std::vector<std::string>& sets, const std::string& vcd, const std::string& report,
@@ -296,7 +305,8 @@ int dispatch(int argc, char* argv[]) {
     bool detail = false;
 
     const std::string input_help =
-        "scenario (TOML), or a job (G-code: .nc, .ngc, .gcode, .tap, .txt, ...; a steps file) to run on --machine "
+        "scenario (TOML), or a job (G-code: .nc, .ngc, .gcode, .tap, .txt, ...; a steps file; a DXF drawing) to run "
+        "on --machine "
         "or the default machine (docs/usage.md says how the two are told apart)";
     const std::string machine_help =
         "with a job: the machine file (TOML: its [machine], [driver], [motor], [mechanics] tables; `cncsim init` "
@@ -389,6 +399,24 @@ int dispatch(int argc, char* argv[]) {
     curve->add_option("--axis", curve_axis, "axis")->check(CLI::IsMember({"x", "y"}))->capture_default_str();
     curve->add_option("--csv", curve_csv, "also write the table as CSV to this file");
 
+    cnc::sim::CamCommand cam_cmd;
+    CLI::App* cam =
+        app.add_subcommand("cam", "a DXF drawing to G-code: the seeds' path orderings and ours (docs/cam.md)");
+    cam->add_option("drawing", cam_cmd.drawing, "DXF drawing (ASCII): LINE, ARC, CIRCLE, LWPOLYLINE, POLYLINE")
+        ->required();
+    cam->add_option("--order", cam_cmd.order,
+                    "selection, seed000, seed003 or optimized (sets cam.order; default "
+                    "seed000)");
+    cam->add_option("--out", cam_cmd.out, "write the G-code to this file");
+    cam->add_flag("--compare-orders", cam_cmd.compare_orders, "every ordering side by side");
+    cam->add_option("--arch", cam_cmd.arch,
+                    "with --compare-orders: run each ordering's G-code on this architecture and show its job time");
+    cam->add_option("--machine", cam_cmd.machine,
+                    "machine file (TOML): its axes' travel bounds the drawing, its start position the first rapid");
+    cam->add_flag("--skip-unread", cam_cmd.skip_unread,
+                  "leave out entity types the CAM does not read, listing them (sets cam.skip_unread)");
+    cam->add_option("--set", cam_cmd.sets, "override a scenario key: key=value (repeatable; cam.* keys: docs/cam.md)");
+
     CLI::App* keys = app.add_subcommand(
         "keys", "print the scenario keys (type, default, range, meaning): Markdown, or lines to fit a terminal");
     keys->add_option("prefix", keys_prefix, "only the keys that start with it (machine.x, link, ...)");
@@ -415,6 +443,9 @@ int dispatch(int argc, char* argv[]) {
             return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, commanded, report);
         }
         if (init->parsed()) return cnc::sim::cmd_init(init_dir, std::cout);
+        if (cam->parsed()) {
+            return cnc::sim::cmd_cam(cam_cmd, std::filesystem::read_symlink("/proc/self/exe").string(), std::cout);
+        }
         return cmd_keys(keys_prefix);
     } catch (const cnc::BadInput& e) {
         std::cerr << "cncsim: " << e.what() << '\n';

@@ -36,16 +36,18 @@ nlohmann::json machine_json(const Scenario& s) {
 }
 
 nlohmann::json scenario_json(const Scenario& s, const ArchRun& arch) {
-    return {{"name", s.name},
-            {"file", s.file},
-            {"architecture", s.architecture},
-            {"job", s.job_path},
-            {"seed", s.seed},
-            {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}},
-            {"machine", machine_json(s)},
-            {"detail", s.detail},
-            {"estimated_s", arch.estimated_s},
-            {"max_sim_s", arch.max_sim_s}};
+    nlohmann::json j = {{"name", s.name},
+                        {"file", s.file},
+                        {"architecture", s.architecture},
+                        {"job", s.job_path},
+                        {"seed", s.seed},
+                        {"steps_per_mm", {s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()}},
+                        {"machine", machine_json(s)},
+                        {"detail", s.detail},
+                        {"estimated_s", arch.estimated_s},
+                        {"max_sim_s", arch.max_sim_s}};
+    if (!s.drawing_path.empty()) j["drawing"] = s.drawing_path;  // the DXF job, whose G-code "job" is
+    return j;
 }
 
 // One entry per kind (common/warning.hpp); with `detail` also every warning of the kind, as worded one by one.
@@ -116,7 +118,8 @@ RunOutcome run_scenario(const Scenario& s) {
 
     std::ostringstream text;
     text << "cncsim run: " << s.name << " (" << s.architecture << ")"
-         << (s.job_path.empty() ? std::string() : ", job " + s.job_path) << "\n\n";
+         << (s.job_path.empty() ? std::string() : ", job " + s.job_path)
+         << (s.drawing_path.empty() ? std::string() : " (the G-code of " + s.drawing_path + ")") << "\n\n";
     if (!arch.ok) {
         text << "PARTIAL: the run failed (" << arch.failure
              << ").\nThe figures below cover only what ran before it stopped; they are not a result.\n\n";

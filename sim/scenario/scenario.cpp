@@ -18,6 +18,7 @@
 #include "host/core/soft_limits.hpp"
 #include "host/core/tool_table.hpp"
 #include "metrics/vcd/vcd_timescale.hpp"
+#include "scenario/cam_settings.hpp"
 
 namespace cnc::sim {
 
@@ -235,8 +236,9 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
     s.name = r.get_string("scenario.name", fs::path(file).stem().string(), "name shown in reports");
     s.architecture = r.get_choice("scenario.architecture", architecture_names().front(), architecture_names(),
                                   "controller architecture (docs/architectures.md)");
-    const std::string job =
-        r.get_string("scenario.job", "", "job file, relative to the scenario: G-code, or a seed 000 steps file");
+    const std::string job = r.get_string("scenario.job", "",
+                                         "job file, relative to the scenario: G-code, a seed 000 steps file, or a DXF "
+                                         "drawing that the CAM turns into G-code first ([cam], docs/cam.md)");
     const std::string tool_table = r.get_string(
         "scenario.tool_table", "",
         "LinuxCNC tool-table file, relative to the scenario (lines `T1 P1 D3.0 Z+0.5 ;comment`: tool, pocket, "
@@ -244,8 +246,9 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
         "G40/G41/G42/G41.1/G42.1 (D) are executed as LinuxCNC does (docs/gcode.md); empty: none, and those words "
         "are ignored");
     r.get_string("scenario.machine", "", kMachineDoc);  // its tables joined the document before this reading
-    const std::string format = r.get_choice("scenario.job_format", "auto", {"auto", "gcode", "steps"},
-                                            "job format; auto: .steps and .csv are steps files, the rest G-code");
+    const std::string format =
+        r.get_choice("scenario.job_format", "auto", {"auto", "gcode", "steps", "drawing"},
+                     "job format; auto: .steps and .csv are steps files, .dxf a drawing, the rest G-code");
     s.seed = static_cast<std::uint64_t>(r.get_int("scenario.seed", 1, 0, INT64_MAX, "seed of every random source"));
     const double max_sim_s = r.get_float(
         "scenario.max_sim_s", 0.0, 0.0, 1e6,
@@ -293,6 +296,9 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
                                            "unit of F in the job (seed 003 used mm/s)") == "mm/min"
                                   ? host::FeedUnit::MmPerMinute
                                   : host::FeedUnit::MmPerSecond;
+    read_cam_settings(r, s.cam);
+    s.cam.options.gcode.feed_in_mm_per_s = s.interpreter.feed_unit == host::FeedUnit::MmPerSecond;
+    s.cam.options.ordering.start_mm = s.interpreter.start_mm;
 
     read_fault_settings(r, s.seed, s.faults);
     read_events(r, s.events);
@@ -336,6 +342,7 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
         const std::string ext = fs::path(job).extension().string();
         const bool steps = format == "steps" || (format == "auto" && (ext == ".steps" || ext == ".csv"));
         s.job_format = steps ? JobFormat::Steps : JobFormat::GCode;
+        if (format == "drawing" || (format == "auto" && is_drawing(job))) s.drawing_path = s.job_path;
     }
     return s;
 }
@@ -475,7 +482,7 @@ InputKind input_kind(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     if (ext == ".toml") return InputKind::Scenario;
-    for (const char* job : {".nc", ".ngc", ".gcode", ".gco", ".g", ".tap", ".cnc", ".txt", ".steps", ".csv"}) {
+    for (const char* job : {".nc", ".ngc", ".gcode", ".gco", ".g", ".tap", ".cnc", ".txt", ".steps", ".csv", ".dxf"}) {
         if (ext == job) return InputKind::Job;
     }
     std::ifstream in(path);

@@ -15,6 +15,7 @@
 #include "host/core/machine.hpp"
 #include "mechanics/core/drv8825_config.hpp"
 #include "run/progress.hpp"
+#include "scenario/cam_settings.hpp"
 #include "scenario/event_settings.hpp"
 #include "scenario/fault_settings.hpp"
 #include "scenario/key_reader.hpp"
@@ -32,6 +33,10 @@ struct Scenario {
     std::string job_path;      // resolved against the scenario's folder
     std::string job_key;       // where scenario.job was set ("s.toml:3: scenario.job", "--set scenario.job")
     JobFormat job_format = JobFormat::GCode;
+    // A DXF job (scenario.job_format, docs/cam.md): the drawing; job_path names it until write_drawing_job
+    // (drawing_job.hpp) names its G-code instead.
+    std::string drawing_path;
+    CamSettings cam;
     std::uint64_t seed = 1;
     std::optional<double> max_sim_s;  // set by the scenario; else the job's own limit (run/job_estimate.hpp)
 
@@ -90,7 +95,7 @@ const std::vector<std::string>& machine_tables();
 [[nodiscard]] bool is_machine_key(const std::string& key);
 
 // What `cncsim run FILE` takes FILE for. By its extension: .toml a scenario; .nc, .ngc, .gcode, .gco, .g, .tap,
-// .cnc, .txt, .steps and .csv a job. Otherwise by its first line that is neither blank nor a TOML comment: a
+// .cnc, .txt, .steps, .csv and .dxf a job. Otherwise by its first line that is neither blank nor a TOML comment: a
 // table header ([...]) or a key = value assignment is a scenario, anything else (G-code) a job. A file that
 // cannot be read is a scenario, so that its message names it as one.
 enum class InputKind { Scenario, Job };

@@ -36,6 +36,7 @@
 #include "run/run.hpp"
 #include "scenario/key_listing.hpp"
 #include "scenario/scenario.hpp"
+#include "sweep_cmd.hpp"
 
 namespace {
 
@@ -387,6 +388,18 @@ int dispatch(int argc, char* argv[]) {
     curve->add_option("--axis", curve_axis, "axis")->check(CLI::IsMember({"x", "y"}))->capture_default_str();
     curve->add_option("--csv", curve_csv, "also write the table as CSV to this file");
 
+    std::string sweep_file;
+    std::size_t sweep_jobs = 0;
+    CLI::App* sweep = app.add_subcommand(
+        "sweep", "a design-space study: every point of a sweep file as its own run, the results tabled and plotted");
+    sweep->add_option("file", sweep_file, "sweep file (TOML, docs/sweeps.md)")->required();
+    sweep
+        ->add_option("--out", out_dir,
+                     "write here: each point's report, results.csv, results.json, summary.md, "
+                     "plots/; a rerun resumes from what is there")
+        ->required();
+    sweep->add_option("--jobs", sweep_jobs, "points run at once (default: the cores)")->check(CLI::PositiveNumber);
+
     CLI::App* keys = app.add_subcommand(
         "keys", "print the scenario keys (type, default, range, meaning): Markdown, or lines to fit a terminal");
     keys->add_option("prefix", keys_prefix, "only the keys that start with it (machine.x, link, ...)");
@@ -413,6 +426,7 @@ int dispatch(int argc, char* argv[]) {
             return cmd_analyze(vcd_in, analyze_axes(steps, dirs, enables), steps_per_mm, commanded, report);
         }
         if (init->parsed()) return cnc::sim::cmd_init(init_dir, std::cout);
+        if (sweep->parsed()) return cnc::sim::cmd_sweep(sweep_file, out_dir, sweep_jobs);
         return cmd_keys(keys_prefix);
     } catch (const cnc::BadInput& e) {
         std::cerr << "cncsim: " << e.what() << '\n';

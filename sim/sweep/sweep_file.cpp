@@ -1,5 +1,6 @@
 #include "sweep/sweep_file.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -213,6 +214,40 @@ bool valid_name(const std::string& s) {
     return true;
 }
 
+// [search]: its own study of `key` and `with` zipped, without values until the search adds them.
+void read_search(SweepSpec& spec, const toml::table& t) {
+    const Table r(spec, t, "search");
+    r.only({"key", "with", "from", "to", "tolerance", "holds"});
+    SweepSearch search{line_of(t), r.number("from"), r.number("to"), r.number("tolerance"), {}};
+    if (search.tolerance <= 0.0) r.fail(r.get("tolerance"), "tolerance", "must be > 0");
+    if (search.to <= search.from) r.fail(r.get("to"), "to", "must be above from");
+    SweepStudy study{"search", line_of(t), true, {}, {}};
+    const std::string key = r.string("key");
+    if (key.empty()) r.fail(r.get("key"), "key", "missing: the scenario key whose largest value is searched");
+    study.axes.push_back({key, r.line("key"), {}});
+    for (const std::string& k : r.strings("with")) study.axes.push_back({k, r.line("with"), {}});
+    const toml::array* holds = r.array("holds", true);
+    if (holds == nullptr) r.fail(nullptr, "holds", "missing: [{ metric = \"/...\", max = ... }, ...]");
+    for (std::size_t i = 0; i < holds->size(); ++i) {
+        const toml::node& e = *holds->get(i);
+        if (!e.is_table()) r.fail(&e, "holds", "expected a list of tables { metric = \"/...\", max = ..., min = ... }");
+        const Table c(spec, *e.as_table(), "search.holds[" + std::to_string(i) + "]");
+        c.only({"metric", "max", "min"});
+        SweepCondition cond{{c.string("metric"), line_of(e)}, {}, {}};
+        if (cond.metric.pointer.empty() || cond.metric.pointer.front() != '/')
+            c.fail(c.get("metric"), "metric", "a JSON pointer into the report, \"/metrics/path/following_max_um\"");
+        if (c.get("max") != nullptr) cond.max = c.number("max");
+        if (c.get("min") != nullptr) cond.min = c.number("min");
+        if (!cond.max && !cond.min) c.fail(nullptr, "max", "give max, min or both: what the metric must stay within");
+        search.holds.push_back(cond);
+        // Collected too, in results.csv and the summary.
+        const auto same = [&](const SweepMetric& m) { return m.pointer == cond.metric.pointer; };
+        if (std::none_of(spec.metrics.begin(), spec.metrics.end(), same)) spec.metrics.push_back(cond.metric);
+    }
+    spec.studies.push_back(std::move(study));
+    spec.search = std::move(search);
+}
+
 }  // namespace
 
 std::string SweepSpec::where(int line, const std::string& what) const {
@@ -265,7 +300,8 @@ SweepSpec read_sweep_file(const std::string& path) {
     const toml::table root = parse_toml(path, "sweep file");
     const fs::path base = fs::path(path).parent_path();
     const Table r(spec, root, "");
-    r.only({"scenario", "job", "machine", "architectures", "seeds", "set", "metrics", "vary", "mode", "study"});
+    r.only(
+        {"scenario", "job", "machine", "architectures", "seeds", "set", "metrics", "vary", "mode", "study", "search"});
     const std::string scenario = r.string("scenario");
     const std::string job = r.string("job");
     if (scenario.empty() == job.empty())
@@ -298,11 +334,22 @@ SweepSpec read_sweep_file(const std::string& path) {
     spec.sets = r.sets("set");
     spec.metrics_line = r.line("metrics");
     const toml::array* metrics = r.array("metrics", true);
-    if (metrics == nullptr) r.fail(nullptr, "metrics", "missing: the JSON pointers of the report to collect");
-    for (const toml::node& e : *metrics) {
+    if (metrics == nullptr && r.get("search") == nullptr)
+        r.fail(nullptr, "metrics", "missing: the JSON pointers of the report to collect");
+    for (std::size_t i = 0; metrics != nullptr && i < metrics->size(); ++i) {
+        const toml::node& e = *metrics->get(i);
         if (!e.is_string() || e.as_string()->get().empty() || e.as_string()->get().front() != '/')
             r.fail(&e, "metrics", "a metric is a JSON pointer into the report, \"/metrics/path/following_max_um\"");
         spec.metrics.push_back({e.as_string()->get(), line_of(e)});
+    }
+    if (const toml::node* search = r.get("search")) {
+        if (!search->is_table()) r.fail(search, "search", "expected a [search] table");
+        for (const char* k : {"vary", "mode", "study", "seeds"}) {
+            if (r.get(k) != nullptr)
+                r.fail(r.get(k), k, "goes with a grid; a sweep file with [search] runs the search");
+        }
+        read_search(spec, *search->as_table());
+        return spec;
     }
     const toml::array* studies = r.array("study", true);
     if (studies != nullptr && (r.get("vary") != nullptr || r.get("mode") != nullptr))

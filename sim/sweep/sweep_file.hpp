@@ -3,6 +3,7 @@
 // to collect. Read and checked here without running anything: every message names the file, the line and the key.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,26 @@ struct SweepMetric {
     int line = 0;
 };
 
+// A condition a search asks of a point's report: its metric at most `max` and at least `min` (those given).
+struct SweepCondition {
+    SweepMetric metric;
+    std::optional<double> max;
+    std::optional<double> min;
+};
+
+// [search]: the largest value of `key` in [from, to] for which every condition holds, per architecture, by bisection
+// until the value that holds and the one that fails are at most `tolerance` apart; the values tried are from + k x
+// tolerance, and `to`. The conditions are taken to hold at `from` (not run) and to fail above the answer once they
+// fail. Its points form the file's one study, named "search": `key` and each key of `with` (set to the same value)
+// zipped, the values added as the search tries them.
+struct SweepSearch {
+    int line = 0;
+    double from = 0.0;
+    double to = 0.0;
+    double tolerance = 0.0;
+    std::vector<SweepCondition> holds;
+};
+
 struct SweepSpec {
     std::string file;     // the sweep file as given
     std::string input;    // the scenario or job every point runs, resolved against the sweep file's folder
@@ -59,6 +80,7 @@ struct SweepSpec {
     std::vector<SweepMetric> metrics;
     int metrics_line = 0;
     std::vector<SweepStudy> studies;
+    std::optional<SweepSearch> search;
 
     // "FILE:LINE: what" for messages.
     [[nodiscard]] std::string where(int line, const std::string& what) const;

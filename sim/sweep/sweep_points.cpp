@@ -30,9 +30,24 @@ std::string SweepPoint::id() const {
     return fmt::format(FMT_STRING("{:05d}"), index);
 }
 
+SweepPoint make_point(const SweepSpec& spec, std::size_t index, std::size_t study_index,
+                      const std::string& architecture, const std::vector<std::size_t>& value_index,
+                      std::optional<std::int64_t> seed) {
+    const SweepStudy& study = spec.studies[study_index];
+    SweepPoint p{index, study_index, architecture, value_index, seed, {"scenario.architecture=" + architecture}};
+    for (const SweepSet& s : spec.sets) p.sets.push_back(s.assignment);
+    for (const SweepSet& s : study.sets) p.sets.push_back(s.assignment);
+    for (std::size_t a = 0; a < value_index.size(); ++a)
+        p.sets.push_back(study.axes[a].key + "=" + study.axes[a].values[value_index[a]].toml);
+    if (seed) p.sets.push_back("scenario.seed=" + std::to_string(*seed));
+    return p;
+}
+
+std::vector<std::string> point_architectures(const SweepSpec& spec, const std::string& default_architecture) {
+    return spec.architectures.empty() ? std::vector<std::string>{default_architecture} : spec.architectures;
+}
+
 std::vector<SweepPoint> expand_points(const SweepSpec& spec, const std::string& default_architecture) {
-    const std::vector<std::string> architectures =
-        spec.architectures.empty() ? std::vector<std::string>{default_architecture} : spec.architectures;
     const std::vector<std::optional<std::int64_t>> seeds = [&] {
         std::vector<std::optional<std::int64_t>> s(spec.seeds.begin(), spec.seeds.end());
         if (s.empty()) s.emplace_back();
@@ -40,19 +55,11 @@ std::vector<SweepPoint> expand_points(const SweepSpec& spec, const std::string& 
     }();
     std::vector<SweepPoint> points;
     for (std::size_t st = 0; st < spec.studies.size(); ++st) {
-        const SweepStudy& study = spec.studies[st];
-        const std::vector<std::vector<std::size_t>> combos = combinations(study);
-        for (const std::string& arch : architectures) {
+        const std::vector<std::vector<std::size_t>> combos = combinations(spec.studies[st]);
+        for (const std::string& arch : point_architectures(spec, default_architecture)) {
             for (const std::vector<std::size_t>& combo : combos) {
-                for (const std::optional<std::int64_t>& seed : seeds) {
-                    SweepPoint p{points.size(), st, arch, combo, seed, {"scenario.architecture=" + arch}};
-                    for (const SweepSet& s : spec.sets) p.sets.push_back(s.assignment);
-                    for (const SweepSet& s : study.sets) p.sets.push_back(s.assignment);
-                    for (std::size_t a = 0; a < combo.size(); ++a)
-                        p.sets.push_back(study.axes[a].key + "=" + study.axes[a].values[combo[a]].toml);
-                    if (seed) p.sets.push_back("scenario.seed=" + std::to_string(*seed));
-                    points.push_back(std::move(p));
-                }
+                for (const std::optional<std::int64_t>& seed : seeds)
+                    points.push_back(make_point(spec, points.size(), st, arch, combo, seed));
             }
         }
     }

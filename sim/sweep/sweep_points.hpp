@@ -28,8 +28,12 @@ struct SweepPoint {
     [[nodiscard]] std::string id() const;
 };
 
-// `default_architecture`: the scenario's own, when the file names none.
+// The file's architectures, or `default_architecture` (the scenario's own) when it names none.
+std::vector<std::string> point_architectures(const SweepSpec& spec, const std::string& default_architecture);
 std::vector<SweepPoint> expand_points(const SweepSpec& spec, const std::string& default_architecture);
+// One point: the study's values value_index (one per axis) on `architecture`, with its --set list.
+SweepPoint make_point(const SweepSpec& spec, std::size_t index, std::size_t study, const std::string& architecture,
+                      const std::vector<std::size_t>& value_index, std::optional<std::int64_t> seed);
 
 // A point's record (points/ID.done.json), written when its child ended by itself: the sets it ran with, the
 // child's exit code and, when it failed, its message (its last line on stderr).

@@ -256,6 +256,12 @@ std::size_t write_sweep_plots(const SweepSpec& spec, const std::vector<SweepRow>
             lines[label].push_back(&g);
             arch_of[label] = g.first->architecture;
         }
+        // A search tries its values out of order.
+        for (auto& [label, line] : lines) {
+            std::stable_sort(line.begin(), line.end(), [&](const Group* a, const Group* b) {
+                return x.values[a->first->value_index[0]].number < x.values[b->first->value_index[0]].number;
+            });
+        }
         std::map<std::string, std::size_t> per_arch;
         for (const std::string& l : order) ++per_arch[arch_of[l]];
         double lo = 1e300;

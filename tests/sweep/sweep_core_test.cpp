@@ -1,4 +1,4 @@
-// The statistics across seeds, and the records a rerun reads to skip the points done.
+// The statistics across seeds, the records a rerun reads to skip the points done, and the search's bisection.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sweep/sweep_points.hpp"
+#include "sweep/sweep_search.hpp"
 #include "sweep/sweep_stats.hpp"
 
 TEST(SweepStats, MeanExtremesAndStudentInterval) {
@@ -51,4 +52,43 @@ TEST(SweepRecord, ARerunSkipsAPointOnlyWithItsOwnSets) {
 TEST(SweepRecord, FailureMessageIsTheLastLineOnStderr) {
     EXPECT_EQ(cnc::sim::failure_message("progress\ncncsim: run failed: x\n\n", 1), "cncsim: run failed: x");
     EXPECT_EQ(cnc::sim::failure_message("", 3), "exit code 3, nothing on stderr");
+}
+
+namespace {
+
+// The bisection against a condition that holds up to `limit`: the values tried and the answer.
+cnc::sim::Bisection search_up_to(double limit, double from, double to, double tolerance) {
+    cnc::sim::Bisection b(from, to, tolerance);
+    for (int guard = 0; guard < 100 && b.next(); ++guard) b.record(*b.next() <= limit);
+    return b;
+}
+
+}  // namespace
+
+TEST(SweepSearch, BisectionEndsOnTheGridAroundTheLimit) {
+    // Holding up to 2650 on the grid 0, 60, 120, ...: the largest grid value that holds is 44 x 60 = 2640, the next
+    // one, 2700, fails; at most log2(4800 / 60) + 2 values are tried.
+    const cnc::sim::Bisection b = search_up_to(2650.0, 0.0, 4800.0, 60.0);
+    EXPECT_EQ(b.good(), 2640.0);
+    ASSERT_TRUE(b.bad());
+    EXPECT_EQ(*b.bad(), 2700.0);
+    EXPECT_TRUE(b.any_held());
+    EXPECT_LE(b.tried().size(), 9u);
+    EXPECT_EQ(b.tried().front(), std::make_pair(4800.0, false));  // `to` first
+    for (const auto& [v, holds] : b.tried()) {
+        EXPECT_EQ(std::fmod(v, 60.0), 0.0) << v;
+        EXPECT_EQ(holds, v <= 2650.0) << v;
+    }
+}
+
+TEST(SweepSearch, HoldingAtTheEndOrNowhere) {
+    const cnc::sim::Bisection all = search_up_to(1e9, 0.0, 4800.0, 60.0);
+    EXPECT_EQ(all.good(), 4800.0);
+    EXPECT_FALSE(all.bad());
+    EXPECT_EQ(all.tried().size(), 1u);
+    const cnc::sim::Bisection none = search_up_to(-1.0, 100.0, 1000.0, 100.0);
+    EXPECT_FALSE(none.any_held());
+    EXPECT_EQ(none.good(), 100.0);  // `from`, taken to hold, never tried
+    ASSERT_TRUE(none.bad());
+    EXPECT_EQ(*none.bad(), 200.0);
 }

@@ -109,4 +109,13 @@ TEST(SweepFile, RefusalsNameTheLineAndTheKey) {
     EXPECT_NE(refusal("r9.toml", "scenario = \"s.toml\"\nmetrics = [\"a/b\"]\n" + vary).find("r9.toml:2: metrics"),
               std::string::npos);
     EXPECT_EQ(refusal("ok.toml", kHead + vary), "");
+    const std::string search = "[search]\nkey = \"k.x\"\nfrom = 0\nto = 10\nholds = [{ metric = \"/a\", max = 0 }]\n";
+    EXPECT_NE(refusal("s1.toml", kHead + search + "tolerance = 0\n").find("s1.toml:8: search.tolerance: must be > 0"),
+              std::string::npos);
+    EXPECT_NE(refusal("s2.toml", kHead + "seeds = 3\n" + search + "tolerance = 1\n").find("s2.toml:3: seeds"),
+              std::string::npos);
+    EXPECT_NE(refusal("s3.toml", kHead + search.substr(0, search.find("holds")) + "holds = [{ metric = \"/a\" }]\n" +
+                                     "tolerance = 1\n")
+                  .find("s3.toml:7: search.holds[0].max: give max, min or both"),
+              std::string::npos);
 }

@@ -11,6 +11,9 @@
 - resume: tests/data/sweeps/square_seeds.toml stopped by SIGINT after some points (exit 130, no results), then run
   again: the points done are not run again (their records and reports untouched, the rerun runs only the others),
   and the results equal an uninterrupted run's byte for byte.
+- feed_search: sweeps/lost_step_feed.toml's [search] on fpga-uart finds the highest feed without a lost step that
+  docs/mechanics.md states (F2640, F2700 losing steps), within the search's tolerance; a `cncsim run` made here at
+  the feed found loses no step, one at the smallest failing feed loses some.
 - bad_input: an unknown key, an empty value list, a range with step 0, a value out of its key's range and a metric
   pointer the report does not have each exit 2 naming the sweep file's line and the key, and write no results.
 """
@@ -152,6 +155,41 @@ def resume(cncsim, source, work):
     print("interrupted after %d of %d points; resumed, the same results" % (len(done), total))
 
 
+def feed_search(cncsim, source, work):
+    with open(os.path.join(source, "sweeps", "lost_step_feed.toml")) as f:
+        text = f.read()
+    scenario = os.path.join(source, "scenarios", "mechanics", "six_segment_f4800.toml")
+    text = text.replace('"../scenarios/mechanics/six_segment_f4800.toml"', '"%s"' % scenario)
+    text = re.sub(r"architectures = \[[^]]*\]", 'architectures = ["fpga-uart"]', text)
+    check('architectures = ["fpga-uart"]' in text and scenario in text, "the sweep file is not as the test expects")
+    sweep_file = os.path.join(work, "lost_step_feed.toml")
+    with open(sweep_file, "w") as f:
+        f.write(text)
+    out = os.path.join(work, "out")
+    shutil.rmtree(out, ignore_errors=True)
+    r = sweep(cncsim, sweep_file, out)
+    check(r.returncode == 0, "the search failed: " + r.stderr)
+    with open(os.path.join(out, "search.json")) as f:
+        found = json.load(f)
+    tolerance = found["tolerance"]
+    result = found["architectures"][0]
+    with open(os.path.join(source, "docs", "mechanics.md"), encoding="utf-8") as f:
+        m = re.search(r"\| fpga-uart \| [^|]* \| F(\d+) \(F(\d+) loses steps\) \|", f.read())
+    check(m is not None, "docs/mechanics.md states no highest feed for fpga-uart")
+    stated, stated_bad = float(m.group(1)), float(m.group(2))
+    check(abs(result["largest"] - stated) <= tolerance and result["smallest_failing"] - result["largest"] <= tolerance,
+          "the search found F%s (F%s fails), the docs state F%g" % (result["largest"], result["smallest_failing"], stated))
+    for feed, lossless in ((result["largest"], True), (result["smallest_failing"], False)):
+        report, _ = run_report(cncsim, scenario, work, "f%g" % feed,
+                               ["scenario.architecture=fpga-uart", "clock.ideal=true", "scenario.feed_mm_per_min=%g" % feed,
+                                "machine.rapid_feed_mm_per_min=%g" % feed])
+        lost = [report["fpga-uart"]["mechanics"][a]["lost_full_steps"] for a in ("x", "y")]
+        check((sum(lost) == 0) == lossless, "F%g loses %s full steps" % (feed, lost))
+    print("fpga-uart: F%g without lost steps, F%g loses some (docs: F%g, F%g)" % (result["largest"],
+                                                                              result["smallest_failing"], stated,
+                                                                              stated_bad))
+
+
 def bad_input(cncsim, source, work):
     scenario = os.path.join(source, "scenarios", "fpga-uart", "square_20mm.toml")
     head = 'scenario = "%s"\nmetrics = ["/metrics/job/job_time_s"]\n' % scenario
@@ -187,7 +225,8 @@ def main():
     mode, cncsim, source, work = sys.argv[1:5]
     source = os.path.abspath(source)
     os.makedirs(work, exist_ok=True)
-    {"servo_tables": servo_tables, "jobs": jobs, "resume": resume, "bad_input": bad_input}[mode](cncsim, source, work)
+    {"servo_tables": servo_tables, "jobs": jobs, "resume": resume, "feed_search": feed_search,
+     "bad_input": bad_input}[mode](cncsim, source, work)
 
 
 if __name__ == "__main__":

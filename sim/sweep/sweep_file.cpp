@@ -182,10 +182,10 @@ SweepStudy read_study(const SweepSpec& spec, const toml::table& t, const std::st
     const std::string mode = r.get("mode") != nullptr ? r.string("mode") : "grid";
     if (mode != "grid" && mode != "zip") r.fail(r.get("mode"), "mode", "\"" + mode + "\": grid | zip");
     study.zip = mode == "zip";
+    // No vary: the one point of each architecture, over the seeds.
     const toml::array* vary = r.array("vary", true);
-    if (vary == nullptr) r.fail(nullptr, "vary", "missing: the keys to vary, [{ key = \"...\", values = [...] }, ...]");
     std::set<std::string> keys;
-    for (std::size_t i = 0; i < vary->size(); ++i) {
+    for (std::size_t i = 0; vary != nullptr && i < vary->size(); ++i) {
         const toml::node& e = *vary->get(i);
         if (!e.is_table()) r.fail(&e, "vary", "expected a list of tables { key = ..., values = [...] }");
         study.axes.push_back(read_axis(spec, *e.as_table(), r.name("vary") + "[" + std::to_string(i) + "]"));

@@ -11,7 +11,7 @@ namespace {
 // The value combinations of a study: every one of the grid (the last axis fastest), or the zipped i-th values.
 std::vector<std::vector<std::size_t>> combinations(const SweepStudy& study) {
     std::vector<std::vector<std::size_t>> out;
-    if (study.zip) {
+    if (study.zip && !study.axes.empty()) {
         for (std::size_t i = 0; i < study.axes.front().values.size(); ++i) out.emplace_back(study.axes.size(), i);
         return out;
     }

@@ -241,6 +241,7 @@ std::size_t write_sweep_plots(const SweepSpec& spec, const std::vector<SweepRow>
     fs::create_directories(dir / "data");
     for (std::size_t s = 0; s < spec.studies.size(); ++s) {
         const SweepStudy& study = spec.studies[s];
+        if (study.axes.empty()) continue;
         const SweepAxis& x = study.axes.front();
         if (!std::all_of(x.values.begin(), x.values.end(), [](const SweepValue& v) { return v.numeric; })) continue;
         // A line per architecture and values of the other axes, its points in the order of x's values.

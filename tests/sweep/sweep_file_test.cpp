@@ -84,6 +84,13 @@ TEST(SweepFile, ZipPairsTheValuesAndStudiesFollowEachOther) {
     EXPECT_EQ(points[4].study, 1u);
 }
 
+TEST(SweepFile, WithoutVaryEachArchitectureRunsOverTheSeeds) {
+    const cnc::sim::SweepSpec spec = read_sweep_file(write("seeds.toml", kHead + "seeds = [4, 9]\n"));
+    const std::vector<cnc::sim::SweepPoint> points = cnc::sim::expand_points(spec, "arch");
+    ASSERT_EQ(points.size(), 2u);
+    EXPECT_EQ(points[1].sets, (std::vector<std::string>{"scenario.architecture=arch", "scenario.seed=9"}));
+}
+
 TEST(SweepFile, RefusalsNameTheLineAndTheKey) {
     const std::string vary = "vary = [{ key = \"k.x\", values = [1] }]\n";
     // kHead is lines 1 and 2: each mistake below is on line 3.

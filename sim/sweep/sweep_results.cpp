@@ -281,6 +281,7 @@ std::size_t write_sweep_plots(const SweepSpec& spec, const std::vector<SweepRow>
             std::vector<std::string> clauses;
             std::map<std::string, std::size_t> seen;
             std::size_t block = 0;
+            gp::ColumnRange xs, ys;  // a constant x or y opens to +-1, not gnuplot's warning
             for (const std::string& l : order) {
                 const std::string arch = arch_of[l];
                 const std::string colour = variant_colour(arch_colour(arch), seen[arch]++, per_arch[arch]);
@@ -289,7 +290,10 @@ std::size_t write_sweep_plots(const SweepSpec& spec, const std::vector<SweepRow>
                     const std::vector<double> v = ok_values(*g, m);
                     if (v.empty()) continue;
                     const SeedStats st = seed_stats(v);
-                    out << number_text(x.values[g->first->value_index[0]].number) << ' ' << number_text(st.mean) << ' '
+                    const double at = x.values[g->first->value_index[0]].number;
+                    xs = gp::merge(xs, {1, at, at});
+                    ys = gp::merge(ys, {1, st.mean - st.half_width_95, st.mean + st.half_width_95});
+                    out << number_text(at) << ' ' << number_text(st.mean) << ' '
                         << number_text(st.mean - st.half_width_95) << ' ' << number_text(st.mean + st.half_width_95)
                         << '\n';
                     ++written;
@@ -303,7 +307,10 @@ std::size_t write_sweep_plots(const SweepSpec& spec, const std::vector<SweepRow>
             if (clauses.empty()) continue;
             gp::Script script(Plot{name, spec.metrics[m].pointer + " against " + x.key + " (" + study.name + ")", x.key,
                                    spec.metrics[m].pointer});
-            script.body = gp::header(script.plot) + (log_x ? "set logscale x\n" : "") + gp::plot_line(clauses);
+            const std::string x_range =
+                xs.lo == xs.hi ? fmt::format(FMT_STRING("set xrange [{:g}:{:g}]\n"), xs.lo - 1.0, xs.hi + 1.0) : "";
+            script.body = gp::header(script.plot) + (log_x ? "set logscale x\n" : "") + x_range + gp::yrange_for(ys) +
+                          gp::plot_line(clauses);
             scripts.push_back(std::move(script));
         }
     }

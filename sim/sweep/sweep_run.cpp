@@ -85,7 +85,7 @@ public:
         const std::size_t step = std::max<std::size_t>(1, m_total / 20);
         if (m_tty) {
             std::cerr << '\r' << line << "\033[K" << (last ? "\n" : "") << std::flush;
-        } else if (last || done / step != m_shown / step) {
+        } else if ((last && done != m_shown) || done / step != m_shown / step) {
             std::cerr << line << std::endl;
             m_shown = done;
         }

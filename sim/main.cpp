@@ -38,6 +38,7 @@
 #include "scenario/drawing_job.hpp"
 #include "scenario/key_listing.hpp"
 #include "scenario/scenario.hpp"
+#include "sweep_cmd.hpp"
 
 namespace {
 
@@ -416,6 +417,17 @@ int dispatch(int argc, char* argv[]) {
     cam->add_flag("--skip-unread", cam_cmd.skip_unread,
                   "leave out entity types the CAM does not read, listing them (sets cam.skip_unread)");
     cam->add_option("--set", cam_cmd.sets, "override a scenario key: key=value (repeatable; cam.* keys: docs/cam.md)");
+    std::string sweep_file;
+    std::size_t sweep_jobs = 0;
+    CLI::App* sweep = app.add_subcommand(
+        "sweep", "a design-space study: every point of a sweep file as its own run, the results tabled and plotted");
+    sweep->add_option("file", sweep_file, "sweep file (TOML, docs/sweeps.md)")->required();
+    sweep
+        ->add_option("--out", out_dir,
+                     "write here: each point's report, results.csv, results.json, summary.md, "
+                     "plots/; a rerun resumes from what is there")
+        ->required();
+    sweep->add_option("--jobs", sweep_jobs, "points run at once (default: the cores)")->check(CLI::PositiveNumber);
 
     CLI::App* keys = app.add_subcommand(
         "keys", "print the scenario keys (type, default, range, meaning): Markdown, or lines to fit a terminal");
@@ -446,6 +458,7 @@ int dispatch(int argc, char* argv[]) {
         if (cam->parsed()) {
             return cnc::sim::cmd_cam(cam_cmd, std::filesystem::read_symlink("/proc/self/exe").string(), std::cout);
         }
+        if (sweep->parsed()) return cnc::sim::cmd_sweep(sweep_file, out_dir, sweep_jobs);
         return cmd_keys(keys_prefix);
     } catch (const cnc::BadInput& e) {
         std::cerr << "cncsim: " << e.what() << '\n';

@@ -19,6 +19,7 @@
 #include "architectures/catalog.hpp"
 #include "compare/spawn.hpp"
 #include "metrics/report/zero_notes.hpp"
+#include "output/table_cells.hpp"
 
 namespace cnc::sim {
 
@@ -112,10 +113,7 @@ nlohmann::json::json_pointer where(const Row& row, const CompareColumn& c) {
 
 // The row's figure of a run, when its report has one.
 std::optional<double> figure(const CompareColumn& c, const Row& row) {
-    if (c.report.is_null()) return std::nullopt;
-    const nlohmann::json::json_pointer ptr = where(row, c);
-    if (!c.report.contains(ptr) || !c.report.at(ptr).is_number()) return std::nullopt;
-    return c.report.at(ptr).get<double>();
+    return report_number(c.report, where(row, c));
 }
 
 // A failed run's figures cover only what ran before it stopped: never shown as a result (its JSON keeps them
@@ -181,19 +179,6 @@ std::string join(const std::vector<std::string>& parts, const char* sep) {
     return out;
 }
 
-// A variant's sets hold quotes ("crc16") and may hold a '|': quoted as each format reads them.
-std::string csv_quoted(const std::string& s) {
-    std::string out = "\"";
-    for (const char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + '"';
-}
-
-std::string md_cell(const std::string& s) {
-    std::string out;
-    for (const char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
-    return out;
-}
-
 std::vector<std::string> child_args(const std::string& self_exe, const std::vector<std::string>& input,
                                     const CompareColumn& c, const std::vector<std::string>& sets,
                                     const fs::path& report, const std::string& out_dir) {
@@ -220,6 +205,11 @@ std::vector<std::string> child_args(const std::string& self_exe, const std::vect
 }
 
 }  // namespace
+
+std::optional<double> report_number(const nlohmann::json& report, const nlohmann::json::json_pointer& pointer) {
+    if (!report.is_object() || !report.contains(pointer) || !report.at(pointer).is_number()) return std::nullopt;
+    return report.at(pointer).get<double>();
+}
 
 std::string CompareColumn::label() const {
     return variant.empty() ? architecture : architecture + ": " + variant;
@@ -449,6 +439,7 @@ std::string compare_table(const Comparison& comparison, TableFormat format_kind)
     }
     if (format_kind == TableFormat::Csv) {
         for (const auto& r : rows) {
+            // A variant's sets hold quotes ("crc16"): every cell quoted.
             for (std::size_t i = 0; i < r.size(); ++i) os << (i ? "," : "") << csv_quoted(r[i]);
             os << '\n';
         }

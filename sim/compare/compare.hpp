@@ -33,6 +33,9 @@ struct Comparison {
     [[nodiscard]] const CompareColumn* baseline_column() const;
 };
 
+// The number a run's report holds at `pointer` (a row's, a sweep's metric), when it holds one there.
+std::optional<double> report_number(const nlohmann::json& report, const nlohmann::json::json_pointer& pointer);
+
 enum class TableFormat { Text, Markdown, Csv, Json };
 
 // Runs `self_exe run INPUT... --set scenario.architecture=A [--set ...] [--set VARIANT...] --report R` for each

@@ -13,13 +13,16 @@ extern char** environ;
 
 namespace cnc::sim {
 
-pid_t spawn_child(const std::vector<std::string>& args, const std::string& cwd) {
+pid_t spawn_child(const std::vector<std::string>& args, const std::string& cwd, const std::string& stderr_path) {
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    if (!stderr_path.empty())
+        posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, stderr_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                         0644);
     if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
     pid_t pid = 0;
     const int err = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);

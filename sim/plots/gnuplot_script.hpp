@@ -68,6 +68,11 @@ Curves curves(const std::vector<PlotRun>& runs, const std::filesystem::path& out
 
 std::string plot_line(const std::vector<std::string>& clauses);
 
+// Writes each script as data/<name>.gp under out_dir and data/plots.gp, which renders them all as <name>.svg and
+// <name>.png, and plots.json, the list; runs gnuplot in out_dir and returns the plots. Throws std::runtime_error
+// when gnuplot is missing or fails.
+std::vector<Plot> render_scripts(const std::vector<Script>& scripts, const std::filesystem::path& out_dir);
+
 // gnuplot's margins placing a panel's data area at a box given in pixels of a width_px x height_px canvas.
 std::string margins(const PanelBox& box, int height_px);
 

@@ -367,14 +367,18 @@ std::vector<PlotRun> load_plot_runs(const fs::path& out_dir, const std::vector<P
 }
 
 std::vector<Plot> render_plots(const std::vector<PlotRun>& runs, const fs::path& out_dir) {
+    if (runs.empty()) return {};
+    return gp::render_scripts(scripts(runs, out_dir), out_dir);
+}
+
+std::vector<Plot> gp::render_scripts(const std::vector<Script>& scripts, const fs::path& out_dir) {
     std::vector<Plot> plots;
-    if (runs.empty()) return plots;
     fs::create_directories(out_dir / "data");
     std::ofstream all(out_dir / "data" / "plots.gp");
     if (!all) throw std::runtime_error("cannot write " + (out_dir / "data" / "plots.gp").string());
     all << "# Renders every plot: gnuplot data/plots.gp, from the folder that holds it.\n";
     nlohmann::json list = nlohmann::json::array();
-    for (const Script& s : scripts(runs, out_dir)) {
+    for (const Script& s : scripts) {
         const std::string script = "data/" + s.plot.name + ".gp";
         std::ofstream out(out_dir / script);
         out << s.body;

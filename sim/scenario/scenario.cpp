@@ -264,6 +264,10 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
             : host::GcodePolicy::Lenient;
     s.interpreter.start_mm.x_mm = r.get_float("scenario.start_x_mm", 0.0, -1e6, 1e6, "tool X at job start, mm");
     s.interpreter.start_mm.y_mm = r.get_float("scenario.start_y_mm", 0.0, -1e6, 1e6, "tool Y at job start, mm");
+    s.interpreter.feed_mm_per_min = r.get_optional_float(
+        "scenario.feed_mm_per_min", 1e-3, 1e6, "the job's own F",
+        "every F word of a G-code job read as this feed, mm/min, whatever its unit (a feed study without editing the "
+        "job; an inverse-time F under G93 is kept)");
 
     read_axis(r, "x", s.machine.x);
     read_axis(r, "y", s.machine.y);
@@ -343,13 +347,13 @@ Scenario read(KeyReader& r, const std::string& file, const fs::path& base) {
         const bool steps = format == "steps" || (format == "auto" && (ext == ".steps" || ext == ".csv"));
         s.job_format = steps ? JobFormat::Steps : JobFormat::GCode;
         if (format == "drawing" || (format == "auto" && is_drawing(job))) s.drawing_path = s.job_path;
+        if (steps && s.interpreter.feed_mm_per_min)
+            r.fail("scenario.feed_mm_per_min", "applies to a G-code job's F words; a steps file has no F");
     }
     return s;
 }
 
 }  // namespace
-
-namespace {
 
 toml::table parse_toml(const std::string& path, const std::string& what) {
     if (fs::is_directory(path)) throw BadInput(path, "is a folder, not a " + what + " (TOML)");
@@ -363,6 +367,8 @@ toml::table parse_toml(const std::string& path, const std::string& what) {
         throw BadInput(path + ":" + std::to_string(e.source().begin.line), std::string(e.description()));
     }
 }
+
+namespace {
 
 std::string machine_tables_text() {
     std::string text;

@@ -75,6 +75,10 @@ struct Scenario {
 // scenario is refused with what to do instead.
 Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides);
 
+// A TOML file parsed: BadInput naming the file (and the line of a syntax error), or that it is a folder or cannot be
+// opened, calling it a `what` ("scenario", "machine file").
+toml::table parse_toml(const std::string& path, const std::string& what);
+
 // A job run without a scenario (`cncsim run JOB.nc`): the job on a machine file, or on the default machine (every
 // key's default: the seed 000 machine), through one architecture. Paths are relative to the working folder.
 struct JobRun {

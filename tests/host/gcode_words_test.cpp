@@ -115,6 +115,22 @@ TEST(HostGcodeWords, InverseTimeFeedGivesTheMoveItsTime) {
     test::expect_gcode_error("G93 G1 X10 F2\nG1 X20\n", {"t.nc:2:", "inverse-time", "F"});
 }
 
+TEST(HostGcodeWords, FeedOptionReplacesEveryFeedWordButNotInverseTime) {
+    // scenario.feed_mm_per_min = 1500: F800 in mm, F10 in inches (254 mm/min) and F5 in mm/s all read as 1500 mm/min;
+    // the rapids keep the rapid feed, and G93's F2 still gives its move 1/2 min (10 mm: 20 mm/min).
+    InterpreterOptions opt;
+    opt.feed_mm_per_min = 1500.0;
+    const Program p = run_gcode("G1 X10 F800\nG20 G1 X1 F10\nG21 G0 X0\nG93 G1 X10 F2\n", opt);
+    ASSERT_EQ(p.moves.size(), 4u);
+    EXPECT_DOUBLE_EQ(p.moves[0].feed_mm_per_min, 1500.0);
+    EXPECT_DOUBLE_EQ(p.moves[1].feed_mm_per_min, 1500.0);
+    EXPECT_DOUBLE_EQ(p.moves[2].feed_mm_per_min, opt.rapid_feed_mm_per_min);
+    EXPECT_NEAR(p.moves[3].feed_mm_per_min, 20.0, 1e-9);
+    opt.feed_unit = FeedUnit::MmPerSecond;
+    EXPECT_DOUBLE_EQ(run_gcode("G1 X10 F5\n", opt).moves[0].feed_mm_per_min, 1500.0);
+    test::expect_bad_input([&] { run_gcode("G1 X10 F0\n", opt); }, {"t.nc:1:", "feed must be > 0"});  // still checked
+}
+
 TEST(HostGcodeWords, PathControlAndLaserStateTravelWithTheMove) {
     const Program p = run_gcode("G64 P0.02\nM4 S300\nG1 X1 F100\nG61\nM3 S0\nG1 X2\nG61.1 M5\nG1 X3\n");
     ASSERT_TRUE(p.moves[0].path_control);

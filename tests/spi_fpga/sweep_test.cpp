@@ -1,5 +1,6 @@
-// Following error grows with the servo thread's latency bound and with its period. Each sweep
-// point is its own cncsim process (one SystemC elaboration per process); the test reads their JSON reports.
+// Following error grows with the servo thread's latency bound and with its period: the studies of
+// sweeps/spi_fpga_servo_loop.toml, run once by `cncsim sweep` (each point its own cncsim process), read from its
+// results.json.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -18,24 +19,25 @@ struct Point {
     double following_rms_um;
 };
 
-Point run(const std::string& scenario) {
-    const std::string report = cnc::test::test_path(scenario + ".json");
-    const std::string cmd = std::string(CNCSIM) + " run " + CNC_SOURCE_DIR + "/scenarios/spi-fpga/sweeps/" + scenario +
-                            ".toml --report " + report + " > /dev/null";
-    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-    std::ifstream in(report);
-    const nlohmann::json j = nlohmann::json::parse(in);
-    EXPECT_TRUE(j["ok"].get<bool>()) << scenario;
-    const auto& p = j["metrics"]["path"];
-    return {p["following_max_um"].get<double>(), p["following_rms_um"].get<double>()};
-}
-
-std::vector<Point> sweep(const std::vector<std::string>& scenarios) {
+// Each test is a process of its own (ctest may run both at once): each runs the sweep into its own folder.
+std::vector<Point> sweep(const std::string& study) {
+    const nlohmann::json results = [&] {
+        const std::string out = cnc::test::test_path("servo_loop_" + study);
+        const std::string cmd = std::string(CNCSIM) + " sweep " + CNC_SOURCE_DIR +
+                                "/sweeps/spi_fpga_servo_loop.toml --out " + out + " 2> /dev/null";
+        EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+        std::ifstream in(out + "/results.json");
+        return nlohmann::json::parse(in);
+    }();
     std::vector<Point> out;
-    for (const std::string& s : scenarios) {
-        out.push_back(run(s));
-        std::cout << s << ": following error max " << out.back().following_max_um << " um, RMS "
-                  << out.back().following_rms_um << " um\n";
+    for (const nlohmann::json& p : results["points"]) {
+        if (p["study"] != study) continue;
+        EXPECT_EQ(p["status"], "ok") << p["point"];
+        const nlohmann::json& m = p["metrics"];
+        out.push_back(
+            {m["/metrics/path/following_max_um"].get<double>(), m["/metrics/path/following_rms_um"].get<double>()});
+        std::cout << study << " " << p["values"].dump() << ": following error max " << out.back().following_max_um
+                  << " um, RMS " << out.back().following_rms_um << " um\n";
     }
     return out;
 }
@@ -43,7 +45,8 @@ std::vector<Point> sweep(const std::vector<std::string>& scenarios) {
 }  // namespace
 
 TEST(SpiFpgaSweep, FollowingErrorGrowsWithTheLatencyBound) {
-    const auto pts = sweep({"latency_000us", "latency_020us", "latency_050us", "latency_100us", "latency_200us"});
+    const auto pts = sweep("latency");
+    ASSERT_EQ(pts.size(), 5u);
     // The max at every step; the RMS over the whole sweep only: a 20 us bound adds about 141 mm/s x its mean
     // latency (uniform: 10 us) = 1.4 um to the RMS, as much as the draws of one seed move it either way.
     for (std::size_t i = 1; i < pts.size(); ++i) {
@@ -55,7 +58,8 @@ TEST(SpiFpgaSweep, FollowingErrorGrowsWithTheLatencyBound) {
 }
 
 TEST(SpiFpgaSweep, FollowingErrorGrowsWithTheServoPeriod) {
-    const auto pts = sweep({"period_0250us", "period_0500us", "period_1000us", "period_2000us"});
+    const auto pts = sweep("servo_period");
+    ASSERT_EQ(pts.size(), 4u);
     for (std::size_t i = 1; i < pts.size(); ++i) {
         EXPECT_GT(pts[i].following_max_um, pts[i - 1].following_max_um) << i;
         EXPECT_GT(pts[i].following_rms_um, pts[i - 1].following_rms_um) << i;

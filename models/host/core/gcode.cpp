@@ -241,7 +241,8 @@ private:
         if (!(f > 0.0)) throw BadInput(m_where, "feed must be > 0 ('F" + format_double(f) + "')");
         m_f_word = f;
         // Stored in mm/min, so a later G20/G21 does not change the physical feed.
-        m_feed_mm_per_min = f * m_scale * (m_opt.feed_unit == FeedUnit::MmPerSecond ? kSecondsPerMinute : 1.0);
+        m_feed_mm_per_min = m_opt.feed_mm_per_min.value_or(
+            f * m_scale * (m_opt.feed_unit == FeedUnit::MmPerSecond ? kSecondsPerMinute : 1.0));
     }
 
     // G4: P in seconds (RS274/NGC and grbl); S in seconds (Marlin's seconds form) when there is no P, the spindle

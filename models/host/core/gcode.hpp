@@ -84,6 +84,8 @@ struct InterpreterOptions {
     double rapid_feed_mm_per_min = 1200.0;  // seed 000 §6.3.1 test log: G0 packets carry F=1200
     geom::Vec2 start_mm{};                  // machine position when the program starts
     GcodePolicy policy = GcodePolicy::Lenient;
+    // scenario.feed_mm_per_min: every F word read as this feed (units per minute mode only); none: the job's F.
+    std::optional<double> feed_mm_per_min;
     double operator_pause_s = 5.0;  // M0/M1/M60: the time an operator takes to press cycle start
     // machine.z.max_velocity_mm_per_s: a move is slowed so that its Z part stays within it.
     double z_max_feed_mm_per_min = std::numeric_limits<double>::infinity();

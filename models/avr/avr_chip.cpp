@@ -38,6 +38,9 @@ void quiet_logger(avr_t*, const int level, const char* format, va_list ap) {
 }
 
 constexpr avr_cycle_count_t kInterruptResponseCycles = 4;
+// Datasheet "Interrupt Response Time": an interrupt that wakes the MCU from sleep takes 4 cycles more, in addition to
+// the sleep mode's start-up time (0 in Idle, whose clocks run on: "Sleep Modes").
+constexpr avr_cycle_count_t kWakeUpCycles = 4;
 
 void no_sleep(avr_t*, avr_cycle_count_t) {}  // simavr's default usleep()s to follow the wall clock
 
@@ -314,14 +317,20 @@ void AvrChip::reschedule() {
 
 // ---- interrupts ----
 
-void AvrChip::raise(int vector_number) {
-    avr_raise_interrupt(m_avr, m_vectors.at(static_cast<std::size_t>(vector_number)));
+void AvrChip::raise(int vector_number, Cycle c) {
+    raise_vector(m_vectors.at(static_cast<std::size_t>(vector_number)), c);
 }
 
-void AvrChip::sync_level_vector(int vector_number, bool flag) {
+void AvrChip::raise_vector(avr_int_vector_t* v, Cycle c) {
+    const bool sleeping = m_avr->state == cpu_Sleeping;
+    avr_raise_interrupt(m_avr, v);  // wakes a sleeping CPU when the interrupt is enabled
+    if (sleeping && m_avr->state == cpu_Running && !m_wake_flag_cycle) m_wake_flag_cycle = c;
+}
+
+void AvrChip::sync_level_vector(int vector_number, bool flag, Cycle c) {
     avr_int_vector_t* v = m_vectors.at(static_cast<std::size_t>(vector_number));
     if (flag) {
-        if (v->pending == 0) avr_raise_interrupt(m_avr, v);
+        if (v->pending == 0) raise_vector(v, c);
         return;
     }
     if (v->pending != 0) avr_clear_interrupt(m_avr, v);
@@ -338,24 +347,30 @@ void AvrChip::vector_entered(avr_int_vector_t* v) {
     if (m_map.mcu == Mcu::Atmega16) external_interrupt_entered(v->vector);
     // Datasheet "Interrupt Response Time": pushing the return address takes at least 4 cycles before the vector
     // runs; libsimavr 1.6's avr_service_interrupts drops that count, which put every edge an ISR
-    // writes 4 cycles early. (Waking from sleep costs 4 more on silicon, not modelled: no firmware here sleeps
-    // with interrupts on.)
-    m_avr->cycle += kInterruptResponseCycles;
+    // writes 4 cycles early. Woken from sleep, the vector runs 4 + 4 cycles after the flag that woke the CPU
+    // (libsimavr's sleeping core reaches the flag's cycle, or one past it, and charges nothing).
+    if (m_wake_flag_cycle) {
+        m_avr->cycle = std::max(m_avr->cycle, static_cast<avr_cycle_count_t>(*m_wake_flag_cycle) +
+                                                  kInterruptResponseCycles + kWakeUpCycles);
+        m_wake_flag_cycle.reset();
+    } else {
+        m_avr->cycle += kInterruptResponseCycles;
+    }
     if (v->vector == kVecUsartTx) m_usart.clear_txc(now());  // §20.6.3: TXC0 clears when its vector runs
 }
 
-void AvrChip::usart_flags(Cycle) {
-    sync_level_vector(kVecUsartRx, m_usart.rxc());
-    sync_level_vector(kVecUsartUdre, m_usart.udre());
-    sync_level_vector(kVecUsartTx, m_usart.txc());
+void AvrChip::usart_flags(Cycle c) {
+    sync_level_vector(kVecUsartRx, m_usart.rxc(), c);
+    sync_level_vector(kVecUsartUdre, m_usart.udre(), c);
+    sync_level_vector(kVecUsartTx, m_usart.txc(), c);
 }
 
 void AvrChip::usart_txd(Cycle c, bool level) {
     record(c, kTxdLine, level);
 }
 
-void AvrChip::timer_flag(char timer, TimerFlag flag, Cycle) {
-    raise(timer_vector(timer - '0', flag));
+void AvrChip::timer_flag(char timer, TimerFlag flag, Cycle c) {
+    raise(timer_vector(timer - '0', flag), c);
 }
 
 int AvrChip::timer_vector(int timer, TimerFlag flag) const {

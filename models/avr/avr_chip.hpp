@@ -143,8 +143,11 @@ private:
     void install_hooks();
     void reschedule();
     [[nodiscard]] Cycle now() const;
-    void raise(int vector_number);
-    void sync_level_vector(int vector_number, bool flag);
+    // Raise a vector (or, for a level interrupt, follow its flag) at cycle c: the flag's cycle, which times a
+    // wake-up from sleep.
+    void raise(int vector_number, Cycle c);
+    void raise_vector(avr_int_vector_t* v, Cycle c);
+    void sync_level_vector(int vector_number, bool flag, Cycle c);
     void port_write(std::uint16_t addr, std::uint8_t v);
     [[nodiscard]] std::uint8_t port_read(std::uint16_t pin_addr);
     void update_lines(Cycle c);
@@ -177,6 +180,7 @@ private:
     std::array<avr_int_vector_t*, 26> m_vectors{};  // simavr's interrupt vectors by number (0 = none)
     ChipState m_state = ChipState::Running;
     std::optional<Cycle> m_stop_cycle;
+    std::optional<Cycle> m_wake_flag_cycle;  // the flag that woke the CPU from sleep, until its vector runs
     bool m_in_scheduler = false;
     std::array<bool, kLineCount> m_initial{};
     std::array<bool, kLineCount> m_level{};

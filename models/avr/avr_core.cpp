@@ -10,8 +10,9 @@ namespace cnc::avr {
 
 namespace {
 
-// Cycles the AVR keeps away from a frame decision it has not been told about: the longest AVR instruction
-// takes 4 cycles (CALL, RET) and waking from sleep overshoots by 1.
+// Cycles the AVR keeps away from a frame decision it has not been told about: a run stops past its limit by at most
+// 7 cycles (an instruction of up to 4 cycles, CALL or RET, ending past it, then an interrupt's 4-cycle response; or a
+// wake-up from sleep, vector 8 cycles after a flag raised before the limit).
 constexpr Cycle kDecisionMarginCycles = 8;
 
 }  // namespace

@@ -126,14 +126,14 @@ void AvrChip::external_interrupt_edge(const Pin& pin, bool was, bool now_level) 
                        : mode == 1 ? was != now_level
                        : mode == 2 ? was && !now_level
                                    : !was && now_level;
-    if (fires) raise(n == 0 ? kVecInt0 : kVecInt1);
+    if (fires) raise(n == 0 ? kVecInt0 : kVecInt1, now());
 }
 
 void AvrChip::external_interrupt_entered(int vector_number) {
     if (vector_number != kVecInt0 && vector_number != kVecInt1) return;
     const int n = vector_number - kVecInt0;
     const bool low_level_mode = ((m_avr->data[kMcucr] >> (2 * n)) & 3U) == 0;
-    if (low_level_mode && !pin_level(Pin{'D', 2 + n})) raise(vector_number);
+    if (low_level_mode && !pin_level(Pin{'D', 2 + n})) raise(vector_number, now());
 }
 
 void AvrChip::write_gicr(std::uint8_t v) {

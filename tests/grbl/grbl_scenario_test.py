@@ -9,7 +9,15 @@ Usage: grbl_scenario_test.py MODE CNCSIM SOURCE_DIR FIRMWARE_ELF FIRMWARE_HEX
             line with grbl's error:20, and the job goes on to its end.
   setting   a setting the firmware refuses ($999=1): exit 2, the message names the setting and where it was set.
   hex       the firmware's Intel HEX image (avr-objcopy's) runs as its ELF does: the same report but for the file name.
+  jitter    software STEP jitter: G1 X10 Y3 F300, Bresenham in the Timer1 ISR. X (dominant) steps every ISR, the
+            period the firmware computes in float32 (emulated here: 20881 cycles); Y steps on the ISRs where its
+            Bresenham counter overflows, so its periods are 3 or 4 ISR periods. The report's Y period jitter
+            (peak to peak) and TIE (max and rms, against the least-squares grid) equal what that pattern predicts
+            within one cycle (62.5 ns, ideal clock), and are far above it; X's are within one cycle of 0. The
+            status interval is longer than the move, so no serial interrupt delays an ISR.
 """
+import math
+import struct
 import json
 import os
 import subprocess
@@ -29,6 +37,43 @@ def run(cncsim, source, scenario, firmware, extra):
             data = json.load(f)
         os.remove(report)
     return p, data
+
+
+def f32(x):
+    """x rounded to the AVR's float (IEEE single precision)."""
+    return struct.unpack("f", struct.pack("f", x))[0]
+
+
+def firmware_isr_cycles(dx_mm, dy_mm, steps_per_mm, feed_mm_per_min):
+    """The test firmware's stepper ISR period (gcode.c queue_move), in its float32 arithmetic, at 16 MHz."""
+    spm = f32(steps_per_mm)
+    dx, dy = round(dx_mm * steps_per_mm), round(dy_mm * steps_per_mm)
+    dxm, dym = f32(dx / spm), f32(dy / spm)
+    length = f32(math.sqrt(f32(f32(dxm * dxm) + f32(dym * dym))))
+    events = max(dx, dy)
+    per_s = f32(f32(f32(f32(feed_mm_per_min) / f32(60.0)) * f32(float(events))) / length)
+    return int(f32(f32(16e6 / per_s) + f32(0.5)))
+
+
+def bresenham_ticks(events, steps):
+    """The ISR numbers (1-based) at which the subordinate axis steps: its counter starts at -(events / 2) and
+    gains `steps` per ISR; past 0 it steps and loses `events` (motion.c)."""
+    counter, out = -(events >> 1), []
+    for tick in range(1, events + 1):
+        counter += steps
+        if counter > 0:
+            counter -= events
+            out.append(tick)
+    return out
+
+
+def tie(times):
+    """Largest and RMS distance of the edges from their least-squares grid a + b k."""
+    n = len(times)
+    k_mean, t_mean = (n - 1) / 2, sum(times) / n
+    b = sum((k - k_mean) * (t - t_mean) for k, t in enumerate(times)) / sum((k - k_mean) ** 2 for k in range(n))
+    res = [t - (t_mean + b * (k - k_mean)) for k, t in enumerate(times)]
+    return max(abs(e) for e in res), math.sqrt(sum(e * e for e in res) / n)
 
 
 def check(cond, what):
@@ -76,6 +121,28 @@ def main():
         check(r_hex["grbl"]["firmware"] == hex_image, "the report names the HEX file")
         r_hex["grbl"]["firmware"] = r_elf["grbl"]["firmware"]
         check(r_hex == r_elf, "the HEX run's report equals the ELF run's")
+    elif mode == "jitter":
+        job = os.path.join(tempfile.mkdtemp(), "diagonal.nc")
+        with open(job, "w") as f:
+            f.write("G21 G90\nG1 X10 Y3 F300\n")
+        p, r = run(cncsim, source, scenario, firmware, ["--set", "scenario.job=" + job, "--set", "clock.ideal=true",
+                                                          "--set", "grbl.status_interval_ms=3000"])
+        check(p.returncode == 0, "exit 0 (stderr: %s)" % p.stderr.strip())
+        cycle_ns = 62.5
+        period_cycles = firmware_isr_cycles(10.0, 3.0, 160.0, 300.0)
+        ticks = bresenham_ticks(1600, 480)
+        y_ns = [k * period_cycles * cycle_ns for k in ticks]
+        periods = [b - a for a, b in zip(y_ns, y_ns[1:])]
+        pp, tie_max, tie_rms = max(periods) - min(periods), *tie(y_ns)
+        axes = {a["axis"]: a for a in r["metrics"]["axes"]}
+        y, x = axes["y"], axes["x"]
+        print("ISR period %d cycles; Y predicted p-p %.1f ns, TIE max %.1f rms %.1f; report %.1f, %.1f, %.1f" %
+              (period_cycles, pp, tie_max, tie_rms, y["jitter_pp_max_ns"], y["tie_max_ns"], y["tie_rms_max_ns"]))
+        check(y["rising_edges"] == 480 and x["rising_edges"] == 1600, "1600 X and 480 Y steps")
+        check(pp > 100 * cycle_ns and abs(y["jitter_pp_max_ns"] - pp) <= cycle_ns, "Y period jitter as predicted")
+        check(abs(y["tie_max_ns"] - tie_max) <= cycle_ns, "Y TIE max as predicted")
+        check(abs(y["tie_rms_max_ns"] - tie_rms) <= cycle_ns, "Y TIE rms as predicted")
+        check(x["jitter_pp_max_ns"] <= cycle_ns and x["tie_max_ns"] <= cycle_ns, "X: no jitter beyond a cycle")
     else:
         sys.exit("unknown mode " + mode)
 

@@ -2,8 +2,11 @@
 // the real-time "?", "ok" / "error:N" per line) and steps two axes with Bresenham in a Timer1 ISR, on grbl's
 // pins: the grbl architecture's G-code sender and its checks run on it without grbl's source. What it reads is in
 // gcode.h; what it leaves out of grbl (acceleration, arcs, homing, alarms, feed hold) in the README of
-// sim/architectures/grbl.
+// sim/architectures/grbl. With nothing to read it sleeps in Idle mode until an interrupt (grbl polls instead): the
+// stepper interrupt then always finds the CPU asleep and answers in the same 8 cycles, so its STEP edges keep the
+// Bresenham pattern exactly.
 #include <avr/interrupt.h>
+#include <avr/sleep.h>
 
 #include "avr_mcu_section.h"
 #include "gcode.h"
@@ -39,7 +42,17 @@ int main(void) {
     uint8_t length = 0;
     uint8_t overflow = 0;
     uint8_t in_comment = 0;
+    set_sleep_mode(SLEEP_MODE_IDLE);
+    sleep_enable();
     for (;;) {
+        // sei; sleep: the instruction after SEI runs before any interrupt, so a byte that came after the check
+        // wakes the CPU from this sleep instead of waiting for the next one (avr-libc <avr/sleep.h>).
+        cli();
+        if (!serial_status_request && !serial_available()) {
+            sei();
+            sleep_cpu();
+        }
+        sei();
         if (serial_status_request) {
             serial_status_request = 0;
             report_realtime_status();

@@ -35,6 +35,8 @@ ISR(USART_RX_vect) {
     }
 }
 
+uint8_t serial_available(void) { return rx_head != rx_tail; }
+
 uint8_t serial_read(void) {
     if (rx_tail == rx_head) return SERIAL_NO_DATA;
     const uint8_t byte = rx_buffer[rx_tail];

@@ -10,6 +10,8 @@
 void serial_init(void);
 // The next received byte, or SERIAL_NO_DATA.
 uint8_t serial_read(void);
+// Bytes received and not read yet (nonzero: some).
+uint8_t serial_available(void);
 void serial_write(uint8_t byte);
 void serial_print(const char* text);
 // Set by the receive ISR when '?' arrives; the main loop answers it and clears it.

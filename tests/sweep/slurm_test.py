@@ -25,7 +25,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from cncsim_report import check  # noqa: E402
+from cncsim_report import check, check_bad_input  # noqa: E402
 
 SKIP = 77
 DAEMONS = ("munged", "mungekey", "slurmctld", "slurmd", "sbatch", "squeue", "sinfo", "scancel")
@@ -294,11 +294,8 @@ def bad_input(cncsim, source, work):
         ("partition alone", ["sweep", sweep_file, "--out", out, "--partition", "debug"], "--partition requires --slurm"),
     ]
     for name, args, what in cases:
-        r = subprocess.run([cncsim] + args, capture_output=True, text=True)
-        check(r.returncode == 2, "%s: exit %d, not 2: %s" % (name, r.returncode, r.stderr))
-        check(what in r.stderr, "%s: the message does not say '%s': %s" % (name, what, r.stderr))
-        check(not os.path.exists(os.path.join(out, "points")), name + ": points were run")
-        print(name + ":", r.stderr.strip().splitlines()[-1])
+        check_bad_input(name, subprocess.run([cncsim] + args, capture_output=True, text=True), [what],
+                        os.path.join(out, "points"))
 
 
 def main():

@@ -9,6 +9,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   libeigen3-dev libboost-dev libfmt-dev libdxflib-dev
   python3 sigrok-cli
+  slurm-wlm munge
   gnuplot-nox libxml2-utils python3-pil
   clang libclang-rt-14-dev llvm
   gcc-avr binutils-avr avr-libc simavr libsimavr-dev libelf-dev

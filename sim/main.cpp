@@ -417,17 +417,34 @@ int dispatch(int argc, char* argv[]) {
     cam->add_flag("--skip-unread", cam_cmd.skip_unread,
                   "leave out entity types the CAM does not read, listing them (sets cam.skip_unread)");
     cam->add_option("--set", cam_cmd.sets, "override a scenario key: key=value (repeatable; cam.* keys: docs/cam.md)");
-    std::string sweep_file;
-    std::size_t sweep_jobs = 0;
+    cnc::sim::SweepCommand sweep_cmd;
     CLI::App* sweep = app.add_subcommand(
         "sweep", "a design-space study: every point of a sweep file as its own run, the results tabled and plotted");
-    sweep->add_option("file", sweep_file, "sweep file (TOML, docs/sweeps.md)")->required();
+    // Not required by CLI11: `cncsim sweep collect DIR` has neither; cmd_sweep asks for them otherwise.
+    sweep->add_option("file", sweep_cmd.file, "sweep file (TOML, docs/sweeps.md)");
+    sweep->add_option("--out", sweep_cmd.out_dir,
+                      "write here: each point's report, results.csv, results.json, summary.md, plots/; a rerun "
+                      "resumes from what is there (with --slurm: on storage every node shares)");
+    sweep->add_option("--jobs", sweep_cmd.jobs, "points run at once (default: the cores; 1 with --point)")
+        ->check(CLI::PositiveNumber);
+    CLI::Option* slurm_flag =
+        sweep->add_flag("--slurm", sweep_cmd.slurm, "submit the points to Slurm as a job array (sbatch) instead");
+    sweep->add_option("--partition", sweep_cmd.partition, "with --slurm: the partition to run in")->needs(slurm_flag);
+    sweep->add_option("--time", sweep_cmd.time, "with --slurm: each task's time limit (sbatch --time)")
+        ->needs(slurm_flag);
     sweep
-        ->add_option("--out", out_dir,
-                     "write here: each point's report, results.csv, results.json, summary.md, "
-                     "plots/; a rerun resumes from what is there")
-        ->required();
-    sweep->add_option("--jobs", sweep_jobs, "points run at once (default: the cores)")->check(CLI::PositiveNumber);
+        ->add_option("--points-per-task", sweep_cmd.per_task,
+                     "with --slurm: points each task runs (default 1, more to keep within 1000 tasks)")
+        ->check(CLI::PositiveNumber);
+    std::size_t sweep_task = 0;
+    CLI::Option* sweep_point =
+        sweep
+            ->add_option("--point", sweep_task,
+                         "run only job-array task K's points (K x points-per-task ..), as the local sweep does")
+            ->excludes(slurm_flag);
+    CLI::App* sweep_collect = sweep->add_subcommand(
+        "collect", "a --slurm sweep's results from the points finished, and what is missing or failed");
+    sweep_collect->add_option("dir", sweep_cmd.collect_dir, "the sweep's --out folder")->required();
 
     CLI::App* keys = app.add_subcommand(
         "keys", "print the scenario keys (type, default, range, meaning): Markdown, or lines to fit a terminal");
@@ -458,7 +475,10 @@ int dispatch(int argc, char* argv[]) {
         if (cam->parsed()) {
             return cnc::sim::cmd_cam(cam_cmd, std::filesystem::read_symlink("/proc/self/exe").string(), std::cout);
         }
-        if (sweep->parsed()) return cnc::sim::cmd_sweep(sweep_file, out_dir, sweep_jobs);
+        if (sweep->parsed()) {
+            if (sweep_point->count() > 0) sweep_cmd.point = sweep_task;
+            return cnc::sim::cmd_sweep(sweep_cmd);
+        }
         return cmd_keys(keys_prefix);
     } catch (const cnc::BadInput& e) {
         std::cerr << "cncsim: " << e.what() << '\n';

@@ -13,13 +13,18 @@ extern char** environ;
 
 namespace cnc::sim {
 
-pid_t spawn_child(const std::vector<std::string>& args, const std::string& cwd, const std::string& stderr_path) {
+pid_t spawn_child(const std::vector<std::string>& args, const std::string& cwd, const std::string& stderr_path,
+                  const std::string& stdout_path) {
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    if (stdout_path.empty())
+        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    else
+        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, stdout_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                         0644);
     if (!stderr_path.empty())
         posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, stderr_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
                                          0644);
@@ -41,8 +46,8 @@ pid_t wait_any_child(int& exit_code) {
     return pid;
 }
 
-int run_child(const std::vector<std::string>& args, const std::string& cwd) {
-    const pid_t pid = spawn_child(args, cwd);
+int run_child(const std::vector<std::string>& args, const std::string& cwd, const std::string& stdout_path) {
+    const pid_t pid = spawn_child(args, cwd, "", stdout_path);
     int wstatus = 0;
     while (waitpid(pid, &wstatus, 0) < 0) {
         if (errno != EINTR) throw std::runtime_error("waitpid failed");

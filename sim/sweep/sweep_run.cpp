@@ -55,13 +55,6 @@ private:
     struct sigaction m_term {};
 };
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 std::string duration_text(double s) {
     const auto total = static_cast<long long>(s + 0.5);
     return total >= 3600 ? fmt::format(FMT_STRING("{}:{:02d}:{:02d}"), total / 3600, total / 60 % 60, total % 60)
@@ -113,6 +106,13 @@ fs::path point_log(const fs::path& out_dir, const SweepPoint& p) {
 }
 
 }  // namespace
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
 
 fs::path point_report(const fs::path& out_dir, const SweepPoint& p) {
     return out_dir / "points" / (p.id() + ".json");

@@ -28,6 +28,9 @@ struct SweepRunOutcome {
     bool interrupted = false;
 };
 
+// A file's whole text (empty when it cannot be read): a point's log and record, a submission's files.
+std::string read_text(const std::filesystem::path& path);
+
 std::filesystem::path point_report(const std::filesystem::path& out_dir, const SweepPoint& p);
 std::filesystem::path point_record(const std::filesystem::path& out_dir, const SweepPoint& p);
 // The point's record, when it has one that reads (a rerun's and the results' view of it).

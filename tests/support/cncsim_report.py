@@ -29,3 +29,13 @@ def args_and_workdir():
     cncsim, source, work = sys.argv[1:4]
     os.makedirs(work, exist_ok=True)
     return cncsim, source, work
+
+
+def check_bad_input(name, r, said, unwritten):
+    """The command (a finished subprocess.run with text output) exited 2, its stderr says each of SAID, and the file
+    UNWRITTEN does not exist; prints the message."""
+    check(r.returncode == 2, "%s: exit %d, not 2: %s" % (name, r.returncode, r.stderr))
+    for what in said:
+        check(what in r.stderr, "%s: the message does not say '%s': %s" % (name, what, r.stderr))
+    check(not os.path.exists(unwritten), "%s: %s written" % (name, unwritten))
+    print(name + ":", r.stderr.strip().splitlines()[-1])

@@ -30,7 +30,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from cncsim_report import check, run_report  # noqa: E402
+from cncsim_report import check, check_bad_input, run_report  # noqa: E402
 
 # t(0.975, n - 1) of a Student's t table, for the seed counts the tests use.
 T975 = {2: 12.706, 3: 4.303, 4: 3.182, 5: 2.776}
@@ -212,13 +212,8 @@ def bad_input(cncsim, source, work):
         with open(path, "w") as f:
             f.write(text)
         out = os.path.join(work, name)
-        r = sweep(cncsim, path, out)
-        where = "%s:%d: %s" % (path, line, key)
-        check(r.returncode == 2, "%s: exit %d, not 2: %s" % (name, r.returncode, r.stderr))
-        check(where in r.stderr and what in r.stderr, "%s: the message does not name '%s' and '%s': %s"
-              % (name, where, what, r.stderr))
-        check(not os.path.exists(os.path.join(out, "results.csv")), name + ": results written")
-        print(name + ":", r.stderr.strip().splitlines()[-1])
+        check_bad_input(name, sweep(cncsim, path, out), ["%s:%d: %s" % (path, line, key), what],
+                        os.path.join(out, "results.csv"))
 
 
 def main():

@@ -15,6 +15,7 @@
 #include "architectures/atmega/chord_gaps.hpp"
 #include "architectures/atmega/link_bytes.hpp"
 #include "architectures/avr_board/avr_board.hpp"
+#include "architectures/avr_board/board_wiring.hpp"
 #include "architectures/serial_host/link_checks.hpp"
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
@@ -35,13 +36,6 @@ namespace cad2g = host::cad2g;
 
 // The chip's timers run on after M30 (cli; sleep): the run ends when the firmware has stopped, checked this often.
 constexpr TimePs kStopCheckPs = 10 * kPsPerMs;
-
-// The link's wires (the machine's pins are the run's: run/machine.hpp); the VCD and the analyze scripts rely on the
-// names (docs/architectures.md "Pins").
-struct Wires {
-    sc_core::sc_signal<bool> uart_rx{"uart_rx", true};  // CP2102 TXD -> PD0 RXD; idles high
-    sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // PD1 TXD -> CP2102 RXD
-};
 
 std::string firmware_path(const AtmegaSettings& a) {
     if (!a.board.firmware.empty()) return a.board.firmware;
@@ -148,29 +142,13 @@ public:
           m_moves(commanded_moves(&*job.program, cad2g::motion_segments(m_plan, s.machine), s.machine,
                                   s.interpreter.start_mm)),
           m_chord_gaps(m_pc.transfers()) {
-        m_cp2102.txd(m_wires.uart_rx);
-        m_cp2102.rxd(m_wires.uart_tx);
         m_pc.set_waits(
             host::waits_per_unit(*job.program, transfer_moves(m_plan, m_transfers, job.program->moves.size())));
-        m_mcu.step_x(pins.step_x);
-        m_mcu.dir_x(pins.dir_x);
-        m_mcu.en_x(pins.n_enbl_x);
-        m_mcu.step_y(pins.step_y);
-        m_mcu.dir_y(pins.dir_y);
-        m_mcu.en_y(pins.n_enbl_y);
-        m_mcu.head(pins.laser);  // the HEADER bit of the start byte: PB1 (timer1-y: PB3)
-        m_mcu.txd(m_wires.uart_tx);
-        m_mcu.rxd(m_wires.uart_rx);
+        wire_board(m_wires, m_cp2102, m_mcu, pins);  // the head: the HEADER bit of the start byte, PB1 (timer1-y: PB3)
     }
 
-    // The AVR times every pin it drives; the CP2102 (uart_rx) starts its frames when USB delivers the bytes.
-    [[nodiscard]] MachinePinClocks pin_clocks() const override {
-        const std::optional<std::int64_t> hz = m_mcu.chip().clock().grid_hz();
-        return {hz, hz};
-    }
-    [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
-        return {{&m_wires.uart_rx, "link", std::nullopt}, {&m_wires.uart_tx, "link", m_mcu.chip().clock().grid_hz()}};
-    }
+    [[nodiscard]] MachinePinClocks pin_clocks() const override { return board_pin_clocks(m_mcu); }
+    [[nodiscard]] std::vector<TracedPin> traced_pins() const override { return board_traced_pins(m_wires, m_mcu); }
     // Seed 003 §5.2.5: DIR 0 = CW = +X / +Y.
     [[nodiscard]] bool dir_high_is_positive() const override { return false; }
     // The firmware switches each driver off once its axis has counted its steps (seed 003 App. A2, A4).
@@ -180,10 +158,7 @@ public:
     void record(EdgeRecorder& rec, bool whole_logs) override {
         m_whole_logs = whole_logs;
         m_pins.emplace(rec, m_plan, whole_logs);
-        if (!whole_logs) return;
-        for (const sc_core::sc_signal<bool>* sig : {&m_wires.uart_rx, &m_wires.uart_tx}) {
-            rec.watch(*sig, sig->basename());
-        }
+        if (whole_logs) watch_board_lines(rec, m_wires);
     }
 
     [[nodiscard]] JobEstimate estimate() const override {
@@ -227,11 +202,7 @@ public:
     // The STEP pulses the drivers act on (nENBL low), and the DIR and laser edges.
     [[nodiscard]] EdgeLog take_edges(EdgeRecorder&, const std::string& pin) override { return m_pins->hand_over(pin); }
     void take_lines(EdgeRecorder& rec, std::map<std::string, EdgeLog>& lines) override {
-        if (!m_whole_logs) return;
-        for (const char* pin : {"uart_rx", "uart_tx"}) lines[pin] = rec.take(pin);
-        for (const char* pin : {"n_enbl_x", "n_enbl_y"}) lines[pin] = m_pins->take_raw(pin);
-        lines["step_x_pin"] = m_pins->take_raw("step_x");  // the raw pins: the timers toggle them while EN is high too
-        lines["step_y_pin"] = m_pins->take_raw("step_y");
+        if (m_whole_logs) take_board_lines(rec, m_pins->driven(), lines);
     }
     void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override;
 
@@ -257,7 +228,7 @@ private:
     const avr::AvrCoreConfig m_avr_cfg;
     const uart::Cp2102Config m_link;
     const std::vector<cad2g::Transfer> m_transfers;
-    Wires m_wires;
+    BoardWires m_wires;
     uart::Cp2102 m_cp2102;
     host::PcProgram m_pc;
     avr::AvrCore m_mcu;

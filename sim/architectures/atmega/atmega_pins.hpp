@@ -25,7 +25,7 @@ public:
     [[nodiscard]] EdgeLog hand_over(const std::string& pin, TimePs before_ps = std::numeric_limits<TimePs>::max()) {
         return m_pins.hand_over(pin, before_ps);
     }
-    [[nodiscard]] EdgeLog take_raw(const std::string& pin) { return m_pins.take_raw(pin); }
+    [[nodiscard]] DrivenPins& driven() { return m_pins; }
 
 private:
     DrivenPins m_pins;

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "architectures/avr_board/avr_board.hpp"
+#include "architectures/avr_board/board_wiring.hpp"
 #include "architectures/avr_board/driven_pins.hpp"
 #include "architectures/grbl/grbl_report.hpp"
 #include "architectures/grbl/grbl_settings.hpp"
@@ -37,12 +38,6 @@ namespace {
 
 // The sender's end and a failure are checked this often.
 constexpr TimePs kStopCheckPs = 10 * kPsPerMs;
-
-// The link's wires (the machine's pins are the run's: run/machine.hpp); names as the atmega architecture's.
-struct Wires {
-    sc_core::sc_signal<bool> uart_rx{"uart_rx", true};  // CP2102 TXD -> PD0 RXD; idles high
-    sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // PD1 TXD -> CP2102 RXD
-};
 
 // The job file's lines as the sender streams them.
 std::vector<host::grbl::SendLine> job_lines(const Scenario& s) {
@@ -145,27 +140,11 @@ public:
           m_sender("host", sender_config(m_g), m_cp2102, make_stream(s, m_g, job)),
           m_mcu("atmega328p", m_avr_cfg),
           m_moves(commanded_moves(&*job.program, segments, s.machine, s.interpreter.start_mm)) {
-        m_cp2102.txd(m_wires.uart_rx);
-        m_cp2102.rxd(m_wires.uart_tx);
-        m_mcu.step_x(pins.step_x);
-        m_mcu.dir_x(pins.dir_x);
-        m_mcu.en_x(pins.n_enbl_x);
-        m_mcu.step_y(pins.step_y);
-        m_mcu.dir_y(pins.dir_y);
-        m_mcu.en_y(pins.n_enbl_y);
-        m_mcu.head(pins.laser);
-        m_mcu.txd(m_wires.uart_tx);
-        m_mcu.rxd(m_wires.uart_rx);
+        wire_board(m_wires, m_cp2102, m_mcu, pins);
     }
 
-    // The AVR times every pin it drives; the CP2102 (uart_rx) starts its frames when USB delivers the bytes.
-    [[nodiscard]] MachinePinClocks pin_clocks() const override {
-        const std::optional<std::int64_t> hz = m_mcu.chip().clock().grid_hz();
-        return {hz, hz};
-    }
-    [[nodiscard]] std::vector<TracedPin> traced_pins() const override {
-        return {{&m_wires.uart_rx, "link", std::nullopt}, {&m_wires.uart_tx, "link", m_mcu.chip().clock().grid_hz()}};
-    }
+    [[nodiscard]] MachinePinClocks pin_clocks() const override { return board_pin_clocks(m_mcu); }
+    [[nodiscard]] std::vector<TracedPin> traced_pins() const override { return board_traced_pins(m_wires, m_mcu); }
     // grbl 1.1: a DIR bit set moves its axis the negative way ($3 = 0).
     [[nodiscard]] bool dir_high_is_positive() const override { return false; }
     // grbl holds its stepper-disable pin high until the first block and after an idle delay ($1).
@@ -174,10 +153,7 @@ public:
         m_whole_logs = whole_logs;
         m_pins.emplace(rec, whole_logs);
         m_windows.emplace(m_ends, dir_high_is_positive());
-        if (!whole_logs) return;
-        for (const sc_core::sc_signal<bool>* sig : {&m_wires.uart_rx, &m_wires.uart_tx}) {
-            rec.watch(*sig, sig->basename());
-        }
+        if (whole_logs) watch_board_lines(rec, m_wires);
     }
 
     [[nodiscard]] JobEstimate estimate() const override {
@@ -213,11 +189,7 @@ public:
     }
     [[nodiscard]] EdgeLog take_edges(EdgeRecorder&, const std::string& pin) override { return m_pins->hand_over(pin); }
     void take_lines(EdgeRecorder& rec, std::map<std::string, EdgeLog>& lines) override {
-        if (!m_whole_logs) return;
-        for (const char* pin : {"uart_rx", "uart_tx"}) lines[pin] = rec.take(pin);
-        for (const char* pin : {"n_enbl_x", "n_enbl_y"}) lines[pin] = m_pins->take_raw(pin);
-        lines["step_x_pin"] = m_pins->take_raw("step_x");
-        lines["step_y_pin"] = m_pins->take_raw("step_y");
+        if (m_whole_logs) take_board_lines(rec, *m_pins, lines);
     }
     void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override;
 
@@ -238,7 +210,7 @@ private:
     const Job& m_job;
     const avr::AvrCoreConfig m_avr_cfg;
     const std::vector<std::array<std::int64_t, 2>> m_ends;
-    Wires m_wires;
+    BoardWires m_wires;
     uart::Cp2102 m_cp2102;
     host::GrblSender m_sender;
     avr::AvrCore m_mcu;

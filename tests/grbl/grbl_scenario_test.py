@@ -15,6 +15,13 @@ Usage: grbl_scenario_test.py MODE CNCSIM SOURCE_DIR FIRMWARE_ELF FIRMWARE_HEX
             (peak to peak) and TIE (max and rms, against the least-squares grid) equal what that pattern predicts
             within one cycle (62.5 ns, ideal clock), and are far above it; X's are within one cycle of 0. The
             status interval is longer than the move, so no serial interrupt delays an ISR.
+  laser     laser power from OC2A: in laser mode ($32 = 1, from the job's M3 S), G1 X10 F600 at S250, S500 and S1000
+            ($30 = 1000). The firmware's compare value is floor(S x 255 / $30), and fast PWM at clk/8 sets OC2A at
+            BOTTOM and clears it at the match: high (OCR2A + 1) x 8 of every 2048 cycles (ATmega328P datasheet
+            §18.7.3), 25 %, 50 %; OCR2A = 255 = MAX holds it high (100 %). The PWM periods' high times, read from
+            the VCD, are that to the cycle (at least 99 % of them; the rest within one prescaler tick, 8 cycles: a
+            deviation of the timer model that models/avr/README.md lists), and the report's laser-on time
+            follows the duty (each run's against the S1000 run's, within 1 %).
 """
 import math
 import struct
@@ -74,6 +81,30 @@ def tie(times):
     b = sum((k - k_mean) * (t - t_mean) for k, t in enumerate(times)) / sum((k - k_mean) ** 2 for k in range(n))
     res = [t - (t_mean + b * (k - k_mean)) for k, t in enumerate(times)]
     return max(abs(e) for e in res), math.sqrt(sum(e * e for e in res) / n)
+
+
+def high_times_cycles(vcd, signal):
+    """Each high stretch of a 1-bit VCD signal, in 16 MHz cycles (62.5 ns)."""
+    ids, scale_ps, t, rise, out = {}, None, 0, None, []
+    lines = iter(open(vcd))
+    for line in lines:
+        if line.startswith("$timescale"):
+            text = line.split()[1:-1] if "$end" in line else next(lines).split()
+            value, unit = text[0], text[1] if len(text) > 1 else ""
+            number = int("".join(c for c in value if c.isdigit()))
+            unit = unit or value.lstrip("0123456789")
+            scale_ps = number * {"fs": 1e-3, "ps": 1, "ns": 1e3, "us": 1e6}[unit]
+        elif line.startswith("$var"):
+            fields = line.split()
+            ids[fields[3]] = fields[4]
+        elif line.startswith("#"):
+            t = int(line[1:]) * scale_ps
+        elif line[:1] in "01" and ids.get(line[1:].strip()) == signal:
+            if line[0] == "1":
+                rise = t
+            elif rise is not None:
+                out.append(round((t - rise) / 62500.0))
+    return out
 
 
 def check(cond, what):
@@ -143,6 +174,35 @@ def main():
         check(abs(y["tie_max_ns"] - tie_max) <= cycle_ns, "Y TIE max as predicted")
         check(abs(y["tie_rms_max_ns"] - tie_rms) <= cycle_ns, "Y TIE rms as predicted")
         check(x["jitter_pp_max_ns"] <= cycle_ns and x["tie_max_ns"] <= cycle_ns, "X: no jitter beyond a cycle")
+    elif mode == "laser":
+        on_ms = {}
+        for power in (250, 500, 1000):
+            folder = tempfile.mkdtemp()
+            job = os.path.join(folder, "line.nc")
+            vcd = os.path.join(folder, "line.vcd")
+            with open(job, "w") as f:
+                f.write("G21 G90\nM3 S%d\nG1 X10 F600\nM5\n" % power)
+            p, r = run(cncsim, source, scenario, firmware, ["--set", "scenario.job=" + job, "--set", "clock.ideal=true",
+                                                              "--set", 'grbl.settings=["$30=1000"]', "--vcd", vcd])
+            check(p.returncode == 0, "S%d: exit 0 (stderr: %s)" % (power, p.stderr.strip()))
+            ocr = power * 255 // 1000
+            highs = high_times_cycles(vcd, "laser")
+            if ocr == 255:
+                check(len(highs) == 1, "S%d: OCR2A 255, the pin held high through the move (%d pulses)" %
+                      (power, len(highs)))
+            else:
+                inner = highs[1:-1]  # the first and last are cut by the block's start and end
+                want = (ocr + 1) * 8
+                exact = sum(1 for h in inner if h == want)
+                check(len(inner) > 1000 and exact >= 0.99 * len(inner) and all(abs(h - want) < 8 for h in inner),
+                      "S%d: OCR2A %d, PWM periods high %d cycles: %d of %d, the rest within 8 cycles (%s)" %
+                      (power, ocr, want, exact, len(inner), sorted(set(inner))))
+            on_ms[power] = r["metrics"]["laser"]["on_ms"]
+        for power in (250, 500):
+            duty = (power * 255 // 1000 + 1) / 256
+            ratio = on_ms[power] / on_ms[1000]
+            check(abs(ratio - duty) < 0.01 * duty, "S%d: laser on %.3f ms, %.4f of S1000's, duty %.4f" %
+                  (power, on_ms[power], ratio, duty))
     else:
         sys.exit("unknown mode " + mode)
 

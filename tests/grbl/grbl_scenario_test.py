@@ -19,8 +19,8 @@ Usage: grbl_scenario_test.py MODE CNCSIM SOURCE_DIR FIRMWARE_ELF FIRMWARE_HEX
             ($30 = 1000). The firmware's compare value is floor(S x 255 / $30), and fast PWM at clk/8 sets OC2A at
             BOTTOM and clears it at the match: high (OCR2A + 1) x 8 of every 2048 cycles (ATmega328P datasheet
             §18.7.3), 25 %, 50 %; OCR2A = 255 = MAX holds it high (100 %). The PWM periods' high times, read from
-            the VCD, are that to the cycle (at least 99 % of them; the rest within one prescaler tick, 8 cycles: a
-            deviation of the timer model that models/avr/README.md lists), and the report's laser-on time
+            the VCD, are that to the cycle (at least 99 % of them; the rest within one prescaler tick, 8 cycles: the
+            late replay of events the core's cycle count jumped past, which models/avr/README.md lists), and the report's laser-on time
             follows the duty (each run's against the S1000 run's, within 1 %).
 """
 import math

@@ -22,17 +22,19 @@ metrics::MoveSpec CommandedMoves::next(const host::MotionSegment& seg, const hos
     m.programmed = programmed ? seg.move : -1;
     m.path = programmed ? programmed_move->path : geom::Segment::line(m.from_mm, m.to_mm);
     m.z_end_mm = programmed ? programmed_move->z_end_mm : 0.0;
-    m.feed_mm_per_min = seg.path_feed_mm_per_min;
     m.rapid = seg.motion == host::MotionKind::Rapid;
     m.steps = {seg.steps_x, seg.steps_y};
-    // The programmed path speed F, split over the axes in proportion to this move's own displacement.
-    const double length_mm = geom::distance(m.from_mm, m.to_mm);
-    const double speed_mm_per_s = m.feed_mm_per_min / 60.0;
-    if (length_mm > 0.0) {
-        m.rate_steps_per_s = {speed_mm_per_s * static_cast<double>(std::llabs(seg.steps_x)) / length_mm,
-                              speed_mm_per_s * static_cast<double>(std::llabs(seg.steps_y)) / length_mm};
-    }
+    set_path_feed(m, seg.path_feed_mm_per_min);
     return m;
+}
+
+void set_path_feed(metrics::MoveSpec& m, double feed_mm_per_min) {
+    m.feed_mm_per_min = feed_mm_per_min;
+    const double length_mm = geom::distance(m.from_mm, m.to_mm);
+    if (length_mm <= 0.0) return;
+    const double speed_mm_per_s = feed_mm_per_min / 60.0;
+    m.rate_steps_per_s = {speed_mm_per_s * static_cast<double>(std::llabs(m.steps[0])) / length_mm,
+                          speed_mm_per_s * static_cast<double>(std::llabs(m.steps[1])) / length_mm};
 }
 
 metrics::MoveSpec CommandedMoves::unstepped(const host::ProgrammedMove& programmed, int move) {

@@ -31,6 +31,10 @@ private:
     std::int64_t m_at_x = 0, m_at_y = 0;  // step counts before the next segment
 };
 
+// Sets the move's path feed F and its commanded per-axis step rates: F split over the axes in proportion to the
+// move's own displacement (from_mm to to_mm, steps; docs/metrics.md "Commanded rate"). A move of no length keeps none.
+void set_path_feed(metrics::MoveSpec& m, double feed_mm_per_min);
+
 // A move of unstepped(): piece index 0.
 [[nodiscard]] inline bool is_unstepped(const metrics::MoveSpec& m) { return m.index == 0 && m.programmed >= 0; }
 

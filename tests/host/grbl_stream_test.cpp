@@ -80,6 +80,19 @@ TEST(GrblStream, SendResponseWaitsForEachAnswer) {
     EXPECT_EQ(s.phase(), Phase::Done);
 }
 
+// A job with no line to send drains as soon as the start-up message (and any settings) are through.
+TEST(GrblStream, AJobWithNoLineDrainsAtOnce) {
+    Stream s({}, {}, {});
+    s.received("Grbl 1.1h");
+    EXPECT_TRUE(s.draining());
+    Stream with_setting({}, job_of({"$0=10"}), {});
+    with_setting.received("Grbl 1.1h");
+    EXPECT_EQ(drain_writes(with_setting), std::vector<std::string>{"$0=10\n"});
+    EXPECT_FALSE(with_setting.draining());
+    with_setting.received("ok");
+    EXPECT_TRUE(with_setting.draining());
+}
+
 TEST(GrblStream, SettingsGoOneAtATimeBeforeTheJob) {
     Stream s({}, job_of({"$100=160.000", "$101=160.000"}), job_of({"G0X1", "G0X2"}));
     s.received("Grbl 1.1h");

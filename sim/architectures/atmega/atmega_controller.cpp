@@ -7,16 +7,14 @@
 #include <string>
 #include <utility>
 
-#include <fmt/format.h>
-
 #include "architectures/atmega/atmega_pins.hpp"
 #include "architectures/atmega/atmega_report.hpp"
 #include "architectures/atmega/atmega_settings.hpp"
 #include "architectures/atmega/chord_gaps.hpp"
 #include "architectures/atmega/link_bytes.hpp"
 #include "architectures/avr_board/avr_board.hpp"
+#include "architectures/avr_board/board_link_report.hpp"
 #include "architectures/avr_board/board_wiring.hpp"
-#include "architectures/serial_host/link_checks.hpp"
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/cad2g/firmware_busy.hpp"
@@ -111,15 +109,10 @@ host::ConfirmTimeouts confirm_timeouts(const AtmegaSettings& a, const uart::Cp21
     return t;
 }
 
-// Why the link does not work, once it is clear: frames garbled at either end, or the PC program's protocol check
-// (which names the firmware it checked).
+// Why the link does not work, once it is clear; the PC program's protocol check names the firmware it checked.
 std::optional<std::string> link_failure(const avr::AvrCore& mcu, const uart::Cp2102& cp2102,
                                         const host::PcProgram& pc) {
-    if (auto framing = framing_failure(mcu.stats().usart.rx_framing_errors, "MCU", cp2102.stats().framing_errors)) {
-        return framing;
-    }
-    if (pc.failure()) return pc.failure()->reason + " (avr.firmware " + mcu.config().firmware_elf + ")";
-    return std::nullopt;
+    return board_link_failure(mcu, cp2102, pc.failure() ? std::optional(pc.failure()->reason) : std::nullopt);
 }
 
 // The seed 003 system between the job and the machine's pins: the PC program (CAD2G) through the CP2102, the
@@ -258,8 +251,7 @@ void AtmegaController::report(ArchRun& run, const RunBudget& budget, const Simul
 
     if (const std::optional<std::string> why = link_failure(m_mcu, m_cp2102, m_pc)) {
         run.ok = false;
-        run.failure =
-            *why + fmt::format(FMT_STRING(" (run stopped at {:.3f} s of simulated time)"), ps_to_s(m_stop_ps));
+        run.failure = stopped_at(*why, m_stop_ps);
     } else if (!m_pc.finished()) {
         run.ok = false;
         run.failure = m_mcu.stopped() ? "the firmware stopped before the PC program had sent the job"

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "architectures/serial_host/link_checks.hpp"
+
 namespace cnc::sim {
 
 nlohmann::json board_link_json(const uart::Cp2102& cp2102, const avr::AvrCore& mcu, double mcu_baud) {
@@ -39,6 +41,19 @@ std::vector<Warning> board_link_warnings(const uart::Cp2102& cp2102, const avr::
                      std::to_string(cp2102.stats().framing_errors) + " UART framing errors at the CP2102"});
     }
     return w;
+}
+
+std::optional<std::string> board_link_failure(const avr::AvrCore& mcu, const uart::Cp2102& cp2102,
+                                              const std::optional<std::string>& host_failure) {
+    if (auto framing = framing_failure(mcu.stats().usart.rx_framing_errors, "MCU", cp2102.stats().framing_errors)) {
+        return framing;
+    }
+    if (host_failure) return *host_failure + " (avr.firmware " + mcu.config().firmware_elf + ")";
+    return std::nullopt;
+}
+
+std::string stopped_at(const std::string& why, TimePs stop_ps) {
+    return why + fmt::format(FMT_STRING(" (run stopped at {:.3f} s of simulated time)"), ps_to_s(stop_ps));
 }
 
 }  // namespace cnc::sim

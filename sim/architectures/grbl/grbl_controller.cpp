@@ -1,7 +1,6 @@
 #include "architectures/grbl/grbl.hpp"
 
 #include <array>
-#include <cmath>
 #include <fstream>
 #include <limits>
 #include <memory>
@@ -11,15 +10,13 @@
 #include <utility>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "architectures/avr_board/avr_board.hpp"
+#include "architectures/avr_board/board_link_report.hpp"
 #include "architectures/avr_board/board_wiring.hpp"
 #include "architectures/avr_board/driven_pins.hpp"
 #include "architectures/grbl/grbl_report.hpp"
 #include "architectures/grbl/grbl_settings.hpp"
 #include "architectures/grbl/step_windows.hpp"
-#include "architectures/serial_host/link_checks.hpp"
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/cam.hpp"
@@ -89,13 +86,9 @@ metrics::MoveSpec executed_move(const Scenario& s, metrics::MoveSpec m, const St
     m.t_begin_ps = window.t_begin_ps;
     m.t_end_ps = window.t_end_ps;
     if (m.rapid) {
-        const double dx_mm = static_cast<double>(m.steps[0]) * s.machine.x.mm_per_step();
-        const double dy_mm = static_cast<double>(m.steps[1]) * s.machine.y.mm_per_step();
-        const double length_mm = std::hypot(dx_mm, dy_mm);
-        m.feed_mm_per_min = host::feed_within_axis_limits(dx_mm, dy_mm, std::numeric_limits<double>::max(), s.machine);
-        const double v_mm_per_s = m.feed_mm_per_min / 60.0;
-        m.rate_steps_per_s = {std::abs(dx_mm) / length_mm * v_mm_per_s * s.machine.x.steps_per_mm(),
-                              std::abs(dy_mm) / length_mm * v_mm_per_s * s.machine.y.steps_per_mm()};
+        const geom::Vec2 d_mm = m.to_mm - m.from_mm;
+        set_path_feed(
+            m, host::feed_within_axis_limits(d_mm.x_mm, d_mm.y_mm, std::numeric_limits<double>::max(), s.machine));
     }
     return m;
 }
@@ -113,16 +106,6 @@ ArchPace pace(const Scenario& s, const GrblSettings& g, const uart::Cp2102Config
                     static_cast<double>(l.text.size() + 1) * byte_s;
     }
     return p;
-}
-
-// Why the run stops before the job's end, once it is clear: frames garbled at either end, or the sender's failure.
-std::optional<std::string> link_failure(const avr::AvrCore& mcu, const uart::Cp2102& cp2102,
-                                        const host::GrblSender& sender) {
-    if (auto framing = framing_failure(mcu.stats().usart.rx_framing_errors, "MCU", cp2102.stats().framing_errors)) {
-        return framing;
-    }
-    if (sender.failure()) return *sender.failure() + " (avr.firmware " + mcu.config().firmware_elf + ")";
-    return std::nullopt;
 }
 
 // The grbl system between the job and the machine's pins: the G-code sender through the CP2102, the ATmega328P
@@ -161,7 +144,7 @@ public:
     }
     [[nodiscard]] TimePs stop_check_ps() const override { return kStopCheckPs; }
     [[nodiscard]] bool stopped() override {
-        return m_sender.finished() || link_failure(m_mcu, m_cp2102, m_sender).has_value();
+        return m_sender.finished() || board_link_failure(m_mcu, m_cp2102, m_sender.failure()).has_value();
     }
     void feed_started(MetricsFeed& feed) override {
         feed.take_edges_with([this](const std::string& pin, TimePs t_ps) { return m_pins->hand_over(pin, t_ps); });
@@ -238,9 +221,9 @@ void GrblController::report(ArchRun& run, const RunBudget& budget, const Simulat
     run.details_text = grbl_details_text(facts);
     run.clock = oscillator_json(m_g.board.clock, m_mcu.chip().clock());
     run.clock_text = oscillator_text(m_g.board.clock, m_mcu.chip().clock());
-    if (const std::optional<std::string> why = link_failure(m_mcu, m_cp2102, m_sender)) {
+    if (const std::optional<std::string> why = board_link_failure(m_mcu, m_cp2102, m_sender.failure())) {
         run.ok = false;
-        run.failure = *why + fmt::format(FMT_STRING(" (run stopped at {:.3f} s of simulated time)"), ps_to_s(end.t_ps));
+        run.failure = stopped_at(*why, end.t_ps);
     } else if (!m_sender.finished()) {
         run.ok = false;
         run.failure = "the job did not finish: " + time_limit_text(budget, end);

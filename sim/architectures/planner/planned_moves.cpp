@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <utility>
+
+#include "run/moves.hpp"
 
 namespace cnc::sim {
 
@@ -63,13 +64,7 @@ std::vector<metrics::MoveSpec> PlannedMoves::take(const host::servo::TrajectoryC
         m.steps = {to[0] - from[0], to[1] - from[1]};
         m.rapid = pm.kind == host::MotionKind::Rapid;
         const double peak = fed->peak_mm_per_s;
-        m.feed_mm_per_min = m.rapid && peak > 0.0 ? peak * kSecondsPerMinute : pm.feed_mm_per_min;
-        const double length_mm = geom::distance(m.from_mm, m.to_mm);
-        if (length_mm > 0.0) {
-            const double mm_per_s = m.feed_mm_per_min / kSecondsPerMinute;
-            m.rate_steps_per_s = {mm_per_s * static_cast<double>(std::llabs(m.steps[0])) / length_mm,
-                                  mm_per_s * static_cast<double>(std::llabs(m.steps[1])) / length_mm};
-        }
+        set_path_feed(m, m.rapid && peak > 0.0 ? peak * kSecondsPerMinute : pm.feed_mm_per_min);
         m.t_begin_ps = *m_next_begin_ps;
         m.t_end_ps = clock.depart_time(window.second);
         m_next_begin_ps.reset();

@@ -29,7 +29,8 @@ void Stream::received(const std::string& line) {
             return;
         }
         m_banner = line;
-        m_phase = m_settings.empty() ? Phase::Job : Phase::Settings;
+        m_phase = Phase::Settings;
+        advance_phase();
         return;
     }
     // Before its start-up message grbl may report on itself (error:7, its settings read from a blank EEPROM and
@@ -72,8 +73,13 @@ void Stream::answered(const std::string& answer) {
             return;
         }
     }
-    if (m_phase == Phase::Settings && m_in_flight.empty() && m_next_setting == m_settings.size()) m_phase = Phase::Job;
-    if (m_phase == Phase::Job && m_next_job == m_job.size() && m_in_flight.empty()) m_phase = Phase::Draining;
+    advance_phase();
+}
+
+void Stream::advance_phase() {
+    if (!m_in_flight.empty()) return;
+    if (m_phase == Phase::Settings && m_next_setting == m_settings.size()) m_phase = Phase::Job;
+    if (m_phase == Phase::Job && m_next_job == m_job.size()) m_phase = Phase::Draining;
 }
 
 std::optional<std::string> Stream::next_write() {
@@ -84,10 +90,7 @@ std::optional<std::string> Stream::next_write() {
         line = &m_settings[m_next_setting++];
         setting = true;
     } else if (m_phase == Phase::Job) {
-        if (m_next_job == m_job.size()) {
-            if (m_in_flight.empty()) m_phase = Phase::Draining;  // a job with no line to send
-            return std::nullopt;
-        }
+        if (m_next_job == m_job.size()) return std::nullopt;
         const std::size_t bytes = m_job[m_next_job].text.size() + 1;
         const bool fits = m_cfg.protocol == Protocol::CharacterCounting
                               ? m_in_flight_bytes + bytes <= m_cfg.rx_buffer_bytes - 1

@@ -60,6 +60,8 @@ public:
 
 private:
     void answered(const std::string& answer);
+    // Settings -> Job -> Draining, each once all its lines are sent and answered.
+    void advance_phase();
     void fail(std::string why);
 
     StreamConfig m_cfg;

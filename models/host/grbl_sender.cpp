@@ -29,8 +29,12 @@ void GrblSender::read_port() {
             m_lines.push_back({now_ps(), false, m_partial});
             m_stream.received(m_partial);
             m_partial.clear();
-        } else if (*b != '\r') {
+        } else if (*b >= 0x20 && *b < 0x7F) {
             m_partial.push_back(static_cast<char>(*b));
+        } else if (*b != '\r') {
+            // grbl answers in printable ASCII; anything else is a byte the line changed, kept readable in the
+            // report (which is UTF-8 JSON).
+            m_partial += fmt::format(FMT_STRING("\\x{:02X}"), *b);
         }
     }
 }

@@ -20,9 +20,10 @@ public:
         return s;
     }
 
-    // The DRV8825s on the machine's pins (its link's faults are not modelled yet).
+    // The DRV8825s on the machine's pins, the link's wires.
     [[nodiscard]] FaultLinks fault_links() const override {
         FaultLinks links;
+        links.uart = true;
         links.step_input = true;
         return links;
     }

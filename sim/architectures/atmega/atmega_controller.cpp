@@ -1,11 +1,16 @@
 #include "architectures/atmega/atmega.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "architectures/atmega/atmega_pins.hpp"
 #include "architectures/atmega/atmega_report.hpp"
@@ -13,6 +18,7 @@
 #include "architectures/atmega/chord_gaps.hpp"
 #include "architectures/atmega/link_bytes.hpp"
 #include "architectures/avr_board/avr_board.hpp"
+#include "architectures/avr_board/board_faults.hpp"
 #include "architectures/avr_board/board_link_report.hpp"
 #include "architectures/avr_board/board_wiring.hpp"
 #include "avr/avr_core.hpp"
@@ -109,19 +115,13 @@ host::ConfirmTimeouts confirm_timeouts(const AtmegaSettings& a, const uart::Cp21
     return t;
 }
 
-// Why the link does not work, once it is clear; the PC program's protocol check names the firmware it checked.
-std::optional<std::string> link_failure(const avr::AvrCore& mcu, const uart::Cp2102& cp2102,
-                                        const host::PcProgram& pc) {
-    return board_link_failure(mcu, cp2102, pc.failure() ? std::optional(pc.failure()->reason) : std::nullopt);
-}
-
 // The seed 003 system between the job and the machine's pins: the PC program (CAD2G) through the CP2102, the
 // ATmega328P running its firmware, which drives STEP, DIR, EN and the head.
 class AtmegaController final : public Controller {
 public:
     // `plan`, `avr_cfg`, `link`: checked_plan().
     AtmegaController(const Scenario& s, const Job& job, MachinePins& pins, cad2g::Plan plan, avr::AvrCoreConfig avr_cfg,
-                     uart::Cp2102Config link)
+                     uart::Cp2102Config link, const std::optional<FirmwareUsart>& usart)
         : m_s(s),
           m_a(s.settings<AtmegaSettings>()),
           m_job(job),
@@ -134,10 +134,12 @@ public:
           m_mcu("atmega328p", m_avr_cfg),
           m_moves(commanded_moves(&*job.program, cad2g::motion_segments(m_plan, s.machine), s.machine,
                                   s.interpreter.start_mm)),
-          m_chord_gaps(m_pc.transfers()) {
+          m_chord_gaps(m_pc.transfers()),
+          m_faults(board_line_faults(s.faults, m_cp2102, usart, m_avr_cfg.f_cpu_hz)) {
         m_pc.set_waits(
             host::waits_per_unit(*job.program, transfer_moves(m_plan, m_transfers, job.program->moves.size())));
-        wire_board(m_wires, m_cp2102, m_mcu, pins);  // the head: the HEADER bit of the start byte, PB1 (timer1-y: PB3)
+        wire_board(m_wires, m_cp2102, m_mcu, pins,
+                   m_faults.get());  // the head: the HEADER bit of the start byte, PB1 (timer1-y: PB3)
     }
 
     [[nodiscard]] MachinePinClocks pin_clocks() const override { return board_pin_clocks(m_mcu); }
@@ -158,7 +160,7 @@ public:
         return estimate_job(*m_job.program, pace(m_s, m_a, m_link, m_transfers));
     }
     [[nodiscard]] TimePs stop_check_ps() const override { return kStopCheckPs; }
-    [[nodiscard]] bool stopped() override { return m_mcu.stopped() || link_failure(m_mcu, m_cp2102, m_pc).has_value(); }
+    [[nodiscard]] bool stopped() override { return m_mcu.stopped() || link_failure().has_value(); }
     // Every fold comes right after the pins were read up to its instant: the edges before it are all there.
     void feed_started(MetricsFeed& feed) override {
         feed.take_edges_with([this](const std::string& pin, TimePs t_ps) { return m_pins->hand_over(pin, t_ps); });
@@ -198,9 +200,17 @@ public:
         if (m_whole_logs) take_board_lines(rec, m_pins->driven(), lines);
     }
     void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override;
+    void report_faults(ArchRun& run) const;
 
 private:
+    // Why the link does not work, once it is clear; the PC program's protocol check names the firmware it checked.
+    [[nodiscard]] std::optional<std::string> link_failure() const {
+        return board_link_failure(m_mcu, m_cp2102,
+                                  m_pc.failure() ? std::optional(m_pc.failure()->reason) : std::nullopt,
+                                  m_faults != nullptr);
+    }
     void read_link() {
+        if (m_faults) m_faults->take_host_bytes(m_cp2102, [this](std::size_t j) { return m_pc.writes()[j].transfer; });
         read_link_bytes(m_pc, m_cp2102, uart::decision_offset_ps(m_mcu.chip().rx_clock(), m_mcu.chip().rx_format()),
                         [&](std::size_t transfer, TimePs t_ps) { m_chord_gaps.add_byte(transfer, t_ps); });
     }
@@ -228,9 +238,34 @@ private:
     WindowedMoves m_moves;
     std::optional<AtmegaPins> m_pins;  // once the recorder watches the pins
     ChordGapFold m_chord_gaps;
+    std::unique_ptr<BoardLineFaults> m_faults;  // with faults on the link's wires
     TimePs m_stop_ps = 0;
     bool m_whole_logs = false;
 };
+
+// The seed's protocol has no check: a transfer with a byte that did not arrive as sent either runs as the firmware
+// read it, once its confirm lets the PC program go on to the next transfer, or stops the program (no confirm, or a
+// byte other than the confirm).
+void AtmegaController::report_faults(ArchRun& run) const {
+    const BoardLineFaultResult r = m_faults->result(m_mcu);
+    const std::vector<std::size_t> hit = m_faults->units_hit(r.to_mcu);
+    const std::optional<std::size_t> last = m_faults->last_unit_sent();
+    std::size_t ran_on = 0;
+    for (const std::size_t t : hit) {
+        if (t < *last || m_pc.finished()) ++ran_on;
+    }
+    nlohmann::json j = board_faults_json(m_s.faults, r);
+    j["transfers"] = {{"sent", last ? *last + 1 : 0},
+                      {"hit", hit.size()},
+                      {"ran_without_a_check_noticing", ran_on},
+                      {"stopped_the_pc_program", hit.size() - ran_on}};
+    run.details["faults"] = std::move(j);
+    run.details_text +=
+        board_faults_text(m_s.faults, r) +
+        fmt::format(FMT_STRING("  transfers: {} with a byte that did not arrive as sent, {} of them run "
+                               "without a check noticing\n"),
+                    hit.size(), ran_on);
+}
 
 void AtmegaController::report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) {
     run.warnings = m_plan.warnings;
@@ -249,7 +284,8 @@ void AtmegaController::report(ArchRun& run, const RunBudget& budget, const Simul
     run.clock = oscillator_json(m_a.board.clock, m_mcu.chip().clock());
     run.clock_text = oscillator_text(m_a.board.clock, m_mcu.chip().clock());
 
-    if (const std::optional<std::string> why = link_failure(m_mcu, m_cp2102, m_pc)) {
+    if (m_faults) report_faults(run);
+    if (const std::optional<std::string> why = link_failure()) {
         run.ok = false;
         run.failure = stopped_at(*why, m_stop_ps);
     } else if (!m_pc.finished()) {
@@ -270,10 +306,11 @@ ArchRun Entry::run(const Scenario& s, const Job& job) {
         cad2g::Plan plan = cad2g::plan_program(*j.program, sc.machine, a.pc);
         avr::AvrCoreConfig avr_cfg = avr_config(sc, a);
         const uart::Cp2102Config link = link_config(a);
-        check_firmware_rate(
+        avr_cfg.keep_usart_logs = sc.faults.uart.any();  // board_faults.hpp matches every byte
+        const std::optional<FirmwareUsart> usart = check_firmware_rate(
             sc, link, avr_cfg,
             a.board.firmware.empty() ? "the seed 003 firmware" : "the firmware " + avr_cfg.firmware_elf);
-        return std::make_unique<AtmegaController>(sc, j, pins, std::move(plan), std::move(avr_cfg), link);
+        return std::make_unique<AtmegaController>(sc, j, pins, std::move(plan), std::move(avr_cfg), link, usart);
     });
 }
 

@@ -3,7 +3,6 @@
 #include <optional>
 #include <utility>
 
-#include "architectures/avr_board/firmware_usart.hpp"
 #include "architectures/serial_host/link_checks.hpp"
 
 namespace cnc::sim {
@@ -19,12 +18,13 @@ avr::AvrCoreConfig board_config(const Scenario& s, const AvrBoardSettings& board
     return cfg;
 }
 
-void check_firmware_rate(const Scenario& s, const uart::Cp2102Config& link, const avr::AvrCoreConfig& cfg,
-                         const std::string& firmware_name) {
-    const std::optional<FirmwareUsart> usart = probe_firmware_usart(cfg);
-    if (!usart) return;
+std::optional<FirmwareUsart> check_firmware_rate(const Scenario& s, const uart::Cp2102Config& link,
+                                                 const avr::AvrCoreConfig& cfg, const std::string& firmware_name) {
+    std::optional<FirmwareUsart> usart = probe_firmware_usart(cfg);
+    if (!usart) return usart;
     check_line_rates(s.file + ": link.baud, avr.firmware", cp2102_end(link),
                      {usart->baud, firmware_name + "'s USART0 at " + usart->text(cfg.f_cpu_hz)});
+    return usart;
 }
 
 }  // namespace cnc::sim

@@ -44,9 +44,10 @@ std::vector<Warning> board_link_warnings(const uart::Cp2102& cp2102, const avr::
 }
 
 std::optional<std::string> board_link_failure(const avr::AvrCore& mcu, const uart::Cp2102& cp2102,
-                                              const std::optional<std::string>& host_failure) {
-    if (auto framing = framing_failure(mcu.stats().usart.rx_framing_errors, "MCU", cp2102.stats().framing_errors)) {
-        return framing;
+                                              const std::optional<std::string>& host_failure, bool line_faults) {
+    if (!line_faults) {
+        if (auto framing = framing_failure(mcu.stats().usart.rx_framing_errors, "MCU", cp2102.stats().framing_errors))
+            return framing;
     }
     if (host_failure) return *host_failure + " (avr.firmware " + mcu.config().firmware_elf + ")";
     return std::nullopt;

@@ -19,10 +19,12 @@ namespace cnc::sim {
 [[nodiscard]] std::string board_link_text(const uart::Cp2102& cp2102, double mcu_baud);
 // Framing errors at either end.
 [[nodiscard]] std::vector<Warning> board_link_warnings(const uart::Cp2102& cp2102, const avr::AvrCore& mcu);
-// Why the link stops the run, once it is clear: frames garbled at either end (serial_host/link_checks.hpp), or the
-// host program's own reason (`host_failure`), with the firmware it met.
+// Why the link stops the run, once it is clear: frames garbled at either end (serial_host/link_checks.hpp: a rate
+// the check let through; not on wires with faults, where they are the faults' own), or the host program's own
+// reason (`host_failure`), with the firmware it met.
 [[nodiscard]] std::optional<std::string> board_link_failure(const avr::AvrCore& mcu, const uart::Cp2102& cp2102,
-                                                            const std::optional<std::string>& host_failure);
+                                                            const std::optional<std::string>& host_failure,
+                                                            bool line_faults);
 // "why (run stopped at 1.234 s of simulated time)"
 [[nodiscard]] std::string stopped_at(const std::string& why, TimePs stop_ps);
 

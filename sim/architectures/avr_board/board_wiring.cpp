@@ -1,9 +1,17 @@
 #include "architectures/avr_board/board_wiring.hpp"
 
+#include "architectures/avr_board/board_faults.hpp"
+
 namespace cnc::sim {
 
-void wire_board(BoardWires& wires, uart::Cp2102& cp2102, avr::AvrCore& mcu, MachinePins& pins) {
-    cp2102.txd(wires.uart_rx);
+void wire_board(BoardWires& wires, uart::Cp2102& cp2102, avr::AvrCore& mcu, MachinePins& pins,
+                BoardLineFaults* faults) {
+    if (faults != nullptr) {
+        faults->wire(wires, cp2102, mcu);
+    } else {
+        cp2102.txd(wires.uart_rx);
+        mcu.txd(wires.uart_tx);
+    }
     cp2102.rxd(wires.uart_tx);
     mcu.step_x(pins.step_x);
     mcu.dir_x(pins.dir_x);
@@ -12,7 +20,6 @@ void wire_board(BoardWires& wires, uart::Cp2102& cp2102, avr::AvrCore& mcu, Mach
     mcu.dir_y(pins.dir_y);
     mcu.en_y(pins.n_enbl_y);
     mcu.head(pins.laser);
-    mcu.txd(wires.uart_tx);
     mcu.rxd(wires.uart_rx);
 }
 

@@ -24,7 +24,11 @@ struct BoardWires {
     sc_core::sc_signal<bool> uart_tx{"uart_tx", true};  // PD1 TXD -> CP2102 RXD
 };
 
-void wire_board(BoardWires& wires, uart::Cp2102& cp2102, avr::AvrCore& mcu, MachinePins& pins);
+class BoardLineFaults;
+
+// `faults`: the link's wires through their faults (board_faults.hpp), or null for clean wires.
+void wire_board(BoardWires& wires, uart::Cp2102& cp2102, avr::AvrCore& mcu, MachinePins& pins,
+                BoardLineFaults* faults = nullptr);
 
 // The AVR times every pin it drives; the CP2102 (uart_rx) starts its frames when USB delivers the bytes.
 [[nodiscard]] MachinePinClocks board_pin_clocks(const avr::AvrCore& mcu);

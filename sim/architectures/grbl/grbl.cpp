@@ -50,9 +50,10 @@ public:
         }
     }
 
-    // The DRV8825s on the machine's pins, the link's line faults.
+    // The DRV8825s on the machine's pins, the link's wires.
     [[nodiscard]] FaultLinks fault_links() const override {
         FaultLinks links;
+        links.uart = true;
         links.step_input = true;
         return links;
     }

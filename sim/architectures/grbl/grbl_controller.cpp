@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "architectures/avr_board/avr_board.hpp"
+#include "architectures/avr_board/board_faults.hpp"
 #include "architectures/avr_board/board_link_report.hpp"
 #include "architectures/avr_board/board_wiring.hpp"
 #include "architectures/avr_board/driven_pins.hpp"
@@ -113,7 +114,7 @@ ArchPace pace(const Scenario& s, const GrblSettings& g, const uart::Cp2102Config
 class GrblController final : public Controller {
 public:
     GrblController(const Scenario& s, const Job& job, MachinePins& pins, avr::AvrCoreConfig avr_cfg,
-                   std::vector<host::MotionSegment> segments)
+                   std::vector<host::MotionSegment> segments, const std::optional<FirmwareUsart>& usart)
         : m_s(s),
           m_g(s.settings<GrblSettings>()),
           m_job(job),
@@ -122,8 +123,9 @@ public:
           m_cp2102("cp2102", m_g.serial.link),
           m_sender("host", sender_config(m_g), m_cp2102, make_stream(s, m_g, job)),
           m_mcu("atmega328p", m_avr_cfg),
-          m_moves(commanded_moves(&*job.program, segments, s.machine, s.interpreter.start_mm)) {
-        wire_board(m_wires, m_cp2102, m_mcu, pins);
+          m_moves(commanded_moves(&*job.program, segments, s.machine, s.interpreter.start_mm)),
+          m_faults(board_line_faults(s.faults, m_cp2102, usart, m_avr_cfg.f_cpu_hz)) {
+        wire_board(m_wires, m_cp2102, m_mcu, pins, m_faults.get());
     }
 
     [[nodiscard]] MachinePinClocks pin_clocks() const override { return board_pin_clocks(m_mcu); }
@@ -144,7 +146,8 @@ public:
     }
     [[nodiscard]] TimePs stop_check_ps() const override { return kStopCheckPs; }
     [[nodiscard]] bool stopped() override {
-        return m_sender.finished() || board_link_failure(m_mcu, m_cp2102, m_sender.failure()).has_value();
+        return m_sender.finished() ||
+               board_link_failure(m_mcu, m_cp2102, m_sender.failure(), m_faults != nullptr).has_value();
     }
     void feed_started(MetricsFeed& feed) override {
         feed.take_edges_with([this](const std::string& pin, TimePs t_ps) { return m_pins->hand_over(pin, t_ps); });
@@ -201,6 +204,7 @@ private:
     std::optional<DrivenPins> m_pins;         // once the recorder watches the pins
     std::optional<StepWindowFold> m_windows;  // with them
     bool m_whole_logs = false;
+    std::unique_ptr<BoardLineFaults> m_faults;  // with faults on the link's wires
 };
 
 void GrblController::report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) {
@@ -221,7 +225,14 @@ void GrblController::report(ArchRun& run, const RunBudget& budget, const Simulat
     run.details_text = grbl_details_text(facts);
     run.clock = oscillator_json(m_g.board.clock, m_mcu.chip().clock());
     run.clock_text = oscillator_text(m_g.board.clock, m_mcu.chip().clock());
-    if (const std::optional<std::string> why = board_link_failure(m_mcu, m_cp2102, m_sender.failure())) {
+    if (m_faults) {
+        m_faults->take_host_bytes(m_cp2102);
+        const BoardLineFaultResult r = m_faults->result(m_mcu);
+        run.details["faults"] = board_faults_json(m_s.faults, r);
+        run.details_text += board_faults_text(m_s.faults, r);
+    }
+    if (const std::optional<std::string> why =
+            board_link_failure(m_mcu, m_cp2102, m_sender.failure(), m_faults != nullptr)) {
         run.ok = false;
         run.failure = stopped_at(*why, end.t_ps);
     } else if (!m_sender.finished()) {
@@ -236,9 +247,11 @@ ArchRun Entry::run(const Scenario& s, const Job& job) {
     return run_on_machine(s, job, [](const Scenario& sc, const Job& j, MachinePins& pins) {
         const GrblSettings& g = sc.settings<GrblSettings>();
         avr::AvrCoreConfig avr_cfg = board_config(sc, g.board, g.board.firmware, avr::grbl_pin_map());
-        check_firmware_rate(sc, g.serial.link, avr_cfg, "the firmware " + avr_cfg.firmware_elf);
+        avr_cfg.keep_usart_logs = sc.faults.uart.any();  // board_faults.hpp matches every byte
+        const std::optional<FirmwareUsart> usart =
+            check_firmware_rate(sc, g.serial.link, avr_cfg, "the firmware " + avr_cfg.firmware_elf);
         std::vector<host::MotionSegment> segments = host::cam(*j.program, sc.machine, host::CamOptions{});
-        return std::make_unique<GrblController>(sc, j, pins, std::move(avr_cfg), std::move(segments));
+        return std::make_unique<GrblController>(sc, j, pins, std::move(avr_cfg), std::move(segments), usart);
     });
 }
 

@@ -33,6 +33,12 @@ struct Cp2102Stats {
     std::int64_t rx_overflow_bytes = 0;  // received bytes dropped because the RX FIFO was full
     std::int64_t framing_errors = 0;     // frames dropped for a low stop bit (or a parity error)
     std::int64_t false_starts = 0;       // start bits that were high again at their middle (glitches)
+    // USB frames with data that a latency spike delayed (Cp2102Config::usb_spikes), and the delay each direction's
+    // data took from them (a frame held up behind a delayed one counts its own spike only).
+    std::int64_t usb_spikes_out = 0;
+    std::int64_t usb_spikes_in = 0;
+    TimePs usb_spike_delay_out_ps = 0;
+    TimePs usb_spike_delay_in_ps = 0;
 };
 
 class Cp2102 : public sc_core::sc_module {
@@ -111,10 +117,20 @@ private:
     void rx_deliver();       // SC_METHOD: received bytes become visible to the host
     void wait_until(TimePs t_ps);
     void log_rx(const RxByte& b);
+    // The time the data of the USB frame starting at t_frame_ps reaches its end, its spike included, never before
+    // the data of an earlier frame (a bulk pipe keeps its order); counts the frame's spike once.
+    TimePs spiked(TimePs t_frame_ps, TimePs t_due_ps, const UsbSpikeDraw& draw, TimePs& last_ps,
+                  std::int64_t& last_frame, std::int64_t& spikes, TimePs& delay_ps);
 
     Cp2102Config m_cfg;
     Cp2102Baud m_baud;
     BitClock m_clk;
+    UsbSpikeDraw m_spikes_out;
+    UsbSpikeDraw m_spikes_in;
+    TimePs m_last_out_ps = 0;  // the last OUT data's arrival at the chip
+    TimePs m_last_in_ps = 0;   // the last IN data's arrival at the host
+    std::int64_t m_last_out_frame = -1;
+    std::int64_t m_last_in_frame = -1;
 
     std::deque<UsbOutByte> m_usb_out;  // written by the host, not yet at the chip
     std::deque<UsbOutByte> m_tx_fifo;

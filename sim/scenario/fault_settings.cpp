@@ -15,6 +15,16 @@ void read_fault_settings(KeyReader& r, std::uint64_t scenario_seed, FaultSetting
     s.uart.frame_loss_rate = r.get_float("faults.uart_frame_loss_rate", 0.0, 0.0, 1.0,
                                          "fraction of the frames on each wire of a UART link lost whole (the line "
                                          "held idle for the frame); 0: none");
+    s.usb_spikes.rate = r.get_float("faults.usb_spike_rate", 0.0, 0.0, 1.0,
+                                    "fraction of the 1 ms USB frames, each direction, in which the host's USB stack "
+                                    "delays the serial link's data by a latency spike (faults.usb_spike_mean_ms); "
+                                    "0: none");
+    s.usb_spikes.mean_ps = s_to_ps(
+        1e-3 *
+        r.get_float(
+            "faults.usb_spike_mean_ms", 10.0, 0.001, 1000.0,
+            "mean length of a USB latency spike, ms: each spike's length is drawn from the exponential distribution of "
+            "this mean"));
     s.host_stall.at_s = r.get_float("faults.host_stall_at_s", 0.0, 0.0, 1e6,
                                     "start of a host stall, s of simulated time (faults.host_stall_s long)");
     s.host_stall.length_s = r.get_float("faults.host_stall_s", 0.0, 0.0, 1e6,

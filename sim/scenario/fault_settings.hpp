@@ -4,6 +4,7 @@
 #pragma once
 #include "scenario/key_reader.hpp"
 #include "uart/core/line_faults.hpp"
+#include "uart/core/usb_spikes.hpp"
 
 namespace cnc::sim {
 
@@ -18,10 +19,13 @@ struct HostStall {
 struct FaultSettings {
     std::uint64_t seed = 1;     // of every fault's draws (faults.seed)
     uart::LineFaultRates uart;  // on both wires of a UART link
+    uart::UsbSpikeRates usb_spikes;  // on both directions of a USB serial link
     HostStall host_stall;
     double step_loss_rate = 0.0;  // on each DRV8825's STEP input (mech::Drv8825Config::step_loss_rate)
 
-    [[nodiscard]] bool any() const { return uart.any() || host_stall.any() || step_loss_rate > 0.0; }
+    [[nodiscard]] bool any() const {
+        return uart.any() || usb_spikes.any() || host_stall.any() || step_loss_rate > 0.0;
+    }
 };
 
 // `scenario_seed` is the default of faults.seed.

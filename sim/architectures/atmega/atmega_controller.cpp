@@ -21,6 +21,7 @@
 #include "architectures/avr_board/board_faults.hpp"
 #include "architectures/avr_board/board_link_report.hpp"
 #include "architectures/avr_board/board_wiring.hpp"
+#include "architectures/serial_host/usb_faults.hpp"
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/cad2g/firmware_busy.hpp"
@@ -285,6 +286,7 @@ void AtmegaController::report(ArchRun& run, const RunBudget& budget, const Simul
     run.clock_text = oscillator_text(m_a.board.clock, m_mcu.chip().clock());
 
     if (m_faults) report_faults(run);
+    report_usb_spikes(m_s.faults, m_cp2102, run);
     if (const std::optional<std::string> why = link_failure()) {
         run.ok = false;
         run.failure = stopped_at(*why, m_stop_ps);
@@ -305,7 +307,7 @@ ArchRun Entry::run(const Scenario& s, const Job& job) {
         const AtmegaSettings& a = sc.settings<AtmegaSettings>();
         cad2g::Plan plan = cad2g::plan_program(*j.program, sc.machine, a.pc);
         avr::AvrCoreConfig avr_cfg = avr_config(sc, a);
-        const uart::Cp2102Config link = link_config(a);
+        const uart::Cp2102Config link = with_usb_spikes(link_config(a), sc.faults);
         avr_cfg.keep_usart_logs = sc.faults.uart.any();  // board_faults.hpp matches every byte
         const std::optional<FirmwareUsart> usart = check_firmware_rate(
             sc, link, avr_cfg,

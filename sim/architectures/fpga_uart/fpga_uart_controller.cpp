@@ -19,6 +19,7 @@
 #include "architectures/fpga_uart/packet_faults.hpp"
 #include "architectures/fpga_uart/ramp_commanded.hpp"
 #include "architectures/serial_host/link_checks.hpp"
+#include "architectures/serial_host/usb_faults.hpp"
 #include "common/bad_input.hpp"
 #include "common/record_log.hpp"
 #include "common/sc_time.hpp"
@@ -445,10 +446,11 @@ public:
           m_job(job),
           m_init_registers(n),
           m_packet_count(packet_count),
-          m_cp2102("cp2102", m_f.serial.link),
+          m_cp2102("cp2102", with_usb_spikes(m_f.serial.link, s.faults)),
           m_packets(s, job, m_init_registers, s.faults.any()),
           m_sender("host", sender_config(s, m_f), m_cp2102, init_packet(m_init_registers, m_f), m_packets),
-          m_fpga(make_fpga(m_f, s.seed, [this] { return rx_quiet_until(); }, m_wires)),
+          m_fpga(make_fpga(
+              m_f, s.seed, [this] { return rx_quiet_until(); }, m_wires)),
           m_event_pins("event_pins", s.events, m_wires.estop, m_wires.lid_open),
           m_moves(s.machine, s.interpreter.start_mm),
           // Every gap only for the detailed report and the plots (which keep the whole run anyway).
@@ -706,6 +708,7 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
     }
     if (m_s.faults.any()) report_faults(run, text);
     run.details_text = text.str();
+    report_usb_spikes(m_s.faults, m_cp2102, run);
 
     // Framing errors are what faults on the line make: reported above, not a failed run.
     const std::optional<std::string> framing =

@@ -54,6 +54,7 @@ public:
     [[nodiscard]] FaultLinks fault_links() const override {
         FaultLinks links;
         links.uart = true;
+        links.usb = true;
         links.step_input = true;
         return links;
     }

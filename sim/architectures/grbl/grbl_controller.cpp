@@ -18,6 +18,7 @@
 #include "architectures/grbl/grbl_report.hpp"
 #include "architectures/grbl/grbl_settings.hpp"
 #include "architectures/grbl/step_windows.hpp"
+#include "architectures/serial_host/usb_faults.hpp"
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/cam.hpp"
@@ -120,7 +121,7 @@ public:
           m_job(job),
           m_avr_cfg(std::move(avr_cfg)),
           m_ends(move_ends(segments)),
-          m_cp2102("cp2102", m_g.serial.link),
+          m_cp2102("cp2102", with_usb_spikes(m_g.serial.link, s.faults)),
           m_sender("host", sender_config(m_g), m_cp2102, make_stream(s, m_g, job)),
           m_mcu("atmega328p", m_avr_cfg),
           m_moves(commanded_moves(&*job.program, segments, s.machine, s.interpreter.start_mm)),
@@ -231,6 +232,7 @@ void GrblController::report(ArchRun& run, const RunBudget& budget, const Simulat
         run.details["faults"] = board_faults_json(m_s.faults, r);
         run.details_text += board_faults_text(m_s.faults, r);
     }
+    report_usb_spikes(m_s.faults, m_cp2102, run);
     if (const std::optional<std::string> why =
             board_link_failure(m_mcu, m_cp2102, m_sender.failure(), m_faults != nullptr)) {
         run.ok = false;

@@ -49,15 +49,31 @@ void SpiMaster::transfer(const std::vector<std::uint8_t>& out, std::vector<std::
     const TimePs t0 = now_ps();
     const std::size_t bits = 8 * out.size();
     const TimePs t_end = t0 + transfer_time_ps(m_cfg, bits);
+    std::vector<std::uint8_t> sampled;  // MOSI as the slave samples it, with bit errors on the wire
+    if (m_faults) {
+        sampled = out;
+        if (const std::uint32_t n = m_faults->apply(SpiDirection::Mosi, sampled)) {
+            ++m_fault_stats.mosi_frames_hit;
+            m_fault_stats.mosi_bits_inverted += n;
+            if (!sampled.empty() && sampled[0] != out[0]) ++m_fault_stats.mosi_header_hit;
+        }
+    }
+    const std::vector<std::uint8_t>& on_mosi = m_faults ? sampled : out;
     if (m_cfg.trace_wires) {
-        shift_on_wires(out, in, t0);
+        shift_on_wires(on_mosi, in, t0);
         wait_until(t_end);
         ss.write(true);
         mosi.write(false);
     } else {
         target->select(t0);
         wait_until(t_end);
-        target->deselect(t_end, out, in);
+        target->deselect(t_end, on_mosi, in);
+    }
+    if (m_faults) {
+        if (const std::uint32_t n = m_faults->apply(SpiDirection::Miso, in)) {
+            ++m_fault_stats.miso_frames_hit;
+            m_fault_stats.miso_bits_inverted += n;
+        }
     }
     if (m_keep_transfer_log) m_transfers.push_back({t0, t_end, bits});
     ++m_transfer_count;

@@ -7,10 +7,12 @@
 // Only one thread may call transfer() (the pins have one writer). Bind ss to a signal that starts high.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <systemc>
 #include <vector>
 
 #include "common/units.hpp"
+#include "spi/core/spi_bit_faults.hpp"
 #include "spi/core/spi_timing.hpp"
 #include "spi/spi_slave_if.hpp"
 
@@ -44,6 +46,18 @@ public:
     [[nodiscard]] TimePs ss_low_total_ps() const { return m_ss_low_total_ps; }  // link busy time
     [[nodiscard]] const SpiConfig& config() const { return m_cfg; }
 
+    // Bit errors on the wires (spi/core/spi_bit_faults.hpp): the frames as the slave samples MOSI and as this
+    // master samples MISO, whether the bits go over the wires or the transaction path.
+    void set_bit_faults(double ber, std::uint64_t seed) { m_faults.emplace(ber, seed); }
+    struct FaultStats {
+        std::uint64_t mosi_frames_hit = 0;
+        std::uint64_t mosi_bits_inverted = 0;
+        std::uint64_t mosi_header_hit = 0;  // of the frames hit, those with a bit of byte 0 (the command) inverted
+        std::uint64_t miso_frames_hit = 0;
+        std::uint64_t miso_bits_inverted = 0;
+    };
+    [[nodiscard]] const FaultStats& fault_stats() const { return m_fault_stats; }
+
     // The caller starts no transfer before t_ps (a host thread that sleeps until then says so before it sleeps).
     void no_transfer_before(TimePs t_ps) { m_no_transfer_before_ps = t_ps; }
     // The earliest time SS, SCLK or MOSI may change, asked at the current time (>= now): the next edge of the
@@ -67,6 +81,8 @@ private:
     std::uint64_t m_transfer_count = 0;
     TimePs m_ss_low_total_ps = 0;
     std::uint64_t m_activations = 0;
+    std::optional<SpiBitFaults> m_faults;
+    FaultStats m_fault_stats;
 };
 
 }  // namespace cnc::spi

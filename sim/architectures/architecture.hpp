@@ -42,6 +42,7 @@ struct JobUse {
 struct FaultLinks {
     bool uart = false;  // a UART link: faults.uart_*
     bool usb = false;   // a USB serial link (a CP2102): faults.usb_spike_*
+    bool spi = false;   // an SPI link: faults.spi_ber
     bool host = false;  // a host program that can stall: faults.host_stall_*
     bool step_input = false;  // DRV8825s on the machine's pins: faults.step_loss_rate
 };

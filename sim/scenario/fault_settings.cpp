@@ -15,6 +15,9 @@ void read_fault_settings(KeyReader& r, std::uint64_t scenario_seed, FaultSetting
     s.uart.frame_loss_rate = r.get_float("faults.uart_frame_loss_rate", 0.0, 0.0, 1.0,
                                          "fraction of the frames on each wire of a UART link lost whole (the line "
                                          "held idle for the frame); 0: none");
+    s.spi_ber = r.get_float("faults.spi_ber", 0.0, 0.0, 0.5,
+                            "bit error rate on MOSI and MISO of an SPI link: every bit the receiving end samples "
+                            "inverted with this probability, independently; 0: none");
     s.usb_spikes.rate = r.get_float("faults.usb_spike_rate", 0.0, 0.0, 1.0,
                                     "fraction of the 1 ms USB frames, each direction, in which the host's USB stack "
                                     "delays the serial link's data by a latency spike (faults.usb_spike_mean_ms); "

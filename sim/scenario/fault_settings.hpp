@@ -20,11 +20,12 @@ struct FaultSettings {
     std::uint64_t seed = 1;     // of every fault's draws (faults.seed)
     uart::LineFaultRates uart;  // on both wires of a UART link
     uart::UsbSpikeRates usb_spikes;  // on both directions of a USB serial link
+    double spi_ber = 0.0;            // on MOSI and MISO of an SPI link
     HostStall host_stall;
     double step_loss_rate = 0.0;  // on each DRV8825's STEP input (mech::Drv8825Config::step_loss_rate)
 
     [[nodiscard]] bool any() const {
-        return uart.any() || usb_spikes.any() || host_stall.any() || step_loss_rate > 0.0;
+        return uart.any() || usb_spikes.any() || spi_ber > 0.0 || host_stall.any() || step_loss_rate > 0.0;
     }
 };
 

@@ -162,6 +162,9 @@ void check_fault_links(const KeyReader& r, const FaultSettings& f, const Archite
         r.fail(f.uart.ber > 0.0 ? "faults.uart_ber" : "faults.uart_frame_loss_rate",
                "the " + a.name() + " architecture has no UART link the faults can act on");
     }
+    if (f.spi_ber > 0.0 && !a.fault_links().spi) {
+        r.fail("faults.spi_ber", "the " + a.name() + " architecture has no SPI link");
+    }
     if (f.usb_spikes.any() && !a.fault_links().usb) {
         r.fail("faults.usb_spike_rate", "the " + a.name() + " architecture has no USB serial link");
     }

@@ -51,9 +51,10 @@ public:
         }
     }
 
-    // The DRV8825s on the machine's pins (its link's faults are not modelled yet).
+    // The SPI wires, the DRV8825s on the machine's pins.
     [[nodiscard]] FaultLinks fault_links() const override {
         FaultLinks links;
+        links.spi = true;
         links.step_input = true;
         return links;
     }

@@ -6,6 +6,7 @@
 #include "architectures/planner/planned_job.hpp"
 #include "architectures/planner/planned_moves.hpp"
 #include "architectures/spi_fpga/rate_segments.hpp"
+#include "architectures/spi_fpga/spi_faults.hpp"
 #include "architectures/spi_fpga/spi_fpga.hpp"
 #include "architectures/spi_fpga/spi_fpga_job.hpp"
 #include "architectures/spi_fpga/spi_fpga_report.hpp"
@@ -77,6 +78,7 @@ public:
           m_planned(*m_plan, step_grid(s)),
           m_rate_feed(s.detail) {
         m_master.keep_transfer_log(false);  // the report counts them
+        if (s.faults.spi_ber > 0.0) m_master.set_bit_faults(s.faults.spi_ber, s.faults.seed);
         m_master.sclk(m_wires.sclk);
         m_master.mosi(m_wires.mosi);
         m_master.ss(m_wires.ss);
@@ -156,6 +158,7 @@ public:
         run.clock = oscillator_json(m_f.clock, clock);
         run.clock_text = oscillator_text(m_f.clock, clock);
         run.warnings = std::move(report.warnings);
+        if (m_s.faults.spi_ber > 0.0) report_spi_faults(m_s.faults, m_master, m_fpga->stats(), run);
         if (!m_host.finished()) {
             run.ok = false;
             run.failure = "the job did not finish (the axes had not landed): " + time_limit_text(budget, end);

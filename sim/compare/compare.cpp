@@ -56,10 +56,18 @@ struct Row {
     // trajectory with one: docs/metrics.md, Terms), so the columns' figures are not the same quantity and none is
     // marked best.
     bool own_reference = false;
+    // Shown only when a column's report has the figure: the figures of a run with faults (docs/faults.md).
+    bool when_present = false;
 };
 
 constexpr Row against_own_command(Row row) {
     row.own_reference = true;
+    return row;
+}
+
+constexpr Row with_faults(Row row) {
+    row.in_arch_section = true;
+    row.when_present = true;
     return row;
 }
 
@@ -105,6 +113,10 @@ constexpr Row kRows[] = {
     {"DRV8825 violations", "/metrics/pulse/driver_violations", fixed(0)},
     {"laser dwell [ms]", "/metrics/laser/dwell_ms", fixed(3)},
     {"laser on in rapids [ms]", "/metrics/laser/on_in_rapid_ms", fixed(3)},
+    // What the faults on the link did: the commands (packets, transfers, frames) the controller ran changed without
+    // anything noticing, and those the host sent again.
+    with_faults({"link: commands run changed unnoticed", "/faults/commands_run_changed", fixed(0)}),
+    with_faults({"link: commands sent again", "/faults/retransmitted", fixed(0)}),
 };
 
 nlohmann::json::json_pointer where(const Row& row, const CompareColumn& c) {
@@ -114,6 +126,17 @@ nlohmann::json::json_pointer where(const Row& row, const CompareColumn& c) {
 // The row's figure of a run, when its report has one.
 std::optional<double> figure(const CompareColumn& c, const Row& row) {
     return report_number(c.report, where(row, c));
+}
+
+// The rows the comparison shows, in kRows' order.
+std::vector<Row> shown_rows(const Comparison& comparison) {
+    std::vector<Row> rows;
+    for (const Row& row : kRows) {
+        const auto has = [&row](const CompareColumn& c) { return figure(c, row).has_value(); };
+        if (!row.when_present || std::any_of(comparison.columns.begin(), comparison.columns.end(), has))
+            rows.push_back(row);
+    }
+    return rows;
 }
 
 // A failed run's figures cover only what ran before it stopped: never shown as a result (its JSON keeps them
@@ -326,7 +349,7 @@ std::vector<TableRow> table_rows(const Comparison& comparison) {
     TableRow st{"status", {}, std::vector<bool>(columns.size(), false)};
     for (const CompareColumn& c : columns) st.cells.push_back(status(c));
     rows.push_back(st);
-    for (const Row& row : kRows) {
+    for (const Row& row : shown_rows(comparison)) {
         // A setting (the machine, the clock part) is what the run was given, not a result: never a best.
         TableRow r{row.label, {}, {}, !row.own_reference && !row.setting};
         for (const CompareColumn& c : columns) r.cells.push_back(cell(c, row));
@@ -355,7 +378,8 @@ nlohmann::json compare_json(const Comparison& comparison) {
     const CompareColumn* baseline = comparison.baseline_column();
     // Each table row's key, in the order of table_rows (after the status).
     std::vector<std::string> keys;
-    for (const Row& row : kRows) {
+    const std::vector<Row> shown = shown_rows(comparison);
+    for (const Row& row : shown) {
         keys.emplace_back(row.pointer + 1);
         if (row.over_baseline && baseline != nullptr) keys.push_back(over_key(row, baseline->architecture));
     }
@@ -368,7 +392,7 @@ nlohmann::json compare_json(const Comparison& comparison) {
             if (rows[r].best[k]) best.push_back(keys[r - 1]);
         }
         nlohmann::json metrics = nlohmann::json::object();
-        for (const Row& row : kRows) {
+        for (const Row& row : shown) {
             if (row.setting) continue;
             const nlohmann::json::json_pointer ptr = where(row, c);
             metrics[row.pointer + 1] =

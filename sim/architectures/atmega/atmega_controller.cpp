@@ -260,6 +260,7 @@ void AtmegaController::report_faults(ArchRun& run) const {
                       {"hit", hit.size()},
                       {"ran_without_a_check_noticing", ran_on},
                       {"stopped_the_pc_program", hit.size() - ran_on}};
+    j["commands_run_changed"] = ran_on;
     run.details["faults"] = std::move(j);
     run.details_text +=
         board_faults_text(m_s.faults, r) +

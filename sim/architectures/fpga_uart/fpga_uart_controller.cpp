@@ -789,6 +789,7 @@ void FpgaUartController::report_faults(ArchRun& run, std::ostringstream& text) c
         {"naks", {{"sent", st.naks_sent}, {"read", m_sender.naks()}}},
         {"repeats_acked", st.repeats},
         {"job_end_error_steps", f.job_end_error_steps},
+        {"commands_run_changed", f.executed_wrong},
         {"silent", silent}};
     text << fmt::format(FMT_STRING("faults (seed {}): UART BER {:g}, frames lost {:g}\n"), m_s.faults.seed,
                         m_s.faults.uart.ber, m_s.faults.uart.frame_loss_rate)

@@ -12,6 +12,7 @@ void report_spi_faults(const FaultSettings& f, const spi::SpiMaster& master, con
     const std::uint64_t ran_changed = st.mosi_frames_hit - st.mosi_header_hit;
     run.details["faults"] = {{"seed", f.seed},
                              {"spi_ber", f.spi_ber},
+                             {"commands_run_changed", ran_changed},
                              {"to_fpga",
                               {{"frames", master.transfer_count()},
                                {"frames_hit", st.mosi_frames_hit},

@@ -173,12 +173,12 @@ void read_laser_pwm(KeyReader& r, FpgaUartSettings& s) {
     if (!on) return;
     const std::optional<std::uint32_t> period = fpga::laser_pwm_period_cycles(s.fpga.clk_hz, pwm_hz);
     if (!period) {
+        const double cycles = static_cast<double>(s.fpga.clk_hz) / pwm_hz;
         r.fail("fpga.laser_pwm_hz",
                fmt::format(FMT_STRING("{} Hz is not reachable from the {} Hz FPGA clock: the period must be a whole "
                                       "number of clocks (fpga.clock_hz / Hz = {:.4f}); e.g. {:.3f} Hz ({} clocks)"),
-                           pwm_hz, s.fpga.clk_hz, static_cast<double>(s.fpga.clk_hz) / pwm_hz,
-                           static_cast<double>(s.fpga.clk_hz) / std::round(static_cast<double>(s.fpga.clk_hz) / pwm_hz),
-                           std::round(static_cast<double>(s.fpga.clk_hz) / pwm_hz)));
+                           pwm_hz, s.fpga.clk_hz, cycles, static_cast<double>(s.fpga.clk_hz) / std::round(cycles),
+                           std::round(cycles)));
     }
     if (*period > 65535) {
         r.fail("fpga.laser_pwm_hz",

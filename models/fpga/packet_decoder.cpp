@@ -4,13 +4,15 @@ namespace cnc::fpga {
 
 void MotionOutputs::put(TimedWriter& writer, const ClockGrid& clock, std::int64_t edge, const MotionFields& f) const {
     // The ports, not this (a temporary), are what the writes reach when they are due.
-    writer.at(clock.at(edge), [&m = motion, &x = steps_x, &y = steps_y, &feed = feed_rate, &valid = pkt_valid, f] {
-        m.write(f.motion);
-        x.write(f.steps_x);
-        y.write(f.steps_y);
-        feed.write(f.feed);
-        valid.write(true);
-    });
+    writer.at(clock.at(edge),
+              [&m = motion, &x = steps_x, &y = steps_y, &feed = feed_rate, &high = laser_high, &valid = pkt_valid, f] {
+                  m.write(f.motion);
+                  x.write(f.steps_x);
+                  y.write(f.steps_y);
+                  feed.write(f.feed);
+                  high.write(f.laser_high);
+                  valid.write(true);
+              });
     writer.at(clock.at(edge + 1), [&valid = pkt_valid] { valid.write(false); });
 }
 
@@ -23,6 +25,7 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
       steps_x("steps_x"),
       steps_y("steps_y"),
       feed_rate("feed_rate"),
+      laser_high("laser_high"),
       pkt_valid("pkt_valid"),
       numerator_x("numerator_x"),
       numerator_y("numerator_y"),
@@ -34,9 +37,9 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
       m_cfg(cfg),
       m_clock(clock_grid(cfg)),
       m_core(cfg.numerator_default, cfg.packet_crc, cfg.queue_depth == 0,
-             cfg.ramp == StepRamp::None
-                 ? std::nullopt
-                 : std::optional<RampDefaults>({cfg.ramp_accel_default, cfg.ramp_start_default})),
+             cfg.ramp == StepRamp::None ? std::nullopt
+                                        : std::optional<RampDefaults>({cfg.ramp_accel_default, cfg.ramp_start_default}),
+             cfg.laser_pwm_period_cycles > 0),
       m_writer("writer") {
     SC_HAS_PROCESS(PacketDecoder);
     numerator_x.initialize(cfg.numerator_default);  // seed 000 §5.2.3 (Π.4) reset value
@@ -63,7 +66,7 @@ void PacketDecoder::on_rx_valid() {
         const MotionFields f = m_core.motion();
         m_motions.push_back({t, f});
         m_writer.at(t, [this, f] { seq.write(f.seq); });
-        MotionOutputs{motion, steps_x, steps_y, feed_rate, pkt_valid}.put(m_writer, m_clock, edge, f);
+        MotionOutputs{motion, steps_x, steps_y, feed_rate, laser_high, pkt_valid}.put(m_writer, m_clock, edge, f);
     } else if (done == PacketDecoderCore::Completed::Init) {
         const InitFields f = m_core.init();
         m_writer.at(t, [this, f] {

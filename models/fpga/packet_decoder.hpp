@@ -19,6 +19,7 @@ struct MotionOutputs {
     sc_core::sc_out<std::int32_t>& steps_x;
     sc_core::sc_out<std::int32_t>& steps_y;
     sc_core::sc_out<std::uint16_t>& feed_rate;
+    sc_core::sc_out<std::uint16_t>& laser_high;
     sc_core::sc_out<bool>& pkt_valid;
 
     // `f` on the ports at edge `edge`, pkt_valid high for that clock.
@@ -34,6 +35,7 @@ public:
     sc_core::sc_out<std::int32_t> steps_x;
     sc_core::sc_out<std::int32_t> steps_y;
     sc_core::sc_out<std::uint16_t> feed_rate;
+    sc_core::sc_out<std::uint16_t> laser_high;  // with fpga.laser_pwm (0 without)
     sc_core::sc_out<bool> pkt_valid;
     sc_core::sc_out<std::uint32_t> numerator_x;
     sc_core::sc_out<std::uint32_t> numerator_y;

@@ -9,6 +9,7 @@ PacketQueue::PacketQueue(const sc_core::sc_module_name& name, const FpgaConfig& 
       steps_x("steps_x"),
       steps_y("steps_y"),
       feed_rate("feed_rate"),
+      laser_high("laser_high"),
       pkt_valid("pkt_valid"),
       crc_error("crc_error"),
       busy("busy"),
@@ -16,6 +17,7 @@ PacketQueue::PacketQueue(const sc_core::sc_module_name& name, const FpgaConfig& 
       q_steps_x("q_steps_x"),
       q_steps_y("q_steps_y"),
       q_feed_rate("q_feed_rate"),
+      q_laser_high("q_laser_high"),
       q_pkt_valid("q_pkt_valid"),
       status_req("status_req"),
       m_clock(clock_grid(cfg)),
@@ -53,7 +55,8 @@ void PacketQueue::hand_over(std::int64_t edge) {
     if (m_halted || !m_core.pop(f)) return;
     const TimePs t = m_clock.at(edge);
     m_issued.push_back({t, f});
-    MotionOutputs{q_motion, q_steps_x, q_steps_y, q_feed_rate, q_pkt_valid}.put(m_writer, m_clock, edge, f);
+    MotionOutputs{q_motion, q_steps_x, q_steps_y, q_feed_rate, q_laser_high, q_pkt_valid}.put(m_writer, m_clock, edge,
+                                                                                              f);
 }
 
 // The decoder's pkt_valid high at edge k: the packet is taken at k+1 and, step_gen being free, handed over there.
@@ -61,7 +64,8 @@ void PacketQueue::on_pkt_valid() {
     ++m_activations;
     if (!pkt_valid.read()) return;
     const std::int64_t edge = m_clock.last_at_or_before(now_ps()) + 1;
-    const MotionFields f{motion.read(), steps_x.read(), steps_y.read(), feed_rate.read(), seq.read()};
+    const MotionFields f{motion.read(),    steps_x.read(), steps_y.read(),
+                         feed_rate.read(), seq.read(),     laser_high.read()};
     const PacketQueueCore::Taken taken = m_core.on_packet(f);
     if (taken == PacketQueueCore::Taken::Queued && !m_core.running()) hand_over(edge);
     request_status(edge, taken == PacketQueueCore::Taken::Refused);

@@ -25,6 +25,7 @@ public:
     sc_core::sc_in<std::int32_t> steps_x;
     sc_core::sc_in<std::int32_t> steps_y;
     sc_core::sc_in<std::uint16_t> feed_rate;
+    sc_core::sc_in<std::uint16_t> laser_high;
     sc_core::sc_in<bool> pkt_valid;
     sc_core::sc_in<bool> crc_error;
     // From step_gen.
@@ -34,6 +35,7 @@ public:
     sc_core::sc_out<std::int32_t> q_steps_x;
     sc_core::sc_out<std::int32_t> q_steps_y;
     sc_core::sc_out<std::uint16_t> q_feed_rate;
+    sc_core::sc_out<std::uint16_t> q_laser_high;
     sc_core::sc_out<bool> q_pkt_valid;
     // To the status sender.
     sc_core::sc_out<bool> status_req;

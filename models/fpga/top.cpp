@@ -33,6 +33,7 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     pkt_dec_inst.steps_x(m_steps_x);
     pkt_dec_inst.steps_y(m_steps_y);
     pkt_dec_inst.feed_rate(m_feed_rate);
+    pkt_dec_inst.laser_high(m_laser_high);
     pkt_dec_inst.seq(m_seq);
     pkt_dec_inst.numerator_x(m_numerator_x);
     pkt_dec_inst.numerator_y(m_numerator_y);
@@ -51,6 +52,7 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
         step_gen_inst.feed_rate(m_feed_rate);
         step_gen_inst.pkt_valid(pkt_valid);
         laser_ctrl_inst.motion(m_motion);
+        laser_ctrl_inst.laser_high(m_laser_high);
         laser_ctrl_inst.pkt_valid(pkt_valid);
     }
     if (cfg.init_packet_wired) {  // §5.2.6: "must also be driven" to step_gen
@@ -153,6 +155,7 @@ void Top::wire_queue(const FpgaConfig& cfg) {
     q.steps_x(m_steps_x);
     q.steps_y(m_steps_y);
     q.feed_rate(m_feed_rate);
+    q.laser_high(m_laser_high);
     q.pkt_valid(m_decoder_pkt_valid);
     q.crc_error(m_crc_error);
     q.busy(busy);
@@ -160,6 +163,7 @@ void Top::wire_queue(const FpgaConfig& cfg) {
     q.q_steps_x(m_q_steps_x);
     q.q_steps_y(m_q_steps_y);
     q.q_feed_rate(m_q_feed_rate);
+    q.q_laser_high(m_q_laser_high);
     q.q_pkt_valid(pkt_valid);
     q.status_req(m_status_req);
     step_gen_inst.steps_x(m_q_steps_x);
@@ -167,6 +171,7 @@ void Top::wire_queue(const FpgaConfig& cfg) {
     step_gen_inst.feed_rate(m_q_feed_rate);
     step_gen_inst.pkt_valid(pkt_valid);
     laser_ctrl_inst.motion(m_q_motion);
+    laser_ctrl_inst.laser_high(m_q_laser_high);
     laser_ctrl_inst.pkt_valid(pkt_valid);
 }
 

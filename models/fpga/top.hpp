@@ -79,6 +79,7 @@ private:
     sc_core::sc_signal<std::int32_t> m_steps_x{"steps_x", 0};
     sc_core::sc_signal<std::int32_t> m_steps_y{"steps_y", 0};
     sc_core::sc_signal<std::uint16_t> m_feed_rate{"feed_rate", 0};
+    sc_core::sc_signal<std::uint16_t> m_laser_high{"laser_high", 0};
     sc_core::sc_signal<std::uint32_t> m_numerator_x;
     sc_core::sc_signal<std::uint32_t> m_numerator_y;
     sc_core::sc_signal<std::uint32_t> m_ramp_accel;
@@ -94,6 +95,7 @@ private:
     sc_core::sc_signal<std::int32_t> m_q_steps_x{"q_steps_x", 0};
     sc_core::sc_signal<std::int32_t> m_q_steps_y{"q_steps_y", 0};
     sc_core::sc_signal<std::uint16_t> m_q_feed_rate{"q_feed_rate", 0};
+    sc_core::sc_signal<std::uint16_t> m_q_laser_high{"q_laser_high", 0};
     sc_core::sc_signal<bool> m_status_req{"status_req", false};
     sc_core::sc_signal<bool> m_tied_low{"tied_low", false};
     sc_core::sc_signal<bool> m_laser_inhibit{"laser_inhibit", false};

@@ -103,7 +103,7 @@ void Sender::send_init() {
 }
 
 bool Sender::send_motion(const OutgoingPacket& packet, SentPacket& sent) {
-    std::vector<std::uint8_t> bytes(packet.bytes.begin(), packet.bytes.end());
+    std::vector<std::uint8_t> bytes = motion_frame(packet.bytes, packet.laser_high);
     if (m_cfg.check.crc) {
         if (m_sequence) bytes[0] = static_cast<std::uint8_t>(bytes[0] | kSequenceBit);
         m_sequence = !m_sequence;

@@ -25,6 +25,7 @@ struct OutgoingPacket {
     int gcode_line = 0;                    // source line of the move (0: unknown, e.g. a steps-file row without it)
     TimePs expected_run_ps = 0;            // how long step_gen should run it (dominant steps x NUMERATOR / feed)
     double wait_before_s = 0.0;            // the job's host wait before it (dwell, pause, Z move)
+    std::optional<std::uint16_t> laser_high;  // with fpga.laser_pwm: the PWM high time sent after FeedRate
 };
 
 // The motion packets in order, made as the sender asks for them, so that a long job is never held whole.

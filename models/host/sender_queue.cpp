@@ -25,7 +25,7 @@ struct InFlight {
 };
 
 std::vector<std::uint8_t> numbered_packet(const OutgoingPacket& packet, int seq) {
-    std::vector<std::uint8_t> bytes(packet.bytes.begin(), packet.bytes.end());
+    std::vector<std::uint8_t> bytes = motion_frame(packet.bytes, packet.laser_high);
     bytes[0] = qp::with_seq(bytes[0], seq);
     return with_crc(bytes.data(), bytes.size());
 }

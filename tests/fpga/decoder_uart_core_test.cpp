@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "common/crc16.hpp"
@@ -107,6 +108,28 @@ TEST(PacketDecoderCore, CheckedPacketsCompleteAfterTheirCrc) {
     EXPECT_EQ(d.motion().feed, 65'535);
     EXPECT_EQ(d.byte_count(), 0);
     EXPECT_FALSE(d.timeout_active());
+}
+
+// With the laser's PWM the high time follows FeedRate, big-endian: 13 bytes, 15 with the check; not done at the
+// seed's 11th byte.
+TEST(PacketDecoderCore, WithTheLaserPwmTheMotionPacketCarriesTheHighTime) {
+    std::vector<std::uint8_t> packet = test::motion_packet(1, 320, -160, 1200);
+    packet.push_back(0x0C);  // 3200 clocks: half of a 6400-clock period
+    packet.push_back(0x80);
+    PacketDecoderCore d(18'750'000, false, true, std::nullopt, true);
+    const auto done = feed_bytes(d, packet);
+    EXPECT_EQ(std::count(done.begin(), done.end(), Completed::None), 12);
+    EXPECT_EQ(done.back(), Completed::Motion);
+    EXPECT_EQ(d.motion().feed, 1200);
+    EXPECT_EQ(d.motion().laser_high, 3200);
+    EXPECT_EQ(d.motion().steps_y, -160);
+
+    PacketDecoderCore with_check(18'750'000, true, true, std::nullopt, true);
+    const auto checked_done = feed_bytes(with_check, checked(packet));
+    ASSERT_EQ(checked_done.size(), 15U);
+    EXPECT_EQ(std::count(checked_done.begin(), checked_done.end(), Completed::None), 14);
+    EXPECT_EQ(checked_done.back(), Completed::Motion);
+    EXPECT_EQ(with_check.motion().laser_high, 3200);
 }
 
 TEST(PacketDecoderCore, EverySingleBitErrorInACheckedPacketIsABadCrcAndNoMove) {

@@ -29,6 +29,9 @@ void validate(const FpgaConfig& cfg) {
     require(cfg.pulse_high_cycles >= 1, "pulse_high_cycles", "must be >= 1");
     require(cfg.dir_settle_cycles >= 1 && cfg.dir_settle_cycles < 512, "dir_settle_cycles",
             "must be in 1..511 (dir_cnt is 9 bits)");
+    require(
+        cfg.laser_pwm_period_cycles == 0 || (cfg.laser_pwm_period_cycles >= 2 && cfg.laser_pwm_period_cycles <= 65535),
+        "laser_pwm_period_cycles", "must be 0 (no PWM) or in 2..65535 (laser_ctrl's counter is 16 bits)");
 }
 
 }  // namespace cnc::fpga

@@ -39,6 +39,9 @@ struct FpgaConfig {
     // for good, the lid held open keeps the laser off.
     bool estop_input = false;
     bool interlock_input = false;
+    // Our option on seed 000 §7.2's PWM laser power (core/laser_pwm.hpp): the laser pin's PWM period in clocks, each
+    // motion packet carrying its high time; 0: none, the seed's on/off laser.
+    std::uint32_t laser_pwm_period_cycles = 0;
     ClockDeviation clock;  // the board oscillator's offset and jitter (all zero: an ideal CLOCK_50)
 };
 

@@ -9,15 +9,18 @@ namespace {
 std::uint32_t be32(std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t d) {
     return (std::uint32_t{a} << 24) | (std::uint32_t{b} << 16) | (std::uint32_t{c} << 8) | std::uint32_t{d};
 }
-
-template <std::size_t N>
-MotionFields motion_fields(const std::array<std::uint8_t, N>& b, std::uint8_t feed_low) {
-    return {static_cast<std::uint8_t>(b[0] & 0x3U), static_cast<std::int32_t>(be32(b[1], b[2], b[3], b[4])),
-            static_cast<std::int32_t>(be32(b[5], b[6], b[7], b[8])),
-            static_cast<std::uint16_t>((b[9] << 8) | feed_low),
-            static_cast<std::uint8_t>(queue_protocol::seq_of(b[0]))};
-}
 }  // namespace
+
+// The bank holds every byte of the packet by its last one.
+MotionFields PacketDecoderCore::motion_fields() const {
+    const auto& b = m_bank;
+    return {static_cast<std::uint8_t>(b[0] & 0x3U),
+            static_cast<std::int32_t>(be32(b[1], b[2], b[3], b[4])),
+            static_cast<std::int32_t>(be32(b[5], b[6], b[7], b[8])),
+            static_cast<std::uint16_t>((b[9] << 8) | b[10]),
+            static_cast<std::uint8_t>(queue_protocol::seq_of(b[0])),
+            static_cast<std::uint16_t>(m_laser_pwm ? (b[11] << 8) | b[12] : 0)};
+}
 
 void PacketDecoderCore::latch_init() {
     const auto& b = m_bank;
@@ -48,8 +51,8 @@ PacketDecoderCore::Completed PacketDecoderCore::on_byte(std::uint8_t byte) {
         restart();
         return Completed::Init;
     }
-    if (!was_cfg && m_byte_count == kMotionBytes - 1) {
-        m_motion = motion_fields(m_bank, byte);
+    if (!was_cfg && m_byte_count == motion_bytes() - 1) {
+        m_motion = motion_fields();
         m_byte_count = 0;
         m_timeout_active = false;  // the RTL leaves is_cfg_pkt as it was (0) here
         return Completed::Motion;
@@ -67,7 +70,7 @@ PacketDecoderCore::Completed PacketDecoderCore::complete_checked(bool is_cfg, st
         m_crc_reg = kCrc16Preset;
     }
     m_crc_reg = crc16_update(m_crc_reg, byte);
-    const int length = (is_cfg ? init_bytes() : kMotionBytes) + kCrcBytes;
+    const int length = (is_cfg ? init_bytes() : motion_bytes()) + kCrcBytes;
     if (m_byte_count < length - 1) {
         ++m_byte_count;
         return Completed::None;
@@ -84,7 +87,7 @@ PacketDecoderCore::Completed PacketDecoderCore::complete_checked(bool is_cfg, st
     if (m_alternating && m_sequence_seen && sequence == m_last_sequence) return Completed::Repeat;
     m_sequence_seen = true;
     m_last_sequence = sequence;
-    m_motion = motion_fields(b, b[10]);
+    m_motion = motion_fields();
     return Completed::Motion;
 }
 

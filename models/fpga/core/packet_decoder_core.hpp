@@ -8,7 +8,8 @@
 // does not leave the register at zero completes as BadCrc (the FPGA answers NAK), a good motion packet whose
 // sequence bit equals the last one passed on completes as Repeat (the host sent it again because it lost the ACK:
 // the move is not run twice). With the packet queue (fpga.queue_depth) the queue's packet numbers do that instead:
-// no alternating bit.
+// no alternating bit. With the laser's PWM (fpga.laser_pwm) a motion packet has two more bytes after FeedRate, the
+// PWM high time in clocks (big-endian; core/laser_pwm.hpp), before the CRC.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -22,6 +23,7 @@ struct MotionFields {
     std::int32_t steps_y = 0;
     std::uint16_t feed = 0;
     std::uint8_t seq = 0;  // b0[6:2]: the packet's number with the packet queue (common/queue_protocol.hpp)
+    std::uint16_t laser_high = 0;  // with fpga.laser_pwm: the PWM high time in clocks, after FeedRate
 };
 
 struct InitFields {
@@ -45,14 +47,16 @@ public:
     static constexpr int kInitBytes = 9;              // seed 000 §4.6
     static constexpr int kRampInitBytes = 17;         // and the ramp's two 32-bit registers
     static constexpr int kMotionBytes = 11;
+    static constexpr int kLaserHighBytes = 2;           // with the laser's PWM
     static constexpr int kCrcBytes = 2;                 // with the packet check
     static constexpr std::uint8_t kSequenceBit = 0x80;  // b0[7] of a motion packet, with the packet check
 
     explicit PacketDecoderCore(std::uint32_t numerator_default, bool packet_crc = false, bool alternating_bit = true,
-                               std::optional<RampDefaults> ramp = std::nullopt)
+                               std::optional<RampDefaults> ramp = std::nullopt, bool laser_pwm = false)
         : m_crc(packet_crc),
           m_alternating(packet_crc && alternating_bit),
           m_ramp(ramp.has_value()),
+          m_laser_pwm(laser_pwm),
           m_init{numerator_default, numerator_default, ramp ? ramp->accel : 0, ramp ? ramp->start : 0} {}
 
     // The rx_valid branch of the always block.
@@ -70,10 +74,13 @@ private:
     void restart();
     void latch_init();
     [[nodiscard]] int init_bytes() const { return m_ramp ? kRampInitBytes : kInitBytes; }
+    [[nodiscard]] int motion_bytes() const { return m_laser_pwm ? kMotionBytes + kLaserHighBytes : kMotionBytes; }
+    [[nodiscard]] MotionFields motion_fields() const;
 
     bool m_crc;
     bool m_alternating;
     bool m_ramp;
+    bool m_laser_pwm;
     int m_byte_count = 0;
     bool m_timeout_active = false;
     bool m_is_cfg = false;

@@ -20,7 +20,8 @@ rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design
          {"NUMERATOR_DEFAULT", std::to_string(cfg.numerator_default)},
          {"EXACT_PERIOD", cfg.period_arithmetic == PeriodArithmetic::Exact ? "1" : "0"},
          {"INIT_WIRED", cfg.init_packet_wired ? "1" : "0"},
-         {"PACKET_CRC", cfg.packet_crc ? "1" : "0"}});
+         {"PACKET_CRC", cfg.packet_crc ? "1" : "0"},
+         {"LASER_PWM_PERIOD", std::to_string(cfg.laser_pwm_period_cycles)}});
     spec.clock = "clk";
     spec.inputs = {{"rst_n", 1}, {"rx", 1}};
     spec.outputs = {{"tx", 1},     {"dir_x", 1},    {"step_x", 1}, {"n_enbl_x", 1}, {"dir_y", 1},

@@ -13,7 +13,7 @@ inline constexpr int kRtlInResetN = 0, kRtlInRx = 1;
 
 // The plug-in to build: the design's sources, its top module (the one named as the file, our "top"), the
 // parameters from `cfg` (CLK_HZ, FULL_BIT, PULSE_HIGH, DIR_SETTLE, FEED_ZERO_PERIOD, TIMEOUT_CYCLES,
-// NUMERATOR_DEFAULT, EXACT_PERIOD, INIT_WIRED, PACKET_CRC; of a user's top, those it declares) then the design's
+// NUMERATOR_DEFAULT, EXACT_PERIOD, INIT_WIRED, PACKET_CRC, LASER_PWM_PERIOD; of a user's top, those it declares) then the design's
 // own, and the nets ObservedRecords reads (the packet check's only with it).
 [[nodiscard]] rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design);
 

@@ -11,10 +11,14 @@
 // from one new move to the next: a good motion packet with the bit of the last one passed on is the host sending it
 // again because it lost the ACK, so it strobes pkt_repeat and is not run twice. The strobes last one clock, at the
 // edge pkt_valid would have.
+//
+// LASER_PWM = 1 adds our PWM laser power's field (laser_ctrl.v): a motion packet has two more bytes after the feed, the
+// PWM high time in clocks, big-endian (13 bytes, 15 with the check).
 module packet_decoder #(
     parameter TIMEOUT_CYCLES    = 5000000,   // 100 ms at 50 MHz
     parameter NUMERATOR_DEFAULT = 18750000,  // §5.2.3: 1/32 microstep, GT2 belt, 20-tooth pulley
-    parameter PACKET_CRC        = 0          // 1: the packet check above; 0: the seed's packets
+    parameter PACKET_CRC        = 0,         // 1: the packet check above; 0: the seed's packets
+    parameter LASER_PWM         = 0          // 1: the PWM high time above; 0: the seed's packets
 ) (
     input  wire        clk,
     input  wire        rst,
@@ -24,6 +28,7 @@ module packet_decoder #(
     output reg  [31:0] steps_x,
     output reg  [31:0] steps_y,
     output reg  [15:0] feed_rate,
+    output reg  [15:0] laser_high,
     output reg         pkt_valid,
     output reg  [31:0] numerator_x,
     output reg  [31:0] numerator_y,
@@ -33,15 +38,18 @@ module packet_decoder #(
 );
     localparam [7:0] CFG_MARKER  = 8'hFF;
     localparam       CHECKED     = PACKET_CRC != 0;  // one bit, for the conditions below
-    // The byte_count of a packet's last byte: with the check, two CRC bytes follow the seed's 9 or 11.
+    localparam       PWM         = LASER_PWM != 0;
+    // The byte_count of a packet's last byte: with the check, two CRC bytes follow the seed's 9 or 11 (13 with the
+    // high time).
     localparam [3:0] INIT_LAST   = CHECKED ? 4'd10 : 4'd8;
-    localparam [3:0] MOTION_LAST = CHECKED ? 4'd12 : 4'd10;
+    localparam [3:0] MOTION_LAST = (PWM ? 4'd12 : 4'd10) + (CHECKED ? 4'd2 : 4'd0);
     reg [3:0]  byte_count;
     reg [22:0] timeout_cnt;
     reg        timeout_active;
     reg        is_cfg_pkt;
-    // With the check the last byte is the CRC's, so the fields' last bytes (b8, b10) come from the bank too.
-    reg [7:0]  b0, b1, b2, b3, b4, b5, b6, b7, b8, b9, b10;
+    // With the check the last byte is the CRC's, so the fields' last bytes (b8, b10, b12) come from the bank too; so
+    // does the feed's (b10) with the high time after it.
+    reg [7:0]  b0, b1, b2, b3, b4, b5, b6, b7, b8, b9, b10, b11, b12;
     reg [15:0] crc;       // the CRC register over the packet's bytes so far
     reg        seq_seen;  // a motion packet has been passed on since reset
     reg        last_seq;  // its sequence bit
@@ -73,7 +81,7 @@ module packet_decoder #(
             timeout_cnt <= 23'd0;
             timeout_active <= 1'b0;
             is_cfg_pkt <= 1'b0;
-            {b0, b1, b2, b3, b4, b5, b6, b7, b8, b9, b10} <= 88'd0;
+            {b0, b1, b2, b3, b4, b5, b6, b7, b8, b9, b10, b11, b12} <= 104'd0;
             crc <= 16'd0;
             seq_seen <= 1'b0;
             last_seq <= 1'b0;
@@ -81,6 +89,7 @@ module packet_decoder #(
             steps_x <= 32'd0;
             steps_y <= 32'd0;
             feed_rate <= 16'd0;
+            laser_high <= 16'd0;
             pkt_valid <= 1'b0;
             numerator_x <= NUMERATOR_DEFAULT;
             numerator_y <= NUMERATOR_DEFAULT;
@@ -116,6 +125,8 @@ module packet_decoder #(
                     4'd8: b8 <= rx_data;
                     4'd9: b9 <= rx_data;
                     4'd10: b10 <= rx_data;
+                    4'd11: b11 <= rx_data;
+                    4'd12: b12 <= rx_data;
                     default: ;
                 endcase
                 if (byte_count == 4'd0) begin
@@ -141,7 +152,8 @@ module packet_decoder #(
                         motion <= b0[1:0];
                         steps_x <= {b1, b2, b3, b4};
                         steps_y <= {b5, b6, b7, b8};
-                        feed_rate <= {b9, CHECKED ? b10 : rx_data};
+                        feed_rate <= {b9, CHECKED || PWM ? b10 : rx_data};
+                        if (PWM) laser_high <= {b11, CHECKED ? b12 : rx_data};
                         pkt_valid <= 1'b1;
                         seq_seen <= 1'b1;
                         last_seq <= b0[7];

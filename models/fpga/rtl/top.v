@@ -25,7 +25,10 @@ module top #(
     // FPGAs without room for the single-cycle division: the pins are the same.
     parameter DIVIDER           = 0,
     // 1: the packet check above (protocol.crc = "crc16"); 0: the seed's packets and ACK alone.
-    parameter PACKET_CRC        = 0
+    parameter PACKET_CRC        = 0,
+    // > 0: our PWM laser power (fpga.laser_pwm): the PWM period in clocks, each motion packet carrying its high time
+    // (packet_decoder.v, laser_ctrl.v); 0: the seed's on/off laser and packets.
+    parameter LASER_PWM_PERIOD  = 0
 ) (
     input  wire clk,
     input  wire rst_n,
@@ -46,7 +49,7 @@ module top #(
     wire        rx_valid;
     wire [1:0]  motion;
     wire [31:0] steps_x, steps_y, numerator_x, numerator_y;
-    wire [15:0] feed_rate;
+    wire [15:0] feed_rate, laser_high;
     wire        pkt_valid, cfg_valid, crc_error, pkt_repeat;
     wire        tx_busy;
     reg         tx_start, busy_prev;
@@ -56,10 +59,11 @@ module top #(
         .clk(clk), .rst(rst), .rx(rx), .rx_data(rx_data), .rx_valid(rx_valid));
 
     packet_decoder #(.TIMEOUT_CYCLES(TIMEOUT_CYCLES), .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT),
-                     .PACKET_CRC(PACKET_CRC)) pkt_dec_inst (
+                     .PACKET_CRC(PACKET_CRC), .LASER_PWM(LASER_PWM_PERIOD != 0)) pkt_dec_inst (
         .clk(clk), .rst(rst), .rx_data(rx_data), .rx_valid(rx_valid), .motion(motion), .steps_x(steps_x),
-        .steps_y(steps_y), .feed_rate(feed_rate), .pkt_valid(pkt_valid), .numerator_x(numerator_x),
-        .numerator_y(numerator_y), .cfg_valid(cfg_valid), .crc_error(crc_error), .pkt_repeat(pkt_repeat));
+        .steps_y(steps_y), .feed_rate(feed_rate), .laser_high(laser_high), .pkt_valid(pkt_valid),
+        .numerator_x(numerator_x), .numerator_y(numerator_y), .cfg_valid(cfg_valid), .crc_error(crc_error),
+        .pkt_repeat(pkt_repeat));
 
     step_gen #(.PULSE_HIGH(PULSE_HIGH), .DIR_SETTLE(DIR_SETTLE), .FEED_ZERO_PERIOD(FEED_ZERO_PERIOD),
                .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT), .EXACT_PERIOD(EXACT_PERIOD), .DIVIDER(DIVIDER)) step_gen_inst (
@@ -68,8 +72,9 @@ module top #(
         .cfg_valid(INIT_WIRED ? cfg_valid : 1'b0), .dir_x(dir_x), .step_x(step_x), .dir_y(dir_y), .step_y(step_y),
         .busy(busy));
 
-    laser_ctrl laser_ctrl_inst (
-        .clk(clk), .rst(rst), .motion(motion), .pkt_valid(pkt_valid), .busy(busy), .laser(laser));
+    laser_ctrl #(.PWM_PERIOD(LASER_PWM_PERIOD)) laser_ctrl_inst (
+        .clk(clk), .rst(rst), .motion(motion), .laser_high(laser_high), .pkt_valid(pkt_valid), .busy(busy),
+        .laser(laser));
 
     uart_tx #(.FULL_BIT(FULL_BIT)) uart_tx_inst (
         .clk(clk), .rst(rst), .tx_data(tx_nak ? 8'h55 : 8'hAA), .tx_start(tx_start), .tx_busy(tx_busy), .tx(tx));

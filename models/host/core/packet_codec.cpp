@@ -92,6 +92,15 @@ MotionPacket to_packet(const MotionSegment& s) {
                         static_cast<std::int32_t>(s.steps_y), static_cast<std::uint16_t>(s.feed)};
 }
 
+std::vector<std::uint8_t> motion_frame(const MotionBytes& bytes, std::optional<std::uint16_t> laser_high) {
+    std::vector<std::uint8_t> out(bytes.begin(), bytes.end());
+    if (laser_high) {
+        out.push_back(static_cast<std::uint8_t>(*laser_high >> 8U));
+        out.push_back(static_cast<std::uint8_t>(*laser_high & 0xFFU));
+    }
+    return out;
+}
+
 std::vector<std::uint8_t> with_crc(const std::uint8_t* bytes, std::size_t n) {
     std::vector<std::uint8_t> out(bytes, bytes + n);
     const std::uint16_t crc = crc16(bytes, n);

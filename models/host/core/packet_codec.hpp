@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "common/link_bytes.hpp"
@@ -23,6 +24,10 @@ inline constexpr std::size_t kMotionPacketBytes = 11;  // seed 000 T3.6
 // With the FPGA's trapezoidal ramp (fpga.ramp, our option on seed 000 §7.2) the init packet carries the ramp's
 // acceleration and start registers after the numerators (fpga/core/step_ramp.hpp has their fixed point).
 inline constexpr std::size_t kRampInitPacketBytes = 17;
+
+// With the laser's PWM (fpga.laser_pwm, our option on seed 000 §7.2's PWM laser power) a motion packet carries the
+// PWM high time in clocks after FeedRate, big-endian, before any CRC (fpga/core/laser_pwm.hpp).
+inline constexpr std::size_t kLaserHighBytes = 2;
 
 using InitBytes = std::array<std::uint8_t, kInitPacketBytes>;
 using RampInitBytes = std::array<std::uint8_t, kRampInitPacketBytes>;
@@ -49,6 +54,9 @@ MotionBytes encode_motion(const MotionPacket& packet);
 InitPacket decode_init(const InitBytes& bytes);
 // std::invalid_argument if byte 0 is 0xFF (that starts an init packet).
 MotionPacket decode_motion(const MotionBytes& bytes);
+
+// A motion packet as it goes on the wire before any CRC: the seed's 11 bytes, then the high time if there is one.
+[[nodiscard]] std::vector<std::uint8_t> motion_frame(const MotionBytes& bytes, std::optional<std::uint16_t> laser_high);
 
 // `bytes` followed by their CRC-16/CCITT-FALSE, high byte first.
 [[nodiscard]] std::vector<std::uint8_t> with_crc(const std::uint8_t* bytes, std::size_t n);

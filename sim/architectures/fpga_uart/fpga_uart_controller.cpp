@@ -23,6 +23,7 @@
 #include "common/bad_input.hpp"
 #include "common/record_log.hpp"
 #include "common/sc_time.hpp"
+#include "fpga/core/laser_pwm.hpp"
 #include "fpga/core/step_schedule.hpp"
 #include "fpga/rtl_top.hpp"
 #include "fpga/top.hpp"
@@ -54,11 +55,21 @@ struct Wires {
     sc_core::sc_signal<bool> estop{"estop", false}, lid_open{"lid_open", false};
 };
 
+// With the laser's PWM: a cut's S in force (none programmed, or a steps-file row: full power, the seed's laser), a
+// rapid's 0.
+std::optional<std::uint16_t> laser_high_of(const MadeSegment& made, const FpgaUartSettings& f) {
+    if (f.fpga.laser_pwm_period_cycles == 0) return std::nullopt;
+    if (made.seg.motion == host::MotionKind::Rapid) return 0;
+    const std::optional<double> s = made.programmed ? made.programmed->power_s : std::nullopt;
+    return fpga::laser_high_cycles(s.value_or(f.laser_s_max), f.laser_s_max, f.fpga.laser_pwm_period_cycles);
+}
+
 host::OutgoingPacket packet_of(const MadeSegment& made, InitRegisters n, const FpgaUartSettings& f) {
     const host::MotionPacket packet = host::to_packet(made.seg);
     // The host expects step_gen to use the registers it sends (whether the init packet arrives or not).
     const fpga::MoveInputs move = move_inputs(packet.steps_x, packet.steps_y, packet.feed, n);
-    return {host::encode_motion(packet), made.seg.line, fpga::run_duration_ps(move, f.fpga), made.wait_before_s};
+    return {host::encode_motion(packet), made.seg.line, fpga::run_duration_ps(move, f.fpga), made.wait_before_s,
+            laser_high_of(made, f)};
 }
 
 // The sender's packets, made from the job's segments as it asks for them. A segment sent waits here until
@@ -108,7 +119,7 @@ public:
 private:
     static fpga::MotionFields sent_fields(const host::OutgoingPacket& packet) {
         const host::MotionPacket p = host::decode_motion(packet.bytes);
-        return {p.motion, p.steps_x, p.steps_y, p.feed};
+        return {p.motion, p.steps_x, p.steps_y, p.feed, 0, packet.laser_high.value_or(0)};
     }
 
     const FpgaUartSettings& m_settings;
@@ -464,8 +475,9 @@ public:
                 std::array<double, 2>{s.machine.x.steps_per_mm(), s.machine.y.steps_per_mm()});
         }
         const std::size_t check_bytes = m_f.serial.sender.check.crc ? host::kCrcBytes : 0;
+        const std::size_t pwm_bytes = m_f.fpga.laser_pwm_period_cycles > 0 ? host::kLaserHighBytes : 0;
         m_cp2102.thin_tx_log(init_packet(m_init_registers, m_f).size() + check_bytes,  // what the dead-time split reads
-                             host::kMotionPacketBytes + check_bytes);
+                             host::kMotionPacketBytes + pwm_bytes + check_bytes);
         m_fpga->rx(m_wires.uart_rx);
         m_cp2102.rxd(m_wires.uart_tx);
         if (s.faults.uart.any()) {

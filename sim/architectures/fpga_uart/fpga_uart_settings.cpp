@@ -1,10 +1,15 @@
 #include "architectures/fpga_uart/fpga_uart_settings.hpp"
 
+#include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "common/bad_input.hpp"
 #include "common/queue_protocol.hpp"
+#include "fpga/core/laser_pwm.hpp"
 
 namespace cnc::sim {
 
@@ -149,6 +154,41 @@ void read_safety_inputs(KeyReader& r, FpgaUartSettings& s) {
     }
 }
 
+// Our option on seed 000 §7.2's PWM laser power: laser_ctrl's law in fpga/core/laser_pwm.hpp, the frame in
+// host/core/packet_codec.hpp.
+void read_laser_pwm(KeyReader& r, FpgaUartSettings& s) {
+    const bool on = r.get_bool(
+        "fpga.laser_pwm", false,
+        "PWM laser power (seed 000 sec. 7.2 proposes it): each motion packet carries a PWM high time of S / "
+        "fpga.laser_s_max of the period after FeedRate (13 bytes, 15 with the CRC), and laser_ctrl drives the laser "
+        "pin with that duty at fpga.laser_pwm_hz while a cut runs; false, the seed's laser, on for the whole cut");
+    // grbl 1.1's laser mode drives the same diode-laser drivers from Timer2's fast PWM at prescaler 8: 16 MHz / 8 /
+    // 256 = 7812.5 Hz, 6400 clocks of 50 MHz.
+    const double pwm_hz = r.get_float("fpga.laser_pwm_hz", 7812.5, 1000.0, 50000.0,
+                                      "with fpga.laser_pwm: the PWM frequency, Hz; fpga.clock_hz / it must be a whole "
+                                      "number of clocks (default: grbl 1.1's 7812.5 Hz on OC2A)");
+    s.laser_s_max = r.get_float("fpga.laser_s_max", s.laser_s_max, 1.0, 65535.0,
+                                "with fpga.laser_pwm: the S word of full power, duty 100 % (grbl's $30 default: "
+                                "1000); a larger S is held to it");
+    if (!on) return;
+    const std::optional<std::uint32_t> period = fpga::laser_pwm_period_cycles(s.fpga.clk_hz, pwm_hz);
+    if (!period) {
+        const double cycles = static_cast<double>(s.fpga.clk_hz) / pwm_hz;
+        r.fail("fpga.laser_pwm_hz",
+               fmt::format(FMT_STRING("{} Hz is not reachable from the {} Hz FPGA clock: the period must be a whole "
+                                      "number of clocks (fpga.clock_hz / Hz = {:.4f}); e.g. {:.3f} Hz ({} clocks)"),
+                           pwm_hz, s.fpga.clk_hz, cycles, static_cast<double>(s.fpga.clk_hz) / std::round(cycles),
+                           std::round(cycles)));
+    }
+    if (*period > 65535) {
+        r.fail("fpga.laser_pwm_hz",
+               fmt::format(FMT_STRING("{} Hz is {} clocks of the {} Hz FPGA clock: laser_ctrl's 16-bit count reaches "
+                                      "65535 clocks"),
+                           pwm_hz, *period, s.fpga.clk_hz));
+    }
+    s.fpga.laser_pwm_period_cycles = *period;
+}
+
 }  // namespace
 
 // seed 000 §5.1.1: the DE1-SoC's CLOCK_50.
@@ -167,6 +207,7 @@ void read_fpga_uart_settings(KeyReader& r, const std::filesystem::path& base, Fp
     read_queue(r, s);
     read_ramp(r, s);
     read_safety_inputs(r, s);
+    read_laser_pwm(r, s);
 }
 
 }  // namespace cnc::sim

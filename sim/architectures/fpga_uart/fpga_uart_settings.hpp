@@ -19,6 +19,7 @@ struct FpgaUartSettings final : ArchSettings {
     bool allow_feed_zero = false;        // a steps file's FeedRate 0 sent as the appendix RTL would run it
     fpga::FpgaConfig fpga;
     double ramp_start_mm_per_s = 5.0;  // with fpga.ramp: the speed each move starts and ends at
+    double laser_s_max = 1000.0;       // with fpga.laser_pwm: the S of full power
     OscillatorSettings clock;  // CLOCK_50's oscillator
     RtlSettings rtl;           // the FPGA as event-driven blocks or as Verilog in the loop
 };

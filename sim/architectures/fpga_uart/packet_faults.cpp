@@ -12,7 +12,7 @@ constexpr std::uint8_t kMotionBits = 0x3;  // packet_decoder keeps b0[1:0] (seed
 
 bool same(const fpga::MotionFields& a, const fpga::MotionFields& b) {
     return (a.motion & kMotionBits) == (b.motion & kMotionBits) && a.steps_x == b.steps_x && a.steps_y == b.steps_y &&
-           a.feed == b.feed;
+           a.feed == b.feed && a.laser_high == b.laser_high;
 }
 
 // Stop-and-wait: the packet the host was sending when the record arrived, the last it took before.

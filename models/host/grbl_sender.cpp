@@ -18,7 +18,7 @@ constexpr TimePs kDrainStatusPs = 200 * kPsPerMs;
 
 GrblSender::GrblSender(const sc_core::sc_module_name& name, const GrblSenderConfig& cfg, uart::Cp2102& port,
                        grbl::Stream stream)
-    : sc_module(name), m_cfg(cfg), m_port(port), m_stream(std::move(stream)) {
+    : sc_module(name), m_cfg(cfg), m_port(port), m_stream(std::move(stream)), m_stall(cfg.stall) {
     SC_HAS_PROCESS(GrblSender);
     SC_THREAD(run);
 }
@@ -44,6 +44,7 @@ void GrblSender::run() {
     const TimePs status_ps = m_cfg.status_interval_ps;
     TimePs next_status_ps = status_ps > 0 ? status_ps : -1;
     for (;;) {
+        if (const TimePs wait = m_stall.wait_at(now_ps())) wait_ps(wait);
         read_port();
         const grbl::Phase phase = m_stream.phase();
         if (phase == grbl::Phase::Failed) {

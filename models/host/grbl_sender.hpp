@@ -25,6 +25,7 @@ struct GrblSenderConfig {
     TimePs status_interval_ps = 200 * kPsPerMs;
     // The start-up message must come within this, else the link or the firmware is not working.
     TimePs banner_timeout_ps = 2 * kPsPerSec;
+    StallWindow stall;  // a fault: none by default
 };
 
 // A line as it crossed the port: written by the sender, or read from grbl.
@@ -43,6 +44,8 @@ public:
     [[nodiscard]] bool finished() const { return m_finished; }
     [[nodiscard]] TimePs t_end_ps() const { return m_t_end_ps; }  // Idle seen (-1: not yet)
     [[nodiscard]] const std::optional<std::string>& failure() const { return m_failure; }
+    // How long the host stall (GrblSenderConfig::stall) held the sender up.
+    [[nodiscard]] TimePs stalled_ps() const { return m_stall.held_ps(); }
     [[nodiscard]] const std::vector<GrblLineRecord>& lines() const { return m_lines; }
 
 private:
@@ -57,6 +60,7 @@ private:
     bool m_finished = false;
     TimePs m_t_end_ps = -1;
     std::optional<std::string> m_failure;
+    HostStall m_stall;
 };
 
 }  // namespace cnc::host

@@ -59,7 +59,12 @@ TimePs byte_round_trip_ps(const SenderConfig& cfg, const uart::Cp2102Config& lin
 
 PcProgram::PcProgram(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
                      std::vector<cad2g::Transfer> transfers, ConfirmTimeouts timeouts)
-    : sc_module(name), m_cfg(cfg), m_port(port), m_transfers(std::move(transfers)), m_timeouts(std::move(timeouts)) {
+    : sc_module(name),
+      m_cfg(cfg),
+      m_port(port),
+      m_transfers(std::move(transfers)),
+      m_timeouts(std::move(timeouts)),
+      m_stall(cfg.stall) {
     for (const cad2g::Transfer& t : m_transfers) m_job_bytes += t.bytes.size();
     SC_HAS_PROCESS(PcProgram);
     SC_THREAD(run);
@@ -74,7 +79,12 @@ std::string PcProgram::place_after(std::size_t written) const {
     return "after writing the job's byte " + std::to_string(written) + " of " + std::to_string(m_job_bytes);
 }
 
+void PcProgram::stall_if_due() {
+    if (const TimePs wait = m_stall.wait_at(now_ps())) wait_ps(wait);
+}
+
 bool PcProgram::wait_for_confirm(TimePs deadline_ps, TimePs timeout_ps, const std::string& place) {
+    stall_if_due();
     while (m_port.in_waiting() == 0) {
         const TimePs now = now_ps();
         if (now >= deadline_ps) {
@@ -85,6 +95,7 @@ bool PcProgram::wait_for_confirm(TimePs deadline_ps, TimePs timeout_ps, const st
             return false;
         }
         sc_core::wait(ps_time(deadline_ps - now), m_port.data_event());
+        stall_if_due();
     }
     const std::uint8_t b = *m_port.read_byte();
     if (b == cad2g::kConfirmByte) return true;
@@ -129,6 +140,7 @@ void PcProgram::run() {
             if (k == 0 && i < m_waits.before_s.size()) {
                 wait_ps(s_to_ps(m_waits.before_s[i]));
             }
+            stall_if_due();
             w.t_write_ps = now_ps();
             wait_ps(m_cfg.write_latency_ps);
             m_port.usb_write(&w.byte, 1);

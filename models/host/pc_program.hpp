@@ -79,6 +79,8 @@ public:
     [[nodiscard]] bool finished() const { return m_finished; }
     [[nodiscard]] TimePs t_end_ps() const { return m_t_end; }  // the last byte was written (-1: not yet)
     [[nodiscard]] const std::optional<LinkFailure>& failure() const { return m_failure; }
+    // How long the host stall (SenderConfig::stall) held the program up.
+    [[nodiscard]] TimePs stalled_ps() const { return m_stall.held_ps(); }
 
 private:
     void run();
@@ -86,6 +88,8 @@ private:
     // job the program is ("before the job's first byte").
     bool wait_for_confirm(TimePs deadline_ps, TimePs timeout_ps, const std::string& place);
     void stop_on_mismatch(std::uint8_t first, const std::string& place);
+    // Inside the stall: waits for its end.
+    void stall_if_due();
     [[nodiscard]] std::string place_after(std::size_t written) const;
 
     const SenderConfig m_cfg;
@@ -98,6 +102,7 @@ private:
     bool m_finished = false;
     TimePs m_t_end = -1;
     std::optional<LinkFailure> m_failure;
+    HostStall m_stall;
 };
 
 }  // namespace cnc::host

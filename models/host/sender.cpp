@@ -11,7 +11,12 @@ namespace cnc::host {
 
 Sender::Sender(const sc_core::sc_module_name& name, const SenderConfig& cfg, uart::Cp2102& port,
                std::vector<std::uint8_t> init_packet, PacketSource& motion_packets)
-    : sc_module(name), m_cfg(cfg), m_port(port), m_init(std::move(init_packet)), m_motion(motion_packets) {
+    : sc_module(name),
+      m_cfg(cfg),
+      m_port(port),
+      m_init(std::move(init_packet)),
+      m_motion(motion_packets),
+      m_stall(cfg.stall) {
     SC_HAS_PROCESS(Sender);
     SC_THREAD(run);
 }
@@ -51,10 +56,7 @@ void Sender::on_halt(int segment) {
 }
 
 void Sender::stall_if_due() {
-    const TimePs now = now_ps();
-    if (now < m_cfg.stall_from_ps || now >= m_cfg.stall_to_ps) return;
-    m_stalled_ps += m_cfg.stall_to_ps - now;
-    wait_ps(m_cfg.stall_to_ps - now);
+    if (const TimePs wait = m_stall.wait_at(now_ps())) wait_ps(wait);
 }
 
 void Sender::write(const std::uint8_t* data, std::size_t n) {

@@ -80,9 +80,8 @@ public:
     [[nodiscard]] int stray_bytes() const { return m_stray_bytes; }
     [[nodiscard]] int bad_statuses() const { return m_bad_statuses; }
     [[nodiscard]] int polls() const { return m_polls; }
-    // How long the host stall (SenderConfig::stall_*) held the script up: from its first wish to act in the stall
-    // to the stall's end.
-    [[nodiscard]] TimePs stalled_ps() const { return m_stalled_ps; }
+    // How long the host stall (SenderConfig::stall) held the script up.
+    [[nodiscard]] TimePs stalled_ps() const { return m_stall.held_ps(); }
     [[nodiscard]] TimePs t_init_write_ps() const { return m_t_init_write; }
     [[nodiscard]] TimePs t_end_ps() const { return m_t_end; }
 
@@ -120,7 +119,7 @@ private:
     int m_stray_bytes = 0;
     int m_bad_statuses = 0;
     int m_polls = 0;
-    TimePs m_stalled_ps = 0;
+    HostStall m_stall;
     bool m_sequence = false;  // the packet check's alternating bit of the next new move
     bool m_finished = false;
     bool m_aborted = false;

@@ -8,7 +8,10 @@ on their own, the frames they hit. The checks hold the two apart:
   seed 003 protocol notices a lost byte only as a missing confirm, and stops;
 - bit errors: seed 003's protocol has no check, so a changed byte can run (the PC gets its confirm and goes on)
   and the tool ends off the programmed point by more than a step, as the metrics measure it from the STEP edges;
-  a changed confirm stops the PC program (protocol mismatch); the same seed gives the same report, byte for byte.
+  a changed confirm stops the PC program (protocol mismatch); the same seed gives the same report, byte for byte;
+- a host stall: seed 003's PC program writes a byte per confirm, so the job takes exactly as much longer as the
+  stall held the program up (within a 1 ms USB frame); grbl's sender has the square's few lines in grbl's buffer
+  before the stall, so the job still ends on the programmed point with every step (the stall costs it no motion).
 """
 import filecmp
 import json
@@ -78,6 +81,19 @@ def main():
     rc, rep, out = run(cncsim, square, work, "mismatch", ["faults.uart_ber=1e-2", "faults.seed=1"])
     check(rep["atmega"]["faults"]["from_mcu"]["bytes_wrong"] > 0, "BER 1e-2 seed 1: no confirm changed")
     check(rc == 1 and "protocol mismatch" in out, "a changed confirm did not stop the PC program: " + out)
+    clean = run(cncsim, square, work, "stall_clean", [])[1]
+    rc, rep, out = run(cncsim, square, work, "stall", ["faults.host_stall_at_s=0.5", "faults.host_stall_s=1.5"])
+    held = rep["atmega"]["faults"]["host_stall"]["host_held_up_s"]
+    longer = rep["metrics"]["job"]["job_time_s"] - clean["metrics"]["job"]["job_time_s"]
+    check(rc == 0 and held > 0.0, "the stall held the PC program up %.6f s: %s" % (held, out))
+    check(abs(longer - held) <= 1e-3, "the job took %.6f s longer for a stall that held the program %.6f s"
+          % (longer, held))
+    sets = ["avr.firmware=" + grbl_elf, "faults.host_stall_at_s=1", "faults.host_stall_s=1.5"]
+    rc, rep, out = run(cncsim, grbl_square, work, "grbl_stall", sets)
+    check(rc == 0 and rep["grbl"]["faults"]["host_stall"]["host_held_up_s"] > 0.0, "grbl: the stall " + out)
+    steps = [a["driver_timing"]["rate"]["checked"] + 1 for a in rep["metrics"]["axes"]]
+    check(steps == [9600, 9600] and rep["metrics"]["path"]["job_end_um"] < STEP_UM,
+          "grbl with a stall: %s steps, ends %.3f um off" % (steps, rep["metrics"]["path"]["job_end_um"]))
     print("PASS")
 
 

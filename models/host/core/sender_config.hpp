@@ -2,6 +2,7 @@
 // program that shares it): settle, init gap, ACK timeout, its own work and the OS write latency.
 #pragma once
 #include "common/units.hpp"
+#include "host/core/host_stall.hpp"
 
 namespace cnc::host {
 
@@ -25,10 +26,7 @@ struct SenderConfig {
     // With the FPGA's packet queue (fpga.queue_depth, common/queue_protocol.hpp): packets kept in flight at most;
     // 0, the seed's stop-and-wait.
     int queue_depth = 0;
-    // A fault: the host program does nothing from stall_from_ps to stall_to_ps (another process, a swap storm, a
-    // USB reset): it neither writes nor reads the port. Empty when stall_to_ps <= stall_from_ps.
-    TimePs stall_from_ps = 0;
-    TimePs stall_to_ps = 0;
+    StallWindow stall;  // a fault: none by default
 };
 
 }  // namespace cnc::host

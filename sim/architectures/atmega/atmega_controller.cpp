@@ -21,7 +21,7 @@
 #include "architectures/avr_board/board_faults.hpp"
 #include "architectures/avr_board/board_link_report.hpp"
 #include "architectures/avr_board/board_wiring.hpp"
-#include "architectures/serial_host/usb_faults.hpp"
+#include "architectures/serial_host/host_faults.hpp"
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/cad2g/firmware_busy.hpp"
@@ -116,6 +116,13 @@ host::ConfirmTimeouts confirm_timeouts(const AtmegaSettings& a, const uart::Cp21
     return t;
 }
 
+// The PC program as the scenario sets it, with the host stall of its faults.
+host::SenderConfig pc_config(const Scenario& s, const AtmegaSettings& a) {
+    host::SenderConfig c = a.serial.sender;
+    c.stall = stall_window(s.faults.host_stall);
+    return c;
+}
+
 // The seed 003 system between the job and the machine's pins: the PC program (CAD2G) through the CP2102, the
 // ATmega328P running its firmware, which drives STEP, DIR, EN and the head.
 class AtmegaController final : public Controller {
@@ -131,7 +138,7 @@ public:
           m_link(link),
           m_transfers(cad2g::transfers(m_plan)),
           m_cp2102("cp2102", m_link),
-          m_pc("host", m_a.serial.sender, m_cp2102, m_transfers, confirm_timeouts(m_a, m_link, m_plan, m_transfers)),
+          m_pc("host", pc_config(s, m_a), m_cp2102, m_transfers, confirm_timeouts(m_a, m_link, m_plan, m_transfers)),
           m_mcu("atmega328p", m_avr_cfg),
           m_moves(commanded_moves(&*job.program, cad2g::motion_segments(m_plan, s.machine), s.machine,
                                   s.interpreter.start_mm)),
@@ -288,6 +295,7 @@ void AtmegaController::report(ArchRun& run, const RunBudget& budget, const Simul
 
     if (m_faults) report_faults(run);
     report_usb_spikes(m_s.faults, m_cp2102, run);
+    report_host_stall(m_s.faults.host_stall, m_pc.stalled_ps(), run);
     if (const std::optional<std::string> why = link_failure()) {
         run.ok = false;
         run.failure = stopped_at(*why, m_stop_ps);

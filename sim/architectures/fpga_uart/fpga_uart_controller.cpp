@@ -18,8 +18,8 @@
 #include "architectures/fpga_uart/job_segments.hpp"
 #include "architectures/fpga_uart/packet_faults.hpp"
 #include "architectures/fpga_uart/ramp_commanded.hpp"
+#include "architectures/serial_host/host_faults.hpp"
 #include "architectures/serial_host/link_checks.hpp"
-#include "architectures/serial_host/usb_faults.hpp"
 #include "common/bad_input.hpp"
 #include "common/record_log.hpp"
 #include "common/sc_time.hpp"
@@ -423,10 +423,7 @@ void check_fpga_rate(const Scenario& s, const FpgaUartSettings& f) {
 host::SenderConfig sender_config(const Scenario& s, const FpgaUartSettings& f) {
     host::SenderConfig c = f.serial.sender;
     c.queue_depth = f.fpga.queue_depth;
-    if (s.faults.host_stall.any()) {
-        c.stall_from_ps = s_to_ps(s.faults.host_stall.at_s);
-        c.stall_to_ps = c.stall_from_ps + s_to_ps(s.faults.host_stall.length_s);
-    }
+    c.stall = stall_window(s.faults.host_stall);
     return c;
 }
 
@@ -776,33 +773,31 @@ void FpgaUartController::report_faults(ArchRun& run, std::ostringstream& text) c
                           {"executed", fields_json(c.executed)},
                           {"error_steps", c.error_steps}});
     }
-    run.details["faults"] = {
-        {"seed", m_s.faults.seed},
-        {"uart_ber", m_s.faults.uart.ber},
-        {"uart_frame_loss_rate", m_s.faults.uart.frame_loss_rate},
-        {"to_fpga", line_json(to)},
-        {"from_fpga", line_json(from)},
-        {"host_stall",
-         {{"at_s", stall.at_s}, {"length_s", stall.length_s}, {"host_held_up_s", ps_to_s(m_sender.stalled_ps())}}},
-        {"packets",
-         {{"sent", f.sent},
-          {"executed_as_sent", f.executed_as_sent},
-          {"silently_executed_wrong", f.executed_wrong},
-          {"lost", f.lost},
-          {"extra", f.extra},
-          {"ignored_while_busy", f.ignored}}},
-        {"detected",
-         {{"fpga_framing_errors", st.framing_errors},
-          {"watchdog_resets", st.watchdog_resets},
-          {"crc_errors", st.crc_errors},
-          {"host_ack_timeouts", m_sender.errors()},
-          {"host_framing_errors", m_cp2102.stats().framing_errors}}},
-        {"retransmitted", m_sender.resends()},
-        {"naks", {{"sent", st.naks_sent}, {"read", m_sender.naks()}}},
-        {"repeats_acked", st.repeats},
-        {"job_end_error_steps", f.job_end_error_steps},
-        {"commands_run_changed", f.executed_wrong},
-        {"silent", silent}};
+    run.details["faults"] = {{"seed", m_s.faults.seed},
+                             {"uart_ber", m_s.faults.uart.ber},
+                             {"uart_frame_loss_rate", m_s.faults.uart.frame_loss_rate},
+                             {"to_fpga", line_json(to)},
+                             {"from_fpga", line_json(from)},
+                             {"host_stall", host_stall_json(stall, m_sender.stalled_ps())},
+                             {"packets",
+                              {{"sent", f.sent},
+                               {"executed_as_sent", f.executed_as_sent},
+                               {"silently_executed_wrong", f.executed_wrong},
+                               {"lost", f.lost},
+                               {"extra", f.extra},
+                               {"ignored_while_busy", f.ignored}}},
+                             {"detected",
+                              {{"fpga_framing_errors", st.framing_errors},
+                               {"watchdog_resets", st.watchdog_resets},
+                               {"crc_errors", st.crc_errors},
+                               {"host_ack_timeouts", m_sender.errors()},
+                               {"host_framing_errors", m_cp2102.stats().framing_errors}}},
+                             {"retransmitted", m_sender.resends()},
+                             {"naks", {{"sent", st.naks_sent}, {"read", m_sender.naks()}}},
+                             {"repeats_acked", st.repeats},
+                             {"job_end_error_steps", f.job_end_error_steps},
+                             {"commands_run_changed", f.executed_wrong},
+                             {"silent", silent}};
     text << fmt::format(FMT_STRING("faults (seed {}): UART BER {:g}, frames lost {:g}\n"), m_s.faults.seed,
                         m_s.faults.uart.ber, m_s.faults.uart.frame_loss_rate)
          << fmt::format(FMT_STRING("  to the FPGA: {} of {} frames hit ({} lost, {} bits inverted); from it: {} of {} "
@@ -818,10 +813,7 @@ void FpgaUartController::report_faults(ArchRun& run, std::ostringstream& text) c
                         st.framing_errors, st.watchdog_resets, st.crc_errors, m_sender.errors(), m_sender.resends())
          << fmt::format(FMT_STRING("  steps off at the job's end: X {:+d}, Y {:+d}\n"), f.job_end_error_steps[0],
                         f.job_end_error_steps[1]);
-    if (stall.any()) {
-        text << fmt::format(FMT_STRING("  host stall of {:.3f} s at {:.3f} s: held the script up {:.3f} s\n"),
-                            stall.length_s, stall.at_s, ps_to_s(m_sender.stalled_ps()));
-    }
+    if (stall.any()) text << host_stall_text(stall, m_sender.stalled_ps());
     constexpr std::size_t kListed = 20;  // the report's faults.silent has them all
     for (std::size_t k = 0; k < std::min(f.silent.size(), kListed); ++k) {
         const SilentCorruption& c = f.silent[k];

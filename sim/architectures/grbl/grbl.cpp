@@ -50,11 +50,12 @@ public:
         }
     }
 
-    // The DRV8825s on the machine's pins, the link's wires.
+    // The DRV8825s on the machine's pins, the link's wires, the CP2102's USB link, the host program.
     [[nodiscard]] FaultLinks fault_links() const override {
         FaultLinks links;
         links.uart = true;
         links.usb = true;
+        links.host = true;
         links.step_input = true;
         return links;
     }

@@ -18,7 +18,7 @@
 #include "architectures/grbl/grbl_report.hpp"
 #include "architectures/grbl/grbl_settings.hpp"
 #include "architectures/grbl/step_windows.hpp"
-#include "architectures/serial_host/usb_faults.hpp"
+#include "architectures/serial_host/host_faults.hpp"
 #include "avr/avr_core.hpp"
 #include "common/bad_input.hpp"
 #include "host/core/cam.hpp"
@@ -62,8 +62,10 @@ host::grbl::Stream make_stream(const Scenario& s, const GrblSettings& g, const J
         job_lines(s));
 }
 
-host::GrblSenderConfig sender_config(const GrblSettings& g) {
+// The sender as the scenario sets it, with the host stall of its faults.
+host::GrblSenderConfig sender_config(const Scenario& s, const GrblSettings& g) {
     host::GrblSenderConfig c;
+    c.stall = stall_window(s.faults.host_stall);
     c.processing_ps = g.serial.sender.packet_processing_ps;
     c.write_latency_ps = g.serial.sender.write_latency_ps;
     c.status_interval_ps = g.status_interval_ps;
@@ -122,7 +124,7 @@ public:
           m_avr_cfg(std::move(avr_cfg)),
           m_ends(move_ends(segments)),
           m_cp2102("cp2102", with_usb_spikes(m_g.serial.link, s.faults)),
-          m_sender("host", sender_config(m_g), m_cp2102, make_stream(s, m_g, job)),
+          m_sender("host", sender_config(s, m_g), m_cp2102, make_stream(s, m_g, job)),
           m_mcu("atmega328p", m_avr_cfg),
           m_moves(commanded_moves(&*job.program, segments, s.machine, s.interpreter.start_mm)),
           m_faults(board_line_faults(s.faults, m_cp2102, usart, m_avr_cfg.f_cpu_hz)) {
@@ -233,6 +235,7 @@ void GrblController::report(ArchRun& run, const RunBudget& budget, const Simulat
         run.details_text += board_faults_text(m_s.faults, r);
     }
     report_usb_spikes(m_s.faults, m_cp2102, run);
+    report_host_stall(m_s.faults.host_stall, m_sender.stalled_ps(), run);
     if (const std::optional<std::string> why =
             board_link_failure(m_mcu, m_cp2102, m_sender.failure(), m_faults != nullptr)) {
         run.ok = false;

@@ -1,4 +1,4 @@
-#include "architectures/serial_host/usb_faults.hpp"
+#include "architectures/serial_host/host_faults.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -24,6 +24,27 @@ void report_usb_spikes(const FaultSettings& f, const uart::Cp2102& cp2102, ArchR
                    "CP2102 delayed {:.3f} ms in all, {} to the host {:.3f} ms\n"),
         f.usb_spikes.rate, ps_to_s(f.usb_spikes.mean_ps) * 1e3, st.usb_spikes_out,
         ps_to_s(st.usb_spike_delay_out_ps) * 1e3, st.usb_spikes_in, ps_to_s(st.usb_spike_delay_in_ps) * 1e3);
+}
+
+host::StallWindow stall_window(const HostStall& stall) {
+    if (!stall.any()) return {};
+    const TimePs from_ps = s_to_ps(stall.at_s);
+    return {from_ps, from_ps + s_to_ps(stall.length_s)};
+}
+
+nlohmann::json host_stall_json(const HostStall& stall, TimePs held_ps) {
+    return {{"at_s", stall.at_s}, {"length_s", stall.length_s}, {"host_held_up_s", ps_to_s(held_ps)}};
+}
+
+std::string host_stall_text(const HostStall& stall, TimePs held_ps) {
+    return fmt::format(FMT_STRING("  host stall of {:.3f} s at {:.3f} s: held the host program up {:.3f} s\n"),
+                       stall.length_s, stall.at_s, ps_to_s(held_ps));
+}
+
+void report_host_stall(const HostStall& stall, TimePs held_ps, ArchRun& run) {
+    if (!stall.any()) return;
+    run.details["faults"]["host_stall"] = host_stall_json(stall, held_ps);
+    run.details_text += host_stall_text(stall, held_ps);
 }
 
 }  // namespace cnc::sim

@@ -13,6 +13,7 @@
 #include "common/bad_input.hpp"
 
 #include <avr_eeprom.h>
+#include <avr_extint.h>
 #include <avr_ioport.h>
 #include <avr_timer.h>
 #include <avr_uart.h>
@@ -169,6 +170,7 @@ void AvrChip::install_hooks() {
         avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ(m16 ? 'D' : 'B'), m16 ? IOPORT_IRQ_PIN6 : IOPORT_IRQ_PIN0);
     avr_irq_t* icp_in = avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('1'), TIMER_IRQ_IN_ICP);
     if (icp_pin != nullptr && icp_in != nullptr) avr_unconnect_irq(icp_pin, icp_in);
+    if (!m16) disconnect_external_interrupts();
 
     const auto take_write = [&](std::uint16_t addr) {
         auto& io = avr->io[AVR_DATA_TO_IO(addr)];
@@ -209,6 +211,18 @@ void AvrChip::install_hooks() {
     avr->data[kUcsr0a] = m_usart.ucsra();
     avr->data[kUcsr0b] = m_usart.ucsrb();
     avr->data[kUcsr0c] = m_usart.ucsrc();
+}
+
+void AvrChip::disconnect_external_interrupts() {
+    // simavr 1.6's INT0/INT1 (avr_extint.c) follow PD2/PD3, and in the reset low-level mode (EICRA ISCn1:0 = 00)
+    // poll a low pin with a cycle timer at every cycle, whatever EIMSK says, setting INTFn, which the datasheet
+    // keeps clear in that mode ("EIFR"). grbl's STEP_X/STEP_Y are PD2/PD3 and low between pulses, so that poll was
+    // most of grbl's simulation time. No input but RXD reaches the ATmega328P's pins, so INT0/INT1 are left out.
+    for (int n = 0; n < 2; ++n) {
+        avr_irq_t* pin = avr_io_getirq(m_avr, AVR_IOCTL_IOPORT_GETIRQ('D'), IOPORT_IRQ_PIN2 + n);
+        avr_irq_t* detector = avr_io_getirq(m_avr, AVR_IOCTL_EXTINT_GETIRQ(), EXTINT_IRQ_OUT_INT0 + n);
+        if (pin != nullptr && detector != nullptr) avr_unconnect_irq(pin, detector);
+    }
 }
 
 Cycle AvrChip::now() const {

@@ -141,6 +141,7 @@ private:
     void usart_txd(Cycle c, bool level) override;
 
     void install_hooks();
+    void disconnect_external_interrupts();
     void reschedule();
     [[nodiscard]] Cycle now() const;
     // Raise a vector (or, for a level interrupt, follow its flag) at cycle c: the flag's cycle, which times a

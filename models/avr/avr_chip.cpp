@@ -122,6 +122,7 @@ AvrChip::AvrChip(const AvrCoreConfig& cfg)
     m_timers[1] = std::make_unique<TimerUnit>(kTimer1, m_prescaler01, sink);
     m_timers[2] = std::make_unique<TimerUnit>(kTimer2, m_prescaler2, sink);
     install_hooks();
+    if (cfg.fast_forward) m_skipper = std::make_unique<LoopSkipper>(m_avr, pure_reads());
     m_initial[kTxdLine] = true;  // the USART line idles high
     m_level = m_initial;
 }
@@ -225,6 +226,25 @@ void AvrChip::disconnect_external_interrupts() {
     }
 }
 
+std::vector<std::uint16_t> AvrChip::pure_reads() const {
+    // PINx reads the pins (inputs change only between run_until calls), UCSR0A the USART's flags (they change only at
+    // its events); both without side effects.
+    std::vector<std::uint16_t> pure;
+    for (const auto& port : m_map.ports) pure.push_back(port.pin);
+    if (m_map.mcu == Mcu::Atmega328p) pure.push_back(reg::kUcsr0a);
+    return pure;
+}
+
+void AvrChip::step() {
+    const std::uint32_t pc = m_avr->pc;
+    const avr_cycle_timer_slot_t* due = m_avr->cycle_timers.timer;
+    const avr_cycle_count_t due_at = due != nullptr ? due->when : ~avr_cycle_count_t{0};
+    avr_run(m_avr);
+    if (!m_skipper) return;
+    if (due_at <= m_avr->cycle) m_skipper->disturb();  // a cycle timer fell due: an event happened
+    m_skipper->after_step(pc);
+}
+
 Cycle AvrChip::now() const {
     return static_cast<Cycle>(m_avr->cycle);
 }
@@ -237,7 +257,8 @@ ChipState AvrChip::run_until(Cycle limit) {
         // Bounds a sleep: a sleeping simavr core jumps straight to its next cycle timer.
         avr_cycle_timer_register(m_avr, static_cast<avr_cycle_count_t>(limit - now()), no_op_timer, this);
         while (now() < limit) {
-            const int st = avr_run(m_avr);
+            step();
+            const int st = m_avr->state;
             if (st != cpu_Done && st != cpu_Crashed && st != cpu_Stopped) continue;
             m_state = st == cpu_Done ? ChipState::Done : ChipState::Crashed;
             m_stop_cycle = now();
@@ -279,6 +300,7 @@ void AvrChip::drive_input(const Pin& pin, bool level) {
     std::int8_t& driven = m_inputs.at(port_index(pin.port)).at(static_cast<std::size_t>(pin.bit));
     const bool was = driven < 0 ? pin_level(pin) : driven != 0;
     driven = level ? 1 : 0;
+    disturb();
     if (m_map.mcu == Mcu::Atmega16) external_interrupt_edge(pin, was, level);
 }
 
@@ -294,6 +316,7 @@ std::vector<LineEvent> AvrChip::take_events(Cycle upto) {
 
 void AvrChip::deliver_rx(Cycle start, Cycle decision, const uart::RxFrame& frame) {
     m_usart.receive(start, decision, frame);
+    disturb();
     reschedule();
 }
 
@@ -358,6 +381,7 @@ void AvrChip::vector_cleared(avr_int_vector_t* v) {
 }
 
 void AvrChip::vector_entered(avr_int_vector_t* v) {
+    disturb();
     if (m_map.mcu == Mcu::Atmega16) external_interrupt_entered(v->vector);
     // Datasheet "Interrupt Response Time": pushing the return address takes at least 4 cycles before the vector
     // runs; libsimavr 1.6's avr_service_interrupts drops that count, which put every edge an ISR

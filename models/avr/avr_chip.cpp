@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "avr/atmega328p_regs.hpp"
@@ -122,7 +123,13 @@ AvrChip::AvrChip(const AvrCoreConfig& cfg)
     m_timers[1] = std::make_unique<TimerUnit>(kTimer1, m_prescaler01, sink);
     m_timers[2] = std::make_unique<TimerUnit>(kTimer2, m_prescaler2, sink);
     install_hooks();
-    if (cfg.fast_forward) m_skipper = std::make_unique<LoopSkipper>(m_avr, pure_reads());
+    if (cfg.fast_forward)
+        // PINx reads the pins (inputs change only between run_until calls), UCSR0A the USART's flags (they change
+        // only at its events); both without side effects.
+        m_skipper = std::make_unique<LoopSkipper>(
+            m_avr, pin_registers(),
+            m_map.mcu == Mcu::Atmega328p ? std::vector<std::uint16_t>{reg::kUcsr0a} : std::vector<std::uint16_t>{},
+            [this] { return quiet_until(); });
     m_initial[kTxdLine] = true;  // the USART line idles high
     m_level = m_initial;
 }
@@ -226,23 +233,75 @@ void AvrChip::disconnect_external_interrupts() {
     }
 }
 
-std::vector<std::uint16_t> AvrChip::pure_reads() const {
-    // PINx reads the pins (inputs change only between run_until calls), UCSR0A the USART's flags (they change only at
-    // its events); both without side effects.
-    std::vector<std::uint16_t> pure;
-    for (const auto& port : m_map.ports) pure.push_back(port.pin);
-    if (m_map.mcu == Mcu::Atmega328p) pure.push_back(reg::kUcsr0a);
-    return pure;
+std::vector<std::uint16_t> AvrChip::pin_registers() const {
+    std::vector<std::uint16_t> pins;
+    for (const auto& port : m_map.ports) pins.push_back(port.pin);
+    return pins;
+}
+
+// The first cycle timer other than the scheduler's (simavr's peripherals, and the run_until boundary unless
+// `past_the_boundary`), or none.
+const avr_cycle_timer_slot_t* AvrChip::other_cycle_timer(bool past_the_boundary) const {
+    const avr_cycle_timer_slot_t* t = m_avr->cycle_timers.timer;  // sorted by cycle
+    while (t != nullptr && (t->timer == Bridge::scheduler || (past_the_boundary && t->timer == no_op_timer)))
+        t = t->next;
+    return t;
 }
 
 void AvrChip::step() {
     const std::uint32_t pc = m_avr->pc;
-    const avr_cycle_timer_slot_t* due = m_avr->cycle_timers.timer;
+    const avr_cycle_timer_slot_t* due = m_skipper ? other_cycle_timer(true) : nullptr;
     const avr_cycle_count_t due_at = due != nullptr ? due->when : ~avr_cycle_count_t{0};
     avr_run(m_avr);
     if (!m_skipper) return;
-    if (due_at <= m_avr->cycle) m_skipper->disturb();  // a cycle timer fell due: an event happened
-    m_skipper->after_step(pc);
+    // The scheduler's events say themselves whether the CPU can see them (timer_flag, timer_output, usart_*); the
+    // run_until boundary changes nothing.
+    if (due_at <= m_avr->cycle) m_skipper->disturb();
+    if (m_avr->pc <= pc && m_avr->state == cpu_Running) m_skipper->backward_jump();  // an iteration may end here
+}
+
+namespace {
+
+// What a timer's coming events would do: whether any is seen by the CPU.
+class EventProbe final : public TimerSink {
+public:
+    EventProbe(std::function<bool(char, TimerFlag)> quiet, bool outputs_seen)
+        : m_quiet(std::move(quiet)), m_outputs_seen(outputs_seen) {}
+    void timer_flag(char timer, TimerFlag flag, Cycle) override { m_seen = m_seen || !m_quiet(timer, flag); }
+    void timer_output(char, Cycle) override { m_seen = m_seen || m_outputs_seen; }
+    [[nodiscard]] bool seen() const { return m_seen; }
+
+private:
+    std::function<bool(char, TimerFlag)> m_quiet;
+    bool m_outputs_seen;  // through PINx
+    bool m_seen = false;
+};
+
+}  // namespace
+
+bool AvrChip::quiet_flag(char timer, TimerFlag flag) const {
+    // Raising a flag that is already set, with its interrupt disabled, changes nothing.
+    const int n = timer_vector(timer - '0', flag);
+    if (n == 0) return true;
+    const avr_int_vector_t* v = m_vectors.at(static_cast<std::size_t>(n));
+    return avr_regbit_get(m_avr, v->raised) != 0 && avr_regbit_get(m_avr, v->enable) == 0;
+}
+
+Cycle AvrChip::quiet_until() const {
+    // The run_until boundary's own cycle timer is gone once it has fired, in the step that reached it.
+    Cycle until = m_run_limit;
+    if (const avr_cycle_timer_slot_t* t = other_cycle_timer(false))
+        until = std::min(until, static_cast<Cycle>(t->when));
+    if (const auto u = m_usart.next_event()) until = std::min(until, *u);
+    for (const auto& timer : m_timers) {
+        EventProbe probe([this](char t, TimerFlag f) { return quiet_flag(t, f); }, m_skipper->pins_read());
+        TimerUnit ahead = timer->copy_for(probe);  // from its last processed event: one due now counts too
+        for (auto e = ahead.next_event(); e && *e < until; e = ahead.next_event()) {
+            ahead.advance_to(*e);
+            if (probe.seen()) until = *e;
+        }
+    }
+    return until;
 }
 
 Cycle AvrChip::now() const {
@@ -256,6 +315,7 @@ ChipState AvrChip::run_until(Cycle limit) {
     if (m_state == ChipState::Running && limit > now()) {
         // Bounds a sleep: a sleeping simavr core jumps straight to its next cycle timer.
         avr_cycle_timer_register(m_avr, static_cast<avr_cycle_count_t>(limit - now()), no_op_timer, this);
+        m_run_limit = limit;
         while (now() < limit) {
             step();
             const int st = m_avr->state;
@@ -398,16 +458,19 @@ void AvrChip::vector_entered(avr_int_vector_t* v) {
 }
 
 void AvrChip::usart_flags(Cycle c) {
+    disturb();
     sync_level_vector(kVecUsartRx, m_usart.rxc(), c);
     sync_level_vector(kVecUsartUdre, m_usart.udre(), c);
     sync_level_vector(kVecUsartTx, m_usart.txc(), c);
 }
 
 void AvrChip::usart_txd(Cycle c, bool level) {
+    disturb();
     record(c, kTxdLine, level);
 }
 
 void AvrChip::timer_flag(char timer, TimerFlag flag, Cycle c) {
+    if (!quiet_flag(timer, flag)) disturb();
     raise(timer_vector(timer - '0', flag), c);
 }
 
@@ -416,6 +479,7 @@ int AvrChip::timer_vector(int timer, TimerFlag flag) const {
 }
 
 void AvrChip::timer_output(char, Cycle c) {
+    if (m_skipper && m_skipper->pins_read()) m_skipper->disturb();
     update_lines(c);
 }
 

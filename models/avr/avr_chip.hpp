@@ -44,6 +44,7 @@
 
 struct avr_t;
 struct avr_int_vector_t;
+struct avr_cycle_timer_slot_t;
 
 namespace cnc::avr {
 
@@ -147,11 +148,15 @@ private:
     void usart_txd(Cycle c, bool level) override;
 
     void install_hooks();
-    [[nodiscard]] std::vector<std::uint16_t> pure_reads() const;
+    [[nodiscard]] std::vector<std::uint16_t> pin_registers() const;
     void step();
+    [[nodiscard]] const avr_cycle_timer_slot_t* other_cycle_timer(bool past_the_boundary) const;
+    [[nodiscard]] bool quiet_flag(char timer, TimerFlag flag) const;
+    [[nodiscard]] Cycle quiet_until() const;
     void disturb() {
         if (m_skipper) m_skipper->disturb();
     }
+    void disturb_dbg(int t);
     void disconnect_external_interrupts();
     void reschedule();
     [[nodiscard]] Cycle now() const;
@@ -190,6 +195,7 @@ private:
     avr_t* m_avr = nullptr;
     std::unique_ptr<PortHooks> m_port_hooks;
     std::unique_ptr<LoopSkipper> m_skipper;         // null: fast-forward off
+    Cycle m_run_limit = 0;                          // of the run_until running
     std::array<avr_int_vector_t*, 26> m_vectors{};  // simavr's interrupt vectors by number (0 = none)
     ChipState m_state = ChipState::Running;
     std::optional<Cycle> m_stop_cycle;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 #include <sim_avr.h>
 #include <sim_io.h>
@@ -12,12 +13,14 @@ struct LoopSkipper::Io {
     avr_io_read_t read = nullptr;
     void* read_param = nullptr;
     bool pure_read = false;
+    bool pin_read = false;  // a PINx
     avr_io_write_t write = nullptr;
     void* write_param = nullptr;
     LoopSkipper* self = nullptr;
 
     static std::uint8_t watch_read(avr_t* avr, avr_io_addr_t addr, void* param) {
         auto* io = static_cast<Io*>(param);
+        if (io->pin_read) io->self->m_pins_read = true;
         if (!io->pure_read) io->self->disturb();
         return io->read(avr, addr, io->read_param);
     }
@@ -28,14 +31,19 @@ struct LoopSkipper::Io {
     }
 };
 
-LoopSkipper::LoopSkipper(avr_t* avr, const std::vector<std::uint16_t>& pure_reads)
-    : m_avr(avr), m_io(MAX_IOs), m_snapshot(static_cast<std::size_t>(avr->ramend) + 1) {
+LoopSkipper::LoopSkipper(avr_t* avr, const std::vector<std::uint16_t>& pins,
+                         const std::vector<std::uint16_t>& pure_reads, std::function<Cycle()> quiet_until)
+    : m_avr(avr),
+      m_quiet_until(std::move(quiet_until)),
+      m_io(MAX_IOs),
+      m_snapshot(static_cast<std::size_t>(avr->ramend) + 1) {
     for (std::size_t i = 0; i < m_io.size(); ++i) {
         auto& slot = avr->io[i];
         Io& io = m_io[i];
         io.self = this;
         const auto addr = static_cast<std::uint16_t>(AVR_IO_TO_DATA(i));
-        io.pure_read = std::find(pure_reads.begin(), pure_reads.end(), addr) != pure_reads.end();
+        io.pin_read = std::find(pins.begin(), pins.end(), addr) != pins.end();
+        io.pure_read = io.pin_read || std::find(pure_reads.begin(), pure_reads.end(), addr) != pure_reads.end();
         if (slot.r.c != nullptr) {
             io.read = slot.r.c;
             io.read_param = slot.r.param;
@@ -65,38 +73,38 @@ std::uint16_t LoopSkipper::sp() const {
     return static_cast<std::uint16_t>(m_avr->data[R_SPL] | (m_avr->data[R_SPH] << 8));
 }
 
-void LoopSkipper::after_step(std::uint32_t pc_before) {
+void LoopSkipper::backward_jump() {
     const std::uint32_t pc = m_avr->pc;
-    if (pc > pc_before || m_avr->state != cpu_Running) return;  // not the end of an iteration (a jump to itself is)
-    Visit& v = m_visits[(pc >> 1) & (m_visits.size() - 1)];
     const Cycle now = static_cast<Cycle>(m_avr->cycle);
     const CpuState cpu = cpu_state();
     const std::uint16_t stack = sp();
-    const bool repeated = v.pc == pc && v.epoch == m_epoch && v.sp == stack && v.cpu == cpu;
-    if (repeated) {
-        const Cycle period = now - v.cycle;
-        const std::size_t n = m_snapshot.size();
-        if (m_armed_pc == pc && m_armed_epoch == m_epoch && m_armed_period == period &&
-            std::memcmp(m_snapshot.data(), m_avr->data, n) == 0) {
-            skip(period);
+    if (pc == m_loop.pc) {
+        if (m_loop.epoch == m_epoch && m_loop.sp == stack && m_loop.cpu == cpu &&
+            std::memcmp(m_snapshot.data(), m_avr->data, m_snapshot.size()) == 0) {
+            skip(now - m_loop.cycle);
         } else {
-            std::memcpy(m_snapshot.data(), m_avr->data, n);
-            m_armed_pc = pc;
-            m_armed_period = period;
-            m_armed_epoch = m_epoch;
+            std::memcpy(m_snapshot.data(), m_avr->data, m_snapshot.size());
         }
+        m_loop = Visit{pc, static_cast<Cycle>(m_avr->cycle), m_epoch, stack, cpu};
+        return;
     }
-    v = Visit{pc, static_cast<Cycle>(m_avr->cycle), m_epoch, stack, cpu};
+    // Any backward-jump target whose last two visits look alike becomes the watched one, unless the watched one was
+    // visited during that iteration: then both are in the same loop (an inner loop, a called function), and the one
+    // watched already keeps its snapshot.
+    Visit& v = m_visits[(pc >> 1) & (m_visits.size() - 1)];
+    if (v.pc == pc && v.epoch == m_epoch && v.sp == stack && v.cpu == cpu && m_loop.cycle < v.cycle) {
+        std::memcpy(m_snapshot.data(), m_avr->data, m_snapshot.size());
+        m_loop = Visit{pc, now, m_epoch, stack, cpu};
+    }
+    v = Visit{pc, now, m_epoch, stack, cpu};
 }
 
 void LoopSkipper::skip(Cycle period) {
-    // The first cycle timer due (simavr's list is sorted) is the first event; the run_until boundary is one of them.
-    const avr_cycle_timer_slot_t* next = m_avr->cycle_timers.timer;
-    if (next == nullptr || period <= 0) return;
+    if (period <= 0) return;
     const Cycle now = static_cast<Cycle>(m_avr->cycle);
-    const Cycle event = static_cast<Cycle>(next->when);
-    // A timer due at `event` is processed after the first instruction that ends at or past it: iterations ending
-    // before it see nothing of it.
+    const Cycle event = m_quiet_until();
+    // An event at `event` is seen after the first instruction that ends at or past it: iterations ending before it
+    // see nothing of it.
     if (event <= now) return;
     const Cycle iterations = (event - 1 - now) / period;
     if (iterations <= 0) return;

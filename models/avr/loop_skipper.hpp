@@ -1,17 +1,22 @@
 // Fast-forward over a polling loop (AvrCoreConfig::fast_forward): when the CPU runs a loop whose iterations leave
-// the whole machine as they found it, whole iterations are skipped up to the next event, by advancing the cycle count
-// alone. Exact: a skip ends before the next cycle timer (our timer and USART scheduler, simavr's own peripherals,
-// the run_until boundary), so every interrupt, flag and pin edge comes at the same cycle as without it.
+// the whole machine as they found it, whole iterations are skipped up to the next event the CPU could see, by
+// advancing the cycle count alone. Exact: every interrupt, flag and pin edge comes at the same cycle as without it.
 //
-// An iteration is the span between two visits of the same backward-jump target. A loop is proven idle when, between
-// its last two visits: the registers, SREG, the stack pointer, the interrupt state and every byte of the data space
-// (I/O and SRAM) are equal, no I/O register with effects was read or written (only PINx, UCSR0A and handler-less
-// registers such as TIFRn are read without effect, and their values change only at events), no interrupt was taken
-// and no cycle timer fell due. Repeating an iteration from the same state with the same inputs gives the same
-// iteration, so the next ones up to the next event are the same too.
+// An iteration is the span between two visits of a backward-jump target (the watched loop: a target whose last two
+// visits looked alike). It is proven idle when, between the watched target's last two visits, the registers, SREG,
+// the stack pointer, the interrupt state and every byte of the data space (I/O and SRAM) are equal and nothing
+// disturbed: no I/O register with effects was read or written (reads of PINx, UCSR0A and handler-less registers such
+// as TIFRn have none, and their values change only at events), no interrupt was taken, no timer or USART event the
+// CPU can see happened (a flag raised that was clear or enabled, a USART event, an output pin change while the loop
+// reads PINx), no other cycle timer fell due and no input changed. The same iteration from the same state runs the
+// same way, so the skip ends before the first such event (the chip's quiet_until: the run_until boundary, simavr's
+// cycle timers, the USART's next event, and the timers' coming events, probed on copies of the units). Events that
+// change nothing (a free-running timer setting a flag that is already set, its interrupt off) pass during a skip and
+// are processed, at their own cycles, right after it.
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -29,17 +34,27 @@ struct FastForwardStats {
 class LoopSkipper {
 public:
     // Watches every I/O register of `avr` that has a handler (install it after the chip's own handlers): a read of
-    // one of `pure_reads` has no effect and its value changes only at events; any other access disturbs.
-    LoopSkipper(avr_t* avr, const std::vector<std::uint16_t>& pure_reads);
+    // one of `pins` (PINx) or `pure_reads` has no effect and its value changes only at events; any other access
+    // disturbs. `quiet_until()`: the first cycle at which something the CPU can see may happen (a cycle timer, a
+    // flag, an input, an output pin if pins_read()); the skips end before it.
+    LoopSkipper(avr_t* avr, const std::vector<std::uint16_t>& pins, const std::vector<std::uint16_t>& pure_reads,
+                std::function<Cycle()> quiet_until);
     ~LoopSkipper();
     LoopSkipper(const LoopSkipper&) = delete;
     LoopSkipper& operator=(const LoopSkipper&) = delete;
 
     // Something the data space does not show happened (an I/O access with effects, an interrupt, a cycle timer, an
     // input or a received frame): the iterations seen so far prove nothing.
-    void disturb() { ++m_epoch; }
-    // After one simavr step that started at program counter pc_before (bytes).
-    void after_step(std::uint32_t pc_before);
+    void disturb() {
+        ++m_epoch;
+        m_pins_read = false;
+    }
+    // Whether a PINx was read since the last disturbance: a loop that reads none does not see its output pins, so
+    // their changes do not disturb it.
+    [[nodiscard]] bool pins_read() const { return m_pins_read; }
+    // After a simavr step that left the CPU running at a program counter not above the one it started at (a
+    // backward jump, a jump to itself, an interrupt's vector, a return to an earlier address).
+    void backward_jump();
     [[nodiscard]] const FastForwardStats& stats() const { return m_stats; }
 
 private:
@@ -60,14 +75,15 @@ private:
     void skip(Cycle period);
 
     avr_t* m_avr;
+    std::function<Cycle()> m_quiet_until;
     std::vector<Io> m_io;  // by I/O register index
     std::uint64_t m_epoch = 0;
+    bool m_pins_read = false;
     std::array<Visit, 16> m_visits{};  // by backward-jump target
-    // The data space at the last visit of a loop whose two visits before matched (armed): the next visit compares.
+    // The watched loop: its target's last visit, and the data space then; the next visit that finds them again
+    // proves the iteration idle.
+    Visit m_loop;
     std::vector<std::uint8_t> m_snapshot;
-    std::uint32_t m_armed_pc = UINT32_MAX;
-    Cycle m_armed_period = 0;
-    std::uint64_t m_armed_epoch = 0;
     FastForwardStats m_stats;
 };
 

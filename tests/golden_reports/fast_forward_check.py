@@ -3,9 +3,10 @@
 tests/data/golden_reports), and the grbl square with the given firmwares, give byte-identical reports with the AVR's
 polling-loop fast-forward on (the default) and off (avr.fast_forward / lathe.fast_forward = false).
 
-Usage: fast_forward_check.py CNCSIM SOURCE_DIR WORKDIR ARCH[,ARCH...] [GRBL_FIRMWARE...]
-  ARCH: atmega, lathe-sync; a GRBL_FIRMWARE (ELF or HEX) runs tests/data/grbl/square_20mm.toml. When GRBL_SRC is set
-  and holds a built grbl.hex, real grbl 1.1h runs too.
+Usage: fast_forward_check.py CNCSIM SOURCE_DIR WORKDIR WHAT[,WHAT...] [GRBL_FIRMWARE...]
+  WHAT: an architecture (atmega, lathe-sync: all its shipped scenarios) or one scenario (scenarios/....toml); a
+  GRBL_FIRMWARE (ELF or HEX) runs tests/data/grbl/square_20mm.toml. When GRBL_SRC is set and holds a built grbl.hex,
+  real grbl 1.1h runs too.
 """
 import glob
 import os
@@ -45,7 +46,7 @@ def main():
     runs = []
     for scenario in sorted(glob.glob(os.path.join(source, "scenarios", "**", "*.toml"), recursive=True)):
         arch = architecture(scenario)
-        if arch in archs.split(","):
+        if arch in archs.split(",") or os.path.relpath(scenario, source) in archs.split(","):
             runs.append((os.path.relpath(scenario, source), arch, [os.path.relpath(scenario, source)]))
     for fw in firmwares:
         runs.append(("grbl square with " + os.path.basename(fw), "grbl",

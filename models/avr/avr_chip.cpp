@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "avr/atmega328p_regs.hpp"
@@ -13,6 +14,7 @@
 #include "common/bad_input.hpp"
 
 #include <avr_eeprom.h>
+#include <avr_extint.h>
 #include <avr_ioport.h>
 #include <avr_timer.h>
 #include <avr_uart.h>
@@ -121,6 +123,13 @@ AvrChip::AvrChip(const AvrCoreConfig& cfg)
     m_timers[1] = std::make_unique<TimerUnit>(kTimer1, m_prescaler01, sink);
     m_timers[2] = std::make_unique<TimerUnit>(kTimer2, m_prescaler2, sink);
     install_hooks();
+    if (cfg.fast_forward)
+        // PINx reads the pins (inputs change only between run_until calls), UCSR0A the USART's flags (they change
+        // only at its events); both without side effects.
+        m_skipper = std::make_unique<LoopSkipper>(
+            m_avr, pin_registers(),
+            m_map.mcu == Mcu::Atmega328p ? std::vector<std::uint16_t>{reg::kUcsr0a} : std::vector<std::uint16_t>{},
+            [this] { return quiet_until(); });
     m_initial[kTxdLine] = true;  // the USART line idles high
     m_level = m_initial;
 }
@@ -169,6 +178,7 @@ void AvrChip::install_hooks() {
         avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ(m16 ? 'D' : 'B'), m16 ? IOPORT_IRQ_PIN6 : IOPORT_IRQ_PIN0);
     avr_irq_t* icp_in = avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('1'), TIMER_IRQ_IN_ICP);
     if (icp_pin != nullptr && icp_in != nullptr) avr_unconnect_irq(icp_pin, icp_in);
+    if (!m16) disconnect_external_interrupts();
 
     const auto take_write = [&](std::uint16_t addr) {
         auto& io = avr->io[AVR_DATA_TO_IO(addr)];
@@ -211,6 +221,89 @@ void AvrChip::install_hooks() {
     avr->data[kUcsr0c] = m_usart.ucsrc();
 }
 
+void AvrChip::disconnect_external_interrupts() {
+    // simavr 1.6's INT0/INT1 (avr_extint.c) follow PD2/PD3, and in the reset low-level mode (EICRA ISCn1:0 = 00)
+    // poll a low pin with a cycle timer at every cycle, whatever EIMSK says, setting INTFn, which the datasheet
+    // keeps clear in that mode ("EIFR"). grbl's STEP_X/STEP_Y are PD2/PD3 and low between pulses, so that poll was
+    // most of grbl's simulation time. No input but RXD reaches the ATmega328P's pins, so INT0/INT1 are left out.
+    for (int n = 0; n < 2; ++n) {
+        avr_irq_t* pin = avr_io_getirq(m_avr, AVR_IOCTL_IOPORT_GETIRQ('D'), IOPORT_IRQ_PIN2 + n);
+        avr_irq_t* detector = avr_io_getirq(m_avr, AVR_IOCTL_EXTINT_GETIRQ(), EXTINT_IRQ_OUT_INT0 + n);
+        if (pin != nullptr && detector != nullptr) avr_unconnect_irq(pin, detector);
+    }
+}
+
+std::vector<std::uint16_t> AvrChip::pin_registers() const {
+    std::vector<std::uint16_t> pins;
+    for (const auto& port : m_map.ports) pins.push_back(port.pin);
+    return pins;
+}
+
+// The first cycle timer other than the scheduler's (simavr's peripherals, and the run_until boundary unless
+// `past_the_boundary`), or none.
+const avr_cycle_timer_slot_t* AvrChip::other_cycle_timer(bool past_the_boundary) const {
+    const avr_cycle_timer_slot_t* t = m_avr->cycle_timers.timer;  // sorted by cycle
+    while (t != nullptr && (t->timer == Bridge::scheduler || (past_the_boundary && t->timer == no_op_timer)))
+        t = t->next;
+    return t;
+}
+
+void AvrChip::step() {
+    const std::uint32_t pc = m_avr->pc;
+    const avr_cycle_timer_slot_t* due = m_skipper ? other_cycle_timer(true) : nullptr;
+    const avr_cycle_count_t due_at = due != nullptr ? due->when : ~avr_cycle_count_t{0};
+    avr_run(m_avr);
+    if (!m_skipper) return;
+    // The scheduler's events say themselves whether the CPU can see them (timer_flag, timer_output, usart_*); the
+    // run_until boundary changes nothing.
+    if (due_at <= m_avr->cycle) m_skipper->disturb();
+    if (m_avr->pc <= pc && m_avr->state == cpu_Running) m_skipper->backward_jump();  // an iteration may end here
+}
+
+namespace {
+
+// What a timer's coming events would do: whether any is seen by the CPU.
+class EventProbe final : public TimerSink {
+public:
+    EventProbe(std::function<bool(char, TimerFlag)> quiet, bool outputs_seen)
+        : m_quiet(std::move(quiet)), m_outputs_seen(outputs_seen) {}
+    void timer_flag(char timer, TimerFlag flag, Cycle) override { m_seen = m_seen || !m_quiet(timer, flag); }
+    void timer_output(char, Cycle) override { m_seen = m_seen || m_outputs_seen; }
+    [[nodiscard]] bool seen() const { return m_seen; }
+
+private:
+    std::function<bool(char, TimerFlag)> m_quiet;
+    bool m_outputs_seen;  // through PINx
+    bool m_seen = false;
+};
+
+}  // namespace
+
+bool AvrChip::quiet_flag(char timer, TimerFlag flag) const {
+    // Raising a flag that is already set, with its interrupt disabled, changes nothing.
+    const int n = timer_vector(timer - '0', flag);
+    if (n == 0) return true;
+    const avr_int_vector_t* v = m_vectors.at(static_cast<std::size_t>(n));
+    return avr_regbit_get(m_avr, v->raised) != 0 && avr_regbit_get(m_avr, v->enable) == 0;
+}
+
+Cycle AvrChip::quiet_until() const {
+    // The run_until boundary's own cycle timer is gone once it has fired, in the step that reached it.
+    Cycle until = m_run_limit;
+    if (const avr_cycle_timer_slot_t* t = other_cycle_timer(false))
+        until = std::min(until, static_cast<Cycle>(t->when));
+    if (const auto u = m_usart.next_event()) until = std::min(until, *u);
+    for (const auto& timer : m_timers) {
+        EventProbe probe([this](char t, TimerFlag f) { return quiet_flag(t, f); }, m_skipper->pins_read());
+        TimerUnit ahead = timer->copy_for(probe);  // from its last processed event: one due now counts too
+        for (auto e = ahead.next_event(); e && *e < until; e = ahead.next_event()) {
+            ahead.advance_to(*e);
+            if (probe.seen()) until = *e;
+        }
+    }
+    return until;
+}
+
 Cycle AvrChip::now() const {
     return static_cast<Cycle>(m_avr->cycle);
 }
@@ -222,8 +315,10 @@ ChipState AvrChip::run_until(Cycle limit) {
     if (m_state == ChipState::Running && limit > now()) {
         // Bounds a sleep: a sleeping simavr core jumps straight to its next cycle timer.
         avr_cycle_timer_register(m_avr, static_cast<avr_cycle_count_t>(limit - now()), no_op_timer, this);
+        m_run_limit = limit;
         while (now() < limit) {
-            const int st = avr_run(m_avr);
+            step();
+            const int st = m_avr->state;
             if (st != cpu_Done && st != cpu_Crashed && st != cpu_Stopped) continue;
             m_state = st == cpu_Done ? ChipState::Done : ChipState::Crashed;
             m_stop_cycle = now();
@@ -265,6 +360,7 @@ void AvrChip::drive_input(const Pin& pin, bool level) {
     std::int8_t& driven = m_inputs.at(port_index(pin.port)).at(static_cast<std::size_t>(pin.bit));
     const bool was = driven < 0 ? pin_level(pin) : driven != 0;
     driven = level ? 1 : 0;
+    disturb();
     if (m_map.mcu == Mcu::Atmega16) external_interrupt_edge(pin, was, level);
 }
 
@@ -280,6 +376,7 @@ std::vector<LineEvent> AvrChip::take_events(Cycle upto) {
 
 void AvrChip::deliver_rx(Cycle start, Cycle decision, const uart::RxFrame& frame) {
     m_usart.receive(start, decision, frame);
+    disturb();
     reschedule();
 }
 
@@ -344,6 +441,7 @@ void AvrChip::vector_cleared(avr_int_vector_t* v) {
 }
 
 void AvrChip::vector_entered(avr_int_vector_t* v) {
+    disturb();
     if (m_map.mcu == Mcu::Atmega16) external_interrupt_entered(v->vector);
     // Datasheet "Interrupt Response Time": pushing the return address takes at least 4 cycles before the vector
     // runs; libsimavr 1.6's avr_service_interrupts drops that count, which put every edge an ISR
@@ -360,16 +458,19 @@ void AvrChip::vector_entered(avr_int_vector_t* v) {
 }
 
 void AvrChip::usart_flags(Cycle c) {
+    disturb();
     sync_level_vector(kVecUsartRx, m_usart.rxc(), c);
     sync_level_vector(kVecUsartUdre, m_usart.udre(), c);
     sync_level_vector(kVecUsartTx, m_usart.txc(), c);
 }
 
 void AvrChip::usart_txd(Cycle c, bool level) {
+    disturb();
     record(c, kTxdLine, level);
 }
 
 void AvrChip::timer_flag(char timer, TimerFlag flag, Cycle c) {
+    if (!quiet_flag(timer, flag)) disturb();
     raise(timer_vector(timer - '0', flag), c);
 }
 
@@ -378,6 +479,7 @@ int AvrChip::timer_vector(int timer, TimerFlag flag) const {
 }
 
 void AvrChip::timer_output(char, Cycle c) {
+    if (m_skipper && m_skipper->pins_read()) m_skipper->disturb();
     update_lines(c);
 }
 

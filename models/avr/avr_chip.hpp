@@ -39,10 +39,12 @@
 #include "avr/core/prescaler.hpp"
 #include "avr/core/timer_unit.hpp"
 #include "avr/core/usart_unit.hpp"
+#include "avr/loop_skipper.hpp"
 #include "uart/core/line_receiver.hpp"
 
 struct avr_t;
 struct avr_int_vector_t;
+struct avr_cycle_timer_slot_t;
 
 namespace cnc::avr {
 
@@ -103,6 +105,11 @@ public:
     // The EEPROM's content now (simavr's EEPROM; the ELF's .eeprom section is loaded at reset).
     [[nodiscard]] std::vector<std::uint8_t> eeprom() const;
 
+    // What the polling-loop fast-forward skipped (all zero when AvrCoreConfig::fast_forward is off).
+    [[nodiscard]] FastForwardStats fast_forward_stats() const {
+        return m_skipper ? m_skipper->stats() : FastForwardStats{};
+    }
+
     [[nodiscard]] const McuMap& mcu() const { return m_map; }
     [[nodiscard]] const UsartUnit& usart() const { return m_usart; }
     [[nodiscard]] const TimerUnit& timer(int n) const { return *m_timers.at(static_cast<std::size_t>(n)); }
@@ -141,6 +148,16 @@ private:
     void usart_txd(Cycle c, bool level) override;
 
     void install_hooks();
+    [[nodiscard]] std::vector<std::uint16_t> pin_registers() const;
+    void step();
+    [[nodiscard]] const avr_cycle_timer_slot_t* other_cycle_timer(bool past_the_boundary) const;
+    [[nodiscard]] bool quiet_flag(char timer, TimerFlag flag) const;
+    [[nodiscard]] Cycle quiet_until() const;
+    void disturb() {
+        if (m_skipper) m_skipper->disturb();
+    }
+    void disturb_dbg(int t);
+    void disconnect_external_interrupts();
     void reschedule();
     [[nodiscard]] Cycle now() const;
     // Raise a vector (or, for a level interrupt, follow its flag) at cycle c: the flag's cycle, which times a
@@ -177,6 +194,8 @@ private:
     std::uint8_t m_temp16 = 0;  // Timer1's TEMP register for 16-bit accesses (§16.3)
     avr_t* m_avr = nullptr;
     std::unique_ptr<PortHooks> m_port_hooks;
+    std::unique_ptr<LoopSkipper> m_skipper;         // null: fast-forward off
+    Cycle m_run_limit = 0;                          // of the run_until running
     std::array<avr_int_vector_t*, 26> m_vectors{};  // simavr's interrupt vectors by number (0 = none)
     ChipState m_state = ChipState::Running;
     std::optional<Cycle> m_stop_cycle;

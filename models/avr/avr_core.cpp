@@ -67,6 +67,14 @@ Cycle AvrCore::run_ahead_limit() const {
     return limit;
 }
 
+Cycle AvrCore::replay_bound(Cycle c) const {
+    // The core's cycle count jumps past timer events now and then (the interrupt response's 4 cycles, a wake-up from
+    // sleep): those are processed at the next step, and their edges recorded then. Replaying past them would write
+    // those edges late, so the replay stops just before the first event still due.
+    const auto due = m_chip->next_event();
+    return due && *due <= c ? *due - 1 : c;
+}
+
 void AvrCore::replay(Cycle upto) {
     for (const LineEvent& e : m_chip->take_events(upto)) {
         wait_until_ps(cycle_ps(e.cycle));
@@ -84,14 +92,15 @@ void AvrCore::run() {
         const Cycle limit = run_ahead_limit();
         if (limit > m_chip->cycle()) m_chip->run_until(limit);
         if (m_rx && m_chip->cycle() >= m_rx->decision_cycle) {
-            replay(m_rx->decision_cycle);
-            wait_until_ps(cycle_ps(m_rx->decision_cycle));
+            const Cycle decision = replay_bound(m_rx->decision_cycle);
+            replay(decision);
+            wait_until_ps(cycle_ps(decision));
             // Let a writer of rxd at this very instant (delta 0) reach on_rxd (delta 1) before decoding.
             wait(sc_core::SC_ZERO_TIME);
             wait(sc_core::SC_ZERO_TIME);
             decide_frame();
         }
-        const Cycle end = m_chip->cycle();
+        const Cycle end = replay_bound(m_chip->cycle());
         replay(end);
         wait_until_ps(cycle_ps(end));
         if (!m_stop_notified && m_chip->state() != ChipState::Running) {

@@ -88,6 +88,7 @@ private:
     void start_frame(TimePs t_fall_ps);
     void decide_frame();
     void replay(Cycle upto);
+    [[nodiscard]] Cycle replay_bound(Cycle c) const;
     void wait_until_ps(TimePs t_ps);
     [[nodiscard]] Cycle first_cycle_at_or_after(TimePs t_ps) const;
     [[nodiscard]] Cycle run_ahead_limit() const;

@@ -19,9 +19,7 @@ Usage: grbl_scenario_test.py MODE CNCSIM SOURCE_DIR FIRMWARE_ELF FIRMWARE_HEX
             ($30 = 1000). The firmware's compare value is floor(S x 255 / $30), and fast PWM at clk/8 sets OC2A at
             BOTTOM and clears it at the match: high (OCR2A + 1) x 8 of every 2048 cycles (ATmega328P datasheet
             §18.7.3), 25 %, 50 %; OCR2A = 255 = MAX holds it high (100 %). The PWM periods' high times, read from
-            the VCD, are that to the cycle (at least 99 % of them; the rest within one prescaler tick, 8 cycles: the
-            late replay of events the core's cycle count jumped past, which models/avr/README.md lists), and the report's laser-on time
-            follows the duty (each run's against the S1000 run's, within 1 %).
+            the VCD, are that to the cycle, every one of them, and the report's laser-on time follows the duty (each run's against the S1000 run's, within 1 %).
 """
 import math
 import struct
@@ -194,8 +192,8 @@ def main():
                 inner = highs[1:-1]  # the first and last are cut by the block's start and end
                 want = (ocr + 1) * 8
                 exact = sum(1 for h in inner if h == want)
-                check(len(inner) > 1000 and exact >= 0.99 * len(inner) and all(abs(h - want) < 8 for h in inner),
-                      "S%d: OCR2A %d, PWM periods high %d cycles: %d of %d, the rest within 8 cycles (%s)" %
+                check(len(inner) > 1000 and exact == len(inner),
+                      "S%d: OCR2A %d, PWM periods high %d cycles: %d of %d (%s)" %
                       (power, ocr, want, exact, len(inner), sorted(set(inner))))
             on_ms[power] = r["metrics"]["laser"]["on_ms"]
         for power in (250, 500):

@@ -26,6 +26,9 @@ struct AvrCoreConfig {
     // UsartUnit::tx_log() / rx_log(): a record per byte, read only by the AVR model's tests, so a long job keeps
     // none unless asked (the counts are in UsartStats).
     bool keep_usart_logs = false;
+    // Skip the iterations of polling loops that cannot change anything before the next event (loop_skipper.hpp):
+    // the same outputs at the same cycles, faster. Off: every cycle is executed.
+    bool fast_forward = true;
     std::string where = "avr.firmware";  // names the scenario key in bad-input messages
 };
 

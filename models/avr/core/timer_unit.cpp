@@ -16,7 +16,13 @@ constexpr std::uint8_t kFocB = 0x40;
 }  // namespace
 
 TimerUnit::TimerUnit(const TimerSpec& spec, const Prescaler& prescaler, TimerSink& sink)
-    : m_spec(spec), m_prescaler(prescaler), m_sink(sink) {}
+    : m_spec(spec), m_prescaler(prescaler), m_sink(&sink) {}
+
+TimerUnit TimerUnit::copy_for(TimerSink& sink) const {
+    TimerUnit copy(*this);
+    copy.m_sink = &sink;
+    return copy;
+}
 
 TimerMode TimerUnit::mode() const {
     if (m_spec.sixteen_bit) return timer_mode_16bit((m_tccra & 3U) | ((m_tccrb >> 1) & 0x0CU));
@@ -134,7 +140,7 @@ void TimerUnit::apply(Channel ch, OcAction a, Cycle c) {
             oc = true;
             break;
     }
-    if (oc != before && output(ch).connected) m_sink.timer_output(m_spec.name, c);
+    if (oc != before && output(ch).connected) m_sink->timer_output(m_spec.name, c);
 }
 
 // One timer clock tick at cycle c that leaves the value the counter held during the previous timer clock.
@@ -184,8 +190,8 @@ void TimerUnit::step(Cycle c) {
         for (const Channel ch : {Channel::A, Channel::B}) apply(ch, output(ch).at_bottom, c);
     }
 
-    if (match_a) m_sink.timer_flag(m_spec.name, TimerFlag::CompareA, c);
-    if (match_b) m_sink.timer_flag(m_spec.name, TimerFlag::CompareB, c);
+    if (match_a) m_sink->timer_flag(m_spec.name, TimerFlag::CompareA, c);
+    if (match_b) m_sink->timer_flag(m_spec.name, TimerFlag::CompareB, c);
     const bool tov = [&] {
         switch (m.wave) {
             case Wave::Normal:
@@ -197,8 +203,8 @@ void TimerUnit::step(Cycle c) {
                 return leaves_bottom;
         }
     }();
-    if (tov) m_sink.timer_flag(m_spec.name, TimerFlag::Overflow, c);
-    if (leaves_top && m.top_source == TopSource::Icr) m_sink.timer_flag(m_spec.name, TimerFlag::Capture, c);
+    if (tov) m_sink->timer_flag(m_spec.name, TimerFlag::Overflow, c);
+    if (leaves_top && m.top_source == TopSource::Icr) m_sink->timer_flag(m_spec.name, TimerFlag::Capture, c);
 
     const bool update = (m.ocr_update == OcrUpdate::AtBottom && (wrapped || leaves_bottom)) ||
                         (m.ocr_update == OcrUpdate::AtTop && leaves_top);
@@ -207,7 +213,7 @@ void TimerUnit::step(Cycle c) {
 
 void TimerUnit::mode_changed(Cycle c) {
     if (!mode().pwm()) m_ocr = m_ocr_buffer;
-    m_sink.timer_output(m_spec.name, c);
+    m_sink->timer_output(m_spec.name, c);
 }
 
 void TimerUnit::write_tccra(Cycle c, std::uint8_t v) {

@@ -63,6 +63,8 @@ public:
 class TimerUnit {
 public:
     TimerUnit(const TimerSpec& spec, const Prescaler& prescaler, TimerSink& sink);
+    // This unit in its state now, reporting to `sink`: a probe that can be advanced to see what comes next.
+    [[nodiscard]] TimerUnit copy_for(TimerSink& sink) const;
 
     // Register writes and reads at cycle c (ticks at cycles <= c are applied first). TCCRnB carries FOCnA/B for
     // Timer0/2; Timer1's are in TCCR1C. 16-bit values are whole registers (the TEMP byte protocol is the bus's).
@@ -108,7 +110,7 @@ private:
 
     const TimerSpec m_spec;
     const Prescaler& m_prescaler;
-    TimerSink& m_sink;
+    TimerSink* m_sink;
     std::uint8_t m_tccra = 0;
     std::uint8_t m_tccrb = 0;  // FOC bits never stored: they read as zero
     std::uint16_t m_tcnt = 0;

@@ -34,6 +34,7 @@ avr::AvrCoreConfig firmware(const LatheRigConfig& rig) {
     cfg.mcu = "atmega16";
     cfg.f_cpu_hz = 8'000'000;
     cfg.clock = rig.clock;
+    cfg.fast_forward = rig.fast_forward;
     return cfg;
 }
 

@@ -53,6 +53,7 @@ struct LatheRigConfig {
     // reading of the thread beside the pins (cncsim run --samples).
     bool record_carriage = false;
     ClockDeviation clock;  // how the board's 8 MHz oscillator departs from F_CPU (all zero: ideal)
+    bool fast_forward = true;  // AvrCoreConfig::fast_forward
 };
 
 // One cutting pass as recorded: the carriage along the cut at its start and at each spindle pulse, the motor

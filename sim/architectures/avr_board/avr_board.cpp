@@ -14,6 +14,7 @@ avr::AvrCoreConfig board_config(const Scenario& s, const AvrBoardSettings& board
     cfg.pins = avr::parse_pin_map(board.pins, s.file + ": avr.pins", std::move(pins));
     cfg.where = s.file + ": avr.firmware";
     cfg.quantum_cycles = board.quantum_cycles;
+    cfg.fast_forward = board.fast_forward;
     cfg.clock = clock_deviation(board.clock, s.seed);
     return cfg;
 }

@@ -31,6 +31,14 @@ void read_avr_board_settings(KeyReader& r, AvrBoardSettings& s, const std::files
                   "AVR cycles run ahead of SystemC time between replays of its pin changes (speed only: outputs "
                   "keep their exact cycle)"));
     read_oscillator_settings(r, kUnoResonator, 16'000'000, s.clock);
+    s.fast_forward = read_fast_forward(r, "avr.fast_forward");
+}
+
+bool read_fast_forward(KeyReader& r, const std::string& key) {
+    return r.get_bool(key, true,
+                      "skip the iterations of the firmware's polling loops that change nothing up to the next timer, "
+                      "USART or input event (speed only: every pin edge and byte keeps its exact cycle); false: "
+                      "every cycle is executed");
 }
 
 }  // namespace cnc::sim

@@ -18,7 +18,11 @@ struct AvrBoardSettings {
     // input, RXD, is decoded exactly, so a longer quantum costs nothing here; it runs the square job 25 % faster.
     std::uint32_t quantum_cycles = 1600;
     OscillatorSettings clock;  // the Arduino's resonator
+    bool fast_forward = true;  // avr.fast_forward
 };
+
+// An AVR's fast-forward key (avr.fast_forward, lathe.fast_forward): AvrCoreConfig::fast_forward.
+[[nodiscard]] bool read_fast_forward(KeyReader& r, const std::string& key);
 
 void read_avr_board_settings(KeyReader& r, AvrBoardSettings& s, const std::filesystem::path& base);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "architectures/avr_board/avr_board_settings.hpp"
 #include "lathe/core/keypad.hpp"
 #include "lathe/core/ratio_list.hpp"
 
@@ -89,6 +90,7 @@ constexpr OscillatorPart kAtmega16Crystal{
 
 void read_lathe_settings(KeyReader& r, LatheSettings& s) {
     read_oscillator_settings(r, kAtmega16Crystal, 8'000'000, s.clock);  // seed 002 §2.5.3 F_CPU
+    s.fast_forward = read_fast_forward(r, "lathe.fast_forward");
     s.mode = r.get_choice("lathe.mode", s.mode, {"thread", "fine", "coarse", "tuning"},
                           "lathe-sync: what the machinist does (seed 002 §2.5.2): cut a thread of lathe.pitch_mm, "
                           "the fine (0.04 mm) or coarse (0.08 mm) feed, or power up with B held (tuning mode)");

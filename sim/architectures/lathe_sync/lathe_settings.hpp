@@ -20,6 +20,7 @@ struct OperatorStep {
 
 struct LatheSettings final : ArchSettings {
     OscillatorSettings clock;     // the ATmega16's 8 MHz clock source
+    bool fast_forward = true;     // lathe.fast_forward
     std::string mode = "thread";  // thread | fine | coarse | tuning (§2.5.2)
     int pitch_centi_mm = 100;     // the pitch entered, 0.01 mm (thread); fine 4, coarse 8
     double spindle_rpm = 60.0;

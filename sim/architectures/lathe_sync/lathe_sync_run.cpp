@@ -127,6 +127,7 @@ ArchRun Entry::run(const Scenario& scenario, const Job&) {
     cfg.trace_pins = !scenario.vcd_path.empty();
     cfg.record_carriage = scenario.keep_run_input;
     cfg.clock = clock_deviation(s.clock, scenario.seed);
+    cfg.fast_forward = s.fast_forward;
     lathe::LatheRig rig(cfg);
     std::optional<LatheTrace> trace;
     if (cfg.trace_pins) trace.emplace(scenario, rig.chip.clock().grid_hz());

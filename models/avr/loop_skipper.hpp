@@ -1,0 +1,90 @@
+// Fast-forward over a polling loop (AvrCoreConfig::fast_forward): when the CPU runs a loop whose iterations leave
+// the whole machine as they found it, whole iterations are skipped up to the next event the CPU could see, by
+// advancing the cycle count alone. Exact: every interrupt, flag and pin edge comes at the same cycle as without it.
+//
+// An iteration is the span between two visits of a backward-jump target (the watched loop: a target whose last two
+// visits looked alike). It is proven idle when, between the watched target's last two visits, the registers, SREG,
+// the stack pointer, the interrupt state and every byte of the data space (I/O and SRAM) are equal and nothing
+// disturbed: no I/O register with effects was read or written (reads of PINx, UCSR0A and handler-less registers such
+// as TIFRn have none, and their values change only at events), no interrupt was taken, no timer or USART event the
+// CPU can see happened (a flag raised that was clear or enabled, a USART event, an output pin change while the loop
+// reads PINx), no other cycle timer fell due and no input changed. The same iteration from the same state runs the
+// same way, so the skip ends before the first such event (the chip's quiet_until: the run_until boundary, simavr's
+// cycle timers, the USART's next event, and the timers' coming events, probed on copies of the units). Events that
+// change nothing (a free-running timer setting a flag that is already set, its interrupt off) pass during a skip and
+// are processed, at their own cycles, right after it.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "avr/core/prescaler.hpp"
+
+struct avr_t;
+
+namespace cnc::avr {
+
+struct FastForwardStats {
+    std::uint64_t skips = 0;           // loops fast-forwarded
+    std::uint64_t skipped_cycles = 0;  // cycles not executed
+};
+
+class LoopSkipper {
+public:
+    // Watches every I/O register of `avr` that has a handler (install it after the chip's own handlers): a read of
+    // one of `pins` (PINx) or `pure_reads` has no effect and its value changes only at events; any other access
+    // disturbs. `quiet_until()`: the first cycle at which something the CPU can see may happen (a cycle timer, a
+    // flag, an input, an output pin if pins_read()); the skips end before it.
+    LoopSkipper(avr_t* avr, const std::vector<std::uint16_t>& pins, const std::vector<std::uint16_t>& pure_reads,
+                std::function<Cycle()> quiet_until);
+    ~LoopSkipper();
+    LoopSkipper(const LoopSkipper&) = delete;
+    LoopSkipper& operator=(const LoopSkipper&) = delete;
+
+    // Something the data space does not show happened (an I/O access with effects, an interrupt, a cycle timer, an
+    // input or a received frame): the iterations seen so far prove nothing.
+    void disturb() {
+        ++m_epoch;
+        m_pins_read = false;
+    }
+    // Whether a PINx was read since the last disturbance: a loop that reads none does not see its output pins, so
+    // their changes do not disturb it.
+    [[nodiscard]] bool pins_read() const { return m_pins_read; }
+    // After a simavr step that left the CPU running at a program counter not above the one it started at (a
+    // backward jump, a jump to itself, an interrupt's vector, a return to an earlier address).
+    void backward_jump();
+    [[nodiscard]] const FastForwardStats& stats() const { return m_stats; }
+
+private:
+    static constexpr std::size_t kCpuBytes = 32 + 8 + 1;  // r0..r31, SREG's bits, the interrupt state
+    using CpuState = std::array<std::uint8_t, kCpuBytes>;
+    struct Visit {
+        std::uint32_t pc = UINT32_MAX;
+        Cycle cycle = 0;
+        std::uint64_t epoch = 0;
+        std::uint16_t sp = 0;
+        CpuState cpu{};
+    };
+
+    struct Io;  // the handlers the watch replaced (loop_skipper.cpp)
+
+    [[nodiscard]] CpuState cpu_state() const;
+    [[nodiscard]] std::uint16_t sp() const;
+    void skip(Cycle period);
+
+    avr_t* m_avr;
+    std::function<Cycle()> m_quiet_until;
+    std::vector<Io> m_io;  // by I/O register index
+    std::uint64_t m_epoch = 0;
+    bool m_pins_read = false;
+    std::array<Visit, 16> m_visits{};  // by backward-jump target
+    // The watched loop: its target's last visit, and the data space then; the next visit that finds them again
+    // proves the iteration idle.
+    Visit m_loop;
+    std::vector<std::uint8_t> m_snapshot;
+    FastForwardStats m_stats;
+};
+
+}  // namespace cnc::avr

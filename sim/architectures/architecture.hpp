@@ -47,6 +47,16 @@ struct FaultLinks {
     bool step_input = false;  // DRV8825s on the machine's pins: faults.step_loss_rate
 };
 
+// A host program on a CP2102 USB-UART link to a controller that drives DRV8825s (fpga-uart, atmega, grbl).
+[[nodiscard]] inline FaultLinks serial_host_links() {
+    FaultLinks links;
+    links.uart = true;
+    links.usb = true;
+    links.host = true;
+    links.step_input = true;
+    return links;
+}
+
 class Architecture {
 public:
     virtual ~Architecture() = default;

@@ -53,15 +53,8 @@ public:
         }
     }
 
-    // Both UART wires, the CP2102's USB link, the send_steps.py host, the DRV8825s.
-    [[nodiscard]] FaultLinks fault_links() const override {
-        FaultLinks links;
-        links.uart = true;
-        links.usb = true;
-        links.host = true;
-        links.step_input = true;
-        return links;
-    }
+    // The link's wires, the CP2102's USB link, the host program, the DRV8825s on the machine's pins.
+    [[nodiscard]] FaultLinks fault_links() const override { return serial_host_links(); }
     // The e-stop and the lid's interlock are inputs of our FPGA when fpga.estop and fpga.interlock give it them.
     void check_events(const KeyReader& r, const std::vector<ScenarioEvent>& events,
                       const ArchSettings& settings) const override {

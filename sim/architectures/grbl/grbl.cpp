@@ -50,15 +50,8 @@ public:
         }
     }
 
-    // The DRV8825s on the machine's pins, the link's wires, the CP2102's USB link, the host program.
-    [[nodiscard]] FaultLinks fault_links() const override {
-        FaultLinks links;
-        links.uart = true;
-        links.usb = true;
-        links.host = true;
-        links.step_input = true;
-        return links;
-    }
+    // The link's wires, the CP2102's USB link, the host program, the DRV8825s on the machine's pins.
+    [[nodiscard]] FaultLinks fault_links() const override { return serial_host_links(); }
     [[nodiscard]] std::string plot_colour() const override { return "#e69f00"; }
 };
 

@@ -72,7 +72,7 @@ std::vector<std::uint8_t> checked(std::vector<std::uint8_t> bytes, bool sequence
 // With the ramp (fpga.ramp) the init packet carries the ramp's acceleration and start registers after the
 // numerators, big-endian: 17 bytes, and the registers keep their reset values until one arrives.
 TEST(PacketDecoderCore, WithTheRampTheInitPacketCarriesItsRegisters) {
-    PacketDecoderCore d(18'750'000, false, true, RampDefaults{18'014, 68'719});
+    PacketDecoderCore d(18'750'000, false, true, RampDefaults{18'014, 68'719, std::nullopt});
     EXPECT_EQ(d.init().ramp_accel, 18'014U);
     EXPECT_EQ(d.init().ramp_start, 68'719U);
     const std::vector<std::uint8_t> init = {0xFF, 0x01, 0x1E, 0x1A, 0x30, 0x00, 0x8F, 0x0D, 0x18,

@@ -1,6 +1,8 @@
 """Runs `cncsim run` with a JSON report, and the checks, for the Python tests that read a run's figures."""
 import json
+import math
 import os
+import re
 import subprocess
 import sys
 
@@ -39,3 +41,30 @@ def check_bad_input(name, r, said, unwritten):
         check(what in r.stderr, "%s: the message does not say '%s': %s" % (name, what, r.stderr))
     check(not os.path.exists(unwritten), "%s: %s written" % (name, unwritten))
     print(name + ":", r.stderr.strip().splitlines()[-1])
+
+
+def dominant_speeds_mm_per_s(job, feed_mm_per_s):
+    """The dominant axis' speed of each G0/G1 move of JOB (X/Y words, absolute) run at FEED_MM_PER_S along the path:
+    the packet's feed is the dominant axis' feed (seed 000 §3.4.5)."""
+    at = {"X": 0.0, "Y": 0.0}
+    speeds = []
+    with open(job) as f:
+        for line in f:
+            code = line.split("(")[0]
+            if not re.match(r"\s*G[01]\b", code):
+                continue
+            to = dict(at)
+            for axis, value in re.findall(r"([XY])(-?[0-9.]+)", code):
+                to[axis] = float(value)
+            dx, dy = abs(to["X"] - at["X"]), abs(to["Y"] - at["Y"])
+            at = to
+            if dx == 0 and dy == 0:
+                continue
+            speeds.append(feed_mm_per_s * max(dx, dy) / math.hypot(dx, dy))
+    return speeds
+
+
+def lost_full_steps(report):
+    """(X, Y) full steps an fpga-uart run's dynamic mechanics lost."""
+    mech = report["fpga-uart"]["mechanics"]
+    return mech["x"]["lost_full_steps"], mech["y"]["lost_full_steps"]

@@ -42,14 +42,17 @@ std::int64_t carry_bound(std::uint64_t phase, std::uint64_t v) {
 
 }  // namespace
 
+std::uint64_t ramp_start_velocity(const RampInputs& in) {
+    return std::max<std::uint64_t>(std::min(std::uint64_t{in.start_reg} << kStartShift, in.cruise), 1);
+}
+
 std::uint64_t velocity_of_period(std::uint64_t period_cycles, std::uint64_t min_period_cycles) {
     return kPhaseOne / std::max({period_cycles, min_period_cycles, std::uint64_t{1}});
 }
 
 RampRun::RampRun(const RampInputs& in)
     : m_in(in),
-      // A start register of 0 still steps, at the slowest velocity the register holds.
-      m_start(std::max<std::uint64_t>(std::min(std::uint64_t{in.start_reg} << kStartShift, in.cruise), 1)),
+      m_start(ramp_start_velocity(in)),
       m_phase(kPhaseOne - m_start),
       m_velocity(m_start),
       m_error(in.abs_dom / 2),

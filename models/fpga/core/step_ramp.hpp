@@ -52,6 +52,10 @@ struct RampInputs {
 // `min_period_cycles` (floor: the ramp's steps never come faster than the packet asks).
 [[nodiscard]] std::uint64_t velocity_of_period(std::uint64_t period_cycles, std::uint64_t min_period_cycles);
 
+// The velocity a move starts and ends at: the start register, at most the cruise; a start register of 0 still steps,
+// at the slowest velocity the register holds.
+[[nodiscard]] std::uint64_t ramp_start_velocity(const RampInputs& in);
+
 class RampRun {
 public:
     struct Step {

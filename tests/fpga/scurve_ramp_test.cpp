@@ -11,6 +11,7 @@
 #include "fpga/core/scurve_plan.hpp"
 #include "fpga/core/step_ramp.hpp"
 #include "fpga/core/step_schedule.hpp"
+#include "ramp_step.hpp"
 
 namespace cnc::fpga {
 namespace {
@@ -28,15 +29,7 @@ std::uint64_t cruise_of_mm_per_s(double v) {
     return static_cast<std::uint64_t>(std::ldexp(1.0, 48) / std::floor(kClkHz / (v * kStepsPerMm)));
 }
 
-struct Step {
-    std::int64_t clock;
-    bool sub;
-    bool operator==(const Step& o) const { return clock == o.clock && sub == o.sub; }
-};
-
-std::ostream& operator<<(std::ostream& os, const Step& s) {
-    return os << "{" << s.clock << ", " << s.sub << "}";
-}
+using Step = test::RampStep;
 
 std::vector<Step> event_steps(const RampInputs& in) {
     RampRun run(in);

@@ -19,8 +19,8 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from cncsim_report import (args_and_workdir, check, check_bad_input, dominant_speeds_mm_per_s,  # noqa: E402
-                           lost_full_steps, run_report)
+from cncsim_report import (args_and_workdir, check, check_bad_input, check_ramped_run,  # noqa: E402
+                           dominant_speeds_mm_per_s, lost_full_steps, run_report)
 
 FEED_MM_PER_S = 80.0      # the job's F4800 and the scenario's rapid feed
 ACCEL_MM_PER_S2 = 1000.0  # machine.<axis>.max_accel_mm_per_s2's default
@@ -50,23 +50,7 @@ def main():
 
     seed_x, _ = lost_full_steps(seed)
     check(seed_x > 0, "the seed's step_gen lost no step on X at 80 mm/s")
-    check(lost_full_steps(scurve) == (0, 0),
-          "with the S-curve X and Y lost %d and %d full steps" % lost_full_steps(scurve))
-    for axis in scurve["metrics"]["axes"]:
-        rate = axis["driver_timing"]["rate"]
-        check(rate["violations"] == 0, "%s: %d STEP periods under the DRV8825's 4 us" % (axis["axis"],
-                                                                                            rate["violations"]))
-        # Against its own S-curve each cruise keeps the packet's rate to the plan's and the register's rounding.
-        check(abs(axis["rate_error_worst_pct"]) < 0.1,
-              "%s: rate error %.4f %% in the cruise" % (axis["axis"], axis["rate_error_worst_pct"]))
-    executed = scurve["metrics"]["moves"]
-    for axis in ("x", "y"):
-        check(executed["steps_emitted"][axis] == executed["steps_commanded"][axis],
-              "with the S-curve %s stepped %s for %s commanded" % (axis, executed["steps_emitted"][axis],
-                                                                  executed["steps_commanded"][axis]))
-    end_um = scurve["metrics"]["path"]["job_end_um"]
-    check(end_um < 1000.0 / FULL_STEPS_PER_MM / 2,
-          "with the S-curve the tool ends %.1f um off the programmed point" % end_um)
+    end_um = check_ramped_run(scurve, "S-curve", FULL_STEPS_PER_MM)
 
     cost, moves = predicted_cost_s(os.path.join(source, "scenarios", "jobs", "six_segment_f4800.nc"))
     measured = scurve["metrics"]["job"]["motion_time_s"] - seed["metrics"]["job"]["motion_time_s"]

@@ -15,8 +15,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from cncsim_report import (args_and_workdir, check, dominant_speeds_mm_per_s, lost_full_steps,  # noqa: E402
-                           run_report)
+from cncsim_report import (args_and_workdir, check, check_ramped_run, dominant_speeds_mm_per_s,  # noqa: E402
+                           lost_full_steps, run_report)
 
 FEED_MM_PER_S = 80.0      # the job's F4800 and the scenario's rapid feed
 ACCEL_MM_PER_S2 = 1000.0  # machine.<axis>.max_accel_mm_per_s2's default
@@ -39,25 +39,7 @@ def main():
 
     seed_x, _ = lost_full_steps(seed)
     check(seed_x > 0, "the seed's step_gen lost no step on X at 80 mm/s")
-    check(lost_full_steps(ramp) == (0, 0), "with the ramp X and Y lost %d and %d full steps" % lost_full_steps(ramp))
-    for axis in ramp["metrics"]["axes"]:
-        rate = axis["driver_timing"]["rate"]
-        check(rate["violations"] == 0, "%s: %d STEP periods under the DRV8825's 4 us" % (axis["axis"],
-                                                                                            rate["violations"]))
-    # Measured against its own trapezoid (the commanded motion of a run with the ramp), each cruise keeps the
-    # packet's rate to the register's rounding, where uniform motion at F would make the ramps a rate error.
-    for axis in ramp["metrics"]["axes"]:
-        check(abs(axis["rate_error_worst_pct"]) < 0.1,
-              "%s: rate error %.4f %% in the cruise" % (axis["axis"], axis["rate_error_worst_pct"]))
-    executed = ramp["metrics"]["moves"]
-    for axis in ("x", "y"):
-        check(executed["steps_emitted"][axis] == executed["steps_commanded"][axis],
-              "with the ramp %s stepped %s for %s commanded" % (axis, executed["steps_emitted"][axis],
-                                                               executed["steps_commanded"][axis]))
-    # The carriage rests where friction stops it, microns from its last step: a full step lost is 200 um.
-    end_um = ramp["metrics"]["path"]["job_end_um"]
-    check(end_um < 1000.0 / FULL_STEPS_PER_MM / 2,
-          "with the ramp the tool ends %.1f um off the programmed point" % end_um)
+    end_um = check_ramped_run(ramp, "ramp", FULL_STEPS_PER_MM)
 
     cost, moves = predicted_cost_s(os.path.join(source, "scenarios", "jobs", "six_segment_f4800.nc"))
     measured = ramp["metrics"]["job"]["motion_time_s"] - seed["metrics"]["job"]["motion_time_s"]

@@ -2,6 +2,18 @@
 
 namespace cnc::fpga {
 
+namespace {
+
+// The ramp's registers at reset, which the decoder's init packet (longer with a ramp) overwrites.
+std::optional<RampDefaults> ramp_defaults(const FpgaConfig& cfg) {
+    if (cfg.ramp == StepRamp::None) return std::nullopt;
+    RampDefaults d{cfg.ramp_accel_default, cfg.ramp_start_default, std::nullopt};
+    if (cfg.ramp == StepRamp::SCurve) d.jerk = cfg.ramp_jerk_default;
+    return d;
+}
+
+}  // namespace
+
 void MotionOutputs::put(TimedWriter& writer, const ClockGrid& clock, std::int64_t edge, const MotionFields& f) const {
     // The ports, not this (a temporary), are what the writes reach when they are due.
     writer.at(clock.at(edge),
@@ -31,14 +43,13 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
       numerator_y("numerator_y"),
       ramp_accel("ramp_accel"),
       ramp_start("ramp_start"),
+      ramp_jerk("ramp_jerk"),
       cfg_valid("cfg_valid"),
       crc_error("crc_error"),
       repeat("repeat"),
       m_cfg(cfg),
       m_clock(clock_grid(cfg)),
-      m_core(cfg.numerator_default, cfg.packet_crc, cfg.queue_depth == 0,
-             cfg.ramp == StepRamp::None ? std::nullopt
-                                        : std::optional<RampDefaults>({cfg.ramp_accel_default, cfg.ramp_start_default}),
+      m_core(cfg.numerator_default, cfg.packet_crc, cfg.queue_depth == 0, ramp_defaults(cfg),
              cfg.laser_pwm_period_cycles > 0),
       m_writer("writer") {
     SC_HAS_PROCESS(PacketDecoder);
@@ -46,6 +57,7 @@ PacketDecoder::PacketDecoder(const sc_core::sc_module_name& name, const FpgaConf
     numerator_y.initialize(cfg.numerator_default);
     ramp_accel.initialize(cfg.ramp_accel_default);
     ramp_start.initialize(cfg.ramp_start_default);
+    ramp_jerk.initialize(cfg.ramp_jerk_default);
     SC_METHOD(on_rx_valid);
     sensitive << rx_valid;
     dont_initialize();
@@ -75,6 +87,7 @@ void PacketDecoder::on_rx_valid() {
             if (m_cfg.ramp != StepRamp::None) {
                 ramp_accel.write(f.ramp_accel);
                 ramp_start.write(f.ramp_start);
+                ramp_jerk.write(f.ramp_jerk);
             }
             cfg_valid.write(true);
         });

@@ -41,6 +41,7 @@ public:
     sc_core::sc_out<std::uint32_t> numerator_y;
     sc_core::sc_out<std::uint32_t> ramp_accel;  // with fpga.ramp: the init packet's ramp registers
     sc_core::sc_out<std::uint32_t> ramp_start;
+    sc_core::sc_out<std::uint32_t> ramp_jerk;  // with the S-curve
     sc_core::sc_out<bool> cfg_valid;
     // With the packet check: one-clock strobes at a packet's last byte, as pkt_valid.
     sc_core::sc_out<bool> crc_error;

@@ -14,6 +14,7 @@ StepGen::StepGen(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       numerator_y("numerator_y"),
       ramp_accel("ramp_accel"),
       ramp_start("ramp_start"),
+      ramp_jerk("ramp_jerk"),
       cfg_valid("cfg_valid"),
       dir_x("dir_x"),
       step_x("step_x"),
@@ -25,7 +26,8 @@ StepGen::StepGen(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       m_num_x(cfg.numerator_default),  // seed 000 §5.2.4 NUMERATOR_DEFAULT
       m_num_y(cfg.numerator_default),
       m_ramp_accel(cfg.ramp_accel_default),
-      m_ramp_start(cfg.ramp_start_default) {
+      m_ramp_start(cfg.ramp_start_default),
+      m_ramp_jerk(cfg.ramp_jerk_default) {
     SC_HAS_PROCESS(StepGen);
     SC_METHOD(on_pkt_valid);
     sensitive << pkt_valid;
@@ -47,6 +49,7 @@ void StepGen::on_cfg_valid() {
         m_num_y = numerator_y.read();
         m_ramp_accel = ramp_accel.read();
         m_ramp_start = ramp_start.read();
+        m_ramp_jerk = ramp_jerk.read();
     }
 }
 
@@ -62,7 +65,8 @@ void StepGen::on_pkt_valid() {
     }
     // The decoder's fields only change with pkt_valid, so the values SETUP (k+2) and DIR_WAIT (k+3) read are
     // the ones present now; num_x/num_y cannot change outside IDLE.
-    const MoveInputs in{steps_x.read(), steps_y.read(), feed_rate.read(), m_num_x, m_num_y, m_ramp_accel, m_ramp_start};
+    const MoveInputs in{steps_x.read(), steps_y.read(), feed_rate.read(), m_num_x,
+                        m_num_y,        m_ramp_accel,   m_ramp_start,     m_ramp_jerk};
     m_schedule.emplace(in, m_dir_x, m_dir_y, m_cfg);
     m_move_edge = k;
     m_dir_x = m_schedule->dir_x();

@@ -25,6 +25,7 @@ public:
     sc_core::sc_in<std::uint32_t> numerator_y;
     sc_core::sc_in<std::uint32_t> ramp_accel;  // with fpga.ramp: the init packet's ramp registers (step_ramp.hpp)
     sc_core::sc_in<std::uint32_t> ramp_start;
+    sc_core::sc_in<std::uint32_t> ramp_jerk;  // with the S-curve
     sc_core::sc_in<bool> cfg_valid;
     sc_core::sc_out<bool> dir_x;
     sc_core::sc_out<bool> step_x;
@@ -64,6 +65,7 @@ private:
     std::uint32_t m_num_y;
     std::uint32_t m_ramp_accel;
     std::uint32_t m_ramp_start;
+    std::uint32_t m_ramp_jerk;
     bool m_dir_x = false;  // reset values
     bool m_dir_y = false;
     std::int64_t m_idle_from = 0;

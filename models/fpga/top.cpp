@@ -15,6 +15,7 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
       m_numerator_y("numerator_y", cfg.numerator_default),
       m_ramp_accel("ramp_accel", cfg.ramp_accel_default),
       m_ramp_start("ramp_start", cfg.ramp_start_default),
+      m_ramp_jerk("ramp_jerk", cfg.ramp_jerk_default),
       uart_rx_inst("uart_rx_inst", cfg),
       pkt_dec_inst("pkt_dec_inst", cfg),
       step_gen_inst("step_gen_inst", cfg),
@@ -39,6 +40,7 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
     pkt_dec_inst.numerator_y(m_numerator_y);
     pkt_dec_inst.ramp_accel(m_ramp_accel);
     pkt_dec_inst.ramp_start(m_ramp_start);
+    pkt_dec_inst.ramp_jerk(m_ramp_jerk);
     pkt_dec_inst.cfg_valid(cfg_valid);
     pkt_dec_inst.crc_error(m_crc_error);
     pkt_dec_inst.repeat(m_repeat);
@@ -60,12 +62,14 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
         step_gen_inst.numerator_y(m_numerator_y);
         step_gen_inst.ramp_accel(m_ramp_accel);
         step_gen_inst.ramp_start(m_ramp_start);
+        step_gen_inst.ramp_jerk(m_ramp_jerk);
         step_gen_inst.cfg_valid(cfg_valid);
     } else {
         step_gen_inst.numerator_x(m_numerator_unconnected);
         step_gen_inst.numerator_y(m_numerator_unconnected);
         step_gen_inst.ramp_accel(m_numerator_unconnected);
         step_gen_inst.ramp_start(m_numerator_unconnected);
+        step_gen_inst.ramp_jerk(m_numerator_unconnected);
         step_gen_inst.cfg_valid(m_cfg_valid_unconnected);
     }
     step_gen_inst.dir_x(dir_x);
@@ -365,6 +369,7 @@ void Top::add_traces(sc_core::sc_trace_file* tf) const {
     if (m_cfg.ramp != StepRamp::None) {
         sc_core::sc_trace(tf, m_ramp_accel, m_ramp_accel.name());
         sc_core::sc_trace(tf, m_ramp_start, m_ramp_start.name());
+        if (m_cfg.ramp == StepRamp::SCurve) sc_core::sc_trace(tf, m_ramp_jerk, m_ramp_jerk.name());
     }
     sc_core::sc_trace(tf, m_tx_busy, m_tx_busy.name());
     laser_ctrl_inst.add_traces(tf);

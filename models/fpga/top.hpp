@@ -84,6 +84,7 @@ private:
     sc_core::sc_signal<std::uint32_t> m_numerator_y;
     sc_core::sc_signal<std::uint32_t> m_ramp_accel;
     sc_core::sc_signal<std::uint32_t> m_ramp_start;
+    sc_core::sc_signal<std::uint32_t> m_ramp_jerk;
     sc_core::sc_signal<bool> m_tx_busy{"tx_busy", false};
     sc_core::sc_signal<std::uint8_t> m_tx_data{"tx_data", 0xAA};  // top.v: .tx_data(8'hAA), seed 000 §4.11
     sc_core::sc_signal<bool> m_crc_error{"crc_error", false};

@@ -101,9 +101,10 @@ void read_axis_limits(KeyReader& r, const std::string& axis, host::AxisLimits& l
         "axis acceleration limit, mm/s^2, > 0 (LinuxCNC MAX_ACCELERATION): the trajectory planner's and the FPGA "
         "ramp's (fpga.ramp); a controller without ramps steps at full rate from the first step",
         "an axis that cannot accelerate never leaves rest");
-    lim.max_jerk_mm_per_s3 = positive(r, p + "max_jerk_mm_per_s3", lim.max_jerk_mm_per_s3, 1e10,
-                                      "axis jerk limit, mm/s^3, > 0 (planner.profile = jerk-limited only)",
-                                      "a jerk-limited profile could never change its acceleration");
+    lim.max_jerk_mm_per_s3 =
+        positive(r, p + "max_jerk_mm_per_s3", lim.max_jerk_mm_per_s3, 1e10,
+                 "axis jerk limit, mm/s^3, > 0 (planner.profile = jerk-limited and fpga.ramp = \"s-curve\" only)",
+                 "a jerk-limited profile could never change its acceleration");
 }
 
 void read_axis(KeyReader& r, const std::string& axis, host::AxisMachine& m) {

@@ -72,7 +72,7 @@ std::vector<std::uint8_t> checked(std::vector<std::uint8_t> bytes, bool sequence
 // With the ramp (fpga.ramp) the init packet carries the ramp's acceleration and start registers after the
 // numerators, big-endian: 17 bytes, and the registers keep their reset values until one arrives.
 TEST(PacketDecoderCore, WithTheRampTheInitPacketCarriesItsRegisters) {
-    PacketDecoderCore d(18'750'000, false, true, RampDefaults{18'014, 68'719});
+    PacketDecoderCore d(18'750'000, false, true, RampDefaults{18'014, 68'719, std::nullopt});
     EXPECT_EQ(d.init().ramp_accel, 18'014U);
     EXPECT_EQ(d.init().ramp_start, 68'719U);
     const std::vector<std::uint8_t> init = {0xFF, 0x01, 0x1E, 0x1A, 0x30, 0x00, 0x8F, 0x0D, 0x18,
@@ -91,6 +91,21 @@ TEST(PacketDecoderCore, WithTheRampTheInitPacketCarriesItsRegisters) {
     EXPECT_EQ(std::count(checked_done.begin(), checked_done.end(), Completed::None), 18);
     EXPECT_EQ(checked_done.back(), Completed::Init);
     EXPECT_EQ(with_check.init().ramp_start, 0x10C8FU);
+}
+
+// With the S-curve the jerk register follows: 21 bytes.
+TEST(PacketDecoderCore, WithTheSCurveTheInitPacketCarriesItsJerk) {
+    PacketDecoderCore d(18'750'000, false, true, RampDefaults{18'014, 68'719, 77'371'252});
+    EXPECT_EQ(d.init().ramp_jerk, 77'371'252U);
+    const std::vector<std::uint8_t> init = {0xFF, 0x01, 0x1E, 0x1A, 0x30, 0x00, 0x8F, 0x0D, 0x18, 0x00, 0x00,
+                                            0x46, 0x5E, 0x00, 0x01, 0x0C, 0x8F, 0x09, 0x39, 0x27, 0xA9};
+    const auto done = feed_bytes(d, init);
+    EXPECT_EQ(std::count(done.begin(), done.end(), Completed::None), 20);  // not done at the trapezoid's 17th
+    EXPECT_EQ(done.back(), Completed::Init);
+    EXPECT_EQ(d.init().ramp_accel, 0x465EU);
+    EXPECT_EQ(d.init().ramp_start, 0x10C8FU);
+    EXPECT_EQ(d.init().ramp_jerk, 0x093927A9U);
+    EXPECT_EQ(feed_bytes(d, test::motion_packet(1, 320, -160, 1200)).back(), Completed::Motion);
 }
 
 TEST(PacketDecoderCore, CheckedPacketsCompleteAfterTheirCrc) {

@@ -8,19 +8,12 @@
 
 #include "fpga/core/step_ramp.hpp"
 #include "fpga/core/step_schedule.hpp"
+#include "ramp_step.hpp"
 
 namespace cnc::fpga {
 namespace {
 
-struct Step {
-    std::int64_t clock;
-    bool sub;
-    bool operator==(const Step& o) const { return clock == o.clock && sub == o.sub; }
-};
-
-std::ostream& operator<<(std::ostream& os, const Step& s) {
-    return os << "{" << s.clock << ", " << s.sub << "}";
-}
+using Step = test::RampStep;
 
 std::vector<RampRun::Step> ramp_steps(const RampInputs& in) {
     RampRun run(in);

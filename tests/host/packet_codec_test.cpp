@@ -51,6 +51,13 @@ TEST(HostPacketCodec, TheRampsInitPacketAppendsItsRegistersToTheSeeds) {
     EXPECT_EQ(b, expected);
 }
 
+TEST(HostPacketCodec, TheSCurvesInitPacketAppendsItsJerkToTheRamps) {
+    const ScurveInitBytes b = encode_scurve_init(18'750'000, 1, 0x465E, 0x10C8F, 0x0939'27A9);
+    const ScurveInitBytes expected{0xFF, 0x01, 0x1E, 0x1A, 0x30, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00,
+                                   0x46, 0x5E, 0x00, 0x01, 0x0C, 0x8F, 0x09, 0x39, 0x27, 0xA9};
+    EXPECT_EQ(b, expected);
+}
+
 TEST(HostPacketCodec, MarkerConfusionIsRejected) {
     EXPECT_THROW(encode_motion(0xFF, 0, 0, 0), std::invalid_argument);
     EXPECT_THROW(decode_init(InitBytes{0x01}), std::invalid_argument);

@@ -12,8 +12,9 @@ namespace cnc::fpga {
 // evaluates the product at 32 bits and wraps.
 enum class PeriodArithmetic { Exact, Wrap32 };
 
-// Our option on seed 000 §7.2's trapezoidal ramps on the FPGA (core/step_ramp.hpp): none is the seed's step_gen.
-enum class StepRamp { None, Trapezoidal };
+// Our option on seed 000 §7.2's trapezoidal or S-curve ramps on the FPGA (core/step_ramp.hpp): none is the seed's
+// step_gen.
+enum class StepRamp { None, Trapezoidal, SCurve };
 
 struct FpgaConfig {
     std::uint32_t clk_hz = 50'000'000;               // seed 000 §5.1.1: DE1-SoC CLOCK_50
@@ -31,6 +32,8 @@ struct FpgaConfig {
     // (NUMERATOR_DEFAULT's machine), in step_ramp.hpp's fixed point at 50 MHz.
     std::uint32_t ramp_accel_default = 18'014;  // 160,000 steps/s^2 x 2^48 / (50 MHz)^2
     std::uint32_t ramp_start_default = 68'719;  // 800 steps/s x 2^32 / 50 MHz
+    std::uint32_t ramp_jerk_default =
+        154'742'505;          // the S-curve's: 16e6 steps/s^3 (100,000 mm/s^3) x 2^80 / (50 MHz)^3
     bool packet_crc = false;  // our option on seed 000 §7.2's CRC: packets checked, NAK, repeats (decoder core)
     // Our option on seed 000 §7.2's command queue and FIFO packet buffer: packets queued ahead of step_gen
     // (packet_queue.hpp); 0: none, the seed's stop-and-wait.

@@ -29,6 +29,7 @@ void PacketDecoderCore::latch_init() {
     if (!m_ramp) return;
     m_init.ramp_accel = be32(b[9], b[10], b[11], b[12]);
     m_init.ramp_start = be32(b[13], b[14], b[15], b[16]);
+    if (m_scurve) m_init.ramp_jerk = be32(b[17], b[18], b[19], b[20]);
 }
 
 void PacketDecoderCore::restart() {

@@ -31,6 +31,7 @@ struct InitFields {
     std::uint32_t num_y = 0;
     std::uint32_t ramp_accel = 0;  // with the ramp (fpga.ramp): its registers, after the numerators
     std::uint32_t ramp_start = 0;
+    std::uint32_t ramp_jerk = 0;  // with the S-curve
 };
 
 // With the ramp the init packet carries its registers (fpga/core/step_ramp.hpp) after the numerators; these are
@@ -38,6 +39,7 @@ struct InitFields {
 struct RampDefaults {
     std::uint32_t accel = 0;
     std::uint32_t start = 0;
+    std::optional<std::uint32_t> jerk;  // the S-curve's: its init packet carries it too
 };
 
 class PacketDecoderCore {
@@ -46,6 +48,7 @@ public:
     static constexpr std::uint8_t kCfgMarker = 0xFF;  // seed 000 §4.6 (Π.4 CFG_MARKER)
     static constexpr int kInitBytes = 9;              // seed 000 §4.6
     static constexpr int kRampInitBytes = 17;         // and the ramp's two 32-bit registers
+    static constexpr int kScurveInitBytes = 21;       // and the S-curve's jerk
     static constexpr int kMotionBytes = 11;
     static constexpr int kLaserHighBytes = 2;           // with the laser's PWM
     static constexpr int kCrcBytes = 2;                 // with the packet check
@@ -56,8 +59,10 @@ public:
         : m_crc(packet_crc),
           m_alternating(packet_crc && alternating_bit),
           m_ramp(ramp.has_value()),
+          m_scurve(ramp && ramp->jerk),
           m_laser_pwm(laser_pwm),
-          m_init{numerator_default, numerator_default, ramp ? ramp->accel : 0, ramp ? ramp->start : 0} {}
+          m_init{numerator_default, numerator_default, ramp ? ramp->accel : 0, ramp ? ramp->start : 0,
+                 ramp ? ramp->jerk.value_or(0) : 0} {}
 
     // The rx_valid branch of the always block.
     Completed on_byte(std::uint8_t byte);
@@ -73,18 +78,19 @@ private:
     Completed complete_checked(bool was_cfg, std::uint8_t byte);
     void restart();
     void latch_init();
-    [[nodiscard]] int init_bytes() const { return m_ramp ? kRampInitBytes : kInitBytes; }
+    [[nodiscard]] int init_bytes() const { return m_scurve ? kScurveInitBytes : m_ramp ? kRampInitBytes : kInitBytes; }
     [[nodiscard]] int motion_bytes() const { return m_laser_pwm ? kMotionBytes + kLaserHighBytes : kMotionBytes; }
     [[nodiscard]] MotionFields motion_fields() const;
 
     bool m_crc;
     bool m_alternating;
     bool m_ramp;
+    bool m_scurve;
     bool m_laser_pwm;
     int m_byte_count = 0;
     bool m_timeout_active = false;
     bool m_is_cfg = false;
-    std::array<std::uint8_t, kRampInitBytes + kCrcBytes> m_bank{};  // the packet's bytes so far
+    std::array<std::uint8_t, kScurveInitBytes + kCrcBytes> m_bank{};  // the packet's bytes so far
     std::uint16_t m_crc_reg = 0;            // over the packet's bytes so far (with the packet check)
     bool m_sequence_seen = false;           // a motion packet has been passed on since reset
     bool m_last_sequence = false;

@@ -42,17 +42,22 @@ std::int64_t carry_bound(std::uint64_t phase, std::uint64_t v) {
 
 }  // namespace
 
+std::uint64_t ramp_start_velocity(const RampInputs& in) {
+    return std::max<std::uint64_t>(std::min(std::uint64_t{in.start_reg} << kStartShift, in.cruise), 1);
+}
+
 std::uint64_t velocity_of_period(std::uint64_t period_cycles, std::uint64_t min_period_cycles) {
     return kPhaseOne / std::max({period_cycles, min_period_cycles, std::uint64_t{1}});
 }
 
 RampRun::RampRun(const RampInputs& in)
     : m_in(in),
-      // A start register of 0 still steps, at the slowest velocity the register holds.
-      m_start(std::max<std::uint64_t>(std::min(std::uint64_t{in.start_reg} << kStartShift, in.cruise), 1)),
+      m_start(ramp_start_velocity(in)),
       m_phase(kPhaseOne - m_start),
       m_velocity(m_start),
-      m_error(in.abs_dom / 2) {}
+      m_error(in.abs_dom / 2),
+      m_plan(in.jerk_reg == 0 ? ScurvePlan{} : plan_scurve(m_start, in.cruise, in.accel_reg, in.jerk_reg, in.abs_dom)) {
+}
 
 std::uint64_t RampRun::decelerated(std::uint64_t v) const {
     return v >= m_start + m_in.accel_reg ? v - m_in.accel_reg : m_start;
@@ -84,46 +89,85 @@ void RampRun::update_after_step(std::uint64_t v, bool clamp_clock) {
     }
 }
 
+RampRun::Stretch RampRun::trapezoid_stretch() const {
+    const std::int64_t accel = m_in.accel_reg;
+    if (m_state == Phase::Accel && (accel > 0 || m_velocity == m_in.cruise)) {
+        const std::uint64_t need = m_in.cruise - m_velocity;
+        return {accel, need == 0 ? 1 : static_cast<std::int64_t>((need + m_in.accel_reg - 1) / m_in.accel_reg)};
+    }
+    if (m_state == Phase::Decel && accel > 0 && m_velocity > m_start) {
+        return {-accel, static_cast<std::int64_t>((m_velocity - m_start + m_in.accel_reg - 1) / m_in.accel_reg)};
+    }
+    return {0, kUnbounded};
+}
+
+// The S-curve's increments change every clock of a jerk phase (a stretch of one clock) and hold at the top.
+RampRun::Stretch RampRun::scurve_stretch() {
+    const std::int64_t t = m_plan.clocks();
+    if (m_state == Phase::Accel && m_ramp_clock >= t) {
+        m_state = Phase::Cruise;
+        m_ramp_steps = m_done;
+    }
+    if (m_state == Phase::Cruise || m_ramp_clock >= t) return {0, kUnbounded};
+    const std::int64_t i = m_ramp_clock;
+    const std::int64_t top_end = m_plan.jerk_clocks + m_plan.top_clocks;
+    const std::int64_t length = i >= m_plan.jerk_clocks && i < top_end ? top_end - i : 1;
+    const auto step = static_cast<std::int64_t>(m_plan.increment(i));
+    return {m_state == Phase::Accel ? step : -step, length};
+}
+
+void RampRun::end_stretch(const Stretch& s) {
+    if (m_in.jerk_reg != 0) {
+        m_velocity = static_cast<std::uint64_t>(static_cast<std::int64_t>(m_velocity) + s.slope * s.length);
+        m_ramp_clock += s.length;
+    } else if (m_state == Phase::Accel) {
+        m_state = Phase::Cruise;
+        m_ramp_steps = m_done;
+        m_velocity = m_in.cruise;
+    } else {
+        m_velocity = m_start;
+    }
+}
+
+void RampRun::scurve_after_step(std::uint64_t v, const Stretch& s, std::int64_t n) {
+    if (m_state == Phase::Cruise) {
+        if (m_in.abs_dom - m_done < m_ramp_steps) {
+            m_state = Phase::Decel;
+            m_ramp_clock = 0;
+        }
+        return;
+    }
+    m_velocity = static_cast<std::uint64_t>(static_cast<std::int64_t>(v) + s.slope);
+    if (s.length != kUnbounded) m_ramp_clock += n + 1;
+}
+
 bool RampRun::next(Step& out) {
     if (m_done >= m_in.abs_dom) return false;
+    const bool scurve = m_in.jerk_reg != 0;
     for (;;) {
-        // The stretch from m_clock on where the velocity changes by `slope` a clock: `length` clocks (then the
-        // acceleration reaches the cruise or the deceleration its floor) or unbounded.
-        std::int64_t slope = 0;
-        std::int64_t length = kUnbounded;
-        const std::int64_t accel = m_in.accel_reg;
-        if (m_state == Phase::Accel && (accel > 0 || m_velocity == m_in.cruise)) {
-            const std::uint64_t need = m_in.cruise - m_velocity;
-            slope = accel;
-            length = need == 0 ? 1 : static_cast<std::int64_t>((need + m_in.accel_reg - 1) / m_in.accel_reg);
-        } else if (m_state == Phase::Decel && accel > 0 && m_velocity > m_start) {
-            slope = -accel;
-            length = static_cast<std::int64_t>((m_velocity - m_start + m_in.accel_reg - 1) / m_in.accel_reg);
-        }
-        std::int64_t last = length - 1;
-        if (slope >= 0) last = std::min(last, carry_bound(m_phase, m_velocity));
-        const std::int64_t n = first_carry(m_phase, m_velocity, slope, last);
+        const Stretch s = scurve ? scurve_stretch() : trapezoid_stretch();
+        std::int64_t last = s.length - 1;
+        if (s.slope >= 0) last = std::min(last, carry_bound(m_phase, m_velocity));
+        const std::int64_t n = first_carry(m_phase, m_velocity, s.slope, last);
         if (n < 0) {  // the stretch ends without a step
-            m_phase = static_cast<std::uint64_t>(accumulated(m_phase, m_velocity, slope, length - 1));
-            m_clock += length;
-            if (m_state == Phase::Accel) {
-                m_state = Phase::Cruise;
-                m_ramp_steps = m_done;
-                m_velocity = m_in.cruise;
-            } else {
-                m_velocity = m_start;
-            }
+            m_phase = static_cast<std::uint64_t>(accumulated(m_phase, m_velocity, s.slope, s.length - 1));
+            m_clock += s.length;
+            end_stretch(s);
             continue;
         }
-        const auto v = static_cast<std::uint64_t>(static_cast<std::int64_t>(m_velocity) + slope * n);
-        m_phase = static_cast<std::uint64_t>(accumulated(m_phase, m_velocity, slope, n) - Wide{kPhaseOne});
+        const auto v = static_cast<std::uint64_t>(static_cast<std::int64_t>(m_velocity) + s.slope * n);
+        m_phase = static_cast<std::uint64_t>(accumulated(m_phase, m_velocity, s.slope, n) - Wide{kPhaseOne});
         out.clock = m_clock + n;
         ++m_done;
         m_error += m_in.abs_sub;
         out.sub = m_error >= m_in.abs_dom;
         if (out.sub) m_error -= m_in.abs_dom;
         out.cruising = m_state == Phase::Cruise;
-        update_after_step(v, m_state == Phase::Accel && n == length - 1);
+        if (scurve) {
+            scurve_after_step(v, s, n);
+        } else {
+            update_after_step(v, m_state == Phase::Accel && n == s.length - 1);
+        }
         m_clock = out.clock + 1;
         return true;
     }

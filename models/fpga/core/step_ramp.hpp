@@ -17,8 +17,21 @@
 // Bresenham's error, which starts at abs_dom / 2 (the nearest step), reaches abs_dom: grbl's stepper does the same.
 // Fixed point: velocity in 2^-48 steps per clock, the acceleration register in 2^-48 steps per clock^2, the start
 // register in 2^-32 steps per clock (the velocity's top 32 fraction bits).
+//
+// The S-curve (fpga.ramp = "s-curve", on seed 000 §7.2's proposal of S-curve ramps) keeps the phase, the velocity
+// and the step-count turn of the deceleration, and makes the velocity's change per clock jerk-limited. At the
+// move's start step_gen plans (core/scurve_plan.hpp) the clocks n_j of each jerk phase and n_a at the top
+// acceleration; then, on the clocks i = 0 .. T-1 of the acceleration (T = 2 n_j + n_a):
+//   accel   = jerk x min(i + 1, n_j, T - i)     (2^-80 steps per clock^2: grows by the jerk register each clock,
+//                                                holds, falls back by it to 0)
+//   velocity += accel >> 32
+// then CRUISE at the velocity reached, until fewer steps are left than the acceleration took; then the
+// deceleration subtracts the same T increments (they read the same backwards), so it mirrors the acceleration
+// and ends exactly at the start speed, which the last steps keep.
 #pragma once
 #include <cstdint>
+
+#include "fpga/core/scurve_plan.hpp"
 
 namespace cnc::fpga {
 
@@ -32,11 +45,16 @@ struct RampInputs {
     std::uint64_t cruise = 0;     // velocity at the packet's feed, 2^-48 steps per clock
     std::uint32_t start_reg = 0;  // the init packet's start speed, 2^-32 steps per clock
     std::uint32_t accel_reg = 0;  // the init packet's acceleration, 2^-48 steps per clock^2
+    std::uint32_t jerk_reg = 0;   // with the S-curve: the init packet's jerk, 2^-80 steps per clock^3 (0: trapezoid)
 };
 
 // The velocity of a dominant-axis period: one step every `period_cycles` clocks, held to one step every
 // `min_period_cycles` (floor: the ramp's steps never come faster than the packet asks).
 [[nodiscard]] std::uint64_t velocity_of_period(std::uint64_t period_cycles, std::uint64_t min_period_cycles);
+
+// The velocity a move starts and ends at: the start register, at most the cruise; a start register of 0 still steps,
+// at the slowest velocity the register holds.
+[[nodiscard]] std::uint64_t ramp_start_velocity(const RampInputs& in);
 
 class RampRun {
 public:
@@ -54,8 +72,19 @@ public:
 private:
     enum class Phase { Accel, Cruise, Decel };
 
+    // Clocks from m_clock on where the velocity changes by `slope` a clock, `length` of them.
+    struct Stretch {
+        std::int64_t slope = 0;
+        std::int64_t length = 0;
+    };
+
+    [[nodiscard]] Stretch trapezoid_stretch() const;
+    [[nodiscard]] Stretch scurve_stretch();
+    // After a stretch of `clocks` without a step.
+    void end_stretch(const Stretch& s);
     // The velocity register's update at the end of a clock that used velocity `v`.
     void update_after_step(std::uint64_t v, bool clamp_clock);
+    void scurve_after_step(std::uint64_t v, const Stretch& s, std::int64_t n);
     [[nodiscard]] std::uint64_t decelerated(std::uint64_t v) const;
 
     RampInputs m_in;
@@ -67,6 +96,8 @@ private:
     std::uint32_t m_done = 0;
     std::uint32_t m_ramp_steps = 0;
     std::uint64_t m_error;  // Bresenham's, of the other axis
+    ScurvePlan m_plan;      // with the S-curve
+    std::int64_t m_ramp_clock = 0;  // clocks of the S-curve's acceleration or deceleration so far
 };
 
 }  // namespace cnc::fpga

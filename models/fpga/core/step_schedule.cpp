@@ -104,7 +104,7 @@ StepSchedule::StepSchedule(const MoveInputs& in, bool dir_x_before, bool dir_y_b
     if (m_dir_y != dir_y_before) m_prologue[m_prologue_size++] = {kDirEdge, StepPin::DirY, m_dir_y};
 
     if (!m_has_run) return;
-    if (cfg.ramp == StepRamp::Trapezoidal) {
+    if (cfg.ramp != StepRamp::None) {
         start_ramp(in, abs_x, abs_y, cfg);
         return;
     }
@@ -124,8 +124,12 @@ RampInputs ramp_inputs(const MoveInputs& in, const FpgaConfig& cfg) {
     const StepPeriods periods = compute_periods(abs_x, abs_y, in.feed, in.num_x, in.num_y, cfg);
     const bool x_dominant = abs_x >= abs_y;
     const std::uint32_t period = x_dominant ? periods.x_cycles : periods.y_cycles;
-    return {x_dominant ? abs_x : abs_y, x_dominant ? abs_y : abs_x,
-            velocity_of_period(period, 2 * std::uint64_t{cfg.pulse_high_cycles}), in.ramp_start, in.ramp_accel};
+    return {x_dominant ? abs_x : abs_y,
+            x_dominant ? abs_y : abs_x,
+            velocity_of_period(period, 2 * std::uint64_t{cfg.pulse_high_cycles}),
+            in.ramp_start,
+            in.ramp_accel,
+            cfg.ramp == StepRamp::SCurve ? in.ramp_jerk : 0};
 }
 
 // The ramp runs the move once here for its length (RUN ends with the last step's fall), and once for its edges.

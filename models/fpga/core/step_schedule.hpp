@@ -64,6 +64,7 @@ struct MoveInputs {
     std::uint32_t num_y = 0;
     std::uint32_t ramp_accel = 0;  // with a ramp: its latched registers (step_ramp.hpp)
     std::uint32_t ramp_start = 0;
+    std::uint32_t ramp_jerk = 0;  // with the S-curve
 };
 
 // With the ramp: its inputs for a move (the dominant axis is X on a tie).

@@ -55,6 +55,15 @@ RampInitBytes encode_ramp_init(std::uint32_t num_x, std::uint32_t num_y, std::ui
     return b;
 }
 
+ScurveInitBytes encode_scurve_init(std::uint32_t num_x, std::uint32_t num_y, std::uint32_t accel, std::uint32_t start,
+                                   std::uint32_t jerk) {
+    ScurveInitBytes b{};
+    const RampInitBytes ramp = encode_ramp_init(num_x, num_y, accel, start);
+    std::copy(ramp.begin(), ramp.end(), b.begin());
+    put_be32(&b[kRampInitPacketBytes], jerk);
+    return b;
+}
+
 MotionBytes encode_motion(std::uint8_t motion, std::int32_t steps_x, std::int32_t steps_y, std::uint16_t feed) {
     if (motion == kInitMarker) throw std::invalid_argument("motion byte 0xFF would start an init packet");
     MotionBytes b{};

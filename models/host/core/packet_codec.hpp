@@ -24,6 +24,8 @@ inline constexpr std::size_t kMotionPacketBytes = 11;  // seed 000 T3.6
 // With the FPGA's trapezoidal ramp (fpga.ramp, our option on seed 000 §7.2) the init packet carries the ramp's
 // acceleration and start registers after the numerators (fpga/core/step_ramp.hpp has their fixed point).
 inline constexpr std::size_t kRampInitPacketBytes = 17;
+// With the S-curve (fpga.ramp = "s-curve") the jerk register follows (2^-80 steps per clock^3).
+inline constexpr std::size_t kScurveInitPacketBytes = 21;
 
 // With the laser's PWM (fpga.laser_pwm, our option on seed 000 §7.2's PWM laser power) a motion packet carries the
 // PWM high time in clocks after FeedRate, big-endian, before any CRC (fpga/core/laser_pwm.hpp).
@@ -31,6 +33,7 @@ inline constexpr std::size_t kLaserHighBytes = 2;
 
 using InitBytes = std::array<std::uint8_t, kInitPacketBytes>;
 using RampInitBytes = std::array<std::uint8_t, kRampInitPacketBytes>;
+using ScurveInitBytes = std::array<std::uint8_t, kScurveInitPacketBytes>;
 using MotionBytes = std::array<std::uint8_t, kMotionPacketBytes>;
 
 struct InitPacket {
@@ -47,6 +50,8 @@ struct MotionPacket {
 
 InitBytes encode_init(std::uint32_t num_x, std::uint32_t num_y);
 RampInitBytes encode_ramp_init(std::uint32_t num_x, std::uint32_t num_y, std::uint32_t accel, std::uint32_t start);
+ScurveInitBytes encode_scurve_init(std::uint32_t num_x, std::uint32_t num_y, std::uint32_t accel, std::uint32_t start,
+                                   std::uint32_t jerk);
 // std::invalid_argument for motion 0xFF: the decoder would take the packet for an init packet.
 MotionBytes encode_motion(std::uint8_t motion, std::int32_t steps_x, std::int32_t steps_y, std::uint16_t feed);
 MotionBytes encode_motion(const MotionPacket& packet);

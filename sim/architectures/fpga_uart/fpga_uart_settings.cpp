@@ -116,16 +116,19 @@ void read_queue(KeyReader& r, FpgaUartSettings& s) {
     }
 }
 
-// Our option on seed 000 §7.2's trapezoidal ramps on the FPGA: step_gen's law in fpga/core/step_ramp.hpp.
+// Our option on seed 000 §7.2's trapezoidal or S-curve ramps on the FPGA: step_gen's law in fpga/core/step_ramp.hpp.
 void read_ramp(KeyReader& r, FpgaUartSettings& s) {
-    s.fpga.ramp = r.get_choice("fpga.ramp", "none", {"none", "trapezoidal"},
-                               "step_gen's speed profile (seed 000 sec. 7.2 proposes ramps on the FPGA): none, the "
-                               "seed's, every step of a move at the packet's rate; trapezoidal, each move starts at "
-                               "fpga.ramp_start_mm_per_s, speeds up at the slower axis' "
-                               "machine.<axis>.max_accel_mm_per_s2 to the packet's rate and slows down to the start "
-                               "speed at its end, the host sending both in a 17-byte init packet") == "trapezoidal"
-                      ? fpga::StepRamp::Trapezoidal
-                      : fpga::StepRamp::None;
+    const std::string ramp =
+        r.get_choice("fpga.ramp", "none", {"none", "trapezoidal", "s-curve"},
+                     "step_gen's speed profile (seed 000 sec. 7.2 proposes trapezoidal or S-curve ramps on the FPGA): "
+                     "none, the seed's, every step of a move at the packet's rate; trapezoidal, each move starts at "
+                     "fpga.ramp_start_mm_per_s, speeds up at the slower axis' machine.<axis>.max_accel_mm_per_s2 to "
+                     "the packet's rate and slows down to the start speed at its end, the host sending both in a "
+                     "17-byte init packet; s-curve, the same with the acceleration changing at the slower axis' "
+                     "machine.<axis>.max_jerk_mm_per_s3 (21-byte init packet)");
+    s.fpga.ramp = ramp == "s-curve"       ? fpga::StepRamp::SCurve
+                  : ramp == "trapezoidal" ? fpga::StepRamp::Trapezoidal
+                                          : fpga::StepRamp::None;
     s.ramp_start_mm_per_s = r.get_float("fpga.ramp_start_mm_per_s", s.ramp_start_mm_per_s, 0.001, 1000.0,
                                         "with fpga.ramp: the speed a move starts and ends at, mm/s (a stepper starts "
                                         "without losing steps below its pull-in speed: cncsim motor-curve)");

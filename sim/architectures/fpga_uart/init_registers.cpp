@@ -30,22 +30,42 @@ std::uint32_t to_register(double value, const Scenario& s, const std::string& ke
                                what, value));
 }
 
+// The smaller of the axes' limits in steps (per s^2 or s^3), and the key that sets it: in steps of its own axis, so
+// that either axis dominant stays within its own limit (the other axis follows at a fraction of the dominant one's
+// rate).
+struct SlowerAxis {
+    double steps = 0.0;
+    std::string key;
+};
+
+SlowerAxis slower_axis(const host::MachineModel& m, double host::AxisLimits::*limit, const char* name) {
+    const double x = m.x.limits.*limit * m.x.steps_per_mm();
+    const double y = m.y.limits.*limit * m.y.steps_per_mm();
+    return x <= y ? SlowerAxis{x, std::string("machine.x.") + name} : SlowerAxis{y, std::string("machine.y.") + name};
+}
+
 // The ramp's registers: the acceleration the slower axis allows and the start speed, in steps of the axis with
-// fewer steps per mm, so that either axis dominant stays within its own limit (the other axis follows at a
-// fraction of the dominant one's rate).
+// fewer steps per mm.
 void ramp_registers(const Scenario& s, const FpgaUartSettings& f, InitRegisters& r) {
     const host::MachineModel& m = s.machine;
-    const bool x_slower =
-        m.x.limits.max_accel_mm_per_s2 * m.x.steps_per_mm() <= m.y.limits.max_accel_mm_per_s2 * m.y.steps_per_mm();
-    const double accel_steps_per_s2 = x_slower ? m.x.limits.max_accel_mm_per_s2 * m.x.steps_per_mm()
-                                               : m.y.limits.max_accel_mm_per_s2 * m.y.steps_per_mm();
+    const SlowerAxis accel = slower_axis(m, &host::AxisLimits::max_accel_mm_per_s2, "max_accel_mm_per_s2");
     const double clk_hz = f.fpga.clk_hz;
     r.ramp_accel =
-        to_register(accel_steps_per_s2 * std::ldexp(1.0, fpga::kPhaseBits) / (clk_hz * clk_hz), s,
-                    x_slower ? "machine.x.max_accel_mm_per_s2" : "machine.y.max_accel_mm_per_s2", "acceleration");
+        to_register(accel.steps * std::ldexp(1.0, fpga::kPhaseBits) / (clk_hz * clk_hz), s, accel.key, "acceleration");
     const double start_steps_per_s = f.ramp_start_mm_per_s * std::min(m.x.steps_per_mm(), m.y.steps_per_mm());
     r.ramp_start = to_register(start_steps_per_s * std::ldexp(1.0, fpga::kPhaseBits - fpga::kStartShift) / clk_hz, s,
                                "fpga.ramp_start_mm_per_s", "start speed");
+}
+
+// The S-curve's jerk register, of the slower axis as the acceleration. Its 32 bits at 2^-80 steps per clock^3 hold
+// up to 4.4e8 steps/s^3 at 50 MHz: a jerk phase of the slowest acceleration register (1) lasts 2^32 / jerk >= 1
+// clock, so a jerk the register holds never makes a jerk phase shorter than a clock.
+void jerk_register(const Scenario& s, const FpgaUartSettings& f, InitRegisters& r) {
+    const SlowerAxis jerk = slower_axis(s.machine, &host::AxisLimits::max_jerk_mm_per_s3, "max_jerk_mm_per_s3");
+    const double clk_hz = f.fpga.clk_hz;
+    r.ramp_jerk =
+        to_register(jerk.steps * std::ldexp(1.0, fpga::kPhaseBits + fpga::kJerkShift) / (clk_hz * clk_hz * clk_hz), s,
+                    jerk.key, "jerk");
 }
 
 }  // namespace
@@ -59,6 +79,7 @@ InitRegisters init_registers(const Scenario& s, const FpgaUartSettings& f) {
         r.num_x = r.num_y = kSeedScriptNumerator;
     }
     if (f.fpga.ramp != fpga::StepRamp::None) ramp_registers(s, f, r);
+    if (f.fpga.ramp == fpga::StepRamp::SCurve) jerk_register(s, f, r);
     return r;
 }
 
@@ -67,12 +88,17 @@ std::vector<std::uint8_t> init_packet(const InitRegisters& r, const FpgaUartSett
         const host::InitBytes b = host::encode_init(r.num_x, r.num_y);
         return {b.begin(), b.end()};
     }
+    if (f.fpga.ramp == fpga::StepRamp::SCurve) {
+        const host::ScurveInitBytes b =
+            host::encode_scurve_init(r.num_x, r.num_y, r.ramp_accel, r.ramp_start, r.ramp_jerk);
+        return {b.begin(), b.end()};
+    }
     const host::RampInitBytes b = host::encode_ramp_init(r.num_x, r.num_y, r.ramp_accel, r.ramp_start);
     return {b.begin(), b.end()};
 }
 
 fpga::MoveInputs move_inputs(std::int32_t steps_x, std::int32_t steps_y, std::uint16_t feed, const InitRegisters& r) {
-    return {steps_x, steps_y, feed, r.num_x, r.num_y, r.ramp_accel, r.ramp_start};
+    return {steps_x, steps_y, feed, r.num_x, r.num_y, r.ramp_accel, r.ramp_start, r.ramp_jerk};
 }
 
 }  // namespace cnc::sim::fpga_uart

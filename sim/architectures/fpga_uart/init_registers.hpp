@@ -1,5 +1,5 @@
 // What the host's init packet sets in the FPGA: seed 000 §4.6's NUMERATORs, and with the FPGA's trapezoidal ramp
-// (fpga.ramp) the ramp's acceleration and start speed in step_gen's fixed point (fpga/core/step_ramp.hpp).
+// (fpga.ramp) the ramp's acceleration and start speed (and the S-curve's jerk) in step_gen's fixed point (fpga/core/step_ramp.hpp).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -15,9 +15,11 @@ struct InitRegisters {
     std::uint32_t num_y = 0;
     std::uint32_t ramp_accel = 0;  // with the ramp only
     std::uint32_t ramp_start = 0;
+    std::uint32_t ramp_jerk = 0;  // with the S-curve only
 };
 
-// cnc::BadInput naming the key if the ramp's acceleration or start speed does not fit its register.
+// cnc::BadInput naming the key if the ramp's acceleration, start speed or jerk does not fit its register, or the
+// S-curve's jerk phase would be shorter than a clock.
 [[nodiscard]] InitRegisters init_registers(const Scenario& s, const FpgaUartSettings& f);
 
 // The init packet's bytes, without the packet check's CRC.

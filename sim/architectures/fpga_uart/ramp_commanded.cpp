@@ -15,6 +15,18 @@ constexpr double kSecondsPerMinute = 60.0;
 // Below every step's spacing at the start speed, so that no axis turns twice between two scan points.
 constexpr TimePs kScanStepPs = 100 * kPsPerUs;
 
+// The S-curve step_gen plans for the move, on the FPGA's clock of `hz`.
+RampProfile scurve_profile(const fpga::RampInputs& ramp, double hz) {
+    const std::uint64_t start = fpga::ramp_start_velocity(ramp);
+    const fpga::ScurvePlan plan = fpga::plan_scurve(start, ramp.cruise, ramp.accel_reg, ramp.jerk_reg, ramp.abs_dom);
+    const double one = static_cast<double>(fpga::kPhaseOne);
+    RampProfile::SCurve climb;
+    climb.jerk_steps_per_s3 = std::ldexp(static_cast<double>(ramp.jerk_reg), -fpga::kJerkShift) / one * hz * hz * hz;
+    climb.jerk_s = static_cast<double>(plan.jerk_clocks) / hz;
+    climb.top_s = static_cast<double>(plan.top_clocks) / hz;
+    return {static_cast<double>(ramp.abs_dom), static_cast<double>(start) / one * hz, climb};
+}
+
 }  // namespace
 
 RampProfile::RampProfile(double steps, double start_steps_per_s, double accel_steps_per_s2, double cruise_steps_per_s)
@@ -37,26 +49,60 @@ RampProfile::RampProfile(double steps, double start_steps_per_s, double accel_st
     m_cruise_s = (between - 2 * m_ramp_steps) / m_peak;
 }
 
+RampProfile::RampProfile(double steps, double start_steps_per_s, const SCurve& climb)
+    : m_steps(steps),
+      m_start(start_steps_per_s),
+      m_accel(climb.jerk_steps_per_s3 * climb.jerk_s),
+      m_jerk_s(climb.jerk_s) {
+    m_ramp_s = 2 * climb.jerk_s + climb.top_s;
+    m_peak = m_start + m_accel * (climb.jerk_s + climb.top_s);
+    // The climb's mean speed is halfway (its acceleration reads the same from either end).
+    m_ramp_steps = (m_start + m_peak) / 2 * m_ramp_s;
+    m_cruise_s = std::max(std::max(steps - 1.0, 0.0) - 2 * m_ramp_steps, 0.0) / m_peak;
+}
+
+// The descent mirrors the climb in time, and the climb's acceleration is symmetric, so the speed the descent has
+// lost s seconds in is what the climb had gained: both use gained() from their own start.
+double RampProfile::gained(double tau_s) const {
+    if (tau_s < m_jerk_s) return m_accel / m_jerk_s * tau_s * tau_s / 2;
+    const double top_end_s = m_ramp_s - m_jerk_s;
+    if (tau_s <= top_end_s) return m_accel * m_jerk_s / 2 + m_accel * (tau_s - m_jerk_s);
+    const double left_s = m_ramp_s - tau_s;
+    return m_peak - m_start - m_accel / m_jerk_s * left_s * left_s / 2;
+}
+
+double RampProfile::gained_distance(double tau_s) const {
+    if (tau_s < m_jerk_s) return m_accel / m_jerk_s * tau_s * tau_s * tau_s / 6;
+    const double top_end_s = m_ramp_s - m_jerk_s;
+    const double jerk_steps = m_accel * m_jerk_s * m_jerk_s / 6;
+    if (tau_s <= top_end_s) {
+        const double top = tau_s - m_jerk_s;
+        return jerk_steps + m_accel * m_jerk_s / 2 * top + m_accel * top * top / 2;
+    }
+    const double left_s = m_ramp_s - tau_s;
+    return (m_peak - m_start) * (m_ramp_s / 2 - left_s) + m_accel / m_jerk_s * left_s * left_s * left_s / 6;
+}
+
 double RampProfile::position(double tau_s) const {
     if (tau_s < 0.0) return 0.0;
     double p = 0.5;
     const double up = std::min(tau_s, m_ramp_s);
-    p += m_start * up + m_accel * up * up / 2;
+    p += m_start * up + gained_distance(up);
     if (tau_s <= m_ramp_s) return p;
     const double cruise = std::min(tau_s - m_ramp_s, m_cruise_s);
     p += m_peak * cruise;
     if (tau_s <= m_ramp_s + m_cruise_s) return p;
     const double down = std::min(tau_s - m_ramp_s - m_cruise_s, m_ramp_s);
-    p += m_peak * down - m_accel * down * down / 2;
+    p += m_peak * down - gained_distance(down);
     if (tau_s <= 2 * m_ramp_s + m_cruise_s) return p;
     return std::min(p + m_start * (tau_s - 2 * m_ramp_s - m_cruise_s), m_steps);
 }
 
 double RampProfile::velocity(double tau_s) const {
     if (tau_s < 0.0 || tau_s >= duration_s()) return 0.0;
-    if (tau_s <= m_ramp_s) return m_start + m_accel * tau_s;
+    if (tau_s <= m_ramp_s) return m_start + gained(tau_s);
     if (tau_s <= m_ramp_s + m_cruise_s) return m_peak;
-    if (tau_s <= 2 * m_ramp_s + m_cruise_s) return m_peak - m_accel * (tau_s - m_ramp_s - m_cruise_s);
+    if (tau_s <= 2 * m_ramp_s + m_cruise_s) return m_peak - gained(tau_s - m_ramp_s - m_cruise_s);
     return m_start;
 }
 
@@ -93,9 +139,12 @@ void RampCommanded::add(const fpga::PacketRecord& r, const ClockGrid& clock) {
     const std::size_t dom = x_dominant ? 0 : 1;
     const auto hz = static_cast<double>(clock.hz());
     const double one = static_cast<double>(fpga::kPhaseOne);
-    const RampProfile profile(
-        ramp.abs_dom, static_cast<double>(std::uint64_t{ramp.start_reg} << fpga::kStartShift) / one * hz,
-        static_cast<double>(ramp.accel_reg) / one * hz * hz, r.feed / kSecondsPerMinute * m_steps_per_mm[dom]);
+    const double start = static_cast<double>(std::uint64_t{ramp.start_reg} << fpga::kStartShift) / one * hz;
+    const RampProfile profile =
+        m_cfg.ramp == fpga::StepRamp::SCurve
+            ? scurve_profile(ramp, hz)
+            : RampProfile(ramp.abs_dom, start, static_cast<double>(ramp.accel_reg) / one * hz * hz,
+                          r.feed / kSecondsPerMinute * m_steps_per_mm[dom]);
 
     const std::int64_t run_start = clock.last_at_or_before(r.t_run_start_ps);
     const TimePs t0_ps = clock.at(run_start);

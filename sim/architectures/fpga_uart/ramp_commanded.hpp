@@ -18,13 +18,25 @@
 
 namespace cnc::sim::fpga_uart {
 
-// One move's trapezoid along its dominant axis, in steps from its start: the first step rises at t0 (position
-// 1/2, the level a rounding quantiser steps at), the velocity climbs from the start speed at the acceleration to
-// the move's programmed rate (or to where a short move turns round, half its steps on), holds, and falls back the
-// same way to the start speed at the last step (position N - 1/2), which it keeps for the last half step.
+// One move's trapezoid or S-curve along its dominant axis, in steps from its start: the first step rises at t0
+// (position 1/2, the level a rounding quantiser steps at), the velocity climbs from the start speed to the move's
+// programmed rate (or to where a short move turns round, half its steps on), holds, and falls back the same way
+// (the time-mirror of the climb) to the start speed at the last step (position N - 1/2), which it keeps for the
+// last half step. The trapezoid climbs at the acceleration; the S-curve's acceleration grows at the jerk for its
+// jerk time, holds for its top time and falls back to zero.
 class RampProfile {
 public:
+    // The trapezoid's climb: to the cruise, or to where a short move turns round.
     RampProfile(double steps, double start_steps_per_s, double accel_steps_per_s2, double cruise_steps_per_s);
+
+    // The S-curve's climb as step_gen planned it (fpga/core/scurve_plan.hpp): it reaches start + jerk x jerk_s x
+    // (jerk_s + top_s) and cruises there.
+    struct SCurve {
+        double jerk_steps_per_s3 = 0.0;
+        double jerk_s = 0.0;
+        double top_s = 0.0;
+    };
+    RampProfile(double steps, double start_steps_per_s, const SCurve& climb);
 
     // Position [steps] and velocity [steps/s] tau seconds after the first step (0 before it, steps after the end).
     [[nodiscard]] double position(double tau_s) const;
@@ -34,9 +46,14 @@ public:
     [[nodiscard]] double duration_s() const { return 2 * m_ramp_s + m_cruise_s + 0.5 / m_start; }
 
 private:
+    // The climb's velocity over the start speed and its integral, tau seconds into the climb (0 <= tau <= m_ramp_s).
+    [[nodiscard]] double gained(double tau_s) const;
+    [[nodiscard]] double gained_distance(double tau_s) const;
+
     double m_steps;
     double m_start;       // steps/s
-    double m_accel;       // steps/s^2
+    double m_accel;       // steps/s^2, the climb's top acceleration
+    double m_jerk_s = 0;  // the S-curve's jerk time (0: the trapezoid)
     double m_peak;        // steps/s
     double m_ramp_s;      // each ramp's time
     double m_ramp_steps;  // each ramp's distance

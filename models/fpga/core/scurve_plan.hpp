@@ -1,0 +1,32 @@
+// step_gen's S-curve plan for one move (fpga.ramp = "s-curve", core/step_ramp.hpp has the registers it drives):
+// the clocks n_j of each jerk phase and n_a at the top acceleration, chosen once at the move's start (the DIR
+// settle's 200 clocks leave time for a sequential search). The acceleration then climbs by the jerk register each
+// clock for n_j clocks (never above the acceleration register), holds for n_a clocks and falls back for n_j: the
+// velocity gains jerk x n_j x (n_j + 1 + n_a) in 2^-80 steps per clock before its truncation. The plan is the
+// largest whose gain stays within the cruise's velocity less the start speed (never faster than the packet
+// asks) and whose distance, twice over (the deceleration mirrors it), leaves the move's first and last steps: a
+// move too short for the full acceleration or the cruise gets shorter jerk phases (or none) and no top phase.
+#pragma once
+#include <cstdint>
+
+namespace cnc::fpga {
+
+inline constexpr int kJerkShift = 32;  // the acceleration's fraction bits below the velocity's
+
+struct ScurvePlan {
+    std::int64_t jerk_clocks = 0;  // n_j
+    std::int64_t top_clocks = 0;   // n_a
+    std::uint32_t jerk_reg = 0;
+
+    [[nodiscard]] std::int64_t clocks() const { return 2 * jerk_clocks + top_clocks; }  // T
+    // The velocity's increment after the acceleration's clock i (0 <= i < T), 2^-48 steps per clock; it reads the
+    // same from either end.
+    [[nodiscard]] std::uint64_t increment(std::int64_t i) const;
+};
+
+// start and cruise velocities in 2^-48 steps per clock, the acceleration register in 2^-48 steps per clock^2, the
+// jerk register in 2^-80 steps per clock^3 (> 0), abs_dom the dominant axis' steps.
+[[nodiscard]] ScurvePlan plan_scurve(std::uint64_t start, std::uint64_t cruise, std::uint32_t accel_reg,
+                                     std::uint32_t jerk_reg, std::uint32_t abs_dom);
+
+}  // namespace cnc::fpga

@@ -47,7 +47,7 @@ struct FaultLinks {
     bool step_input = false;  // DRV8825s on the machine's pins: faults.step_loss_rate
 };
 
-// A host program on a CP2102 USB-UART link to a controller that drives DRV8825s (fpga-uart, atmega, grbl).
+// A host program on a CP2102 USB-UART link to a controller that drives DRV8825s.
 [[nodiscard]] inline FaultLinks serial_host_links() {
     FaultLinks links;
     links.uart = true;

@@ -15,8 +15,8 @@ position on the step grid (origin 0,0, steps/mm from the report's scenario secti
   next move's first edge). The report rounds feed error to 1e-4 %: it must agree within 1.5e-4 %. A move whose
   position never lands on its end (an atmega axis that is not counted), or that has an axis with a single edge
   (its period is not in the trace), is not compared.
-- spi-fpga (planner: ramps and blended corners) and fpga-uart with its ramp (fpga.ramp: a planner in step_gen,
-  ramps at every move): the middle half of a move, the edges after the move before's
+- spi-fpga (planner: ramps and blended corners) and fpga-uart with its ramps (fpga.ramp trapezoidal or s-curve: a
+  planner in step_gen, ramps at every move): the middle half of a move, the edges after the move before's
   middle whose position lies within 0.05 mm of the move's path at 25 % to 75 % of its length (an arc: by angle
   from its start). Feed = path length between the first and last of those positions (projected onto the path) /
   the time between them. Where the move runs at constant feed (the two halves of the middle within 0.5 % of each
@@ -252,7 +252,7 @@ def compare_feeds(scenario, arch, report, vcd, require_all):
     changes, scale_ps = read_vcd(vcd)
     events = step_events(changes, scale_ps, arch)
     planner = arch == "spi-fpga" or (arch == "fpga-uart" and
-                                      re.search(r'^ramp\s*=\s*"trapezoidal"', toml, re.M) is not None)
+                                      re.search(r'^ramp\s*=\s*"(trapezoidal|s-curve)"', toml, re.M) is not None)
     edges = planner_feeds(events, moves, spm) if planner else strict_feeds(events, moves, spm)
     cols = r["metrics"]["moves"]
     feed_of = {move[0]: move[6] for move in moves}

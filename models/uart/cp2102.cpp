@@ -24,8 +24,8 @@ Cp2102::Cp2102(const sc_core::sc_module_name& name, const Cp2102Config& cfg)
       m_cfg(cfg),
       m_baud(cp2102_baud(cfg.requested_baud, cfg.ideal_baud)),
       m_clk(m_baud.bit_clock()),
-      m_spikes_out(cfg.usb_spikes, cfg.usb_spike_seed, 0),
-      m_spikes_in(cfg.usb_spikes, cfg.usb_spike_seed, 1),
+      m_out{UsbSpikeDraw(cfg.usb_spikes, cfg.usb_spike_seed, 0)},
+      m_in{UsbSpikeDraw(cfg.usb_spikes, cfg.usb_spike_seed, 1)},
       m_rx_line{"rxd", true, {}} {
     validate(cfg.format);
     if (cfg.usb_frame_ps <= 0) throw BadInput("", "USB frame period must be > 0");
@@ -57,24 +57,22 @@ void Cp2102::wait_until(TimePs t_ps) {
     if (t_ps > now) wait(ps(t_ps - now));
 }
 
-TimePs Cp2102::spiked(TimePs t_frame_ps, TimePs t_due_ps, const UsbSpikeDraw& draw, TimePs& last_ps,
-                      std::int64_t& last_frame, std::int64_t& spikes, TimePs& delay_ps) {
+TimePs Cp2102::spiked(SpikedPipe& pipe, TimePs t_frame_ps, TimePs t_due_ps, std::int64_t& spikes, TimePs& delay_ps) {
     const std::int64_t frame = t_frame_ps / m_cfg.usb_frame_ps;
-    const TimePs extra = draw.extra_ps(frame);
-    if (extra > 0 && frame != last_frame) {
+    const TimePs extra = pipe.draw.extra_ps(frame);
+    if (extra > 0 && frame != pipe.last_frame) {
         ++spikes;
         delay_ps += extra;
     }
-    last_frame = frame;
-    last_ps = std::max(last_ps, t_due_ps + extra);
-    return last_ps;
+    pipe.last_frame = frame;
+    pipe.last_ps = std::max(pipe.last_ps, t_due_ps + extra);
+    return pipe.last_ps;
 }
 
 void Cp2102::usb_write(const std::uint8_t* data, std::size_t n) {
     const TimePs now = now_ps();
     const TimePs t_frame = next_frame_start(now, m_cfg.usb_frame_ps);
-    const TimePs t_usb = spiked(t_frame, t_frame, m_spikes_out, m_last_out_ps, m_last_out_frame, m_stats.usb_spikes_out,
-                                m_stats.usb_spike_delay_out_ps);
+    const TimePs t_usb = spiked(m_out, t_frame, t_frame, m_stats.usb_spikes_out, m_stats.usb_spike_delay_out_ps);
     for (std::size_t i = 0; i < n; ++i) m_usb_out.push_back({data[i], now, t_usb});
     if (n > 0) m_usb_out_ev.notify(ps(t_usb - now));  // an earlier pending notification is kept
 }
@@ -183,8 +181,8 @@ void Cp2102::rx_decide() {
         return;
     }
     const TimePs t_usb = next_frame_start(f.t_stop_end_ps, m_cfg.usb_frame_ps);
-    const TimePs t_visible = spiked(t_usb, t_usb + m_cfg.usb_latency_ps, m_spikes_in, m_last_in_ps, m_last_in_frame,
-                                    m_stats.usb_spikes_in, m_stats.usb_spike_delay_in_ps);
+    const TimePs t_visible =
+        spiked(m_in, t_usb, t_usb + m_cfg.usb_latency_ps, m_stats.usb_spikes_in, m_stats.usb_spike_delay_in_ps);
     m_usb_in.push_back({f.byte, t_usb, t_visible});
     log_rx({f.byte, m_rx_fall_ps, f.t_stop_end_ps, t_visible, false});
     m_rx_deliver_ev.notify(ps(t_visible - now));  // an earlier pending notification is kept

@@ -117,20 +117,22 @@ private:
     void rx_deliver();       // SC_METHOD: received bytes become visible to the host
     void wait_until(TimePs t_ps);
     void log_rx(const RxByte& b);
-    // The time the data of the USB frame starting at t_frame_ps reaches its end, its spike included, never before
-    // the data of an earlier frame (a bulk pipe keeps its order); counts the frame's spike once.
-    TimePs spiked(TimePs t_frame_ps, TimePs t_due_ps, const UsbSpikeDraw& draw, TimePs& last_ps,
-                  std::int64_t& last_frame, std::int64_t& spikes, TimePs& delay_ps);
+    // One direction of the USB link with its latency spikes (Cp2102Config::usb_spikes).
+    struct SpikedPipe {
+        UsbSpikeDraw draw;
+        TimePs last_ps = 0;            // the last data's arrival at the pipe's end
+        std::int64_t last_frame = -1;  // the USB frame that carried it
+    };
+    // The time the data of the USB frame starting at t_frame_ps, due at t_due_ps, reaches the pipe's end, its spike
+    // included, never before the data of an earlier frame (a bulk pipe keeps its order); counts the frame's spike
+    // once, in `spikes` and `delay_ps`.
+    TimePs spiked(SpikedPipe& pipe, TimePs t_frame_ps, TimePs t_due_ps, std::int64_t& spikes, TimePs& delay_ps);
 
     Cp2102Config m_cfg;
     Cp2102Baud m_baud;
     BitClock m_clk;
-    UsbSpikeDraw m_spikes_out;
-    UsbSpikeDraw m_spikes_in;
-    TimePs m_last_out_ps = 0;  // the last OUT data's arrival at the chip
-    TimePs m_last_in_ps = 0;   // the last IN data's arrival at the host
-    std::int64_t m_last_out_frame = -1;
-    std::int64_t m_last_in_frame = -1;
+    SpikedPipe m_out;  // host to chip
+    SpikedPipe m_in;   // chip to host
 
     std::deque<UsbOutByte> m_usb_out;  // written by the host, not yet at the chip
     std::deque<UsbOutByte> m_tx_fifo;

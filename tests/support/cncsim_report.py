@@ -91,3 +91,12 @@ def check_ramped_run(report, what, full_steps_per_mm):
     check(end_um < 1000.0 / full_steps_per_mm / 2, "with the %s the tool ends %.1f um off the programmed point"
           % (what, end_um))
     return end_um
+
+
+def check_ramp_cost(ramped, seed, predicted_s, moves, start_step_s, what):
+    """The motion time the ramped run RAMPED adds over SEED's is PREDICTED_S (computed by the test for MOVES moves),
+    within a step at the start speed (START_STEP_S) per move; returns the measured cost."""
+    measured = ramped["metrics"]["job"]["motion_time_s"] - seed["metrics"]["job"]["motion_time_s"]
+    check(abs(measured - predicted_s) < moves * start_step_s,
+          "the %s cost %.4f s of motion, %.4f s predicted" % (what, measured, predicted_s))
+    return measured

@@ -15,7 +15,7 @@ std::uint32_t SpiBitFaults::apply(SpiDirection dir, std::vector<std::uint8_t>& f
     const auto d = static_cast<std::size_t>(dir);
     std::uint32_t flipped = 0;
     for (std::size_t k = 0; k < 8 * frame.size(); ++k) {
-        if (m_ber > 0.0 && unit_draw(m_keys[d], m_next_bit[d] + k) < m_ber) {
+        if (unit_draw(m_keys[d], m_next_bit[d] + k) < m_ber) {
             frame[k / 8] = static_cast<std::uint8_t>(frame[k / 8] ^ (0x80U >> (k % 8)));
             ++flipped;
         }

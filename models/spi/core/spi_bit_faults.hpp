@@ -15,7 +15,6 @@ class SpiBitFaults {
 public:
     SpiBitFaults(double ber, std::uint64_t seed);
 
-    [[nodiscard]] bool any() const { return m_ber > 0.0; }
     // Inverts the bits that the draws of `dir` hit in the next frame of that direction (the link's bits numbered
     // over the run, MSB of byte 0 first); returns how many.
     std::uint32_t apply(SpiDirection dir, std::vector<std::uint8_t>& frame);

@@ -208,9 +208,9 @@ public:
         if (m_whole_logs) take_board_lines(rec, m_pins->driven(), lines);
     }
     void report(ArchRun& run, const RunBudget& budget, const SimulationEnd& end) override;
-    void report_faults(ArchRun& run) const;
 
 private:
+    void report_faults(ArchRun& run) const;
     // Why the link does not work, once it is clear; the PC program's protocol check names the firmware it checked.
     [[nodiscard]] std::optional<std::string> link_failure() const {
         return board_link_failure(m_mcu, m_cp2102,

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "architectures/serial_host/host_faults.hpp"
 #include "common/clock_grid.hpp"
 #include "uart/core/cp2102_baud.hpp"
 
@@ -19,15 +20,13 @@ TimePs start_tolerance_ps(const ClockGrid& receiver) {
 }
 
 nlohmann::json direction_json(const uart::FaultyLineStats& line, const uart::FrameMatch& m) {
-    return {{"frames", line.frames},
-            {"frames_hit", line.frames_hit},
-            {"frames_lost", line.frames_lost},
-            {"bits_inverted", line.bits_inverted},
-            {"bytes_as_sent", m.as_sent},
-            {"bytes_wrong", m.wrong},
-            {"bytes_lost", m.lost},
-            {"bytes_extra", m.extra_frames},
-            {"framing_errors_flagged", m.framing_flagged}};
+    nlohmann::json j = faulty_line_json(line);
+    j.update({{"bytes_as_sent", m.as_sent},
+              {"bytes_wrong", m.wrong},
+              {"bytes_lost", m.lost},
+              {"bytes_extra", m.extra_frames},
+              {"framing_errors_flagged", m.framing_flagged}});
+    return j;
 }
 
 std::string direction_text(const char* what, const uart::FaultyLineStats& line, const uart::FrameMatch& m) {

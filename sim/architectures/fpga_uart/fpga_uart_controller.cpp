@@ -753,13 +753,6 @@ void FpgaUartController::report(ArchRun& run, const RunBudget& budget, const Sim
     }
 }
 
-nlohmann::json line_json(const uart::FaultyLineStats& l) {
-    return {{"frames", l.frames},
-            {"frames_hit", l.frames_hit},
-            {"frames_lost", l.frames_lost},
-            {"bits_inverted", l.bits_inverted}};
-}
-
 nlohmann::json fields_json(const fpga::MotionFields& f) {
     return {{"motion", f.motion}, {"steps", {f.steps_x, f.steps_y}}, {"feed", f.feed}};
 }
@@ -788,8 +781,8 @@ void FpgaUartController::report_faults(ArchRun& run, std::ostringstream& text) c
     run.details["faults"] = {{"seed", m_s.faults.seed},
                              {"uart_ber", m_s.faults.uart.ber},
                              {"uart_frame_loss_rate", m_s.faults.uart.frame_loss_rate},
-                             {"to_fpga", line_json(to)},
-                             {"from_fpga", line_json(from)},
+                             {"to_fpga", faulty_line_json(to)},
+                             {"from_fpga", faulty_line_json(from)},
                              {"host_stall", host_stall_json(stall, m_sender.stalled_ps())},
                              {"packets",
                               {{"sent", f.sent},

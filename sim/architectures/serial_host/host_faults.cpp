@@ -5,6 +5,13 @@
 
 namespace cnc::sim {
 
+nlohmann::json faulty_line_json(const uart::FaultyLineStats& line) {
+    return {{"frames", line.frames},
+            {"frames_hit", line.frames_hit},
+            {"frames_lost", line.frames_lost},
+            {"bits_inverted", line.bits_inverted}};
+}
+
 uart::Cp2102Config with_usb_spikes(uart::Cp2102Config link, const FaultSettings& f) {
     link.usb_spikes = f.usb_spikes;
     link.usb_spike_seed = f.seed;

@@ -1,4 +1,4 @@
-// The faults of a serial host's side of the link: the USB latency spikes (faults.usb_spike_*) on the CP2102 of every
+// The faults of a serial link as the report shows them: the frames a faulty wire hit, the USB latency spikes (faults.usb_spike_*) on the CP2102 of every
 // architecture with a USB serial link, and the host program's stall (faults.host_stall_*), and what they did, as the
 // report shows them.
 #pragma once
@@ -12,8 +12,12 @@
 #include "scenario/fault_settings.hpp"
 #include "uart/core/cp2102_config.hpp"
 #include "uart/cp2102.hpp"
+#include "uart/faulty_line.hpp"
 
 namespace cnc::sim {
+
+// The frames a faulty UART wire carried and hit (uart/faulty_line.hpp), as every report with line faults shows them.
+[[nodiscard]] nlohmann::json faulty_line_json(const uart::FaultyLineStats& line);
 
 // `link` with the spikes of `f`, drawn from faults.seed.
 [[nodiscard]] uart::Cp2102Config with_usb_spikes(uart::Cp2102Config link, const FaultSettings& f);

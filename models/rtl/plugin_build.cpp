@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
@@ -34,6 +35,8 @@ void write_text(const fs::path& p, const std::string& text) {
     out << text;
 }
 
+std::string cxx_flags();
+
 // FNV-1a, 64 bits: a stable key across runs and builds (std::hash is not promised to be).
 struct Fnv {
     std::uint64_t h = 1469598103934665603ULL;
@@ -51,9 +54,11 @@ std::string cache_key(const PluginSpec& spec) {
     Fnv f;
     f.add(std::to_string(kAbiVersion));
     f.add(CNC_VERILATOR_BIN);
-    f.add(CNC_RTL_CXX);
     // What this cncsim writes around the design (a change to the shim's generator is another plug-in).
-    f.add(shim_source(spec, kPrefix, std::vector<bool>(spec.observed.size(), true)));
+    for (const bool rising_only : {false, true}) {
+        f.add(shim_source(spec, kPrefix, std::vector<bool>(spec.observed.size(), true), rising_only));
+    }
+    f.add(cxx_flags());
     f.add(read_text(fs::path(CNC_MODELS_DIR) / "rtl" / "rtl_model.hpp"));
     f.add(spec.top_module);
     for (const std::string& src : spec.sources) {
@@ -112,10 +117,13 @@ void verilate(const PluginSpec& spec, const fs::path& dir) {
     }
 }
 
+// The design and the shim are compiled as one translation unit with symbols hidden: Verilator's many small
+// functions are then inlined into the clock loop (a shared library's exported functions are not).
 std::string cxx_flags() {
     const std::string inc = std::string(CNC_VERILATOR_ROOT) + "/include";
-    return std::string(CNC_RTL_CXX) + " -std=c++17 -O2 -fPIC -w -pthread -I" + quoted(inc) + " -I" +
-           quoted(inc + "/vltstd");
+    return std::string(CNC_RTL_CXX) +
+           " -std=c++17 -O3 -fPIC -fvisibility=hidden -fno-semantic-interposition -w -pthread -I" + quoted(inc) +
+           " -I" + quoted(inc + "/vltstd");
 }
 
 void compile_step(const std::string& what, const std::string& cmd, const fs::path& log) {
@@ -130,7 +138,7 @@ void compile_step(const std::string& what, const std::string& cmd, const fs::pat
 fs::path runtime_library() {
     Fnv f;
     f.add(CNC_VERILATOR_ROOT);
-    f.add(CNC_RTL_CXX);
+    f.add(cxx_flags());
     std::ostringstream hex;
     hex << "runtime-" << std::hex << f.h;
     const fs::path dir = fs::path(rtl_cache_dir()) / hex.str();
@@ -156,13 +164,34 @@ fs::path runtime_library() {
     return lib;
 }
 
-void compile(const PluginSpec& spec, const fs::path& dir, const std::vector<bool>& present) {
-    write_text(dir / "shim.cpp", shim_source(spec, kPrefix, present));
+// Verilator's C++ of the design, file by file in name order.
+std::vector<fs::path> generated_sources(const fs::path& dir) {
+    std::vector<fs::path> files;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir / "obj")) {
+        if (e.path().extension() == ".cpp") files.push_back(e.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+bool design_rising_edge_only(const PluginSpec& spec, const fs::path& dir) {
+    std::string sources;
+    for (const fs::path& f : generated_sources(dir)) sources += read_text(f);
+    return rising_edge_only(read_text(dir / "obj" / (std::string(kPrefix) + "___024root.h")), sources, kPrefix,
+                            spec.clock);
+}
+
+void compile(const PluginSpec& spec, const fs::path& dir, const std::vector<bool>& present, bool rising_only) {
+    write_text(dir / "shim.cpp", shim_source(spec, kPrefix, present, rising_only));
+    std::string unit;
+    for (const fs::path& f : generated_sources(dir)) unit += "#include \"obj/" + f.filename().string() + "\"\n";
+    unit += "#include \"shim.cpp\"\n";
+    write_text(dir / "unit.cpp", unit);
     const fs::path runtime = runtime_library();
     compile_step("the verilated " + spec.top_module,
                  cxx_flags() + " -shared -I" + quoted((dir / "obj").string()) + " -I" + quoted(CNC_MODELS_DIR) + " " +
-                     quoted((dir / "obj").string()) + "/*.cpp " + quoted((dir / "shim.cpp").string()) + " " +
-                     quoted(runtime.string()) + " -o " + quoted((dir / "model.so").string()),
+                     quoted((dir / "unit.cpp").string()) + " " + quoted(runtime.string()) + " -o " +
+                     quoted((dir / "model.so").string()),
                  dir / "compile.log");
 }
 
@@ -192,6 +221,7 @@ BuiltPlugin build_plugin(const PluginSpec& spec) {
     if (fs::is_regular_file(entry / "model.so")) {
         built.library = (entry / "model.so").string();
         built.observed_present = observed_in(spec, read_text(entry / "obj" / (std::string(kPrefix) + "___024root.h")));
+        built.rising_edge_only = design_rising_edge_only(spec, entry);
         built.from_cache = true;
         return built;
     }
@@ -205,7 +235,8 @@ BuiltPlugin build_plugin(const PluginSpec& spec) {
         verilate(spec, dir);
         check_ports(spec, parse_verilated_ports(read_text(dir / "obj" / (std::string(kPrefix) + ".h"))));
         built.observed_present = observed_in(spec, read_text(dir / "obj" / (std::string(kPrefix) + "___024root.h")));
-        compile(spec, dir, built.observed_present);
+        built.rising_edge_only = design_rising_edge_only(spec, dir);
+        compile(spec, dir, built.observed_present, built.rising_edge_only);
     } catch (...) {
         fs::remove_all(dir);
         throw;

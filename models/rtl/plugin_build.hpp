@@ -12,6 +12,7 @@ namespace cnc::rtl {
 struct BuiltPlugin {
     std::string library;                // the .so to load
     std::vector<bool> observed_present;  // per PluginSpec::observed: found in the design
+    bool rising_edge_only = false;       // the design is evaluated once per clock period (rising_edge_only())
     bool from_cache = false;
     double build_s = 0.0;  // wall time of Verilator and the compiler (0 from the cache)
 };

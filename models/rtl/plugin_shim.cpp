@@ -19,7 +19,39 @@ std::string public_nets_config(const PluginSpec& spec) {
     return vlt.str();
 }
 
-std::string shim_source(const PluginSpec& spec, const std::string& prefix, const std::vector<bool>& present) {
+namespace {
+
+std::string collapse_spaces(const std::string& text) {
+    std::string out;
+    bool space = false;
+    for (const char c : text) {
+        if (c == ' ' || c == '\n' || c == '\t') {
+            space = true;
+            continue;
+        }
+        if (space && !out.empty()) out += ' ';
+        space = false;
+        out += c;
+    }
+    return out;
+}
+
+}  // namespace
+
+bool rising_edge_only(const std::string& root_header, const std::string& sources, const std::string& prefix,
+                      const std::string& clock) {
+    const std::string prev = "__Vtrigrprev__TOP__" + clock;
+    const std::string code = collapse_spaces(sources);
+    return root_header.find("VlTriggerVec<1> __VactTriggered;") != std::string::npos &&
+           root_header.find(" " + prev + ";") != std::string::npos &&
+           root_header.find("__VicoTriggered") == std::string::npos &&
+           code.find("vlSelf->__VactTriggered.at(0U) = ((IData)(vlSelf->" + clock + ") & (~ (IData)(vlSelf->" + prev +
+                     ")));") != std::string::npos &&
+           code.find("void " + prefix + "___024root___eval(" + prefix + "___024root* vlSelf) {") != std::string::npos;
+}
+
+std::string shim_source(const PluginSpec& spec, const std::string& prefix, const std::vector<bool>& present,
+                        bool rising_only) {
     std::vector<std::string> watched;  // C++ expressions, outputs first
     for (const RtlPort& p : spec.outputs) watched.push_back("m_top." + p.name);
     for (std::size_t i = 0; i < spec.observed.size(); ++i) {
@@ -57,18 +89,28 @@ std::string shim_source(const PluginSpec& spec, const std::string& prefix, const
         s << "            case " << i << ": return static_cast<std::uint64_t>(" << watched[i] << ");\n";
     }
     s << "            default: return 0;\n        }\n    }\n\nprivate:\n"
-      << "    void tick() {\n"
-      << "        m_top." << spec.clock << " = 1;\n        m_top.eval();\n"
-      << "        m_top." << spec.clock << " = 0;\n        m_top.eval();\n    }\n"
-      << "    bool changed(const std::uint64_t* before) const {\n        return false";
-    for (std::size_t i = 0; i < watched.size(); ++i) {
-        s << "\n            || static_cast<std::uint64_t>(" << watched[i] << ") != before[" << i << "]";
+      << "    void tick() {\n        m_top." << spec.clock << " = 1;\n";
+    if (rising_only) {
+        // Nothing reacts to the falling edge: it is only recorded where the trigger looks for it, and the root is
+        // evaluated without eval_step's bookkeeping (a thread-local task id and the threads' message queue: the
+        // model runs on one thread).
+        s << "        " << prefix << "___024root___eval(m_top.rootp);\n"
+          << "        m_top." << spec.clock << " = 0;\n"
+          << "        m_top.rootp->__Vtrigrprev__TOP__" << spec.clock << " = 0;\n    }\n";
+    } else {
+        s << "        m_top.eval();\n        m_top." << spec.clock << " = 0;\n        m_top.eval();\n    }\n";
     }
-    s << ";\n    }\n    VerilatedContext m_ctx;\n    " << prefix << " m_top;\n"
+    // One test per edge for all the watched values, not a branch each.
+    s << "    bool changed(const std::uint64_t* before) const {\n        std::uint64_t diff = 0;\n";
+    for (std::size_t i = 0; i < watched.size(); ++i) {
+        s << "        diff |= static_cast<std::uint64_t>(" << watched[i] << ") ^ before[" << i << "];\n";
+    }
+    s << "        return diff != 0;\n    }\n    VerilatedContext m_ctx;\n    " << prefix << " m_top;\n"
       << "    unsigned char m_state[sizeof(" << prefix << "___024root)];\n    bool m_settled = false;\n};\n\n"
       << "}  // namespace\n\n"
-      << "extern \"C\" cnc::rtl::RtlModel* cncsim_rtl_create() { return new Model(); }\n"
-      << "extern \"C\" int cncsim_rtl_abi() { return cnc::rtl::kAbiVersion; }\n";
+      << "#define CNCSIM_EXPORT extern \"C\" __attribute__((visibility(\"default\")))\n"
+      << "CNCSIM_EXPORT cnc::rtl::RtlModel* cncsim_rtl_create() { return new Model(); }\n"
+      << "CNCSIM_EXPORT int cncsim_rtl_abi() { return cnc::rtl::kAbiVersion; }\n";
     return s.str();
 }
 

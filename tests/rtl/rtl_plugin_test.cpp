@@ -43,6 +43,7 @@ TEST_F(RtlPlugin, ClocksTheDesignAndFindsItsFixedPoint) {
     const BuiltPlugin built = build_plugin(spec);
     EXPECT_FALSE(built.from_cache);
     EXPECT_EQ(built.observed_present, (std::vector<bool>{true, false}));
+    EXPECT_TRUE(built.rising_edge_only);  // one always @(posedge clk): one evaluation per clock period
     const std::unique_ptr<RtlModel> model = load_model(built);
     // Disabled: the count holds, every edge the same state.
     model->set_input(0, 0);
@@ -80,6 +81,30 @@ TEST_F(RtlPlugin, ParametersReachTheDesignAndTheCacheServesItAgain) {
     // An edited source is another design.
     write("counter.v", std::string(kCounter) + "// edited\n");
     EXPECT_FALSE(build_plugin(spec).from_cache);
+}
+
+// A design that also acts on the falling edge is evaluated on both: counted the same on each edge, the falls keep up
+// with the rises (they would stay at 0 if the falling edge were skipped).
+TEST_F(RtlPlugin, AFallingEdgeBlockIsEvaluatedOnItsEdge) {
+    PluginSpec spec = counter_spec(write("edges.v", R"(module edges(
+    input wire clk, input wire enable, output reg [7:0] count, output reg [7:0] falls);
+    initial begin count = 8'd0; falls = 8'd0; end
+    always @(posedge clk) if (enable) count <= count + 8'd1;
+    always @(negedge clk) if (enable) falls <= falls + 8'd1;
+endmodule
+)"));
+    spec.top_module = "edges";
+    spec.outputs = {{"count", 8}, {"falls", 8}};
+    spec.observed.clear();
+    const BuiltPlugin built = build_plugin(spec);
+    EXPECT_FALSE(built.rising_edge_only);
+    const std::unique_ptr<RtlModel> model = load_model(built);
+    model->set_input(0, 1);
+    for (std::uint64_t edges = 1; edges <= 4; ++edges) {
+        EXPECT_EQ(model->run(100), 1U);
+        EXPECT_EQ(model->value(0), edges);
+        EXPECT_EQ(model->value(1), edges);
+    }
 }
 
 TEST_F(RtlPlugin, AVerilatorErrorShowsItsFileAndLine) {

@@ -111,9 +111,16 @@ void RtlLoop::run_thread() {
         }
         m_promised_ps = std::max(now, std::min(m_quiet_until(), now + kMaxAheadPs));
         run_through(m_promised_ps);
-        if (!m_model->settled()) {
+        if (!m_model->settled() && !(m_at_rest && m_at_rest() && !sc_core::sc_pending_activity())) {
             wait(ps(m_clock.at(m_next_edge) - now), input_events);
             continue;
+        }
+        if (!m_model->settled()) {
+            // At rest with nothing left to drive an input: the run ends here. An input changing after all would
+            // find the edges not run.
+            wait(input_events);
+            throw std::logic_error(std::string(name()) + ": an input changed at " + std::to_string(now_ps()) +
+                                   " ps after the design was left at rest with nothing pending");
         }
         // Nothing changes until an input does (an idle design): the edges until then are skipped, and a run whose
         // other models have finished ends here.

@@ -50,6 +50,14 @@ public:
     // batch).
     void inputs_quiet_until(std::function<TimePs()> quiet_until_ps) { m_quiet_until = std::move(quiet_until_ps); }
 
+    // The design changes no output until an input does, read off its nets by the shell. When it holds after the
+    // edges run and nothing else in the simulation is pending, no input can change again: the loop stops clocking,
+    // so that a design that never settles (a free-running counter) ends the run where the event-driven model does,
+    // instead of being clocked to scenario.max_sim_s.
+    void at_rest_when(std::function<bool()> at_rest) { m_at_rest = std::move(at_rest); }
+
+    // Whether the design has the observed net.
+    [[nodiscard]] bool has_net(std::size_t net) const { return m_observed_index[net] >= 0; }
     // An observed net after the edge handed over, and after the edge handed over before it (0 if the design lacks
     // the net).
     [[nodiscard]] std::uint64_t observed(std::size_t net) const { return watched(m_values, net); }
@@ -75,6 +83,7 @@ private:
     std::vector<std::uint64_t> m_read;    // scratch: the values after the edge just run
     std::vector<bool> m_levels;           // per wiring input: the level the model samples
     std::function<TimePs()> m_quiet_until;
+    std::function<bool()> m_at_rest;
     std::int64_t m_next_edge = 0;
     TimePs m_promised_ps = 0;  // no input changes before this time
     TimedWriter m_writer;

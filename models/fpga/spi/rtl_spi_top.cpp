@@ -1,5 +1,7 @@
 #include "fpga/spi/rtl_spi_top.hpp"
 
+#include <vector>
+
 #include "common/sc_time.hpp"
 #include "fpga/spi/core/spi_rtl_design.hpp"
 
@@ -21,7 +23,20 @@ RtlSpiTop::RtlSpiTop(const sc_core::sc_module_name& name, const SpiFpgaConfig& c
                {&step_y, kSpiRtlOutStepY},
                {&dir_y, kSpiRtlOutDirY},
                {&laser, kSpiRtlOutLaser}}},
-             [this](std::int64_t n) { on_edge(n); }) {}
+             [this](std::int64_t n) { on_edge(n); }) {
+    const std::vector<SpiRtlNet> rest_nets = {kSpiNetAvailX,   kSpiNetAvailY,   kSpiNetRunningX,
+                                              kSpiNetRunningY, kSpiNetDirPendX, kSpiNetDirPendY};
+    // A user's design without these nets is clocked to the end of the run.
+    for (const SpiRtlNet n : rest_nets) {
+        if (!m_loop.has_net(n)) return;
+    }
+    m_loop.at_rest_when([this, rest_nets] {
+        for (const SpiRtlNet n : rest_nets) {
+            if (m_loop.observed(n) != 0) return false;
+        }
+        return m_loop.port(kSpiRtlOutStepX) == 0 && m_loop.port(kSpiRtlOutStepY) == 0;
+    });
+}
 
 SpiNets RtlSpiTop::nets(bool before) const {
     const auto net = [&](SpiRtlNet i) { return before ? m_loop.observed_before(i) : m_loop.observed(i); };

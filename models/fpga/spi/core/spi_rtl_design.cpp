@@ -39,7 +39,11 @@ rtl::PluginSpec spi_rtl_plugin_spec(const SpiFpgaConfig& cfg, const rtl::Design&
                      {"spi_cmd_fifo", "cmd_fifo.rix", "rix"},
                      {"spi_cmd_fifo", "cmd_fifo.riy", "riy"},
                      {"spi_cmd_fifo", "cmd_fifo.avail_x", "avail_x"},
-                     {"spi_cmd_fifo", "cmd_fifo.avail_y", "avail_y"}};
+                     {"spi_cmd_fifo", "cmd_fifo.avail_y", "avail_y"},
+                     {"spi_pulse_gen", "pulse_gen_x.running", "running"},
+                     {"spi_pulse_gen", "pulse_gen_y.running", "running"},
+                     {"spi_pulse_gen", "pulse_gen_x.dir_pend", "dir_pend"},
+                     {"spi_pulse_gen", "pulse_gen_y.dir_pend", "dir_pend"}};
     return spec;
 }
 

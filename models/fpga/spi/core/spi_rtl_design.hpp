@@ -36,7 +36,13 @@ enum SpiRtlNet : std::size_t {
     kSpiNetReadIndexX,
     kSpiNetReadIndexY,
     kSpiNetAvailX,
-    kSpiNetAvailY
+    kSpiNetAvailY,
+    // pulse_gen's scheduled rise and DIR change: with both clear, the FIFO empty and STEP low the design changes no
+    // output until SPI frames come (RtlLoop::at_rest_when).
+    kSpiNetRunningX,
+    kSpiNetRunningY,
+    kSpiNetDirPendX,
+    kSpiNetDirPendY
 };
 
 // The plug-in to build: the design's sources, its top module (ours: spi_fpga_top), the parameters from `cfg`

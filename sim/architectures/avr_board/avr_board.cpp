@@ -26,7 +26,7 @@ std::optional<FirmwareUsart> check_firmware_rate(const Scenario& s, const uart::
     std::optional<FirmwareUsart> usart = probe_firmware_usart(cfg);
     if (!usart) return usart;
     check_line_rates(s.file + ": link.baud, avr.firmware", cp2102_end(link),
-                     {usart->baud, firmware_name + "'s USART0 at " + usart->text(cfg.f_cpu_hz)});
+                     {usart->baud, firmware_name + "'s USART" + usart->n + " at " + usart->text(cfg.f_cpu_hz)});
     return usart;
 }
 

@@ -28,6 +28,11 @@ inline constexpr std::uint16_t kTccr2 = 0x45;
 inline constexpr std::uint16_t kTcnt2 = 0x44;
 inline constexpr std::uint16_t kOcr2 = 0x43;
 inline constexpr std::uint16_t kAssr = 0x42;
+inline constexpr std::uint16_t kUcsrcUbrrh = 0x40;  // UCSRC when written with URSEL = 1, else UBRRH
+inline constexpr std::uint16_t kUdr = 0x2C;
+inline constexpr std::uint16_t kUcsra = 0x2B;
+inline constexpr std::uint16_t kUcsrb = 0x2A;
+inline constexpr std::uint16_t kUbrrl = 0x29;
 
 inline constexpr int kVecInt0 = 1;  // Table 18: INT0 1, INT1 2
 inline constexpr int kVecInt1 = 2;
@@ -36,5 +41,6 @@ inline constexpr std::uint8_t kIntf1 = 0x80;
 inline constexpr std::uint8_t kPsr2 = 0x02;   // SFIOR.PSR2: Timer2 prescaler reset
 inline constexpr std::uint8_t kPsr10 = 0x01;  // SFIOR.PSR10: Timer0/1 prescaler reset
 inline constexpr std::uint8_t kAs2 = 0x08;    // ASSR.AS2
+inline constexpr std::uint8_t kUrsel = 0x80;  // UCSRC.URSEL: reads 1 in UCSRC, 0 in UBRRH
 
 }  // namespace cnc::avr::reg16

@@ -11,6 +11,7 @@
 #include "avr/atmega328p_regs.hpp"
 #include "avr/core/elf_check.hpp"
 #include "avr/core/intel_hex.hpp"
+#include "avr/core/vector_table.hpp"
 #include "common/bad_input.hpp"
 
 #include <avr_eeprom.h>
@@ -29,12 +30,6 @@ namespace cnc::avr {
 
 namespace {
 
-// ATmega328P USART0 vector numbers (datasheet "Interrupt Vectors in ATmega328P"); the ATmega16's USART is
-// simavr's own (the seed 002 firmware does not use it).
-constexpr int kVecUsartRx = 18;
-constexpr int kVecUsartUdre = 19;
-constexpr int kVecUsartTx = 20;
-
 void quiet_logger(avr_t*, const int level, const char* format, va_list ap) {
     if (level <= LOG_ERROR) std::vfprintf(stderr, format, ap);  // errors only, and to stderr: stdout is cncsim's
 }
@@ -43,6 +38,18 @@ constexpr avr_cycle_count_t kInterruptResponseCycles = 4;
 // Datasheet "Interrupt Response Time": an interrupt that wakes the MCU from sleep takes 4 cycles more, in addition to
 // the sleep mode's start-up time (0 in Idle, whose clocks run on: "Sleep Modes").
 constexpr avr_cycle_count_t kWakeUpCycles = 4;
+
+// The image libsimavr's loader allocates (malloc), freed whatever check refuses it.
+struct LoadedFirmware {
+    elf_firmware_t fw{};
+    LoadedFirmware() { std::memset(&fw, 0, sizeof fw); }
+    ~LoadedFirmware() {
+        std::free(fw.flash);
+        std::free(fw.eeprom);
+    }
+    LoadedFirmware(const LoadedFirmware&) = delete;
+    LoadedFirmware& operator=(const LoadedFirmware&) = delete;
+};
 
 void no_sleep(avr_t*, avr_cycle_count_t) {}  // simavr's default usleep()s to follow the wall clock
 
@@ -89,30 +96,36 @@ AvrChip::AvrChip(const AvrCoreConfig& cfg)
       m_usart(static_cast<UsartSink&>(*this), cfg.keep_usart_logs),
       m_port_hooks(std::make_unique<PortHooks>()) {
     if (cfg.f_cpu_hz == 0) throw BadInput(cfg.where, "the AVR clock frequency must be above 0 Hz");
-    validate(cfg.pins, cfg.where);
+    validate(cfg.pins, cfg.where, m_map.mcu);
     for (std::size_t i = 0; i < kPinSignals.size(); ++i) m_line_pins[i] = cfg.pins.at(kPinSignals[i]);
 
     avr_global_logger_set(quiet_logger);
-    elf_firmware_t fw;
-    std::memset(&fw, 0, sizeof fw);
+    LoadedFirmware loaded;
+    elf_firmware_t& fw = loaded.fw;
     if (is_intel_hex(cfg.firmware_elf)) {
-        // A HEX image says nothing of its MCU or clock: they are the configuration's.
+        // A HEX image says nothing of its clock (the configuration's) and of its MCU but by its vector table.
         std::vector<std::uint8_t> image = load_intel_hex(cfg.firmware_elf, m_map.flash_bytes, cfg.where);
+        check_vector_table(image, m_map.mcu, cfg.firmware_elf, cfg.where, cfg.mcu_key);
         fw.flash = static_cast<std::uint8_t*>(std::malloc(image.size()));
         std::memcpy(fw.flash, image.data(), image.size());
         fw.flashsize = static_cast<std::uint32_t>(image.size());
     } else {
-        (void)check_avr_elf(cfg.firmware_elf, cfg.mcu, cfg.f_cpu_hz, cfg.where);
+        const ElfInfo info = check_avr_elf(cfg.firmware_elf, cfg.mcu, cfg.f_cpu_hz, cfg.where, cfg.mcu_key);
         if (elf_read_firmware(cfg.firmware_elf.c_str(), &fw) != 0)
             throw BadInput(cfg.where, "libsimavr could not load the firmware ELF '" + cfg.firmware_elf + "'");
+        if (fw.flashsize > m_map.flash_bytes)
+            throw BadInput(cfg.where, "firmware '" + cfg.firmware_elf + "' has " + std::to_string(fw.flashsize) +
+                                          " bytes of flash, the " + m_map.display + " " +
+                                          std::to_string(m_map.flash_bytes));
+        if (info.mmcu.empty())
+            check_vector_table(std::vector<std::uint8_t>(fw.flash, fw.flash + fw.flashsize), m_map.mcu,
+                               cfg.firmware_elf, cfg.where, cfg.mcu_key);
     }
     m_avr = avr_make_mcu_by_name(cfg.mcu.c_str());
     if (m_avr == nullptr) throw BadInput(cfg.where, "libsimavr has no MCU '" + cfg.mcu + "'");
     avr_init(m_avr);
     fw.frequency = cfg.f_cpu_hz;
     avr_load_firmware(m_avr, &fw);
-    std::free(fw.flash);
-    std::free(fw.eeprom);
     m_avr->frequency = cfg.f_cpu_hz;
     m_avr->sleep = no_sleep;
     std::uint32_t flags = 0;  // not the default POLL_SLEEP|STDIO (simavr's UART is bypassed, but keep it quiet)
@@ -124,12 +137,10 @@ AvrChip::AvrChip(const AvrCoreConfig& cfg)
     m_timers[2] = std::make_unique<TimerUnit>(kTimer2, m_prescaler2, sink);
     install_hooks();
     if (cfg.fast_forward)
-        // PINx reads the pins (inputs change only between run_until calls), UCSR0A the USART's flags (they change
+        // PINx reads the pins (inputs change only between run_until calls), UCSRnA the USART's flags (they change
         // only at its events); both without side effects.
-        m_skipper = std::make_unique<LoopSkipper>(
-            m_avr, pin_registers(),
-            m_map.mcu == Mcu::Atmega328p ? std::vector<std::uint16_t>{reg::kUcsr0a} : std::vector<std::uint16_t>{},
-            [this] { return quiet_until(); });
+        m_skipper = std::make_unique<LoopSkipper>(m_avr, pin_registers(), std::vector<std::uint16_t>{m_map.usart.ucsra},
+                                                  [this] { return quiet_until(); });
     m_initial[kTxdLine] = true;  // the USART line idles high
     m_level = m_initial;
 }
@@ -159,13 +170,11 @@ void AvrChip::install_hooks() {
                                          std::to_string(n));
         }
     }
-    if (m_map.mcu == Mcu::Atmega328p) {
-        // RXC0 and UDRE0 stay set while their condition holds (sticky); they are re-raised after their vector runs.
-        for (const int n : {kVecUsartRx, kVecUsartUdre}) {
-            avr_int_vector_t* v = m_vectors[static_cast<std::size_t>(n)];
-            v->raise_sticky = 1;
-            avr_irq_register_notify(v->irq + AVR_INT_IRQ_PENDING, Bridge::pending, this);
-        }
+    // RXC and UDRE stay set while their condition holds (sticky); they are re-raised after their vector runs.
+    for (const int n : {m_map.usart.vector_rxc, m_map.usart.vector_udre}) {
+        avr_int_vector_t* v = m_vectors[static_cast<std::size_t>(n)];
+        v->raise_sticky = 1;
+        avr_irq_register_notify(v->irq + AVR_INT_IRQ_PENDING, Bridge::pending, this);
     }
     for (avr_int_vector_t* v : m_vectors) {
         if (v != nullptr) avr_irq_register_notify(v->irq + AVR_INT_IRQ_RUNNING, Bridge::running, this);
@@ -203,22 +212,27 @@ void AvrChip::install_hooks() {
             if (r == 0) take_read(a);  // PINx
         }
     }
+    const UsartRegs& u = m_map.usart;
+    for (const std::uint16_t a : {u.udr, u.ucsra, u.ucsrb, u.ucsrc, u.ubrrl, u.ubrrh}) take_write(a);
+    // Registers whose value is computed when read: UCSRnA, UDRn, and the ATmega16's UBRRH/UCSRC pair.
+    for (const std::uint16_t a : {u.ucsra, u.udr}) take_read(a);
+    if (u.shared_ucsrc()) take_read(u.ucsrc);
+    // Datasheet §20.11 / doc2466 reset values (simavr's UART reset sets TXEN "to allow printf").
+    avr->data[u.ucsra] = m_usart.ucsra();
+    avr->data[u.ucsrb] = m_usart.ucsrb();
+    if (!u.shared_ucsrc()) avr->data[u.ucsrc] = m_usart.ucsrc();
     if (m16) {
         install_atmega16_hooks(take_write, take_read);
         return;
     }
     using namespace reg;
     for (const std::uint16_t a :
-         {kTifr0,  kTifr1,  kTifr2,  kGtccr,  kTccr0a, kTccr0b, kTcnt0,  kOcr0a,  kOcr0b,  kTimsk0, kTimsk1, kTimsk2,
-          kTccr1a, kTccr1b, kTccr1c, kTcnt1l, kTcnt1h, kIcr1l,  kIcr1h,  kOcr1al, kOcr1ah, kOcr1bl, kOcr1bh, kTccr2a,
-          kTccr2b, kTcnt2,  kOcr2a,  kOcr2b,  kAssr,   kUcsr0a, kUcsr0b, kUcsr0c, kUbrr0l, kUbrr0h, kUdr0})
+         {kTifr0,  kTifr1,  kTifr2,  kGtccr,  kTccr0a, kTccr0b, kTcnt0,  kOcr0a, kOcr0b, kTimsk0,
+          kTimsk1, kTimsk2, kTccr1a, kTccr1b, kTccr1c, kTcnt1l, kTcnt1h, kIcr1l, kIcr1h, kOcr1al,
+          kOcr1ah, kOcr1bl, kOcr1bh, kTccr2a, kTccr2b, kTcnt2,  kOcr2a,  kOcr2b, kAssr})
         take_write(a);
-    // Registers whose value is computed when read: TCNTn, Timer1's TEMP pairs, UCSR0A, UDR0.
-    for (const std::uint16_t a : {kTcnt0, kTcnt1l, kTcnt1h, kIcr1l, kIcr1h, kTcnt2, kUcsr0a, kUdr0}) take_read(a);
-    // Datasheet §20.11 reset values (simavr's UART reset sets TXEN0 "to allow printf").
-    avr->data[kUcsr0a] = m_usart.ucsra();
-    avr->data[kUcsr0b] = m_usart.ucsrb();
-    avr->data[kUcsr0c] = m_usart.ucsrc();
+    // Registers whose value is computed when read: TCNTn, Timer1's TEMP pairs.
+    for (const std::uint16_t a : {kTcnt0, kTcnt1l, kTcnt1h, kIcr1l, kIcr1h, kTcnt2}) take_read(a);
 }
 
 void AvrChip::disconnect_external_interrupts() {
@@ -436,7 +450,7 @@ void AvrChip::sync_level_vector(int vector_number, bool flag, Cycle c) {
 
 void AvrChip::vector_cleared(avr_int_vector_t* v) {
     // A level interrupt whose vector was just taken (or cleared) fires again while its condition holds.
-    const bool holds = v->vector == kVecUsartRx ? m_usart.rxc() : m_usart.udre();
+    const bool holds = v->vector == m_map.usart.vector_rxc ? m_usart.rxc() : m_usart.udre();
     if (holds && avr_regbit_get(m_avr, v->enable) != 0) avr_raise_interrupt(m_avr, v);
 }
 
@@ -454,14 +468,14 @@ void AvrChip::vector_entered(avr_int_vector_t* v) {
     } else {
         m_avr->cycle += kInterruptResponseCycles;
     }
-    if (v->vector == kVecUsartTx) m_usart.clear_txc(now());  // §20.6.3: TXC0 clears when its vector runs
+    if (v->vector == m_map.usart.vector_txc) m_usart.clear_txc(now());  // §20.6.3: TXC clears when its vector runs
 }
 
 void AvrChip::usart_flags(Cycle c) {
     disturb();
-    sync_level_vector(kVecUsartRx, m_usart.rxc(), c);
-    sync_level_vector(kVecUsartUdre, m_usart.udre(), c);
-    sync_level_vector(kVecUsartTx, m_usart.txc(), c);
+    sync_level_vector(m_map.usart.vector_rxc, m_usart.rxc(), c);
+    sync_level_vector(m_map.usart.vector_udre, m_usart.udre(), c);
+    sync_level_vector(m_map.usart.vector_txc, m_usart.txc(), c);
 }
 
 void AvrChip::usart_txd(Cycle c, bool level) {

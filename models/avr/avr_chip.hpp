@@ -4,7 +4,7 @@
 //
 // What runs where:
 //   * libsimavr executes the instructions, the interrupt controller, the I/O ports and the other peripherals.
-//   * Timer0, Timer1, Timer2 and USART0 are NOT simavr's: their I/O registers are re-routed (avr->io[] read and write
+//   * Timer0, Timer1, Timer2 and USART0 (the ATmega16's USART) are NOT simavr's: their I/O registers are re-routed (avr->io[] read and write
 //     handlers replaced after avr_init) to TimerUnit / UsartUnit, which are driven by one simavr cycle timer at their
 //     next event. simavr 1.6's own timer model registers no timer when prescaler*(OCR+1) <= 1 (no compare match with
 //     OCR = 0 at /1), drops a TCNT written while the clock is stopped when the clock starts (grbl's step pulse reset
@@ -131,6 +131,9 @@ private:
     // The timer registers both MCUs share (McuMap::timer_regs): false / nullopt for any other address.
     bool write_shared_timer_reg(std::uint16_t addr, std::uint8_t v);
     [[nodiscard]] std::optional<std::uint8_t> read_shared_timer_reg(std::uint16_t addr);
+    // The USART's registers (McuMap::usart, chip_io_usart.cpp): false / nullopt for any other address.
+    bool write_usart_reg(std::uint16_t addr, std::uint8_t v);
+    [[nodiscard]] std::optional<std::uint8_t> read_usart_reg(std::uint16_t addr);
     void install_atmega16_hooks(const std::function<void(std::uint16_t)>& take_write,
                                 const std::function<void(std::uint16_t)>& take_read);
     // §16.3 (328P) / "Accessing 16-bit Registers" (ATmega16): a low byte read latches the high byte in TEMP; a
@@ -192,6 +195,7 @@ private:
     std::array<std::unique_ptr<TimerUnit>, 3> m_timers;
     UsartUnit m_usart;
     std::uint8_t m_temp16 = 0;  // Timer1's TEMP register for 16-bit accesses (§16.3)
+    std::optional<Cycle> m_shared_read_cycle;  // the ATmega16's last read of UBRRH/UCSRC
     avr_t* m_avr = nullptr;
     std::unique_ptr<PortHooks> m_port_hooks;
     std::unique_ptr<LoopSkipper> m_skipper;         // null: fast-forward off

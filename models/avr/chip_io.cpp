@@ -1,4 +1,5 @@
-// The I/O registers of Timer0/1/2, the prescalers, USART0 and the ports, as the AVR core reads and writes them.
+// The I/O registers of Timer0/1/2, the prescalers and the ports, as the AVR core reads and writes them (the USART's:
+// chip_io_usart.cpp).
 #include <cstdio>
 
 #include "avr/atmega328p_regs.hpp"
@@ -174,31 +175,9 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
             t2.write_ocr(c, Channel::B, v);
             data[addr] = v;
             break;
-        case kUdr0:
-            m_usart.write_udr(c, v);
-            break;
-        case kUcsr0a:
-            m_usart.write_ucsra(c, v);
-            break;
-        case kUcsr0b:  // the interrupt enables must be in place when the unit re-raises its flags
-            data[addr] = v;
-            m_usart.write_ucsrb(c, v);
-            data[addr] = m_usart.ucsrb();
-            break;
-        case kUcsr0c:
-            m_usart.write_ucsrc(c, v);
-            data[addr] = v;
-            break;
-        case kUbrr0l:
-            m_usart.write_ubrrl(c, v);
-            data[addr] = v;
-            break;
-        case kUbrr0h:
-            m_usart.write_ubrrh(c, v);
-            data[addr] = m_usart.ubrrh();
-            break;
         default:
-            if (!write_shared_timer_reg(addr, v) && port_reg_index(addr)) port_write(addr, v);
+            if (!write_shared_timer_reg(addr, v) && !write_usart_reg(addr, v) && port_reg_index(addr))
+                port_write(addr, v);
             break;
     }
     reschedule();
@@ -206,20 +185,8 @@ void AvrChip::io_write(std::uint16_t addr, std::uint8_t v) {
 
 std::uint8_t AvrChip::io_read(std::uint16_t addr) {
     if (const auto v = read_shared_timer_reg(addr)) return *v;
-    if (m_map.mcu == Mcu::Atmega16) return port_read(addr);  // the ATmega16's USART is not modelled
-    const Cycle c = now();
-    switch (addr) {
-        case kUcsr0a:
-            m_usart.advance_to(c);
-            return m_usart.ucsra();
-        case kUdr0: {
-            const std::uint8_t v = m_usart.read_udr(c);
-            reschedule();
-            return v;
-        }
-        default:
-            return port_read(addr);
-    }
+    if (const auto v = read_usart_reg(addr)) return *v;
+    return port_read(addr);
 }
 
 void AvrChip::write_timer_flags(std::uint16_t addr, std::uint8_t v) {

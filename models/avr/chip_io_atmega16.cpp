@@ -105,7 +105,8 @@ void AvrChip::io_write_atmega16(std::uint16_t addr, std::uint8_t v) {
             data[addr] = v;
             break;
         default:
-            if (!write_shared_timer_reg(addr, v) && port_reg_index(addr)) port_write(addr, v);
+            if (!write_shared_timer_reg(addr, v) && !write_usart_reg(addr, v) && port_reg_index(addr))
+                port_write(addr, v);
             break;
     }
 }

@@ -70,3 +70,20 @@ TEST(AvrElfCheck, ElfForAnotherClock) {
     EXPECT_NE(e.find("declares F_CPU 16000000 Hz (.mmcu section), the chip runs at 8000000 Hz"), std::string::npos)
         << e;
 }
+
+TEST(AvrElfCheck, ReadsAvrLibcsDeviceNoteWithoutAnMmcuSection) {
+    // avr-libc 2.0's start-up code puts the -mmcu device name in .note.gnu.avr.deviceinfo; both MCUs are avr5, so
+    // the architecture alone cannot tell them apart.
+    const ElfInfo info = check_avr_elf(AVR_FW_NO_MMCU_M16_ELF, "atmega16", 16'000'000, "w");
+    EXPECT_EQ(info.mmcu, "atmega16");
+    EXPECT_EQ(info.frequency_hz, 0U);
+    try {
+        (void)check_avr_elf(AVR_FW_NO_MMCU_M16_ELF, "atmega328p", 16'000'000, "s.toml: avr.firmware", "avr.mcu");
+        FAIL() << "an ATmega16 ELF passed as an ATmega328P's";
+    } catch (const cnc::BadInput& e) {
+        EXPECT_NE(std::string(e.what()).find("was built for atmega16 (its .note.gnu.avr.deviceinfo section), avr.mcu "
+                                             "is atmega328p"),
+                  std::string::npos)
+            << e.what();
+    }
+}

@@ -1,4 +1,4 @@
-// Pin map parsing (avr.pins): ATmega328P port pins and the machine signals they carry.
+// Pin map parsing (avr.pins): the MCU's port pins (ATmega328P or ATmega16) and the machine signals they carry.
 #include <gtest/gtest.h>
 
 #include "avr/core/pin_map.hpp"
@@ -81,4 +81,31 @@ TEST(AvrPinMap, GrblsMapSharesOneEnablePin) {
     EXPECT_NO_THROW(validate(m, "grbl"));
     EXPECT_NO_THROW((void)parse_pin_map("en_x=PC0,en_y=PC0", "s.toml: avr.pins"));
     EXPECT_NE(error_of("en_x=PC1,dir_y=PC1").find("'dir_y' and 'en_x' are both on PC1"), std::string::npos);
+}
+
+// The ATmega16 (avr.mcu = "atmega16") has ports A to D with 8 pins each (doc2466 "Pin Configurations"); the
+// ATmega328P has no port A and no PC7. Our grbl map for it keeps every signal on PORTA but the laser on OC2 (PD7).
+TEST(AvrPinMap, PinsAreTheChosenMcus) {
+    EXPECT_EQ(parse_pin("PA0", "", Mcu::Atmega16), (Pin{'A', 0}));
+    EXPECT_EQ(parse_pin("PC7", "", Mcu::Atmega16), (Pin{'C', 7}));
+    const auto error_for = [](const std::string& text, Mcu mcu) {
+        try {
+            (void)parse_pin_map(text, "s.toml: avr.pins", default_pin_map(), mcu);
+        } catch (const cnc::BadInput& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(error_for("step_x=PA0", Mcu::Atmega328p).find("'PA0' names a port the ATmega328P does not have"),
+              std::string::npos);
+    const std::string e = error_for("head=PE2", Mcu::Atmega16);
+    EXPECT_NE(e.find("'PE2' names a port the ATmega16 does not have (ATmega16 pins: PA0..PA7, PB0..PB7, PC0..PC7, "
+                     "PD2..PD7)"),
+              std::string::npos)
+        << e;
+    EXPECT_NE(error_for("step_x=PD1", Mcu::Atmega16).find("TXD"), std::string::npos);
+    const PinMap m = grbl_atmega16_pin_map();
+    EXPECT_EQ(m.to_string(), "step_x=PA0,dir_x=PA2,en_x=PA4,step_y=PA1,dir_y=PA3,en_y=PA4,head=PD7");
+    EXPECT_NO_THROW(validate(m, "grbl", Mcu::Atmega16));
+    EXPECT_THROW(validate(m, "grbl", Mcu::Atmega328p), cnc::BadInput);
 }

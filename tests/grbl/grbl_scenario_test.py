@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The grbl architecture with our grbl-protocol test firmware, through `cncsim run`.
 
-Usage: grbl_scenario_test.py MODE CNCSIM SOURCE_DIR FIRMWARE_ELF FIRMWARE_HEX
+Usage: grbl_scenario_test.py MODE CNCSIM SOURCE_DIR FIRMWARE_ELF FIRMWARE_HEX [--set KEY=VALUE ...]
+  (the --set options go to every run: --set avr.mcu=atmega16 with the firmware built for the ATmega16)
   square    the 20 mm square: 9600 STEP pulses on each axis that the drivers take (10 + 20 + 20 + 10 mm at 160
             steps/mm, counted here from the report's edges), every line answered, the job ends on a status report
             that says Idle at machine 0,0, no error.
@@ -18,7 +19,8 @@ Usage: grbl_scenario_test.py MODE CNCSIM SOURCE_DIR FIRMWARE_ELF FIRMWARE_HEX
   laser     laser power from OC2A: in laser mode ($32 = 1, from the job's M3 S), G1 X10 F600 at S250, S500 and S1000
             ($30 = 1000). The firmware's compare value is floor(S x 255 / $30), and fast PWM at clk/8 sets OC2A at
             BOTTOM and clears it at the match: high (OCR2A + 1) x 8 of every 2048 cycles (ATmega328P datasheet
-            §18.7.3), 25 %, 50 %; OCR2A = 255 = MAX holds it high (100 %). The PWM periods' high times, read from
+            §18.7.3; the ATmega16's OCR2 on OC2 the same, doc2466 Timer2 "Fast PWM Mode"), 25 %, 50 %; OCR2A = 255
+            = MAX holds it high (100 %). The PWM periods' high times, read from
             the VCD, are that to the cycle, every one of them, and the report's laser-on time follows the duty (each run's against the S1000 run's, within 1 %).
 """
 import math
@@ -30,11 +32,14 @@ import sys
 import tempfile
 
 
+COMMON_SETS = []
+
+
 def run(cncsim, source, scenario, firmware, extra):
     report = tempfile.NamedTemporaryFile(suffix=".json", delete=False).name
     os.remove(report)
     args = [cncsim, "run", scenario, "--set", "avr.firmware=" + firmware, "--report", report,
-            "--progress", "off"] + extra
+            "--progress", "off"] + COMMON_SETS + extra
     p = subprocess.run(args, cwd=source, capture_output=True, text=True)
     data = None
     if os.path.exists(report):
@@ -114,6 +119,7 @@ def check(cond, what):
 
 def main():
     mode, cncsim, source, firmware, hex_image = sys.argv[1:6]
+    COMMON_SETS.extend(sys.argv[6:])
     scenario = "tests/data/grbl/square_20mm.toml"
     if mode == "square":
         p, r = run(cncsim, source, scenario, firmware, [])

@@ -9,7 +9,7 @@
 namespace cnc::avr {
 
 struct AvrCoreConfig {
-    std::string firmware_elf;        // any ATmega328P ELF (avr.firmware)
+    std::string firmware_elf;        // an ELF or Intel HEX file for `mcu` (avr.firmware)
     std::string mcu = "atmega328p";  // or "atmega16" (core/mcu_map.hpp); an ELF whose .mmcu names another is refused
     std::uint32_t f_cpu_hz = 16'000'000;  // seed 003 §5.2.4: 16 MHz crystal (62.5 ns per cycle)
     // How this board's oscillator departs from f_cpu_hz (all zero: ideal). The firmware was built for f_cpu_hz;
@@ -30,6 +30,7 @@ struct AvrCoreConfig {
     // the same outputs at the same cycles, faster. Off: every cycle is executed.
     bool fast_forward = true;
     std::string where = "avr.firmware";  // names the scenario key in bad-input messages
+    std::string mcu_key;                 // the scenario key that chose `mcu` ("avr.mcu"), for messages; empty: none
 };
 
 }  // namespace cnc::avr

@@ -4,6 +4,7 @@
 #include <iterator>
 #include <vector>
 
+#include "avr/core/mcu_map.hpp"
 #include "common/bad_input.hpp"
 
 namespace cnc::avr {
@@ -12,7 +13,6 @@ namespace {
 
 // ELF specification (System V gABI) header layout and the values used here.
 constexpr std::uint16_t kEmAvr = 83;            // EM_AVR
-constexpr int kAvrArchOfAtmega328p = 5;         // avr-gcc: the ATmega328P is an avr5 core
 constexpr std::uint32_t kEfAvrMachMask = 0x7F;  // EF_AVR_MACH (binutils include/elf/avr.h)
 constexpr std::size_t kElf32HeaderBytes = 52;
 constexpr std::size_t kElf32SectionHeaderBytes = 40;
@@ -93,6 +93,7 @@ void read_mmcu(const Bytes& f, Section s, ElfInfo& info) {
             std::string name;
             for (std::size_t k = payload; k < payload + len && f.u8(k) != 0; ++k) name += static_cast<char>(f.u8(k));
             info.mmcu = name;
+            info.mmcu_source = ".mmcu section";
         } else if (tag == kMmcuTagFrequency && len >= 4) {
             info.frequency_hz = f.u32(payload);
         }
@@ -100,10 +101,37 @@ void read_mmcu(const Bytes& f, Section s, ElfInfo& info) {
     }
 }
 
+// avr-libc's crt .note.gnu.avr.deviceinfo: an ELF note (namesz, descsz, type, "AVR\0") whose descriptor holds the
+// flash, SRAM and EEPROM start and size (6 words), then the string table's offset-table length and the device name's
+// offset into the string table, which follows at descriptor + 32.
+void read_device_note(const Bytes& f, Section s, ElfInfo& info) {
+    constexpr std::size_t kNameOffsetWord = 28;
+    constexpr std::size_t kStringTable = 32;
+    if (s.size < 16) return;
+    const std::uint32_t namesz = f.u32(s.offset);
+    const std::uint32_t descsz = f.u32(s.offset + 4);
+    const std::size_t desc = s.offset + 12 + ((static_cast<std::size_t>(namesz) + 3) / 4) * 4;
+    const std::size_t end = static_cast<std::size_t>(s.offset) + s.size;
+    if (namesz != 4 || f.u32(s.offset + 12) != 0x00525641U /* "AVR\0" */ || descsz <= kStringTable ||
+        desc + descsz > end)
+        return;
+    std::string name;
+    for (std::size_t k = desc + kStringTable + f.u32(desc + kNameOffsetWord); k < desc + descsz && f.u8(k) != 0; ++k)
+        name += static_cast<char>(f.u8(k));
+    if (!name.empty()) {
+        info.mmcu = name;
+        info.mmcu_source = ".note.gnu.avr.deviceinfo section";
+    }
+}
+
 }  // namespace
 
-ElfInfo check_avr_elf(const std::string& path, const std::string& mcu, std::uint32_t f_cpu_hz,
-                      const std::string& where) {
+std::string mcu_named(const std::string& mcu, const std::string& mcu_key) {
+    return mcu_key.empty() ? "the model is an " + mcu : mcu_key + " is " + mcu;
+}
+
+ElfInfo check_avr_elf(const std::string& path, const std::string& mcu, std::uint32_t f_cpu_hz, const std::string& where,
+                      const std::string& mcu_key) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw BadInput(where, "firmware ELF '" + path + "' not found or not readable");
     const Bytes f(std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), {}));
@@ -121,13 +149,19 @@ ElfInfo check_avr_elf(const std::string& path, const std::string& mcu, std::uint
     info.avr_arch = static_cast<int>(f.u32(36) & kEfAvrMachMask);
     const Section mmcu = find_section(f, ".mmcu");
     if (mmcu.size > 0) read_mmcu(f, mmcu, info);
+    if (info.mmcu.empty()) {
+        const Section note = find_section(f, ".note.gnu.avr.deviceinfo");
+        if (note.size > 0) read_device_note(f, note, info);
+    }
     if (!info.mmcu.empty() && info.mmcu != mcu)
-        throw BadInput(where, "firmware '" + path + "' was built for " + info.mmcu +
-                                  " (its .mmcu section), the model is an " + mcu);
-    if (info.mmcu.empty() && info.avr_arch != kAvrArchOfAtmega328p)
+        throw BadInput(where, "firmware '" + path + "' was built for " + info.mmcu + " (its " + info.mmcu_source +
+                                  "), " + mcu_named(mcu, mcu_key));
+    const auto modelled = mcu_by_name(mcu);
+    const int arch = modelled ? mcu_map(*modelled).avr_arch : 0;
+    if (info.mmcu.empty() && info.avr_arch != arch)
         throw BadInput(where, "firmware '" + path + "' was built for AVR architecture avr" +
-                                  std::to_string(info.avr_arch) + ", the " + mcu + " is avr" +
-                                  std::to_string(kAvrArchOfAtmega328p));
+                                  std::to_string(info.avr_arch) + ", the " + mcu + " is avr" + std::to_string(arch) +
+                                  " (" + mcu_named(mcu, mcu_key) + ")");
     if (info.frequency_hz != 0 && info.frequency_hz != f_cpu_hz)
         throw BadInput(where, "firmware '" + path + "' declares F_CPU " + std::to_string(info.frequency_hz) +
                                   " Hz (.mmcu section), the chip runs at " + std::to_string(f_cpu_hz) + " Hz");

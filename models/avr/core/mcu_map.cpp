@@ -16,8 +16,11 @@ McuMap make_328p() {
     McuMap m;
     m.mcu = Mcu::Atmega328p;
     m.name = "atmega328p";
+    m.display = "ATmega328P";
     m.flash_bytes = 32 * 1024;  // datasheet §1: 32 KB in-system programmable flash
-    m.ports = {{'B', 0x23}, {'C', 0x26}, {'D', 0x29}};
+    m.vector_count = 26;        // Table 11-6 "Reset and Interrupt Vectors in ATmega328P"
+    // §1.1: PORTC has 7 pins (PC6 is RESET on an Arduino board, but a port bit all the same).
+    m.ports = {{'B', 0x23, 8}, {'C', 0x26, 7}, {'D', 0x29, 8}};
     // OC0A PD6, OC0B PD5, OC1A PB1, OC1B PB2, OC2A PB3, OC2B PD3.
     m.compare_outputs = {{'D', 6, 0, Channel::A}, {'D', 5, 0, Channel::B}, {'B', 1, 1, Channel::A},
                          {'B', 2, 1, Channel::B}, {'B', 3, 2, Channel::A}, {'D', 3, 2, Channel::B}};
@@ -35,6 +38,8 @@ McuMap make_328p() {
     // ASSR keeps EXCLK (6) and AS2 (5).
     m.timer_regs = {reg::kTcnt0,  reg::kTcnt2, reg::kTcnt1l, reg::kIcr1l, reg::kOcr1al,
                     reg::kOcr1bl, reg::kAssr,  reg::kAs2,    0x60};
+    // USART RX 18, UDRE 19, TX 20.
+    m.usart = {reg::kUdr0, reg::kUcsr0a, reg::kUcsr0b, reg::kUcsr0c, reg::kUbrr0l, reg::kUbrr0h, 18, 19, 20};
     return m;
 }
 
@@ -42,8 +47,10 @@ McuMap make_16() {
     McuMap m;
     m.mcu = Mcu::Atmega16;
     m.name = "atmega16";
+    m.display = "ATmega16";
     m.flash_bytes = 16 * 1024;  // ATmega16 datasheet, features: 16 KB in-system programmable flash
-    m.ports = {{'A', 0x39}, {'B', 0x36}, {'C', 0x33}, {'D', 0x30}};
+    m.vector_count = 21;        // Table 18 "Reset and Interrupt Vectors"
+    m.ports = {{'A', 0x39, 8}, {'B', 0x36, 8}, {'C', 0x33, 8}, {'D', 0x30, 8}};
     // OC0 PB3, OC1A PD5, OC1B PD4, OC2 PD7 (one compare unit on Timer0 and Timer2: channel A here).
     m.compare_outputs = {
         {'B', 3, 0, Channel::A}, {'D', 5, 1, Channel::A}, {'D', 4, 1, Channel::B}, {'D', 7, 2, Channel::A}};
@@ -58,6 +65,9 @@ McuMap make_16() {
     m.vector[2][kOvf] = 4;
     m.timer_regs = {reg16::kTcnt0,  reg16::kTcnt2, reg16::kTcnt1l, reg16::kIcr1l, reg16::kOcr1al,
                     reg16::kOcr1bl, reg16::kAssr,  reg16::kAs2,    reg16::kAs2};
+    // Table 18: USART RXC 11, UDRE 12, TXC 13.
+    m.usart = {reg16::kUdr, reg16::kUcsra, reg16::kUcsrb, reg16::kUcsrcUbrrh, reg16::kUbrrl, reg16::kUcsrcUbrrh, 11, 12,
+               13};
     return m;
 }
 

@@ -4,6 +4,7 @@
 // ATmega328P"; ATmega16 (doc2466) "Register Summary", Table 18 "Reset and Interrupt Vectors", "Alternate
 // Functions of Port B/D".
 #pragma once
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -16,10 +17,12 @@
 namespace cnc::avr {
 
 enum class Mcu { Atmega328p, Atmega16 };
+inline constexpr std::array<Mcu, 2> kModelledMcus{Mcu::Atmega328p, Mcu::Atmega16};
 
 struct PortAddr {
     char port = 'B';
     std::uint16_t pin = 0;  // PINx data-space address; DDRx = pin + 1, PORTx = pin + 2 on both MCUs
+    int bits = 8;           // its pins are Px0 .. Px(bits - 1)
 };
 
 struct CompareOutputPin {
@@ -43,15 +46,34 @@ struct TimerRegs {
     std::uint8_t assr_writable = 0;  // the bits a write keeps
 };
 
+// USART0 (ATmega328P) / the USART (ATmega16): its registers' data-space addresses and its vectors. The ATmega16's
+// UCSRC and UBRRH share one address (datasheet doc2466 "Accessing UBRRH/UCSRC Registers": URSEL selects).
+struct UsartRegs {
+    std::uint16_t udr = 0;
+    std::uint16_t ucsra = 0;
+    std::uint16_t ucsrb = 0;
+    std::uint16_t ucsrc = 0;
+    std::uint16_t ubrrl = 0;
+    std::uint16_t ubrrh = 0;
+    int vector_rxc = 0;
+    int vector_udre = 0;
+    int vector_txc = 0;
+    [[nodiscard]] bool shared_ucsrc() const { return ucsrc == ubrrh; }
+};
+
 struct McuMap {
     Mcu mcu = Mcu::Atmega328p;
-    const char* name = "";  // as avr-gcc's -mmcu and simavr's core name
+    const char* name = "";     // as avr-gcc's -mmcu and simavr's core name
+    const char* display = "";  // as its datasheet writes it
     std::size_t flash_bytes = 0;
+    int vector_count = 0;  // the reset and interrupt vectors, each a JMP (2 words) on both MCUs
+    int avr_arch = 5;      // avr-gcc's architecture (ELF e_flags): avr5 for both
     std::vector<PortAddr> ports;
     std::vector<CompareOutputPin> compare_outputs;
     // Vector number of each timer flag (0: the timer has no such flag).
     int vector[3][4] = {};  // [timer][TimerFlag]
     TimerRegs timer_regs;
+    UsartRegs usart;
 };
 
 // "atmega328p" or "atmega16"; nullopt for any other.

@@ -11,7 +11,16 @@ namespace cnc::avr {
 
 namespace {
 
-constexpr std::string_view kPinsThatExist = "PB0..PB7, PC0..PC6, PD2..PD7";
+// "PB0..PB7, PC0..PC6, PD2..PD7": the pins a map may name (PD0/PD1 are the USART's).
+std::string pins_that_exist(const McuMap& m) {
+    std::string out;
+    for (const PortAddr& p : m.ports) {
+        const int first = p.port == 'D' ? 2 : 0;
+        out += (out.empty() ? "" : ", ") + std::string{'P', p.port, static_cast<char>('0' + first)} + ".." +
+               std::string{'P', p.port, static_cast<char>('0' + p.bits - 1)};
+    }
+    return out;
+}
 
 std::string_view trim(std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front())) != 0) s.remove_prefix(1);
@@ -34,20 +43,21 @@ std::string signal_list() {
 
 }  // namespace
 
-Pin parse_pin(std::string_view text, const std::string& where) {
+Pin parse_pin(std::string_view text, const std::string& where, Mcu mcu) {
+    const McuMap& m = mcu_map(mcu);
     const std::string_view t = trim(text);
     const auto bad = [&](const std::string& why) {
         return BadInput(
-            where, "pin '" + std::string(t) + "' " + why + " (ATmega328P pins: " + std::string(kPinsThatExist) + ")");
+            where, "pin '" + std::string(t) + "' " + why + " (" + m.display + " pins: " + pins_that_exist(m) + ")");
     };
     if (t.size() != 3 || std::toupper(static_cast<unsigned char>(t[0])) != 'P' ||
         std::isdigit(static_cast<unsigned char>(t[2])) == 0)
         throw bad("is not a port pin name like PD6");
     const char port = static_cast<char>(std::toupper(static_cast<unsigned char>(t[1])));
     const int bit = t[2] - '0';
-    if (port != 'B' && port != 'C' && port != 'D') throw bad("names a port the ATmega328P does not have");
-    // datasheet §1.1: PORTC has 7 pins (PC6 = RESET); every port bit number is 0..7
-    if (bit > 7 || (port == 'C' && bit > 6)) throw bad("does not exist");
+    const auto p = std::find_if(m.ports.begin(), m.ports.end(), [port](const PortAddr& a) { return a.port == port; });
+    if (p == m.ports.end()) throw bad("names a port the " + std::string(m.display) + " does not have");
+    if (bit >= p->bits) throw bad("does not exist");
     if (port == 'D' && bit < 2) throw bad("is the USART's " + std::string(bit == 0 ? "RXD" : "TXD") + " pin");
     return Pin{port, bit};
 }
@@ -79,11 +89,18 @@ PinMap grbl_pin_map() {
     return m;
 }
 
+PinMap grbl_atmega16_pin_map() {
+    PinMap m;
+    m.pins = {{"step_x", {'A', 0}}, {"dir_x", {'A', 2}}, {"en_x", {'A', 4}}, {"step_y", {'A', 1}},
+              {"dir_y", {'A', 3}},  {"en_y", {'A', 4}},  {"head", {'D', 7}}};
+    return m;
+}
+
 PinMap parse_pin_map(std::string_view text, const std::string& where) {
     return parse_pin_map(text, where, default_pin_map());
 }
 
-PinMap parse_pin_map(std::string_view text, const std::string& where, PinMap defaults) {
+PinMap parse_pin_map(std::string_view text, const std::string& where, PinMap defaults, Mcu mcu) {
     PinMap m = std::move(defaults);
     std::set<std::string> named;
     std::string_view rest = text;
@@ -98,17 +115,17 @@ PinMap parse_pin_map(std::string_view text, const std::string& where, PinMap def
         if (std::find(kPinSignals.begin(), kPinSignals.end(), signal) == kPinSignals.end())
             throw BadInput(where, "unknown signal '" + signal + "' in the pin map (signals: " + signal_list() + ")");
         if (!named.insert(signal).second) throw BadInput(where, "signal '" + signal + "' is mapped twice");
-        m.pins[signal] = parse_pin(entry.substr(eq + 1), where);
+        m.pins[signal] = parse_pin(entry.substr(eq + 1), where, mcu);
     }
-    validate(m, where);
+    validate(m, where, mcu);
     return m;
 }
 
-void validate(const PinMap& map, const std::string& where) {
+void validate(const PinMap& map, const std::string& where, Mcu mcu) {
     for (const auto s : kPinSignals)
         if (map.pins.count(std::string(s)) == 0) throw BadInput(where, "the pin map has no '" + std::string(s) + "'");
     if (map.pins.size() != kPinSignals.size()) throw BadInput(where, "the pin map names unknown signals");
-    for (const auto& [signal, pin] : map.pins) (void)parse_pin(pin.name(), where);
+    for (const auto& [signal, pin] : map.pins) (void)parse_pin(pin.name(), where, mcu);
     for (const auto& [a, pa] : map.pins)
         for (const auto& [b, pb] : map.pins)
             if (a < b && pa == pb && !(a == "en_x" && b == "en_y"))

@@ -1,5 +1,5 @@
-// Which ATmega328P port pins carry the machine's signals (STEP/DIR/EN per axis, the tool head), so that any
-// firmware, not only seed 003's, can drive the modelled machine. Scenario syntax (`avr.pins`):
+// Which port pins of the MCU (ATmega328P or ATmega16) carry the machine's signals (STEP/DIR/EN per axis, the tool
+// head), so that any firmware, not only seed 003's, can drive the modelled machine. Scenario syntax (`avr.pins`):
 //     "step_x=PD6, dir_x=PB0, en_x=PB2, step_y=PB3, dir_y=PB5, en_y=PB4, head=PB1"
 // Entries not named keep seed 003's default; names are case-insensitive ("pd6" = "PD6").
 #pragma once
@@ -8,10 +8,12 @@
 #include <string>
 #include <string_view>
 
+#include "avr/core/mcu_map.hpp"
+
 namespace cnc::avr {
 
 struct Pin {
-    char port = 'B';  // 'B', 'C' or 'D'
+    char port = 'B';  // 'A' (ATmega16 only), 'B', 'C' or 'D'
     int bit = 0;      // 0..7
 
     [[nodiscard]] std::string name() const { return std::string{'P', port, static_cast<char>('0' + bit)}; }
@@ -23,10 +25,11 @@ struct Pin {
 inline constexpr std::array<std::string_view, 7> kPinSignals{"step_x", "dir_x", "en_x", "step_y",
                                                              "dir_y",  "en_y",  "head"};
 
-// "PD6" -> {D, 6}. The ATmega328P has PB0..PB7, PC0..PC6 and PD0..PD7 (datasheet §1.1 pin configurations;
-// PB6/PB7 are the crystal pins and PC6 is RESET on an Arduino board, but they are port bits all the same).
-// PD0/PD1 are RXD/TXD, reserved for the USART link. Anything else throws BadInput(where, ...) naming the text.
-[[nodiscard]] Pin parse_pin(std::string_view text, const std::string& where);
+// "PD6" -> {D, 6}, a pin the MCU has (McuMap::ports): the ATmega328P has PB0..PB7, PC0..PC6 and PD0..PD7
+// (datasheet §1.1 pin configurations; PB6/PB7 are the crystal pins and PC6 is RESET on an Arduino board, but they
+// are port bits all the same), the ATmega16 PA0..PD7 (doc2466 "Pin Configurations"). PD0/PD1 are RXD/TXD on both,
+// reserved for the USART link. Anything else throws BadInput(where, ...) naming the text and the MCU.
+[[nodiscard]] Pin parse_pin(std::string_view text, const std::string& where, Mcu mcu = Mcu::Atmega328p);
 
 struct PinMap {
     std::map<std::string, Pin> pins;  // signal (one of kPinSignals) -> pin; always holds all seven
@@ -47,14 +50,23 @@ struct PinMap {
 // stepper-disable pin PB0 for both drivers, the laser on the spindle PWM pin OC2A = PB3.
 [[nodiscard]] PinMap grbl_pin_map();
 
-// Checks a map built in code: all seven signals, each on an existing pin, no pin twice but for en_x and en_y (one
-// enable line to both drivers' nENBL, as grbl wires them). Throws BadInput.
-void validate(const PinMap& map, const std::string& where);
+// grbl has no port to the ATmega16; this is ours for the grbl-protocol firmware built for it: STEP X/Y PA0/PA1,
+// DIR X/Y PA2/PA3, the shared disable PA4, the laser on OC2 = PD7 (Timer2's PWM, as grbl's spindle on the 328P).
+// PORTA's only other function is the ADC, which is off from reset: the pins clash with none of the USART (PD0/PD1,
+// XCK PB0), the compare outputs the firmware could use (OC0 PB3, OC1A/B PD5/PD4), INT0/INT1/INT2 (PD2, PD3, PB2),
+// ICP1 (PD6), the SPI programming pins (PB4..PB7), JTAG (PC2..PC5, on with the factory fuses) or TOSC (PC6/PC7),
+// and the STEP and DIR bits share a port as grbl's port masks want (doc2466 "Alternate Port Functions").
+[[nodiscard]] PinMap grbl_atmega16_pin_map();
 
-// Overrides the default map with "signal=pin" entries separated by commas. Unknown signals, bad pins, a signal
-// named twice or two signals on one pin (but en_x and en_y) throw BadInput(where, ...).
+// Checks a map built in code: all seven signals, each on a pin the MCU has, no pin twice but for en_x and en_y (one
+// enable line to both drivers' nENBL, as grbl wires them). Throws BadInput.
+void validate(const PinMap& map, const std::string& where, Mcu mcu = Mcu::Atmega328p);
+
+// Overrides the default map with "signal=pin" entries separated by commas. Unknown signals, bad pins (for `mcu`),
+// a signal named twice or two signals on one pin (but en_x and en_y) throw BadInput(where, ...).
 [[nodiscard]] PinMap parse_pin_map(std::string_view text, const std::string& where);
 // The same over another default map (timer1_y_pin_map()).
-[[nodiscard]] PinMap parse_pin_map(std::string_view text, const std::string& where, PinMap defaults);
+[[nodiscard]] PinMap parse_pin_map(std::string_view text, const std::string& where, PinMap defaults,
+                                   Mcu mcu = Mcu::Atmega328p);
 
 }  // namespace cnc::avr

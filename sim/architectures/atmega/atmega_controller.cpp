@@ -139,7 +139,7 @@ public:
           m_transfers(cad2g::transfers(m_plan)),
           m_cp2102("cp2102", m_link),
           m_pc("host", pc_config(s, m_a), m_cp2102, m_transfers, confirm_timeouts(m_a, m_link, m_plan, m_transfers)),
-          m_mcu("atmega328p", m_avr_cfg),
+          m_mcu(m_avr_cfg.mcu.c_str(), m_avr_cfg),
           m_moves(commanded_moves(&*job.program, cad2g::motion_segments(m_plan, s.machine), s.machine,
                                   s.interpreter.start_mm)),
           m_chord_gaps(m_pc.transfers()),

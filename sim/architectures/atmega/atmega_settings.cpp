@@ -41,6 +41,17 @@ void read_atmega_settings(KeyReader& r, AtmegaSettings& s, const std::filesystem
                           ? host::cad2g::LongMoves::Split
                           : host::cad2g::LongMoves::Wrap;
     s.link_baud_set = r.has("link.baud");
+    // Seed 003's firmware is the ATmega328P's by its protocol: the PC's start byte is an image of the 328P board's
+    // PORTB with STEP_Y on OC2A (PB3), STEP_X is OC0A (PD6), and GTCCR.TSM starts both timers together, which the
+    // ATmega16 does not have (its SFIOR resets the prescalers but cannot hold them).
+    if (s.board.mcu != "atmega328p" && s.board.firmware.empty()) {
+        r.fail("avr.mcu", "\"" + s.board.mcu +
+                              "\" with seed 003's firmware, which this build makes for the ATmega328P only (its "
+                              "STEP pins are the 328P's OC0A and OC2A, its start byte a PORTB image of the 328P "
+                              "board, its timers started together by GTCCR.TSM): give your own firmware on seed "
+                              "003's protocol built for the " +
+                              s.board.mcu + " with avr.firmware, or leave avr.mcu = \"atmega328p\"");
+    }
 }
 
 }  // namespace cnc::sim

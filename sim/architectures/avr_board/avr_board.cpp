@@ -11,7 +11,9 @@ avr::AvrCoreConfig board_config(const Scenario& s, const AvrBoardSettings& board
                                 avr::PinMap pins) {
     avr::AvrCoreConfig cfg;
     cfg.firmware_elf = std::move(firmware);
-    cfg.pins = avr::parse_pin_map(board.pins, s.file + ": avr.pins", std::move(pins));
+    cfg.mcu = board.mcu;
+    cfg.mcu_key = "avr.mcu";
+    cfg.pins = avr::parse_pin_map(board.pins, s.file + ": avr.pins", std::move(pins), *avr::mcu_by_name(board.mcu));
     cfg.where = s.file + ": avr.firmware";
     cfg.quantum_cycles = board.quantum_cycles;
     cfg.fast_forward = board.fast_forward;
@@ -24,7 +26,7 @@ std::optional<FirmwareUsart> check_firmware_rate(const Scenario& s, const uart::
     std::optional<FirmwareUsart> usart = probe_firmware_usart(cfg);
     if (!usart) return usart;
     check_line_rates(s.file + ": link.baud, avr.firmware", cp2102_end(link),
-                     {usart->baud, firmware_name + "'s USART0 at " + usart->text(cfg.f_cpu_hz)});
+                     {usart->baud, firmware_name + "'s USART" + usart->n + " at " + usart->text(cfg.f_cpu_hz)});
     return usart;
 }
 

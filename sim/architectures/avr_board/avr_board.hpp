@@ -1,4 +1,4 @@
-// What the architectures on the Arduino board share at run time: the ATmega328P's configuration from the [avr] keys,
+// What the architectures on the Arduino board share at run time: the MCU's configuration from the [avr] keys,
 // and the check of its firmware's USART rate against the CP2102's before anything is simulated.
 #pragma once
 #include <optional>
@@ -12,7 +12,8 @@
 
 namespace cnc::sim {
 
-// `firmware`: the file to run; `pins`: the architecture's map that avr.pins overrides. BadInput for a bad avr.pins.
+// `firmware`: the file to run; `pins`: the architecture's map that avr.pins overrides. BadInput for a bad avr.pins
+// (a pin avr.mcu lacks too).
 [[nodiscard]] avr::AvrCoreConfig board_config(const Scenario& s, const AvrBoardSettings& board, std::string firmware,
                                               avr::PinMap pins);
 

@@ -1,6 +1,7 @@
 // The Arduino board with its ATmega328P that two architectures share (seed 003's firmware runs on it, and grbl or
-// a user's firmware on grbl's pins): the keys [avr] firmware, pins and quantum_cycles, and its 16 MHz resonator
-// (clock.*, avr.clock_tolerance_ppm, avr.clock_jitter_rms_ps), read by one reader.
+// a user's firmware on grbl's pins), or an ATmega16 in its place: the keys [avr] mcu, firmware, pins and
+// quantum_cycles, and its 16 MHz resonator (clock.*, avr.clock_tolerance_ppm, avr.clock_jitter_rms_ps), read by one
+// reader.
 #pragma once
 #include <cstdint>
 #include <filesystem>
@@ -12,6 +13,7 @@
 namespace cnc::sim {
 
 struct AvrBoardSettings {
+    std::string mcu = "atmega328p";  // avr.mcu: the MCU on the board, "atmega328p" or "atmega16"
     std::string firmware;  // avr.firmware resolved against the scenario's folder; empty: the architecture's default
     std::string pins;      // avr.pins, "signal=pin, ..."; empty: the architecture's map
     // avr.quantum_cycles. 1600 (100 us), not AvrCoreConfig's 160: the outputs are exact at any value and the only

@@ -14,8 +14,8 @@ constexpr avr::Cycle kProbeSliceCycles = 1600;
 }  // namespace
 
 std::string FirmwareUsart::text(double f_cpu_hz) const {
-    return fmt::format(FMT_STRING("{:.1f} Bd (UBRR0 = {}, U2X0 = {:d}: {} cycles a bit at {:g} MHz)"), baud, ubrr, u2x,
-                       bit_cycles, f_cpu_hz / 1e6);
+    return fmt::format(FMT_STRING("{:.1f} Bd (UBRR{} = {}, U2X{} = {:d}: {} cycles a bit at {:g} MHz)"), baud, n, ubrr,
+                       n, u2x, bit_cycles, f_cpu_hz / 1e6);
 }
 
 std::optional<FirmwareUsart> probe_firmware_usart(const avr::AvrCoreConfig& cfg) {
@@ -32,6 +32,7 @@ std::optional<FirmwareUsart> probe_firmware_usart(const avr::AvrCoreConfig& cfg)
         f.ubrr = u.ubrrh() << 8 | u.ubrrl();
         constexpr std::int64_t kCyclesPerBitU2x = 8;  // Table 20-1: 8 (UBRR0 + 1) cycles a bit with U2X0 = 1
         f.u2x = f.bit_cycles == kCyclesPerBitU2x * (f.ubrr + 1);
+        if (chip.mcu().mcu == avr::Mcu::Atmega16) f.n.clear();
         return f;
     }
     return std::nullopt;

@@ -19,6 +19,7 @@ struct FirmwareUsart {
     std::int64_t bit_cycles = 0;  // CPU cycles per bit
     int ubrr = 0;
     bool u2x = false;
+    std::string n = "0";  // the register names' USART number: "0" on the ATmega328P (UBRR0), none on the ATmega16
 
     // "58 823.5 Bd (UBRR0 = 16, U2X0 = 0: 272 cycles a bit at 16 MHz)"
     [[nodiscard]] std::string text(double f_cpu_hz) const;

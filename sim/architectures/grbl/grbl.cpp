@@ -11,8 +11,8 @@ namespace {
 // How to get the firmware this architecture runs: grbl's own source, built with Debian's avr-gcc.
 constexpr const char* kHowToBuildGrbl =
     "the grbl architecture runs the firmware you give it as avr.firmware (an ELF or an Intel HEX file for the "
-    "ATmega328P at 16 MHz). grbl 1.1h: git clone https://github.com/gnea/grbl; cd grbl; make (it needs gcc-avr and "
-    "avr-libc), then avr.firmware = \"path/to/grbl/grbl.hex\"";
+    "ATmega328P at 16 MHz, or the MCU avr.mcu names). grbl 1.1h: git clone https://github.com/gnea/grbl; cd grbl; "
+    "make (it needs gcc-avr and avr-libc), then avr.firmware = \"path/to/grbl/grbl.hex\"";
 
 class Grbl final : public Architecture {
 public:

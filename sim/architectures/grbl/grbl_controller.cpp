@@ -125,7 +125,7 @@ public:
           m_ends(move_ends(segments)),
           m_cp2102("cp2102", with_usb_spikes(m_g.serial.link, s.faults)),
           m_sender("host", sender_config(s, m_g), m_cp2102, make_stream(s, m_g, job)),
-          m_mcu("atmega328p", m_avr_cfg),
+          m_mcu(m_avr_cfg.mcu.c_str(), m_avr_cfg),
           m_moves(commanded_moves(&*job.program, segments, s.machine, s.interpreter.start_mm)),
           m_faults(board_line_faults(s.faults, m_cp2102, usart, m_avr_cfg.f_cpu_hz)) {
         wire_board(m_wires, m_cp2102, m_mcu, pins, m_faults.get());
@@ -251,7 +251,9 @@ void GrblController::report(ArchRun& run, const RunBudget& budget, const Simulat
 ArchRun Entry::run(const Scenario& s, const Job& job) {
     return run_on_machine(s, job, [](const Scenario& sc, const Job& j, MachinePins& pins) {
         const GrblSettings& g = sc.settings<GrblSettings>();
-        avr::AvrCoreConfig avr_cfg = board_config(sc, g.board, g.board.firmware, avr::grbl_pin_map());
+        avr::AvrCoreConfig avr_cfg =
+            board_config(sc, g.board, g.board.firmware,
+                         g.board.mcu == "atmega16" ? avr::grbl_atmega16_pin_map() : avr::grbl_pin_map());
         avr_cfg.keep_usart_logs = sc.faults.uart.any();  // board_faults.hpp matches every byte
         const std::optional<FirmwareUsart> usart =
             check_firmware_rate(sc, g.serial.link, avr_cfg, "the firmware " + avr_cfg.firmware_elf);

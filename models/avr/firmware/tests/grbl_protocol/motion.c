@@ -33,27 +33,23 @@ static volatile int32_t position[2];
 static volatile uint8_t idle_laser_ocr;  // the laser between moves: off in laser mode, M3's power outside it
 
 // Timer0 in normal mode at clk/8 (0.5 us a count) ends the STEP pulse at its compare match.
-static void pulse_timer_init(void) {
-    TCCR0A = 0;
-    TIMSK0 = (1 << OCIE0A);
-}
+static void pulse_timer_init(void) { PULSE_TIMER_INIT(); }
 
-// Timer2 fast PWM (WGM2 = 011), clk/8: 16 MHz / (8 x 256) = 7.8 kHz, grbl's spindle PWM on the 328P.
+// Timer2 fast PWM, clk/8: 16 MHz / (8 x 256) = 7.8 kHz, grbl's spindle PWM on the 328P.
 static void laser_init(void) {
     LASER_DDR |= (1 << LASER_BIT);
-    TCCR2A = (1 << WGM21) | (1 << WGM20);
-    TCCR2B = (1 << CS21);
-    OCR2A = 0;
+    LASER_TIMER_INIT();
+    LASER_OCR = 0;
 }
 
-// Non-inverting OC2A (COM2A = 10) while on; off, the pin is PORTB3: low.
+// Non-inverting OC2A / OC2 (COM = 10) while on; off, the pin is its PORT bit: low.
 static void set_laser(uint8_t laser_ocr) {
     if (laser_ocr == 0) {
-        TCCR2A &= (uint8_t) ~(1 << COM2A1);
+        LASER_TCCR &= (uint8_t) ~(1 << LASER_COM_BIT);
         return;
     }
-    OCR2A = laser_ocr;
-    TCCR2A |= (1 << COM2A1);
+    LASER_OCR = laser_ocr;
+    LASER_TCCR |= (1 << LASER_COM_BIT);
 }
 
 void motion_init(void) {
@@ -63,7 +59,7 @@ void motion_init(void) {
     DISABLE_PORT |= (1 << DISABLE_BIT);  // the drivers off until the first move
     TCCR1A = 0;
     TCCR1B = (1 << WGM12);  // CTC, TOP = OCR1A, stopped
-    TIMSK1 = (1 << OCIE1A);
+    STEPPER_TIMSK_ENABLE();
     pulse_timer_init();
     laser_init();
 }
@@ -75,9 +71,9 @@ void motion_laser(uint8_t laser_ocr) {
     }
 }
 
-ISR(TIMER0_COMPA_vect) {
+ISR(PULSE_vect) {
     STEP_PORT &= (uint8_t)~STEP_MASK;
-    TCCR0B = 0;
+    PULSE_CLOCK = 0;
 }
 
 static uint8_t next_index(uint8_t i) { return (uint8_t)((i + 1) % BLOCK_BUFFER_SIZE); }
@@ -86,7 +82,7 @@ ISR(TIMER1_COMPA_vect) {
     if (out_bits != 0) {
         STEP_PORT |= out_bits;
         TCNT0 = 0;
-        TCCR0B = (1 << CS01);
+        PULSE_CLOCK = (1 << CS01);
     }
     out_bits = 0;
     if (current == 0) {
@@ -100,7 +96,7 @@ ISR(TIMER1_COMPA_vect) {
         DIR_PORT = (uint8_t)((DIR_PORT & ~DIR_MASK) | current->dir_bits);
         OCR1A = current->ocr1a;
         TCCR1B = (uint8_t)((1 << WGM12) | current->clock_select);
-        TIFR1 = (1 << OCF1A);  // the matches of the wake-up's OCR1A = 0 while this ran
+        STEPPER_TIFR = (1 << OCF1A);  // the matches of the wake-up's OCR1A = 0 while this ran
         set_laser(current->laser_ocr);
         counter[0] = counter[1] = -(int32_t)(current->step_events >> 1);
         events_done = 0;
@@ -156,7 +152,7 @@ void motion_queue(int32_t dx, int32_t dy, uint32_t cycles, uint8_t laser_ocr) {
     b->step_events = b->steps[0] > b->steps[1] ? b->steps[0] : b->steps[1];
     b->laser_ocr = laser_ocr;
     set_period(b, cycles);
-    OCR0A = (uint8_t)(settings.pulse_us * 2);
+    PULSE_OCR = (uint8_t)(settings.pulse_us * 2);
     ATOMIC_BLOCK(ATOMIC_RESTORESTATE) {
         block_head = next_index(block_head);
         if (!running) {

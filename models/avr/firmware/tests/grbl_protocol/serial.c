@@ -15,15 +15,15 @@ static volatile uint8_t tx_tail;
 volatile uint8_t serial_status_request;
 
 void serial_init(void) {
-    UCSR0A = (1 << U2X0);
-    UBRR0H = (uint8_t)(SERIAL_UBRR >> 8);
-    UBRR0L = (uint8_t)SERIAL_UBRR;
-    UCSR0B = (1 << RXEN0) | (1 << TXEN0) | (1 << RXCIE0);
+    SERIAL_UCSRA = (1 << SERIAL_U2X);
+    SERIAL_UBRRH = (uint8_t)(SERIAL_UBRR >> 8);
+    SERIAL_UBRRL = (uint8_t)SERIAL_UBRR;
+    SERIAL_UCSRB = (1 << SERIAL_RXEN) | (1 << SERIAL_TXEN) | (1 << SERIAL_RXCIE);
 }
 
 // A byte that finds the buffer full is dropped: a character-counting sender never sends one.
-ISR(USART_RX_vect) {
-    const uint8_t byte = UDR0;
+ISR(SERIAL_RX_vect) {
+    const uint8_t byte = SERIAL_UDR;
     if (byte == '?') {
         serial_status_request = 1;
         return;
@@ -44,10 +44,10 @@ uint8_t serial_read(void) {
     return byte;
 }
 
-ISR(USART_UDRE_vect) {
-    UDR0 = tx_buffer[tx_tail];
+ISR(SERIAL_UDRE_vect) {
+    SERIAL_UDR = tx_buffer[tx_tail];
     tx_tail = (uint8_t)((tx_tail + 1) % TX_BUFFER_SIZE);
-    if (tx_tail == tx_head) UCSR0B &= (uint8_t) ~(1 << UDRIE0);
+    if (tx_tail == tx_head) SERIAL_UCSRB &= (uint8_t) ~(1 << SERIAL_UDRIE);
 }
 
 void serial_write(uint8_t byte) {
@@ -56,7 +56,7 @@ void serial_write(uint8_t byte) {
     }
     tx_buffer[tx_head] = byte;
     tx_head = next;
-    UCSR0B |= (1 << UDRIE0);
+    SERIAL_UCSRB |= (1 << SERIAL_UDRIE);
 }
 
 void serial_print(const char* text) {

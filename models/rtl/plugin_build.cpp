@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
@@ -53,7 +54,8 @@ std::string cache_key(const PluginSpec& spec) {
     f.add(CNC_VERILATOR_BIN);
     f.add(CNC_RTL_CXX);
     // What this cncsim writes around the design (a change to the shim's generator is another plug-in).
-    f.add(shim_source(spec, kPrefix, std::vector<bool>(spec.observed.size(), true)));
+    f.add(shim_source(spec, kPrefix, std::vector<bool>(spec.observed.size(), true),
+                      std::vector<bool>(spec.inputs.size(), true)));
     f.add(read_text(fs::path(CNC_MODELS_DIR) / "rtl" / "rtl_model.hpp"));
     f.add(spec.top_module);
     for (const std::string& src : spec.sources) {
@@ -62,7 +64,7 @@ std::string cache_key(const PluginSpec& spec) {
     }
     for (const auto& [name, value] : spec.parameters) f.add(name + "=" + value);
     f.add(spec.clock);
-    for (const RtlPort& p : spec.inputs) f.add("i" + p.name + std::to_string(p.width));
+    for (const RtlPort& p : spec.inputs) f.add("i" + p.name + std::to_string(p.width) + (p.optional ? "?" : ""));
     for (const RtlPort& p : spec.outputs) f.add("o" + p.name + std::to_string(p.width));
     for (const ObservedNet& n : spec.observed) f.add(n.module + "." + n.path + "." + n.var);
     std::ostringstream hex;
@@ -156,8 +158,9 @@ fs::path runtime_library() {
     return lib;
 }
 
-void compile(const PluginSpec& spec, const fs::path& dir, const std::vector<bool>& present) {
-    write_text(dir / "shim.cpp", shim_source(spec, kPrefix, present));
+void compile(const PluginSpec& spec, const fs::path& dir, const std::vector<bool>& present,
+             const std::vector<bool>& inputs_present) {
+    write_text(dir / "shim.cpp", shim_source(spec, kPrefix, present, inputs_present));
     const fs::path runtime = runtime_library();
     compile_step("the verilated " + spec.top_module,
                  cxx_flags() + " -shared -I" + quoted((dir / "obj").string()) + " -I" + quoted(CNC_MODELS_DIR) + " " +
@@ -170,6 +173,15 @@ std::vector<bool> observed_in(const PluginSpec& spec, const std::string& root_he
     std::vector<bool> present;
     for (const ObservedNet& n : spec.observed) {
         present.push_back(root_header.find(" " + root_member(spec.top_module, n) + ";") != std::string::npos);
+    }
+    return present;
+}
+
+std::vector<bool> inputs_in(const PluginSpec& spec, const std::vector<VerilatedPort>& ports) {
+    std::vector<bool> present;
+    for (const RtlPort& want : spec.inputs) {
+        present.push_back(
+            std::any_of(ports.begin(), ports.end(), [&](const VerilatedPort& p) { return p.name == want.name; }));
     }
     return present;
 }
@@ -203,9 +215,11 @@ BuiltPlugin build_plugin(const PluginSpec& spec) {
     fs::create_directories(dir);
     try {
         verilate(spec, dir);
-        check_ports(spec, parse_verilated_ports(read_text(dir / "obj" / (std::string(kPrefix) + ".h"))));
+        const std::vector<VerilatedPort> ports =
+            parse_verilated_ports(read_text(dir / "obj" / (std::string(kPrefix) + ".h")));
+        check_ports(spec, ports);
         built.observed_present = observed_in(spec, read_text(dir / "obj" / (std::string(kPrefix) + "___024root.h")));
-        compile(spec, dir, built.observed_present);
+        compile(spec, dir, built.observed_present, inputs_in(spec, ports));
     } catch (...) {
         fs::remove_all(dir);
         throw;

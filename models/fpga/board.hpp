@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/clock_grid.hpp"
+#include "fpga/core/fpga_config.hpp"
 #include "fpga/core/fpga_records.hpp"
 
 namespace cnc::fpga {
@@ -26,6 +27,9 @@ public:
     sc_core::sc_out<bool> cfg_valid;
     sc_core::sc_out<bool> rx_valid;
     sc_core::sc_out<bool> tx_start;
+    // Our safety inputs (fpga.estop, fpga.interlock), active high; tied low inside unless the option gives them.
+    sc_core::sc_in<bool> estop;
+    sc_core::sc_in<bool> lid_open;
 
     // One record per pkt_valid step_gen has seen, the dropped ones included, in order; record i while not dropped.
     [[nodiscard]] virtual std::size_t packet_count() const = 0;
@@ -53,7 +57,18 @@ protected:
           pkt_valid("pkt_valid"),
           cfg_valid("cfg_valid"),
           rx_valid("rx_valid"),
-          tx_start("tx_start") {}
+          tx_start("tx_start"),
+          estop("estop"),
+          lid_open("lid_open") {}
+
+    // Binds the safety inputs `cfg` leaves out to a low signal.
+    void tie_unused_inputs(const FpgaConfig& cfg) {
+        if (!cfg.estop_input) estop(m_tied_low);
+        if (!cfg.interlock_input) lid_open(m_tied_low);
+    }
+
+private:
+    sc_core::sc_signal<bool> m_tied_low{"tied_low", false};
 };
 
 }  // namespace cnc::fpga

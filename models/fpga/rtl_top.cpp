@@ -1,6 +1,7 @@
 #include "fpga/rtl_top.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 namespace cnc::fpga {
 
@@ -30,6 +31,13 @@ enum Net : int {
     kTxNak
 };
 
+// An observed net's index in the spec (the packet check's and the e-stop's are there with their options only).
+std::size_t observed_index(const rtl::PluginSpec& spec, const char* path) {
+    const auto it = std::find_if(spec.observed.begin(), spec.observed.end(),
+                                 [&](const rtl::ObservedNet& net) { return net.path == path; });
+    return static_cast<std::size_t>(std::distance(spec.observed.begin(), it));
+}
+
 }  // namespace
 
 RtlTop::RtlTop(const sc_core::sc_module_name& name, const FpgaConfig& cfg, const rtl::Design& design)
@@ -38,11 +46,12 @@ RtlTop::RtlTop(const sc_core::sc_module_name& name, const FpgaConfig& cfg, const
       m_clock(clock_grid(cfg)),
       m_spec(rtl_plugin_spec(cfg, design)),
       m_plugin(rtl::build_plugin(m_spec)),
-      m_records(cfg, m_clock, std::all_of(m_plugin.observed_present.begin(), m_plugin.observed_present.end(),
-                                          [](bool present) { return present; })),
+      m_records(cfg, m_clock,
+                std::all_of(m_plugin.observed_present.begin(), m_plugin.observed_present.end(),
+                            [](bool present) { return present; })),
       m_loop("rtl", m_clock, m_spec, m_plugin,
              {kRtlInResetN,
-              {{&rx, kRtlInRx}},
+              {{&rx, kRtlInRx}, {&estop, kRtlInEstop}, {&lid_open, kRtlInLidOpen}},
               {{&tx, kRtlOutTx},
                {&dir_x, kRtlOutDirX},
                {&step_x, kRtlOutStepX},
@@ -54,7 +63,9 @@ RtlTop::RtlTop(const sc_core::sc_module_name& name, const FpgaConfig& cfg, const
                {&cfg_valid, -1, kCfgValid},
                {&rx_valid, -1, kRxValid},
                {&tx_start, -1, kTxStart}}},
-             [this](std::int64_t n) { on_edge(n); }) {}
+             [this](std::int64_t n) { on_edge(n); }) {
+    tie_unused_inputs(cfg);
+}
 
 void RtlTop::on_edge(std::int64_t n) {
     const auto net = [this](Net i) { return m_loop.observed(static_cast<std::size_t>(i)); };
@@ -82,6 +93,10 @@ void RtlTop::on_edge(std::int64_t n) {
         v.crc_error = net(kCrcError) != 0;
         v.pkt_repeat = net(kPktRepeat) != 0;
         v.tx_nak = net(kTxNak) != 0;
+    }
+    if (m_cfg.estop_input) {
+        v.halt = m_loop.observed(observed_index(m_spec, "halt")) != 0;
+        v.halted = m_loop.observed(observed_index(m_spec, "halted")) != 0;
     }
     m_records.edge(n, v);
 }

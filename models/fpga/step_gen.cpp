@@ -111,10 +111,13 @@ void StepGen::halt(std::int64_t edge) {
     if (step_x.read()) step_x.write(false);
     if (step_y.read()) step_y.write(false);
     if (busy.read()) busy.write(false);
-    if (m_moves.size() == m_moves.first()) return;  // no move kept
-    Move& last = m_moves[m_moves.size() - 1];
+    // The last move taken (packets ignored while it ran may follow it in the log).
+    std::size_t i = m_moves.size();
+    while (i > m_moves.first() && !m_moves[i - 1].accepted) --i;
+    if (i == m_moves.first()) return;  // no move kept
+    Move& last = m_moves[i - 1];
     const TimePs t = m_clock.at(edge);
-    if (!last.accepted || last.t_busy_fall_ps <= t) return;
+    if (last.t_busy_fall_ps <= t) return;
     last.t_busy_fall_ps = t;
     if (last.t_run_start_ps > t) last.t_run_start_ps = -1;
 }

@@ -113,16 +113,13 @@ Top::Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg)
         SC_METHOD(on_estop);
         sensitive << estop;
         dont_initialize();
-    } else {
-        estop(m_tied_low);
     }
     if (cfg.interlock_input) {
         SC_METHOD(on_lid);
         sensitive << lid_open;
         dont_initialize();
-    } else {
-        lid_open(m_tied_low);
     }
+    tie_unused_inputs(cfg);
 }
 
 // An input changed now is sampled by its synchroniser's first stage at the next edge and seen one edge later.
@@ -130,17 +127,21 @@ std::int64_t Top::synchronised_edge() const {
     return m_clock.first_after(now_ps()) + 1;
 }
 
-// step_gen halts at the edge the press is seen.
+// step_gen halts at the edge the press is seen; the halt byte starts at the edge after, or when uart_tx is free.
 void Top::on_estop() {
     ++m_activations;
     if (!estop.read() || m_halted) return;
     const std::int64_t halt = synchronised_edge();
     m_halted = true;
+    m_halt_edge = halt;
     m_halted_at_ps = m_clock.at(halt);
     step_gen_inst.halt_at(halt);
     if (packet_queue_inst) packet_queue_inst->halt();
     m_halt_byte_due = true;
-    if (m_status_tx == StatusTx::Idle && !m_tx_busy.read()) send_next_byte(halt + 1);
+    // A start asked for up to the edge before the first sample has not raised tx_busy yet, but keeps uart_tx busy
+    // past halt + 1 (a byte is ten bits): its fall sends the halt byte.
+    const bool start_under_way = m_tx_edge >= 0 && m_tx_edge >= halt - 3;
+    if (m_status_tx == StatusTx::Idle && !m_tx_busy.read() && !start_under_way) send_next_byte(halt + 1);
 }
 
 // The lid's level reaches laser_ctrl's register at the edge it is seen.
@@ -263,7 +264,7 @@ void Top::send_next_byte(std::int64_t edge) {
     m_status_tx = StatusTx::Idle;
     if (m_halt_byte_due) {
         m_halt_byte_due = false;
-        start_tx(edge, kHaltByte);
+        start_tx(std::max(edge, m_halt_edge + 1), kHaltByte);  // top.v: once halted is high
         return;
     }
     if (m_status_due && !m_halted) start_status(edge);

@@ -4,7 +4,8 @@
 // With the packet queue (fpga.queue_depth) packet_queue sits between the decoder and step_gen/laser_ctrl, and uart_tx
 // sends its 2-byte statuses instead of the ACK. With the e-stop input (fpga.estop) a press, through a 2-FF
 // synchroniser, halts step_gen at the edge after it is sampled (STEP and busy low, no move after: the laser follows
-// busy one clock later, three clocks after the input at most) and uart_tx sends the halt byte; latched until reset.
+// busy one clock later, three clocks after the input at most) and uart_tx sends the halt byte at the edge after the
+// halt, or at the first after it with uart_tx free; latched until reset.
 // With the interlock (fpga.interlock) the synchronised lid input holds laser_ctrl's output off while the lid is open.
 #pragma once
 #include <cstddef>
@@ -29,10 +30,6 @@ namespace cnc::fpga {
 
 class Top final : public Board {
 public:
-    // Our safety inputs (fpga.estop, fpga.interlock), active high; tied low inside unless the option gives them.
-    sc_core::sc_in<bool> estop{"estop"};
-    sc_core::sc_in<bool> lid_open{"lid_open"};
-
     Top(const sc_core::sc_module_name& name, const FpgaConfig& cfg);
 
     // One record per pkt_valid, in order, with the ACK outcome of accepted moves (the ones not dropped yet).
@@ -98,7 +95,6 @@ private:
     sc_core::sc_signal<std::uint16_t> m_q_feed_rate{"q_feed_rate", 0};
     sc_core::sc_signal<std::uint16_t> m_q_laser_high{"q_laser_high", 0};
     sc_core::sc_signal<bool> m_status_req{"status_req", false};
-    sc_core::sc_signal<bool> m_tied_low{"tied_low", false};
     sc_core::sc_signal<bool> m_laser_inhibit{"laser_inhibit", false};
     // top.v leaves step_gen's cfg_valid/numerator inputs unconnected; synthesis ties them low.
     sc_core::sc_signal<bool> m_cfg_valid_unconnected{"cfg_valid_unconnected", false};
@@ -133,6 +129,7 @@ private:
     std::uint8_t m_status_byte1 = 0;
     std::uint64_t m_statuses_sent = 0;
     bool m_halted = false;
+    std::int64_t m_halt_edge = 0;  // the edge step_gen halts at
     bool m_halt_byte_due = false;
     TimePs m_halted_at_ps = -1;
     std::uint64_t m_activations = 0;

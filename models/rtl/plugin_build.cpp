@@ -56,7 +56,8 @@ std::string cache_key(const PluginSpec& spec) {
     f.add(CNC_VERILATOR_BIN);
     // What this cncsim writes around the design (a change to the shim's generator is another plug-in).
     for (const bool rising_only : {false, true}) {
-        f.add(shim_source(spec, kPrefix, std::vector<bool>(spec.observed.size(), true), rising_only));
+        f.add(shim_source(spec, kPrefix, std::vector<bool>(spec.observed.size(), true),
+                          std::vector<bool>(spec.inputs.size(), true), rising_only));
     }
     f.add(cxx_flags());
     f.add(read_text(fs::path(CNC_MODELS_DIR) / "rtl" / "rtl_model.hpp"));
@@ -67,7 +68,7 @@ std::string cache_key(const PluginSpec& spec) {
     }
     for (const auto& [name, value] : spec.parameters) f.add(name + "=" + value);
     f.add(spec.clock);
-    for (const RtlPort& p : spec.inputs) f.add("i" + p.name + std::to_string(p.width));
+    for (const RtlPort& p : spec.inputs) f.add("i" + p.name + std::to_string(p.width) + (p.optional ? "?" : ""));
     for (const RtlPort& p : spec.outputs) f.add("o" + p.name + std::to_string(p.width));
     for (const ObservedNet& n : spec.observed) f.add(n.module + "." + n.path + "." + n.var);
     std::ostringstream hex;
@@ -181,8 +182,9 @@ bool design_rising_edge_only(const PluginSpec& spec, const fs::path& dir) {
                             spec.clock);
 }
 
-void compile(const PluginSpec& spec, const fs::path& dir, const std::vector<bool>& present, bool rising_only) {
-    write_text(dir / "shim.cpp", shim_source(spec, kPrefix, present, rising_only));
+void compile(const PluginSpec& spec, const fs::path& dir, const std::vector<bool>& present,
+             const std::vector<bool>& inputs_present, bool rising_only) {
+    write_text(dir / "shim.cpp", shim_source(spec, kPrefix, present, inputs_present, rising_only));
     std::string unit;
     for (const fs::path& f : generated_sources(dir)) unit += "#include \"obj/" + f.filename().string() + "\"\n";
     unit += "#include \"shim.cpp\"\n";
@@ -199,6 +201,15 @@ std::vector<bool> observed_in(const PluginSpec& spec, const std::string& root_he
     std::vector<bool> present;
     for (const ObservedNet& n : spec.observed) {
         present.push_back(root_header.find(" " + root_member(spec.top_module, n) + ";") != std::string::npos);
+    }
+    return present;
+}
+
+std::vector<bool> inputs_in(const PluginSpec& spec, const std::vector<VerilatedPort>& ports) {
+    std::vector<bool> present;
+    for (const RtlPort& want : spec.inputs) {
+        present.push_back(
+            std::any_of(ports.begin(), ports.end(), [&](const VerilatedPort& p) { return p.name == want.name; }));
     }
     return present;
 }
@@ -233,10 +244,12 @@ BuiltPlugin build_plugin(const PluginSpec& spec) {
     fs::create_directories(dir);
     try {
         verilate(spec, dir);
-        check_ports(spec, parse_verilated_ports(read_text(dir / "obj" / (std::string(kPrefix) + ".h"))));
+        const std::vector<VerilatedPort> ports =
+            parse_verilated_ports(read_text(dir / "obj" / (std::string(kPrefix) + ".h")));
+        check_ports(spec, ports);
         built.observed_present = observed_in(spec, read_text(dir / "obj" / (std::string(kPrefix) + "___024root.h")));
         built.rising_edge_only = design_rising_edge_only(spec, dir);
-        compile(spec, dir, built.observed_present, built.rising_edge_only);
+        compile(spec, dir, built.observed_present, inputs_in(spec, ports), built.rising_edge_only);
     } catch (...) {
         fs::remove_all(dir);
         throw;

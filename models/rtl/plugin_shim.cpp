@@ -51,7 +51,7 @@ bool rising_edge_only(const std::string& root_header, const std::string& sources
 }
 
 std::string shim_source(const PluginSpec& spec, const std::string& prefix, const std::vector<bool>& present,
-                        bool rising_only) {
+                        const std::vector<bool>& inputs_present, bool rising_only) {
     std::vector<std::string> watched;  // C++ expressions, outputs first
     for (const RtlPort& p : spec.outputs) watched.push_back("m_top." + p.name);
     for (std::size_t i = 0; i < spec.observed.size(); ++i) {
@@ -69,6 +69,7 @@ std::string shim_source(const PluginSpec& spec, const std::string& prefix, const
       << "    void set_input(int input, std::uint64_t value) override {\n        m_settled = false;\n"
       << "        switch (input) {\n";
     for (std::size_t i = 0; i < spec.inputs.size(); ++i) {
+        if (!inputs_present[i]) continue;
         s << "            case " << i << ": m_top." << spec.inputs[i].name << " = value; break;\n";
     }
     s << "            default: break;\n        }\n    }\n"

@@ -18,10 +18,12 @@ namespace cnc::rtl {
 [[nodiscard]] bool rising_edge_only(const std::string& root_header, const std::string& sources,
                                     const std::string& prefix, const std::string& clock);
 
-// The shim's source. `present`: per spec.observed, whether the design has the net (the absent ones are skipped);
-// `rising_only`: rising_edge_only() of the verilated design.
+// The shim's source. `present`: per spec.observed, whether the design has the net; `inputs_present`: per
+// spec.inputs, whether the design has the port (an optional one); the absent ones are skipped. `rising_only`:
+// rising_edge_only() of the verilated design.
 [[nodiscard]] std::string shim_source(const PluginSpec& spec, const std::string& prefix,
-                                      const std::vector<bool>& present, bool rising_only);
+                                      const std::vector<bool>& present, const std::vector<bool>& inputs_present,
+                                      bool rising_only);
 
 // Verilator's configuration file making the observed nets readable from the root.
 [[nodiscard]] std::string public_nets_config(const PluginSpec& spec);

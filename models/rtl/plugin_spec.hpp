@@ -10,6 +10,8 @@ namespace cnc::rtl {
 struct RtlPort {
     std::string name;
     int width = 1;  // bits
+    // An input the design may lack (a user's top written before an option added it): driven if present.
+    bool optional = false;
 };
 
 // A net inside the design read after each clock edge (for a model's records; never driven).

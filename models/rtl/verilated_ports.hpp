@@ -17,8 +17,9 @@ struct VerilatedPort {
 // The ports declared in the text of a Verilator model header.
 [[nodiscard]] std::vector<VerilatedPort> parse_verilated_ports(const std::string& header_text);
 
-// BadInput naming spec.where and the port: one of the spec's ports missing, of another width or direction, or an
-// input the simulation does not drive. Ports the spec does not name that are outputs are allowed (left unread).
+// BadInput naming spec.where and the port: one of the spec's ports missing (an optional input may be), of another
+// width or direction, or an input the simulation does not drive. Ports the spec does not name that are outputs are
+// allowed (left unread).
 void check_ports(const PluginSpec& spec, const std::vector<VerilatedPort>& ports);
 
 }  // namespace cnc::rtl

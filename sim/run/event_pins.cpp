@@ -1,5 +1,7 @@
 #include "run/event_pins.hpp"
 
+#include <limits>
+
 #include "common/sc_time.hpp"
 #include "common/units.hpp"
 
@@ -12,8 +14,13 @@ EventPins::EventPins(const sc_core::sc_module_name& name, const std::vector<Scen
     SC_THREAD(run);
 }
 
+TimePs EventPins::quiet_until_ps() const {
+    return m_next < m_events.size() ? s_to_ps(m_events[m_next].at_s) : std::numeric_limits<TimePs>::max();
+}
+
 void EventPins::run() {
-    for (const ScenarioEvent& e : m_events) {
+    for (; m_next < m_events.size(); ++m_next) {
+        const ScenarioEvent& e = m_events[m_next];
         const TimePs at = s_to_ps(e.at_s);
         if (at > now_ps()) wait_ps(at - now_ps());
         (e.input == SafetyInput::Estop ? m_estop : m_lid_open).write(e.active);

@@ -67,5 +67,18 @@ TEST(VerilatedPorts, EveryMismatchNamesThePort) {
               "clk, enable)");
 }
 
+TEST(VerilatedPorts, AnOptionalInputMayBeMissingAndIsDrivenWhenPresent) {
+    PluginSpec spec = counter_spec("counter.v");
+    spec.inputs.push_back({"hold", 1, true});
+    const std::vector<VerilatedPort> without{
+        {"clk", 1, true}, {"enable", 1, true}, {"count", 8, false}, {"at_limit", 1, false}};
+    EXPECT_NO_THROW(check_ports(spec, without));
+    std::vector<VerilatedPort> with = without;
+    with.push_back({"hold", 1, true});
+    EXPECT_NO_THROW(check_ports(spec, with));
+    with.back().width = 2;
+    EXPECT_THROW(check_ports(spec, with), BadInput);
+}
+
 }  // namespace
 }  // namespace cnc::rtl

@@ -10,7 +10,7 @@ namespace {
 
 // uart_rx.v's and step_gen.v's state codes.
 constexpr std::uint8_t kUartRxIdle = 0, kUartRxStop = 3;
-constexpr std::uint8_t kIdle = 0, kDirWait = 2, kRun = 3;
+constexpr std::uint8_t kIdle = 0, kDirWait = 2, kRun = 3, kHalted = 5;
 
 }  // namespace
 
@@ -81,9 +81,10 @@ void ObservedRecords::from_inner_nets(std::int64_t n, const FpgaNets& now) {
     if (now.crc_error && !m_prev.crc_error) ++m_stats.crc_errors;
     if (now.pkt_repeat && !m_prev.pkt_repeat) ++m_stats.repeats;
     if (now.tx_start && now.tx_nak && !(m_prev.tx_start && m_prev.tx_nak)) ++m_stats.naks_sent;
+    // What step_gen sees at the next edge: IDLE, and no halt.
+    const bool takes = now.step_gen_state == kIdle && !now.halt;
     if (now.cfg_valid && !m_prev.cfg_valid) {
-        m_inits.push_back(
-            {t, now.numerator_x, now.numerator_y, m_cfg.init_packet_wired && now.step_gen_state == kIdle});
+        m_inits.push_back({t, now.numerator_x, now.numerator_y, m_cfg.init_packet_wired && takes});
     }
     if (now.pkt_valid && !m_prev.pkt_valid) {
         PacketRecord r;
@@ -92,7 +93,7 @@ void ObservedRecords::from_inner_nets(std::int64_t n, const FpgaNets& now) {
         r.steps_x = now.steps_x;
         r.steps_y = now.steps_y;
         r.feed = now.feed_rate;
-        r.accepted = now.step_gen_state == kIdle;  // what step_gen sees at the next edge
+        r.accepted = takes;
         if (r.accepted) {
             r.period_overflow = compute_periods(abs_steps(r.steps_x), abs_steps(r.steps_y), r.feed, now.num_x,
                                                 now.num_y, m_cfg)
@@ -101,7 +102,18 @@ void ObservedRecords::from_inner_nets(std::int64_t n, const FpgaNets& now) {
         }
         m_packets.push_back({r, !r.accepted});
     }
-    if (m_prev.step_gen_state == kDirWait && now.step_gen_state != kDirWait) {
+    if (now.halted && !m_prev.halted) {
+        m_stats.halted_at_ps = t;
+        // A move halted before DIR_WAIT ended: its periods are the ones step_gen would have set.
+        PacketRecord* r = running();
+        if (r != nullptr && !m_packets[m_running].final) {
+            const StepPeriods p =
+                compute_periods(abs_steps(r->steps_x), abs_steps(r->steps_y), r->feed, now.num_x, now.num_y, m_cfg);
+            r->period_x_cycles = p.x_cycles;
+            r->period_y_cycles = p.y_cycles;
+            m_packets[m_running].final = true;
+        }
+    } else if (m_prev.step_gen_state == kDirWait && now.step_gen_state != kDirWait) {
         if (PacketRecord* r = running()) {
             r->period_x_cycles = now.period_x;
             r->period_y_cycles = now.period_y;
@@ -111,8 +123,10 @@ void ObservedRecords::from_inner_nets(std::int64_t n, const FpgaNets& now) {
     }
     if (m_prev.busy && !now.busy) {
         if (PacketRecord* r = running()) r->t_busy_fall_ps = t;
-        m_ack_edge = n + 1;
-        m_ack_packet = m_running;
+        if (!now.halt) {  // halt high at the next edge: no ACK
+            m_ack_edge = n + 1;
+            m_ack_packet = m_running;
+        }
     }
 }
 

@@ -2,7 +2,8 @@
 // blocks: after each clock edge that changed one of the nets below, those nets' values. The rules are top.v's:
 // step_gen takes a packet whose pkt_valid it sees in IDLE; its periods are in place when DIR_WAIT ends; busy falls
 // at DONE; uart_tx starts the ACK one edge after busy falls unless it is still sending. With the packet check the
-// decoder's crc_error and pkt_repeat strobes and the NAKs tx_start sends are counted too.
+// decoder's crc_error and pkt_repeat strobes and the NAKs tx_start sends are counted too. With the e-stop, step_gen
+// takes nothing while top.v's halt is high, no ACK follows a busy fall it sees, and the edge halted rises is the halt.
 #pragma once
 #include <cstddef>
 #include <algorithm>
@@ -28,6 +29,8 @@ struct FpgaNets {
     bool crc_error = false;       // with the packet check: packet_decoder's strobes and the byte tx_start sends
     bool pkt_repeat = false;
     bool tx_nak = false;
+    bool halt = false;  // with the e-stop: top.v's halt (step_gen's input) and halted
+    bool halted = false;
     std::uint8_t uart_rx_state = 0;
     std::uint8_t step_gen_state = 0;
     std::uint8_t motion = 0;

@@ -21,9 +21,12 @@ rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design
          {"EXACT_PERIOD", cfg.period_arithmetic == PeriodArithmetic::Exact ? "1" : "0"},
          {"INIT_WIRED", cfg.init_packet_wired ? "1" : "0"},
          {"PACKET_CRC", cfg.packet_crc ? "1" : "0"},
-         {"LASER_PWM_PERIOD", std::to_string(cfg.laser_pwm_period_cycles)}});
+         {"LASER_PWM_PERIOD", std::to_string(cfg.laser_pwm_period_cycles)},
+         {"ESTOP", cfg.estop_input ? "1" : "0"},
+         {"INTERLOCK", cfg.interlock_input ? "1" : "0"}});
     spec.clock = "clk";
-    spec.inputs = {{"rst_n", 1}, {"rx", 1}};
+    // A top without the safety inputs runs where their options are off (they are tied low then).
+    spec.inputs = {{"rst_n", 1}, {"rx", 1}, {"estop", 1, !cfg.estop_input}, {"lid_open", 1, !cfg.interlock_input}};
     spec.outputs = {{"tx", 1},     {"dir_x", 1},    {"step_x", 1}, {"n_enbl_x", 1}, {"dir_y", 1},
                     {"step_y", 1}, {"n_enbl_y", 1}, {"laser", 1},  {"busy", 1}};
     const std::string& top = spec.top_module;
@@ -50,6 +53,10 @@ rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design
         spec.observed.push_back({top, "crc_error", "crc_error"});
         spec.observed.push_back({top, "pkt_repeat", "pkt_repeat"});
         spec.observed.push_back({top, "tx_nak", "tx_nak"});
+    }
+    if (cfg.estop_input) {
+        spec.observed.push_back({top, "halt", "halt"});
+        spec.observed.push_back({top, "halted", "halted"});
     }
     return spec;
 }

@@ -6,15 +6,17 @@
 
 namespace cnc::fpga {
 
-// Our top's port list (README of rtl/): clk; rst_n and rx in; tx, DIR/STEP/nENBL per axis, laser and busy out.
+// Our top's port list (README of rtl/): clk; rst_n, rx, estop and lid_open in; tx, DIR/STEP/nENBL per axis, laser
+// and busy out.
 inline constexpr int kRtlOutTx = 0, kRtlOutDirX = 1, kRtlOutStepX = 2, kRtlOutEnX = 3, kRtlOutDirY = 4,
                      kRtlOutStepY = 5, kRtlOutEnY = 6, kRtlOutLaser = 7, kRtlOutBusy = 8;
-inline constexpr int kRtlInResetN = 0, kRtlInRx = 1;
+inline constexpr int kRtlInResetN = 0, kRtlInRx = 1, kRtlInEstop = 2, kRtlInLidOpen = 3;
 
 // The plug-in to build: the design's sources, its top module (the one named as the file, our "top"), the
 // parameters from `cfg` (CLK_HZ, FULL_BIT, PULSE_HIGH, DIR_SETTLE, FEED_ZERO_PERIOD, TIMEOUT_CYCLES,
-// NUMERATOR_DEFAULT, EXACT_PERIOD, INIT_WIRED, PACKET_CRC, LASER_PWM_PERIOD; of a user's top, those it declares) then the design's
-// own, and the nets ObservedRecords reads (the packet check's only with it).
+// NUMERATOR_DEFAULT, EXACT_PERIOD, INIT_WIRED, PACKET_CRC, LASER_PWM_PERIOD, ESTOP, INTERLOCK; of a user's top, those
+// it declares) then the design's own, and the nets ObservedRecords reads (the packet check's and the e-stop's only
+// with them). estop and lid_open are required of a user's top only with their options.
 [[nodiscard]] rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design);
 
 }  // namespace cnc::fpga

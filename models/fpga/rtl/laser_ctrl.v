@@ -5,6 +5,8 @@
 // protocol): the packet's high time is latched with the motion code, a count of the clock restarts at 0 there, counts
 // while step_gen is busy (an idle FPGA stays at rest) and wraps at PWM_PERIOD - 1, and the laser is also gated by
 // count < high: a duty of high / PWM_PERIOD.
+//
+// inhibit, our interlock (top.v's INTERLOCK: the lid's synchronised input, low without it), holds the laser off.
 module laser_ctrl #(
     parameter PWM_PERIOD = 0  // clocks; 0: the seed's on/off laser
 ) (
@@ -14,6 +16,7 @@ module laser_ctrl #(
     input  wire [15:0] laser_high,
     input  wire        pkt_valid,
     input  wire        busy,
+    input  wire        inhibit,
     output reg         laser
 );
     localparam [15:0] COUNT_LAST = PWM_PERIOD - 1;
@@ -37,7 +40,7 @@ module laser_ctrl #(
                 count <= 16'd0;
             else if (busy)
                 count <= count == COUNT_LAST ? 16'd0 : count + 16'd1;
-            laser <= engrave & busy & pwm_on;
+            laser <= engrave & busy & pwm_on & !inhibit;
         end
     end
 endmodule

@@ -26,13 +26,14 @@ module step_gen #(
     input  wire [31:0] numerator_x,
     input  wire [31:0] numerator_y,
     input  wire        cfg_valid,
+    input  wire        halt,  // our e-stop (top.v's ESTOP): held high until reset; tied low without it
     output reg         dir_x,
     output reg         step_x,
     output reg         dir_y,
     output reg         step_y,
     output reg         busy
 );
-    localparam [2:0] IDLE = 3'd0, SETUP = 3'd1, DIR_WAIT = 3'd2, RUN = 3'd3, DONE = 3'd4;
+    localparam [2:0] IDLE = 3'd0, SETUP = 3'd1, DIR_WAIT = 3'd2, RUN = 3'd3, DONE = 3'd4, HALTED = 3'd5;
     reg [2:0]  state;
     reg [31:0] num_x, num_y;
     reg [31:0] abs_x, abs_y, rem_x, rem_y, period_x, period_y, cnt_x, cnt_y;
@@ -82,6 +83,11 @@ module step_gen #(
             step_x <= 1'b0;
             step_y <= 1'b0;
             busy <= 1'b0;
+        end else if (halt) begin  // STEP and busy fall at the edge that sees it; no init or packet is taken after
+            step_x <= 1'b0;
+            step_y <= 1'b0;
+            busy <= 1'b0;
+            state <= HALTED;
         end else begin
             if (cfg_valid && state == IDLE) begin  // an init arriving mid-move is dropped
                 num_x <= numerator_x;

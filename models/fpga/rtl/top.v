@@ -8,6 +8,13 @@
 // of the move still running is ACKed when busy falls). An ACK and a NAK asked for at the same edge send the ACK, as
 // the event model does (models/fpga/top.cpp): uart_tx sends one byte, and a packet left without its NAK is sent again
 // after the host's ACK timeout.
+//
+// ESTOP = 1 adds our e-stop input (fpga.estop, active high): estop_meta samples it, and step_gen's registers are the
+// synchroniser's second stage: the edge after estop_meta rises drops STEP and busy and latches halted (laser_ctrl
+// follows busy an edge later: three clocks after the input at most). From the edge that sees estop_meta no ACK or
+// NAK starts; the edge after halted rises, or the first after that with uart_tx free, starts the halt byte 0x4B.
+// All latched until reset. INTERLOCK = 1 adds the lid's input (fpga.interlock, high while open): through two
+// flip-flops it holds laser_ctrl's output off. Without them the inputs are read by nothing (tie them low).
 module top #(
     parameter CLK_HZ            = 50000000,
     parameter BAUD              = 115200,
@@ -28,11 +35,15 @@ module top #(
     parameter PACKET_CRC        = 0,
     // > 0: our PWM laser power (fpga.laser_pwm): the PWM period in clocks, each motion packet carrying its high time
     // (packet_decoder.v, laser_ctrl.v); 0: the seed's on/off laser and packets.
-    parameter LASER_PWM_PERIOD  = 0
+    parameter LASER_PWM_PERIOD  = 0,
+    parameter ESTOP             = 0,
+    parameter INTERLOCK         = 0
 ) (
     input  wire clk,
     input  wire rst_n,
     input  wire rx,
+    input  wire estop,
+    input  wire lid_open,
     output wire tx,
     output wire dir_x,
     output wire step_x,
@@ -54,6 +65,10 @@ module top #(
     wire        tx_busy;
     reg         tx_start, busy_prev;
     reg         tx_nak;  // the byte tx_start sends: NAK 0x55, else ACK 0xAA (held between starts)
+    reg         tx_halt;  // the byte tx_start sends is the halt byte 0x4B (the last one)
+    reg         estop_meta, halted, halt_sent, lid_meta, lid_sync;
+    wire        halt = ESTOP != 0 && (estop_meta || halted);
+    wire        halt_byte = ESTOP != 0 && halted && !halt_sent;
 
     uart_rx #(.FULL_BIT(FULL_BIT), .HALF_BIT(FULL_BIT / 2)) uart_rx_inst (
         .clk(clk), .rst(rst), .rx(rx), .rx_data(rx_data), .rx_valid(rx_valid));
@@ -69,31 +84,44 @@ module top #(
                .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT), .EXACT_PERIOD(EXACT_PERIOD), .DIVIDER(DIVIDER)) step_gen_inst (
         .clk(clk), .rst(rst), .steps_x(steps_x), .steps_y(steps_y), .feed_rate(feed_rate), .pkt_valid(pkt_valid),
         .numerator_x(INIT_WIRED ? numerator_x : 32'd0), .numerator_y(INIT_WIRED ? numerator_y : 32'd0),
-        .cfg_valid(INIT_WIRED ? cfg_valid : 1'b0), .dir_x(dir_x), .step_x(step_x), .dir_y(dir_y), .step_y(step_y),
-        .busy(busy));
+        .cfg_valid(INIT_WIRED ? cfg_valid : 1'b0), .halt(halt), .dir_x(dir_x), .step_x(step_x), .dir_y(dir_y),
+        .step_y(step_y), .busy(busy));
 
     laser_ctrl #(.PWM_PERIOD(LASER_PWM_PERIOD)) laser_ctrl_inst (
         .clk(clk), .rst(rst), .motion(motion), .laser_high(laser_high), .pkt_valid(pkt_valid), .busy(busy),
-        .laser(laser));
+        .inhibit(INTERLOCK != 0 && lid_sync), .laser(laser));
 
     uart_tx #(.FULL_BIT(FULL_BIT)) uart_tx_inst (
-        .clk(clk), .rst(rst), .tx_data(tx_nak ? 8'h55 : 8'hAA), .tx_start(tx_start), .tx_busy(tx_busy), .tx(tx));
+        .clk(clk), .rst(rst), .tx_data(tx_halt ? 8'h4B : tx_nak ? 8'h55 : 8'hAA), .tx_start(tx_start),
+        .tx_busy(tx_busy), .tx(tx));
 
     // busy fell at the last edge, or (with the check) a move that has run came again; a packet failed its CRC.
-    wire ack = (busy_prev && !busy) || (PACKET_CRC != 0 && pkt_repeat && !busy);
-    wire nak = PACKET_CRC != 0 && crc_error;
+    wire ack = !halt && ((busy_prev && !busy) || (PACKET_CRC != 0 && pkt_repeat && !busy));
+    wire nak = !halt && PACKET_CRC != 0 && crc_error;
 
     always @(posedge clk) begin
         if (rst) begin
             tx_start <= 1'b0;
             busy_prev <= 1'b0;
             tx_nak <= 1'b0;
+            tx_halt <= 1'b0;
+            {estop_meta, halted, halt_sent, lid_meta, lid_sync} <= 5'd0;
         end else begin
             tx_start <= 1'b0;
             busy_prev <= busy;
+            estop_meta <= estop;
+            halted <= halted || estop_meta;
+            lid_meta <= lid_open;
+            lid_sync <= lid_meta;
             if ((ack || nak) && !tx_busy) begin
                 tx_start <= 1'b1;
                 tx_nak <= nak && !ack;  // written so, not !ack, for synthesis to see it stay 0 without the check
+            end
+            if (halt_byte && !tx_busy) begin  // never with an ACK or a NAK: halt is high
+                tx_start <= 1'b1;
+                tx_nak <= 1'b0;
+                tx_halt <= 1'b1;
+                halt_sent <= 1'b1;
             end
         end
     end

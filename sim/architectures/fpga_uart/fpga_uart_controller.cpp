@@ -440,19 +440,21 @@ host::SenderConfig sender_config(const Scenario& s, const FpgaUartSettings& f) {
 }
 
 // The FPGA as the scenario asks: the event-driven blocks, or the Verilog in the loop running ahead to the time
-// before which rx cannot change (`rx_quiet_until`).
+// before which its inputs cannot change (`rx_quiet_until`: rx's and the safety inputs').
 std::unique_ptr<fpga::Board> make_fpga(const FpgaUartSettings& f, std::uint64_t seed,
                                        std::function<TimePs()> rx_quiet_until, Wires& wires) {
     const fpga::FpgaConfig cfg = on_oscillator(f.fpga, f.clock, seed);
+    std::unique_ptr<fpga::Board> board;
     if (!f.rtl.rtl) {
-        auto top = std::make_unique<fpga::Top>("fpga", cfg);
-        if (cfg.estop_input) top->estop(wires.estop);
-        if (cfg.interlock_input) top->lid_open(wires.lid_open);
-        return top;
+        board = std::make_unique<fpga::Top>("fpga", cfg);
+    } else {
+        auto rtl = std::make_unique<fpga::RtlTop>("fpga", cfg, f.rtl.design);
+        rtl->rx_quiet_until(std::move(rx_quiet_until));
+        board = std::move(rtl);
     }
-    auto rtl = std::make_unique<fpga::RtlTop>("fpga", cfg, f.rtl.design);
-    rtl->rx_quiet_until(std::move(rx_quiet_until));
-    return rtl;
+    if (cfg.estop_input) board->estop(wires.estop);
+    if (cfg.interlock_input) board->lid_open(wires.lid_open);
+    return board;
 }
 
 // The seed 000 system between the job and the machine's pins: the CAM (GCODE2STEPS) on the host, or the steps file
@@ -613,10 +615,10 @@ private:
         m_from_fpga_line->out(m_wires.uart_tx);
     }
     // The CP2102's promise for its TXD, through the faulty wire if there is one (an inverted bit changes rx where
-    // TXD does not).
+    // TXD does not), and the next of the scenario's events.
     [[nodiscard]] TimePs rx_quiet_until() const {
         const TimePs txd = m_cp2102.txd_quiet_until();
-        return m_to_fpga_line ? m_to_fpga_line->out_quiet_until(txd) : txd;
+        return std::min(m_to_fpga_line ? m_to_fpga_line->out_quiet_until(txd) : txd, m_event_pins.quiet_until_ps());
     }
     void report_faults(ArchRun& run, std::ostringstream& text) const;
     // The split reads gap k between packets k and k+1 as each packet runs once: not so on a link with faults (a host

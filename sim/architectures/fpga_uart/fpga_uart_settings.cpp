@@ -151,10 +151,6 @@ void read_safety_inputs(KeyReader& r, FpgaUartSettings& s) {
         "an interlock input on the FPGA for the laser's lid (seed 000 sec. 7.2), driven by [[events]] lid-opened and "
         "lid-closed: while the lid is open the laser is held off (three clocks after the input at most), the motion "
         "goes on");
-    if ((s.fpga.estop_input || s.fpga.interlock_input) && s.rtl.rtl) {
-        r.fail(s.fpga.estop_input ? "fpga.estop" : "fpga.interlock",
-               "the e-stop and interlock inputs are in the event model only: fpga.model = \"event\"");
-    }
 }
 
 // Our option on seed 000 §7.2's PWM laser power: laser_ctrl's law in fpga/core/laser_pwm.hpp, the frame in

@@ -11,10 +11,15 @@ inline constexpr int kRtlOutTx = 0, kRtlOutDirX = 1, kRtlOutStepX = 2, kRtlOutEn
                      kRtlOutStepY = 5, kRtlOutEnY = 6, kRtlOutLaser = 7, kRtlOutBusy = 8;
 inline constexpr int kRtlInResetN = 0, kRtlInRx = 1;
 
+// step_ramp.v divides the ramp's cruise velocity during DIR_WAIT: its registers are ready 52 clocks into it (with
+// step_gen's single-clock periods).
+inline constexpr std::uint32_t kRtlRampDirSettleMin = 52;
+
 // The plug-in to build: the design's sources, its top module (the one named as the file, our "top"), the
 // parameters from `cfg` (CLK_HZ, FULL_BIT, PULSE_HIGH, DIR_SETTLE, FEED_ZERO_PERIOD, TIMEOUT_CYCLES,
-// NUMERATOR_DEFAULT, EXACT_PERIOD, INIT_WIRED, PACKET_CRC, LASER_PWM_PERIOD; of a user's top, those it declares) then the design's
-// own, and the nets ObservedRecords reads (the packet check's only with it).
+// NUMERATOR_DEFAULT, EXACT_PERIOD, INIT_WIRED, PACKET_CRC, LASER_PWM_PERIOD, RAMP, RAMP_ACCEL_DEFAULT,
+// RAMP_START_DEFAULT; of a user's top, those it declares) then the design's own, and the nets ObservedRecords reads
+// (the packet check's only with it).
 [[nodiscard]] rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design);
 
 }  // namespace cnc::fpga

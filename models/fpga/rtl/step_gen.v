@@ -81,8 +81,9 @@ module step_gen #(
     generate
         if (RAMP != 0) begin : ramped
             step_ramp #(.PULSE_HIGH(PULSE_HIGH)) ramp (
-                .clk(clk), .rst(rst), .load(ramp_load), .run(state == RUN), .period_dom(x_dominant ? period_x : period_y),
-                .abs_dom(abs_dom), .abs_sub(abs_sub), .start_reg(start_reg), .accel_reg(accel_reg),
+                .clk(clk), .rst(rst), .load(ramp_load), .run(state == RUN),
+                .period_dom(x_dominant ? period_x : period_y), .abs_dom(abs_dom), .abs_sub(abs_sub),
+                .start_reg(start_reg), .accel_reg(accel_reg),
                 .rise_dom(ramp_rise_dom), .rise_sub(ramp_rise_sub), .fall(ramp_fall), .finished(ramp_finished));
         end else begin : unramped
             assign {ramp_rise_dom, ramp_rise_sub, ramp_fall, ramp_finished} = 4'd0;

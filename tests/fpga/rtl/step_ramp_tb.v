@@ -40,7 +40,8 @@ module step_ramp_tb;
         end
     endtask
 
-    // The rises of each STEP in the move so far (cycles), their high times other than 100, DIR's last change, busy's fall.
+    // The rises of each STEP in the move so far (cycles), their high times other than 100, DIR's last change, busy's
+    // fall.
     integer x_rise [0:MAX_STEPS - 1];
     integer y_rise [0:MAX_STEPS - 1];
     integer x_count = 0, y_count = 0, bad_high = 0, dir_changed = 0, busy_fell = 0, moves = 0;

@@ -107,7 +107,8 @@ module packet_decoder #(
             cfg_valid <= 1'b0;
             crc_error <= 1'b0;
             pkt_repeat <= 1'b0;
-            if (RAMPED) begin  // without the ramp, no reset logic is left for Yosys to remove
+            // Only with the ramp: unused without it, their reset still moved Yosys's LUT mapping of the seed's design.
+            if (RAMPED) begin
                 {b13, b14, b15, b16} <= 32'd0;
                 ramp_accel <= RAMP_ACCEL_DEFAULT;
                 ramp_start <= RAMP_START_DEFAULT;

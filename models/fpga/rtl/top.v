@@ -69,8 +69,7 @@ module top #(
         .clk(clk), .rst(rst), .rx_data(rx_data), .rx_valid(rx_valid), .motion(motion), .steps_x(steps_x),
         .steps_y(steps_y), .feed_rate(feed_rate), .laser_high(laser_high), .pkt_valid(pkt_valid),
         .numerator_x(numerator_x), .numerator_y(numerator_y), .ramp_accel(ramp_accel), .ramp_start(ramp_start),
-        .cfg_valid(cfg_valid), .crc_error(crc_error),
-        .pkt_repeat(pkt_repeat));
+        .cfg_valid(cfg_valid), .crc_error(crc_error), .pkt_repeat(pkt_repeat));
 
     step_gen #(.PULSE_HIGH(PULSE_HIGH), .DIR_SETTLE(DIR_SETTLE), .FEED_ZERO_PERIOD(FEED_ZERO_PERIOD),
                .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT), .EXACT_PERIOD(EXACT_PERIOD), .DIVIDER(DIVIDER), .RAMP(RAMP),

@@ -8,22 +8,25 @@ namespace cnc::fpga {
 
 rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design) {
     rtl::PluginSpec spec;
-    rtl::set_design(
-        spec, design, "top", CNC_FPGA_RTL_DIR,
-        {"top.v", "uart_rx.v", "packet_decoder.v", "step_gen.v", "period_divider.v", "laser_ctrl.v", "uart_tx.v"},
-        {{"CLK_HZ", std::to_string(cfg.clk_hz)},
-         {"FULL_BIT", std::to_string(cfg.uart_full_bit_cycles)},
-         {"PULSE_HIGH", std::to_string(cfg.pulse_high_cycles)},
-         {"DIR_SETTLE", std::to_string(cfg.dir_settle_cycles)},
-         {"FEED_ZERO_PERIOD", std::to_string(cfg.feed_zero_period_cycles)},
-         {"TIMEOUT_CYCLES", std::to_string(cfg.watchdog_cycles)},
-         {"NUMERATOR_DEFAULT", std::to_string(cfg.numerator_default)},
-         {"EXACT_PERIOD", cfg.period_arithmetic == PeriodArithmetic::Exact ? "1" : "0"},
-         {"INIT_WIRED", cfg.init_packet_wired ? "1" : "0"},
-         {"PACKET_CRC", cfg.packet_crc ? "1" : "0"},
-         {"LASER_PWM_PERIOD", std::to_string(cfg.laser_pwm_period_cycles)},
-         {"ESTOP", cfg.estop_input ? "1" : "0"},
-         {"INTERLOCK", cfg.interlock_input ? "1" : "0"}});
+    rtl::set_design(spec, design, "top", CNC_FPGA_RTL_DIR,
+                    {"top.v", "uart_rx.v", "packet_decoder.v", "step_gen.v", "period_divider.v", "step_ramp.v",
+                     "laser_ctrl.v", "uart_tx.v"},
+                    {{"CLK_HZ", std::to_string(cfg.clk_hz)},
+                     {"FULL_BIT", std::to_string(cfg.uart_full_bit_cycles)},
+                     {"PULSE_HIGH", std::to_string(cfg.pulse_high_cycles)},
+                     {"DIR_SETTLE", std::to_string(cfg.dir_settle_cycles)},
+                     {"FEED_ZERO_PERIOD", std::to_string(cfg.feed_zero_period_cycles)},
+                     {"TIMEOUT_CYCLES", std::to_string(cfg.watchdog_cycles)},
+                     {"NUMERATOR_DEFAULT", std::to_string(cfg.numerator_default)},
+                     {"EXACT_PERIOD", cfg.period_arithmetic == PeriodArithmetic::Exact ? "1" : "0"},
+                     {"INIT_WIRED", cfg.init_packet_wired ? "1" : "0"},
+                     {"PACKET_CRC", cfg.packet_crc ? "1" : "0"},
+                     {"LASER_PWM_PERIOD", std::to_string(cfg.laser_pwm_period_cycles)},
+                     {"ESTOP", cfg.estop_input ? "1" : "0"},
+                     {"INTERLOCK", cfg.interlock_input ? "1" : "0"},
+                     {"RAMP", cfg.ramp == StepRamp::Trapezoidal ? "1" : "0"},
+                     {"RAMP_ACCEL_DEFAULT", std::to_string(cfg.ramp_accel_default)},
+                     {"RAMP_START_DEFAULT", std::to_string(cfg.ramp_start_default)}});
     spec.clock = "clk";
     // A top without the safety inputs runs where their options are off (they are tied low then).
     spec.inputs = {{"rst_n", 1}, {"rx", 1}, {"estop", 1, !cfg.estop_input}, {"lid_open", 1, !cfg.interlock_input}};

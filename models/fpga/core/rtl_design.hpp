@@ -12,11 +12,16 @@ inline constexpr int kRtlOutTx = 0, kRtlOutDirX = 1, kRtlOutStepX = 2, kRtlOutEn
                      kRtlOutStepY = 5, kRtlOutEnY = 6, kRtlOutLaser = 7, kRtlOutBusy = 8;
 inline constexpr int kRtlInResetN = 0, kRtlInRx = 1, kRtlInEstop = 2, kRtlInLidOpen = 3;
 
+// step_ramp.v divides the ramp's cruise velocity during DIR_WAIT: its registers are ready 52 clocks into it (with
+// step_gen's single-clock periods).
+inline constexpr std::uint32_t kRtlRampDirSettleMin = 52;
+
 // The plug-in to build: the design's sources, its top module (the one named as the file, our "top"), the
 // parameters from `cfg` (CLK_HZ, FULL_BIT, PULSE_HIGH, DIR_SETTLE, FEED_ZERO_PERIOD, TIMEOUT_CYCLES,
-// NUMERATOR_DEFAULT, EXACT_PERIOD, INIT_WIRED, PACKET_CRC, LASER_PWM_PERIOD, ESTOP, INTERLOCK; of a user's top, those
-// it declares) then the design's own, and the nets ObservedRecords reads (the packet check's and the e-stop's only
-// with them). estop and lid_open are required of a user's top only with their options.
+// NUMERATOR_DEFAULT, EXACT_PERIOD, INIT_WIRED, PACKET_CRC, LASER_PWM_PERIOD, ESTOP, INTERLOCK, RAMP,
+// RAMP_ACCEL_DEFAULT, RAMP_START_DEFAULT; of a user's top, those it declares) then the design's own, and the nets
+// ObservedRecords reads (the packet check's and the e-stop's only with them). estop and lid_open are required of a
+// user's top only with their options.
 [[nodiscard]] rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design);
 
 }  // namespace cnc::fpga

@@ -1,11 +1,12 @@
 // step_gen's S-curve plan for one move (fpga.ramp = "s-curve", core/step_ramp.hpp has the registers it drives):
-// the clocks n_j of each jerk phase and n_a at the top acceleration, chosen once at the move's start (the DIR
-// settle's 200 clocks leave time for a sequential search). The acceleration then climbs by the jerk register each
-// clock for n_j clocks (never above the acceleration register), holds for n_a clocks and falls back for n_j: the
-// velocity gains jerk x n_j x (n_j + 1 + n_a) in 2^-80 steps per clock before its truncation. The plan is the
-// largest whose gain stays within the cruise's velocity less the start speed (never faster than the packet
-// asks) and whose distance, twice over (the deceleration mirrors it), leaves the move's first and last steps: a
-// move too short for the full acceleration or the cruise gets shorter jerk phases (or none) and no top phase.
+// the clocks n_j of each jerk phase and n_a at the top acceleration, chosen once at the move's start (at once: a
+// hardware search would take thousands of clocks, sim/architectures/fpga_uart/README.md "The S-curve"). The
+// acceleration then climbs by the jerk register each clock for n_j clocks (never above the acceleration register),
+// holds for n_a clocks and falls back for n_j: the velocity gains jerk x n_j x (n_j + 1 + n_a) in 2^-80 steps per
+// clock before its truncation. The plan is the largest whose gain stays within the cruise's velocity less the start
+// speed (never faster than the packet asks) and whose distance, twice over (the deceleration mirrors it), leaves the
+// move's first and last steps: a move too short for the full acceleration or the cruise gets shorter jerk phases (or
+// none) and no top phase.
 #pragma once
 #include <cstdint>
 

@@ -14,11 +14,17 @@
 //
 // LASER_PWM = 1 adds our PWM laser power's field (laser_ctrl.v): a motion packet has two more bytes after the feed, the
 // PWM high time in clocks, big-endian (13 bytes, 15 with the check).
+//
+// RAMP = 1 adds our trapezoidal ramp's registers (step_ramp.v): an init packet has eight more bytes after the
+// numerators, the acceleration and the start speed, big-endian (17 bytes, 19 with the check).
 module packet_decoder #(
     parameter TIMEOUT_CYCLES    = 5000000,   // 100 ms at 50 MHz
     parameter NUMERATOR_DEFAULT = 18750000,  // §5.2.3: 1/32 microstep, GT2 belt, 20-tooth pulley
     parameter PACKET_CRC        = 0,         // 1: the packet check above; 0: the seed's packets
-    parameter LASER_PWM         = 0          // 1: the PWM high time above; 0: the seed's packets
+    parameter LASER_PWM         = 0,         // 1: the PWM high time above; 0: the seed's packets
+    parameter RAMP              = 0,         // 1: the ramp's registers above; 0: the seed's init packet
+    parameter RAMP_ACCEL_DEFAULT = 18014,    // their values until an init packet sets them
+    parameter RAMP_START_DEFAULT = 68719
 ) (
     input  wire        clk,
     input  wire        rst,
@@ -32,6 +38,8 @@ module packet_decoder #(
     output reg         pkt_valid,
     output reg  [31:0] numerator_x,
     output reg  [31:0] numerator_y,
+    output reg  [31:0] ramp_accel,
+    output reg  [31:0] ramp_start,
     output reg         cfg_valid,
     output reg         crc_error,
     output reg         pkt_repeat
@@ -39,17 +47,20 @@ module packet_decoder #(
     localparam [7:0] CFG_MARKER  = 8'hFF;
     localparam       CHECKED     = PACKET_CRC != 0;  // one bit, for the conditions below
     localparam       PWM         = LASER_PWM != 0;
+    localparam       RAMPED      = RAMP != 0;
+    localparam       COUNT_BITS  = RAMPED ? 5 : 4;  // the ramp's init packet is 17 bytes long
     // The byte_count of a packet's last byte: with the check, two CRC bytes follow the seed's 9 or 11 (13 with the
-    // high time).
-    localparam [3:0] INIT_LAST   = CHECKED ? 4'd10 : 4'd8;
-    localparam [3:0] MOTION_LAST = (PWM ? 4'd12 : 4'd10) + (CHECKED ? 4'd2 : 4'd0);
-    reg [3:0]  byte_count;
+    // high time, 17 the ramp's init).
+    localparam [COUNT_BITS-1:0] INIT_LAST   = (RAMPED ? 5'd16 : 5'd8) + (CHECKED ? 5'd2 : 5'd0);
+    localparam [COUNT_BITS-1:0] MOTION_LAST = (PWM ? 4'd12 : 4'd10) + (CHECKED ? 4'd2 : 4'd0);
+    reg [COUNT_BITS-1:0] byte_count;
     reg [22:0] timeout_cnt;
     reg        timeout_active;
     reg        is_cfg_pkt;
     // With the check the last byte is the CRC's, so the fields' last bytes (b8, b10, b12) come from the bank too; so
     // does the feed's (b10) with the high time after it.
     reg [7:0]  b0, b1, b2, b3, b4, b5, b6, b7, b8, b9, b10, b11, b12;
+    reg [7:0]  b13, b14, b15, b16;  // the ramp's init
     reg [15:0] crc;       // the CRC register over the packet's bytes so far
     reg        seq_seen;  // a motion packet has been passed on since reset
     reg        last_seq;  // its sequence bit
@@ -96,6 +107,12 @@ module packet_decoder #(
             cfg_valid <= 1'b0;
             crc_error <= 1'b0;
             pkt_repeat <= 1'b0;
+            // Only with the ramp: unused without it, their reset still moved Yosys's LUT mapping of the seed's design.
+            if (RAMPED) begin
+                {b13, b14, b15, b16} <= 32'd0;
+                ramp_accel <= RAMP_ACCEL_DEFAULT;
+                ramp_start <= RAMP_START_DEFAULT;
+            end
         end else begin
             pkt_valid <= 1'b0;
             cfg_valid <= 1'b0;
@@ -129,6 +146,14 @@ module packet_decoder #(
                     4'd12: b12 <= rx_data;
                     default: ;
                 endcase
+                if (RAMPED)
+                    case (byte_count)
+                        5'd13: b13 <= rx_data;
+                        5'd14: b14 <= rx_data;
+                        5'd15: b15 <= rx_data;
+                        5'd16: b16 <= rx_data;
+                        default: ;
+                    endcase
                 if (byte_count == 4'd0) begin
                     timeout_active <= 1'b1;
                     is_cfg_pkt <= rx_data == CFG_MARKER;
@@ -136,7 +161,11 @@ module packet_decoder #(
                 if (is_cfg_pkt && byte_count == INIT_LAST) begin
                     if (crc_good) begin
                         numerator_x <= {b1, b2, b3, b4};
-                        numerator_y <= {b5, b6, b7, CHECKED ? b8 : rx_data};
+                        numerator_y <= {b5, b6, b7, CHECKED || RAMPED ? b8 : rx_data};
+                        if (RAMPED) begin
+                            ramp_accel <= {b9, b10, b11, b12};
+                            ramp_start <= {b13, b14, b15, CHECKED ? b16 : rx_data};
+                        end
                         cfg_valid <= 1'b1;
                     end else
                         crc_error <= 1'b1;

@@ -4,6 +4,8 @@
 // The dominant axis steps every num/feed clocks; the other every (num/feed) x abs_dom / abs_sub, with the
 // dominant axis' numerator (its cycles per step are the time base). STEP rises at the start of each period and
 // stays high PULSE_HIGH clocks; RUN lasts abs_dom x period_dom clocks exactly.
+// With RAMP = 1 (our trapezoidal ramp, fpga.ramp) RUN steps where step_ramp.v says instead, from the dominant period
+// and the init packet's start speed and acceleration; the periods are computed as without it (they set the cruise).
 module step_gen #(
     parameter PULSE_HIGH        = 100,       // 2 us at 50 MHz (the DRV8825 needs 1.9 us)
     parameter DIR_SETTLE        = 200,       // 4 us between DIR and the first STEP
@@ -15,7 +17,12 @@ module step_gen #(
     // 0: the periods in one clock, as the seed computes them (two 32-bit dividers and a multiplier); 1: one bit per
     // clock in period_divider during DIR_WAIT, the same periods in place before RUN (DIR_SETTLE must be at least
     // 130: the division takes 129 clocks, 97 with EXACT_PERIOD = 0).
-    parameter DIVIDER           = 0
+    parameter DIVIDER           = 0,
+    // 0: every step at the packet's period (the seed); 1: the trapezoidal ramp of step_ramp.v (DIR_SETTLE must be at
+    // least 52: its cruise is divided during DIR_WAIT after the periods; 181 with DIVIDER = 1).
+    parameter RAMP               = 0,
+    parameter RAMP_ACCEL_DEFAULT = 18014,  // the ramp's registers until an init packet sets them (fpga_config.hpp)
+    parameter RAMP_START_DEFAULT = 68719
 ) (
     input  wire        clk,
     input  wire        rst,
@@ -25,6 +32,8 @@ module step_gen #(
     input  wire        pkt_valid,
     input  wire [31:0] numerator_x,
     input  wire [31:0] numerator_y,
+    input  wire [31:0] ramp_accel,
+    input  wire [31:0] ramp_start,
     input  wire        cfg_valid,
     input  wire        halt,  // our e-stop (top.v's ESTOP): held high until reset; tied low without it
     output reg         dir_x,
@@ -38,6 +47,8 @@ module step_gen #(
     reg [31:0] num_x, num_y;
     reg [31:0] abs_x, abs_y, rem_x, rem_y, period_x, period_y, cnt_x, cnt_y;
     reg [8:0]  dir_cnt;
+    reg [31:0] accel_reg, start_reg;  // with the ramp
+    reg        ramp_load;             // the periods were written at the last edge
 
     wire [31:0] feed = {16'd0, feed_rate};
     wire        x_dominant = abs_x >= abs_y;
@@ -67,6 +78,19 @@ module step_gen #(
         end
     endgenerate
 
+    wire ramp_rise_dom, ramp_rise_sub, ramp_fall, ramp_finished;
+    generate
+        if (RAMP != 0) begin : ramped
+            step_ramp #(.PULSE_HIGH(PULSE_HIGH)) ramp (
+                .clk(clk), .rst(rst), .load(ramp_load), .run(state == RUN),
+                .period_dom(x_dominant ? period_x : period_y), .abs_dom(abs_dom), .abs_sub(abs_sub),
+                .start_reg(start_reg), .accel_reg(accel_reg),
+                .rise_dom(ramp_rise_dom), .rise_sub(ramp_rise_sub), .fall(ramp_fall), .finished(ramp_finished));
+        end else begin : unramped
+            assign {ramp_rise_dom, ramp_rise_sub, ramp_fall, ramp_finished} = 4'd0;
+        end
+    endgenerate
+
     wire x_done = (rem_x == 32'd1 && cnt_x == period_x - 32'd1) || rem_x == 32'd0 || period_x == 32'd0;
     wire y_done = (rem_y == 32'd1 && cnt_y == period_y - 32'd1) || rem_y == 32'd0 || period_y == 32'd0;
 
@@ -78,6 +102,9 @@ module step_gen #(
             {abs_x, abs_y, rem_x, rem_y, period_x, period_y, cnt_x, cnt_y} <= 256'd0;
             dir_cnt <= 9'd0;
             seq_wanted <= 1'b0;
+            accel_reg <= RAMP_ACCEL_DEFAULT;
+            start_reg <= RAMP_START_DEFAULT;
+            ramp_load <= 1'b0;
             dir_x <= 1'b0;
             dir_y <= 1'b0;
             step_x <= 1'b0;
@@ -92,7 +119,10 @@ module step_gen #(
             if (cfg_valid && state == IDLE) begin  // an init arriving mid-move is dropped
                 num_x <= numerator_x;
                 num_y <= numerator_y;
+                accel_reg <= ramp_accel;
+                start_reg <= ramp_start;
             end
+            ramp_load <= 1'b0;
             case (state)
                 IDLE: begin
                     step_x <= 1'b0;
@@ -117,6 +147,7 @@ module step_gen #(
                         rem_y <= abs_y;
                         cnt_x <= 32'd0;
                         cnt_y <= 32'd0;
+                        ramp_load <= feed_rate == 16'd0 || DIVIDER != 1;
                         if (feed_rate == 16'd0) begin
                             period_x <= FEED_ZERO_PERIOD;
                             period_y <= FEED_ZERO_PERIOD;
@@ -135,6 +166,7 @@ module step_gen #(
                     end
                     if (seq_done && seq_wanted) begin
                         seq_wanted <= 1'b0;
+                        ramp_load <= 1'b1;
                         period_x <= x_dominant ? seq_per_step : (abs_x == 32'd0 ? 32'd0 : seq_sub_period);
                         period_y <= x_dominant ? (abs_y == 32'd0 ? 32'd0 : seq_sub_period) : seq_per_step;
                     end
@@ -144,7 +176,13 @@ module step_gen #(
                     end else
                         dir_cnt <= dir_cnt + 9'd1;
                 end
-                RUN: begin
+                RUN: if (RAMP != 0) begin
+                    if (x_dominant ? ramp_rise_dom : ramp_rise_sub) step_x <= 1'b1;
+                    else if (ramp_fall) step_x <= 1'b0;
+                    if (x_dominant ? ramp_rise_sub : ramp_rise_dom) step_y <= 1'b1;
+                    else if (ramp_fall) step_y <= 1'b0;
+                    if (ramp_finished) state <= DONE;
+                end else begin
                     if (rem_x != 32'd0 && period_x != 32'd0) begin
                         if (cnt_x == 32'd0) step_x <= 1'b1;
                         else if (cnt_x == PULSE_HIGH) step_x <= 1'b0;

@@ -37,7 +37,12 @@ module top #(
     // (packet_decoder.v, laser_ctrl.v); 0: the seed's on/off laser and packets.
     parameter LASER_PWM_PERIOD  = 0,
     parameter ESTOP             = 0,
-    parameter INTERLOCK         = 0
+    parameter INTERLOCK         = 0,
+    // 1: our trapezoidal ramp (fpga.ramp = "trapezoidal": step_ramp.v), its start speed and acceleration registers
+    // in a 17-byte init packet (packet_decoder.v), with their values until one arrives; 0: the seed's step_gen.
+    parameter RAMP               = 0,
+    parameter RAMP_ACCEL_DEFAULT = 18014,
+    parameter RAMP_START_DEFAULT = 68719
 ) (
     input  wire clk,
     input  wire rst_n,
@@ -59,7 +64,7 @@ module top #(
     wire [7:0]  rx_data;
     wire        rx_valid;
     wire [1:0]  motion;
-    wire [31:0] steps_x, steps_y, numerator_x, numerator_y;
+    wire [31:0] steps_x, steps_y, numerator_x, numerator_y, ramp_accel, ramp_start;
     wire [15:0] feed_rate, laser_high;
     wire        pkt_valid, cfg_valid, crc_error, pkt_repeat;
     wire        tx_busy;
@@ -74,16 +79,19 @@ module top #(
         .clk(clk), .rst(rst), .rx(rx), .rx_data(rx_data), .rx_valid(rx_valid));
 
     packet_decoder #(.TIMEOUT_CYCLES(TIMEOUT_CYCLES), .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT),
-                     .PACKET_CRC(PACKET_CRC), .LASER_PWM(LASER_PWM_PERIOD != 0)) pkt_dec_inst (
+                     .PACKET_CRC(PACKET_CRC), .LASER_PWM(LASER_PWM_PERIOD != 0), .RAMP(RAMP != 0),
+                     .RAMP_ACCEL_DEFAULT(RAMP_ACCEL_DEFAULT), .RAMP_START_DEFAULT(RAMP_START_DEFAULT)) pkt_dec_inst (
         .clk(clk), .rst(rst), .rx_data(rx_data), .rx_valid(rx_valid), .motion(motion), .steps_x(steps_x),
         .steps_y(steps_y), .feed_rate(feed_rate), .laser_high(laser_high), .pkt_valid(pkt_valid),
-        .numerator_x(numerator_x), .numerator_y(numerator_y), .cfg_valid(cfg_valid), .crc_error(crc_error),
-        .pkt_repeat(pkt_repeat));
+        .numerator_x(numerator_x), .numerator_y(numerator_y), .ramp_accel(ramp_accel), .ramp_start(ramp_start),
+        .cfg_valid(cfg_valid), .crc_error(crc_error), .pkt_repeat(pkt_repeat));
 
     step_gen #(.PULSE_HIGH(PULSE_HIGH), .DIR_SETTLE(DIR_SETTLE), .FEED_ZERO_PERIOD(FEED_ZERO_PERIOD),
-               .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT), .EXACT_PERIOD(EXACT_PERIOD), .DIVIDER(DIVIDER)) step_gen_inst (
+               .NUMERATOR_DEFAULT(NUMERATOR_DEFAULT), .EXACT_PERIOD(EXACT_PERIOD), .DIVIDER(DIVIDER), .RAMP(RAMP),
+               .RAMP_ACCEL_DEFAULT(RAMP_ACCEL_DEFAULT), .RAMP_START_DEFAULT(RAMP_START_DEFAULT)) step_gen_inst (
         .clk(clk), .rst(rst), .steps_x(steps_x), .steps_y(steps_y), .feed_rate(feed_rate), .pkt_valid(pkt_valid),
         .numerator_x(INIT_WIRED ? numerator_x : 32'd0), .numerator_y(INIT_WIRED ? numerator_y : 32'd0),
+        .ramp_accel(INIT_WIRED ? ramp_accel : 32'd0), .ramp_start(INIT_WIRED ? ramp_start : 32'd0),
         .cfg_valid(INIT_WIRED ? cfg_valid : 1'b0), .halt(halt), .dir_x(dir_x), .step_x(step_x), .dir_y(dir_y),
         .step_y(step_y), .busy(busy));
 

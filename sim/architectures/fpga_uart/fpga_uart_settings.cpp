@@ -10,6 +10,7 @@
 #include "common/bad_input.hpp"
 #include "common/queue_protocol.hpp"
 #include "fpga/core/laser_pwm.hpp"
+#include "fpga/core/rtl_design.hpp"
 
 namespace cnc::sim {
 
@@ -133,7 +134,18 @@ void read_ramp(KeyReader& r, FpgaUartSettings& s) {
                                         "with fpga.ramp: the speed a move starts and ends at, mm/s (a stepper starts "
                                         "without losing steps below its pull-in speed: cncsim motor-curve)");
     if (s.fpga.ramp == fpga::StepRamp::None) return;
-    if (s.rtl.rtl) r.fail("fpga.ramp", "the ramp is in the event model only: fpga.model = \"event\"");
+    if (s.rtl.rtl && s.fpga.ramp == fpga::StepRamp::SCurve) {
+        r.fail("fpga.ramp",
+               "the S-curve is in the event model only (fpga.model = \"event\"; the Verilog has \"trapezoidal\"): its "
+               "per-move plan searches the velocity gain by bisection, each try a square root and an 80-bit division, "
+               "thousands of clocks where DIR_WAIT leaves fpga.dir_settle_cycles (200) before the first step");
+    }
+    if (s.rtl.rtl && s.fpga.dir_settle_cycles < fpga::kRtlRampDirSettleMin) {
+        r.fail("fpga.dir_settle_cycles",
+               fmt::format(FMT_STRING("{} clocks: with fpga.ramp and fpga.model = \"rtl\" it must be at least {} (the "
+                                      "Verilog divides the ramp's cruise speed during DIR_WAIT)"),
+                           s.fpga.dir_settle_cycles, fpga::kRtlRampDirSettleMin));
+    }
     if (!s.fpga.init_packet_wired) {
         r.fail("fpga.ramp", "the ramp's registers come in the init packet: it needs fpga.init_packet_wired = true");
     }

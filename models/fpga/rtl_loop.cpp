@@ -111,11 +111,11 @@ void RtlLoop::run_thread() {
         }
         m_promised_ps = std::max(now, std::min(m_quiet_until(), now + kMaxAheadPs));
         run_through(m_promised_ps);
-        if (!m_model->settled() && !(m_at_rest && m_at_rest() && !sc_core::sc_pending_activity())) {
-            wait(ps(m_clock.at(m_next_edge) - now), input_events);
-            continue;
-        }
         if (!m_model->settled()) {
+            if (!m_at_rest || !m_at_rest() || sc_core::sc_pending_activity()) {
+                wait(ps(m_clock.at(m_next_edge) - now), input_events);
+                continue;
+            }
             // At rest with nothing left to drive an input: the run ends here. An input changing after all would
             // find the edges not run.
             wait(input_events);

@@ -46,6 +46,8 @@ RtlTop::RtlTop(const sc_core::sc_module_name& name, const FpgaConfig& cfg, const
       m_clock(clock_grid(cfg)),
       m_spec(rtl_plugin_spec(cfg, design)),
       m_plugin(rtl::build_plugin(m_spec)),
+      m_halt_net(observed_index(m_spec, "halt")),
+      m_halted_net(observed_index(m_spec, "halted")),
       m_records(cfg, m_clock,
                 std::all_of(m_plugin.observed_present.begin(), m_plugin.observed_present.end(),
                             [](bool present) { return present; })),
@@ -95,8 +97,8 @@ void RtlTop::on_edge(std::int64_t n) {
         v.tx_nak = net(kTxNak) != 0;
     }
     if (m_cfg.estop_input) {
-        v.halt = m_loop.observed(observed_index(m_spec, "halt")) != 0;
-        v.halted = m_loop.observed(observed_index(m_spec, "halted")) != 0;
+        v.halt = m_loop.observed(m_halt_net) != 0;
+        v.halted = m_loop.observed(m_halted_net) != 0;
     }
     m_records.edge(n, v);
 }

@@ -44,6 +44,9 @@ private:
     const ClockGrid m_clock;
     const rtl::PluginSpec m_spec;
     const rtl::BuiltPlugin m_plugin;
+    // With the e-stop: the observed halt and halted nets' indices in m_spec.
+    const std::size_t m_halt_net;
+    const std::size_t m_halted_net;
     ObservedRecords m_records;
     RtlLoop m_loop;
 };

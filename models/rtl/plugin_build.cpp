@@ -175,13 +175,6 @@ std::vector<fs::path> generated_sources(const fs::path& dir) {
     return files;
 }
 
-bool design_rising_edge_only(const PluginSpec& spec, const fs::path& dir) {
-    std::string sources;
-    for (const fs::path& f : generated_sources(dir)) sources += read_text(f);
-    return rising_edge_only(read_text(dir / "obj" / (std::string(kPrefix) + "___024root.h")), sources, kPrefix,
-                            spec.clock);
-}
-
 void compile(const PluginSpec& spec, const fs::path& dir, const std::vector<bool>& present,
              const std::vector<bool>& inputs_present, bool rising_only) {
     write_text(dir / "shim.cpp", shim_source(spec, kPrefix, present, inputs_present, rising_only));
@@ -203,6 +196,16 @@ std::vector<bool> observed_in(const PluginSpec& spec, const std::string& root_he
         present.push_back(root_header.find(" " + root_member(spec.top_module, n) + ";") != std::string::npos);
     }
     return present;
+}
+
+// What the shim and the loop need to know of the verilated design in `dir`: its observed nets, and whether it reacts
+// to the rising edge alone.
+void read_design(const PluginSpec& spec, const fs::path& dir, BuiltPlugin& built) {
+    const std::string root_header = read_text(dir / "obj" / (std::string(kPrefix) + "___024root.h"));
+    built.observed_present = observed_in(spec, root_header);
+    std::string sources;
+    for (const fs::path& f : generated_sources(dir)) sources += read_text(f);
+    built.rising_edge_only = rising_edge_only(root_header, sources, kPrefix, spec.clock);
 }
 
 std::vector<bool> inputs_in(const PluginSpec& spec, const std::vector<VerilatedPort>& ports) {
@@ -231,8 +234,7 @@ BuiltPlugin build_plugin(const PluginSpec& spec) {
     BuiltPlugin built;
     if (fs::is_regular_file(entry / "model.so")) {
         built.library = (entry / "model.so").string();
-        built.observed_present = observed_in(spec, read_text(entry / "obj" / (std::string(kPrefix) + "___024root.h")));
-        built.rising_edge_only = design_rising_edge_only(spec, entry);
+        read_design(spec, entry, built);
         built.from_cache = true;
         return built;
     }
@@ -247,8 +249,7 @@ BuiltPlugin build_plugin(const PluginSpec& spec) {
         const std::vector<VerilatedPort> ports =
             parse_verilated_ports(read_text(dir / "obj" / (std::string(kPrefix) + ".h")));
         check_ports(spec, ports);
-        built.observed_present = observed_in(spec, read_text(dir / "obj" / (std::string(kPrefix) + "___024root.h")));
-        built.rising_edge_only = design_rising_edge_only(spec, dir);
+        read_design(spec, dir, built);
         compile(spec, dir, built.observed_present, inputs_in(spec, ports), built.rising_edge_only);
     } catch (...) {
         fs::remove_all(dir);

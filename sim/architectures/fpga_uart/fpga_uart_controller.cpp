@@ -344,21 +344,22 @@ ArchPace pace(const Scenario& s, const FpgaUartSettings& f, std::size_t packets)
                           kTripBytes * kBitsPerByte / static_cast<double>(f.serial.link.requested_baud);
     p.link_s = static_cast<double>(packets) * trip_s;
     if (f.fpga.ramp != fpga::StepRamp::None) {
-        // Each move starts and ends at the start speed: up and down at the slower axis' acceleration add
-        // (v - v0)^2 / (a v) to length / v.
-        // The S-curve's ramps take dv / a + a / j each (2 sqrt(dv / j) below dv = a^2 / j), with the mean speed
-        // of the trapezoid's: T (v - v0) / v.
         const double accel = std::min(s.machine.x.limits.max_accel_mm_per_s2, s.machine.y.limits.max_accel_mm_per_s2);
-        p.ramp_s = [accel, v0 = f.ramp_start_mm_per_s](double v) {
-            return v > v0 ? (v - v0) * (v - v0) / (accel * v) : 0.0;
-        };
         if (f.fpga.ramp == fpga::StepRamp::SCurve) {
+            // The S-curve's ramps take T = dv / a + a / j each (2 sqrt(dv / j) below dv = a^2 / j), with the mean
+            // speed of the trapezoid's: T (v - v0) / v.
             const double jerk = std::min(s.machine.x.limits.max_jerk_mm_per_s3, s.machine.y.limits.max_jerk_mm_per_s3);
             p.ramp_s = [accel, jerk, v0 = f.ramp_start_mm_per_s](double v) {
                 if (v <= v0) return 0.0;
                 const double dv = v - v0;
                 const double ramp_s = dv >= accel * accel / jerk ? dv / accel + accel / jerk : 2 * std::sqrt(dv / jerk);
                 return ramp_s * dv / v;
+            };
+        } else {
+            // Each move starts and ends at the start speed: up and down at the slower axis' acceleration add
+            // (v - v0)^2 / (a v) to length / v.
+            p.ramp_s = [accel, v0 = f.ramp_start_mm_per_s](double v) {
+                return v > v0 ? (v - v0) * (v - v0) / (accel * v) : 0.0;
             };
         }
     }

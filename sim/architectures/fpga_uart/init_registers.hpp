@@ -1,5 +1,5 @@
-// What the host's init packet sets in the FPGA: seed 000 §4.6's NUMERATORs, and with the FPGA's trapezoidal ramp
-// (fpga.ramp) the ramp's acceleration and start speed (and the S-curve's jerk) in step_gen's fixed point (fpga/core/step_ramp.hpp).
+// What the host's init packet sets in the FPGA: seed 000 §4.6's NUMERATORs, and with the FPGA's ramp (fpga.ramp) its
+// acceleration and start speed (and the S-curve's jerk) in step_gen's fixed point (fpga/core/step_ramp.hpp).
 #pragma once
 #include <cstdint>
 #include <vector>

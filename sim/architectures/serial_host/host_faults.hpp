@@ -1,6 +1,6 @@
-// The faults of a serial link as the report shows them: the frames a faulty wire hit, the USB latency spikes (faults.usb_spike_*) on the CP2102 of every
-// architecture with a USB serial link, and the host program's stall (faults.host_stall_*), and what they did, as the
-// report shows them.
+// A serial link's faults as the report shows them: the frames a faulty wire hit, the USB latency spikes
+// (faults.usb_spike_*) on the CP2102 of every architecture with a USB serial link, and the host program's stall
+// (faults.host_stall_*), each with what it did.
 #pragma once
 
 #include <string>

@@ -20,6 +20,7 @@
 #include <avr_timer.h>
 #include <avr_uart.h>
 #include <sim_avr.h>
+#include <sim_core.h>
 #include <sim_cycle_timers.h>
 #include <sim_elf.h>
 #include <sim_interrupts.h>
@@ -253,25 +254,49 @@ std::vector<std::uint16_t> AvrChip::pin_registers() const {
     return pins;
 }
 
-// The first cycle timer other than the scheduler's (simavr's peripherals, and the run_until boundary unless
-// `past_the_boundary`), or none.
-const avr_cycle_timer_slot_t* AvrChip::other_cycle_timer(bool past_the_boundary) const {
+// The first cycle timer other than the scheduler's (simavr's peripherals and the run_until boundary), or none.
+const avr_cycle_timer_slot_t* AvrChip::other_cycle_timer() const {
     const avr_cycle_timer_slot_t* t = m_avr->cycle_timers.timer;  // sorted by cycle
-    while (t != nullptr && (t->timer == Bridge::scheduler || (past_the_boundary && t->timer == no_op_timer)))
-        t = t->next;
+    while (t != nullptr && t->timer == Bridge::scheduler) t = t->next;
     return t;
 }
 
+// One instruction, as libsimavr 1.6's avr_callback_run_raw (sim_avr.c) runs it, but without visiting the cycle
+// timers when none is due and the CPU runs on: that visit cost as much as the instruction.
 void AvrChip::step() {
-    const std::uint32_t pc = m_avr->pc;
-    const avr_cycle_timer_slot_t* due = m_skipper ? other_cycle_timer(true) : nullptr;
-    const avr_cycle_count_t due_at = due != nullptr ? due->when : ~avr_cycle_count_t{0};
-    avr_run(m_avr);
-    if (!m_skipper) return;
-    // The scheduler's events say themselves whether the CPU can see them (timer_flag, timer_output, usart_*); the
-    // run_until boundary changes nothing.
-    if (due_at <= m_avr->cycle) m_skipper->disturb();
-    if (m_avr->pc <= pc && m_avr->state == cpu_Running) m_skipper->backward_jump();  // an iteration may end here
+    avr_t* avr = m_avr;
+    const avr_flashaddr_t pc = avr->pc;
+    avr_flashaddr_t new_pc = pc;
+    if (avr->state == cpu_Running) new_pc = avr_run_one(avr);
+    const avr_cycle_timer_slot_t* head = avr->cycle_timers.timer;
+    avr_cycle_count_t sleep = 0;
+    if (avr->state != cpu_Running || (head != nullptr && head->when <= avr->cycle)) {
+        // The scheduler's events say themselves whether the CPU can see them (timer_flag, timer_output, usart_*);
+        // the run_until boundary changes nothing.
+        if (m_skipper && other_timer_due()) m_skipper->disturb();
+        sleep = avr_cycle_timer_process(avr);
+    }
+    avr->pc = new_pc;
+    if (avr->state == cpu_Sleeping) {
+        if (avr->sreg[S_I] == 0) {
+            avr->state = cpu_Done;
+            return;
+        }
+        avr->sleep(avr, sleep);
+        avr->cycle += 1 + sleep;
+    }
+    if ((avr->state == cpu_Running || avr->state == cpu_Sleeping) && avr->interrupt_state != 0)
+        avr_service_interrupts(avr);
+    if (m_skipper && avr->pc <= pc && avr->state == cpu_Running)
+        m_skipper->backward_jump();  // an iteration may end here
+}
+
+bool AvrChip::other_timer_due() const {
+    for (const avr_cycle_timer_slot_t* t = m_avr->cycle_timers.timer; t != nullptr && t->when <= m_avr->cycle;
+         t = t->next) {
+        if (t->timer != Bridge::scheduler && t->timer != no_op_timer) return true;
+    }
+    return false;
 }
 
 namespace {
@@ -304,8 +329,7 @@ bool AvrChip::quiet_flag(char timer, TimerFlag flag) const {
 Cycle AvrChip::quiet_until() const {
     // The run_until boundary's own cycle timer is gone once it has fired, in the step that reached it.
     Cycle until = m_run_limit;
-    if (const avr_cycle_timer_slot_t* t = other_cycle_timer(false))
-        until = std::min(until, static_cast<Cycle>(t->when));
+    if (const avr_cycle_timer_slot_t* t = other_cycle_timer()) until = std::min(until, static_cast<Cycle>(t->when));
     if (const auto u = m_usart.next_event()) until = std::min(until, *u);
     for (const auto& timer : m_timers) {
         EventProbe probe([this](char t, TimerFlag f) { return quiet_flag(t, f); }, m_skipper->pins_read());
@@ -412,11 +436,26 @@ std::optional<Cycle> AvrChip::process_events(Cycle c) {
         m_usart.advance_to(*t);
     }
     m_in_scheduler = false;
+    update_quiet_flags();
     return next_event();
+}
+
+// Called wherever a timer flag or its enable bit may have changed: after the scheduler's events, and after every
+// I/O write (reschedule).
+void AvrChip::update_quiet_flags() {
+    const Cycle c = now();
+    for (auto& timer : m_timers) {
+        std::uint8_t mask = 0;
+        for (const TimerFlag f : {TimerFlag::Overflow, TimerFlag::CompareA, TimerFlag::CompareB, TimerFlag::Capture})
+            if (quiet_flag(timer->spec().name, f))
+                mask = static_cast<std::uint8_t>(mask | (1U << static_cast<unsigned>(f)));
+        timer->set_quiet_flags(c, mask);
+    }
 }
 
 void AvrChip::reschedule() {
     if (m_in_scheduler) return;  // the scheduler returns its next time to simavr itself
+    update_quiet_flags();
     const auto next = next_event();
     if (!next) {
         avr_cycle_timer_cancel(m_avr, Bridge::scheduler, this);

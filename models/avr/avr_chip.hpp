@@ -153,7 +153,9 @@ private:
     void install_hooks();
     [[nodiscard]] std::vector<std::uint16_t> pin_registers() const;
     void step();
-    [[nodiscard]] const avr_cycle_timer_slot_t* other_cycle_timer(bool past_the_boundary) const;
+    [[nodiscard]] const avr_cycle_timer_slot_t* other_cycle_timer() const;
+    // Whether a cycle timer other than the scheduler's and the run_until boundary's is due now.
+    [[nodiscard]] bool other_timer_due() const;
     [[nodiscard]] bool quiet_flag(char timer, TimerFlag flag) const;
     [[nodiscard]] Cycle quiet_until() const;
     void disturb() {
@@ -162,6 +164,7 @@ private:
     void disturb_dbg(int t);
     void disconnect_external_interrupts();
     void reschedule();
+    void update_quiet_flags();
     [[nodiscard]] Cycle now() const;
     // Raise a vector (or, for a level interrupt, follow its flag) at cycle c: the flag's cycle, which times a
     // wake-up from sleep.

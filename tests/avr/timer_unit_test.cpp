@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <random>
 #include <string>
 #include <tuple>
@@ -416,6 +417,123 @@ TEST(AvrTimerUnit, MatchesATickByTickReferenceUnderRandomRegisterWrites) {
         ASSERT_EQ(first_difference(rec.pins, ref.pins), "") << "seed " << seed;
         EXPECT_EQ(unit.read_tcnt(30'000), ref.tcnt) << "seed " << seed;
     }
+}
+
+// The same random register writes with the owner's flag register modelled here: a flag is set when raised and
+// cleared now and then, its interrupt enabled now and then, and the unit told which flags are quiet (set, interrupt
+// disabled) after each of its events and each change, as the chip does. The unit must report exactly the
+// reference's raises of flags that were not quiet when raised (a quiet raise changes nothing: reporting one is
+// allowed), read the reference's TCNT and drive its pins, while it runs the quiet periods in closed form (grbl leaves Timer1 in CTC with OCR1A = 0 at /1 when idle: a match at
+// every clock).
+TEST(AvrTimerUnit, QuietFlagsChangeNothingButWhatIsReported) {
+    const TimerSpec* specs[3] = {&kTimer0, &kTimer1, &kTimer2};
+    std::uint64_t stepped = 0;
+    std::uint64_t flag_ticks = 0;
+    for (unsigned seed = 1; seed <= 300; ++seed) {
+        std::mt19937 rng(seed);
+        const TimerSpec& spec = *specs[seed % 3];
+        Prescaler p;
+        Recorder rec;
+        TimerUnit unit(spec, p, rec);
+        rec.unit = &unit;
+        ReferenceTimer ref(spec);
+        const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+        std::array<bool, 4> set{};      // by TimerFlag
+        std::array<bool, 4> enabled{};  // by TimerFlag
+        const auto mask = [&] {
+            unsigned m = 0;
+            for (unsigned f = 0; f < 4; ++f)
+                if (set[f] && !enabled[f]) m |= 1U << f;
+            return static_cast<std::uint8_t>(m);
+        };
+        std::vector<FlagEvent> want;          // the reference's raises of flags that were not quiet
+        std::vector<FlagEvent> quiet_raises;  // and of those that were: the unit may report them or not
+        std::size_t ref_seen = 0;
+        std::vector<int> unit_reads;
+        std::vector<int> ref_reads;
+        for (Cycle c = 1; c <= 30'000; ++c) {
+            ref.tick_if_due(c);
+            for (; ref_seen < ref.flags.size(); ++ref_seen) {
+                const FlagEvent& e = ref.flags[ref_seen];
+                const auto f = static_cast<std::size_t>(e.flag);
+                (set[f] && !enabled[f] ? quiet_raises : want).push_back(e);
+                set[f] = true;
+            }
+            for (auto e = unit.next_event(); e && *e <= c; e = unit.next_event()) {
+                unit.advance_to(*e);
+                unit.set_quiet_flags(*e, mask());
+            }
+            if (pick(0, 400) == 0) {
+                const int op = pick(0, 4);
+                const int v = spec.sixteen_bit ? pick(0, 0x3FF) : pick(0, 0xFF);
+                const auto u16 = static_cast<std::uint16_t>(v);
+                if (op == 0) {
+                    unit.write_ocr(c, Channel::A, u16);
+                    ref.write_ocr(0, v);
+                } else if (op == 1) {
+                    unit.write_ocr(c, Channel::B, u16);
+                    ref.write_ocr(1, v);
+                } else if (op == 2) {
+                    const int wgm = pick(0, 3);  // Normal, CTC, fast PWM (8-bit), fast PWM TOP = OCRA or ICR1
+                    const std::uint8_t com = pick(0, 3) == 0 ? static_cast<std::uint8_t>(pick(0, 15) << 4) : 0;
+                    const std::uint8_t a = static_cast<std::uint8_t>(com | (wgm >= 2 ? 1 : 0) | (wgm == 3 ? 2 : 0));
+                    std::uint8_t b = static_cast<std::uint8_t>(pick(1, 2));  // clock /1 or /8
+                    if (wgm == 1) b |= 0x08;                                 // WGMn2 / WGM12: CTC
+                    if (wgm == 3) b |= spec.sixteen_bit ? 0x18 : 0x08;
+                    unit.write_tccra(c, a);
+                    ref.tccra = a;
+                    ref.after_mode_change(c);
+                    unit.write_tccrb(c, b);
+                    ref.tccrb = b;
+                    ref.after_mode_change(c);
+                } else if (op == 3) {
+                    set[static_cast<std::size_t>(pick(0, 3))] = false;  // TIFRn written with a one
+                } else {
+                    const auto f = static_cast<std::size_t>(pick(0, 3));
+                    enabled[f] = !enabled[f];
+                }
+                unit.set_quiet_flags(c, mask());
+            }
+            if (pick(0, 700) == 0) {
+                unit_reads.push_back(unit.read_tcnt(c));
+                ref_reads.push_back(ref.tcnt);
+            }
+        }
+        unit.advance_to(30'000);
+        ASSERT_EQ(unit_reads, ref_reads) << "seed " << seed;
+        std::vector<FlagEvent> got;
+        for (const FlagEvent& e : rec.flags)
+            if (std::find(quiet_raises.begin(), quiet_raises.end(), e) == quiet_raises.end()) got.push_back(e);
+        ASSERT_EQ(first_difference(got, want), "") << "seed " << seed;
+        ASSERT_EQ(first_difference(rec.pins, ref.pins), "") << "seed " << seed;
+        EXPECT_EQ(unit.read_tcnt(30'000), ref.tcnt) << "seed " << seed;
+        stepped += unit.event_ticks();
+        for (std::size_t i = 0; i < ref.flags.size(); ++i)
+            if (i == 0 || ref.flags[i].cycle != ref.flags[i - 1].cycle) ++flag_ticks;
+    }
+    // The quiet periods were taken: a unit stepping every tick that raises a flag steps at least flag_ticks.
+    EXPECT_LT(stepped, flag_ticks);
+}
+
+// grbl 1.1's idle stepper timer (stepper.c st_go_idle: Timer1 in CTC at /1, OCR1A never written: 0): TOP = 0, a
+// compare match A and B at every clock. Once OCF1A and OCF1B are set with their interrupts disabled, a second of
+// it is no stepped tick; clearing OCF1A makes the very next clock an event again, which raises it.
+TEST(AvrTimerUnit, IdleCtcAtTopZeroIsNotSteppedWhileItsFlagsAreQuiet) {
+    Fixture f(kTimer1);
+    f.unit.write_tccrb(0, 0x08 | 1);  // WGM12, CS10
+    f.unit.advance_to(1);
+    EXPECT_EQ(f.rec.flag_cycles(TimerFlag::CompareA), (std::vector<Cycle>{1}));
+    const std::uint8_t a_and_b =
+        (1U << static_cast<unsigned>(TimerFlag::CompareA)) | (1U << static_cast<unsigned>(TimerFlag::CompareB));
+    f.unit.set_quiet_flags(1, a_and_b);
+    const std::uint64_t stepped = f.unit.event_ticks();
+    EXPECT_FALSE(f.unit.next_event().has_value());
+    EXPECT_EQ(f.unit.read_tcnt(16'000'000), 0);
+    EXPECT_EQ(f.unit.event_ticks(), stepped);
+    f.unit.set_quiet_flags(16'000'000, 1U << static_cast<unsigned>(TimerFlag::CompareB));
+    EXPECT_EQ(f.unit.next_event(), std::optional<Cycle>(16'000'001));
+    f.unit.advance_to(16'000'001);
+    EXPECT_EQ(f.rec.flag_cycles(TimerFlag::CompareA), (std::vector<Cycle>{1, 16'000'001}));
 }
 
 // Every clock select code against the datasheet's tables (Table 15-9 Timer0, 16-5 Timer1: /1 /8 /64 /256 /1024,

@@ -96,9 +96,35 @@ std::int64_t TimerUnit::ticks_until(Cycle c) const {
     return n <= 0 ? 0 : m_prescaler.ticks_between(m_last, c, n);
 }
 
+// Whether the counter runs whole periods 0..TOP in which every tick that does something only raises quiet flags:
+// no compare output action, no OCR buffer to copy, no blocked match.
+bool TimerUnit::quiet_periods() const {
+    if (m_quiet_flags == 0) return false;
+    const TimerMode m = mode();
+    const std::uint16_t t = top();
+    if (divisor() <= 0 || m_block_next_match || !m.single_slope() || m_tcnt > t || m_ocr != m_ocr_buffer) return false;
+    for (const Channel ch : {Channel::A, Channel::B}) {
+        const CompareOutput out = output(ch);
+        if (m.wave == Wave::FastPwm && out.at_bottom != OcAction::None) return false;
+        if (m_ocr[idx(ch)] > t) continue;  // never matched
+        if (out.on_match_up != OcAction::None || !quiet(ch == Channel::A ? TimerFlag::CompareA : TimerFlag::CompareB))
+            return false;
+    }
+    const bool tov = m.wave == Wave::FastPwm || t == max();
+    if (tov && !quiet(TimerFlag::Overflow)) return false;
+    return m.top_source != TopSource::Icr || quiet(TimerFlag::Capture);
+}
+
+void TimerUnit::set_quiet_flags(Cycle c, std::uint8_t mask) {
+    if (mask == m_quiet_flags) return;
+    if (quiet_periods()) advance_to(c);
+    m_quiet_flags = mask;
+    changed();
+}
+
 std::optional<Cycle> TimerUnit::next_event() const {
     if (!m_next_valid || m_next_epoch != m_prescaler.epoch()) {
-        const auto k = ticks_to_event();
+        const auto k = quiet_periods() ? std::nullopt : ticks_to_event();
         m_next = k ? tick_cycle(*k) : std::nullopt;
         m_next_valid = true;
         m_next_epoch = m_prescaler.epoch();
@@ -115,6 +141,14 @@ void TimerUnit::advance_quietly(std::int64_t ticks) {
 }
 
 void TimerUnit::advance_to(Cycle c) {
+    if (quiet_periods()) {
+        if (c <= m_last) return;
+        const std::int64_t ticks = ticks_until(c);
+        if (ticks > 0) m_counting_up = true;  // as step() leaves it in a single-slope mode
+        m_tcnt = static_cast<std::uint16_t>((m_tcnt + ticks) % (std::int64_t{top()} + 1));
+        m_last = c;
+        return;
+    }
     for (auto t = next_event(); t && *t <= c; t = next_event()) {
         advance_quietly(ticks_until(*t) - 1);
         step(*t);

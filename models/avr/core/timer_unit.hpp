@@ -82,6 +82,12 @@ public:
 
     // Applies every tick at cycles <= c.
     void advance_to(Cycle c);
+    // The flags (bit 1 << TimerFlag) whose raising changes nothing now: set already, their interrupt disabled (the
+    // owner knows). While every tick that does something only raises such flags, period after period, none is
+    // stepped or reported: the counter is advanced in closed form and next_event() has none. A change takes effect
+    // at cycle c (the unit first advances to c under the old mask if it was running such quiet periods).
+    void set_quiet_flags(Cycle c, std::uint8_t mask);
+    [[nodiscard]] std::uint8_t quiet_flags() const { return m_quiet_flags; }
     // Cycle of the next tick that does something; none while the clock is stopped. Depends on the shared
     // prescaler: advance the unit to c before the prescaler is restarted at c, and ask again afterwards.
     [[nodiscard]] std::optional<Cycle> next_event() const;
@@ -100,6 +106,8 @@ private:
     [[nodiscard]] CompareOutput output(Channel ch) const;
     [[nodiscard]] std::optional<std::int64_t> distance_to(std::uint16_t x) const;
     [[nodiscard]] std::optional<std::int64_t> ticks_to_event() const;
+    [[nodiscard]] bool quiet(TimerFlag f) const { return ((m_quiet_flags >> static_cast<unsigned>(f)) & 1U) != 0; }
+    [[nodiscard]] bool quiet_periods() const;
     [[nodiscard]] std::optional<Cycle> tick_cycle(std::int64_t k) const;
     [[nodiscard]] std::int64_t ticks_until(Cycle c) const;
     void advance_quietly(std::int64_t ticks);
@@ -121,6 +129,7 @@ private:
     std::uint16_t m_icr = 0;
     std::array<bool, 2> m_oc{};  // OCnA / OCnB output registers (reset: 0)
     Cycle m_last = 0;            // ticks at cycles <= m_last are applied
+    std::uint8_t m_quiet_flags = 0;
     std::uint64_t m_event_ticks = 0;
     // next_event() is asked after every instruction's I/O: it is cached until the state or the prescaler changes
     // (advancing over quiet ticks does not move the next event).

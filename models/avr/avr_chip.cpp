@@ -267,7 +267,10 @@ void AvrChip::step() {
     avr_t* avr = m_avr;
     const avr_flashaddr_t pc = avr->pc;
     avr_flashaddr_t new_pc = pc;
-    if (avr->state == cpu_Running) new_pc = avr_run_one(avr);
+    if (avr->state == cpu_Running) {
+        if (m_skipper && m_skipper->recording()) m_skipper->before_instruction();
+        new_pc = avr_run_one(avr);
+    }
     const avr_cycle_timer_slot_t* head = avr->cycle_timers.timer;
     avr_cycle_count_t sleep = 0;
     if (avr->state != cpu_Running || (head != nullptr && head->when <= avr->cycle)) {

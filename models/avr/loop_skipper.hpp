@@ -13,11 +13,20 @@
 // cycle timers, the USART's next event, and the timers' coming events, probed on copies of the units). Events that
 // change nothing (a free-running timer setting a flag that is already set, its interrupt off) pass during a skip and
 // are processed, at their own cycles, right after it.
+//
+// A proof is kept and used again: while the watched loop's iteration runs, the data bytes each instruction reads and
+// writes are noted (core/data_access.hpp). An iteration proven idle depends on the registers, SREG, SP, the
+// interrupt state and the bytes it reads before writing them, and changes only the bytes it writes. When the loop
+// comes back to its target after an interrupt changed bytes it does not read (grbl's stepper interrupt: its counters
+// and positions, while the main loop polls its flags), equal registers and equal read bytes make the iteration the
+// proven one: it is skipped at once, and the bytes it writes take the values it writes. An iteration that reads an
+// I/O register with a handler or runs an instruction acting beyond the data space (SLEEP, WDR, SPM) is not kept.
 #pragma once
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "avr/core/prescaler.hpp"
@@ -29,6 +38,7 @@ namespace cnc::avr {
 struct FastForwardStats {
     std::uint64_t skips = 0;           // loops fast-forwarded
     std::uint64_t skipped_cycles = 0;  // cycles not executed
+    std::uint64_t reused = 0;          // skips on a kept proof, without running a proving iteration
 };
 
 class LoopSkipper {
@@ -48,6 +58,7 @@ public:
     void disturb() {
         ++m_epoch;
         m_pins_read = false;
+        m_recording = false;
     }
     // Whether a PINx was read since the last disturbance: a loop that reads none does not see its output pins, so
     // their changes do not disturb it.
@@ -55,6 +66,9 @@ public:
     // After a simavr step that left the CPU running at a program counter not above the one it started at (a
     // backward jump, a jump to itself, an interrupt's vector, a return to an earlier address).
     void backward_jump();
+    // Whether the chip must call before_instruction() before each instruction (a proving iteration runs).
+    [[nodiscard]] bool recording() const { return m_recording; }
+    void before_instruction();
     [[nodiscard]] const FastForwardStats& stats() const { return m_stats; }
 
 private:
@@ -70,9 +84,22 @@ private:
 
     struct Io;  // the handlers the watch replaced (loop_skipper.cpp)
 
+    // An iteration proven idle, from its target's visit: the bytes it reads before writing them and their values,
+    // and the bytes it writes and the values they end with.
+    struct Proof {
+        Visit at;
+        Cycle period = 0;
+        std::vector<std::pair<std::uint16_t, std::uint8_t>> reads;
+        std::vector<std::pair<std::uint16_t, std::uint8_t>> writes;
+    };
+
     [[nodiscard]] CpuState cpu_state() const;
     [[nodiscard]] std::uint16_t sp() const;
-    void skip(Cycle period);
+    // Iterations of `period` skipped before the next event the CPU could see (0: none).
+    Cycle skip(Cycle period);
+    void start_recording();
+    void keep_proof(Cycle period);
+    [[nodiscard]] bool reuse_proof(std::uint32_t pc, std::uint16_t stack, const CpuState& cpu);
 
     avr_t* m_avr;
     std::function<Cycle()> m_quiet_until;
@@ -84,6 +111,17 @@ private:
     // proves the iteration idle.
     Visit m_loop;
     std::vector<std::uint8_t> m_snapshot;
+    // The proving iteration's accesses: per byte, the stamp of the recording that first touched it and of the one
+    // that wrote it (a stamp per recording avoids clearing the arrays).
+    bool m_recording = false;
+    bool m_footprint_known = false;
+    std::uint32_t m_stamp = 0;
+    std::vector<std::uint32_t> m_touched;
+    std::vector<std::uint32_t> m_written;
+    std::vector<std::uint16_t> m_reads;
+    std::vector<std::uint16_t> m_writes;
+    std::array<Proof, 4> m_proofs{};
+    std::size_t m_next_proof = 0;
     FastForwardStats m_stats;
 };
 

@@ -78,3 +78,23 @@ TEST(FastForward, ASpinLoopBetweenInterruptsIsSkippedAndTheIsrKeepsItsCycle) {
     // cycle the interrupt waits for the spin loop's 2-cycle RJMP to end.
     expect_skipped_exactly(AVR_FW_BENCH_IDLE_ELF, 1600, 1600, 1);
 }
+
+TEST(FastForward, AProvenLoopIsSkippedAgainAfterAnInterruptThatChangesBytesItDoesNotRead) {
+    // isr_and_poll.c: an interrupt every 1000 cycles counts its calls, and every 8th sets the flag the loop polls:
+    // toggles 8000 cycles apart, within the cycles the interrupt waits for the loop's instruction and the loop's
+    // turn. After most interrupts the loop is the one proven before (the count it does not read changed, the flag
+    // it reads did not) and is skipped without proving it again; after every 8th its flag differs, and a skip
+    // there would make that toggle late.
+    constexpr Cycle kEnd = 400'000;
+    expect_skipped_exactly(AVR_FW_ISR_AND_POLL_ELF, 977, 8000, 8);
+    const ChipRun on = run_chip(AVR_FW_ISR_AND_POLL_ELF, true, kEnd, 977);
+    EXPECT_GT(on.stats.reused, static_cast<std::uint64_t>(kEnd / 1000 / 2));
+}
+
+TEST(FastForward, ALoopFollowingAPinAnInterruptTogglesKeepsEveryToggleOnItsCycle) {
+    // isr_pin_poll.c: the interrupt toggles PB2 through PORTB every 1001 cycles, landing on each of the loop's
+    // instructions in turn; the loop reads PINB and copies PB2 onto PB1. Its bytes and registers after an interrupt
+    // are those of the iteration proven before it, the pin it reads is not: the head toggles must still come 1001
+    // cycles apart and as with every cycle executed.
+    expect_skipped_exactly(AVR_FW_ISR_PIN_POLL_ELF, 977, 1001, 8);
+}

@@ -41,7 +41,9 @@ FloorSums floor_sums(std::uint64_t n, std::uint64_t a, std::uint64_t b, std::uin
 }  // namespace
 
 std::int64_t stretch_increment(const RampStretch& s, std::int64_t m) {
-    const auto increment = static_cast<std::int64_t>((s.accel + static_cast<std::uint64_t>(s.jerk * m)) / kTruncation);
+    // Modulo 2^64: a falling acceleration's jerk wraps round, and the product may pass 2^63 where the sum does not.
+    const std::uint64_t accel = s.accel + static_cast<std::uint64_t>(s.jerk) * static_cast<std::uint64_t>(m);
+    const auto increment = static_cast<std::int64_t>(accel / kTruncation);
     return s.slowing ? -increment : increment;
 }
 

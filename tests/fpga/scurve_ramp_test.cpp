@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 #include <vector>
 
 #include "fpga/core/scurve_plan.hpp"
@@ -39,20 +40,21 @@ std::vector<Step> event_steps(const RampInputs& in) {
     return out;
 }
 
-// The headers' registers, one clock at a time, with the plan's n_j and n_a; the velocity used on every clock.
+// The headers' registers, one clock at a time, with the plan's n_j and n_a; the velocity used on every clock if asked.
 struct Reference {
     std::vector<Step> steps;
     std::vector<std::int64_t> velocity;
 };
 
-Reference clock_by_clock(const RampInputs& in, std::int64_t n_j, std::int64_t n_a) {
+Reference clock_by_clock(const RampInputs& in, std::int64_t n_j, std::int64_t n_a, bool with_velocity) {
     const std::int64_t one = std::int64_t{1} << 48;
     const std::int64_t start =
         std::max<std::int64_t>(std::min<std::int64_t>(std::int64_t{in.start_reg} * 65'536, in.cruise), 1);
     const std::int64_t t = 2 * n_j + n_a;
     const auto increment = [&](std::int64_t i) {
-        const std::int64_t accel = std::int64_t{in.jerk_reg} * std::min({i + 1, n_j, t - i});  // 2^-80 units
-        return accel / (std::int64_t{1} << 32);
+        const std::uint64_t k = static_cast<std::uint64_t>(std::min({i + 1, n_j, t - i}));
+        const std::uint64_t accel = std::uint64_t{in.jerk_reg} * k;  // 2^-80 units: up to 2^64 - 2^32
+        return static_cast<std::int64_t>(accel / (std::uint64_t{1} << 32));
     };
     std::int64_t phase = one - start;
     std::int64_t v = start;
@@ -63,7 +65,7 @@ Reference clock_by_clock(const RampInputs& in, std::int64_t n_j, std::int64_t n_
     std::int64_t error = in.abs_dom / 2;
     Reference out;
     for (std::int64_t j = 0; done < in.abs_dom; ++j) {
-        out.velocity.push_back(v);
+        if (with_velocity) out.velocity.push_back(v);
         phase += v;
         bool stepped = false;
         if (phase >= one) {
@@ -93,10 +95,14 @@ Reference clock_by_clock(const RampInputs& in, std::int64_t n_j, std::int64_t n_
     return out;
 }
 
-Reference reference(const RampInputs& in) {
+ScurvePlan plan_of(const RampInputs& in) {
     const std::uint64_t start = std::max<std::uint64_t>(std::min(std::uint64_t{in.start_reg} << 16, in.cruise), 1);
-    const ScurvePlan p = plan_scurve(start, in.cruise, in.accel_reg, in.jerk_reg, in.abs_dom);
-    return clock_by_clock(in, p.jerk_clocks, p.top_clocks);
+    return plan_scurve(start, in.cruise, in.accel_reg, in.jerk_reg, in.abs_dom);
+}
+
+Reference reference(const RampInputs& in, bool with_velocity = true) {
+    const ScurvePlan p = plan_of(in);
+    return clock_by_clock(in, p.jerk_clocks, p.top_clocks, with_velocity);
 }
 
 TEST(ScurveRun, StepsOnTheClocksTheRegistersGiveClockByClock) {
@@ -113,6 +119,68 @@ TEST(ScurveRun, StepsOnTheClocksTheRegistersGiveClockByClock) {
     for (const RampInputs& in : cases) {
         SCOPED_TRACE(testing::Message() << "abs " << in.abs_dom << "/" << in.abs_sub << " jerk " << in.jerk_reg);
         const Reference expected = reference(in);
+        ASSERT_EQ(expected.steps.size(), in.abs_dom);
+        EXPECT_EQ(event_steps(in), expected.steps);
+    }
+}
+
+// The fewest steps whose plan is the whole acceleration with its mirror: one step fewer and the move is too short
+// for the full acceleration; with them, there is little or nothing left to cruise.
+std::uint32_t shortest_full_move(RampInputs in) {
+    const auto plan_for = [&](std::uint32_t steps) {
+        in.abs_dom = steps;
+        return plan_of(in);
+    };
+    const ScurvePlan full = plan_for(std::uint32_t{1} << 31);
+    std::uint32_t lo = 1;
+    std::uint32_t hi = std::uint32_t{1} << 31;
+    while (lo < hi) {
+        const std::uint32_t mid = lo + (hi - lo) / 2;
+        const ScurvePlan p = plan_for(mid);
+        if (p.jerk_clocks == full.jerk_clocks && p.top_clocks == full.top_clocks) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    return lo;
+}
+
+// The event model finds each step's clock from the closed form of a whole phase of the acceleration; the registers
+// run clock by clock here, on the moves where a step is likeliest to land on the wrong side of a phase's edge: the
+// lengths at which the plan stops being cut (each move runs the acceleration's rising and falling jerk phases and
+// their mirrors in the slowing down), one, two and three steps (no ramp, or barely one), and the largest registers
+// the init packet carries (32 bits each) with the fastest cruise the STEP pulse allows (a step every 2 clocks, high
+// and low a clock each).
+TEST(ScurveRun, ClosedFormStepsOnTheClocksOfTheRegistersAtTheBoundaries) {
+    constexpr std::uint32_t kLargest = 0xFFFF'FFFF;
+    const std::uint64_t fastest = kPhaseOne / 2;
+    std::vector<RampInputs> cases;
+    const std::vector<RampInputs> machines = {
+        {0, 0, cruise_of_mm_per_s(80), kStartReg, kAccelReg, kJerkReg},
+        {0, 0, cruise_of_mm_per_s(80), kStartReg, kAccelReg, kJerkReg * 20},   // jerk phases 20 times shorter
+        {0, 0, cruise_of_mm_per_s(10), kStartReg, kAccelReg, kJerkReg / 100},  // a slow jerk: increments of ~1000 units
+    };
+    for (RampInputs in : machines) {
+        const std::uint32_t full = shortest_full_move(in);
+        for (std::uint32_t steps : {1U, 2U, 3U, full / 2, full - 1, full, full + 1}) {
+            in.abs_dom = steps;
+            in.abs_sub = steps / 3;
+            cases.push_back(in);
+        }
+    }
+    for (std::uint32_t steps : {1U, 2U, 3U, 1000U, 40'000U}) {
+        cases.push_back({steps, steps, fastest, kStartReg, kLargest, kLargest});
+    }
+    // From the slowest start: a step every 2^32 clocks, too many clocks to run here for two steps without a ramp.
+    for (std::uint32_t steps : {3U, 1000U, 40'000U})
+        cases.push_back({steps, steps / 2, fastest, 1, kLargest, kLargest});
+    cases.push_back({1000, 7, fastest, kLargest, kLargest, kLargest});  // the start at the cruise: no ramp
+    for (const RampInputs& in : cases) {
+        SCOPED_TRACE(testing::Message() << "abs " << in.abs_dom << "/" << in.abs_sub << " cruise " << in.cruise
+                                        << " start " << in.start_reg << " accel " << in.accel_reg << " jerk "
+                                        << in.jerk_reg);
+        const Reference expected = reference(in, false);
         ASSERT_EQ(expected.steps.size(), in.abs_dom);
         EXPECT_EQ(event_steps(in), expected.steps);
     }
@@ -189,6 +257,31 @@ TEST(ScurvePlan, IsTheLargestThatKeepsTheCruiseAndTheMove) {
     EXPECT_LE(short_move.top_clocks, 2);
     EXPECT_LT(short_move.jerk_clocks, full.jerk_clocks);
     EXPECT_GT(short_move.jerk_clocks, 0);
+}
+
+// The stretches the event model runs (a whole phase of the acceleration each) hold the header's acceleration,
+// jerk x min(i + 1, n_j, T - i), on every clock from any clock of the acceleration to the end of its phase.
+TEST(ScurvePlan, ItsStretchesHoldTheAccelerationOfEveryClock) {
+    const std::uint32_t jerk = 0xFFFF'FFFF;
+    for (const auto& [n_j, n_a] : std::vector<std::pair<std::int64_t, std::int64_t>>{{1, 0}, {3, 0}, {3, 2}, {5, 7}}) {
+        const ScurvePlan p{n_j, n_a, jerk};
+        const std::int64_t t = 2 * n_j + n_a;
+        for (std::int64_t from = 0; from < t; ++from) {
+            SCOPED_TRACE(testing::Message() << "n_j " << n_j << " n_a " << n_a << " from clock " << from);
+            const RampStretch s = p.stretch_at(from, true);
+            EXPECT_TRUE(s.slowing);
+            ASSERT_GE(s.length, 1);
+            const std::int64_t end = from + s.length;
+            ASSERT_LE(end, t);
+            const auto k_of = [&](std::int64_t i) { return std::min({i + 1, n_j, t - i}); };
+            // The phase ends where the acceleration's law changes: at the top's first or last clock, or at T.
+            EXPECT_TRUE(end == t || end == n_j || end == n_j + n_a) << end;
+            for (std::int64_t i = from; i < end; ++i) {
+                const std::uint64_t accel = s.accel + static_cast<std::uint64_t>(s.jerk * (i - from));
+                EXPECT_EQ(accel, std::uint64_t{jerk} * static_cast<std::uint64_t>(k_of(i))) << "clock " << i;
+            }
+        }
+    }
 }
 
 }  // namespace

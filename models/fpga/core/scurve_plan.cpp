@@ -37,9 +37,12 @@ bool fits_move(const ScurvePlan& p, std::uint64_t start, std::uint32_t abs_dom) 
 
 }  // namespace
 
-std::uint64_t ScurvePlan::increment(std::int64_t i) const {
-    const std::int64_t k = std::min({i + 1, jerk_clocks, clocks() - i});
-    return std::uint64_t{jerk_reg} * static_cast<std::uint64_t>(k) >> kJerkShift;
+RampStretch ScurvePlan::stretch_at(std::int64_t i, bool slowing) const {
+    const std::uint64_t jerk = jerk_reg;
+    if (i < jerk_clocks) return {jerk * static_cast<std::uint64_t>(i + 1), jerk_reg, slowing, jerk_clocks - i};
+    const std::int64_t top_end = jerk_clocks + top_clocks;
+    if (i < top_end) return {jerk * static_cast<std::uint64_t>(jerk_clocks), 0, slowing, top_end - i};
+    return {jerk * static_cast<std::uint64_t>(clocks() - i), -std::int64_t{jerk_reg}, slowing, clocks() - i};
 }
 
 ScurvePlan plan_scurve(std::uint64_t start, std::uint64_t cruise, std::uint32_t accel_reg, std::uint32_t jerk_reg,

@@ -10,9 +10,9 @@
 #pragma once
 #include <cstdint>
 
-namespace cnc::fpga {
+#include "fpga/core/ramp_stretch.hpp"
 
-inline constexpr int kJerkShift = 32;  // the acceleration's fraction bits below the velocity's
+namespace cnc::fpga {
 
 struct ScurvePlan {
     std::int64_t jerk_clocks = 0;  // n_j
@@ -20,9 +20,10 @@ struct ScurvePlan {
     std::uint32_t jerk_reg = 0;
 
     [[nodiscard]] std::int64_t clocks() const { return 2 * jerk_clocks + top_clocks; }  // T
-    // The velocity's increment after the acceleration's clock i (0 <= i < T), 2^-48 steps per clock; it reads the
-    // same from either end.
-    [[nodiscard]] std::uint64_t increment(std::int64_t i) const;
+    // The acceleration's clocks from clock i (0 <= i < T) to the end of its phase: jerk x min(i + 1, n_j, T - i) in
+    // 2^-80 steps per clock^2, rising, holding or falling by the jerk register; the same from either end, so the
+    // deceleration takes them in the same order, `slowing`.
+    [[nodiscard]] RampStretch stretch_at(std::int64_t i, bool slowing) const;
 };
 
 // start and cruise velocities in 2^-48 steps per clock, the acceleration register in 2^-48 steps per clock^2, the

@@ -7,37 +7,40 @@ namespace cnc::fpga {
 
 namespace {
 
-__extension__ typedef __int128 Wide;  // the accumulation of a stretch: up to 2^33 clocks squared times 2^32
-
 constexpr std::int64_t kUnbounded = std::numeric_limits<std::int64_t>::max();
 
-// The phase accumulator after clocks 0..n of a stretch whose velocity is v + slope i at clock i, before its wrap.
-Wide accumulated(std::uint64_t phase, std::uint64_t v, std::int64_t slope, std::int64_t n) {
-    const Wide k = n;
-    return Wide{phase} + (k + 1) * Wide{v} + Wide{slope} * (k * (k + 1) / 2);
+// The phase accumulator after clocks 0..n of a stretch entered with `phase` and velocity v, before its wrap.
+RampWide accumulated(std::uint64_t phase, std::uint64_t v, const RampGain& gain, std::int64_t n) {
+    return RampWide{phase} + (RampWide{n} + 1) * RampWide{v} + gain.phase;
 }
 
-// The first clock n in 0..last whose accumulation carries, or -1. The velocity stays above 0, so the accumulation
-// grows with n.
-std::int64_t first_carry(std::uint64_t phase, std::uint64_t v, std::int64_t slope, std::int64_t last) {
-    if (accumulated(phase, v, slope, last) < Wide{kPhaseOne}) return -1;
-    std::int64_t lo = 0;
-    std::int64_t hi = last;
-    while (lo < hi) {
-        const std::int64_t mid = lo + (hi - lo) / 2;
-        if (accumulated(phase, v, slope, mid) >= Wide{kPhaseOne}) {
-            hi = mid;
-        } else {
-            lo = mid + 1;
-        }
-    }
-    return lo;
+RampWide accumulated(std::uint64_t phase, std::uint64_t v, const RampStretch& s, std::int64_t n) {
+    return accumulated(phase, v, stretch_gain(s, n), n);
 }
 
 // The clock by which a velocity of at least v carries.
 std::int64_t carry_bound(std::uint64_t phase, std::uint64_t v) {
     const std::uint64_t left = kPhaseOne - phase;
     return static_cast<std::int64_t>((left + v - 1) / v) - 1;
+}
+
+// The first clock n in 0..last whose accumulation carries, or -1. The velocity stays above 0, so the accumulation
+// grows with n; and it moves one way over a stretch, so the carry comes no sooner than the faster of its values at
+// clocks 0 and `last` would bring it, and no later than the slower.
+std::int64_t first_carry(std::uint64_t phase, std::uint64_t v, const RampStretch& s, std::int64_t last) {
+    const auto v_last = static_cast<std::uint64_t>(RampWide{v} + stretch_gain(s, last).velocity);
+    std::int64_t hi = std::min(last, carry_bound(phase, std::min(v, v_last)));
+    if (accumulated(phase, v, s, hi) < RampWide{kPhaseOne}) return -1;
+    std::int64_t lo = std::min(hi, carry_bound(phase, std::max(v, v_last)));
+    while (lo < hi) {
+        const std::int64_t mid = lo + (hi - lo) / 2;
+        if (accumulated(phase, v, s, mid) >= RampWide{kPhaseOne}) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    return lo;
 }
 
 }  // namespace
@@ -89,36 +92,34 @@ void RampRun::update_after_step(std::uint64_t v, bool clamp_clock) {
     }
 }
 
-RampRun::Stretch RampRun::trapezoid_stretch() const {
-    const std::int64_t accel = m_in.accel_reg;
+RampStretch RampRun::trapezoid_stretch() const {
+    const std::uint64_t accel = std::uint64_t{m_in.accel_reg} << kJerkShift;
     if (m_state == Phase::Accel && (accel > 0 || m_velocity == m_in.cruise)) {
         const std::uint64_t need = m_in.cruise - m_velocity;
-        return {accel, need == 0 ? 1 : static_cast<std::int64_t>((need + m_in.accel_reg - 1) / m_in.accel_reg)};
+        return {accel, 0, false,
+                need == 0 ? 1 : static_cast<std::int64_t>((need + m_in.accel_reg - 1) / m_in.accel_reg)};
     }
     if (m_state == Phase::Decel && accel > 0 && m_velocity > m_start) {
-        return {-accel, static_cast<std::int64_t>((m_velocity - m_start + m_in.accel_reg - 1) / m_in.accel_reg)};
+        return {accel, 0, true,
+                static_cast<std::int64_t>((m_velocity - m_start + m_in.accel_reg - 1) / m_in.accel_reg)};
     }
-    return {0, kUnbounded};
+    return {0, 0, false, kUnbounded};
 }
 
-// The S-curve's increments change every clock of a jerk phase (a stretch of one clock) and hold at the top.
-RampRun::Stretch RampRun::scurve_stretch() {
+// Each phase of the S-curve's acceleration (and of its mirror) is one stretch; the cruise holds.
+RampStretch RampRun::scurve_stretch() {
     const std::int64_t t = m_plan.clocks();
     if (m_state == Phase::Accel && m_ramp_clock >= t) {
         m_state = Phase::Cruise;
         m_ramp_steps = m_done;
     }
-    if (m_state == Phase::Cruise || m_ramp_clock >= t) return {0, kUnbounded};
-    const std::int64_t i = m_ramp_clock;
-    const std::int64_t top_end = m_plan.jerk_clocks + m_plan.top_clocks;
-    const std::int64_t length = i >= m_plan.jerk_clocks && i < top_end ? top_end - i : 1;
-    const auto step = static_cast<std::int64_t>(m_plan.increment(i));
-    return {m_state == Phase::Accel ? step : -step, length};
+    if (m_state == Phase::Cruise || m_ramp_clock >= t) return {0, 0, false, kUnbounded};
+    return m_plan.stretch_at(m_ramp_clock, m_state == Phase::Decel);
 }
 
-void RampRun::end_stretch(const Stretch& s) {
+void RampRun::end_stretch(const RampStretch& s) {
     if (m_in.jerk_reg != 0) {
-        m_velocity = static_cast<std::uint64_t>(static_cast<std::int64_t>(m_velocity) + s.slope * s.length);
+        m_velocity = static_cast<std::uint64_t>(static_cast<RampWide>(m_velocity) + stretch_gain(s, s.length).velocity);
         m_ramp_clock += s.length;
     } else if (m_state == Phase::Accel) {
         m_state = Phase::Cruise;
@@ -129,7 +130,7 @@ void RampRun::end_stretch(const Stretch& s) {
     }
 }
 
-void RampRun::scurve_after_step(std::uint64_t v, const Stretch& s, std::int64_t n) {
+void RampRun::scurve_after_step(std::uint64_t v, const RampStretch& s, std::int64_t n) {
     if (m_state == Phase::Cruise) {
         if (m_in.abs_dom - m_done < m_ramp_steps) {
             m_state = Phase::Decel;
@@ -137,7 +138,7 @@ void RampRun::scurve_after_step(std::uint64_t v, const Stretch& s, std::int64_t 
         }
         return;
     }
-    m_velocity = static_cast<std::uint64_t>(static_cast<std::int64_t>(v) + s.slope);
+    m_velocity = static_cast<std::uint64_t>(static_cast<std::int64_t>(v) + stretch_increment(s, n));
     if (s.length != kUnbounded) m_ramp_clock += n + 1;
 }
 
@@ -145,18 +146,19 @@ bool RampRun::next(Step& out) {
     if (m_done >= m_in.abs_dom) return false;
     const bool scurve = m_in.jerk_reg != 0;
     for (;;) {
-        const Stretch s = scurve ? scurve_stretch() : trapezoid_stretch();
-        std::int64_t last = s.length - 1;
-        if (s.slope >= 0) last = std::min(last, carry_bound(m_phase, m_velocity));
-        const std::int64_t n = first_carry(m_phase, m_velocity, s.slope, last);
+        const RampStretch s = scurve ? scurve_stretch() : trapezoid_stretch();
+        // The velocity never falls below the start's, and falls only in a slowing stretch.
+        const std::int64_t last = std::min(s.length - 1, carry_bound(m_phase, s.slowing ? m_start : m_velocity));
+        const std::int64_t n = first_carry(m_phase, m_velocity, s, last);
         if (n < 0) {  // the stretch ends without a step
-            m_phase = static_cast<std::uint64_t>(accumulated(m_phase, m_velocity, s.slope, s.length - 1));
+            m_phase = static_cast<std::uint64_t>(accumulated(m_phase, m_velocity, s, s.length - 1));
             m_clock += s.length;
             end_stretch(s);
             continue;
         }
-        const auto v = static_cast<std::uint64_t>(static_cast<std::int64_t>(m_velocity) + s.slope * n);
-        m_phase = static_cast<std::uint64_t>(accumulated(m_phase, m_velocity, s.slope, n) - Wide{kPhaseOne});
+        const RampGain gain = stretch_gain(s, n);
+        const auto v = static_cast<std::uint64_t>(static_cast<RampWide>(m_velocity) + gain.velocity);
+        m_phase = static_cast<std::uint64_t>(accumulated(m_phase, m_velocity, gain, n) - RampWide{kPhaseOne});
         out.clock = m_clock + n;
         ++m_done;
         m_error += m_in.abs_sub;

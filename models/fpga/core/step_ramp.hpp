@@ -31,6 +31,7 @@
 #pragma once
 #include <cstdint>
 
+#include "fpga/core/ramp_stretch.hpp"
 #include "fpga/core/scurve_plan.hpp"
 
 namespace cnc::fpga {
@@ -72,19 +73,14 @@ public:
 private:
     enum class Phase { Accel, Cruise, Decel };
 
-    // Clocks from m_clock on where the velocity changes by `slope` a clock, `length` of them.
-    struct Stretch {
-        std::int64_t slope = 0;
-        std::int64_t length = 0;
-    };
-
-    [[nodiscard]] Stretch trapezoid_stretch() const;
-    [[nodiscard]] Stretch scurve_stretch();
-    // After a stretch of `clocks` without a step.
-    void end_stretch(const Stretch& s);
+    // The clocks from m_clock on until the acceleration's law changes.
+    [[nodiscard]] RampStretch trapezoid_stretch() const;
+    [[nodiscard]] RampStretch scurve_stretch();
+    // After a stretch without a step.
+    void end_stretch(const RampStretch& s);
     // The velocity register's update at the end of a clock that used velocity `v`.
     void update_after_step(std::uint64_t v, bool clamp_clock);
-    void scurve_after_step(std::uint64_t v, const Stretch& s, std::int64_t n);
+    void scurve_after_step(std::uint64_t v, const RampStretch& s, std::int64_t n);
     [[nodiscard]] std::uint64_t decelerated(std::uint64_t v) const;
 
     RampInputs m_in;

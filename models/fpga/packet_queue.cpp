@@ -42,7 +42,7 @@ queue_protocol::Status PacketQueue::take_status() {
 }
 
 void PacketQueue::request_status(std::int64_t edge, bool refused) {
-    if (m_halted) return;
+    if (edge >= m_halt_edge) return;
     m_refused = m_refused || refused;
     if (edge == m_status_edge) return;
     m_status_edge = edge;
@@ -52,7 +52,7 @@ void PacketQueue::request_status(std::int64_t edge, bool refused) {
 
 void PacketQueue::hand_over(std::int64_t edge) {
     MotionFields f;
-    if (m_halted || !m_core.pop(f)) return;
+    if (edge >= m_halt_edge || !m_core.pop(f)) return;
     const TimePs t = m_clock.at(edge);
     m_issued.push_back({t, f});
     MotionOutputs{q_motion, q_steps_x, q_steps_y, q_feed_rate, q_laser_high, q_pkt_valid}.put(m_writer, m_clock, edge,

@@ -7,6 +7,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <systemc>
 
 #include "common/record_log.hpp"
@@ -48,8 +49,9 @@ public:
     [[nodiscard]] const RecordLog<PacketDecoder::MotionOut>& issued() const { return m_issued; }
     void drop_issued_before(std::size_t end) { m_issued.drop_before(end); }
     [[nodiscard]] const PacketQueueCore& core() const { return m_core; }
-    // The e-stop: nothing more is handed to step_gen or answered.
-    void halt() { m_halted = true; }
+    // The e-stop, seen through its synchroniser at edge `edge` (step_gen's halt): from that edge on nothing more is
+    // handed to step_gen or answered.
+    void halt_at(std::int64_t edge) { m_halt_edge = edge; }
     [[nodiscard]] std::uint64_t activations() const { return m_activations + m_writer.activations(); }
 
 private:
@@ -65,7 +67,7 @@ private:
     TimedWriter m_writer;
     RecordLog<PacketDecoder::MotionOut> m_issued;
     bool m_refused = false;  // a refusal not told the host yet
-    bool m_halted = false;
+    std::int64_t m_halt_edge = std::numeric_limits<std::int64_t>::max();
     std::int64_t m_status_edge = -1;
     std::uint64_t m_activations = 0;
 };

@@ -48,6 +48,11 @@ RtlTop::RtlTop(const sc_core::sc_module_name& name, const FpgaConfig& cfg, const
       m_plugin(rtl::build_plugin(m_spec)),
       m_halt_net(observed_index(m_spec, "halt")),
       m_halted_net(observed_index(m_spec, "halted")),
+      m_decoder_pkt_valid_net(observed_index(m_spec, "pkt_valid")),
+      m_queued_net(observed_index(m_spec, "queue.packet_queue_inst.queued")),
+      m_again_net(observed_index(m_spec, "queue.packet_queue_inst.again")),
+      m_refused_net(observed_index(m_spec, "queue.packet_queue_inst.refused")),
+      m_status_start_net(observed_index(m_spec, "status_start")),
       m_records(cfg, m_clock,
                 std::all_of(m_plugin.observed_present.begin(), m_plugin.observed_present.end(),
                             [](bool present) { return present; })),
@@ -99,6 +104,14 @@ void RtlTop::on_edge(std::int64_t n) {
     if (m_cfg.estop_input) {
         v.halt = m_loop.observed(m_halt_net) != 0;
         v.halted = m_loop.observed(m_halted_net) != 0;
+    }
+    v.decoder_pkt_valid = v.pkt_valid;
+    if (m_cfg.queue_depth > 0) {
+        v.decoder_pkt_valid = m_loop.observed(m_decoder_pkt_valid_net) != 0;
+        v.queued = m_loop.observed(m_queued_net) != 0;
+        v.again = m_loop.observed(m_again_net) != 0;
+        v.refused = m_loop.observed(m_refused_net) != 0;
+        v.status_start = m_loop.observed(m_status_start_net) != 0;
     }
     m_records.edge(n, v);
 }

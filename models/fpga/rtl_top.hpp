@@ -47,6 +47,12 @@ private:
     // With the e-stop: the observed halt and halted nets' indices in m_spec.
     const std::size_t m_halt_net;
     const std::size_t m_halted_net;
+    // With the packet queue: the decoder's pkt_valid, the queue's strobes and the status's start.
+    const std::size_t m_decoder_pkt_valid_net;
+    const std::size_t m_queued_net;
+    const std::size_t m_again_net;
+    const std::size_t m_refused_net;
+    const std::size_t m_status_start_net;
     ObservedRecords m_records;
     RtlLoop m_loop;
 };

@@ -136,7 +136,7 @@ void Top::on_estop() {
     m_halt_edge = halt;
     m_halted_at_ps = m_clock.at(halt);
     step_gen_inst.halt_at(halt);
-    if (packet_queue_inst) packet_queue_inst->halt();
+    if (packet_queue_inst) packet_queue_inst->halt_at(halt);
     m_halt_byte_due = true;
     // A start asked for up to the edge before the first sample has not raised tx_busy yet, but keeps uart_tx busy
     // past halt + 1 (a byte is ten bits): its fall sends the halt byte.

@@ -55,7 +55,7 @@ void ObservedRecords::from_pins(std::int64_t n, const FpgaNets& now) {
     if (m_prev.busy && !now.busy) {
         if (PacketRecord* r = running()) r->t_busy_fall_ps = m_clock.at(n);
         m_ack_packet = m_running;
-        m_ack_awaited = true;
+        m_ack_awaited = m_cfg.queue_depth == 0;  // the queue's statuses are no ACKs
     }
     if (m_prev.tx && !now.tx && m_ack_awaited) {
         ++m_stats.acks_sent;
@@ -74,17 +74,29 @@ void ObservedRecords::from_inner_nets(std::int64_t n, const FpgaNets& now) {
         ++m_stats.framing_errors;  // a low stop bit: the byte is dropped
     }
     // A packet that ends clears timeout_active too, with one of the decoder's strobes.
-    if (m_prev.timeout_active && !now.timeout_active && !now.pkt_valid && !now.cfg_valid && !now.crc_error &&
+    if (m_prev.timeout_active && !now.timeout_active && !now.decoder_pkt_valid && !now.cfg_valid && !now.crc_error &&
         !now.pkt_repeat) {
         ++m_stats.watchdog_resets;
     }
     if (now.crc_error && !m_prev.crc_error) ++m_stats.crc_errors;
     if (now.pkt_repeat && !m_prev.pkt_repeat) ++m_stats.repeats;
     if (now.tx_start && now.tx_nak && !(m_prev.tx_start && m_prev.tx_nak)) ++m_stats.naks_sent;
+    if (now.queued && !m_prev.queued) ++m_stats.queued;
+    if (now.again && !m_prev.again) ++m_stats.answered_again;
+    if (now.refused && !m_prev.refused) ++m_stats.refused;
+    if (now.status_start && !m_prev.status_start) ++m_stats.statuses_sent;
     // What step_gen sees at the next edge: IDLE, and no halt.
     const bool takes = now.step_gen_state == kIdle && !now.halt;
     if (now.cfg_valid && !m_prev.cfg_valid) {
         m_inits.push_back({t, now.numerator_x, now.numerator_y, m_cfg.init_packet_wired && takes});
+    }
+    // Before a packet of this edge: the packet queue hands step_gen its next move at the edge busy falls.
+    if (m_prev.busy && !now.busy) {
+        if (PacketRecord* r = running()) r->t_busy_fall_ps = t;
+        if (!now.halt && m_cfg.queue_depth == 0) {  // halt high at the next edge: no ACK; the queue's status instead
+            m_ack_edge = n + 1;
+            m_ack_packet = m_running;
+        }
     }
     if (now.pkt_valid && !m_prev.pkt_valid) {
         PacketRecord r;
@@ -119,13 +131,6 @@ void ObservedRecords::from_inner_nets(std::int64_t n, const FpgaNets& now) {
             r->period_y_cycles = now.period_y;
             if (now.step_gen_state == kRun) r->t_run_start_ps = m_clock.at(n + 1);  // its first RUN cycle
             m_packets[m_running].final = true;
-        }
-    }
-    if (m_prev.busy && !now.busy) {
-        if (PacketRecord* r = running()) r->t_busy_fall_ps = t;
-        if (!now.halt) {  // halt high at the next edge: no ACK
-            m_ack_edge = n + 1;
-            m_ack_packet = m_running;
         }
     }
 }

@@ -4,6 +4,7 @@
 // at DONE; uart_tx starts the ACK one edge after busy falls unless it is still sending. With the packet check the
 // decoder's crc_error and pkt_repeat strobes and the NAKs tx_start sends are counted too. With the e-stop, step_gen
 // takes nothing while top.v's halt is high, no ACK follows a busy fall it sees, and the edge halted rises is the halt.
+// With the packet queue the records are the moves the queue hands step_gen, and its statuses replace the ACKs.
 #pragma once
 #include <cstddef>
 #include <algorithm>
@@ -31,6 +32,13 @@ struct FpgaNets {
     bool tx_nak = false;
     bool halt = false;  // with the e-stop: top.v's halt (step_gen's input) and halted
     bool halted = false;
+    // With the packet queue: pkt_valid above is the queue's to step_gen; the decoder's, and the queue's strobes (a
+    // packet queued, answered again, refused) and the start of a status's first byte.
+    bool decoder_pkt_valid = false;
+    bool queued = false;
+    bool again = false;
+    bool refused = false;
+    bool status_start = false;
     std::uint8_t uart_rx_state = 0;
     std::uint8_t step_gen_state = 0;
     std::uint8_t motion = 0;

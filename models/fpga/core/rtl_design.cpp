@@ -1,5 +1,6 @@
 #include "fpga/core/rtl_design.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "rtl/design_sources.hpp"
@@ -10,7 +11,7 @@ rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design
     rtl::PluginSpec spec;
     rtl::set_design(spec, design, "top", CNC_FPGA_RTL_DIR,
                     {"top.v", "uart_rx.v", "packet_decoder.v", "step_gen.v", "period_divider.v", "step_ramp.v",
-                     "laser_ctrl.v", "uart_tx.v"},
+                     "laser_ctrl.v", "uart_tx.v", "packet_queue.v"},
                     {{"CLK_HZ", std::to_string(cfg.clk_hz)},
                      {"FULL_BIT", std::to_string(cfg.uart_full_bit_cycles)},
                      {"PULSE_HIGH", std::to_string(cfg.pulse_high_cycles)},
@@ -26,7 +27,8 @@ rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design
                      {"INTERLOCK", cfg.interlock_input ? "1" : "0"},
                      {"RAMP", cfg.ramp == StepRamp::Trapezoidal ? "1" : "0"},
                      {"RAMP_ACCEL_DEFAULT", std::to_string(cfg.ramp_accel_default)},
-                     {"RAMP_START_DEFAULT", std::to_string(cfg.ramp_start_default)}});
+                     {"RAMP_START_DEFAULT", std::to_string(cfg.ramp_start_default)},
+                     {"QUEUE_DEPTH", std::to_string(cfg.queue_depth)}});
     spec.clock = "clk";
     // A top without the safety inputs runs where their options are off (they are tied low then).
     spec.inputs = {{"rst_n", 1}, {"rx", 1}, {"estop", 1, !cfg.estop_input}, {"lid_open", 1, !cfg.interlock_input}};
@@ -60,6 +62,21 @@ rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design
     if (cfg.estop_input) {
         spec.observed.push_back({top, "halt", "halt"});
         spec.observed.push_back({top, "halted", "halted"});
+    }
+    if (cfg.queue_depth > 0) {
+        // step_gen takes the queue's moves: they are the records (the decoder's packets are judged by the queue).
+        const std::string q = "packet_queue";
+        const std::string inst = "queue.packet_queue_inst.";
+        for (const char* net : {"pkt_valid", "motion", "steps_x", "steps_y", "feed_rate"}) {
+            auto it = std::find_if(spec.observed.begin(), spec.observed.end(),
+                                   [&](const rtl::ObservedNet& n) { return n.path == net; });
+            *it = {q, inst + "q_" + net, std::string("q_") + net};
+        }
+        spec.observed.push_back({top, "pkt_valid", "pkt_valid"});  // the decoder's: a packet ends
+        spec.observed.push_back({q, inst + "queued", "queued"});
+        spec.observed.push_back({q, inst + "again", "again"});
+        spec.observed.push_back({q, inst + "refused", "refused"});
+        spec.observed.push_back({top, "status_start", "status_start"});
     }
     return spec;
 }

@@ -19,8 +19,9 @@ inline constexpr std::uint32_t kRtlRampDirSettleMin = 52;
 // The plug-in to build: the design's sources, its top module (the one named as the file, our "top"), the
 // parameters from `cfg` (CLK_HZ, FULL_BIT, PULSE_HIGH, DIR_SETTLE, FEED_ZERO_PERIOD, TIMEOUT_CYCLES,
 // NUMERATOR_DEFAULT, EXACT_PERIOD, INIT_WIRED, PACKET_CRC, LASER_PWM_PERIOD, ESTOP, INTERLOCK, RAMP,
-// RAMP_ACCEL_DEFAULT, RAMP_START_DEFAULT; of a user's top, those it declares) then the design's own, and the nets
-// ObservedRecords reads (the packet check's and the e-stop's only with them). estop and lid_open are required of a
+// RAMP_ACCEL_DEFAULT, RAMP_START_DEFAULT, QUEUE_DEPTH; of a user's top, those it declares) then the design's own,
+// and the nets ObservedRecords reads (the packet check's, the e-stop's and the queue's only with them; with the queue
+// the moves are its outputs to step_gen, not the decoder's). estop and lid_open are required of a
 // user's top only with their options.
 [[nodiscard]] rtl::PluginSpec rtl_plugin_spec(const FpgaConfig& cfg, const rtl::Design& design);
 

@@ -17,6 +17,9 @@
 //
 // RAMP = 1 adds our trapezoidal ramp's registers (step_ramp.v): an init packet has eight more bytes after the
 // numerators, the acceleration and the start speed, big-endian (17 bytes, 19 with the check).
+//
+// QUEUE = 1 (our packet queue, packet_queue.v) numbers the motion packets instead: bits 6:2 of the first byte go out
+// on seq with the fields, and no packet is a repeat (the queue finds those by their numbers).
 module packet_decoder #(
     parameter TIMEOUT_CYCLES    = 5000000,   // 100 ms at 50 MHz
     parameter NUMERATOR_DEFAULT = 18750000,  // §5.2.3: 1/32 microstep, GT2 belt, 20-tooth pulley
@@ -24,13 +27,15 @@ module packet_decoder #(
     parameter LASER_PWM         = 0,         // 1: the PWM high time above; 0: the seed's packets
     parameter RAMP              = 0,         // 1: the ramp's registers above; 0: the seed's init packet
     parameter RAMP_ACCEL_DEFAULT = 18014,    // their values until an init packet sets them
-    parameter RAMP_START_DEFAULT = 68719
+    parameter RAMP_START_DEFAULT = 68719,
+    parameter QUEUE             = 0          // 1: the packet numbers above; 0: the alternating bit
 ) (
     input  wire        clk,
     input  wire        rst,
     input  wire [7:0]  rx_data,
     input  wire        rx_valid,
     output reg  [1:0]  motion,
+    output reg  [4:0]  seq,
     output reg  [31:0] steps_x,
     output reg  [31:0] steps_y,
     output reg  [15:0] feed_rate,
@@ -84,7 +89,7 @@ module packet_decoder #(
     wire [15:0] crc_next = crc16_update(byte_count == 4'd0 ? 16'hFFFF : crc, rx_data);
     // Without the check every packet is good and none is a repeat.
     wire        crc_good = !CHECKED || crc_next == 16'd0;
-    wire        is_repeat = CHECKED && seq_seen && b0[7] == last_seq;
+    wire        is_repeat = CHECKED && QUEUE == 0 && seq_seen && b0[7] == last_seq;
 
     always @(posedge clk) begin
         if (rst) begin
@@ -108,6 +113,7 @@ module packet_decoder #(
             crc_error <= 1'b0;
             pkt_repeat <= 1'b0;
             // Only with the ramp: unused without it, their reset still moved Yosys's LUT mapping of the seed's design.
+            if (QUEUE != 0) seq <= 5'd0;
             if (RAMPED) begin
                 {b13, b14, b15, b16} <= 32'd0;
                 ramp_accel <= RAMP_ACCEL_DEFAULT;
@@ -179,6 +185,7 @@ module packet_decoder #(
                         pkt_repeat <= 1'b1;
                     else begin
                         motion <= b0[1:0];
+                        if (QUEUE != 0) seq <= b0[6:2];
                         steps_x <= {b1, b2, b3, b4};
                         steps_y <= {b5, b6, b7, b8};
                         feed_rate <= {b9, CHECKED || PWM ? b10 : rx_data};

@@ -40,7 +40,8 @@ module step_gen #(
     output reg         step_x,
     output reg         dir_y,
     output reg         step_y,
-    output reg         busy
+    output reg         busy,
+    output wire        done  // in DONE: busy falls at this edge (the packet queue hands over the next move there)
 );
     localparam [2:0] IDLE = 3'd0, SETUP = 3'd1, DIR_WAIT = 3'd2, RUN = 3'd3, DONE = 3'd4, HALTED = 3'd5;
     reg [2:0]  state;
@@ -49,6 +50,8 @@ module step_gen #(
     reg [8:0]  dir_cnt;
     reg [31:0] accel_reg, start_reg;  // with the ramp
     reg        ramp_load;             // the periods were written at the last edge
+
+    assign done = state == DONE;
 
     wire [31:0] feed = {16'd0, feed_rate};
     wire        x_dominant = abs_x >= abs_y;

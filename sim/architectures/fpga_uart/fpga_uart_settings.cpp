@@ -112,9 +112,6 @@ void read_queue(KeyReader& r, FpgaUartSettings& s) {
                "the packet queue needs protocol.crc = \"crc16\": a byte lost while the host sends ahead misframes "
                "every packet behind it, and only a check finds the packet boundaries again");
     }
-    if (s.rtl.rtl) {
-        r.fail("fpga.queue_depth", "the packet queue is in the event model only: fpga.model = \"event\"");
-    }
 }
 
 // Our option on seed 000 §7.2's trapezoidal or S-curve ramps on the FPGA: step_gen's law in fpga/core/step_ramp.hpp.

@@ -62,23 +62,8 @@ module packet_check_tb;
         x_rises = x_rises + 1;
     end
 
-    // The frames on tx as the host's UART reads them: the start bit's cycle, then the eight data bits mid-bit.
-    integer frames = 0;
-    integer frame_start [0:7];
-    reg [7:0] frame_byte [0:7];
-    always @(negedge tx) if (rst_n) begin : read_frame
-        integer i;
-        reg [7:0] b;
-        frame_start[frames] = cycle;
-        repeat (BIT / 2) @(posedge clk);
-        for (i = 0; i < 8; i = i + 1) begin
-            repeat (BIT) @(posedge clk);
-            b[i] = tx;
-        end
-        frame_byte[frames] = b;
-        frames = frames + 1;
-        repeat (BIT) @(posedge clk);  // past the stop bit
-    end
+    localparam integer MAX_FRAMES = 8;
+    `include "tx_frames.vh"
 
     initial begin
         repeat (4) @(posedge clk);

@@ -20,7 +20,7 @@ import sys
 DESIGNS = {
     "fpga_uart": ("top",
                   ["top.v", "uart_rx.v", "uart_tx.v", "packet_decoder.v", "step_gen.v", "period_divider.v",
-                   "step_ramp.v", "laser_ctrl.v"],
+                   "step_ramp.v", "laser_ctrl.v", "packet_queue.v"],
                   [("DIVIDER 1", "divider1", {"DIVIDER": 1}), ("DIVIDER 0", "divider0", {"DIVIDER": 0})]),
     "spi_fpga": ("spi_fpga_top",
                  ["spi_fpga_top.v", "spi_slave.v", "spi_cmd_fifo.v", "spi_pulse_gen.v", "spi_step_counter.v",

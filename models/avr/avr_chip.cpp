@@ -36,6 +36,7 @@ void quiet_logger(avr_t*, const int level, const char* format, va_list ap) {
 }
 
 constexpr avr_cycle_count_t kInterruptResponseCycles = 4;
+constexpr std::uint16_t kReti = 0x9518;  // AVR Instruction Set Manual: RETI
 // Datasheet "Interrupt Response Time": an interrupt that wakes the MCU from sleep takes 4 cycles more, in addition to
 // the sleep mode's start-up time (0 in Idle, whose clocks run on: "Sleep Modes").
 constexpr avr_cycle_count_t kWakeUpCycles = 4;
@@ -267,8 +268,12 @@ void AvrChip::step() {
     avr_t* avr = m_avr;
     const avr_flashaddr_t pc = avr->pc;
     avr_flashaddr_t new_pc = pc;
+    bool reti = false;
     if (avr->state == cpu_Running) {
-        if (m_skipper && m_skipper->recording()) m_skipper->before_instruction();
+        if (m_skipper) {
+            if (m_skipper->recording()) m_skipper->before_instruction();
+            reti = pc + 1 < avr->flashend && (avr->flash[pc] | (avr->flash[pc + 1] << 8)) == kReti;
+        }
         new_pc = avr_run_one(avr);
     }
     const avr_cycle_timer_slot_t* head = avr->cycle_timers.timer;
@@ -290,8 +295,15 @@ void AvrChip::step() {
     }
     if ((avr->state == cpu_Running || avr->state == cpu_Sleeping) && avr->interrupt_state != 0)
         avr_service_interrupts(avr);
-    if (m_skipper && avr->pc <= pc && avr->state == cpu_Running)
-        m_skipper->backward_jump();  // an iteration may end here
+    if (!m_skipper || avr->state != cpu_Running) return;
+    // After RETI one more instruction runs before any interrupt (interrupt_state -2, -1, then 0 or pending).
+    if (reti) {
+        m_after_reti = true;
+    } else if (m_after_reti && avr->interrupt_state >= 0) {
+        m_after_reti = false;
+        if (avr->interrupt_state == 0 && m_skipper->resume_on_proof()) return;
+    }
+    if (avr->pc <= pc) m_skipper->backward_jump();  // an iteration may end here
 }
 
 bool AvrChip::other_timer_due() const {
@@ -357,6 +369,7 @@ ChipState AvrChip::run_until(Cycle limit) {
         // Bounds a sleep: a sleeping simavr core jumps straight to its next cycle timer.
         avr_cycle_timer_register(m_avr, static_cast<avr_cycle_count_t>(limit - now()), no_op_timer, this);
         m_run_limit = limit;
+        if (m_skipper && m_avr->state == cpu_Running && m_avr->interrupt_state == 0) m_skipper->resume_on_proof();
         while (now() < limit) {
             step();
             const int st = m_avr->state;

@@ -201,6 +201,7 @@ private:
     std::optional<Cycle> m_shared_read_cycle;  // the ATmega16's last read of UBRRH/UCSRC
     avr_t* m_avr = nullptr;
     std::unique_ptr<PortHooks> m_port_hooks;
+    bool m_after_reti = false;  // a RETI ran: the interrupted loop may be a proven one once the next instruction ran
     std::unique_ptr<LoopSkipper> m_skipper;         // null: fast-forward off
     Cycle m_run_limit = 0;                          // of the run_until running
     std::array<avr_int_vector_t*, 26> m_vectors{};  // simavr's interrupt vectors by number (0 = none)

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <utility>
 
 #include <sim_avr.h>
+#include <sim_interrupts.h>
 #include <sim_io.h>
 
 #include "avr/core/data_access.hpp"
@@ -39,8 +41,7 @@ LoopSkipper::LoopSkipper(avr_t* avr, const std::vector<std::uint16_t>& pins,
       m_quiet_until(std::move(quiet_until)),
       m_io(MAX_IOs),
       m_snapshot(static_cast<std::size_t>(avr->ramend) + 1),
-      m_touched(m_snapshot.size()),
-      m_written(m_snapshot.size()) {
+      m_touched(m_snapshot.size()) {
     for (std::size_t i = 0; i < m_io.size(); ++i) {
         auto& slot = avr->io[i];
         Io& io = m_io[i];
@@ -85,18 +86,25 @@ void LoopSkipper::backward_jump() {
     if (pc == m_loop.pc) {
         if (m_loop.epoch == m_epoch && m_loop.sp == stack && m_loop.cpu == cpu &&
             std::memcmp(m_snapshot.data(), m_avr->data, m_snapshot.size()) == 0) {
-            if (m_recording && m_footprint_known) keep_proof(now - m_loop.cycle);
+            const Cycle period = now - m_loop.cycle;
+            const bool proven = m_recording && m_footprint_known;
             m_recording = false;  // the snapshot stands: the next iterations prove nothing new
-            skip(now - m_loop.cycle);
+            if (proven) {
+                keep_proof(period);
+                const Proof& kept = m_proofs[(m_next_proof + m_proofs.size() - 1) % m_proofs.size()];
+                if (run_on_proof(kept, 0, m_quiet_until())) return;
+            } else {
+                skip(period);
+            }
         } else {
-            if (reuse_proof(pc, stack, cpu)) return;
+            if (reuse_proof(pc, stack, cpu, false)) return;
             std::memcpy(m_snapshot.data(), m_avr->data, m_snapshot.size());
             start_recording();
         }
         m_loop = Visit{pc, static_cast<Cycle>(m_avr->cycle), m_epoch, stack, cpu};
         return;
     }
-    if (reuse_proof(pc, stack, cpu)) return;
+    if (reuse_proof(pc, stack, cpu, false)) return;
     // Any backward-jump target whose last two visits look alike becomes the watched one, unless the watched one was
     // visited during that iteration: then both are in the same loop (an inner loop, a called function), and the one
     // watched already keeps its snapshot.
@@ -109,15 +117,29 @@ void LoopSkipper::backward_jump() {
     v = Visit{pc, now, m_epoch, stack, cpu};
 }
 
+bool LoopSkipper::resume_on_proof() {
+    return reuse_proof(m_avr->pc, sp(), cpu_state(), true);
+}
+
 void LoopSkipper::start_recording() {
     m_recording = true;
     m_footprint_known = true;
+    m_recording_start = static_cast<Cycle>(m_avr->cycle);
     ++m_stamp;
-    m_reads.clear();
-    m_writes.clear();
+    m_trace.steps.clear();
+    m_trace.reads.clear();
+    m_trace.writes.clear();
+}
+
+// The values the last step wrote: it has run now.
+void LoopSkipper::end_step() {
+    const std::size_t from = m_trace.steps.size() < 2 ? 0 : m_trace.steps[m_trace.steps.size() - 2].writes_end;
+    for (std::size_t w = from; w < m_trace.writes.size(); ++w)
+        m_trace.writes[w].second = m_avr->data[m_trace.writes[w].first];
 }
 
 void LoopSkipper::before_instruction() {
+    if (!m_trace.steps.empty()) end_step();
     const std::uint32_t pc = m_avr->pc;
     if (pc + 3 >= m_avr->flashend) {
         m_footprint_known = false;
@@ -127,6 +149,7 @@ void LoopSkipper::before_instruction() {
     const auto word = [flash](std::uint32_t a) { return static_cast<std::uint16_t>(flash[a] | (flash[a + 1] << 8)); };
     const DataAccesses accesses = data_accesses(word(pc), word(pc + 2), m_avr->data);
     if (accesses.unmodelled) m_footprint_known = false;
+    TraceStep step{pc, static_cast<Cycle>(m_avr->cycle) - m_recording_start, cpu_state(), sp(), 0, 0};
     for (int i = 0; i < accesses.count; ++i) {
         const DataAccess& a = accesses.at[static_cast<std::size_t>(i)];
         if (a.addr >= m_touched.size()) {
@@ -136,41 +159,143 @@ void LoopSkipper::before_instruction() {
         const bool io = a.addr >= 32 && a.addr < 32 + MAX_IOs;
         // A register with a read handler answers from outside the data space (PINx, UCSR0A).
         if (a.read && io && m_io[AVR_DATA_TO_IO(a.addr)].read != nullptr) m_footprint_known = false;
-        if (m_touched[a.addr] != m_stamp) {
-            m_touched[a.addr] = m_stamp;
-            if (a.read) m_reads.push_back(a.addr);
-        }
-        if (a.write && m_written[a.addr] != m_stamp) {
-            m_written[a.addr] = m_stamp;
-            m_writes.push_back(a.addr);
-        }
+        m_touched[a.addr] = m_stamp;
+        if (a.read) m_trace.reads.emplace_back(a.addr, m_avr->data[a.addr]);
+        if (a.write) m_trace.writes.emplace_back(a.addr, 0);
     }
+    step.reads_end = static_cast<std::uint32_t>(m_trace.reads.size());
+    step.writes_end = static_cast<std::uint32_t>(m_trace.writes.size());
+    m_trace.steps.push_back(step);
 }
 
 void LoopSkipper::keep_proof(Cycle period) {
+    end_step();
     Proof& p = m_proofs[m_next_proof];
     m_next_proof = (m_next_proof + 1) % m_proofs.size();
-    p.at = m_loop;
     p.period = period;
-    p.reads.clear();
-    p.writes.clear();
-    for (const std::uint16_t a : m_reads) p.reads.emplace_back(a, m_snapshot[a]);
-    for (const std::uint16_t a : m_writes) p.writes.emplace_back(a, m_avr->data[a]);
+    p.steps = m_trace.steps;
+    p.reads = m_trace.reads;
+    p.writes = m_trace.writes;
+    p.pcs.clear();
+    p.touches.clear();
+    p.bytes.clear();
+    // The registers, SP and SREG are the CPU's, compared apart (instructions move them without a write).
+    const auto cpu_byte = [](std::uint16_t a) { return a < 32 || (a >= R_SPL && a <= R_SREG); };
+    for (std::size_t k = 0; k < p.steps.size(); ++k) {
+        p.pcs.emplace_back(p.steps[k].pc, static_cast<std::uint32_t>(k));
+        const auto k32 = static_cast<std::uint32_t>(k);
+        for (std::size_t r = k == 0 ? 0 : p.steps[k - 1].reads_end; r < p.steps[k].reads_end; ++r)
+            if (!cpu_byte(p.reads[r].first)) p.touches.push_back({p.reads[r].first, k32, true, p.reads[r].second});
+        for (std::size_t w = k == 0 ? 0 : p.steps[k - 1].writes_end; w < p.steps[k].writes_end; ++w)
+            if (!cpu_byte(p.writes[w].first)) p.touches.push_back({p.writes[w].first, k32, false, 0});
+    }
+    std::sort(p.pcs.begin(), p.pcs.end());
+    p.stores.clear();
+    for (std::size_t k = 0; k < p.steps.size(); ++k)
+        for (std::size_t w = k == 0 ? 0 : p.steps[k - 1].writes_end; w < p.steps[k].writes_end; ++w)
+            p.stores.push_back({p.writes[w].first, static_cast<std::uint32_t>(k), false, p.writes[w].second});
+    by_byte(p.touches, p.bytes);
+    by_byte(p.stores, p.stored_bytes);
 }
 
-bool LoopSkipper::reuse_proof(std::uint32_t pc, std::uint16_t stack, const CpuState& cpu) {
+void LoopSkipper::by_byte(std::vector<Touch>& touches, std::vector<std::pair<std::uint32_t, std::uint32_t>>& bytes) {
+    std::stable_sort(touches.begin(), touches.end(), [](const Touch& a, const Touch& b) {
+        return a.addr != b.addr ? a.addr < b.addr : a.step < b.step;
+    });
+    bytes.clear();
+    for (std::size_t t = 0; t < touches.size(); ++t) {
+        if (t == 0 || touches[t].addr != touches[t - 1].addr)
+            bytes.emplace_back(static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(t));
+        ++bytes.back().second;
+    }
+}
+
+bool LoopSkipper::reuse_proof(std::uint32_t pc, std::uint16_t stack, const CpuState& cpu, bool anywhere) {
+    // A raised interrupt waiting for SEI would be taken where the proof took none; a cycle timer due now has an
+    // event still to process.
+    if (avr_has_pending_interrupts(m_avr) != 0) return false;
+    if (m_avr->cycle_timers.timer != nullptr && m_avr->cycle_timers.timer->when <= m_avr->cycle) return false;
+    std::optional<Cycle> event;
     for (const Proof& p : m_proofs) {
-        if (p.period == 0 || p.at.pc != pc || p.at.sp != stack || p.at.cpu != cpu) continue;
-        const bool same = std::all_of(p.reads.begin(), p.reads.end(),
-                                      [this](const auto& r) { return m_avr->data[r.first] == r.second; });
-        if (!same) continue;
-        if (skip(p.period) == 0) return false;
-        for (const auto& [a, v] : p.writes) m_avr->data[a] = v;
-        ++m_stats.reused;
-        disturb();  // the watched loop's snapshot is of another state
-        return true;
+        if (p.steps.empty()) continue;
+        // Only the iteration's start, at a backward jump; after RETI, any of its boundaries.
+        const auto at = std::equal_range(p.pcs.begin(), p.pcs.end(), std::pair<std::uint32_t, std::uint32_t>{pc, 0},
+                                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (auto it = at.first; it != at.second; ++it) {
+            const std::size_t i = it->second;
+            if (!anywhere && i != 0) continue;
+            const TraceStep& s = p.steps[i];
+            if (s.sp != stack || s.cpu != cpu) continue;
+            if (!event) event = m_quiet_until();
+            if (run_on_proof(p, i, *event)) {
+                ++m_stats.reused;
+                return true;
+            }
+        }
     }
     return false;
+}
+
+bool LoopSkipper::run_on_proof(const Proof& p, std::size_t i, Cycle event) {
+    const std::size_t n = p.steps.size();
+    if (p.period <= 0 || n == 0) return false;
+    // The first instruction (counted on from boundary i, period after period) that ends at or past the event sees it:
+    // the CPU goes to the boundary before it.
+    const Cycle now = static_cast<Cycle>(m_avr->cycle);
+    const Cycle begin = p.steps[i].offset;
+    const Cycle x = event - now + begin;  // the event, counted from the iteration's start
+    if (x <= begin) return false;
+    const Cycle q = (x - 1) / p.period;
+    const auto end_of = [&](std::size_t j) { return j + 1 < n ? p.steps[j + 1].offset : p.period; };
+    std::size_t lo = 0;
+    std::size_t hi = n - 1;
+    while (lo < hi) {  // the first step of period q ending at or past x
+        const std::size_t mid = (lo + hi) / 2;
+        if (end_of(mid) + q * p.period >= x) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    const auto target = static_cast<std::size_t>(q) * n + lo;
+    if (target <= i) return false;
+    const std::size_t steps_on = target - i;
+    // From boundary i round to it again, each byte whose first access is a read must hold what the proof read.
+    for (const auto& [first, end] : p.bytes) {
+        const auto b = p.touches.begin();
+        auto t = std::lower_bound(b + first, b + end, i, [](const Touch& x, std::size_t k) { return x.step < k; });
+        if (t == b + end) t = b + first;
+        if (t->read && m_avr->data[t->addr] != t->value) return false;
+    }
+    // Each written byte ends with its last write from boundary i on: in the last part turn, else in a whole turn.
+    const std::size_t part = steps_on % n;
+    for (const auto& [first, end] : p.stored_bytes) {
+        const auto b = p.stores.begin() + first;
+        const auto e = p.stores.begin() + end;
+        const auto last_in = [&](std::size_t lo, std::size_t hi) -> const Touch* {  // steps [lo, hi)
+            const auto at = std::lower_bound(b, e, hi, [](const Touch& x, std::size_t k) { return x.step < k; });
+            return at != b && (at - 1)->step >= lo ? &*(at - 1) : nullptr;
+        };
+        const Touch* w = nullptr;
+        if (part > 0) w = i + part <= n ? last_in(i, i + part) : last_in(0, i + part - n);
+        if (w == nullptr && part > 0 && i + part > n) w = last_in(i, n);
+        if (w == nullptr && steps_on >= n) w = last_in(0, i);
+        if (w == nullptr && steps_on >= n) w = last_in(i, n);
+        if (w != nullptr) m_avr->data[w->addr] = w->value;
+    }
+    const TraceStep& to = p.steps[lo];
+    std::memcpy(m_avr->data, to.cpu.data(), 32);
+    std::memcpy(m_avr->sreg, to.cpu.data() + 32, 8);
+    m_avr->interrupt_state = static_cast<std::int8_t>(to.cpu[40]);
+    m_avr->data[R_SPL] = static_cast<std::uint8_t>(to.sp & 0xFF);
+    m_avr->data[R_SPH] = static_cast<std::uint8_t>(to.sp >> 8);
+    m_avr->pc = to.pc;
+    const Cycle skipped = to.offset + q * p.period - begin;
+    m_avr->cycle += static_cast<avr_cycle_count_t>(skipped);
+    ++m_stats.skips;
+    m_stats.skipped_cycles += static_cast<std::uint64_t>(skipped);
+    disturb();  // the watched loop's snapshot is of another state
+    return true;
 }
 
 Cycle LoopSkipper::skip(Cycle period) {

@@ -69,6 +69,9 @@ public:
     // Whether the chip must call before_instruction() before each instruction (a proving iteration runs).
     [[nodiscard]] bool recording() const { return m_recording; }
     void before_instruction();
+    // Where the CPU may be inside a proven iteration, running with no interrupt pending (after a RETI and the
+    // instruction that follows it, at the start of a run): moves it on when it is. Whether it did.
+    bool resume_on_proof();
     [[nodiscard]] const FastForwardStats& stats() const { return m_stats; }
 
 private:
@@ -84,13 +87,35 @@ private:
 
     struct Io;  // the handlers the watch replaced (loop_skipper.cpp)
 
-    // An iteration proven idle, from its target's visit: the bytes it reads before writing them and their values,
-    // and the bytes it writes and the values they end with.
+    // One instruction of a proving iteration: where it starts (cycles from the iteration's start), the CPU before
+    // it, and where its reads and writes end in the proof's lists (they start where the previous step's end).
+    struct TraceStep {
+        std::uint32_t pc = 0;
+        Cycle offset = 0;
+        CpuState cpu{};
+        std::uint16_t sp = 0;
+        std::uint32_t reads_end = 0;
+        std::uint32_t writes_end = 0;
+    };
+    // An iteration proven idle, instruction by instruction: any of its instruction boundaries, met again with the
+    // same CPU and the same bytes it reads before writing them from there on, runs it again.
+    // A data byte's first access in a step (a read comes before the step's write), by byte and step.
+    struct Touch {
+        std::uint16_t addr = 0;
+        std::uint32_t step = 0;
+        bool read = false;
+        std::uint8_t value = 0;  // read
+    };
     struct Proof {
-        Visit at;
         Cycle period = 0;
-        std::vector<std::pair<std::uint16_t, std::uint8_t>> reads;
-        std::vector<std::pair<std::uint16_t, std::uint8_t>> writes;
+        std::vector<TraceStep> steps;
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> pcs;    // (pc, step), sorted: searched after RETI
+        std::vector<std::pair<std::uint16_t, std::uint8_t>> reads;   // with the value read
+        std::vector<std::pair<std::uint16_t, std::uint8_t>> writes;  // with the value written
+        std::vector<Touch> touches;                                  // but the registers', SP's and SREG's
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> bytes;  // each byte's touches: [first, end)
+        std::vector<Touch> stores;                                   // each write (value: written), by byte and step
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> stored_bytes;
     };
 
     [[nodiscard]] CpuState cpu_state() const;
@@ -98,9 +123,13 @@ private:
     // Iterations of `period` skipped before the next event the CPU could see (0: none).
     Cycle skip(Cycle period);
     void start_recording();
+    void end_step();
     void keep_proof(Cycle period);
-    [[nodiscard]] bool reuse_proof(std::uint32_t pc, std::uint16_t stack, const CpuState& cpu);
-
+    static void by_byte(std::vector<Touch>& touches, std::vector<std::pair<std::uint32_t, std::uint32_t>>& bytes);
+    // From the proof's instruction boundary i, where the CPU is now: when the bytes the iteration reads from there
+    // on are as then, the CPU is moved to the boundary of the instruction that sees `event` (the next event).
+    bool run_on_proof(const Proof& p, std::size_t i, Cycle event);
+    bool reuse_proof(std::uint32_t pc, std::uint16_t stack, const CpuState& cpu, bool anywhere);
     avr_t* m_avr;
     std::function<Cycle()> m_quiet_until;
     std::vector<Io> m_io;  // by I/O register index
@@ -111,15 +140,14 @@ private:
     // proves the iteration idle.
     Visit m_loop;
     std::vector<std::uint8_t> m_snapshot;
-    // The proving iteration's accesses: per byte, the stamp of the recording that first touched it and of the one
-    // that wrote it (a stamp per recording avoids clearing the arrays).
+    // The proving iteration: its steps so far, and per byte the stamp of the recording that first touched it (a
+    // stamp per recording avoids clearing the array).
     bool m_recording = false;
     bool m_footprint_known = false;
+    Cycle m_recording_start = 0;
     std::uint32_t m_stamp = 0;
     std::vector<std::uint32_t> m_touched;
-    std::vector<std::uint32_t> m_written;
-    std::vector<std::uint16_t> m_reads;
-    std::vector<std::uint16_t> m_writes;
+    Proof m_trace;
     std::array<Proof, 4> m_proofs{};
     std::size_t m_next_proof = 0;
     FastForwardStats m_stats;

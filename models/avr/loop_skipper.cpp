@@ -79,6 +79,7 @@ std::uint16_t LoopSkipper::sp() const {
 }
 
 void LoopSkipper::backward_jump() {
+    if (skip_delay_loop()) return;
     const std::uint32_t pc = m_avr->pc;
     const Cycle now = static_cast<Cycle>(m_avr->cycle);
     const CpuState cpu = cpu_state();
@@ -115,6 +116,48 @@ void LoopSkipper::backward_jump() {
         start_recording();
     }
     v = Visit{pc, now, m_epoch, stack, cpu};
+}
+
+// avr-libc's _delay_loop_2 (and every busy delay built on it, _delay_ms): `1: SBIW Rd, 1; BRNE 1b`, 4 cycles a turn
+// and 3 for the last. Its counter changes at every turn, so no turn is idle, but k turns from a counter n >= 2 leave
+// it at n - k with the flags of the last SBIW (AVR Instruction Set Manual, SBIW: N = R15, Z = 0 for R != 0,
+// V = Rdh7 and not R15, C = R15 and not Rdh7, S = N xor V).
+bool LoopSkipper::skip_delay_loop() {
+    const std::uint32_t pc = m_avr->pc;
+    if (pc + 3 >= m_avr->flashend) return false;
+    const std::uint8_t* flash = m_avr->flash;
+    const auto sbiw = static_cast<std::uint16_t>(flash[pc] | (flash[pc + 1] << 8));
+    const auto brne = static_cast<std::uint16_t>(flash[pc + 2] | (flash[pc + 3] << 8));
+    constexpr std::uint16_t kSbiwOne = 0x9701;   // SBIW Rd, 1: 1001 0111 KKdd KKKK, K = 1
+    constexpr std::uint16_t kBrneBack = 0xF7F1;  // BRNE .-4: back to the SBIW
+    if ((sbiw & 0xFFCF) != kSbiwOne || brne != kBrneBack) return false;
+    if (avr_has_pending_interrupts(m_avr) != 0) return false;
+    if (m_avr->cycle_timers.timer != nullptr && m_avr->cycle_timers.timer->when <= m_avr->cycle) return false;
+    const int low = 24 + 2 * ((sbiw >> 4) & 3);
+    const std::uint32_t n = m_avr->data[low] | (m_avr->data[low + 1] << 8);
+    const std::uint32_t turns_left = n == 0 ? 0x10000 : n;  // SBIW from 0 wraps to 0xFFFF
+    constexpr Cycle kTurn = 4;
+    const Cycle now = static_cast<Cycle>(m_avr->cycle);
+    const Cycle event = m_quiet_until();
+    if (event <= now) return false;
+    const Cycle k = std::min<Cycle>(turns_left - 1, (event - 1 - now) / kTurn);
+    if (k <= 0) return false;
+    const auto before = static_cast<std::uint16_t>(turns_left - k + 1);  // the last SBIW's operand
+    const auto after = static_cast<std::uint16_t>(before - 1);
+    m_avr->data[low] = static_cast<std::uint8_t>(after & 0xFF);
+    m_avr->data[low + 1] = static_cast<std::uint8_t>(after >> 8);
+    const bool r15 = (after & 0x8000) != 0;
+    const bool rdh7 = (before & 0x8000) != 0;
+    m_avr->sreg[S_N] = r15;
+    m_avr->sreg[S_Z] = 0;
+    m_avr->sreg[S_V] = rdh7 && !r15;
+    m_avr->sreg[S_C] = r15 && !rdh7;
+    m_avr->sreg[S_S] = m_avr->sreg[S_N] ^ m_avr->sreg[S_V];
+    m_avr->cycle += static_cast<avr_cycle_count_t>(k * kTurn);
+    ++m_stats.skips;
+    m_stats.skipped_cycles += static_cast<std::uint64_t>(k * kTurn);
+    disturb();
+    return true;
 }
 
 bool LoopSkipper::resume_on_proof() {

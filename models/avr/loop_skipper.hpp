@@ -125,6 +125,7 @@ private:
     void start_recording();
     void end_step();
     void keep_proof(Cycle period);
+    bool skip_delay_loop();
     static void by_byte(std::vector<Touch>& touches, std::vector<std::pair<std::uint32_t, std::uint32_t>>& bytes);
     // From the proof's instruction boundary i, where the CPU is now: when the bytes the iteration reads from there
     // on are as then, the CPU is moved to the boundary of the instruction that sees `event` (the next event).

@@ -100,3 +100,16 @@ TEST(FastForward, ALoopFollowingAPinAnInterruptTogglesKeepsEveryToggleOnItsCycle
     // cycles apart and as with every cycle executed.
     expect_skipped_exactly(AVR_FW_ISR_PIN_POLL_ELF, 977, 1001, 8);
 }
+
+TEST(FastForward, ABusyDelayIsSkippedTurnByTurnToEachInterrupt) {
+    // delay_loop.c: a delay of 15,000 SBIW/BRNE turns at a time, an interrupt every 1233 cycles toggling the head
+    // pin, landing on either instruction: each toggle on the cycle it comes with every cycle executed (a skip one
+    // turn too far makes the interrupt late), and most of the delay skipped.
+    constexpr Cycle kEnd = 400'000;
+    const ChipRun on = run_chip(AVR_FW_DELAY_LOOP_ELF, true, kEnd, 977);
+    const ChipRun off = run_chip(AVR_FW_DELAY_LOOP_ELF, false, kEnd, 977);
+    ASSERT_GT(on.head_edges.size(), 300U);
+    EXPECT_EQ(on.head_edges, off.head_edges);
+    EXPECT_GT(on.stats.skipped_cycles, static_cast<std::uint64_t>(kEnd / 2));
+    EXPECT_LE(on.max_overshoot, 7);
+}

@@ -36,7 +36,7 @@ echo "| run | simulated [s] | CPU [s] | wall [s] | x real time (CPU) |"
 echo "|---|---|---|---|---|"
 row "seed 003 firmware, atmega square 20 mm" scenarios/atmega/square_20mm.toml
 row "grbl-protocol test firmware, grbl square 20 mm" tests/data/grbl/square_20mm.toml \
-    --set "avr.firmware=$BUILD/models/avr/firmware/tests/grbl_protocol.elf"
+    --set "avr.firmware=$(realpath "$BUILD")/models/avr/firmware/tests/grbl_protocol.elf"
 if [[ -n "${GRBL_SRC:-}" ]]; then
     row "real grbl 1.1h, grbl square 20 mm" tests/data/grbl/square_20mm.toml --set "avr.firmware=$GRBL_SRC/grbl.hex"
     printf 'G21 G90\nG1 X10 F600\n' > "$OUT/x10.nc"

@@ -456,9 +456,10 @@ std::optional<Cycle> AvrChip::process_events(Cycle c) {
     return next_event();
 }
 
-// Called wherever a timer flag or its enable bit may have changed: after the scheduler's events, and after every
-// I/O write (reschedule).
+// Called wherever a timer flag or its enable bit may have changed: after the scheduler's events (flags raised), and
+// after a write to TIFRn or TIMSKn (reschedule). Taking a vector clears an enabled flag: not quiet before or after.
 void AvrChip::update_quiet_flags() {
+    m_timer_flags_written = false;
     const Cycle c = now();
     for (auto& timer : m_timers) {
         std::uint8_t mask = 0;
@@ -471,7 +472,7 @@ void AvrChip::update_quiet_flags() {
 
 void AvrChip::reschedule() {
     if (m_in_scheduler) return;  // the scheduler returns its next time to simavr itself
-    update_quiet_flags();
+    if (m_timer_flags_written) update_quiet_flags();
     const auto next = next_event();
     if (!next) {
         avr_cycle_timer_cancel(m_avr, Bridge::scheduler, this);

@@ -201,6 +201,7 @@ private:
     std::optional<Cycle> m_shared_read_cycle;  // the ATmega16's last read of UBRRH/UCSRC
     avr_t* m_avr = nullptr;
     std::unique_ptr<PortHooks> m_port_hooks;
+    bool m_timer_flags_written = false;  // TIFRn or TIMSKn written since the quiet flags were last told the timers
     bool m_after_reti = false;  // a RETI ran: the interrupted loop may be a proven one once the next instruction ran
     std::unique_ptr<LoopSkipper> m_skipper;         // null: fast-forward off
     Cycle m_run_limit = 0;                          // of the run_until running

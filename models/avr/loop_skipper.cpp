@@ -254,10 +254,6 @@ void LoopSkipper::by_byte(std::vector<Touch>& touches, std::vector<std::pair<std
 }
 
 bool LoopSkipper::reuse_proof(std::uint32_t pc, std::uint16_t stack, const CpuState& cpu, bool anywhere) {
-    // A raised interrupt waiting for SEI would be taken where the proof took none; a cycle timer due now has an
-    // event still to process.
-    if (avr_has_pending_interrupts(m_avr) != 0) return false;
-    if (m_avr->cycle_timers.timer != nullptr && m_avr->cycle_timers.timer->when <= m_avr->cycle) return false;
     std::optional<Cycle> event;
     for (const Proof& p : m_proofs) {
         if (p.steps.empty()) continue;
@@ -269,7 +265,14 @@ bool LoopSkipper::reuse_proof(std::uint32_t pc, std::uint16_t stack, const CpuSt
             if (!anywhere && i != 0) continue;
             const TraceStep& s = p.steps[i];
             if (s.sp != stack || s.cpu != cpu) continue;
-            if (!event) event = m_quiet_until();
+            if (!event) {
+                // A raised interrupt waiting for SEI would be taken where the proof took none; a cycle timer due
+                // now has an event still to process.
+                if (avr_has_pending_interrupts(m_avr) != 0) return false;
+                const avr_cycle_timer_slot_t* due = m_avr->cycle_timers.timer;
+                if (due != nullptr && due->when <= m_avr->cycle) return false;
+                event = m_quiet_until();
+            }
             if (run_on_proof(p, i, *event)) {
                 ++m_stats.reused;
                 return true;

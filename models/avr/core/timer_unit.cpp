@@ -99,6 +99,11 @@ std::int64_t TimerUnit::ticks_until(Cycle c) const {
 // Whether the counter runs whole periods 0..TOP in which every tick that does something only raises quiet flags:
 // no compare output action, no OCR buffer to copy, no blocked match.
 bool TimerUnit::quiet_periods() const {
+    (void)next_event();
+    return m_quiet_periods;
+}
+
+bool TimerUnit::find_quiet_periods() const {
     if (m_quiet_flags == 0) return false;
     const TimerMode m = mode();
     const std::uint16_t t = top();
@@ -124,7 +129,9 @@ void TimerUnit::set_quiet_flags(Cycle c, std::uint8_t mask) {
 
 std::optional<Cycle> TimerUnit::next_event() const {
     if (!m_next_valid || m_next_epoch != m_prescaler.epoch()) {
-        const auto k = quiet_periods() ? std::nullopt : ticks_to_event();
+        // Whether the counter is below TOP changes only at a stepped tick or a write, which invalidate this.
+        m_quiet_periods = find_quiet_periods();
+        const auto k = m_quiet_periods ? std::nullopt : ticks_to_event();
         m_next = k ? tick_cycle(*k) : std::nullopt;
         m_next_valid = true;
         m_next_epoch = m_prescaler.epoch();

@@ -107,7 +107,8 @@ private:
     [[nodiscard]] std::optional<std::int64_t> distance_to(std::uint16_t x) const;
     [[nodiscard]] std::optional<std::int64_t> ticks_to_event() const;
     [[nodiscard]] bool quiet(TimerFlag f) const { return ((m_quiet_flags >> static_cast<unsigned>(f)) & 1U) != 0; }
-    [[nodiscard]] bool quiet_periods() const;
+    [[nodiscard]] bool quiet_periods() const;  // cached with the next event
+    [[nodiscard]] bool find_quiet_periods() const;
     [[nodiscard]] std::optional<Cycle> tick_cycle(std::int64_t k) const;
     [[nodiscard]] std::int64_t ticks_until(Cycle c) const;
     void advance_quietly(std::int64_t ticks);
@@ -136,6 +137,7 @@ private:
     mutable bool m_next_valid = false;
     mutable std::uint64_t m_next_epoch = 0;
     mutable std::optional<Cycle> m_next;
+    mutable bool m_quiet_periods = false;
 };
 
 }  // namespace cnc::avr

@@ -345,19 +345,32 @@ std::string first_difference(const std::vector<T>& got, const std::vector<T>& wa
     return "";
 }
 
+// A unit and the reference for one seed of the random tests: Timer0, 1 or 2 by the seed.
+struct RandomBench {
+    explicit RandomBench(unsigned seed)
+        : rng(seed), spec(*kSpecs[seed % 3]), unit(spec, prescaler, rec), ref(spec) {
+        rec.unit = &unit;
+    }
+    int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
+    static constexpr const TimerSpec* kSpecs[3] = {&kTimer0, &kTimer1, &kTimer2};
+    std::mt19937 rng;
+    const TimerSpec& spec;
+    Prescaler prescaler;
+    Recorder rec;
+    TimerUnit unit;
+    ReferenceTimer ref;
+};
+
 }  // namespace
 
 TEST(AvrTimerUnit, MatchesATickByTickReferenceUnderRandomRegisterWrites) {
-    const TimerSpec* specs[3] = {&kTimer0, &kTimer1, &kTimer2};
     for (unsigned seed = 1; seed <= 600; ++seed) {
-        std::mt19937 rng(seed);
-        const TimerSpec& spec = *specs[seed % 3];
-        Prescaler p;
-        Recorder rec;
-        TimerUnit unit(spec, p, rec);
-        rec.unit = &unit;
-        ReferenceTimer ref(spec);
-        const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+        RandomBench bench(seed);
+        const TimerSpec& spec = bench.spec;
+        TimerUnit& unit = bench.unit;
+        Recorder& rec = bench.rec;
+        ReferenceTimer& ref = bench.ref;
+        const auto pick = [&](int lo, int hi) { return bench.pick(lo, hi); };
         // (cycle, register, value): 0 OCRA, 1 OCRB, 2 TCNT, 3 TCCRA, 4 TCCRB, 5 ICR, 6 read TCNT. 16-bit values
         // stay below 0x400 so that 30 000 cycles see many periods.
         std::vector<std::tuple<Cycle, int, int>> writes;
@@ -426,18 +439,15 @@ TEST(AvrTimerUnit, MatchesATickByTickReferenceUnderRandomRegisterWrites) {
 // allowed), read the reference's TCNT and drive its pins, while it runs the quiet periods in closed form (grbl leaves Timer1 in CTC with OCR1A = 0 at /1 when idle: a match at
 // every clock).
 TEST(AvrTimerUnit, QuietFlagsChangeNothingButWhatIsReported) {
-    const TimerSpec* specs[3] = {&kTimer0, &kTimer1, &kTimer2};
     std::uint64_t stepped = 0;
     std::uint64_t flag_ticks = 0;
     for (unsigned seed = 1; seed <= 300; ++seed) {
-        std::mt19937 rng(seed);
-        const TimerSpec& spec = *specs[seed % 3];
-        Prescaler p;
-        Recorder rec;
-        TimerUnit unit(spec, p, rec);
-        rec.unit = &unit;
-        ReferenceTimer ref(spec);
-        const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+        RandomBench bench(seed);
+        const TimerSpec& spec = bench.spec;
+        TimerUnit& unit = bench.unit;
+        Recorder& rec = bench.rec;
+        ReferenceTimer& ref = bench.ref;
+        const auto pick = [&](int lo, int hi) { return bench.pick(lo, hi); };
         std::array<bool, 4> set{};      // by TimerFlag
         std::array<bool, 4> enabled{};  // by TimerFlag
         const auto mask = [&] {

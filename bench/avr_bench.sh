@@ -2,14 +2,13 @@
 # Speed of the AVR core: seed 003's firmware on the atmega square, and the grbl architecture's square with the
 # grbl-protocol test firmware; with GRBL_SRC naming a built grbl 1.1h tree (its grbl.hex), real grbl on the square and
 # on `G1 X10 F600` (start-up included). Targets: 20x, 10x, 10x, 10x real time. Usage: bench/avr_bench.sh [build dir]
-# [repetitions]. Prints Markdown rows: the machine time simulated, the lowest and highest user + system CPU time and
-# wall time of the whole cncsim process, and the simulated time over the CPU time.
+# [repetitions]. Prints Markdown rows: the machine time simulated (the report's job time), the lowest and highest user
+# + system CPU time and wall time of the whole cncsim process (GNU time), and the simulated time over the CPU time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
 REPS=${2:-5}
 CNCSIM="$BUILD/sim/cncsim"
-source bench/timing.sh
 OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT
 
@@ -18,9 +17,10 @@ row() {  # label scenario [--set ...]
     shift
     local walls=() cpus=()
     for _ in $(seq "$REPS"); do
-        read -r w c < <(wall_cpu_ns "$@" --report "$OUT/r.json")
-        walls+=("$w")
-        cpus+=("$c")
+        read -r w u s < <({ /usr/bin/time -f "%e %U %S" "$CNCSIM" run "$@" --progress off --report "$OUT/r.json" \
+            > /dev/null; } 2>&1 | tail -1)
+        walls+=("$(awk -v w="$w" 'BEGIN { printf "%d", w * 1e9 }')")
+        cpus+=("$(awk -v u="$u" -v s="$s" 'BEGIN { printf "%d", (u + s) * 1e9 }')")
     done
     local sim
     sim=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['metrics']['job']['job_time_s'])" "$OUT/r.json")

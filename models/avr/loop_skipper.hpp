@@ -14,13 +14,16 @@
 // change nothing (a free-running timer setting a flag that is already set, its interrupt off) pass during a skip and
 // are processed, at their own cycles, right after it.
 //
-// A proof is kept and used again: while the watched loop's iteration runs, the data bytes each instruction reads and
-// writes are noted (core/data_access.hpp). An iteration proven idle depends on the registers, SREG, SP, the
-// interrupt state and the bytes it reads before writing them, and changes only the bytes it writes. When the loop
-// comes back to its target after an interrupt changed bytes it does not read (grbl's stepper interrupt: its counters
-// and positions, while the main loop polls its flags), equal registers and equal read bytes make the iteration the
-// proven one: it is skipped at once, and the bytes it writes take the values it writes. An iteration that reads an
-// I/O register with a handler or runs an instruction acting beyond the data space (SLEEP, WDR, SPM) is not kept.
+// A proof is kept and used again, instruction by instruction: while the watched loop's iteration runs, the CPU
+// before each instruction and the data bytes it reads and writes, with their values, are noted (core/data_access.hpp).
+// From any of its instruction boundaries, the iteration depends on the registers, SREG, SP, the interrupt state and
+// the bytes it reads before writing them, and changes only the bytes it writes. Where the CPU stands at such a
+// boundary after an interrupt changed bytes it does not read (grbl's stepper interrupt: its counters and positions,
+// while the main loop polls its flags), with no interrupt pending, equal registers and equal read bytes make the
+// iteration the proven one: the CPU is moved on to the instruction that sees the next event, and the bytes written on
+// the way take their last written values. An iteration that reads an I/O register with a read handler or runs an
+// instruction acting beyond the data space (SLEEP, WDR, SPM, BREAK) is not kept. avr-libc's busy delay loop (SBIW,
+// BRNE: never idle, its counter changes) is skipped turn by turn.
 #pragma once
 #include <array>
 #include <cstdint>

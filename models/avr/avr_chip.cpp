@@ -272,7 +272,7 @@ void AvrChip::step() {
     if (avr->state == cpu_Running) {
         if (m_skipper) {
             if (m_skipper->recording()) m_skipper->before_instruction();
-            reti = pc + 1 < avr->flashend && (avr->flash[pc] | (avr->flash[pc + 1] << 8)) == kReti;
+            reti = pc + 1 < avr->flashend && flash_word(avr->flash, pc) == kReti;
         }
         new_pc = avr_run_one(avr);
     }

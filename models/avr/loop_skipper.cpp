@@ -40,8 +40,7 @@ LoopSkipper::LoopSkipper(avr_t* avr, const std::vector<std::uint16_t>& pins,
     : m_avr(avr),
       m_quiet_until(std::move(quiet_until)),
       m_io(MAX_IOs),
-      m_snapshot(static_cast<std::size_t>(avr->ramend) + 1),
-      m_touched(m_snapshot.size()) {
+      m_snapshot(static_cast<std::size_t>(avr->ramend) + 1) {
     for (std::size_t i = 0; i < m_io.size(); ++i) {
         auto& slot = avr->io[i];
         Io& io = m_io[i];
@@ -125,14 +124,11 @@ void LoopSkipper::backward_jump() {
 bool LoopSkipper::skip_delay_loop() {
     const std::uint32_t pc = m_avr->pc;
     if (pc + 3 >= m_avr->flashend) return false;
-    const std::uint8_t* flash = m_avr->flash;
-    const auto sbiw = static_cast<std::uint16_t>(flash[pc] | (flash[pc + 1] << 8));
-    const auto brne = static_cast<std::uint16_t>(flash[pc + 2] | (flash[pc + 3] << 8));
+    const std::uint16_t sbiw = flash_word(m_avr->flash, pc);
     constexpr std::uint16_t kSbiwOne = 0x9701;   // SBIW Rd, 1: 1001 0111 KKdd KKKK, K = 1
     constexpr std::uint16_t kBrneBack = 0xF7F1;  // BRNE .-4: back to the SBIW
-    if ((sbiw & 0xFFCF) != kSbiwOne || brne != kBrneBack) return false;
-    if (avr_has_pending_interrupts(m_avr) != 0) return false;
-    if (m_avr->cycle_timers.timer != nullptr && m_avr->cycle_timers.timer->when <= m_avr->cycle) return false;
+    if ((sbiw & 0xFFCF) != kSbiwOne || flash_word(m_avr->flash, pc + 2) != kBrneBack || !nothing_pending())
+        return false;
     const int low = 24 + 2 * ((sbiw >> 4) & 3);
     const std::uint32_t n = m_avr->data[low] | (m_avr->data[low + 1] << 8);
     const std::uint32_t turns_left = n == 0 ? 0x10000 : n;  // SBIW from 0 wraps to 0xFFFF
@@ -160,6 +156,11 @@ bool LoopSkipper::skip_delay_loop() {
     return true;
 }
 
+bool LoopSkipper::nothing_pending() const {
+    const avr_cycle_timer_slot_t* due = m_avr->cycle_timers.timer;
+    return avr_has_pending_interrupts(m_avr) == 0 && (due == nullptr || due->when > m_avr->cycle);
+}
+
 bool LoopSkipper::resume_on_proof() {
     return reuse_proof(m_avr->pc, sp(), cpu_state(), true);
 }
@@ -168,7 +169,6 @@ void LoopSkipper::start_recording() {
     m_recording = true;
     m_footprint_known = true;
     m_recording_start = static_cast<Cycle>(m_avr->cycle);
-    ++m_stamp;
     m_trace.steps.clear();
     m_trace.reads.clear();
     m_trace.writes.clear();
@@ -188,21 +188,18 @@ void LoopSkipper::before_instruction() {
         m_footprint_known = false;
         return;
     }
-    const std::uint8_t* flash = m_avr->flash;
-    const auto word = [flash](std::uint32_t a) { return static_cast<std::uint16_t>(flash[a] | (flash[a + 1] << 8)); };
-    const DataAccesses accesses = data_accesses(word(pc), word(pc + 2), m_avr->data);
+    const DataAccesses accesses = data_accesses(flash_word(m_avr->flash, pc), flash_word(m_avr->flash, pc + 2), m_avr->data);
     if (accesses.unmodelled) m_footprint_known = false;
     TraceStep step{pc, static_cast<Cycle>(m_avr->cycle) - m_recording_start, cpu_state(), sp(), 0, 0};
     for (int i = 0; i < accesses.count; ++i) {
         const DataAccess& a = accesses.at[static_cast<std::size_t>(i)];
-        if (a.addr >= m_touched.size()) {
+        if (a.addr >= m_snapshot.size()) {
             m_footprint_known = false;
             continue;
         }
         const bool io = a.addr >= 32 && a.addr < 32 + MAX_IOs;
         // A register with a read handler answers from outside the data space (PINx, UCSR0A).
         if (a.read && io && m_io[AVR_DATA_TO_IO(a.addr)].read != nullptr) m_footprint_known = false;
-        m_touched[a.addr] = m_stamp;
         if (a.read) m_trace.reads.emplace_back(a.addr, m_avr->data[a.addr]);
         if (a.write) m_trace.writes.emplace_back(a.addr, 0);
     }
@@ -217,26 +214,25 @@ void LoopSkipper::keep_proof(Cycle period) {
     m_next_proof = (m_next_proof + 1) % m_proofs.size();
     p.period = period;
     p.steps = m_trace.steps;
-    p.reads = m_trace.reads;
-    p.writes = m_trace.writes;
     p.pcs.clear();
     p.touches.clear();
-    p.bytes.clear();
+    p.stores.clear();
     // The registers, SP and SREG are the CPU's, compared apart (instructions move them without a write).
     const auto cpu_byte = [](std::uint16_t a) { return a < 32 || (a >= R_SPL && a <= R_SREG); };
     for (std::size_t k = 0; k < p.steps.size(); ++k) {
-        p.pcs.emplace_back(p.steps[k].pc, static_cast<std::uint32_t>(k));
         const auto k32 = static_cast<std::uint32_t>(k);
-        for (std::size_t r = k == 0 ? 0 : p.steps[k - 1].reads_end; r < p.steps[k].reads_end; ++r)
-            if (!cpu_byte(p.reads[r].first)) p.touches.push_back({p.reads[r].first, k32, true, p.reads[r].second});
-        for (std::size_t w = k == 0 ? 0 : p.steps[k - 1].writes_end; w < p.steps[k].writes_end; ++w)
-            if (!cpu_byte(p.writes[w].first)) p.touches.push_back({p.writes[w].first, k32, false, 0});
+        p.pcs.emplace_back(p.steps[k].pc, k32);
+        for (std::size_t r = k == 0 ? 0 : p.steps[k - 1].reads_end; r < p.steps[k].reads_end; ++r) {
+            const auto [a, v] = m_trace.reads[r];
+            if (!cpu_byte(a)) p.touches.push_back({a, k32, true, v});
+        }
+        for (std::size_t w = k == 0 ? 0 : p.steps[k - 1].writes_end; w < p.steps[k].writes_end; ++w) {
+            const auto [a, v] = m_trace.writes[w];
+            if (!cpu_byte(a)) p.touches.push_back({a, k32, false, v});
+            p.stores.push_back({a, k32, false, v});
+        }
     }
     std::sort(p.pcs.begin(), p.pcs.end());
-    p.stores.clear();
-    for (std::size_t k = 0; k < p.steps.size(); ++k)
-        for (std::size_t w = k == 0 ? 0 : p.steps[k - 1].writes_end; w < p.steps[k].writes_end; ++w)
-            p.stores.push_back({p.writes[w].first, static_cast<std::uint32_t>(k), false, p.writes[w].second});
     by_byte(p.touches, p.bytes);
     by_byte(p.stores, p.stored_bytes);
 }
@@ -266,11 +262,7 @@ bool LoopSkipper::reuse_proof(std::uint32_t pc, std::uint16_t stack, const CpuSt
             const TraceStep& s = p.steps[i];
             if (s.sp != stack || s.cpu != cpu) continue;
             if (!event) {
-                // A raised interrupt waiting for SEI would be taken where the proof took none; a cycle timer due
-                // now has an event still to process.
-                if (avr_has_pending_interrupts(m_avr) != 0) return false;
-                const avr_cycle_timer_slot_t* due = m_avr->cycle_timers.timer;
-                if (due != nullptr && due->when <= m_avr->cycle) return false;
+                if (!nothing_pending()) return false;
                 event = m_quiet_until();
             }
             if (run_on_proof(p, i, *event)) {

@@ -38,6 +38,11 @@ struct avr_t;
 
 namespace cnc::avr {
 
+// The flash word at byte address `a` (little-endian: an opcode, or a 32-bit instruction's second word).
+[[nodiscard]] inline std::uint16_t flash_word(const std::uint8_t* flash, std::uint32_t a) {
+    return static_cast<std::uint16_t>(flash[a] | (flash[a + 1] << 8));
+}
+
 struct FastForwardStats {
     std::uint64_t skips = 0;           // loops fast-forwarded
     std::uint64_t skipped_cycles = 0;  // cycles not executed
@@ -91,7 +96,7 @@ private:
     struct Io;  // the handlers the watch replaced (loop_skipper.cpp)
 
     // One instruction of a proving iteration: where it starts (cycles from the iteration's start), the CPU before
-    // it, and where its reads and writes end in the proof's lists (they start where the previous step's end).
+    // it, and where its reads and writes end in the trace's lists (they start where the previous step's end).
     struct TraceStep {
         std::uint32_t pc = 0;
         Cycle offset = 0;
@@ -100,24 +105,28 @@ private:
         std::uint32_t reads_end = 0;
         std::uint32_t writes_end = 0;
     };
-    // An iteration proven idle, instruction by instruction: any of its instruction boundaries, met again with the
-    // same CPU and the same bytes it reads before writing them from there on, runs it again.
-    // A data byte's first access in a step (a read comes before the step's write), by byte and step.
+    // The proving iteration as it runs.
+    struct Trace {
+        std::vector<TraceStep> steps;
+        std::vector<std::pair<std::uint16_t, std::uint8_t>> reads;   // with the value read
+        std::vector<std::pair<std::uint16_t, std::uint8_t>> writes;  // with the value written
+    };
+    // A data byte's access in a step (a read comes before the step's write), by byte and step.
     struct Touch {
         std::uint16_t addr = 0;
         std::uint32_t step = 0;
         bool read = false;
-        std::uint8_t value = 0;  // read
+        std::uint8_t value = 0;  // read, or written
     };
+    // An iteration proven idle, instruction by instruction: any of its instruction boundaries, met again with the
+    // same CPU and the same bytes it reads before writing them from there on, runs it again.
     struct Proof {
         Cycle period = 0;
         std::vector<TraceStep> steps;
         std::vector<std::pair<std::uint32_t, std::uint32_t>> pcs;    // (pc, step), sorted: searched after RETI
-        std::vector<std::pair<std::uint16_t, std::uint8_t>> reads;   // with the value read
-        std::vector<std::pair<std::uint16_t, std::uint8_t>> writes;  // with the value written
         std::vector<Touch> touches;                                  // but the registers', SP's and SREG's
         std::vector<std::pair<std::uint32_t, std::uint32_t>> bytes;  // each byte's touches: [first, end)
-        std::vector<Touch> stores;                                   // each write (value: written), by byte and step
+        std::vector<Touch> stores;                                   // each write, by byte and step
         std::vector<std::pair<std::uint32_t, std::uint32_t>> stored_bytes;
     };
 
@@ -125,6 +134,9 @@ private:
     [[nodiscard]] std::uint16_t sp() const;
     // Iterations of `period` skipped before the next event the CPU could see (0: none).
     Cycle skip(Cycle period);
+    // No interrupt waiting (for SEI: it would be taken where no skipped turn took one) and no cycle timer due (an
+    // event still to process): the CPU may be moved on from here.
+    [[nodiscard]] bool nothing_pending() const;
     void start_recording();
     void end_step();
     void keep_proof(Cycle period);
@@ -144,14 +156,11 @@ private:
     // proves the iteration idle.
     Visit m_loop;
     std::vector<std::uint8_t> m_snapshot;
-    // The proving iteration: its steps so far, and per byte the stamp of the recording that first touched it (a
-    // stamp per recording avoids clearing the array).
+    // The proving iteration: whether one runs, whether every byte it touched is known, its steps so far.
     bool m_recording = false;
     bool m_footprint_known = false;
     Cycle m_recording_start = 0;
-    std::uint32_t m_stamp = 0;
-    std::vector<std::uint32_t> m_touched;
-    Proof m_trace;
+    Trace m_trace;
     std::array<Proof, 4> m_proofs{};
     std::size_t m_next_proof = 0;
     FastForwardStats m_stats;

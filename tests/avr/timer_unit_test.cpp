@@ -352,6 +352,21 @@ struct RandomBench {
         rec.unit = &unit;
     }
     int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
+    // A register written to both at cycle c.
+    void write_ocr(Cycle c, Channel ch, int v) {
+        unit.write_ocr(c, ch, static_cast<std::uint16_t>(v));
+        ref.write_ocr(ch == Channel::A ? 0 : 1, v);
+    }
+    void write_tccra(Cycle c, std::uint8_t v) {
+        unit.write_tccra(c, v);
+        ref.tccra = v;
+        ref.after_mode_change(c);
+    }
+    void write_tccrb(Cycle c, std::uint8_t v) {
+        unit.write_tccrb(c, v);
+        ref.tccrb = v;
+        ref.after_mode_change(c);
+    }
     static constexpr const TimerSpec* kSpecs[3] = {&kTimer0, &kTimer1, &kTimer2};
     std::mt19937 rng;
     const TimerSpec& spec;
@@ -389,12 +404,10 @@ TEST(AvrTimerUnit, MatchesATickByTickReferenceUnderRandomRegisterWrites) {
                 const auto u16 = static_cast<std::uint16_t>(v);
                 switch (reg) {
                     case 0:
-                        unit.write_ocr(c, Channel::A, u16);
-                        ref.write_ocr(0, v);
+                        bench.write_ocr(c, Channel::A, v);
                         break;
                     case 1:
-                        unit.write_ocr(c, Channel::B, u16);
-                        ref.write_ocr(1, v);
+                        bench.write_ocr(c, Channel::B, v);
                         break;
                     case 2:
                         unit.write_tcnt(c, u16);
@@ -402,14 +415,10 @@ TEST(AvrTimerUnit, MatchesATickByTickReferenceUnderRandomRegisterWrites) {
                         ref.block = true;
                         break;
                     case 3:
-                        unit.write_tccra(c, static_cast<std::uint8_t>(v));
-                        ref.tccra = static_cast<std::uint8_t>(v);
-                        ref.after_mode_change(c);
+                        bench.write_tccra(c, static_cast<std::uint8_t>(v));
                         break;
                     case 4:
-                        unit.write_tccrb(c, static_cast<std::uint8_t>(v));
-                        ref.tccrb = static_cast<std::uint8_t>(v);
-                        ref.after_mode_change(c);
+                        bench.write_tccrb(c, static_cast<std::uint8_t>(v));
                         break;
                     case 5:
                         if (spec.sixteen_bit) {
@@ -476,13 +485,10 @@ TEST(AvrTimerUnit, QuietFlagsChangeNothingButWhatIsReported) {
             if (pick(0, 400) == 0) {
                 const int op = pick(0, 4);
                 const int v = spec.sixteen_bit ? pick(0, 0x3FF) : pick(0, 0xFF);
-                const auto u16 = static_cast<std::uint16_t>(v);
                 if (op == 0) {
-                    unit.write_ocr(c, Channel::A, u16);
-                    ref.write_ocr(0, v);
+                    bench.write_ocr(c, Channel::A, v);
                 } else if (op == 1) {
-                    unit.write_ocr(c, Channel::B, u16);
-                    ref.write_ocr(1, v);
+                    bench.write_ocr(c, Channel::B, v);
                 } else if (op == 2) {
                     const int wgm = pick(0, 3);  // Normal, CTC, fast PWM (8-bit), fast PWM TOP = OCRA or ICR1
                     const std::uint8_t com = pick(0, 3) == 0 ? static_cast<std::uint8_t>(pick(0, 15) << 4) : 0;
@@ -490,12 +496,8 @@ TEST(AvrTimerUnit, QuietFlagsChangeNothingButWhatIsReported) {
                     std::uint8_t b = static_cast<std::uint8_t>(pick(1, 2));  // clock /1 or /8
                     if (wgm == 1) b |= 0x08;                                 // WGMn2 / WGM12: CTC
                     if (wgm == 3) b |= spec.sixteen_bit ? 0x18 : 0x08;
-                    unit.write_tccra(c, a);
-                    ref.tccra = a;
-                    ref.after_mode_change(c);
-                    unit.write_tccrb(c, b);
-                    ref.tccrb = b;
-                    ref.after_mode_change(c);
+                    bench.write_tccra(c, a);
+                    bench.write_tccrb(c, b);
                 } else if (op == 3) {
                     set[static_cast<std::size_t>(pick(0, 3))] = false;  // TIFRn written with a one
                 } else {

@@ -87,7 +87,6 @@ public:
     // stepped or reported: the counter is advanced in closed form and next_event() has none. A change takes effect
     // at cycle c (the unit first advances to c under the old mask if it was running such quiet periods).
     void set_quiet_flags(Cycle c, std::uint8_t mask);
-    [[nodiscard]] std::uint8_t quiet_flags() const { return m_quiet_flags; }
     // Cycle of the next tick that does something; none while the clock is stopped. Depends on the shared
     // prescaler: advance the unit to c before the prescaler is restarted at c, and ask again afterwards.
     [[nodiscard]] std::optional<Cycle> next_event() const;

@@ -152,7 +152,7 @@ private:
 
     void install_hooks();
     [[nodiscard]] std::vector<std::uint16_t> pin_registers() const;
-    void step();
+    void run_instructions(Cycle limit);
     [[nodiscard]] const avr_cycle_timer_slot_t* other_cycle_timer() const;
     // Whether a cycle timer other than the scheduler's and the run_until boundary's is due now.
     [[nodiscard]] bool other_timer_due() const;
@@ -161,7 +161,6 @@ private:
     void disturb() {
         if (m_skipper) m_skipper->disturb();
     }
-    void disturb_dbg(int t);
     void disconnect_external_interrupts();
     void reschedule();
     void update_quiet_flags();
@@ -173,6 +172,18 @@ private:
     void sync_level_vector(int vector_number, bool flag, Cycle c);
     void port_write(std::uint16_t addr, std::uint8_t v);
     [[nodiscard]] std::uint8_t port_read(std::uint16_t pin_addr);
+    // A pin with its port's registers and the compare output that may drive it, found once: the levels of every
+    // line are asked at each port write and compare output change.
+    struct PinSource {
+        std::size_t port = 0;  // McuMap::ports index
+        std::uint16_t ddr = 0;
+        std::uint16_t port_reg = 0;
+        int bit = 0;
+        const TimerUnit* oc_timer = nullptr;  // the compare output on this pin, if the MCU has one
+        Channel oc_channel = Channel::A;
+    };
+    [[nodiscard]] PinSource pin_source(const Pin& p) const;
+    [[nodiscard]] bool level_of(const PinSource& s) const;
     void update_lines(Cycle c);
     void record(Cycle c, int line, bool level);
     [[nodiscard]] int timer_vector(int timer, TimerFlag flag) const;
@@ -193,6 +204,7 @@ private:
     const std::int64_t m_f_cpu_hz;
     const ClockGrid m_clock;
     std::array<Pin, kPinSignals.size()> m_line_pins{};  // kPinSignals order
+    std::array<PinSource, kPinSignals.size()> m_line_sources{};
     Prescaler m_prescaler01;                            // Timer0 and Timer1 (§17)
     Prescaler m_prescaler2;                             // Timer2 (§18.10)
     std::array<std::unique_ptr<TimerUnit>, 3> m_timers;
@@ -201,7 +213,7 @@ private:
     std::optional<Cycle> m_shared_read_cycle;  // the ATmega16's last read of UBRRH/UCSRC
     avr_t* m_avr = nullptr;
     std::unique_ptr<PortHooks> m_port_hooks;
-    bool m_timer_flags_written = false;  // TIFRn or TIMSKn written since the quiet flags were last told the timers
+    bool m_quiet_flags_stale = false;  // a timer flag raised, TIFRn or TIMSKn written since the timers were told
     bool m_after_reti = false;  // a RETI ran: the interrupted loop may be a proven one once the next instruction ran
     std::unique_ptr<LoopSkipper> m_skipper;         // null: fast-forward off
     Cycle m_run_limit = 0;                          // of the run_until running
@@ -210,6 +222,7 @@ private:
     std::optional<Cycle> m_stop_cycle;
     std::optional<Cycle> m_wake_flag_cycle;  // the flag that woke the CPU from sleep, until its vector runs
     bool m_in_scheduler = false;
+    std::optional<Cycle> m_scheduled;  // the cycle the scheduler's simavr cycle timer is registered at
     std::array<bool, kLineCount> m_initial{};
     std::array<bool, kLineCount> m_level{};
     std::vector<LineEvent> m_events;

@@ -190,7 +190,7 @@ std::uint8_t AvrChip::io_read(std::uint16_t addr) {
 }
 
 void AvrChip::write_timer_flags(std::uint16_t addr, std::uint8_t v) {
-    m_timer_flags_written = true;
+    m_quiet_flags_stale = true;
     // A flag is cleared by writing a one to it; SBI/CBI act on their one bit only.
     bool set = false;
     if (const auto bit = single_bit_instruction(addr, &set)) v = set ? static_cast<std::uint8_t>(1U << *bit) : 0;
@@ -203,7 +203,7 @@ void AvrChip::write_timer_flags(std::uint16_t addr, std::uint8_t v) {
 }
 
 void AvrChip::write_timsk(std::uint16_t addr, std::uint8_t v) {
-    m_timer_flags_written = true;
+    m_quiet_flags_stale = true;
     m_avr->data[addr] = v;
     // simavr queues an interrupt only when its flag is raised while enabled: enabling one whose flag is already
     // set must fire it now, as on silicon.

@@ -40,7 +40,10 @@ LoopSkipper::LoopSkipper(avr_t* avr, const std::vector<std::uint16_t>& pins,
     : m_avr(avr),
       m_quiet_until(std::move(quiet_until)),
       m_io(MAX_IOs),
-      m_snapshot(static_cast<std::size_t>(avr->ramend) + 1) {
+      m_snapshot(static_cast<std::size_t>(avr->ramend) + 1),
+      m_read_column(m_snapshot.size(), -1),
+      m_written_column(m_snapshot.size(), -1),
+      m_proof_pcs((static_cast<std::size_t>(avr->flashend) >> 1) + 1) {
     for (std::size_t i = 0; i < m_io.size(); ++i) {
         auto& slot = avr->io[i];
         Io& io = m_io[i];
@@ -89,8 +92,7 @@ void LoopSkipper::backward_jump() {
             const Cycle period = now - m_loop.cycle;
             const bool proven = m_recording && m_footprint_known;
             m_recording = false;  // the snapshot stands: the next iterations prove nothing new
-            if (proven) {
-                keep_proof(period);
+            if (proven && keep_proof(period)) {
                 const Proof& kept = m_proofs[(m_next_proof + m_proofs.size() - 1) % m_proofs.size()];
                 if (run_on_proof(kept, 0, m_quiet_until())) return;
             } else {
@@ -208,68 +210,123 @@ void LoopSkipper::before_instruction() {
     m_trace.steps.push_back(step);
 }
 
-void LoopSkipper::keep_proof(Cycle period) {
+bool LoopSkipper::keep_proof(Cycle period) {
     end_step();
-    Proof& p = m_proofs[m_next_proof];
-    m_next_proof = (m_next_proof + 1) % m_proofs.size();
-    p.period = period;
-    p.steps = m_trace.steps;
-    p.pcs.clear();
-    p.touches.clear();
-    p.stores.clear();
-    // The registers, SP and SREG are the CPU's, compared apart (instructions move them without a write).
+    const std::vector<TraceStep>& steps = m_trace.steps;
+    const std::size_t n = steps.size();
     const auto cpu_byte = [](std::uint16_t a) { return a < 32 || (a >= R_SPL && a <= R_SREG); };
-    for (std::size_t k = 0; k < p.steps.size(); ++k) {
-        const auto k32 = static_cast<std::uint32_t>(k);
-        p.pcs.emplace_back(p.steps[k].pc, k32);
-        for (std::size_t r = k == 0 ? 0 : p.steps[k - 1].reads_end; r < p.steps[k].reads_end; ++r) {
-            const auto [a, v] = m_trace.reads[r];
-            if (!cpu_byte(a)) p.touches.push_back({a, k32, true, v});
+    std::vector<std::int32_t>& read_col = m_read_column;
+    std::vector<std::int32_t>& written_col = m_written_column;
+    Proof p;
+    for (const auto& [a, v] : m_trace.writes) {
+        if (written_col[a] >= 0) continue;
+        written_col[a] = static_cast<std::int32_t>(p.written.size());
+        p.written.push_back(a);
+    }
+    for (const auto& [a, v] : m_trace.reads) {
+        if (cpu_byte(a) || read_col[a] >= 0) continue;
+        if (written_col[a] < 0) {
+            read_col[a] = 0;
+            p.read_only.emplace_back(a, v);  // unwritten: every read saw the same value
+            continue;
         }
-        for (std::size_t w = k == 0 ? 0 : p.steps[k - 1].writes_end; w < p.steps[k].writes_end; ++w) {
-            const auto [a, v] = m_trace.writes[w];
-            if (!cpu_byte(a)) p.touches.push_back({a, k32, false, v});
-            p.stores.push_back({a, k32, false, v});
+        read_col[a] = static_cast<std::int32_t>(p.rewritten.size());
+        p.rewritten.push_back(a);
+    }
+    const std::size_t r = p.rewritten.size();
+    const std::size_t w = p.written.size();
+    const auto clear_columns = [&] {
+        for (const auto& [a, v] : p.read_only) read_col[a] = -1;
+        for (const std::uint16_t a : p.rewritten) read_col[a] = -1;
+        for (const std::uint16_t a : p.written) written_col[a] = -1;
+    };
+    constexpr std::size_t kMaxCells = std::size_t{1} << 20;
+    if (n * (r + w) > kMaxCells) {
+        clear_columns();
+        return false;
+    }
+    const auto reads_of = [&](std::size_t k) {
+        return std::make_pair(k == 0 ? 0 : steps[k - 1].reads_end, steps[k].reads_end);
+    };
+    const auto writes_of = [&](std::size_t k) {
+        return std::make_pair(k == 0 ? 0 : steps[k - 1].writes_end, steps[k].writes_end);
+    };
+    // First reads: two laps backwards; a step's reads come before its writes.
+    std::vector<std::int16_t> next(r, -1);
+    p.first_read.resize(n * r);
+    for (std::size_t lap = 0; lap < 2; ++lap) {
+        for (std::size_t k = n; k-- > 0;) {
+            for (auto [x, e] = writes_of(k); x < e; ++x) {
+                const std::uint16_t a = m_trace.writes[x].first;
+                if (!cpu_byte(a) && read_col[a] >= 0) next[static_cast<std::size_t>(read_col[a])] = -1;
+            }
+            for (auto [x, e] = reads_of(k); x < e; ++x) {
+                const auto [a, v] = m_trace.reads[x];
+                if (!cpu_byte(a) && written_col[a] >= 0) next[static_cast<std::size_t>(read_col[a])] = v;
+            }
+            if (lap == 1)
+                std::copy(next.begin(), next.end(), p.first_read.begin() + static_cast<std::ptrdiff_t>(k * r));
         }
     }
+    // Last writes: two laps forwards.
+    std::vector<std::uint8_t> value(w);
+    std::vector<std::uint32_t> step(w);
+    p.last_value.resize(n * w);
+    p.last_step.resize(n * w);
+    for (std::size_t lap = 0; lap < 2; ++lap) {
+        for (std::size_t k = 0; k < n; ++k) {
+            if (lap == 1) {
+                std::copy(value.begin(), value.end(), p.last_value.begin() + static_cast<std::ptrdiff_t>(k * w));
+                std::copy(step.begin(), step.end(), p.last_step.begin() + static_cast<std::ptrdiff_t>(k * w));
+            }
+            for (auto [x, e] = writes_of(k); x < e; ++x) {
+                const auto [a, v] = m_trace.writes[x];
+                const auto col = static_cast<std::size_t>(written_col[a]);
+                value[col] = v;
+                step[col] = static_cast<std::uint32_t>(k);
+            }
+        }
+    }
+    clear_columns();
+    p.period = period;
+    p.steps = steps;
+    for (std::size_t k = 0; k < n; ++k) p.pcs.emplace_back(steps[k].pc, static_cast<std::uint32_t>(k));
     std::sort(p.pcs.begin(), p.pcs.end());
-    by_byte(p.touches, p.bytes);
-    by_byte(p.stores, p.stored_bytes);
+    count_pcs(m_proofs[m_next_proof], -1);
+    count_pcs(p, 1);
+    m_proofs[m_next_proof] = std::move(p);
+    m_next_proof = (m_next_proof + 1) % m_proofs.size();
+    return true;
 }
 
-void LoopSkipper::by_byte(std::vector<Touch>& touches, std::vector<std::pair<std::uint32_t, std::uint32_t>>& bytes) {
-    std::stable_sort(touches.begin(), touches.end(), [](const Touch& a, const Touch& b) {
-        return a.addr != b.addr ? a.addr < b.addr : a.step < b.step;
-    });
-    bytes.clear();
-    for (std::size_t t = 0; t < touches.size(); ++t) {
-        if (t == 0 || touches[t].addr != touches[t - 1].addr)
-            bytes.emplace_back(static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(t));
-        ++bytes.back().second;
+void LoopSkipper::count_pcs(const Proof& p, int by) {
+    for (std::size_t k = 0; k < p.pcs.size(); ++k) {
+        if (k == 0 || p.pcs[k].first != p.pcs[k - 1].first) m_proof_pcs[p.pcs[k].first >> 1] += by;
     }
 }
 
 bool LoopSkipper::reuse_proof(std::uint32_t pc, std::uint16_t stack, const CpuState& cpu, bool anywhere) {
+    if (m_proof_pcs[pc >> 1] == 0) return false;
     std::optional<Cycle> event;
-    for (const Proof& p : m_proofs) {
-        if (p.steps.empty()) continue;
+    // Whether boundary i of p is where the CPU stands, and the CPU was moved on from there (nothing pending: no
+    // event to move it to).
+    const auto run_on = [&](const Proof& p, std::size_t i) {
+        const TraceStep& s = p.steps[i];
+        if (s.sp != stack || s.cpu != cpu) return false;
+        if (!event) event = nothing_pending() ? m_quiet_until() : Cycle{0};
+        return run_on_proof(p, i, *event);
+    };
+    const auto moved = [&](const Proof& p) {
         // Only the iteration's start, at a backward jump; after RETI, any of its boundaries.
+        if (!anywhere) return p.steps[0].pc == pc && run_on(p, 0);
         const auto at = std::equal_range(p.pcs.begin(), p.pcs.end(), std::pair<std::uint32_t, std::uint32_t>{pc, 0},
                                          [](const auto& a, const auto& b) { return a.first < b.first; });
-        for (auto it = at.first; it != at.second; ++it) {
-            const std::size_t i = it->second;
-            if (!anywhere && i != 0) continue;
-            const TraceStep& s = p.steps[i];
-            if (s.sp != stack || s.cpu != cpu) continue;
-            if (!event) {
-                if (!nothing_pending()) return false;
-                event = m_quiet_until();
-            }
-            if (run_on_proof(p, i, *event)) {
-                ++m_stats.reused;
-                return true;
-            }
-        }
+        return std::any_of(at.first, at.second, [&](const auto& entry) { return run_on(p, entry.second); });
+    };
+    for (const Proof& p : m_proofs) {
+        if (p.steps.empty() || !moved(p)) continue;
+        ++m_stats.reused;
+        return true;
     }
     return false;
 }
@@ -299,27 +356,20 @@ bool LoopSkipper::run_on_proof(const Proof& p, std::size_t i, Cycle event) {
     if (target <= i) return false;
     const std::size_t steps_on = target - i;
     // From boundary i round to it again, each byte whose first access is a read must hold what the proof read.
-    for (const auto& [first, end] : p.bytes) {
-        const auto b = p.touches.begin();
-        auto t = std::lower_bound(b + first, b + end, i, [](const Touch& x, std::size_t k) { return x.step < k; });
-        if (t == b + end) t = b + first;
-        if (t->read && m_avr->data[t->addr] != t->value) return false;
+    for (const auto& [addr, value] : p.read_only) {
+        if (m_avr->data[addr] != value) return false;
     }
-    // Each written byte ends with its last write from boundary i on: in the last part turn, else in a whole turn.
-    const std::size_t part = steps_on % n;
-    for (const auto& [first, end] : p.stored_bytes) {
-        const auto b = p.stores.begin() + first;
-        const auto e = p.stores.begin() + end;
-        const auto last_in = [&](std::size_t lo, std::size_t hi) -> const Touch* {  // steps [lo, hi)
-            const auto at = std::lower_bound(b, e, hi, [](const Touch& x, std::size_t k) { return x.step < k; });
-            return at != b && (at - 1)->step >= lo ? &*(at - 1) : nullptr;
-        };
-        const Touch* w = nullptr;
-        if (part > 0) w = i + part <= n ? last_in(i, i + part) : last_in(0, i + part - n);
-        if (w == nullptr && part > 0 && i + part > n) w = last_in(i, n);
-        if (w == nullptr && steps_on >= n) w = last_in(0, i);
-        if (w == nullptr && steps_on >= n) w = last_in(i, n);
-        if (w != nullptr) m_avr->data[w->addr] = w->value;
+    const std::size_t r = p.rewritten.size();
+    const std::int16_t* first_read = p.first_read.data() + i * r;
+    for (std::size_t c = 0; c < r; ++c) {
+        if (first_read[c] >= 0 && m_avr->data[p.rewritten[c]] != first_read[c]) return false;
+    }
+    // Each byte written in the steps_on steps from boundary i holds its last write before the boundary reached.
+    const std::size_t w = p.written.size();
+    const std::uint8_t* last_value = p.last_value.data() + lo * w;
+    const std::uint32_t* last_step = p.last_step.data() + lo * w;
+    for (std::size_t c = 0; c < w; ++c) {
+        if (steps_on >= n || (last_step[c] + n - i) % n < steps_on) m_avr->data[p.written[c]] = last_value[c];
     }
     const TraceStep& to = p.steps[lo];
     std::memcpy(m_avr->data, to.cpu.data(), 32);

@@ -111,23 +111,24 @@ private:
         std::vector<std::pair<std::uint16_t, std::uint8_t>> reads;   // with the value read
         std::vector<std::pair<std::uint16_t, std::uint8_t>> writes;  // with the value written
     };
-    // A data byte's access in a step (a read comes before the step's write), by byte and step.
-    struct Touch {
-        std::uint16_t addr = 0;
-        std::uint32_t step = 0;
-        bool read = false;
-        std::uint8_t value = 0;  // read, or written
-    };
     // An iteration proven idle, instruction by instruction: any of its instruction boundaries, met again with the
-    // same CPU and the same bytes it reads before writing them from there on, runs it again.
+    // same CPU and the same bytes it reads before writing them from there on, runs it again. Its tables have a row
+    // per instruction boundary j (n = steps.size() rows) and a column per byte. The registers, SP and SREG are the
+    // CPU's, compared apart (instructions move them without a write).
     struct Proof {
         Cycle period = 0;
         std::vector<TraceStep> steps;
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> pcs;    // (pc, step), sorted: searched after RETI
-        std::vector<Touch> touches;                                  // but the registers', SP's and SREG's
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> bytes;  // each byte's touches: [first, end)
-        std::vector<Touch> stores;                                   // each write, by byte and step
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> stored_bytes;
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> pcs;  // (pc, step), sorted: searched after RETI
+        // The bytes the iteration reads and never writes, with the value read: from any boundary they must hold it.
+        std::vector<std::pair<std::uint16_t, std::uint8_t>> read_only;
+        // The bytes it reads and writes; from boundary j on, the value its first access reads (-1: it is a write).
+        std::vector<std::uint16_t> rewritten;
+        std::vector<std::int16_t> first_read;
+        // The bytes it writes (the CPU's too): at boundary j, each one's last write before it, counted back round
+        // the turn, and that write's step.
+        std::vector<std::uint16_t> written;
+        std::vector<std::uint8_t> last_value;
+        std::vector<std::uint32_t> last_step;
     };
 
     [[nodiscard]] CpuState cpu_state() const;
@@ -139,9 +140,10 @@ private:
     [[nodiscard]] bool nothing_pending() const;
     void start_recording();
     void end_step();
-    void keep_proof(Cycle period);
+    // Keeps the iteration just proven; false when its tables would be too large.
+    bool keep_proof(Cycle period);
+    void count_pcs(const Proof& p, int by);
     bool skip_delay_loop();
-    static void by_byte(std::vector<Touch>& touches, std::vector<std::pair<std::uint32_t, std::uint32_t>>& bytes);
     // From the proof's instruction boundary i, where the CPU is now: when the bytes the iteration reads from there
     // on are as then, the CPU is moved to the boundary of the instruction that sees `event` (the next event).
     bool run_on_proof(const Proof& p, std::size_t i, Cycle event);
@@ -156,12 +158,16 @@ private:
     // proves the iteration idle.
     Visit m_loop;
     std::vector<std::uint8_t> m_snapshot;
+    // keep_proof's columns by data address (-1: none), all -1 between calls.
+    std::vector<std::int32_t> m_read_column;
+    std::vector<std::int32_t> m_written_column;
     // The proving iteration: whether one runs, whether every byte it touched is known, its steps so far.
     bool m_recording = false;
     bool m_footprint_known = false;
     Cycle m_recording_start = 0;
     Trace m_trace;
     std::array<Proof, 4> m_proofs{};
+    std::vector<int> m_proof_pcs;  // by flash word: how many kept proofs have an instruction there
     std::size_t m_next_proof = 0;
     FastForwardStats m_stats;
 };

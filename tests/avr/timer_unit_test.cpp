@@ -548,6 +548,41 @@ TEST(AvrTimerUnit, IdleCtcAtTopZeroIsNotSteppedWhileItsFlagsAreQuiet) {
     EXPECT_EQ(f.rec.flag_cycles(TimerFlag::CompareA), (std::vector<Cycle>{1, 16'000'001}));
 }
 
+// grbl 1.1's stepper timer (stepper.c: Timer1 in CTC at /1, OCR1A the step period, OCR1B never written: 0): OCF1B
+// is raised at the tick after each OCF1A and, with its interrupt disabled, stays set. Once it is quiet its matches
+// are no events: a period is one stepped tick (the A match), the count between is taken in closed form.
+TEST(AvrTimerUnit, QuietMatchBetweenEnabledMatchesIsNotStepped) {
+    Fixture f(kTimer1);
+    f.unit.write_ocr(0, Channel::A, 1599);
+    f.unit.write_tccrb(100, 0x08 | 1);  // WGM12, CS10
+    f.unit.advance_to(101);
+    EXPECT_EQ(f.rec.flag_cycles(TimerFlag::CompareB), (std::vector<Cycle>{101}));  // the tick that leaves 0
+    f.unit.set_quiet_flags(101, 1U << static_cast<unsigned>(TimerFlag::CompareB));
+    f.unit.advance_to(100 + 5 * 1600);
+    EXPECT_EQ(f.rec.flag_cycles(TimerFlag::CompareA), (std::vector<Cycle>{1700, 3300, 4900, 6500, 8100}));
+    EXPECT_EQ(f.rec.flag_cycles(TimerFlag::CompareB), (std::vector<Cycle>{101}));
+    EXPECT_EQ(f.unit.event_ticks(), 1U + 5U);
+    EXPECT_EQ(f.unit.read_tcnt(8100 + 37), 37);
+}
+
+// grbl 1.1's step pulse (stepper.c: TCNT0 = 240 for a 10 us pulse, TCCR0B = CS01, TOIE0 on; OCR0A = OCR0B = 0 with
+// OCF0A/OCF0B set and disabled): the TCNT0 write blocks the next tick's match (§15.5.2), but 240 is no compare value,
+// so that tick is no event; nor is the quiet match at 0 after the wrap. Clock edges every 8 cycles from cycle 0
+// (the prescaler runs free): ticks at 104, 112, ...; the 16th (224) leaves 255 and raises TOV0; by 300, 25 ticks.
+TEST(AvrTimerUnit, TcntWriteAwayFromTheCompareValuesIsNoEvent) {
+    Fixture f(kTimer0);
+    const std::uint8_t a_and_b =
+        (1U << static_cast<unsigned>(TimerFlag::CompareA)) | (1U << static_cast<unsigned>(TimerFlag::CompareB));
+    f.unit.set_quiet_flags(0, a_and_b);
+    f.unit.write_tcnt(100, 240);
+    f.unit.write_tccrb(100, 2);  // CS01
+    f.unit.advance_to(300);
+    EXPECT_EQ(f.rec.flag_cycles(TimerFlag::Overflow), (std::vector<Cycle>{224}));
+    EXPECT_TRUE(f.rec.flag_cycles(TimerFlag::CompareA).empty());
+    EXPECT_EQ(f.unit.event_ticks(), 1U);
+    EXPECT_EQ(f.unit.read_tcnt(300), (240 + 25) % 256);
+}
+
 // Every clock select code against the datasheet's tables (Table 15-9 Timer0, 16-5 Timer1: /1 /8 /64 /256 /1024,
 // CS = 110/111 the external T0/T1 pin; Table 18-9 Timer2: /1 /8 /32 /64 /128 /256 /1024). With the prescaler
 // counting from cycle 0 and the clock selected at cycle 0, tap N ticks at N, 2N, ...: TCNT is k at cycle k N

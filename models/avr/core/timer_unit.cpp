@@ -16,7 +16,7 @@ constexpr std::uint8_t kFocB = 0x40;
 }  // namespace
 
 TimerUnit::TimerUnit(const TimerSpec& spec, const Prescaler& prescaler, TimerSink& sink)
-    : m_spec(spec), m_prescaler(prescaler), m_sink(&sink) {}
+    : m_spec(spec), m_prescaler(prescaler), m_sink(&sink), m_mode(decode_mode()) {}
 
 TimerUnit TimerUnit::copy_for(TimerSink& sink) const {
     TimerUnit copy(*this);
@@ -24,7 +24,7 @@ TimerUnit TimerUnit::copy_for(TimerSink& sink) const {
     return copy;
 }
 
-TimerMode TimerUnit::mode() const {
+TimerMode TimerUnit::decode_mode() const {
     if (m_spec.sixteen_bit) return timer_mode_16bit((m_tccra & 3U) | ((m_tccrb >> 1) & 0x0CU));
     return timer_mode_8bit((m_tccra & 3U) | ((m_tccrb >> 1) & 0x04U));
 }
@@ -69,18 +69,40 @@ std::optional<std::int64_t> TimerUnit::distance_to(std::uint16_t x) const {
 
 std::optional<std::int64_t> TimerUnit::ticks_to_event() const {
     if (divisor() <= 0) return std::nullopt;
-    if (m_block_next_match) return 1;
+    // A blocked match is an event only where the counter holds a compare value: there it must be stepped (and not
+    // matched); elsewhere the blocked tick is like any other.
+    if (m_block_next_match && (m_tcnt == m_ocr[0] || m_tcnt == m_ocr[1])) return 1;
     std::optional<std::int64_t> best;
     const auto consider = [&](std::uint16_t x) {
         const auto d = distance_to(x);
         if (d && (!best || *d + 1 < *best)) best = *d + 1;  // the event is the tick that leaves x
     };
-    consider(m_ocr[0]);
-    consider(m_ocr[1]);
-    consider(top());
-    consider(max());
-    if (!mode().single_slope()) consider(0);
+    const TimerMode m = mode();
+    const std::uint16_t t = top();
+    // Counting 0..TOP over and over, a tick whose every effect is a quiet flag changes nothing but the count,
+    // which advance_quietly takes in closed form: it is no event.
+    const bool skip = m_quiet_flags != 0 && counts_to_top(m) && m_ocr == m_ocr_buffer;
+    const auto quiet_match = [&](Channel ch) {
+        return output(ch).on_match_up == OcAction::None &&
+               quiet(ch == Channel::A ? TimerFlag::CompareA : TimerFlag::CompareB);
+    };
+    const auto quiet_wrap = [&] {
+        const bool tov = m.wave == Wave::FastPwm || t == max();
+        const bool bottom_action = m.wave == Wave::FastPwm && (output(Channel::A).at_bottom != OcAction::None ||
+                                                               output(Channel::B).at_bottom != OcAction::None);
+        return (!tov || quiet(TimerFlag::Overflow)) && (m.top_source != TopSource::Icr || quiet(TimerFlag::Capture)) &&
+               !bottom_action;
+    };
+    if (!skip || !quiet_match(Channel::A)) consider(m_ocr[0]);
+    if (!skip || !quiet_match(Channel::B)) consider(m_ocr[1]);
+    if (!skip || !quiet_wrap()) consider(t);
+    if (!skip) consider(max());  // counting to TOP, MAX is only reached as TOP
+    if (!m.single_slope()) consider(0);
     return best;
+}
+
+bool TimerUnit::counts_to_top(const TimerMode& m) const {
+    return m.single_slope() && m_tcnt <= top();
 }
 
 std::optional<Cycle> TimerUnit::tick_cycle(std::int64_t k) const {
@@ -96,42 +118,16 @@ std::int64_t TimerUnit::ticks_until(Cycle c) const {
     return n <= 0 ? 0 : m_prescaler.ticks_between(m_last, c, n);
 }
 
-// Whether the counter runs whole periods 0..TOP in which every tick that does something only raises quiet flags:
-// no compare output action, no OCR buffer to copy, no blocked match.
-bool TimerUnit::quiet_periods() const {
-    (void)next_event();
-    return m_quiet_periods;
-}
-
-bool TimerUnit::find_quiet_periods() const {
-    if (m_quiet_flags == 0) return false;
-    const TimerMode m = mode();
-    const std::uint16_t t = top();
-    if (divisor() <= 0 || m_block_next_match || !m.single_slope() || m_tcnt > t || m_ocr != m_ocr_buffer) return false;
-    for (const Channel ch : {Channel::A, Channel::B}) {
-        const CompareOutput out = output(ch);
-        if (m.wave == Wave::FastPwm && out.at_bottom != OcAction::None) return false;
-        if (m_ocr[idx(ch)] > t) continue;  // never matched
-        if (out.on_match_up != OcAction::None || !quiet(ch == Channel::A ? TimerFlag::CompareA : TimerFlag::CompareB))
-            return false;
-    }
-    const bool tov = m.wave == Wave::FastPwm || t == max();
-    if (tov && !quiet(TimerFlag::Overflow)) return false;
-    return m.top_source != TopSource::Icr || quiet(TimerFlag::Capture);
-}
-
 void TimerUnit::set_quiet_flags(Cycle c, std::uint8_t mask) {
     if (mask == m_quiet_flags) return;
-    if (quiet_periods()) advance_to(c);
+    advance_to(c);  // the ticks up to c under the mask they came under
     m_quiet_flags = mask;
     changed();
 }
 
 std::optional<Cycle> TimerUnit::next_event() const {
     if (!m_next_valid || m_next_epoch != m_prescaler.epoch()) {
-        // Whether the counter is below TOP changes only at a stepped tick or a write, which invalidate this.
-        m_quiet_periods = find_quiet_periods();
-        const auto k = m_quiet_periods ? std::nullopt : ticks_to_event();
+        const auto k = ticks_to_event();
         m_next = k ? tick_cycle(*k) : std::nullopt;
         m_next_valid = true;
         m_next_epoch = m_prescaler.epoch();
@@ -139,23 +135,24 @@ std::optional<Cycle> TimerUnit::next_event() const {
     return m_next;
 }
 
+// Ticks that are no event: the count only (a wrap at TOP included when counting 0..TOP).
 void TimerUnit::advance_quietly(std::int64_t ticks) {
     if (ticks <= 0) return;
-    // Single slope, or a dual-slope counter above TOP, counts up (and a later dual-slope mode continues up).
-    const bool up = mode().single_slope() || m_counting_up || m_tcnt > top();
+    m_block_next_match = false;  // the blocked tick is among them
+    const TimerMode m = mode();
+    if (counts_to_top(m)) {
+        m_counting_up = true;  // as step() leaves it in a single-slope mode
+        m_tcnt = static_cast<std::uint16_t>((m_tcnt + ticks) % (std::int64_t{top()} + 1));
+        return;
+    }
+    // A single-slope counter above TOP counts up to MAX, and a dual-slope counter above TOP (TOP lowered under it)
+    // also counts up (and a later dual-slope mode continues up).
+    const bool up = m.single_slope() || m_counting_up || m_tcnt > top();
     m_counting_up = up;
     m_tcnt = static_cast<std::uint16_t>(up ? m_tcnt + ticks : m_tcnt - ticks);
 }
 
 void TimerUnit::advance_to(Cycle c) {
-    if (quiet_periods()) {
-        if (c <= m_last) return;
-        const std::int64_t ticks = ticks_until(c);
-        if (ticks > 0) m_counting_up = true;  // as step() leaves it in a single-slope mode
-        m_tcnt = static_cast<std::uint16_t>((m_tcnt + ticks) % (std::int64_t{top()} + 1));
-        m_last = c;
-        return;
-    }
     for (auto t = next_event(); t && *t <= c; t = next_event()) {
         advance_quietly(ticks_until(*t) - 1);
         step(*t);
@@ -261,6 +258,7 @@ void TimerUnit::write_tccra(Cycle c, std::uint8_t v) {
     advance_to(c);
     changed();
     m_tccra = v;
+    m_mode = decode_mode();
     mode_changed(c);
 }
 
@@ -269,6 +267,7 @@ void TimerUnit::write_tccrb(Cycle c, std::uint8_t v) {
     changed();
     // Timer1 keeps ICNC1/ICES1 in bits 7:6 (input capture is not modelled, but the bits read back).
     m_tccrb = m_spec.sixteen_bit ? v : static_cast<std::uint8_t>(v & ~(kFocA | kFocB));
+    m_mode = decode_mode();
     mode_changed(c);
     if (!m_spec.sixteen_bit) write_tccrc(c, static_cast<std::uint8_t>(v & (kFocA | kFocB)));
 }

@@ -83,9 +83,9 @@ public:
     // Applies every tick at cycles <= c.
     void advance_to(Cycle c);
     // The flags (bit 1 << TimerFlag) whose raising changes nothing now: set already, their interrupt disabled (the
-    // owner knows). While every tick that does something only raises such flags, period after period, none is
-    // stepped or reported: the counter is advanced in closed form and next_event() has none. A change takes effect
-    // at cycle c (the unit first advances to c under the old mask if it was running such quiet periods).
+    // owner knows). While the counter runs 0..TOP in a single-slope mode, a tick whose every effect is raising such
+    // flags is not stepped or reported: the count is advanced over it in closed form, and next_event() is the next
+    // tick that does something (none if no tick does). A change takes effect after cycle c.
     void set_quiet_flags(Cycle c, std::uint8_t mask);
     // Cycle of the next tick that does something; none while the clock is stopped. Depends on the shared
     // prescaler: advance the unit to c before the prescaler is restarted at c, and ask again afterwards.
@@ -94,7 +94,7 @@ public:
     [[nodiscard]] bool output_connected(Channel ch) const { return output(ch).connected; }
     [[nodiscard]] bool output_level(Channel ch) const { return m_oc[idx(ch)]; }
     [[nodiscard]] const TimerSpec& spec() const { return m_spec; }
-    [[nodiscard]] TimerMode mode() const;
+    [[nodiscard]] const TimerMode& mode() const { return m_mode; }
     [[nodiscard]] int divisor() const { return m_spec.divisors[m_tccrb & 7U]; }
     [[nodiscard]] std::uint64_t event_ticks() const { return m_event_ticks; }  // stepped ticks (cost metric)
 
@@ -103,11 +103,12 @@ private:
     [[nodiscard]] std::uint16_t max() const { return m_spec.sixteen_bit ? 0xFFFF : 0xFF; }
     [[nodiscard]] std::uint16_t top() const;
     [[nodiscard]] CompareOutput output(Channel ch) const;
+    [[nodiscard]] TimerMode decode_mode() const;  // from the WGM bits of TCCRnA and TCCRnB
     [[nodiscard]] std::optional<std::int64_t> distance_to(std::uint16_t x) const;
     [[nodiscard]] std::optional<std::int64_t> ticks_to_event() const;
     [[nodiscard]] bool quiet(TimerFlag f) const { return ((m_quiet_flags >> static_cast<unsigned>(f)) & 1U) != 0; }
-    [[nodiscard]] bool quiet_periods() const;  // cached with the next event
-    [[nodiscard]] bool find_quiet_periods() const;
+    // Single slope, counting 0..TOP (not above TOP, where it runs on to MAX).
+    [[nodiscard]] bool counts_to_top(const TimerMode& m) const;
     [[nodiscard]] std::optional<Cycle> tick_cycle(std::int64_t k) const;
     [[nodiscard]] std::int64_t ticks_until(Cycle c) const;
     void advance_quietly(std::int64_t ticks);
@@ -121,6 +122,7 @@ private:
     TimerSink* m_sink;
     std::uint8_t m_tccra = 0;
     std::uint8_t m_tccrb = 0;  // FOC bits never stored: they read as zero
+    TimerMode m_mode;          // decode_mode(), kept with the registers
     std::uint16_t m_tcnt = 0;
     bool m_counting_up = true;  // dual-slope direction
     bool m_block_next_match = false;
@@ -136,7 +138,6 @@ private:
     mutable bool m_next_valid = false;
     mutable std::uint64_t m_next_epoch = 0;
     mutable std::optional<Cycle> m_next;
-    mutable bool m_quiet_periods = false;
 };
 
 }  // namespace cnc::avr

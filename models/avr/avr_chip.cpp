@@ -36,7 +36,6 @@ void quiet_logger(avr_t*, const int level, const char* format, va_list ap) {
 }
 
 constexpr avr_cycle_count_t kInterruptResponseCycles = 4;
-constexpr std::uint16_t kReti = 0x9518;  // AVR Instruction Set Manual: RETI
 // Datasheet "Interrupt Response Time": an interrupt that wakes the MCU from sleep takes 4 cycles more, in addition to
 // the sleep mode's start-up time (0 in Idle, whose clocks run on: "Sleep Modes").
 constexpr avr_cycle_count_t kWakeUpCycles = 4;
@@ -87,8 +86,11 @@ struct AvrChip::Bridge {
         self->vector_cleared(self->m_vectors.at(irq->irq / 256));  // sim_interrupts.c: irq base = vector * 256
     }
     static void running(avr_irq_t* irq, std::uint32_t value, void* chip) {
-        if (value == 0) return;
         auto* self = static_cast<AvrChip*>(chip);
+        if (value == 0) {
+            self->m_reti_ran = true;  // sim_interrupts.c avr_interrupt_reti: the vector stops running at its RETI
+            return;
+        }
         self->vector_entered(self->m_vectors.at(irq->irq / 256));
     }
 };
@@ -274,12 +276,8 @@ void AvrChip::run_instructions(Cycle limit) {
     while (static_cast<Cycle>(avr->cycle) < limit) {
         const avr_flashaddr_t pc = avr->pc;
         avr_flashaddr_t new_pc = pc;
-        bool reti = false;
         if (avr->state == cpu_Running) {
-            if (skipper != nullptr) {
-                if (skipper->recording()) skipper->before_instruction();
-                reti = pc + 1 < avr->flashend && flash_word(avr->flash, pc) == kReti;
-            }
+            if (skipper != nullptr && skipper->recording()) skipper->before_instruction();
             new_pc = avr_run_one(avr);
         }
         const avr_cycle_timer_slot_t* head = avr->cycle_timers.timer;
@@ -302,6 +300,8 @@ void AvrChip::run_instructions(Cycle limit) {
         if ((avr->state == cpu_Running || avr->state == cpu_Sleeping) && avr->interrupt_state != 0)
             avr_service_interrupts(avr);
         if (avr->state == cpu_Done || avr->state == cpu_Crashed || avr->state == cpu_Stopped) return;
+        const bool reti = m_reti_ran;
+        m_reti_ran = false;
         if (skipper == nullptr || avr->state != cpu_Running) continue;
         // After RETI one more instruction runs before any interrupt (interrupt_state -2, -1, then 0 or pending).
         if (reti) {
@@ -355,6 +355,7 @@ Cycle AvrChip::quiet_until() const {
     if (const avr_cycle_timer_slot_t* t = other_cycle_timer()) until = std::min(until, static_cast<Cycle>(t->when));
     if (const auto u = m_usart.next_event()) until = std::min(until, *u);
     for (const auto& timer : m_timers) {
+        if (const auto e = timer->next_event(); !e || *e >= until) continue;
         EventProbe probe([this](char t, TimerFlag f) { return quiet_flag(t, f); }, m_skipper->pins_read());
         TimerUnit ahead = timer->copy_for(probe);  // from its last processed event: one due now counts too
         for (auto e = ahead.next_event(); e && *e < until; e = ahead.next_event()) {

@@ -214,6 +214,7 @@ private:
     avr_t* m_avr = nullptr;
     std::unique_ptr<PortHooks> m_port_hooks;
     bool m_quiet_flags_stale = false;  // a timer flag raised, TIFRn or TIMSKn written since the timers were told
+    bool m_reti_ran = false;           // in the instruction just run: an interrupt vector returned
     bool m_after_reti = false;  // a RETI ran: the interrupted loop may be a proven one once the next instruction ran
     std::unique_ptr<LoopSkipper> m_skipper;         // null: fast-forward off
     Cycle m_run_limit = 0;                          // of the run_until running

@@ -271,13 +271,13 @@ bool LoopSkipper::keep_proof(Cycle period) {
     // Last writes: two laps forwards.
     std::vector<std::uint8_t> value(w);
     std::vector<std::uint32_t> step(w);
-    p.last_value.resize(n * w);
-    p.last_step.resize(n * w);
+    p.last_value.reserve(n * w);
+    p.last_step.reserve(n * w);
     for (std::size_t lap = 0; lap < 2; ++lap) {
         for (std::size_t k = 0; k < n; ++k) {
             if (lap == 1) {
-                std::copy(value.begin(), value.end(), p.last_value.begin() + static_cast<std::ptrdiff_t>(k * w));
-                std::copy(step.begin(), step.end(), p.last_step.begin() + static_cast<std::ptrdiff_t>(k * w));
+                p.last_value.insert(p.last_value.end(), value.begin(), value.end());
+                p.last_step.insert(p.last_step.end(), step.begin(), step.end());
             }
             for (auto [x, e] = writes_of(k); x < e; ++x) {
                 const auto [a, v] = m_trace.writes[x];

@@ -249,27 +249,34 @@ void TimerUnit::step(Cycle c) {
     if (update) m_ocr = m_ocr_buffer;
 }
 
-void TimerUnit::mode_changed(Cycle c) {
+bool TimerUnit::any_output_connected() const {
+    return output(Channel::A).connected || output(Channel::B).connected;
+}
+
+void TimerUnit::mode_changed(Cycle c, bool was_connected) {
+    m_mode = decode_mode();
     if (!mode().pwm()) m_ocr = m_ocr_buffer;
-    m_sink->timer_output(m_spec.name, c);
+    // With no compare output connected before or after, every pin still shows its PORT bit.
+    if (was_connected || any_output_connected()) m_sink->timer_output(m_spec.name, c);
 }
 
 void TimerUnit::write_tccra(Cycle c, std::uint8_t v) {
     advance_to(c);
     changed();
+    const bool was_connected = any_output_connected();
     m_tccra = v;
-    m_mode = decode_mode();
-    mode_changed(c);
+    mode_changed(c, was_connected);
 }
 
 void TimerUnit::write_tccrb(Cycle c, std::uint8_t v) {
     advance_to(c);
     changed();
+    const bool was_connected = any_output_connected();
     // Timer1 keeps ICNC1/ICES1 in bits 7:6 (input capture is not modelled, but the bits read back).
     m_tccrb = m_spec.sixteen_bit ? v : static_cast<std::uint8_t>(v & ~(kFocA | kFocB));
-    m_mode = decode_mode();
-    mode_changed(c);
-    if (!m_spec.sixteen_bit) write_tccrc(c, static_cast<std::uint8_t>(v & (kFocA | kFocB)));
+    mode_changed(c, was_connected);
+    const auto force = static_cast<std::uint8_t>(v & (kFocA | kFocB));
+    if (!m_spec.sixteen_bit && force != 0) write_tccrc(c, force);
 }
 
 void TimerUnit::write_tccrc(Cycle c, std::uint8_t v) {

@@ -114,7 +114,9 @@ private:
     void advance_quietly(std::int64_t ticks);
     void step(Cycle c);
     void apply(Channel ch, OcAction a, Cycle c);
-    void mode_changed(Cycle c);
+    [[nodiscard]] bool any_output_connected() const;
+    // After a TCCRnA/B write: the mode decoded again, and the sink told if an output was or is connected.
+    void mode_changed(Cycle c, bool was_connected);
     void changed() { m_next_valid = false; }
 
     const TimerSpec m_spec;

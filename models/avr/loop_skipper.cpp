@@ -308,8 +308,8 @@ void LoopSkipper::count_pcs(const Proof& p, int by) {
 bool LoopSkipper::reuse_proof(std::uint32_t pc, std::uint16_t stack, const CpuState& cpu, bool anywhere) {
     if (m_proof_pcs[pc >> 1] == 0) return false;
     std::optional<Cycle> event;
-    // Whether boundary i of p is where the CPU stands, and the CPU was moved on from there (nothing pending: no
-    // event to move it to).
+    // Whether the CPU stands at boundary i of p and was moved on from there (with an interrupt pending or a cycle
+    // timer due, event 0 moves it nowhere).
     const auto run_on = [&](const Proof& p, std::size_t i) {
         const TraceStep& s = p.steps[i];
         if (s.sp != stack || s.cpu != cpu) return false;

@@ -103,7 +103,6 @@ AvrChip::AvrChip(const AvrCoreConfig& cfg)
       m_port_hooks(std::make_unique<PortHooks>()) {
     if (cfg.f_cpu_hz == 0) throw BadInput(cfg.where, "the AVR clock frequency must be above 0 Hz");
     validate(cfg.pins, cfg.where, m_map.mcu);
-    for (std::size_t i = 0; i < kPinSignals.size(); ++i) m_line_pins[i] = cfg.pins.at(kPinSignals[i]);
 
     avr_global_logger_set(quiet_logger);
     LoadedFirmware loaded;
@@ -141,7 +140,7 @@ AvrChip::AvrChip(const AvrCoreConfig& cfg)
     m_timers[0] = std::make_unique<TimerUnit>(kTimer0, m_prescaler01, sink);
     m_timers[1] = std::make_unique<TimerUnit>(kTimer1, m_prescaler01, sink);
     m_timers[2] = std::make_unique<TimerUnit>(kTimer2, m_prescaler2, sink);
-    for (std::size_t i = 0; i < m_line_pins.size(); ++i) m_line_sources[i] = pin_source(m_line_pins[i]);
+    for (std::size_t i = 0; i < kPinSignals.size(); ++i) m_line_sources[i] = pin_source(cfg.pins.at(kPinSignals[i]));
     install_hooks();
     if (cfg.fast_forward)
         // PINx reads the pins (inputs change only between run_until calls), UCSRnA the USART's flags (they change

@@ -203,8 +203,7 @@ private:
     const McuMap& m_map;
     const std::int64_t m_f_cpu_hz;
     const ClockGrid m_clock;
-    std::array<Pin, kPinSignals.size()> m_line_pins{};  // kPinSignals order
-    std::array<PinSource, kPinSignals.size()> m_line_sources{};
+    std::array<PinSource, kPinSignals.size()> m_line_sources{};  // kPinSignals order
     Prescaler m_prescaler01;                            // Timer0 and Timer1 (§17)
     Prescaler m_prescaler2;                             // Timer2 (§18.10)
     std::array<std::unique_ptr<TimerUnit>, 3> m_timers;
